@@ -1,0 +1,97 @@
+#include "cli.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "integrators.h"
+#include "scenes.h"
+
+namespace cli {
+
+Options::Options(const std::vector<std::string>& args, const std::vector<std::string>& withValue,
+                 const std::vector<std::string>& flags) {
+    auto listed = [](const std::vector<std::string>& list, const std::string& name) {
+        return std::find(list.begin(), list.end(), name) != list.end();
+    };
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg.rfind("--", 0) != 0) throw UsageError("unexpected argument '" + arg + "'");
+        std::string name = arg.substr(2), inlineValue;
+        bool hasInline = false;
+        if (auto eq = name.find('='); eq != std::string::npos) {
+            inlineValue = name.substr(eq + 1);
+            name = name.substr(0, eq);
+            hasInline = true;
+        }
+        if (listed(flags, name)) {
+            if (hasInline) throw UsageError("--" + name + " takes no value");
+            m_values[name].push_back("1");
+        } else if (listed(withValue, name)) {
+            if (hasInline) {
+                m_values[name].push_back(inlineValue);
+            } else {
+                if (i + 1 >= args.size()) throw UsageError("--" + name + " needs a value");
+                m_values[name].push_back(args[++i]);
+            }
+        } else {
+            std::string allowed;
+            for (const auto& list : {withValue, flags})
+                for (const auto& n : list) allowed += (allowed.empty() ? "--" : ", --") + n;
+            throw UsageError("unknown option '" + arg + "'; allowed: " + allowed);
+        }
+    }
+}
+
+const std::vector<std::string>& Options::all(const std::string& name) const {
+    static const std::vector<std::string> none;
+    auto it = m_values.find(name);
+    return it == m_values.end() ? none : it->second;
+}
+
+double Options::number(const std::string& name, double fallback, double min, double max,
+                       bool minExclusive) const {
+    if (!has(name)) return fallback;
+    const auto v = simcore::parseNumber(value(name));
+    const std::string range = std::string(minExclusive ? "(" : "[") + std::to_string(min) + ", " +
+                              std::to_string(max) + "]";
+    if (!v) throw UsageError("--" + name + ": '" + value(name) + "' is not a finite number; allowed " + range);
+    if ((minExclusive ? *v <= min : *v < min) || *v > max)
+        throw UsageError("--" + name + " = " + value(name) + " is out of range; allowed " + range);
+    return *v;
+}
+
+long Options::integer(const std::string& name, long fallback, long min, long max) const {
+    if (!has(name)) return fallback;
+    const auto v = simcore::parseNumber(value(name));
+    const std::string range = "whole numbers in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+    if (!v || *v != std::floor(*v) || *v < static_cast<double>(min) || *v > static_cast<double>(max))
+        throw UsageError("--" + name + ": '" + value(name) + "' is not allowed; allowed " + range);
+    return static_cast<long>(*v);
+}
+
+std::vector<std::string> sceneOptionNames() { return {"scene", "set", "dt", "integrator"}; }
+
+SceneSetup sceneSetup(const Options& options) {
+    SceneSetup setup;
+    setup.sceneName = options.valueOr("scene", "ring2d");
+    const simcore::SceneInfo* scene = simcore::findScene(setup.sceneName);
+    if (!scene)
+        throw UsageError("unknown scene '" + setup.sceneName + "'; allowed: " + simcore::sceneNames());
+    setup.params = simcore::ParameterSet(scene->kind);
+    for (const std::string& assignment : options.all("set"))
+        if (auto error = setup.params.assign(assignment)) throw UsageError("--set " + *error);
+    if (options.has("dt"))
+        if (auto error = setup.params.setFromText("dt", options.value("dt")))
+            throw UsageError("--" + *error);
+    setup.integrator = options.valueOr("integrator", "rk4");
+    if (!simcore::makeIntegrator(setup.integrator))
+        throw UsageError("unknown integrator '" + setup.integrator +
+                         "'; allowed: " + simcore::integratorNames());
+    const auto& p = setup.params;
+    if (scene->kind != simcore::SceneKind::Spring1d && p.get("radius_inner") >= p.get("radius_outer"))
+        throw UsageError("radius_inner (" + std::to_string(p.get("radius_inner")) +
+                         ") must be below radius_outer (" + std::to_string(p.get("radius_outer")) + ")");
+    return setup;
+}
+
+}  // namespace cli

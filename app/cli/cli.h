@@ -1,0 +1,61 @@
+#pragma once
+// Shared pieces of the elastic-lab-cli commands: option parsing and scene setup.
+//
+// Exit status contract: 0 success, 2 bad input (one line on stderr naming the problem and
+// what is allowed), 3 the simulation failed (reason, step and time on stderr).
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "params.h"
+
+namespace cli {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitFailed = 3;
+
+// Bad input: reported on one line, exit status 2.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Options of one command: "--name value" pairs (repeatable ones keep their order) and flags.
+class Options {
+public:
+    Options(const std::vector<std::string>& args, const std::vector<std::string>& withValue,
+            const std::vector<std::string>& flags = {});
+    bool has(const std::string& name) const { return m_values.count(name) != 0; }
+    const std::string& value(const std::string& name) const { return m_values.at(name).back(); }
+    std::string valueOr(const std::string& name, const std::string& fallback) const {
+        return has(name) ? value(name) : fallback;
+    }
+    const std::vector<std::string>& all(const std::string& name) const;
+
+    double number(const std::string& name, double fallback, double min, double max,
+                  bool minExclusive) const;
+    long integer(const std::string& name, long fallback, long min, long max) const;
+
+private:
+    std::map<std::string, std::vector<std::string>> m_values;
+};
+
+struct SceneSetup {
+    simcore::ParameterSet params;
+    std::string sceneName;
+    std::string integrator = "rk4";
+};
+
+// --scene S (default ring2d), --set key=value..., --dt H, --integrator NAME.
+SceneSetup sceneSetup(const Options& options);
+// The option names sceneSetup reads, for a command's allowed list.
+std::vector<std::string> sceneOptionNames();
+
+int commandScenes(const std::vector<std::string>& args);
+int commandParams(const std::vector<std::string>& args);
+int commandIntegrators(const std::vector<std::string>& args);
+int commandRun(const std::vector<std::string>& args);
+
+}  // namespace cli

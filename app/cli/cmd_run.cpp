@@ -1,0 +1,95 @@
+// `run`: one headless simulation, with a CSV time series and the final state.
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "cli.h"
+#include "output.h"
+#include "simulation.h"
+
+namespace cli {
+
+namespace {
+
+void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, double wallSeconds) {
+    const simcore::Diagnostics& d = sim.diagnostics();
+    const simcore::Topology& topo = sim.topology();
+    std::printf("scene        %s (%d particles, %zu springs, %zu surfaces)\n", setup.sceneName.c_str(),
+                topo.particleCount(), topo.springCount(), topo.surfaces.size());
+    std::printf("integrator   %s, dt %g s, %ld steps, t = %g s\n",
+                std::string(sim.integrator().name()).c_str(), sim.dt(), d.step, d.time);
+    std::printf("energy       kinetic %.6g J, spring %.6g J, gravity %.6g J", d.kinetic,
+                d.springTotal(), d.gravity);
+    if (d.hasGas) std::printf(", gas %.6g J", d.gas);
+    std::printf(", total %.6g J\n", d.total());
+    std::printf("removed      damping %.6g J, collisions %.6g J; balance drift %.3g J\n",
+                d.removedDamping, d.removedCollisions, d.energyDrift());
+    if (d.hasGas)
+        std::printf("layers       volume inner %.6g, outer %.6g; pressure inner %.6g, outer %.6g\n",
+                    d.volume[0], d.volume[1], d.pressure[0], d.pressure[1]);
+    std::printf("cost         %llu force evaluations, %.3f s wall, %.0f steps/s\n",
+                static_cast<unsigned long long>(d.forceEvaluations), wallSeconds,
+                wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0);
+}
+
+}  // namespace
+
+int commandRun(const std::vector<std::string>& args) {
+    auto names = sceneOptionNames();
+    names.insert(names.end(), {"duration", "csv", "every", "state"});
+    Options options(args, names, {"quiet"});
+    SceneSetup setup = sceneSetup(options);
+    const double duration = options.number("duration", 5.0, 0.0, 1e7, true);
+    const long every = options.integer("every", 1, 1, 1000000000L);
+
+    // Open every output before running: an unwritable path is bad input, found at once.
+    std::unique_ptr<simcore::AtomicFile> csv, state;
+    if (options.has("csv")) {
+        csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
+        if (!csv->ok()) throw UsageError(csv->error());
+    }
+    if (options.has("state")) {
+        state = std::make_unique<simcore::AtomicFile>(options.value("state"));
+        if (!state->ok()) throw UsageError(state->error());
+    }
+
+    simcore::Simulation sim(setup.params, setup.integrator);
+    const double rate = sim.estimatedFastestRate();
+    if (rate * sim.dt() > simcore::kExplicitStabilityLimit)
+        std::fprintf(stderr,
+                     "warning: dt = %g s is above the estimated explicit stability limit ~%.3g s "
+                     "(fastest spring rate ~%.3g 1/s); an explicit integrator will likely blow up\n",
+                     sim.dt(), simcore::kExplicitStabilityLimit / rate, rate);
+
+    const auto columns = simcore::timeSeriesColumns(setup.params.kind());
+    if (csv) {
+        csv->write(simcore::csvHeader(columns));
+        csv->write(simcore::csvRow(columns, sim.diagnostics()));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const double tEnd = duration;
+    while (sim.time() < tEnd - 1e-9 * sim.dt()) {
+        if (!sim.step()) break;
+        const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
+        if (csv && (sim.stepCount() % every == 0 || last))
+            csv->write(simcore::csvRow(columns, sim.diagnostics()));
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (state) state->write(simcore::stateTable(sim));
+
+    for (auto* file : {csv.get(), state.get()})
+        if (file && !file->commit()) {
+            std::fprintf(stderr, "error: %s\n", file->error().c_str());
+            return kExitBadInput;
+        }
+    if (!options.has("quiet")) printSummary(sim, setup, wall);
+    if (sim.failed()) {
+        const simcore::Failure& f = *sim.failure();
+        std::fprintf(stderr, "simulation failed at step %ld, t = %g s: %s\n", f.step, f.time,
+                     f.reason.c_str());
+        return kExitFailed;
+    }
+    return kExitOk;
+}
+
+}  // namespace cli

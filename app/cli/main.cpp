@@ -1,0 +1,59 @@
+// elastic-lab-cli: the headless tool. Scripts depend on its options, columns and exit codes.
+#include <cstdio>
+#include <exception>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cli.h"
+
+namespace {
+
+const char* kUsage = R"(usage: elastic-lab-cli <command> [options]
+
+commands:
+  scenes                          list the built-in scenes
+  params [--scene S]              list every parameter: key, unit, default, range, meaning
+  integrators                     list the integrators
+  run --scene S [--set key=value]... [--integrator NAME] [--dt H] [--duration T]
+      [--csv FILE] [--every N] [--state FILE] [--quiet]
+                                  run headless; CSV row every N steps, final state table
+
+exit status: 0 success, 2 bad input, 3 the simulation failed
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    if (args.empty() || args[0] == "help" || args[0] == "--help" || args[0] == "-h") {
+        std::fputs(kUsage, args.empty() ? stderr : stdout);
+        return args.empty() ? cli::kExitBadInput : cli::kExitOk;
+    }
+    const std::map<std::string, std::function<int(const std::vector<std::string>&)>> commands = {
+        {"scenes", cli::commandScenes},
+        {"params", cli::commandParams},
+        {"integrators", cli::commandIntegrators},
+        {"run", cli::commandRun},
+    };
+    const auto it = commands.find(args[0]);
+    if (it == commands.end()) {
+        std::string allowed;
+        for (const auto& [name, _] : commands) allowed += (allowed.empty() ? "" : ", ") + name;
+        std::fprintf(stderr, "error: unknown command '%s'; allowed: %s\n", args[0].c_str(), allowed.c_str());
+        return cli::kExitBadInput;
+    }
+    try {
+        return it->second({args.begin() + 1, args.end()});
+    } catch (const cli::UsageError& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return cli::kExitBadInput;
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return cli::kExitBadInput;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "internal error: %s\n", e.what());
+        return 1;
+    }
+}

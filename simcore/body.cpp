@@ -1,0 +1,298 @@
+#include "body.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+
+namespace simcore {
+
+std::string_view layerName(Layer layer) {
+    switch (layer) {
+        case Layer::Single: return "single";
+        case Layer::Inner: return "inner";
+        case Layer::Outer: return "outer";
+    }
+    return "?";
+}
+
+std::string_view springFamilyName(SpringFamily f) {
+    switch (f) {
+        case SpringFamily::Structural: return "structural";
+        case SpringFamily::Radius: return "radius";
+        case SpringFamily::Shear: return "shear";
+    }
+    return "?";
+}
+
+namespace {
+
+double distance(const Eigen::Matrix3Xd& p, int i, int j) { return (p.col(j) - p.col(i)).norm(); }
+
+SpringSet& springsOf(Topology& t, SpringFamily f) { return t.springs[static_cast<int>(f)]; }
+
+// Stacks a unit-sphere layer twice (inner scaled to r_in, outer to r_out) and adds the
+// springs shared by every two-layer 3D body: structural on the given edges of each layer,
+// one radius spring per vertex, two shear springs per edge (out_a, in_b) and (out_b, in_a).
+Body twoLayerSphere(const TriangleMesh& mesh, const std::vector<std::array<int, 2>>& edges,
+                    double rIn, double rOut, double massInner, double massOuter) {
+    if (!(rIn < rOut)) throw std::invalid_argument("radius_inner must be below radius_outer");
+    const int n = static_cast<int>(mesh.vertices.cols());
+    Body body;
+    Topology& t = body.topology;
+    t.dimension = 3;
+    body.positions.resize(3, 2 * n);
+    body.positions.leftCols(n) = mesh.vertices * rIn;
+    body.positions.rightCols(n) = mesh.vertices * rOut;
+    t.layer.assign(static_cast<std::size_t>(2 * n), Layer::Inner);
+    std::fill(t.layer.begin() + n, t.layer.end(), Layer::Outer);
+    body.mass.resize(2 * n);
+    body.mass.head(n).setConstant(massInner);
+    body.mass.tail(n).setConstant(massOuter);
+    body.fixed.assign(static_cast<std::size_t>(2 * n), false);
+
+    const auto& p = body.positions;
+    for (int layerOffset : {0, n})
+        for (auto [a, b] : edges)
+            springsOf(t, SpringFamily::Structural)
+                .add(layerOffset + a, layerOffset + b,
+                     distance(p, layerOffset + a, layerOffset + b));
+    for (int v = 0; v < n; ++v) {
+        springsOf(t, SpringFamily::Radius).add(v, n + v, distance(p, v, n + v));
+        t.layerPairs.push_back({v, n + v});
+    }
+    for (auto [a, b] : edges) {
+        springsOf(t, SpringFamily::Shear).add(n + a, b, distance(p, n + a, b));
+        springsOf(t, SpringFamily::Shear).add(n + b, a, distance(p, n + b, a));
+    }
+    for (Layer l : {Layer::Inner, Layer::Outer}) {
+        Surface s;
+        s.layer = l;
+        const int offset = l == Layer::Inner ? 0 : n;
+        s.triangles.reserve(mesh.triangles.size());
+        for (auto [a, b, c] : mesh.triangles) s.triangles.push_back({a + offset, b + offset, c + offset});
+        s.restVolume = enclosedVolume(s, p.data(), 3);
+        t.surfaces.push_back(std::move(s));
+    }
+    return body;
+}
+
+}  // namespace
+
+std::vector<std::array<int, 2>> meshEdges(const std::vector<std::array<int, 3>>& triangles) {
+    std::vector<std::array<int, 2>> edges;
+    edges.reserve(triangles.size() * 3);
+    for (const auto& tri : triangles)
+        for (int k = 0; k < 3; ++k) {
+            int a = tri[static_cast<std::size_t>(k)], b = tri[static_cast<std::size_t>((k + 1) % 3)];
+            edges.push_back({std::min(a, b), std::max(a, b)});
+        }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return edges;
+}
+
+TriangleMesh subdividedOctahedron(int level) {
+    if (level < 0 || level > 9) throw std::invalid_argument("subdivision level out of range");
+    std::vector<Eigen::Vector3d> v = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    // Counter-clockwise seen from outside: (b-a)x(c-a) points away from the centre.
+    std::vector<std::array<int, 3>> tris = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
+                                            {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    for (int l = 0; l < level; ++l) {
+        // Each triangle splits in four at its edge midpoints, projected back onto the sphere;
+        // a midpoint shared by two triangles is created once.
+        std::map<std::pair<int, int>, int> midpoint;
+        auto mid = [&](int a, int b) {
+            auto key = std::minmax(a, b);
+            auto [it, inserted] = midpoint.try_emplace({key.first, key.second}, 0);
+            if (inserted) {
+                it->second = static_cast<int>(v.size());
+                v.push_back((v[static_cast<std::size_t>(a)] + v[static_cast<std::size_t>(b)]).normalized());
+            }
+            return it->second;
+        };
+        std::vector<std::array<int, 3>> next;
+        next.reserve(tris.size() * 4);
+        for (auto [a, b, c] : tris) {
+            const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+            next.push_back({a, ab, ca});
+            next.push_back({ab, b, bc});
+            next.push_back({ca, bc, c});
+            next.push_back({ab, bc, ca});
+        }
+        tris.swap(next);
+    }
+    TriangleMesh mesh;
+    mesh.vertices.resize(3, static_cast<Eigen::Index>(v.size()));
+    for (std::size_t i = 0; i < v.size(); ++i) mesh.vertices.col(static_cast<Eigen::Index>(i)) = v[i];
+    mesh.triangles = std::move(tris);
+    return mesh;
+}
+
+TriangleMesh latLongSphere(int slices, int stacks) {
+    if (slices < 3 || stacks < 2) throw std::invalid_argument("lat/long sphere needs slices >= 3, stacks >= 2");
+    // Vertex 0 is the north pole (+y), then (stacks-1) rings of `slices` vertices from north
+    // to south, then the south pole. Angles in radians (the 2007 code passed degrees).
+    const int rings = stacks - 1;
+    const int n = 2 + slices * rings;
+    TriangleMesh mesh;
+    mesh.vertices.resize(3, n);
+    mesh.vertices.col(0) = Eigen::Vector3d(0, 1, 0);
+    for (int r = 0; r < rings; ++r) {
+        const double theta = std::numbers::pi * (r + 1) / stacks;  // polar angle from +y
+        for (int s = 0; s < slices; ++s) {
+            const double phi = 2.0 * std::numbers::pi * s / slices;
+            mesh.vertices.col(1 + r * slices + s) =
+                Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                -std::sin(theta) * std::sin(phi));
+        }
+    }
+    const int south = n - 1;
+    mesh.vertices.col(south) = Eigen::Vector3d(0, -1, 0);
+    auto ring = [&](int r, int s) { return 1 + r * slices + (s % slices); };
+    for (int s = 0; s < slices; ++s) mesh.triangles.push_back({0, ring(0, s), ring(0, s + 1)});
+    for (int r = 0; r + 1 < rings; ++r)
+        for (int s = 0; s < slices; ++s) {
+            // The quad (r,s) (r,s+1) (r+1,s+1) (r+1,s) is planar; two triangles cover it.
+            mesh.triangles.push_back({ring(r, s), ring(r + 1, s), ring(r + 1, s + 1)});
+            mesh.triangles.push_back({ring(r, s), ring(r + 1, s + 1), ring(r, s + 1)});
+        }
+    for (int s = 0; s < slices; ++s)
+        mesh.triangles.push_back({south, ring(rings - 1, s + 1), ring(rings - 1, s)});
+    return mesh;
+}
+
+Body buildSpring1d(const SpringShape& shape, double mass) {
+    Body body;
+    Topology& t = body.topology;
+    t.dimension = 1;
+    body.positions.resize(3, 2);
+    body.positions.col(0) = Eigen::Vector3d(0, 0, 0);
+    body.positions.col(1) = Eigen::Vector3d(0, -shape.initialLength, 0);
+    t.layer = {Layer::Single, Layer::Single};
+    body.mass = Eigen::VectorXd::Constant(2, mass);
+    body.fixed = {shape.fixedEnd, false};
+    springsOf(t, SpringFamily::Structural).add(0, 1, shape.restLength);
+    return body;
+}
+
+Body buildRing2d(const RingShape& shape, double massInner, double massOuter) {
+    if (!(shape.radiusInner < shape.radiusOuter))
+        throw std::invalid_argument("radius_inner must be below radius_outer");
+    const int n = shape.particles;
+    Body body;
+    Topology& t = body.topology;
+    t.dimension = 2;
+    body.positions.resize(3, 2 * n);
+    for (int i = 0; i < n; ++i) {
+        const double angle = 2.0 * std::numbers::pi * i / n;
+        const Eigen::Vector3d dir(std::cos(angle), std::sin(angle), 0.0);
+        body.positions.col(i) = shape.radiusInner * dir;
+        body.positions.col(n + i) = shape.radiusOuter * dir;
+    }
+    t.layer.assign(static_cast<std::size_t>(2 * n), Layer::Inner);
+    std::fill(t.layer.begin() + n, t.layer.end(), Layer::Outer);
+    body.mass.resize(2 * n);
+    body.mass.head(n).setConstant(massInner);
+    body.mass.tail(n).setConstant(massOuter);
+    body.fixed.assign(static_cast<std::size_t>(2 * n), false);
+
+    const auto& p = body.positions;
+    auto next = [n](int i) { return (i + 1) % n; };
+    auto prev = [n](int i) { return (i + n - 1) % n; };
+    for (int i = 0; i < n; ++i) springsOf(t, SpringFamily::Structural).add(i, next(i), distance(p, i, next(i)));
+    for (int i = 0; i < n; ++i)
+        springsOf(t, SpringFamily::Structural).add(n + i, n + next(i), distance(p, n + i, n + next(i)));
+    for (int i = 0; i < n; ++i) {
+        springsOf(t, SpringFamily::Radius).add(i, n + i, distance(p, i, n + i));
+        t.layerPairs.push_back({i, n + i});
+    }
+    // Shear-left (out_i, in_{i-1}) and shear-right (out_i, in_{i+1}). With n = 3 and fewer
+    // this would still be distinct pairs; n >= 3 is enforced by the parameter table.
+    for (int i = 0; i < n; ++i) springsOf(t, SpringFamily::Shear).add(n + i, prev(i), distance(p, n + i, prev(i)));
+    for (int i = 0; i < n; ++i) springsOf(t, SpringFamily::Shear).add(n + i, next(i), distance(p, n + i, next(i)));
+
+    for (Layer l : {Layer::Inner, Layer::Outer}) {
+        Surface s;
+        s.layer = l;
+        const int offset = l == Layer::Inner ? 0 : n;
+        for (int i = 0; i < n; ++i) s.edges.push_back({offset + i, offset + next(i)});
+        s.restVolume = enclosedVolume(s, p.data(), 2);
+        t.surfaces.push_back(std::move(s));
+    }
+    for (int i = 0; i < n; ++i) {
+        t.fillTriangles.push_back({i, n + i, n + next(i)});
+        t.fillTriangles.push_back({i, n + next(i), next(i)});
+    }
+    return body;
+}
+
+Body buildSphere3d(const SphereShape& shape, double massInner, double massOuter) {
+    TriangleMesh mesh = subdividedOctahedron(shape.subdivisions);
+    const auto edges = meshEdges(mesh.triangles);
+    return twoLayerSphere(mesh, edges, shape.radiusInner, shape.radiusOuter, massInner, massOuter);
+}
+
+Body buildLatLongSphere(const LatLongShape& shape, double massInner, double massOuter) {
+    TriangleMesh mesh = latLongSphere(shape.slices, shape.stacks);
+    // Structural springs run along rings and meridians only (the quads' diagonals are faces
+    // for the gas, not springs): the lat/long body is the thesis's "non-uniform" sphere.
+    const int slices = shape.slices, rings = shape.stacks - 1;
+    const int south = static_cast<int>(mesh.vertices.cols()) - 1;
+    auto ring = [&](int r, int s) { return 1 + r * slices + (s % slices); };
+    std::vector<std::array<int, 2>> edges;
+    for (int s = 0; s < slices; ++s) {
+        edges.push_back({0, ring(0, s)});
+        for (int r = 0; r < rings; ++r) {
+            edges.push_back({std::min(ring(r, s), ring(r, s + 1)), std::max(ring(r, s), ring(r, s + 1))});
+            if (r + 1 < rings) edges.push_back({ring(r, s), ring(r + 1, s)});
+        }
+        edges.push_back({ring(rings - 1, s), south});
+    }
+    std::sort(edges.begin(), edges.end());
+    return twoLayerSphere(mesh, edges, shape.radiusInner, shape.radiusOuter, massInner, massOuter);
+}
+
+Body buildBody(const ParameterSet& params) {
+    switch (params.kind()) {
+        case SceneKind::Spring1d:
+            return buildSpring1d({params.get("length"), params.get("initial_length"),
+                                  params.getInt("fixed_end") != 0},
+                                 params.get("mass"));
+        case SceneKind::Ring2d:
+            return buildRing2d({params.getInt("particles"), params.get("radius_inner"),
+                                params.get("radius_outer")},
+                               params.get("mass_inner"), params.get("mass_outer"));
+        case SceneKind::Sphere3d:
+            return buildSphere3d({params.getInt("subdivisions"), params.get("radius_inner"),
+                                  params.get("radius_outer")},
+                                 params.get("mass_inner"), params.get("mass_outer"));
+        case SceneKind::Sphere3dLatLong:
+            return buildLatLongSphere({params.getInt("slices"), params.getInt("stacks"),
+                                       params.get("radius_inner"), params.get("radius_outer")},
+                                      params.get("mass_inner"), params.get("mass_outer"));
+    }
+    throw std::invalid_argument("unknown scene kind");
+}
+
+double enclosedVolume(const Surface& surface, const double* positions, int dimension) {
+    double sum = 0.0;
+    if (dimension == 2) {
+        for (auto [a, b] : surface.edges) {
+            const double* pa = positions + 3 * a;
+            const double* pb = positions + 3 * b;
+            sum += pa[0] * pb[1] - pb[0] * pa[1];
+        }
+        return 0.5 * sum;
+    }
+    for (auto [a, b, c] : surface.triangles) {
+        Eigen::Map<const Eigen::Vector3d> xa(positions + 3 * a), xb(positions + 3 * b),
+            xc(positions + 3 * c);
+        sum += xa.dot(xb.cross(xc));
+    }
+    return sum / 6.0;
+}
+
+}  // namespace simcore

@@ -1,0 +1,134 @@
+#include "output.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <unistd.h>
+
+namespace simcore {
+
+AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
+    if (m_path.empty()) {
+        fail("empty file name");
+        return;
+    }
+    m_tempPath = m_path + ".tmp-" + std::to_string(::getpid());
+    m_file = std::fopen(m_tempPath.c_str(), "wb");
+    if (!m_file) fail(std::strerror(errno));
+}
+
+AtomicFile::~AtomicFile() {
+    if (m_file) std::fclose(m_file);
+    if (!m_committed && !m_tempPath.empty()) std::remove(m_tempPath.c_str());
+}
+
+void AtomicFile::fail(const std::string& what) {
+    if (m_error.empty()) m_error = "cannot write '" + m_path + "': " + what;
+}
+
+bool AtomicFile::write(std::string_view text) {
+    if (!ok() || !m_file) return false;
+    if (std::fwrite(text.data(), 1, text.size(), m_file) != text.size()) {
+        fail(std::strerror(errno));
+        return false;
+    }
+    return true;
+}
+
+bool AtomicFile::commit() {
+    if (!ok() || !m_file) return false;
+    if (std::fflush(m_file) != 0 || ::fsync(::fileno(m_file)) != 0) {
+        fail(std::strerror(errno));
+        return false;
+    }
+    const int closed = std::fclose(m_file);
+    m_file = nullptr;
+    if (closed != 0) {
+        fail(std::strerror(errno));
+        return false;
+    }
+    if (std::rename(m_tempPath.c_str(), m_path.c_str()) != 0) {
+        fail(std::strerror(errno));
+        return false;
+    }
+    m_committed = true;
+    return true;
+}
+
+std::string formatDouble(double value) {
+    if (!std::isfinite(value)) return "0";  // never reached: failures stop before output
+    char buffer[64];
+    auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return ec == std::errc() ? std::string(buffer, end) : std::string("0");
+}
+
+std::vector<CsvColumn> timeSeriesColumns(SceneKind kind) {
+    using D = Diagnostics;
+    std::vector<CsvColumn> c = {
+        {"step", [](const D& d) { return static_cast<double>(d.step); }},
+        {"t", [](const D& d) { return d.time; }},
+        {"dt", [](const D& d) { return d.dt; }},
+        {"energy_kinetic", [](const D& d) { return d.kinetic; }},
+        {"energy_spring", [](const D& d) { return d.springTotal(); }},
+        {"energy_spring_structural", [](const D& d) { return d.spring[0]; }},
+    };
+    const bool layered = hasGas(kind);
+    if (layered) {
+        c.push_back({"energy_spring_radius", [](const D& d) { return d.spring[1]; }});
+        c.push_back({"energy_spring_shear", [](const D& d) { return d.spring[2]; }});
+    }
+    c.push_back({"energy_gravity", [](const D& d) { return d.gravity; }});
+    if (layered) c.push_back({"energy_gas", [](const D& d) { return d.gas; }});
+    c.push_back({"energy_pointer", [](const D& d) { return d.pointer; }});
+    c.push_back({"energy_total", [](const D& d) { return d.total(); }});
+    c.push_back({"energy_removed", [](const D& d) { return d.removed(); }});
+    c.push_back({"energy_removed_damping", [](const D& d) { return d.removedDamping; }});
+    c.push_back({"energy_removed_collisions", [](const D& d) { return d.removedCollisions; }});
+    c.push_back({"work_pointer", [](const D& d) { return d.workPointer; }});
+    c.push_back({"energy_drift", [](const D& d) { return d.energyDrift(); }});
+    if (layered) {
+        c.push_back({"volume_inner", [](const D& d) { return d.volume[0]; }});
+        c.push_back({"volume_outer", [](const D& d) { return d.volume[1]; }});
+        c.push_back({"pressure_inner", [](const D& d) { return d.pressure[0]; }});
+        c.push_back({"pressure_outer", [](const D& d) { return d.pressure[1]; }});
+    }
+    return c;
+}
+
+std::string csvHeader(const std::vector<CsvColumn>& columns) {
+    std::string line;
+    for (const CsvColumn& c : columns) {
+        if (!line.empty()) line += ',';
+        line += c.name;
+    }
+    return line + '\n';
+}
+
+std::string csvRow(const std::vector<CsvColumn>& columns, const Diagnostics& d) {
+    std::string line;
+    for (const CsvColumn& c : columns) {
+        if (!line.empty()) line += ',';
+        line += formatDouble(c.value(d));
+    }
+    return line + '\n';
+}
+
+std::string stateTable(const Simulation& sim) {
+    std::string text = "index,layer,x,y,z,vx,vy,vz\n";
+    const auto x = sim.positions();
+    const auto v = sim.velocities();
+    const auto& layers = sim.topology().layer;
+    for (int i = 0; i < sim.particleCount(); ++i) {
+        text += std::to_string(i);
+        text += ',';
+        text += layerName(layers[static_cast<std::size_t>(i)]);
+        for (int k = 0; k < 3; ++k) (text += ',') += formatDouble(x(k, i));
+        for (int k = 0; k < 3; ++k) (text += ',') += formatDouble(v(k, i));
+        text += '\n';
+    }
+    return text;
+}
+
+}  // namespace simcore

@@ -1,0 +1,57 @@
+#pragma once
+// Output: the CSV time series and state tables, written atomically.
+//
+// A file is written to a temporary sibling and renamed over the target only when complete
+// (POSIX rename is atomic): a failed or interrupted write leaves any existing file untouched
+// and no partial file behind.
+
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "simulation.h"
+
+namespace simcore {
+
+class AtomicFile {
+public:
+    explicit AtomicFile(std::string path);
+    ~AtomicFile();  // discards the temporary file unless committed
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    bool ok() const { return m_error.empty(); }
+    const std::string& error() const { return m_error; }
+    const std::string& path() const { return m_path; }
+    bool write(std::string_view text);
+    // Flushes, syncs and renames into place. False (with error()) on any failure.
+    bool commit();
+
+private:
+    void fail(const std::string& what);
+    std::string m_path;
+    std::string m_tempPath;
+    std::FILE* m_file = nullptr;
+    std::string m_error;
+    bool m_committed = false;
+};
+
+// One CSV column: its header name and how to read it from the diagnostics.
+struct CsvColumn {
+    std::string name;
+    std::function<double(const Diagnostics&)> value;
+};
+
+// The time-series columns of a scene: only what the scene has (no gas columns in 1D).
+std::vector<CsvColumn> timeSeriesColumns(SceneKind kind);
+std::string csvHeader(const std::vector<CsvColumn>& columns);
+std::string csvRow(const std::vector<CsvColumn>& columns, const Diagnostics& d);
+// Shortest text that reads back to the same double.
+std::string formatDouble(double value);
+
+// index,layer,x,y,z,vx,vy,vz: one row per particle.
+std::string stateTable(const Simulation& sim);
+
+}  // namespace simcore

@@ -1,0 +1,185 @@
+#include "params.h"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace simcore {
+
+namespace {
+
+// The thesis's defaults (§7.2.1) where it gives one; MODEL.md for the rest.
+// clang-format off
+constexpr std::array kTable = {
+    //        key             unit     default  min    max     >min   int    scenes         group
+    ParamSpec{"ks",           "N/m",   800.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Springs, "",
+              "structural spring stiffness (KS): resists stretching along each layer"},
+    ParamSpec{"kd",           "N*s/m", 15.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Springs, "",
+              "structural spring damping (KD): damps stretching speed along each layer"},
+    ParamSpec{"rks",          "N/m",   700.0,   0.0,   1e9,    false, false, kBitsLayered,  ParamGroup::Springs, "",
+              "radius and shear spring stiffness (RKS): holds the two layers apart and square"},
+    ParamSpec{"rkd",          "N*s/m", 50.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Springs, "",
+              "radius and shear spring damping (RKD)"},
+    ParamSpec{"pressure",     "J",     20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "",
+              "gas constant nRT of each closed layer (PRESSURE): P = nRT / V"},
+    ParamSpec{"pressure_inner","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "pressure",
+              "nRT of the gas enclosed by the inner layer (defaults to pressure)"},
+    ParamSpec{"pressure_outer","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "pressure",
+              "nRT of the gas enclosed by the outer layer (defaults to pressure)"},
+    ParamSpec{"mass",         "kg",    1.0,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Mass, "",
+              "mass of every particle (MASS)"},
+    ParamSpec{"mass_inner",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, "mass",
+              "mass of each inner-layer particle (defaults to mass): real inertia, not scaled gravity"},
+    ParamSpec{"mass_outer",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, "mass",
+              "mass of each outer-layer particle (defaults to mass)"},
+    ParamSpec{"gravity",      "m/s^2", 9.81,    0.0,   1e4,    false, false, kBitsAll,      ParamGroup::Environment, "",
+              "gravitational acceleration, pointing along -y"},
+    ParamSpec{"restitution",  "",      0.5,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Environment, "",
+              "coefficient of restitution e at the box walls: normal velocity becomes -e*v_n"},
+    ParamSpec{"friction",     "",      0.0,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Environment, "",
+              "tangential velocity removed at a wall contact (0 = frictionless, 1 = sticks)"},
+    ParamSpec{"box",          "m",     2.5,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Environment, "",
+              "half-size of the collision box (floor, ceiling, walls), centred on the body's start"},
+    ParamSpec{"mks",          "N/m",   150.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Pointer, "",
+              "mouse spring stiffness (MKS)"},
+    ParamSpec{"mkd",          "N*s/m", 25.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Pointer, "",
+              "mouse spring damping (MKD)"},
+    ParamSpec{"mouse_rest",   "m",     0.0,     0.0,   1e3,    false, false, kBitsAll,      ParamGroup::Pointer, "",
+              "rest length of the mouse spring"},
+    ParamSpec{"dt",           "s",     0.003,   0.0,   1.0,    true,  false, kBitsAll,      ParamGroup::Time, "",
+              "time step DT of fixed-step integrators (initial step of adaptive ones)"},
+    ParamSpec{"particles",    "",      12.0,    3.0,   100000, false, true,  kBitRing2d,    ParamGroup::Shape, "",
+              "particles per layer of the 2D ring"},
+    ParamSpec{"subdivisions", "",      2.0,     0.0,   7.0,    false, true,  kBitSphere3d,  ParamGroup::Shape, "",
+              "subdivision level L of the octahedron sphere: 4*4^L+2 particles per layer"},
+    ParamSpec{"slices",       "",      8.0,    3.0,   1024,   false, true,  kBitLatLong,   ParamGroup::Shape, "",
+              "meridians of the lat/long sphere"},
+    ParamSpec{"stacks",       "",      4.0,     2.0,   512,    false, true,  kBitLatLong,   ParamGroup::Shape, "",
+              "latitude bands of the lat/long sphere (pole to pole)"},
+    ParamSpec{"radius_inner", "m",     1.5,     0.0,   1e3,    true,  false, kBitsLayered,  ParamGroup::Shape, "",
+              "rest radius of the inner layer (must be below radius_outer)"},
+    ParamSpec{"radius_outer", "m",     2.0,     0.0,   1e3,    true,  false, kBitsLayered,  ParamGroup::Shape, "",
+              "rest radius of the outer layer"},
+    ParamSpec{"length",       "m",     1.0,     0.0,   1e3,    true,  false, kBitSpring1d,  ParamGroup::Shape, "",
+              "rest length of the 1D spring"},
+    ParamSpec{"initial_length","m",    1.5,     0.0,   1e3,    true,  false, kBitSpring1d,  ParamGroup::Shape, "",
+              "distance between the two particles at the start (the spring hangs along -y)"},
+    ParamSpec{"fixed_end",    "",      1.0,     0.0,   1.0,    false, true,  kBitSpring1d,  ParamGroup::Shape, "",
+              "1: the top particle is fixed in space (thesis fig. 7); 0: both particles move"},
+    ParamSpec{"perturb",      "m",     0.0,     0.0,   1e3,    false, false, kBitsAll,      ParamGroup::Start, "",
+              "amplitude of a seeded random displacement of the start positions (breaks symmetry)"},
+    ParamSpec{"seed",         "",      1.0,     0.0,   4294967295.0, false, true, kBitsAll, ParamGroup::Start, "",
+              "seed of the start perturbation"},
+};
+// clang-format on
+
+}  // namespace
+
+unsigned sceneBit(SceneKind kind) {
+    switch (kind) {
+        case SceneKind::Spring1d: return kBitSpring1d;
+        case SceneKind::Ring2d: return kBitRing2d;
+        case SceneKind::Sphere3d: return kBitSphere3d;
+        case SceneKind::Sphere3dLatLong: return kBitLatLong;
+    }
+    return 0;
+}
+
+double ParamSpec::defaultFor(SceneKind kind) const {
+    return (overrideScenes & sceneBit(kind)) ? overrideValue : defaultValue;
+}
+
+static std::string formatNumber(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+
+std::string ParamSpec::rangeText() const {
+    std::string text = minExclusive ? "(" : "[";
+    text += formatNumber(minValue) + ", " + formatNumber(maxValue) + "]";
+    if (integer) text += " integer";
+    return text;
+}
+
+std::span<const ParamSpec> parameterTable() { return kTable; }
+
+const ParamSpec* findParam(std::string_view key) {
+    for (const ParamSpec& spec : kTable)
+        if (spec.key == key) return &spec;
+    return nullptr;
+}
+
+std::vector<const ParamSpec*> parametersFor(SceneKind kind) {
+    std::vector<const ParamSpec*> out;
+    for (const ParamSpec& spec : kTable)
+        if (spec.scenes & sceneBit(kind)) out.push_back(&spec);
+    return out;
+}
+
+std::optional<std::string> validateValue(const ParamSpec& spec, double value) {
+    const std::string key(spec.key);
+    const std::string unit = spec.unit.empty() ? "" : " " + std::string(spec.unit);
+    if (!std::isfinite(value))
+        return key + ": not a finite number; allowed " + spec.rangeText() + unit;
+    const bool belowMin = spec.minExclusive ? value <= spec.minValue : value < spec.minValue;
+    if (belowMin || value > spec.maxValue)
+        return key + " = " + formatNumber(value) + " is out of range; allowed " + spec.rangeText() +
+               unit;
+    if (spec.integer && value != std::floor(value))
+        return key + " = " + formatNumber(value) + " must be a whole number; allowed " +
+               spec.rangeText();
+    return std::nullopt;
+}
+
+std::optional<double> parseNumber(std::string_view text) {
+    if (text.empty()) return std::nullopt;
+    double value = 0.0;
+    const char* end = text.data() + text.size();
+    auto [ptr, ec] = std::from_chars(text.data(), end, value);
+    if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::optional<std::string> ParameterSet::set(std::string_view key, double value) {
+    const ParamSpec* spec = findParam(key);
+    if (!spec || !(spec->scenes & sceneBit(m_kind))) {
+        std::string allowed;
+        for (const ParamSpec* s : parametersFor(m_kind)) {
+            if (!allowed.empty()) allowed += ' ';
+            allowed += s->key;
+        }
+        return "unknown parameter '" + std::string(key) + "' for this scene; allowed: " + allowed;
+    }
+    if (auto error = validateValue(*spec, value)) return error;
+    m_values[std::string(key)] = value;
+    return std::nullopt;
+}
+
+std::optional<std::string> ParameterSet::setFromText(std::string_view key, std::string_view text) {
+    const auto value = parseNumber(text);
+    if (!value) {
+        const ParamSpec* spec = findParam(key);
+        std::string allowed = spec ? "; allowed " + spec->rangeText() : "";
+        return std::string(key) + ": '" + std::string(text) + "' is not a finite number" + allowed;
+    }
+    return set(key, *value);
+}
+
+std::optional<std::string> ParameterSet::assign(std::string_view assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string_view::npos || eq == 0)
+        return "expected key=value, got '" + std::string(assignment) + "'";
+    return setFromText(assignment.substr(0, eq), assignment.substr(eq + 1));
+}
+
+double ParameterSet::get(std::string_view key) const {
+    if (auto it = m_values.find(std::string(key)); it != m_values.end()) return it->second;
+    const ParamSpec* spec = findParam(key);
+    if (!spec) return 0.0;
+    if (!spec->inherits.empty()) return get(spec->inherits);
+    return spec->defaultFor(m_kind);
+}
+
+}  // namespace simcore

@@ -1,0 +1,91 @@
+#pragma once
+// The parameter table: every tunable of every scene, as data.
+//
+// One table feeds validation (CLI --set, scene files, GUI fields), the CLI's `params`
+// listing, the GUI's parameter dock and the docs. A key that a scene does not have is
+// refused for that scene: a 1D spring has no pressure, no radius springs, no layers.
+
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace simcore {
+
+enum class SceneKind { Spring1d, Ring2d, Sphere3d, Sphere3dLatLong };
+
+// Bit set of scene kinds a parameter applies to.
+enum SceneBits : unsigned {
+    kBitSpring1d = 1u << 0,
+    kBitRing2d = 1u << 1,
+    kBitSphere3d = 1u << 2,
+    kBitLatLong = 1u << 3,
+    kBitsLayered = kBitRing2d | kBitSphere3d | kBitLatLong,
+    kBits3d = kBitSphere3d | kBitLatLong,
+    kBitsAll = kBitSpring1d | kBitsLayered,
+};
+
+unsigned sceneBit(SceneKind kind);
+
+enum class ParamGroup { Springs, Gas, Mass, Environment, Pointer, Time, Shape, Start };
+
+struct ParamSpec {
+    std::string_view key;
+    std::string_view unit;          // SI unit, "" when dimensionless
+    double defaultValue;
+    double minValue;
+    double maxValue;
+    bool minExclusive;              // true: value must be > minValue
+    bool integer;                   // whole numbers only
+    unsigned scenes;                // SceneBits where the key exists
+    ParamGroup group;
+    std::string_view inherits;      // when not set explicitly, take this key's value
+    std::string_view meaning;       // one line, shown in tooltips and `params`
+    // Per-scene default overriding defaultValue (0 = none).
+    unsigned overrideScenes = 0;
+    double overrideValue = 0.0;
+
+    bool isShape() const { return group == ParamGroup::Shape; }
+    double defaultFor(SceneKind kind) const;
+    std::string rangeText() const;  // e.g. "[0, 1]" or "(0, 10]"
+};
+
+std::span<const ParamSpec> parameterTable();
+const ParamSpec* findParam(std::string_view key);
+std::vector<const ParamSpec*> parametersFor(SceneKind kind);
+
+// Checks a value against the spec; the message names the key, what was given and what is allowed.
+std::optional<std::string> validateValue(const ParamSpec& spec, double value);
+
+// Parses a number the way every input boundary does: the whole text must be a finite number.
+std::optional<double> parseNumber(std::string_view text);
+
+// The values of one scene: the explicitly set ones, the rest resolved from the table.
+class ParameterSet {
+public:
+    explicit ParameterSet(SceneKind kind = SceneKind::Ring2d) : m_kind(kind) {}
+
+    SceneKind kind() const { return m_kind; }
+
+    // Returns an error message (key unknown for this scene, bad number, out of range) or nothing.
+    std::optional<std::string> set(std::string_view key, double value);
+    std::optional<std::string> setFromText(std::string_view key, std::string_view text);
+    // "key=value"
+    std::optional<std::string> assign(std::string_view assignment);
+
+    double get(std::string_view key) const;
+    int getInt(std::string_view key) const { return static_cast<int>(get(key)); }
+    bool isExplicit(std::string_view key) const { return m_values.count(std::string(key)) != 0; }
+    void clear(std::string_view key) { m_values.erase(std::string(key)); }
+    const std::map<std::string, double>& explicitValues() const { return m_values; }
+
+    bool operator==(const ParameterSet&) const = default;
+
+private:
+    SceneKind m_kind;
+    std::map<std::string, double> m_values;
+};
+
+}  // namespace simcore

@@ -1,0 +1,28 @@
+#pragma once
+// The built-in scenes: a name, the body kind it builds and the force terms it has.
+
+#include <span>
+#include <string_view>
+
+#include "forces.h"
+#include "params.h"
+
+namespace simcore {
+
+struct SceneInfo {
+    std::string_view name;
+    SceneKind kind;
+    std::string_view description;
+};
+
+std::span<const SceneInfo> sceneTable();
+const SceneInfo* findScene(std::string_view name);
+const SceneInfo& sceneInfo(SceneKind kind);
+std::string sceneNames();  // "spring1d, ring2d, ..." for messages
+
+// Whether a scene has layers with gas (volume, pressure) at all.
+bool hasGas(SceneKind kind);
+// The force terms a scene declares: a 1D spring has no gas and no layer constraint.
+TermSet sceneTerms(SceneKind kind);
+
+}  // namespace simcore

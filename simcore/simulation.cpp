@@ -1,0 +1,480 @@
+#include "simulation.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace simcore {
+
+// The ODE the integrators see: y = [x | v | E_damp], dy/dt = [v | F/m | P_damp].
+class Simulation::System final : public OdeSystem {
+public:
+    explicit System(Simulation& sim) : m_sim(sim) {}
+    StateLayout layout() const override { return {m_sim.m_n, 1}; }
+    void derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) override {
+        const Eigen::Index n = m_sim.m_n;
+        m_sim.m_forces.evaluate(y.data(), y.data() + n, dydt.data() + n, m_extras);
+        dydt.head(n) = y.segment(n, n);
+        dydt.segment(n, n).array() *= m_sim.m_invMass3.array();
+        dydt[2 * n] = m_extras.dampingPower;
+    }
+    const ForceExtras& extras() const { return m_extras; }
+
+private:
+    Simulation& m_sim;
+    ForceExtras m_extras;
+};
+
+Simulation::Simulation(const ParameterSet& params, std::string_view integrator)
+    : m_params(params), m_integrator(makeIntegrator(integrator)) {
+    if (!m_integrator)
+        throw std::invalid_argument("unknown integrator '" + std::string(integrator) +
+                                    "'; allowed: " + integratorNames());
+    m_system = std::make_unique<System>(*this);
+    build();
+}
+
+Simulation::~Simulation() = default;
+
+Eigen::Map<const Eigen::Matrix3Xd> Simulation::positions() const {
+    return {m_y.data(), 3, particleCount()};
+}
+Eigen::Map<const Eigen::Matrix3Xd> Simulation::velocities() const {
+    return {m_y.data() + m_n, 3, particleCount()};
+}
+
+void Simulation::build() {
+    m_body = buildBody(m_params);
+    const Topology& topo = m_body.topology;
+    const int count = topo.particleCount();
+    m_n = 3 * count;
+    m_forces = ForceModel(&m_body.topology, &m_body.mass, sceneTerms(m_params.kind()));
+    m_boxCentre = m_body.positions.rowwise().mean();
+
+    m_invMass3.setZero(m_n);
+    for (int i = 0; i < count; ++i) {
+        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+        const double inv = 1.0 / m_body.mass[i];
+        // 1D moves along y only (thesis 3.3: "restricted to one dimension"); 2D in the xy plane.
+        m_invMass3[3 * i + 1] = inv;
+        if (topo.dimension >= 2) m_invMass3[3 * i] = inv;
+        if (topo.dimension == 3) m_invMass3[3 * i + 2] = inv;
+    }
+    m_normals.setZero(3, count);
+    applyForceParams();
+    reset();
+}
+
+void Simulation::applyForceParams() {
+    ForceParams& p = m_forces.params;
+    p.ks = {m_params.get("ks"), 0.0, 0.0};
+    p.kd = {m_params.get("kd"), 0.0, 0.0};
+    if (m_params.kind() != SceneKind::Spring1d) {
+        p.ks[1] = p.ks[2] = m_params.get("rks");
+        p.kd[1] = p.kd[2] = m_params.get("rkd");
+        p.gasConstant = {m_params.get("pressure_inner"), m_params.get("pressure_outer")};
+    }
+    p.gravity = m_params.get("gravity");
+    p.mks = m_params.get("mks");
+    p.mkd = m_params.get("mkd");
+    p.mouseRest = m_params.get("mouse_rest");
+    m_restitution = m_params.get("restitution");
+    m_friction = m_params.get("friction");
+    m_box = m_params.get("box");
+    m_dt = m_params.get("dt");
+}
+
+void Simulation::reset() {
+    const Eigen::Index n = m_n;
+    m_y.setZero(2 * n + 1);
+    Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = m_body.positions;
+    const double amplitude = m_params.get("perturb");
+    if (amplitude > 0.0) {
+        // Seeded, so a perturbed run is repeatable; only along the axes the body moves in.
+        std::mt19937_64 rng(static_cast<std::uint64_t>(m_params.get("seed")));
+        std::uniform_real_distribution<double> uniform(-amplitude, amplitude);
+        for (Eigen::Index k = 0; k < n; ++k)
+            if (m_invMass3[k] != 0.0) m_y[k] += uniform(rng);
+    }
+    m_integrator->prepare(m_system->layout());
+    m_lastGood = m_y;
+    m_failure.reset();
+    m_forces.pointer = PointerSpring{};
+    m_diag = Diagnostics{};
+    m_diag.dt = m_dt;
+    startBookkeeping();
+}
+
+void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v) {
+    if (x.cols() != particleCount() || v.cols() != particleCount())
+        throw std::invalid_argument("state has the wrong number of particles");
+    Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = x;
+    Eigen::Map<Eigen::Matrix3Xd>(m_y.data() + m_n, 3, particleCount()) = v;
+    m_y[2 * m_n] = 0.0;
+    m_lastGood = m_y;
+    m_failure.reset();
+    const long step = m_diag.step;
+    const double time = m_diag.time;
+    m_diag = Diagnostics{};
+    m_diag.step = step;
+    m_diag.time = time;
+    startBookkeeping();
+}
+
+void Simulation::startBookkeeping() {
+    measure(m_diag);
+    m_diag.initialEnergy = m_diag.total();
+    // Energy scale for blow-up detection: what the body could plausibly hold. Gravity over
+    // the box height, every spring stretched by its rest length, the gas expanding 100-fold.
+    const Topology& topo = m_body.topology;
+    double scale = 1.0 + m_diag.kinetic + m_diag.springTotal();
+    scale += m_body.mass.sum() * m_forces.params.gravity * 2.0 * m_box;
+    for (int f = 0; f < kSpringFamilyCount; ++f) {
+        const auto k = static_cast<std::size_t>(f);
+        for (double rest : topo.springs[k].rest) scale += 0.5 * m_forces.params.ks[k] * rest * rest;
+    }
+    if (m_forces.terms().has(Term::Gas))
+        scale += (m_forces.params.gasConstant[0] + m_forces.params.gasConstant[1]) * std::log(100.0);
+    m_energyScale = scale;
+}
+
+void Simulation::measure(Diagnostics& d) const {
+    const double* x = m_y.data();
+    const double* v = m_y.data() + m_n;
+    const Topology& topo = m_body.topology;
+    const int count = topo.particleCount();
+    d.kinetic = 0.0;
+    d.gravity = 0.0;
+    for (int i = 0; i < count; ++i) {
+        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+        const double m = m_body.mass[i];
+        Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
+        d.kinetic += 0.5 * m * vi.squaredNorm();
+        if (m_forces.terms().has(Term::Gravity)) d.gravity += m * m_forces.params.gravity * x[3 * i + 1];
+    }
+    for (int f = 0; f < kSpringFamilyCount; ++f) {
+        const auto k = static_cast<std::size_t>(f);
+        d.spring[k] = springEnergy(topo.springs[k], m_forces.params.ks[k], x);
+    }
+    d.hasGas = m_forces.terms().has(Term::Gas);
+    d.gas = 0.0;
+    if (d.hasGas) {
+        for (const Surface& s : topo.surfaces) {
+            const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+            const double c = m_forces.params.gasConstant[slot];
+            d.volume[slot] = enclosedVolume(s, x, topo.dimension);
+            d.restVolume[slot] = s.restVolume;
+            d.pressure[slot] = d.volume[slot] > 0.0 ? c / d.volume[slot] : 0.0;
+            d.gas += gasEnergy(c, d.volume[slot]);
+        }
+    }
+    d.pointer = pointerEnergy(m_forces.pointer, m_forces.params.mks, m_forces.params.mouseRest, x);
+    d.removedDamping = m_y[2 * m_n];
+    d.forceEvaluations = m_forces.forceEvaluations();
+}
+
+double Simulation::totalEnergyNow() const {
+    Diagnostics d;
+    measure(d);
+    return d.total();
+}
+
+bool Simulation::step() {
+    if (m_failure) return false;
+    m_lastGood = m_y;
+    const double t0 = m_diag.time;
+    const StepReport report = m_integrator->step(*m_system, t0, m_dt, m_y);
+
+    // Wall contacts and the layer constraint change the state outside the ODE. Whatever
+    // energy they change is measured across them and booked as removed by collisions.
+    if (m_y.allFinite()) {
+        const bool walls = m_forces.terms().has(Term::Collisions);
+        const bool layers = m_forces.terms().has(Term::LayerConstraint);
+        if (walls) m_forces.countPostStep(Term::Collisions);
+        if (layers) m_forces.countPostStep(Term::LayerConstraint);
+        if ((walls && collide(false)) || (layers && constrainLayers(false))) {
+            const double before = totalEnergyNow();
+            if (walls) collide(true);
+            if (layers) constrainLayers(true);
+            m_diag.removedCollisions += before - totalEnergyNow();
+        }
+    }
+
+    const auto problem = checkState();
+    if (problem) {
+        m_failure = Failure{*problem, m_diag.step + 1, t0};
+        m_y = m_lastGood;  // keep the last good state: nothing non-finite leaves
+        return false;
+    }
+    m_diag.step += 1;
+    m_diag.time = t0 + report.h;
+    m_diag.dt = report.h;
+    m_diag.errorEstimate = report.errorEstimate;
+    measure(m_diag);
+    m_diag.degenerateSprings = m_system->extras().degenerateSprings;
+    return true;
+}
+
+bool Simulation::advanceTo(double tEnd) {
+    // Round-off guard: a step that would end within 1e-9 dt of tEnd counts as reaching it.
+    while (!m_failure && m_diag.time < tEnd - 1e-9 * m_dt) step();
+    return !m_failure;
+}
+
+bool Simulation::collide(bool apply) {
+    // Axis-aligned box planes (thesis 4.6; MODEL.md): a particle outside is projected back
+    // and its normal velocity becomes -e v_n; friction scales the tangential velocity by
+    // (1 - mu). Only the axes the body moves in are bounded.
+    const int count = particleCount();
+    const int dims = m_body.topology.dimension;
+    bool any = false;
+    for (int i = 0; i < count; ++i) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const Eigen::Index k = 3 * i + axis;
+            if (m_invMass3[k] == 0.0) continue;
+            const double lo = m_boxCentre[axis] - m_box, hi = m_boxCentre[axis] + m_box;
+            double& x = m_y[k];
+            double& v = m_y[m_n + k];
+            const bool below = x < lo, above = x > hi;
+            if (!below && !above) continue;
+            any = true;
+            if (!apply) return true;
+            x = below ? lo : hi;
+            if ((below && v < 0.0) || (above && v > 0.0)) v = -m_restitution * v;
+            if (m_friction > 0.0) {
+                for (int other = 0; other < dims && other < 3; ++other) {
+                    const int tangent = dims == 1 ? 1 : other;
+                    if (tangent == axis) continue;
+                    m_y[m_n + 3 * i + tangent] *= 1.0 - m_friction;
+                }
+            }
+        }
+    }
+    return any;
+}
+
+bool Simulation::constrainLayers(bool apply) {
+    // Each inner particle must stay on the inner side of the tangent plane of its paired
+    // outer particle. The outer vertex normal is the area-weighted mean of the adjacent
+    // face normals (3D) or the perpendicular of the neighbouring chord (2D). A violation is
+    // undone symmetrically: positions and relative normal velocity are corrected with
+    // mass weights, so momentum is conserved.
+    const Topology& topo = m_body.topology;
+    const Surface* outer = topo.surface(Layer::Outer);
+    if (!outer || topo.layerPairs.empty()) return false;
+    double* x = m_y.data();
+    double* v = m_y.data() + m_n;
+    m_normals.setZero();
+    if (topo.dimension == 2) {
+        for (auto [a, b] : outer->edges) {
+            const Eigen::Vector3d n(x[3 * b + 1] - x[3 * a + 1], -(x[3 * b] - x[3 * a]), 0.0);
+            m_normals.col(a) += n;
+            m_normals.col(b) += n;
+        }
+    } else {
+        for (auto [a, b, c] : outer->triangles) {
+            Eigen::Map<const Eigen::Vector3d> xa(x + 3 * a), xb(x + 3 * b), xc(x + 3 * c);
+            const Eigen::Vector3d n = (xb - xa).cross(xc - xa);
+            m_normals.col(a) += n;
+            m_normals.col(b) += n;
+            m_normals.col(c) += n;
+        }
+    }
+    bool any = false;
+    for (auto [in, out] : topo.layerPairs) {
+        const double norm = m_normals.col(out).norm();
+        if (norm <= 0.0) continue;
+        const Eigen::Vector3d n = m_normals.col(out) / norm;
+        Eigen::Map<Eigen::Vector3d> xi(x + 3 * in), xo(x + 3 * out), vi(v + 3 * in), vo(v + 3 * out);
+        const double depth = (xi - xo).dot(n);
+        if (depth <= 0.0) continue;
+        any = true;
+        if (!apply) return true;
+        const double mi = m_body.mass[in], mo = m_body.mass[out];
+        const double wi = mo / (mi + mo), wo = mi / (mi + mo);
+        xi -= wi * depth * n;
+        xo += wo * depth * n;
+        const double separating = (vi - vo).dot(n);
+        if (separating > 0.0) {
+            vi -= wi * separating * n;
+            vo += wo * separating * n;
+        }
+    }
+    return any;
+}
+
+std::optional<std::string> Simulation::checkState() const {
+    std::ostringstream why;
+    if (!m_y.allFinite()) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
+    const Topology& topo = m_body.topology;
+    for (const Surface& s : topo.surfaces) {
+        const double volume = enclosedVolume(s, m_y.data(), topo.dimension);
+        if (volume <= kCollapsedVolumeFraction * s.restVolume) {
+            why << "the " << layerName(s.layer) << " layer "
+                << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
+                << (topo.dimension == 2 ? "area" : "volume") << " is " << volume
+                << ", rest " << s.restVolume << ")";
+            return why.str();
+        }
+    }
+    const auto v = velocities();
+    const double fastest = v.colwise().norm().maxCoeff();
+    if (fastest * m_dt > 2.0 * m_box) {
+        why << "runaway velocity: a particle moves " << fastest
+            << " m/s, farther than the whole box in one step";
+        return why.str();
+    }
+    Diagnostics d;
+    measure(d);
+    const double held = d.kinetic + d.springTotal() + d.pointer;
+    const double budget = kRunawayEnergyFactor *
+                          (m_energyScale + std::abs(m_diag.workPointer) + std::abs(m_diag.workEdits));
+    if (held > budget) {
+        why << "runaway energy: kinetic + elastic energy " << held << " J exceeds " << budget
+            << " J (" << kRunawayEnergyFactor << " x the body's energy scale)";
+        return why.str();
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> Simulation::setParameter(std::string_view key, double value) {
+    ParameterSet next = m_params;
+    if (auto error = next.set(key, value)) return error;
+    const ParamSpec* spec = findParam(key);
+    if (spec->isShape() || spec->group == ParamGroup::Start) {
+        ParameterSet previous = m_params;
+        m_params = next;
+        try {
+            build();
+        } catch (const std::invalid_argument& e) {
+            m_params = previous;
+            build();
+            return std::string(e.what());
+        }
+        return std::nullopt;
+    }
+    // A live edit changes the stored energy (a stiffer spring holds more for the same
+    // stretch, a heavier particle more kinetic energy): book the jump as work by the edit.
+    const double before = totalEnergyNow();
+    m_params = next;
+    if (key == "mass" || key == "mass_inner" || key == "mass_outer") {
+        const Topology& topo = m_body.topology;
+        for (int i = 0; i < topo.particleCount(); ++i) {
+            const Layer l = topo.layer[static_cast<std::size_t>(i)];
+            const double m = l == Layer::Inner ? m_params.get("mass_inner")
+                             : l == Layer::Outer ? m_params.get("mass_outer")
+                                                 : m_params.get("mass");
+            m_body.mass[i] = m;
+            for (int axis = 0; axis < 3; ++axis)
+                if (m_invMass3[3 * i + axis] != 0.0) m_invMass3[3 * i + axis] = 1.0 / m;
+        }
+    }
+    applyForceParams();
+    if (!m_failure) m_diag.workEdits += totalEnergyNow() - before;
+    measure(m_diag);
+    return std::nullopt;
+}
+
+std::optional<std::string> Simulation::setIntegrator(std::string_view name) {
+    auto next = makeIntegrator(name);
+    if (!next) return "unknown integrator '" + std::string(name) + "'; allowed: " + integratorNames();
+    m_integrator = std::move(next);
+    m_integrator->prepare(m_system->layout());
+    return std::nullopt;
+}
+
+int Simulation::nearestGrabbable(const Eigen::Vector3d& point) const {
+    const auto& layers = m_body.topology.layer;
+    int best = -1;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    const auto x = positions();
+    for (int i = 0; i < particleCount(); ++i) {
+        if (layers[static_cast<std::size_t>(i)] == Layer::Inner) continue;
+        const double d = (x.col(i) - point).squaredNorm();
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = i;
+        }
+    }
+    return best;
+}
+
+int Simulation::pickAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                             double maxDistance) const {
+    const auto& layers = m_body.topology.layer;
+    const auto x = positions();
+    int best = -1;
+    double bestDistance = maxDistance, bestDepth = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < particleCount(); ++i) {
+        if (layers[static_cast<std::size_t>(i)] == Layer::Inner) continue;
+        const Eigen::Vector3d r = x.col(i) - origin;
+        const double depth = r.dot(direction);
+        if (depth < 0.0) continue;
+        const double off = (r - depth * direction).norm();
+        // Within the pick radius the particle nearest the eye wins (the front surface).
+        if (off <= maxDistance && (depth < bestDepth - 1e-9 * (1.0 + depth))) {
+            if (best < 0 || off <= bestDistance || depth < bestDepth) {
+                best = i;
+                bestDepth = depth;
+                bestDistance = off;
+            }
+        }
+    }
+    return best;
+}
+
+void Simulation::grab(int particle, const Eigen::Vector3d& anchor) {
+    if (particle < 0 || particle >= particleCount() || m_failure) return;
+    // Creating the spring stores energy: that is work done by the pointer.
+    const double before = m_diag.pointer;
+    m_forces.pointer = PointerSpring{true, particle, anchor};
+    measure(m_diag);
+    m_diag.workPointer += m_diag.pointer - before;
+}
+
+void Simulation::moveAnchor(const Eigen::Vector3d& anchor) {
+    if (!m_forces.pointer.active || m_failure) return;
+    // The anchor moves between steps; the change in the spring's energy is the pointer's work.
+    const double before = m_diag.pointer;
+    m_forces.pointer.anchor = anchor;
+    measure(m_diag);
+    m_diag.workPointer += m_diag.pointer - before;
+}
+
+void Simulation::release() {
+    if (!m_forces.pointer.active) return;
+    const double before = m_diag.pointer;
+    m_forces.pointer = PointerSpring{};
+    measure(m_diag);
+    m_diag.workPointer += m_diag.pointer - before;
+}
+
+double Simulation::estimatedFastestRate() const {
+    // Each particle alone, tied to fixed neighbours by its springs: m s^2 + c s + k = 0 with
+    // k = sum ks and c = sum kd over its springs (springs in different directions do not all
+    // act on one displacement, so this is an estimate, not a bound). |s| is sqrt(k/m) when underdamped and the fast root
+    // (c + sqrt(c^2 - 4mk)) / 2m when overdamped: stiff damping limits explicit steps too.
+    const Topology& topo = m_body.topology;
+    Eigen::VectorXd k = Eigen::VectorXd::Zero(particleCount());
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(particleCount());
+    for (int f = 0; f < kSpringFamilyCount; ++f) {
+        const auto fam = static_cast<std::size_t>(f);
+        for (std::size_t s = 0; s < topo.springs[fam].size(); ++s)
+            for (int end : {topo.springs[fam].a[s], topo.springs[fam].b[s]}) {
+                k[end] += m_forces.params.ks[fam];
+                c[end] += m_forces.params.kd[fam];
+            }
+    }
+    double fastest = 0.0;
+    for (int i = 0; i < particleCount(); ++i) {
+        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+        const double m = m_body.mass[i];
+        const double disc = c[i] * c[i] - 4.0 * m * k[i];
+        const double rate = disc > 0.0 ? (c[i] + std::sqrt(disc)) / (2.0 * m) : std::sqrt(k[i] / m);
+        fastest = std::max(fastest, rate);
+    }
+    return fastest;
+}
+
+}  // namespace simcore

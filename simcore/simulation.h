@@ -1,0 +1,167 @@
+#pragma once
+// Simulation: one body, its parameters, its integrator and its diagnostics.
+//
+// A step is a fixed list of stages, in this order:
+//
+//   integrate   the integrator calls derivative() once per stage:
+//                 clear forces -> gravity -> springs -> gas -> pointer -> a = F / m
+//   collide     box planes: project back, v_n -> -e v_n (energy removed is recorded)
+//   constrain   inner layer kept inside the outer one
+//   check       non-finite, layer inside out, runaway velocity or energy -> failure
+//   diagnose    volumes, pressures, energies, balance
+//
+// On failure the last good state is restored and kept; no non-finite value ever leaves.
+// Parameters change only between steps (the caller owns the thread that steps).
+
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "body.h"
+#include "forces.h"
+#include "integrators.h"
+#include "params.h"
+#include "scenes.h"
+
+namespace simcore {
+
+struct Diagnostics {
+    long step = 0;
+    double time = 0.0;                       // simulated time [s]
+    double dt = 0.0;                         // last step taken [s]
+    bool hasGas = false;
+    std::array<double, 2> volume{};          // [inner, outer]: area [m^2] in 2D, volume [m^3] in 3D
+    std::array<double, 2> restVolume{};
+    std::array<double, 2> pressure{};        // P = nRT / V [N/m in 2D, N/m^2 in 3D]
+    double kinetic = 0.0;                    // [J]
+    std::array<double, kSpringFamilyCount> spring{};  // elastic energy per family [J]
+    double gravity = 0.0;                    // sum m g y [J]
+    double gas = 0.0;                        // sum -c ln V [J]
+    double pointer = 0.0;                    // mouse spring energy [J]
+    double removedDamping = 0.0;             // energy removed by spring and mouse damping [J]
+    double removedCollisions = 0.0;          // energy removed at walls and by the layer constraint [J]
+    double workPointer = 0.0;                // work done on the body by moving the pointer [J]
+    double workEdits = 0.0;                  // energy changed by parameter edits during the run [J]
+    double initialEnergy = 0.0;              // E_0 [J]
+    double errorEstimate = -1.0;             // local error estimate of the last step, < 0: none
+    int degenerateSprings = 0;
+    std::uint64_t forceEvaluations = 0;
+
+    double springTotal() const { return spring[0] + spring[1] + spring[2]; }
+    double potential() const { return springTotal() + gravity + gas + pointer; }
+    double total() const { return kinetic + potential(); }
+    double removed() const { return removedDamping + removedCollisions; }
+    // E_total + E_removed - W_pointer - W_edits - E_0: zero for exact integration.
+    double energyDrift() const { return total() + removed() - workPointer - workEdits - initialEnergy; }
+};
+
+struct Failure {
+    std::string reason;  // plain words: what happened
+    long step = 0;       // the step that failed
+    double time = 0.0;   // simulated time at the start of that step [s]
+};
+
+class Simulation {
+public:
+    // Throws std::invalid_argument for an unknown integrator or an impossible shape.
+    Simulation(const ParameterSet& params, std::string_view integrator);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    // --- running ---
+    // One step of dt. Returns false when the run has failed (now or before).
+    bool step();
+    // Steps until time >= t_end (within round-off) or failure. Returns !failed().
+    bool advanceTo(double tEnd);
+    void reset();  // back to the start state, same parameters
+
+    bool failed() const { return m_failure.has_value(); }
+    const std::optional<Failure>& failure() const { return m_failure; }
+    const Diagnostics& diagnostics() const { return m_diag; }
+    double time() const { return m_diag.time; }
+    long stepCount() const { return m_diag.step; }
+
+    // --- parameters (between steps only) ---
+    const ParameterSet& parameters() const { return m_params; }
+    // Validates and applies. A shape or start key rebuilds the body and resets.
+    std::optional<std::string> setParameter(std::string_view key, double value);
+    std::optional<std::string> setIntegrator(std::string_view name);
+    const Integrator& integrator() const { return *m_integrator; }
+    double dt() const { return m_dt; }
+
+    // --- pointer (thesis 4.4) ---
+    // Nearest particle that may be grabbed (outer layer, or either 1D particle).
+    int nearestGrabbable(const Eigen::Vector3d& point) const;
+    // Grabbable particle closest to a ray (origin, unit direction), nearest the origin on ties;
+    // -1 when none is within maxDistance of the ray.
+    int pickAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                     double maxDistance) const;
+    void grab(int particle, const Eigen::Vector3d& anchor);
+    void moveAnchor(const Eigen::Vector3d& anchor);
+    void release();
+    const PointerSpring& pointer() const { return m_forces.pointer; }
+
+    // --- state and structure ---
+    const Body& body() const { return m_body; }
+    const Topology& topology() const { return m_body.topology; }
+    int particleCount() const { return m_body.topology.particleCount(); }
+    const Eigen::VectorXd& state() const { return m_y; }
+    Eigen::Map<const Eigen::Matrix3Xd> positions() const;
+    Eigen::Map<const Eigen::Matrix3Xd> velocities() const;
+    // Replaces positions and velocities (e.g. a saved state); resets the energy bookkeeping.
+    void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v);
+    const ForceModel& forces() const { return m_forces; }
+    Eigen::Vector3d boxCentre() const { return m_boxCentre; }
+    double boxHalfSize() const { return m_box; }
+
+    // Energies and volumes of the current state (fills the non-accumulated fields of d).
+    void measure(Diagnostics& d) const;
+    // Cheap upper estimate of the body's fastest rate |s| [1/s] (spring frequency or damping
+    // rate); explicit methods need roughly dt * |s| < kExplicitStabilityLimit. Used to warn
+    // before a run.
+    double estimatedFastestRate() const;
+
+private:
+    class System;
+    void build();
+    void applyForceParams();
+    void startBookkeeping();
+    // With apply = false only report whether anything is in contact.
+    bool collide(bool apply);
+    bool constrainLayers(bool apply);
+    std::optional<std::string> checkState() const;
+    double totalEnergyNow() const;
+
+    ParameterSet m_params;
+    Body m_body;
+    std::unique_ptr<Integrator> m_integrator;
+    std::unique_ptr<System> m_system;
+    mutable ForceModel m_forces;
+    Eigen::VectorXd m_y;          // [x | v | removed-by-damping]
+    Eigen::VectorXd m_lastGood;   // state before the current step
+    Eigen::VectorXd m_invMass3;   // 3N inverse masses, 0 on fixed particles and absent axes
+    Eigen::Matrix3Xd m_normals;   // scratch: outer-layer vertex normals
+    Diagnostics m_diag;
+    std::optional<Failure> m_failure;
+    Eigen::Vector3d m_boxCentre = Eigen::Vector3d::Zero();
+    double m_box = 5.0;
+    double m_restitution = 0.5;
+    double m_friction = 0.0;
+    double m_dt = 0.003;
+    double m_energyScale = 1.0;   // for runaway detection [J]
+    Eigen::Index m_n = 0;         // 3N
+};
+
+// |h s| beyond which no classical explicit method here is stable (RK4 reaches 2.83 on the
+// imaginary axis and 2.79 on the real axis).
+inline constexpr double kExplicitStabilityLimit = 2.8;
+// The fraction of its rest volume below which a layer counts as collapsed or inside out.
+inline constexpr double kCollapsedVolumeFraction = 0.01;
+// Kinetic + elastic energy above this multiple of the body's energy scale is a blow-up.
+inline constexpr double kRunawayEnergyFactor = 100.0;
+
+}  // namespace simcore
