@@ -14,7 +14,22 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
         fail("empty file name");
         return;
     }
-    m_tempPath = m_path + ".tmp-" + std::to_string(::getpid());
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status status = fs::status(m_path, ec);
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+        // A device or pipe (/dev/stdout, /dev/full, a FIFO) cannot be replaced by a rename:
+        // write straight to it; errors still surface at flush and are reported.
+        m_file = std::fopen(m_path.c_str(), "wb");
+        if (!m_file) fail(std::strerror(errno));
+        return;
+    }
+    // Write beside the real file (through a symlink, not over it), then rename into place.
+    std::string target = m_path;
+    if (fs::is_symlink(fs::symlink_status(m_path, ec))) target = fs::canonical(m_path, ec).string();
+    if (ec || target.empty()) target = m_path;
+    m_target = target;
+    m_tempPath = target + ".tmp-" + std::to_string(::getpid());
     m_file = std::fopen(m_tempPath.c_str(), "wb");
     if (!m_file) fail(std::strerror(errno));
 }
@@ -39,7 +54,8 @@ bool AtomicFile::write(std::string_view text) {
 
 bool AtomicFile::commit() {
     if (!ok() || !m_file) return false;
-    if (std::fflush(m_file) != 0 || ::fsync(::fileno(m_file)) != 0) {
+    if (std::fflush(m_file) != 0 || std::ferror(m_file) ||
+        (!m_tempPath.empty() && ::fsync(::fileno(m_file)) != 0)) {
         fail(std::strerror(errno));
         return false;
     }
@@ -49,7 +65,11 @@ bool AtomicFile::commit() {
         fail(std::strerror(errno));
         return false;
     }
-    if (std::rename(m_tempPath.c_str(), m_path.c_str()) != 0) {
+    if (m_tempPath.empty()) {  // written in place (device or pipe)
+        m_committed = true;
+        return true;
+    }
+    if (std::rename(m_tempPath.c_str(), m_target.c_str()) != 0) {
         fail(std::strerror(errno));
         return false;
     }

@@ -3,7 +3,8 @@
 //
 // A file is written to a temporary sibling and renamed over the target only when complete
 // (POSIX rename is atomic): a failed or interrupted write leaves any existing file untouched
-// and no partial file behind.
+// and no partial file behind. A target that is not a regular file (a device such as
+// /dev/stdout or /dev/full, a pipe) is written in place, since it cannot be renamed over.
 
 #include <cstdio>
 #include <functional>
@@ -32,7 +33,8 @@ public:
 private:
     void fail(const std::string& what);
     std::string m_path;
-    std::string m_tempPath;
+    std::string m_target;    // the file renamed over (m_path, or what its symlink points to)
+    std::string m_tempPath;  // empty when writing in place to a device or pipe
     std::FILE* m_file = nullptr;
     std::string m_error;
     bool m_committed = false;

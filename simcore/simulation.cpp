@@ -305,19 +305,9 @@ bool Simulation::constrainLayers(bool apply) {
 }
 
 std::optional<std::string> Simulation::checkState() const {
+    // Causes before symptoms: speed and energy first, then the shape they wreck.
     std::ostringstream why;
     if (!m_y.allFinite()) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
-    const Topology& topo = m_body.topology;
-    for (const Surface& s : topo.surfaces) {
-        const double volume = enclosedVolume(s, m_y.data(), topo.dimension);
-        if (volume <= kCollapsedVolumeFraction * s.restVolume) {
-            why << "the " << layerName(s.layer) << " layer "
-                << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
-                << (topo.dimension == 2 ? "area" : "volume") << " is " << volume
-                << ", rest " << s.restVolume << ")";
-            return why.str();
-        }
-    }
     const auto v = velocities();
     const double fastest = v.colwise().norm().maxCoeff();
     if (fastest * m_dt > 2.0 * m_box) {
@@ -334,6 +324,17 @@ std::optional<std::string> Simulation::checkState() const {
         why << "runaway energy: kinetic + elastic energy " << held << " J exceeds " << budget
             << " J (" << kRunawayEnergyFactor << " x the body's energy scale)";
         return why.str();
+    }
+    const Topology& topo = m_body.topology;
+    for (const Surface& s : topo.surfaces) {
+        const double volume = enclosedVolume(s, m_y.data(), topo.dimension);
+        if (volume <= kCollapsedVolumeFraction * s.restVolume) {
+            why << "the " << layerName(s.layer) << " layer "
+                << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
+                << (topo.dimension == 2 ? "area" : "volume") << " is " << volume
+                << ", rest " << s.restVolume << ")";
+            return why.str();
+        }
     }
     return std::nullopt;
 }

@@ -1,0 +1,175 @@
+// elastic-lab-cli contract: listings, CSV and state columns, exit codes, no NaN in output.
+#include <QtTest>
+
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <cmath>
+
+#include "params.h"
+#include "scenes.h"
+
+namespace {
+
+struct Result {
+    int code = -1;
+    QString out;
+    QString err;
+};
+
+Result cli(const QStringList& args) {
+    QProcess p;
+    p.start(ELASTIC_LAB_CLI, args);
+    if (!p.waitForFinished(120000)) return {};
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+}
+
+QList<QStringList> readCsv(const QString& path) {
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) return {};
+    QList<QStringList> rows;
+    for (const QByteArray& line : f.readAll().split('\n'))
+        if (!line.isEmpty()) rows << QString::fromUtf8(line).split(',');
+    return rows;
+}
+
+}  // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private:
+    QTemporaryDir m_dir;
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+
+private slots:
+    void scenesListsEveryScene() {
+        const Result r = cli({"scenes"});
+        QCOMPARE(r.code, 0);
+        const QStringList lines = r.out.trimmed().split('\n');
+        QCOMPARE(lines.size(), int(simcore::sceneTable().size()));
+        for (const char* name : {"spring1d", "ring2d", "sphere3d", "sphere3d-latlong"}) {
+            bool found = false;
+            for (const QString& line : lines) found |= line.split(' ').first() == name;
+            QVERIFY2(found, name);
+        }
+    }
+    void paramsComesFromTheTable() {
+        const Result all = cli({"params"});
+        QCOMPARE(all.code, 0);
+        for (const simcore::ParamSpec& spec : simcore::parameterTable())
+            QVERIFY2(all.out.contains(QString::fromUtf8(spec.key.data(), int(spec.key.size())) + " "), spec.key.data());
+        const Result spring = cli({"params", "--scene", "spring1d"});
+        QCOMPARE(spring.code, 0);
+        QVERIFY(spring.out.contains("\nks "));
+        QVERIFY(spring.out.contains("N/m"));
+        QVERIFY(!spring.out.contains("pressure"));
+        QVERIFY(!spring.out.contains("rks"));
+        QCOMPARE(cli({"params", "--scene", "torus"}).code, 2);
+    }
+    void csvHasTheContractColumns_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<bool>("gas");
+        QTest::newRow("spring1d") << "spring1d" << false;
+        QTest::newRow("ring2d") << "ring2d" << true;
+        QTest::newRow("sphere3d") << "sphere3d" << true;
+        QTest::newRow("sphere3d-latlong") << "sphere3d-latlong" << true;
+    }
+    void csvHasTheContractColumns() {
+        QFETCH(QString, scene);
+        QFETCH(bool, gas);
+        const QString csv = path(scene + ".csv"), state = path(scene + "-state.csv");
+        const Result r = cli({"run", "--scene", scene, "--duration", "0.3", "--dt", "0.003", "--every", "10",
+                              "--csv", csv, "--state", state});
+        QCOMPARE(r.code, 0);
+        const auto rows = readCsv(csv);
+        const QStringList header = rows.value(0);
+        for (const char* column : {"t", "energy_kinetic", "energy_spring", "energy_gravity", "energy_total", "energy_removed"})
+            QVERIFY2(header.contains(column), column);
+        for (const char* column : {"volume_inner", "volume_outer", "pressure_inner", "pressure_outer", "energy_gas"})
+            QCOMPARE(header.contains(column), gas);
+        // 100 steps, a row every 10 plus the start: 11 rows after the header.
+        QCOMPARE(rows.size(), 12);
+        const auto t = header.indexOf("t");
+        QCOMPARE(rows[1][t].toDouble(), 0.0);
+        QVERIFY(std::abs(rows.last()[t].toDouble() - 0.3) < 1e-9);
+        for (int i = 1; i < rows.size(); ++i) {
+            QCOMPARE(rows[i].size(), header.size());
+            for (const QString& cell : rows[i]) {
+                bool ok = false;
+                QVERIFY(std::isfinite(cell.toDouble(&ok)) && ok);
+            }
+        }
+        const auto states = readCsv(state);
+        QCOMPARE(states.value(0).join(','), QString("index,layer,x,y,z,vx,vy,vz"));
+        QVERIFY(states.size() > 2);
+        const QString expectedLayer = gas ? "inner" : "single";
+        QCOMPARE(states[1][1], expectedLayer);
+        if (gas) QCOMPARE(states.last()[1], QString("outer"));
+    }
+    void badInputExitsWithTwo_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("unknown scene") << QStringList{"run", "--scene", "cube"} << "cube";
+        QTest::newRow("unknown key") << QStringList{"run", "--set", "stiff=1"} << "stiff";
+        QTest::newRow("key absent in 1D") << QStringList{"run", "--scene", "spring1d", "--set", "pressure=1"} << "pressure";
+        QTest::newRow("zero mass") << QStringList{"run", "--set", "mass=0"} << "mass";
+        QTest::newRow("nan") << QStringList{"run", "--set", "ks=nan"} << "ks";
+        QTest::newRow("restitution") << QStringList{"run", "--set", "restitution=1.5"} << "[0, 1]";
+        QTest::newRow("negative dt") << QStringList{"run", "--dt", "-0.1"} << "dt";
+        QTest::newRow("unknown integrator") << QStringList{"run", "--integrator", "leapfrog"} << "rk4";
+        QTest::newRow("bad duration") << QStringList{"run", "--duration", "abc"} << "duration";
+        QTest::newRow("bad every") << QStringList{"run", "--every", "0"} << "every";
+        QTest::newRow("unknown option") << QStringList{"run", "--color"} << "--color";
+        QTest::newRow("unwritable csv") << QStringList{"run", "--csv", "/nonexistent-dir/x.csv"} << "/nonexistent-dir/x.csv";
+        QTest::newRow("unknown command") << QStringList{"fly"} << "fly";
+        QTest::newRow("crossed radii") << QStringList{"run", "--set", "radius_inner=3"} << "radius_inner";
+    }
+    void badInputExitsWithTwo() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, mentions);
+        const Result r = cli(args);
+        QCOMPARE(r.code, 2);
+        QCOMPARE(r.err.trimmed().count('\n'), 0);  // one line
+        QVERIFY2(r.err.contains(mentions), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
+    void failedRunExitsWithThreeAndKeepsGoodRows() {
+        const QString csv = path("fail.csv"), state = path("fail-state.csv");
+        const Result r = cli({"run", "--scene", "ring2d", "--integrator", "euler", "--dt", "0.3", "--set", "perturb=0.01",
+                              "--duration", "100", "--csv", csv, "--state", state});
+        QCOMPARE(r.code, 3);
+        QVERIFY2(r.err.contains("failed at step"), qPrintable(r.err));
+        QVERIFY(r.err.contains("t = "));
+        QVERIFY(r.err.contains("warning: dt"));  // warned before the run
+        const auto rows = readCsv(csv);
+        QVERIFY(rows.size() >= 2);
+        for (int i = 1; i < rows.size(); ++i)
+            for (const QString& cell : rows[i]) {
+                QVERIFY(!cell.contains("nan", Qt::CaseInsensitive));
+                QVERIFY(!cell.contains("inf", Qt::CaseInsensitive));
+            }
+        QVERIFY(readCsv(state).size() > 1);
+    }
+    void failedWriteLeavesNoFileBehind() {
+        // /dev/full accepts the open and fails the write: error 2, nothing renamed into place.
+        // A device cannot be renamed over: it is written in place and the failure reported.
+        const Result r = cli({"run", "--duration", "0.1", "--csv", "/dev/full"});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("/dev/full"), qPrintable(r.err));
+        QVERIFY(QFileInfo("/dev/full").exists() && !QFileInfo("/dev/full").isFile());
+        QVERIFY(QDir("/dev").entryList({"full.tmp-*"}, QDir::AllEntries | QDir::System).isEmpty());
+    }
+    void existingFileSurvivesAFailedRunStart() {
+        const QString csv = path("keep.csv");
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("precious\n");
+        f.close();
+        QCOMPARE(cli({"run", "--set", "ks=-1", "--csv", csv}).code, 2);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("precious\n"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"

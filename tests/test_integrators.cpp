@@ -1,0 +1,151 @@
+// Integrators against the closed-form 1D oscillator: convergence orders and exact free fall.
+#include <QtTest>
+
+#include <cmath>
+
+#include "analytic.h"
+#include "simulation.h"
+
+using namespace simcore;
+
+namespace {
+
+// spring1d hanging from a fixed top, no walls in reach: a damped linear oscillator.
+ParameterSet oscillator(double kd) {
+    ParameterSet p(SceneKind::Spring1d);
+    p.set("ks", 100.0);
+    p.set("kd", kd);
+    p.set("mass", 1.0);
+    p.set("length", 1.0);
+    p.set("initial_length", 1.5);
+    p.set("box", 1000.0);
+    return p;
+}
+
+// Position error of the moving particle at t = T against the closed form.
+double errorAt(ParameterSet p, const std::string& integrator, double dt, double T) {
+    p.set("dt", dt);
+    Simulation sim(p, integrator);
+    if (!sim.advanceTo(T)) return std::nan("");
+    Eigen::Matrix3Xd x, v;
+    spring1dExact(p, sim.time(), x, v);
+    return (sim.positions() - x).norm() + (sim.velocities() - v).norm() / 10.0;
+}
+
+double observedOrder(const ParameterSet& p, const std::string& integrator, double h) {
+    const double e1 = errorAt(p, integrator, h, 2.0);
+    const double e2 = errorAt(p, integrator, h / 2.0, 2.0);
+    const double e3 = errorAt(p, integrator, h / 4.0, 2.0);
+    // Least-squares slope over three halvings.
+    return (std::log2(e1) - std::log2(e3)) / 2.0 + 0.0 * e2;
+}
+
+}  // namespace
+
+class TestIntegrators : public QObject {
+    Q_OBJECT
+private slots:
+    void closedFormIsRight() {
+        // The closed form satisfies m y'' = -k (y + L0) - c y' - m g (checked by differences).
+        const ParameterSet p = oscillator(2.0);
+        const double h = 1e-5, t = 0.7;
+        Eigen::Matrix3Xd x0, v0, xm, vm, xp, vp;
+        spring1dExact(p, t, x0, v0);
+        spring1dExact(p, t - h, xm, vm);
+        spring1dExact(p, t + h, xp, vp);
+        const double acc = (vp(1, 1) - vm(1, 1)) / (2 * h);
+        const double expected = -100.0 * (x0(1, 1) + 1.0) - 2.0 * v0(1, 1) - 9.81;
+        QVERIFY(std::abs(acc - expected) < 1e-5 * std::abs(expected));
+        QVERIFY(std::abs((xp(1, 1) - xm(1, 1)) / (2 * h) - v0(1, 1)) < 1e-6);
+        QCOMPARE(x0(1, 0), 0.0);  // the fixed end stays
+    }
+
+    void convergenceOrder_data() {
+        QTest::addColumn<QString>("integrator");
+        QTest::addColumn<double>("kd");
+        QTest::addColumn<double>("h");
+        QTest::addColumn<double>("low");
+        QTest::addColumn<double>("high");
+        QTest::newRow("euler") << "euler" << 1.0 << 0.0005 << 0.95 << 1.25;
+        QTest::newRow("midpoint") << "midpoint" << 1.0 << 0.004 << 1.9 << 2.1;
+        QTest::newRow("rk4") << "rk4" << 1.0 << 0.02 << 3.9 << 4.1;
+        QTest::newRow("symplectic-euler") << "symplectic-euler" << 1.0 << 0.002 << 0.9 << 1.1;
+        QTest::newRow("verlet undamped") << "verlet" << 0.0 << 0.004 << 1.9 << 2.1;
+        // Damping evaluated at the half-step velocity: only first order (a known property).
+        QTest::newRow("verlet damped") << "verlet" << 5.0 << 0.002 << 0.9 << 1.1;
+    }
+    void convergenceOrder() {
+        QFETCH(QString, integrator);
+        QFETCH(double, kd);
+        QFETCH(double, h);
+        QFETCH(double, low);
+        QFETCH(double, high);
+        const double order = observedOrder(oscillator(kd), integrator.toStdString(), h);
+        QVERIFY2(order >= low && order <= high,
+                 qPrintable(QString("%1: measured order %2, expected [%3, %4]").arg(integrator).arg(order).arg(low).arg(high)));
+    }
+
+    void freeFall_data() {
+        QTest::addColumn<QString>("integrator");
+        QTest::addColumn<bool>("exact");
+        QTest::newRow("euler") << "euler" << false;
+        QTest::newRow("midpoint") << "midpoint" << true;
+        QTest::newRow("rk4") << "rk4" << true;
+        QTest::newRow("symplectic-euler") << "symplectic-euler" << false;
+        QTest::newRow("verlet") << "verlet" << true;
+    }
+    void freeFall() {
+        // Two free masses on a relaxed spring fall together: y = y0 - g t^2 / 2. Methods of
+        // order >= 2 integrate a quadratic exactly; the Euler variants are off by O(h).
+        QFETCH(QString, integrator);
+        QFETCH(bool, exact);
+        ParameterSet p(SceneKind::Spring1d);
+        p.set("fixed_end", 0.0);
+        p.set("initial_length", 1.0);
+        p.set("box", 1000.0);
+        p.set("dt", 0.01);
+        Simulation sim(p, integrator.toStdString());
+        QVERIFY(sim.advanceTo(1.0));
+        const double t = sim.time();
+        const double expected = -1.0 - 0.5 * 9.81 * t * t;
+        const double error = std::abs(sim.positions()(1, 1) - expected);
+        const double vError = std::abs(sim.velocities()(1, 1) + 9.81 * t);
+        if (exact) {
+            QVERIFY2(error < 1e-12 && vError < 1e-12, qPrintable(QString::number(error)));
+        } else {
+            QVERIFY2(error > 1e-3, "the Euler variants must show their O(h) error");
+            QVERIFY(error < 0.1);
+        }
+        QCOMPARE(sim.positions()(1, 0) - sim.positions()(1, 1), 1.0);  // spring never stretched
+    }
+
+    void freeOscillatorMatchesClosedForm() {
+        // Both ends free with gravity: centre of mass falls, separation oscillates.
+        ParameterSet p(SceneKind::Spring1d);
+        p.set("fixed_end", 0.0);
+        p.set("box", 1000.0);
+        p.set("dt", 0.001);
+        Simulation sim(p, "rk4");
+        QVERIFY(sim.advanceTo(1.0));
+        Eigen::Matrix3Xd x, v;
+        spring1dExact(p, sim.time(), x, v);
+        QVERIFY2((sim.positions() - x).norm() < 1e-8, qPrintable(QString::number((sim.positions() - x).norm())));
+    }
+
+    void everyStageEvaluatesForces() {
+        for (const auto& [name, stages] : std::vector<std::pair<std::string, int>>{
+                 {"euler", 1}, {"midpoint", 2}, {"rk4", 4}, {"symplectic-euler", 1}, {"verlet", 2}}) {
+            Simulation sim(oscillator(1.0), name);
+            for (int i = 0; i < 10; ++i) sim.step();
+            QCOMPARE(sim.diagnostics().forceEvaluations, std::uint64_t(10 * stages));
+            QCOMPARE(sim.integrator().evaluationsPerStep(), stages);
+        }
+    }
+    void unknownIntegratorIsRefused() {
+        QVERIFY(!makeIntegrator("rk5"));
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Simulation(oscillator(1.0), "leapfrog"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestIntegrators)
+#include "test_integrators.moc"
