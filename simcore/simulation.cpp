@@ -201,17 +201,19 @@ bool Simulation::step() {
         }
     }
 
-    const auto problem = checkState();
-    if (problem) {
+    // One measurement serves both the checks and the diagnostics.
+    Diagnostics next = m_diag;
+    measure(next);
+    if (const auto problem = checkState(next)) {
         m_failure = Failure{*problem, m_diag.step + 1, t0};
         m_y = m_lastGood;  // keep the last good state: nothing non-finite leaves
         return false;
     }
+    m_diag = next;
     m_diag.step += 1;
     m_diag.time = t0 + report.h;
     m_diag.dt = report.h;
     m_diag.errorEstimate = report.errorEstimate;
-    measure(m_diag);
     m_diag.degenerateSprings = m_system->extras().degenerateSprings;
     return true;
 }
@@ -304,10 +306,10 @@ bool Simulation::constrainLayers(bool apply) {
     return any;
 }
 
-std::optional<std::string> Simulation::checkState() const {
+std::optional<std::string> Simulation::checkState(const Diagnostics& d) const {
     // Causes before symptoms: speed and energy first, then the shape they wreck.
     std::ostringstream why;
-    if (!m_y.allFinite()) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
+    if (!m_y.allFinite() || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
     const auto v = velocities();
     const double fastest = v.colwise().norm().maxCoeff();
     if (fastest * m_dt > 2.0 * m_box) {
@@ -315,8 +317,6 @@ std::optional<std::string> Simulation::checkState() const {
             << " m/s, farther than the whole box in one step";
         return why.str();
     }
-    Diagnostics d;
-    measure(d);
     const double held = d.kinetic + d.springTotal() + d.pointer;
     const double budget = kRunawayEnergyFactor *
                           (m_energyScale + std::abs(m_diag.workPointer) + std::abs(m_diag.workEdits));
@@ -327,7 +327,7 @@ std::optional<std::string> Simulation::checkState() const {
     }
     const Topology& topo = m_body.topology;
     for (const Surface& s : topo.surfaces) {
-        const double volume = enclosedVolume(s, m_y.data(), topo.dimension);
+        const double volume = d.volume[static_cast<std::size_t>(layerSlot(s.layer))];
         if (volume <= kCollapsedVolumeFraction * s.restVolume) {
             why << "the " << layerName(s.layer) << " layer "
                 << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "

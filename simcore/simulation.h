@@ -133,7 +133,8 @@ private:
     // With apply = false only report whether anything is in contact.
     bool collide(bool apply);
     bool constrainLayers(bool apply);
-    std::optional<std::string> checkState() const;
+    // Why the state (measured into d) is unusable, or nothing.
+    std::optional<std::string> checkState(const Diagnostics& d) const;
     double totalEnergyNow() const;
 
     ParameterSet m_params;
