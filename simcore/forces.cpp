@@ -1,6 +1,9 @@
 #include "forces.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "parallel.h"
 
 namespace simcore {
 
@@ -130,39 +133,303 @@ double pointerEnergy(const PointerSpring& pointer, double mks, double rest, cons
     return 0.5 * mks * stretch * stretch;
 }
 
+// Multi-versioned for AVX2 where the CPU has it (chosen at load time), plain x86-64 otherwise.
+// Without -ffast-math and with FP contraction off (ISO C++ mode) both versions round alike.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(ELASTIC_LAB_MULTIVERSION)
+#define SIMCORE_VECTOR_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define SIMCORE_VECTOR_KERNEL
+#endif
+
+SIMCORE_VECTOR_KERNEL
+static void springMath(std::size_t count, double ks, double kd, const double* __restrict rest,
+                       double* __restrict dx, double* __restrict dy, double* __restrict dz,
+                       const double* __restrict dvx, const double* __restrict dvy,
+                       const double* __restrict dvz, double* __restrict power) {
+    // Pure structure-of-arrays arithmetic (no gathers): vectorises with SSE2, AVX2 or AVX-512.
+    // In: separations d and relative velocities dv per spring. Out: force on the first
+    // particle in (dx, dy, dz) and damping power. A spring shorter than kDegenerateLength keeps
+    // a finite direction (divided by the epsilon instead of its length) and a zero force.
+    for (std::size_t s = 0; s < count; ++s) {
+        const double length = std::sqrt(dx[s] * dx[s] + dy[s] * dy[s] + dz[s] * dz[s]);
+        const bool tooShort = length < kDegenerateLength;
+        const double inv = 1.0 / std::max(length, kDegenerateLength);
+        const double live = tooShort ? 0.0 : 1.0;
+        const double ux = dx[s] * inv, uy = dy[s] * inv, uz = dz[s] * inv;
+        const double closing = dvx[s] * ux + dvy[s] * uy + dvz[s] * uz;
+        const double magnitude = live * (ks * (length - rest[s]) + kd * closing);
+        dx[s] = magnitude * ux;
+        dy[s] = magnitude * uy;
+        dz[s] = magnitude * uz;
+        power[s] = live * kd * closing * closing;
+    }
+}
+
+int springForcesSoA(const SpringSet& springs, double ks, double kd, const double* x,
+                    const double* v, std::size_t begin, std::size_t end, SpringScratch& scratch) {
+    // Gather pass (scalar loads, streaming stores), then the vectorised arithmetic.
+    const int* ia = springs.a.data();
+    const int* ib = springs.b.data();
+    const std::size_t count = end - begin;
+    double *dx = scratch.dx.data(), *dy = scratch.dy.data(), *dz = scratch.dz.data();
+    double *dvx = scratch.dvx.data(), *dvy = scratch.dvy.data(), *dvz = scratch.dvz.data();
+    int degenerate = 0;
+    for (std::size_t k = 0; k < count; ++k) {
+        const int i = 3 * ia[begin + k], j = 3 * ib[begin + k];
+        dx[k] = x[j] - x[i];
+        dy[k] = x[j + 1] - x[i + 1];
+        dz[k] = x[j + 2] - x[i + 2];
+        degenerate += dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k] < kDegenerateLength * kDegenerateLength;
+        dvx[k] = v[j] - v[i];
+        dvy[k] = v[j + 1] - v[i + 1];
+        dvz[k] = v[j + 2] - v[i + 2];
+    }
+    springMath(count, ks, kd, springs.rest.data() + begin, dx, dy, dz, dvx, dvy, dvz,
+               scratch.power.data());
+    return degenerate;
+}
+
+void scatterPairs(const SpringSet& springs, std::size_t begin, std::size_t end, const double* fx,
+                  const double* fy, const double* fz, double* f) {
+    const int* ia = springs.a.data();
+    const int* ib = springs.b.data();
+    for (std::size_t s = begin; s < end; ++s) {
+        const int i = 3 * ia[s], j = 3 * ib[s];
+        const std::size_t k = s - begin;
+        f[i] += fx[k];
+        f[i + 1] += fy[k];
+        f[i + 2] += fz[k];
+        f[j] -= fx[k];
+        f[j + 1] -= fy[k];
+        f[j + 2] -= fz[k];
+    }
+}
+
+SIMCORE_VECTOR_KERNEL
+void gasForcesSoA(const Surface& surface, double pressure, const double* x, std::size_t begin,
+                  std::size_t end, double* gx, double* gy, double* gz) {
+    const double sixth = pressure / 6.0;
+    const std::array<int, 3>* tri = surface.triangles.data();
+    for (std::size_t t = begin; t < end; ++t) {
+        const int a = 3 * tri[t][0], b = 3 * tri[t][1], c = 3 * tri[t][2];
+        const double ux = x[b] - x[a], uy = x[b + 1] - x[a + 1], uz = x[b + 2] - x[a + 2];
+        const double wx = x[c] - x[a], wy = x[c + 1] - x[a + 1], wz = x[c + 2] - x[a + 2];
+        const std::size_t k = t - begin;
+        gx[k] = sixth * (uy * wz - uz * wy);
+        gy[k] = sixth * (uz * wx - ux * wz);
+        gz[k] = sixth * (ux * wy - uy * wx);
+    }
+}
+
+void scatterTriangles(const Surface& surface, std::size_t begin, std::size_t end,
+                      const double* gx, const double* gy, const double* gz, double* f) {
+    const std::array<int, 3>* tri = surface.triangles.data();
+    for (std::size_t t = begin; t < end; ++t)
+        for (int corner : tri[t]) {
+            f[3 * corner] += gx[t - begin];
+            f[3 * corner + 1] += gy[t - begin];
+            f[3 * corner + 2] += gz[t - begin];
+        }
+}
+
+double partialVolume(const Surface& surface, int dimension, const double* x, std::size_t begin,
+                     std::size_t end) {
+    double sum = 0.0;
+    if (dimension == 2) {
+        for (std::size_t e = begin; e < end; ++e) {
+            const double* pa = x + 3 * surface.edges[e][0];
+            const double* pb = x + 3 * surface.edges[e][1];
+            sum += pa[0] * pb[1] - pb[0] * pa[1];
+        }
+        return sum;
+    }
+    for (std::size_t t = begin; t < end; ++t) {
+        const double* a = x + 3 * surface.triangles[t][0];
+        const double* b = x + 3 * surface.triangles[t][1];
+        const double* c = x + 3 * surface.triangles[t][2];
+        sum += a[0] * (b[1] * c[2] - b[2] * c[1]) + a[1] * (b[2] * c[0] - b[0] * c[2]) +
+               a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+    return sum;
+}
+
+ForceModel::ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms)
+    : m_topology(topology), m_mass(mass), m_terms(terms) {
+    std::size_t scratch = 0;
+    for (const SpringSet& s : topology->springs) scratch = std::max(scratch, s.size());
+    for (const Surface& s : topology->surfaces) scratch = std::max(scratch, s.triangles.size());
+    m_chunks = topology->springCount() >= kChunkThreshold ? kChunks : 1;
+    // Each chunk has its own scratch, indexed from the start of its range.
+    const std::size_t perChunk = scratch / static_cast<std::size_t>(m_chunks) + 1;
+    m_scratch.resize(static_cast<std::size_t>(m_chunks));
+    for (SpringScratch& chunk : m_scratch)
+        for (auto* buffer : {&chunk.dx, &chunk.dy, &chunk.dz, &chunk.dvx, &chunk.dvy, &chunk.dvz, &chunk.power})
+            buffer->assign(perChunk, 0.0);
+    const auto n3 = static_cast<std::size_t>(3 * topology->particleCount());
+    m_chunkForce.assign(static_cast<std::size_t>(m_chunks - 1), std::vector<double>(n3, 0.0));
+}
+
+std::pair<std::size_t, std::size_t> ForceModel::range(std::size_t count, int chunk, int chunks) {
+    const auto c = static_cast<std::size_t>(chunk), n = static_cast<std::size_t>(chunks);
+    return {count * c / n, count * (c + 1) / n};
+}
+
+void ForceModel::runChunks(const std::function<void(int)>& task) {
+    if (m_pool && m_chunks > 1) {
+        m_pool->run(m_chunks, task);
+    } else {
+        for (int c = 0; c < m_chunks; ++c) task(c);
+    }
+}
+
+void ForceModel::countTerms() {
+    ++m_forceEvaluations;
+    for (Term t : {Term::Gravity, Term::Springs, Term::Gas})
+        if (m_terms.has(t)) ++m_evaluations[static_cast<std::size_t>(t)];
+    if (m_terms.has(Term::Pointer) && pointer.active) ++m_evaluations[static_cast<std::size_t>(Term::Pointer)];
+}
+
+double ForceModel::volume(const Surface& surface, const double* x) {
+    const int dim = m_topology->dimension;
+    const std::size_t count = dim == 2 ? surface.edges.size() : surface.triangles.size();
+    std::array<double, kChunks> partial{};
+    runChunks([&](int c) {
+        auto [begin, end] = range(count, c, m_chunks);
+        partial[static_cast<std::size_t>(c)] = partialVolume(surface, dim, x, begin, end);
+    });
+    double sum = 0.0;
+    for (int c = 0; c < m_chunks; ++c) sum += partial[static_cast<std::size_t>(c)];
+    return dim == 2 ? 0.5 * sum : sum / 6.0;
+}
+
+std::array<double, kSpringFamilyCount> ForceModel::springEnergies(const double* x) {
+    std::array<std::array<double, kSpringFamilyCount>, kChunks> partial{};
+    runChunks([&](int c) {
+        for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
+            const SpringSet& s = m_topology->springs[static_cast<std::size_t>(fam)];
+            auto [begin, end] = range(s.size(), c, m_chunks);
+            double sum = 0.0;
+            for (std::size_t k = begin; k < end; ++k) {
+                const int i = 3 * s.a[k], j = 3 * s.b[k];
+                const double dx = x[j] - x[i], dy = x[j + 1] - x[i + 1], dz = x[j + 2] - x[i + 2];
+                const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - s.rest[k];
+                sum += stretch * stretch;
+            }
+            partial[static_cast<std::size_t>(c)][static_cast<std::size_t>(fam)] = sum;
+        }
+    });
+    std::array<double, kSpringFamilyCount> energy{};
+    for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
+        double sum = 0.0;
+        for (int c = 0; c < m_chunks; ++c) sum += partial[static_cast<std::size_t>(c)][static_cast<std::size_t>(fam)];
+        energy[static_cast<std::size_t>(fam)] = 0.5 * params.ks[static_cast<std::size_t>(fam)] * sum;
+    }
+    return energy;
+}
+
 void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtras& extras) {
     const Topology& topo = *m_topology;
-    const std::size_t n3 = static_cast<std::size_t>(3 * topo.particleCount());
-    std::fill(f, f + n3, 0.0);
+    const auto n3 = static_cast<std::size_t>(3 * topo.particleCount());
     extras = ForceExtras{};
-    ++m_forceEvaluations;
+    countTerms();
 
-    if (m_terms.has(Term::Gravity)) {
-        ++m_evaluations[static_cast<std::size_t>(Term::Gravity)];
-        addGravity(*m_mass, params.gravity, f);
+    // Stage 1: volumes (the gas force needs P = c / V of the whole layer first).
+    std::array<double, 2> pressure{};
+    const bool gas = m_terms.has(Term::Gas);
+    if (gas) {
+        for (const Surface& s : topo.surfaces) {
+            const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+            const double volume = this->volume(s, x);
+            extras.volume[slot] = volume;
+            pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
+            extras.pressure[slot] = pressure[slot];
+        }
     }
-    if (m_terms.has(Term::Springs)) {
-        ++m_evaluations[static_cast<std::size_t>(Term::Springs)];
+    // Stage 2: each chunk accumulates its springs and triangles into its own buffer.
+    runChunks([&](int c) {
+        double* out = c == 0 ? f : m_chunkForce[static_cast<std::size_t>(c - 1)].data();
+        std::fill(out, out + n3, 0.0);
+        double power = 0.0;
+        int degenerate = 0;
+        SpringScratch& scratch = m_scratch[static_cast<std::size_t>(c)];
+        if (m_terms.has(Term::Springs)) {
+            for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
+                const auto k = static_cast<std::size_t>(fam);
+                const SpringSet& s = topo.springs[k];
+                auto [begin, end] = range(s.size(), c, m_chunks);
+                degenerate += springForcesSoA(s, params.ks[k], params.kd[k], x, v, begin, end, scratch);
+                scatterPairs(s, begin, end, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), out);
+                for (std::size_t e = 0; e < end - begin; ++e) power += scratch.power[e];
+            }
+        }
+        if (gas) {
+            for (const Surface& s : topo.surfaces) {
+                const double p = pressure[static_cast<std::size_t>(layerSlot(s.layer))];
+                if (!(p > 0.0)) continue;
+                if (topo.dimension == 2) {
+                    // Edge a->b, interior on the left: P*L*n/2 = P (dy, -dx)/2 to each end.
+                    auto [begin, end] = range(s.edges.size(), c, m_chunks);
+                    const double half = 0.5 * p;
+                    for (std::size_t e = begin; e < end; ++e) {
+                        const int a = s.edges[e][0], b = s.edges[e][1];
+                        const double dx = x[3 * b] - x[3 * a], dy = x[3 * b + 1] - x[3 * a + 1];
+                        out[3 * a] += half * dy;
+                        out[3 * a + 1] -= half * dx;
+                        out[3 * b] += half * dy;
+                        out[3 * b + 1] -= half * dx;
+                    }
+                } else {
+                    auto [begin, end] = range(s.triangles.size(), c, m_chunks);
+                    gasForcesSoA(s, p, x, begin, end, scratch.dx.data(), scratch.dy.data(), scratch.dz.data());
+                    scatterTriangles(s, begin, end, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), out);
+                }
+            }
+        }
+        m_chunkPower[static_cast<std::size_t>(c)] = power;
+        m_chunkDegenerate[static_cast<std::size_t>(c)] = degenerate;
+    });
+    // Stage 3: sum the chunk buffers in chunk order and add gravity, by particle ranges.
+    const bool gravity = m_terms.has(Term::Gravity);
+    const double g = params.gravity;
+    const double* mass = m_mass->data();
+    if (m_chunks > 1 || gravity) {
+        runChunks([&](int c) {
+            auto [begin, end] = range(static_cast<std::size_t>(topo.particleCount()), c, m_chunks);
+            for (const std::vector<double>& buffer : m_chunkForce)
+                for (std::size_t k = 3 * begin; k < 3 * end; ++k) f[k] += buffer[k];
+            if (gravity)
+                for (std::size_t i = begin; i < end; ++i) f[3 * i + 1] -= mass[i] * g;
+        });
+    }
+    for (int c = 0; c < m_chunks; ++c) {
+        extras.dampingPower += m_chunkPower[static_cast<std::size_t>(c)];
+        extras.degenerateSprings += m_chunkDegenerate[static_cast<std::size_t>(c)];
+    }
+    if (m_terms.has(Term::Pointer) && pointer.active)
+        extras.dampingPower += addPointer(pointer, params.mks, params.mkd, params.mouseRest, x, v, f);
+}
+
+void ForceModel::evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras) {
+    const Topology& topo = *m_topology;
+    std::fill(f, f + 3 * topo.particleCount(), 0.0);
+    extras = ForceExtras{};
+    countTerms();
+    if (m_terms.has(Term::Gravity)) addGravity(*m_mass, params.gravity, f);
+    if (m_terms.has(Term::Springs))
         for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
             const auto k = static_cast<std::size_t>(fam);
-            extras.dampingPower += addSprings(topo.springs[k], params.ks[k], params.kd[k], x, v,
-                                              f, extras.degenerateSprings);
+            extras.dampingPower += addSprings(topo.springs[k], params.ks[k], params.kd[k], x, v, f,
+                                              extras.degenerateSprings);
         }
-    }
-    if (m_terms.has(Term::Gas)) {
-        ++m_evaluations[static_cast<std::size_t>(Term::Gas)];
+    if (m_terms.has(Term::Gas))
         for (const Surface& s : topo.surfaces) {
-            const int slot = layerSlot(s.layer);
-            const double c = params.gasConstant[static_cast<std::size_t>(slot)];
-            const double volume = addGas(s, topo.dimension, c, x, f);
-            extras.volume[static_cast<std::size_t>(slot)] = volume;
-            extras.pressure[static_cast<std::size_t>(slot)] = volume > 0.0 ? c / volume : 0.0;
+            const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+            const double volume = addGas(s, topo.dimension, params.gasConstant[slot], x, f);
+            extras.volume[slot] = volume;
+            extras.pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
         }
-    }
-    if (m_terms.has(Term::Pointer) && pointer.active) {
-        ++m_evaluations[static_cast<std::size_t>(Term::Pointer)];
+    if (m_terms.has(Term::Pointer) && pointer.active)
         extras.dampingPower += addPointer(pointer, params.mks, params.mkd, params.mouseRest, x, v, f);
-    }
 }
 
 }  // namespace simcore

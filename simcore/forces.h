@@ -7,6 +7,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -70,30 +72,85 @@ double pointerEnergy(const PointerSpring& pointer, double mks, double rest, cons
 // Index into the [inner, outer] arrays for a surface's layer.
 inline int layerSlot(Layer layer) { return layer == Layer::Inner ? 0 : 1; }
 
+// Fast kernels (the hot path). Each works on a range [begin, end) of springs or triangles:
+// a compute pass writes per-element results into structure-of-arrays scratch (no scatter, so
+// the compiler vectorises it), then a scatter pass adds them to the particles.
+// Per-spring scratch (structure of arrays) of one chunk, indexed from the start of its range.
+struct SpringScratch {
+    std::vector<double> dx, dy, dz;     // separation in, force on the first particle out
+    std::vector<double> dvx, dvy, dvz;  // relative velocity
+    std::vector<double> power;          // damping power per spring
+};
+// Forces of springs [begin, end) into scratch (dx, dy, dz) and scratch.power. Returns the
+// number of degenerate (near zero length) springs in the range.
+int springForcesSoA(const SpringSet& springs, double ks, double kd, const double* x,
+                    const double* v, std::size_t begin, std::size_t end, SpringScratch& scratch);
+// Adds f[k - begin] of springs [begin, end) to their first and subtracts it from their second particle.
+void scatterPairs(const SpringSet& springs, std::size_t begin, std::size_t end, const double* fx,
+                  const double* fy, const double* fz, double* f);
+// Per-triangle gas force (P/6) (b-a)x(c-a) for triangles [begin, end), into g[t - begin].
+void gasForcesSoA(const Surface& surface, double pressure, const double* x, std::size_t begin,
+                  std::size_t end, double* gx, double* gy, double* gz);
+void scatterTriangles(const Surface& surface, std::size_t begin, std::size_t end,
+                      const double* gx, const double* gy, const double* gz, double* f);
+double partialVolume(const Surface& surface, int dimension, const double* x, std::size_t begin,
+                     std::size_t end);  // sum of x_a.(x_b x x_c) (3D) or shoelace terms (2D)
+
+class ThreadPool;
+
 // Evaluates every declared term and counts evaluations.
+//
+// Large bodies are split into kChunks fixed pieces (springs and triangles by index range),
+// each accumulating into its own force buffer; the buffers are then summed in chunk order.
+// The split does not depend on the number of threads, so results are bit-identical whether a
+// pool of 1 or 2 threads runs the chunks.
 class ForceModel {
 public:
+    static constexpr int kChunks = 2;
+    // Bodies with fewer springs than this run as one chunk (threads would cost more than win).
+    static constexpr std::size_t kChunkThreshold = 8192;
+
     ForceModel() = default;
-    ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms)
-        : m_topology(topology), m_mass(mass), m_terms(terms) {}
+    ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms);
 
     ForceParams params;
     PointerSpring pointer;
 
     const TermSet& terms() const { return m_terms; }
+    // The pool that runs the chunks (nullptr: the calling thread runs them all).
+    void setPool(ThreadPool* pool) { m_pool = pool; }
+    int chunks() const { return m_chunks; }
+
     // Computes f = F(x, v) (3N). Overwrites f.
     void evaluate(const double* x, const double* v, double* f, ForceExtras& extras);
+    // The same forces by the plain one-pass kernels (the reference the fast path is tested on).
+    void evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras);
+    // Elastic energy per spring family and enclosed volume per surface, chunked like forces.
+    std::array<double, kSpringFamilyCount> springEnergies(const double* x);
+    double volume(const Surface& surface, const double* x);
+
     // Counts one evaluation of a post-step term (collisions, layer constraint).
     void countPostStep(Term term) { ++m_evaluations[static_cast<std::size_t>(term)]; }
     std::uint64_t evaluations(Term term) const { return m_evaluations[static_cast<std::size_t>(term)]; }
     std::uint64_t forceEvaluations() const { return m_forceEvaluations; }
 
 private:
+    void runChunks(const std::function<void(int)>& task);
+    static std::pair<std::size_t, std::size_t> range(std::size_t count, int chunk, int chunks);
+    void countTerms();
+
     const Topology* m_topology = nullptr;
     const Eigen::VectorXd* m_mass = nullptr;
     TermSet m_terms;
+    ThreadPool* m_pool = nullptr;
+    int m_chunks = 1;
     std::array<std::uint64_t, kTermCount> m_evaluations{};
     std::uint64_t m_forceEvaluations = 0;
+    // Scratch, sized once: per-element results and per-chunk force buffers.
+    std::vector<SpringScratch> m_scratch;  // one per chunk
+    std::vector<std::vector<double>> m_chunkForce;  // chunks 1.. (chunk 0 writes f directly)
+    std::array<double, kChunks> m_chunkPower{};
+    std::array<int, kChunks> m_chunkDegenerate{};
 };
 
 }  // namespace simcore
