@@ -1,6 +1,7 @@
 #include "body.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -78,7 +79,55 @@ Body twoLayerSphere(const TriangleMesh& mesh, const std::vector<std::array<int, 
     return body;
 }
 
+// Interleaves the bits of three 10-bit integers (a Morton / Z-order code).
+std::uint32_t mortonCode(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+    auto spread = [](std::uint32_t v) {
+        v = (v | (v << 16)) & 0x030000FFu;
+        v = (v | (v << 8)) & 0x0300F00Fu;
+        v = (v | (v << 4)) & 0x030C30C3u;
+        v = (v | (v << 2)) & 0x09249249u;
+        return v;
+    };
+    return spread(x) | (spread(y) << 1) | (spread(z) << 2);
+}
+
 }  // namespace
+
+void renumberForLocality(TriangleMesh& mesh, std::vector<std::array<int, 2>>* edges) {
+    // Sort vertices along a Z-order curve of their positions, so that particles near in space
+    // are near in memory and a spring's two ends usually share cache lines.
+    const Eigen::Index n = mesh.vertices.cols();
+    std::vector<std::pair<std::uint32_t, int>> keyed(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Vector3d q = (mesh.vertices.col(i).array() + 1.0) * 0.5 * 1023.0;
+        keyed[static_cast<std::size_t>(i)] = {
+            mortonCode(static_cast<std::uint32_t>(q.x()), static_cast<std::uint32_t>(q.y()),
+                       static_cast<std::uint32_t>(q.z())),
+            static_cast<int>(i)};
+    }
+    std::stable_sort(keyed.begin(), keyed.end());
+    std::vector<int> newIndex(static_cast<std::size_t>(n));
+    Eigen::Matrix3Xd sorted(3, n);
+    for (Eigen::Index k = 0; k < n; ++k) {
+        const int old = keyed[static_cast<std::size_t>(k)].second;
+        newIndex[static_cast<std::size_t>(old)] = static_cast<int>(k);
+        sorted.col(k) = mesh.vertices.col(old);
+    }
+    mesh.vertices = sorted;
+    for (auto& tri : mesh.triangles)
+        for (int& v : tri) v = newIndex[static_cast<std::size_t>(v)];
+    // Triangles in the order of their lowest vertex, so the gas loop walks memory forward too.
+    std::stable_sort(mesh.triangles.begin(), mesh.triangles.end(), [](const auto& a, const auto& b) {
+        return std::min({a[0], a[1], a[2]}) < std::min({b[0], b[1], b[2]});
+    });
+    if (edges) {
+        for (auto& e : *edges) {
+            e = {newIndex[static_cast<std::size_t>(e[0])], newIndex[static_cast<std::size_t>(e[1])]};
+            if (e[0] > e[1]) std::swap(e[0], e[1]);
+        }
+        std::sort(edges->begin(), edges->end());
+    }
+}
 
 std::vector<std::array<int, 2>> meshEdges(const std::vector<std::array<int, 3>>& triangles) {
     std::vector<std::array<int, 2>> edges;
@@ -231,6 +280,7 @@ Body buildRing2d(const RingShape& shape, double massInner, double massOuter) {
 
 Body buildSphere3d(const SphereShape& shape, double massInner, double massOuter) {
     TriangleMesh mesh = subdividedOctahedron(shape.subdivisions);
+    renumberForLocality(mesh, nullptr);
     const auto edges = meshEdges(mesh.triangles);
     return twoLayerSphere(mesh, edges, shape.radiusInner, shape.radiusOuter, massInner, massOuter);
 }
@@ -251,7 +301,7 @@ Body buildLatLongSphere(const LatLongShape& shape, double massInner, double mass
         }
         edges.push_back({ring(rings - 1, s), south});
     }
-    std::sort(edges.begin(), edges.end());
+    renumberForLocality(mesh, &edges);
     return twoLayerSphere(mesh, edges, shape.radiusInner, shape.radiusOuter, massInner, massOuter);
 }
 

@@ -106,6 +106,9 @@ struct TriangleMesh {
 };
 TriangleMesh subdividedOctahedron(int level);
 TriangleMesh latLongSphere(int slices, int stacks);
+// Renumbers a mesh's vertices along a space-filling (Z-order) curve for memory locality, and
+// remaps its triangles and, if given, an edge list (kept sorted, a < b).
+void renumberForLocality(TriangleMesh& mesh, std::vector<std::array<int, 2>>* edges);
 // Unique undirected edges (a < b) of a triangle mesh, sorted.
 std::vector<std::array<int, 2>> meshEdges(const std::vector<std::array<int, 3>>& triangles);
 

@@ -1,0 +1,62 @@
+// `bench`: how fast one scene steps, per size, integrator and thread count.
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "cli.h"
+#include "simulation.h"
+
+namespace cli {
+
+namespace {
+
+long peakResidentKiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return usage.ru_maxrss;  // KiB on Linux
+}
+
+}  // namespace
+
+int commandBench(const std::vector<std::string>& args) {
+    auto names = sceneOptionNames();
+    names.insert(names.end(), {"steps", "threads", "warmup"});
+    Options options(args, names, {"header"});
+    SceneSetup setup = sceneSetup(options);
+    const long steps = options.integer("steps", 200, 1, 100000000L);
+    const long warmup = options.integer("warmup", 10, 0, 1000000L);
+    const long threads = options.integer("threads", simcore::hardwareThreads(), 1, 256);
+
+    const auto buildStart = std::chrono::steady_clock::now();
+    simcore::Simulation sim(setup.params, setup.integrator);
+    const double buildSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
+    sim.setThreads(static_cast<int>(threads));
+    for (long i = 0; i < warmup; ++i) sim.step();
+    const std::uint64_t evalsBefore = sim.diagnostics().forceEvaluations;
+    const auto start = std::chrono::steady_clock::now();
+    for (long i = 0; i < steps && !sim.failed(); ++i) sim.step();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (sim.failed()) {
+        std::fprintf(stderr, "bench: the simulation failed: %s\n", sim.failure()->reason.c_str());
+        return kExitFailed;
+    }
+    const double evals = static_cast<double>(sim.diagnostics().forceEvaluations - evalsBefore);
+    const simcore::Topology& topo = sim.topology();
+    std::size_t faces = 0;
+    for (const simcore::Surface& s : topo.surfaces) faces += topo.dimension == 2 ? s.edges.size() : s.triangles.size();
+    const double usPerStep = 1e6 * seconds / static_cast<double>(steps);
+    const double nsPerSpring = 1e9 * seconds / (evals * static_cast<double>(topo.springCount()));
+    const double realTime = sim.dt() / (seconds / static_cast<double>(steps));
+    if (options.has("header"))
+        std::printf("scene,integrator,threads,particles,springs,faces,steps,us_per_step,ns_per_spring_eval,"
+                    "steps_per_second,real_time_factor,build_seconds,peak_rss_mib\n");
+    std::printf("%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f\n", setup.sceneName.c_str(),
+                setup.integrator.c_str(), sim.threads(), topo.particleCount(), topo.springCount(), faces,
+                steps, usPerStep, nsPerSpring, 1e6 / usPerStep, realTime, buildSeconds,
+                static_cast<double>(peakResidentKiB()) / 1024.0);
+    return kExitOk;
+}
+
+}  // namespace cli

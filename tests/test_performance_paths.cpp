@@ -1,0 +1,126 @@
+// The optimised paths against the straightforward ones: chunked, vectorised, threaded force
+// evaluation must give the reference forces to round-off, and 1 or 2 threads must give
+// bit-identical trajectories (reruns and side-by-side comparisons agree).
+#include <QtTest>
+
+#include <random>
+
+#include "forces.h"
+#include "simulation.h"
+
+using namespace simcore;
+
+namespace {
+
+ParameterSet largeSphere(int level) {
+    ParameterSet p(SceneKind::Sphere3d);
+    p.set("subdivisions", level);
+    p.set("perturb", 0.02);
+    return p;
+}
+
+}  // namespace
+
+class TestPerformancePaths : public QObject {
+    Q_OBJECT
+private slots:
+    void fastForcesMatchReference_data() {
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<int>("size");
+        QTest::newRow("sphere L1 (one chunk)") << int(SceneKind::Sphere3d) << 1;
+        QTest::newRow("sphere L4 (chunked)") << int(SceneKind::Sphere3d) << 4;
+        QTest::newRow("latlong 64x32 (chunked)") << int(SceneKind::Sphere3dLatLong) << 64;
+        QTest::newRow("ring 3000 (chunked)") << int(SceneKind::Ring2d) << 3000;
+    }
+    void fastForcesMatchReference() {
+        QFETCH(int, kind);
+        QFETCH(int, size);
+        ParameterSet p{SceneKind(kind)};
+        if (kind == int(SceneKind::Sphere3d)) p.set("subdivisions", size);
+        if (kind == int(SceneKind::Sphere3dLatLong)) {
+            p.set("slices", size);
+            p.set("stacks", size / 2);
+        }
+        if (kind == int(SceneKind::Ring2d)) p.set("particles", size);
+        Body body = buildBody(p);
+        const Eigen::Index n3 = 3 * body.topology.particleCount();
+        std::mt19937 rng(4);
+        std::normal_distribution<double> noise(0.0, 0.05);
+        Eigen::VectorXd x = Eigen::Map<Eigen::VectorXd>(body.positions.data(), n3);
+        Eigen::VectorXd v(n3);
+        for (Eigen::Index k = 0; k < n3; ++k) {
+            const bool planar = body.topology.dimension == 2 && k % 3 == 2;
+            x[k] += planar ? 0.0 : noise(rng);
+            v[k] = planar ? 0.0 : 20.0 * noise(rng);
+        }
+        // One degenerate spring: the ends of the first structural spring on top of each other.
+        const SpringSet& first = body.topology.family(SpringFamily::Structural);
+        x.segment(3 * first.b[0], 3) = x.segment(3 * first.a[0], 3);
+        ForceModel model(&body.topology, &body.mass, sceneTerms(SceneKind(kind)));
+        model.params.ks = {800, 700, 700};
+        model.params.kd = {15, 50, 50};
+        model.params.gasConstant = {20, 30};
+        model.pointer = PointerSpring{true, 7, Eigen::Vector3d(1, 2, 0.5)};
+        ThreadPool pool(2);
+        model.setPool(&pool);
+        Eigen::VectorXd fast(n3), reference(n3);
+        ForceExtras a, b;
+        model.evaluate(x.data(), v.data(), fast.data(), a);
+        model.evaluateReference(x.data(), v.data(), reference.data(), b);
+        QVERIFY(fast.allFinite());
+        const double error = (fast - reference).cwiseAbs().maxCoeff() / reference.cwiseAbs().maxCoeff();
+        QVERIFY2(error < 1e-12, qPrintable(QString("relative force difference %1").arg(error)));
+        QVERIFY(std::abs(a.dampingPower - b.dampingPower) <= 1e-12 * b.dampingPower);
+        QCOMPARE(a.degenerateSprings, b.degenerateSprings);
+        QVERIFY(a.degenerateSprings >= 1);
+        for (int l = 0; l < 2; ++l)
+            QVERIFY(std::abs(a.volume[std::size_t(l)] - b.volume[std::size_t(l)]) <= 1e-12 * std::abs(b.volume[std::size_t(l)]));
+        const auto energies = model.springEnergies(x.data());
+        for (int f = 0; f < kSpringFamilyCount; ++f) {
+            const double reference1 = springEnergy(body.topology.springs[std::size_t(f)], model.params.ks[std::size_t(f)], x.data());
+            QVERIFY(std::abs(energies[std::size_t(f)] - reference1) <= 1e-12 * std::max(1.0, reference1));
+        }
+    }
+    void threadsGiveBitIdenticalTrajectories_data() {
+        QTest::addColumn<QString>("integrator");
+        QTest::newRow("rk4") << "rk4";
+        QTest::newRow("verlet") << "verlet";
+        QTest::newRow("euler") << "euler";
+    }
+    void threadsGiveBitIdenticalTrajectories() {
+        QFETCH(QString, integrator);
+        Simulation one(largeSphere(4), integrator.toStdString());
+        Simulation two(largeSphere(4), integrator.toStdString());
+        one.setThreads(1);
+        two.setThreads(2);
+        QCOMPARE(one.threads(), 1);
+        QCOMPARE(two.threads(), 2);
+        QVERIFY(two.forces().chunks() > 1);  // the chunked path is what is being compared
+        for (int i = 0; i < 60; ++i) {
+            QVERIFY(one.step());
+            QVERIFY(two.step());
+        }
+        QVERIFY(one.state() == two.state());  // bit for bit
+        QCOMPARE(one.diagnostics().total(), two.diagnostics().total());
+    }
+    void poolRunsEveryTaskOnce() {
+        ThreadPool pool(2);
+        for (int round = 0; round < 2000; ++round) {
+            std::vector<int> hits(7, 0);
+            pool.run(7, [&](int i) { hits[std::size_t(i)] += 1; });
+            for (int h : hits) QCOMPARE(h, 1);
+        }
+    }
+    void renumberingKeepsNeighboursClose() {
+        // After Z-order renumbering most springs join particles close in memory.
+        const Body body = buildSphere3d({5, 1.5, 2.0}, 1.0, 1.0);
+        const SpringSet& s = body.topology.family(SpringFamily::Structural);
+        const int perLayer = body.topology.particleCount() / 2;
+        std::size_t near = 0;
+        for (std::size_t k = 0; k < s.size(); ++k) near += std::abs(s.a[k] - s.b[k]) < perLayer / 16;
+        QVERIFY2(double(near) > 0.8 * double(s.size()), qPrintable(QString::number(double(near) / double(s.size()))));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPerformancePaths)
+#include "test_performance_paths.moc"
