@@ -1,6 +1,11 @@
 #include "integrators.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
+
+#include "implicit_operator.h"
 
 namespace simcore {
 
@@ -13,6 +18,8 @@ constexpr std::array kIntegrators = {
     IntegratorInfo{"rk4", 4, "classical Runge-Kutta 4 (eq. 35-40): four force evaluations"},
     IntegratorInfo{"symplectic-euler", 1, "semi-implicit Euler: v from the old forces, then x from the new v"},
     IntegratorInfo{"verlet", 2, "velocity Verlet (order 1 when damping is on: damping is taken at the half-step velocity)"},
+    IntegratorInfo{"rk45", 5, "Dormand-Prince 5(4): adaptive step from atol/rtol, embedded error estimate every step"},
+    IntegratorInfo{"implicit-euler", 1, "linearised backward Euler (Baraff-Witkin 1998): spring and gas Jacobians, matrix-free CG"},
 };
 // clang-format on
 
@@ -111,6 +118,221 @@ public:
     }
 };
 
+// Dormand-Prince 5(4) (Dormand & Prince 1980; Hairer, Norsett & Wanner, "Solving ODEs I",
+// table 5.2). The 5th-order solution is propagated (local extrapolation); the difference to
+// the embedded 4th-order one is the error estimate. The seventh stage k7 = f(t + h, y1) is
+// needed for the estimate; it could be reused as the next k1 (FSAL), but between two steps
+// the state may be changed by collisions, the pointer or a parameter edit, so every step
+// re-evaluates k1: 7 evaluations per attempt instead of 6, always correct.
+//
+// Step control on the max-norm of e_i / (atol + rtol max(|y0_i|, |y1_i|)) over x and v:
+//   accept when err <= 1;  h_new = h * clamp(0.9 err^(-1/5), 0.2, 5)  (no growth right after
+//   a rejection). A non-finite trial state counts as a rejection with the smallest factor.
+class DormandPrince final : public Integrator {
+public:
+    std::string_view name() const override { return "rk45"; }
+    int order() const override { return 5; }
+    int evaluationsPerStep() const override { return 7; }
+    bool adaptive() const override { return !m_options.fixedStep; }
+    void prepare(const StateLayout& layout) override {
+        m_layout = layout;
+        const Eigen::Index n = layout.size();
+        for (auto& k : m_k) k.setZero(n);
+        m_tmp.setZero(n);
+        m_y1.setZero(n);
+        m_err.setZero(n);
+    }
+    StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
+        // clang-format off
+        static constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
+        static constexpr double a21 = 1.0 / 5;
+        static constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
+        static constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
+        static constexpr double a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
+        static constexpr double a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176, a65 = -5103.0 / 18656;
+        static constexpr double b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
+        // e = b(5th) - b(4th)
+        static constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200, e6 = 22.0 / 525, e7 = -1.0 / 40;
+        // clang-format on
+        StepReport report;
+        const Eigen::Index n = m_layout.positions;
+        const bool control = !m_options.fixedStep;
+        bool rejectedBefore = false;
+        auto& [k1, k2, k3, k4, k5, k6, k7] = m_k;
+        for (;;) {
+            if (control && h < m_options.minStep) {
+                report.failure = "rk45: the step size fell below the minimum step; the "
+                                 "tolerance cannot be met (the system is too stiff or singular)";
+                return report;
+            }
+            system.derivative(t, y, k1);
+            m_tmp = y + h * a21 * k1;
+            system.derivative(t + c2 * h, m_tmp, k2);
+            m_tmp = y + h * (a31 * k1 + a32 * k2);
+            system.derivative(t + c3 * h, m_tmp, k3);
+            m_tmp = y + h * (a41 * k1 + a42 * k2 + a43 * k3);
+            system.derivative(t + c4 * h, m_tmp, k4);
+            m_tmp = y + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4);
+            system.derivative(t + c5 * h, m_tmp, k5);
+            m_tmp = y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5);
+            system.derivative(t + h, m_tmp, k6);
+            m_y1 = y + h * (b1 * k1 + b3 * k3 + b4 * k4 + b5 * k5 + b6 * k6);
+            system.derivative(t + h, m_y1, k7);
+            report.evaluations += 7;
+            m_err = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
+
+            double err = 0.0;
+            for (Eigen::Index i = 0; i < 2 * n; ++i) {
+                const double scale = m_options.atol + m_options.rtol * std::max(std::abs(y[i]), std::abs(m_y1[i]));
+                err = std::max(err, std::abs(m_err[i]) / scale);
+            }
+            if (!std::isfinite(err) || !m_y1.allFinite()) err = std::numeric_limits<double>::infinity();
+            if (!control || err <= 1.0) {
+                y = m_y1;
+                report.h = h;
+                // Position error, RMS over particles: sqrt(sum |e_x,i|^2 / N), N = n / 3.
+                report.errorEstimate = std::sqrt(m_err.head(n).squaredNorm() / std::max(1.0, static_cast<double>(n) / 3.0));
+                double factor = err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0;
+                factor = std::clamp(factor, 0.2, rejectedBefore ? 1.0 : 5.0);
+                report.hNext = control ? h * factor : h;
+                if (control && m_options.maxStep > 0.0) report.hNext = std::min(report.hNext, m_options.maxStep);
+                return report;
+            }
+            rejectedBefore = true;
+            ++report.rejected;
+            const double factor = std::isfinite(err) ? std::clamp(0.9 * std::pow(err, -0.2), 0.2, 1.0) : 0.2;
+            h *= factor;
+        }
+    }
+
+private:
+    StateLayout m_layout;
+    std::array<Eigen::VectorXd, 7> m_k;
+    Eigen::VectorXd m_tmp, m_y1, m_err;
+};
+
+// Linearised backward Euler (Baraff & Witkin, "Large steps in cloth simulation", 1998).
+// Backward Euler on M v' = F(x, v), x' = v, linearised once at the start of the step:
+//
+//   (M - h D - h^2 K) dv = h (F0 + h K v0),   v1 = v0 + dv,   x1 = x0 + h v1
+//
+// with K = dF/dx, D = dF/dv at (x0, v0). The matrix is never formed: CG only needs its
+// product with a vector, which the system computes spring by spring plus, for each gas layer,
+// the rank-one term -(c/V^2) g g^T (g = dV/dx) that couples the whole layer (see
+// implicit_operator.h). Constrained coordinates (fixed particles, absent axes) are filtered:
+// the operator is the identity there and the right-hand side zero, so they never move.
+// The integrated damping energy (aux) takes the explicit rate at the start of the step.
+// With the clamped spring Jacobian (compressed springs drop their indefinite part) this is
+// a W-method: first order whatever the approximation, and stable for stiff springs at any h.
+class ImplicitEuler final : public Integrator {
+public:
+    std::string_view name() const override { return "implicit-euler"; }
+    int order() const override { return 1; }
+    int evaluationsPerStep() const override { return 1 + m_options.newtonIterations; }
+    bool implicit() const override { return true; }
+    void prepare(const StateLayout& layout) override {
+        m_layout = layout;
+        const Eigen::Index n = layout.positions;
+        m_k1.setZero(layout.size());
+        m_yk.setZero(layout.size());
+        m_kk.setZero(layout.size());
+        for (auto* v : {&m_rhs, &m_dv, &m_kv, &m_zero, &m_v, &m_v1, &m_z, &m_rhs2, &m_target}) v->setZero(n);
+        m_operator.resize(n);
+    }
+    StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
+        StepReport report;
+        if (!system.hasForceJacobian()) {
+            report.failure = "implicit-euler: this system provides no force Jacobian";
+            return report;
+        }
+        const Eigen::Index n = m_layout.positions, m = m_layout.aux;
+        system.derivative(t, y, m_k1);
+        report.evaluations = 1;
+        m_v = y.segment(n, n);
+        m_target.setConstant(std::numeric_limits<double>::quiet_NaN());
+        const int iterations = std::max(1, m_options.newtonIterations);
+        for (int it = 0; it < iterations; ++it) {
+            const Eigen::VectorXd& mass = system.coordinateMass();
+            if (it == 0) {
+                // Baraff-Witkin: linearised at (x0, v0); rhs = h (F0 + h K v0), F0 = M a0.
+                system.linearize(t, y);
+                system.forceJacobianProduct(y.segment(n, n), m_zero, m_kv);
+                m_rhs = h * (mass.cwiseProduct(m_k1.segment(n, n)) + h * m_kv);
+            } else {
+                // Newton on G(v) = M (v - v0) - h F(x0 + h v, v) = 0 at the current iterate.
+                m_yk = y;
+                m_yk.head(n) = y.head(n) + h * m_v;
+                m_yk.segment(n, n) = m_v;
+                system.derivative(t + h, m_yk, m_kk);
+                ++report.evaluations;
+                system.linearize(t + h, m_yk);
+                m_rhs = h * mass.cwiseProduct(m_kk.segment(n, n)) - mass.cwiseProduct(m_v - y.segment(n, n));
+            }
+            for (Eigen::Index i = 0; i < n; ++i)
+                if (mass[i] == 0.0) m_rhs[i] = 0.0;
+            m_operator.set(system, h);
+            if (!solve(system, y, h, report)) {
+                report.failure = "implicit-euler: the linear solve (conjugate gradient) did not "
+                                 "converge; the linearised system is not positive definite at this "
+                                 "step (the body is too deformed or the step too large)";
+                return report;
+            }
+            m_v += m_dv;
+            if (it > 0 && m_dv.norm() <= 1e-10 * (1.0 + m_v.norm())) break;
+        }
+        // The integrated diagnostics (aux: energy removed by damping) take the rate at the end
+        // of the step, as backward Euler does: with the rate at the start a large step would
+        // book far more damping than the implicit step actually removes. One more evaluation.
+        m_yk.head(n) = y.head(n) + h * m_v;
+        m_yk.segment(n, n) = m_v;
+        m_yk.tail(m) = y.tail(m);
+        system.derivative(t + h, m_yk, m_kk);
+        ++report.evaluations;
+        y.head(2 * n) = m_yk.head(2 * n);
+        y.tail(m) += h * m_kk.tail(m);
+        report.h = h;
+        report.hNext = h;
+        return report;
+    }
+
+private:
+    // Solves A dv = rhs for the current iterate m_v, with wall contacts inside the solve: a
+    // coordinate that would end beyond a wall gets the velocity that lands it on the wall and
+    // the solve is repeated with that velocity prescribed, so the springs feel the stop in the
+    // same step (with contacts only handled after the step, a large step lets the rest of the
+    // body crash through the stopped particles). A prescribed dv = z moves to the right-hand
+    // side: rhs - A z on the free rows.
+    bool solve(OdeSystem& system, const Eigen::VectorXd& y, double h, StepReport& report) {
+        const Eigen::Index n = m_layout.positions;
+        auto prescribe = [&] {
+            for (Eigen::Index i = 0; i < n; ++i) m_z[i] = std::isfinite(m_target[i]) ? m_target[i] - m_v[i] : 0.0;
+            m_operator.constrain(&m_target);
+            const Eigen::VectorXd& coupled = m_operator.coupling(m_z);
+            for (Eigen::Index i = 0; i < n; ++i) m_rhs2[i] = m_operator.isFree(i) ? m_rhs[i] - coupled[i] : 0.0;
+        };
+        prescribe();  // contacts found by earlier iterations stay prescribed
+        m_solver.setTolerance(m_options.cgTolerance);
+        m_solver.setMaxIterations(m_options.cgMaxIterations);
+        for (int pass = 0;; ++pass) {
+            m_solver.compute(m_operator);
+            m_dv = m_solver.solve(m_rhs2);
+            report.linearIterations += static_cast<int>(m_solver.iterations());
+            if (m_solver.info() != Eigen::Success || !m_dv.allFinite()) return false;
+            m_dv += m_z;
+            if (pass == 12) return true;
+            m_v1 = m_v + m_dv;
+            if (system.contactVelocities(h, y, m_v1, m_target) == 0) return true;
+            prescribe();
+        }
+    }
+
+    StateLayout m_layout;
+    Eigen::VectorXd m_k1, m_yk, m_kk;
+    Eigen::VectorXd m_rhs, m_dv, m_kv, m_zero, m_v, m_v1, m_z, m_rhs2, m_target;
+    ImplicitOperator m_operator;
+    Eigen::ConjugateGradient<ImplicitOperator, Eigen::Lower | Eigen::Upper, JacobiPreconditioner> m_solver;
+};
+
 }  // namespace
 
 std::span<const IntegratorInfo> integratorTable() { return kIntegrators; }
@@ -121,7 +343,28 @@ std::unique_ptr<Integrator> makeIntegrator(std::string_view name) {
     if (name == "rk4") return std::make_unique<Rk4>();
     if (name == "symplectic-euler") return std::make_unique<SymplecticEuler>();
     if (name == "verlet") return std::make_unique<VelocityVerlet>();
+    if (name == "rk45") return std::make_unique<DormandPrince>();
+    if (name == "implicit-euler") return std::make_unique<ImplicitEuler>();
     return nullptr;
+}
+
+bool hasStabilityFunction(std::string_view name) {
+    return name == "euler" || name == "midpoint" || name == "rk4" || name == "rk45" ||
+           name == "implicit-euler";
+}
+
+std::complex<double> stabilityFunction(std::string_view name, std::complex<double> z) {
+    // Truncated exponential series for the explicit Runge-Kutta methods; Dormand-Prince's
+    // 5th-order solution adds z^6/600 (its 6 stages cannot match e^z to 6th order).
+    const std::complex<double> one(1.0, 0.0);
+    if (name == "euler") return one + z;
+    if (name == "midpoint") return one + z + z * z / 2.0;
+    if (name == "rk4") return one + z * (one + z / 2.0 * (one + z / 3.0 * (one + z / 4.0)));
+    if (name == "rk45")
+        return one + z * (one + z / 2.0 * (one + z / 3.0 * (one + z / 4.0 * (one + z / 5.0)))) +
+               std::pow(z, 6) / 600.0;
+    if (name == "implicit-euler") return one / (one - z);
+    return {std::nan(""), 0.0};
 }
 
 std::string integratorNames() {

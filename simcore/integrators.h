@@ -6,7 +6,21 @@
 // removed by damping) so that they are integrated with the same accuracy as the motion.
 // An integrator advances y in place; its stage vectors are allocated once in prepare(),
 // never inside a step, and every stage re-evaluates the forces through OdeSystem.
+//
+// Explicit methods only need derivative(). The implicit method also needs the system's
+// mechanical structure, M v' = F(x, v), and the products of the force Jacobians
+// K = dF/dx and D = dF/dv with a vector (matrix-free: no matrix is ever assembled).
+//
+//   method            order  force evaluations per step        error estimate
+//   euler             1      1                                  step doubling (optional)
+//   midpoint          2      2                                  step doubling (optional)
+//   rk4               4      4                                  step doubling (optional)
+//   symplectic-euler  1      1                                  step doubling (optional)
+//   verlet            2 (1)  2                                  step doubling (optional)
+//   rk45              5(4)   7 per attempt (no FSAL, see .cpp)  embedded, every step
+//   implicit-euler    1      2 + CG products of K and D         step doubling (optional)
 
+#include <complex>
 #include <memory>
 #include <span>
 #include <string>
@@ -28,13 +42,61 @@ public:
     virtual StateLayout layout() const = 0;
     // dydt = f(t, y). Must not allocate.
     virtual void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) = 0;
+
+    // --- mechanical structure, for implicit methods (M v' = F(x, v)) ---
+    virtual bool hasForceJacobian() const { return false; }
+    // Fixes the point (x, v) of y at which the Jacobians below are taken.
+    virtual void linearize(double /*t*/, const Eigen::VectorXd& /*y*/) {}
+    // out = K dx + D dv with K = dF/dx, D = dF/dv at the linearisation point (all n long).
+    // Rows of constrained coordinates (fixed particles, absent axes) are zero.
+    virtual void forceJacobianProduct(const Eigen::VectorXd& /*dx*/, const Eigen::VectorXd& /*dv*/,
+                                      Eigen::VectorXd& out) {
+        out.setZero();
+    }
+    // Diagonals of K and D (n each), for a Jacobi preconditioner.
+    virtual void forceJacobianDiagonal(Eigen::VectorXd& k, Eigen::VectorXd& d) {
+        k.setZero();
+        d.setZero();
+    }
+    // Wall contacts inside an implicit solve: given the start state y0 and candidate
+    // end-of-step velocities v1 (n), marks each coordinate that would end beyond a wall with
+    // the velocity that lands it on the wall (target; NaN = free; marks already set are kept).
+    // Returns how many coordinates it newly marked.
+    virtual int contactVelocities(double /*h*/, const Eigen::VectorXd& /*y0*/,
+                                  const Eigen::VectorXd& /*v1*/, Eigen::VectorXd& /*target*/) {
+        return 0;
+    }
+    // Mass of each coordinate [kg] (n), 0 on constrained coordinates.
+    virtual const Eigen::VectorXd& coordinateMass() const {
+        static const Eigen::VectorXd none;
+        return none;
+    }
 };
 
 struct StepReport {
     double h = 0.0;               // step actually taken [s]
     double hNext = 0.0;           // step suggested for the next step [s]
-    double errorEstimate = -1.0;  // local error estimate, < 0 when the method has none
+    double errorEstimate = -1.0;  // local position error estimate [m], RMS over particles; < 0: none
     int evaluations = 0;          // force evaluations spent, including rejected attempts
+    int rejected = 0;             // adaptive methods: attempts rejected before this step
+    int linearIterations = 0;     // implicit methods: CG iterations (each one K and D product)
+    // Why the step could not be taken (then y is left unchanged); nullptr when it was.
+    const char* failure = nullptr;
+};
+
+// Tunables of the integrators (not of the physics), shared by every method.
+struct IntegratorOptions {
+    double atol = 1e-6;             // rk45: absolute tolerance on x [m] and v [m/s]
+    double rtol = 1e-6;             // rk45: relative tolerance
+    bool fixedStep = false;         // rk45: take the given step, no control (order studies)
+    double minStep = 1e-10;         // rk45: below this step [s] the run fails instead of stalling
+    double maxStep = 0.0;           // rk45: largest step [s]; 0 = no cap
+    double cgTolerance = 1e-9;      // implicit-euler: CG relative residual
+    int cgMaxIterations = 500;      // implicit-euler: a solve that needs more fails the step
+    int newtonIterations = 1;       // implicit-euler: 1 = linearised once (Baraff-Witkin);
+                                    // more = Newton iterations towards full backward Euler
+    bool stepDoubling = false;      // fixed-step methods: estimate the local error by step
+                                    // doubling (Richardson); costs about twice the evaluations
 };
 
 class Integrator {
@@ -44,8 +106,16 @@ public:
     virtual int order() const = 0;
     virtual int evaluationsPerStep() const = 0;
     virtual bool adaptive() const { return false; }
+    // Uses the Jacobians of OdeSystem: no explicit stability limit.
+    virtual bool implicit() const { return false; }
     virtual void prepare(const StateLayout& layout) = 0;
     virtual StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) = 0;
+
+    void setOptions(const IntegratorOptions& options) { m_options = options; }
+    const IntegratorOptions& options() const { return m_options; }
+
+protected:
+    IntegratorOptions m_options;
 };
 
 struct IntegratorInfo {
@@ -58,5 +128,12 @@ std::span<const IntegratorInfo> integratorTable();
 // nullptr when the name is unknown.
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
 std::string integratorNames();  // "euler, midpoint, ..." for messages
+
+// Stability function of a linear one-step method applied to y' = lambda y with z = h lambda:
+// y_{n+1} = R(z) y_n. Defined for euler, midpoint, rk4, rk45 (fixed step, 5th-order
+// solution) and implicit-euler; the partitioned methods (symplectic-euler, verlet) have no
+// scalar R and are treated per oscillator mode in stability.h.
+bool hasStabilityFunction(std::string_view name);
+std::complex<double> stabilityFunction(std::string_view name, std::complex<double> z);
 
 }  // namespace simcore

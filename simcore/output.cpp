@@ -108,6 +108,9 @@ std::vector<CsvColumn> timeSeriesColumns(SceneKind kind) {
     c.push_back({"energy_removed_collisions", [](const D& d) { return d.removedCollisions; }});
     c.push_back({"work_pointer", [](const D& d) { return d.workPointer; }});
     c.push_back({"energy_drift", [](const D& d) { return d.energyDrift(); }});
+    // Local position error estimate of the last step [m], RMS over particles: rk45's embedded
+    // estimate, or step doubling for fixed-step methods (run --error-estimate); -1 = none.
+    c.push_back({"error_estimate", [](const D& d) { return d.errorEstimate; }});
     if (layered) {
         c.push_back({"volume_inner", [](const D& d) { return d.volume[0]; }});
         c.push_back({"volume_outer", [](const D& d) { return d.volume[1]; }});

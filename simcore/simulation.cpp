@@ -1,5 +1,7 @@
 #include "simulation.h"
 
+#include "jacobians.h"
+
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -21,9 +23,106 @@ public:
     }
     const ForceExtras& extras() const { return m_extras; }
 
+    // --- Jacobians for implicit integrators (kernels in jacobians.h) ---
+    bool hasForceJacobian() const override { return true; }
+    void linearize(double /*t*/, const Eigen::VectorXd& y) override {
+        const Eigen::Index n = m_sim.m_n;
+        m_x = y.head(n);
+        m_mass.resize(n);
+        for (Eigen::Index k = 0; k < n; ++k)
+            m_mass[k] = m_sim.m_invMass3[k] > 0.0 ? 1.0 / m_sim.m_invMass3[k] : 0.0;
+        const Topology& topo = m_sim.m_body.topology;
+        m_gasOn = m_sim.m_forces.terms().has(Term::Gas);
+        if (!m_gasOn) return;
+        for (const Surface& s : topo.surfaces) {
+            const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+            m_gradient[slot].setZero(n);
+            addVolumeGradient(s, topo.dimension, m_x.data(), m_gradient[slot].data());
+            m_volume[slot] = enclosedVolume(s, m_x.data(), topo.dimension);
+        }
+    }
+    void forceJacobianProduct(const Eigen::VectorXd& dx, const Eigen::VectorXd& dv,
+                              Eigen::VectorXd& out) override {
+        out.setZero();
+        const Topology& topo = m_sim.m_body.topology;
+        const ForceParams& p = m_sim.m_forces.params;
+        if (m_sim.m_forces.terms().has(Term::Springs))
+            for (int f = 0; f < kSpringFamilyCount; ++f) {
+                const auto k = static_cast<std::size_t>(f);
+                addSpringJacobianProduct(topo.springs[k], p.ks[k], p.kd[k], m_x.data(), dx.data(),
+                                         dv.data(), out.data());
+            }
+        if (m_gasOn)
+            for (const Surface& s : topo.surfaces) {
+                const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+                addGasJacobianProduct(s, topo.dimension, p.gasConstant[slot], m_volume[slot],
+                                      m_gradient[slot], m_x.data(), dx.data(), out.data());
+            }
+        if (m_sim.m_forces.terms().has(Term::Pointer))
+            addPointerJacobianProduct(m_sim.m_forces.pointer, p.mks, p.mkd, p.mouseRest, m_x.data(),
+                                      dx.data(), dv.data(), out.data());
+        for (Eigen::Index k = 0; k < out.size(); ++k)
+            if (m_mass[k] == 0.0) out[k] = 0.0;
+    }
+    void forceJacobianDiagonal(Eigen::VectorXd& kdiag, Eigen::VectorXd& ddiag) override {
+        kdiag.setZero();
+        ddiag.setZero();
+        const Topology& topo = m_sim.m_body.topology;
+        const ForceParams& p = m_sim.m_forces.params;
+        if (m_sim.m_forces.terms().has(Term::Springs))
+            for (int f = 0; f < kSpringFamilyCount; ++f) {
+                const auto k = static_cast<std::size_t>(f);
+                addSpringJacobianDiagonal(topo.springs[k], p.ks[k], p.kd[k], m_x.data(),
+                                          kdiag.data(), ddiag.data());
+            }
+        if (m_gasOn)
+            for (const Surface& s : topo.surfaces) {
+                const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+                addGasJacobianDiagonal(p.gasConstant[slot], m_volume[slot], m_gradient[slot], kdiag.data());
+            }
+        if (m_sim.m_forces.terms().has(Term::Pointer))
+            addPointerJacobianDiagonal(m_sim.m_forces.pointer, p.mks, p.mkd, p.mouseRest, m_x.data(),
+                                       kdiag.data(), ddiag.data());
+    }
+    const Eigen::VectorXd& coordinateMass() const override { return m_mass; }
+    int contactVelocities(double h, const Eigen::VectorXd& y0, const Eigen::VectorXd& v1,
+                          Eigen::VectorXd& target) override {
+        // The same box planes as collide(): a free coordinate that would end outside lands
+        // on its wall. collide() then applies restitution to it after the step.
+        if (!m_sim.m_forces.terms().has(Term::Collisions)) return 0;
+        // Deepest first: only coordinates that penetrate at least half as deep as the deepest
+        // are marked in one pass. A particle behind another (an inner-layer particle above
+        // an outer one on the floor) is then held by its springs once the front one is
+        // stopped, instead of being stopped by the wall it would never have reached.
+        auto penetration = [&](Eigen::Index k, double& wall) {
+            const int axis = static_cast<int>(k % 3);
+            const double lo = m_sim.m_boxCentre[axis] - m_sim.m_box, hi = m_sim.m_boxCentre[axis] + m_sim.m_box;
+            const double end = y0[k] + h * v1[k];
+            wall = end < lo ? lo : hi;
+            return end < lo ? lo - end : end > hi ? end - hi : 0.0;
+        };
+        double deepest = 0.0, wall = 0.0;
+        for (Eigen::Index k = 0; k < m_sim.m_n; ++k)
+            if (m_mass[k] != 0.0 && !std::isfinite(target[k])) deepest = std::max(deepest, penetration(k, wall));
+        if (deepest <= 0.0) return 0;
+        int marked = 0;
+        for (Eigen::Index k = 0; k < m_sim.m_n; ++k) {
+            if (m_mass[k] == 0.0 || std::isfinite(target[k])) continue;
+            if (penetration(k, wall) < 0.5 * deepest) continue;
+            target[k] = (wall - y0[k]) / h;
+            ++marked;
+        }
+        return marked;
+    }
+
 private:
     Simulation& m_sim;
     ForceExtras m_extras;
+    // Linearisation point and its gas data (sized once, reused every step).
+    Eigen::VectorXd m_x, m_mass;
+    std::array<Eigen::VectorXd, 2> m_gradient;  // dV/dx of [inner, outer], 3N each
+    std::array<double, 2> m_volume{};
+    bool m_gasOn = false;
 };
 
 Simulation::Simulation(const ParameterSet& params, std::string_view integrator)
@@ -98,6 +197,8 @@ void Simulation::reset() {
             if (m_invMass3[k] != 0.0) m_y[k] += uniform(rng);
     }
     m_integrator->prepare(m_system->layout());
+    m_hNext = m_hTaken = m_dt;
+    m_doubling.setZero(m_y.size());
     m_lastGood = m_y;
     m_failure.reset();
     m_forces.pointer = PointerSpring{};
@@ -180,11 +281,46 @@ double Simulation::totalEnergyNow() const {
     return d.total();
 }
 
-bool Simulation::step() {
+bool Simulation::step(double until) {
     if (m_failure) return false;
     m_lastGood = m_y;
     const double t0 = m_diag.time;
-    const StepReport report = m_integrator->step(*m_system, t0, m_dt, m_y);
+    // Adaptive methods take the step they proposed, shortened to land on `until`.
+    double h = m_dt;
+    bool clamped = false;
+    if (m_integrator->adaptive()) {
+        h = m_hNext;
+        if (until - t0 > 1e-12 * std::max(1.0, std::abs(until)) && t0 + h > until) {
+            h = until - t0;
+            clamped = true;
+        }
+    }
+    StepReport report = m_integrator->step(*m_system, t0, h, m_y);
+    if (report.failure) {
+        m_failure = Failure{report.failure, m_diag.step + 1, t0};
+        m_y = m_lastGood;
+        return false;
+    }
+    if (m_integrator->adaptive())
+        m_hNext = clamped && report.rejected == 0 ? std::max(m_hNext, report.hNext) : report.hNext;
+    m_hTaken = report.h;
+    if (m_integratorOptions.stepDoubling && !m_integrator->adaptive() && m_y.allFinite()) {
+        // Step doubling (Richardson): y_h from one step, y_h/2 from two half steps from the
+        // same start; the local error of y_h is about |y_h/2 - y_h| / (1 - 2^-p) and that of
+        // y_h/2 is 2^-p of it. The run keeps y_h, so switching the estimate on changes
+        // nothing but the cost (the extra evaluations are counted).
+        m_doubling = m_y;
+        m_y = m_lastGood;
+        const double half = 0.5 * report.h;
+        const StepReport first = m_integrator->step(*m_system, t0, half, m_y);
+        const StepReport second = first.failure ? first : m_integrator->step(*m_system, t0 + half, half, m_y);
+        const double p = m_integrator->order();
+        const Eigen::Index n = m_n;
+        const double rms = std::sqrt((m_y.head(n) - m_doubling.head(n)).squaredNorm() /
+                                     std::max(1.0, static_cast<double>(particleCount())));
+        report.errorEstimate = second.failure || !std::isfinite(rms) ? -1.0 : rms / (1.0 - std::pow(2.0, -p));
+        m_y = m_doubling;
+    }
 
     // Wall contacts and the layer constraint change the state outside the ODE. Whatever
     // energy they change is measured across them and booked as removed by collisions.
@@ -220,8 +356,14 @@ bool Simulation::step() {
 
 bool Simulation::advanceTo(double tEnd) {
     // Round-off guard: a step that would end within 1e-9 dt of tEnd counts as reaching it.
-    while (!m_failure && m_diag.time < tEnd - 1e-9 * m_dt) step();
+    // Adaptive integrators land on tEnd exactly.
+    while (!m_failure && m_diag.time < tEnd - 1e-9 * std::min(m_dt, nextStep())) step(tEnd);
     return !m_failure;
+}
+
+void Simulation::setIntegratorOptions(const IntegratorOptions& options) {
+    m_integratorOptions = options;
+    m_integrator->setOptions(options);
 }
 
 bool Simulation::collide(bool apply) {
@@ -238,7 +380,9 @@ bool Simulation::collide(bool apply) {
             const double lo = m_boxCentre[axis] - m_box, hi = m_boxCentre[axis] + m_box;
             double& x = m_y[k];
             double& v = m_y[m_n + k];
-            const bool below = x < lo, above = x > hi;
+            // On the wall and moving into it counts too: an implicit step lands particles
+            // exactly on the wall (contacts inside its solve) and leaves restitution to here.
+            const bool below = x < lo || (x == lo && v < 0.0), above = x > hi || (x == hi && v > 0.0);
             if (!below && !above) continue;
             any = true;
             if (!apply) return true;
@@ -312,7 +456,7 @@ std::optional<std::string> Simulation::checkState(const Diagnostics& d) const {
     if (!m_y.allFinite() || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
     const auto v = velocities();
     const double fastest = v.colwise().norm().maxCoeff();
-    if (fastest * m_dt > 2.0 * m_box) {
+    if (fastest * m_hTaken > 2.0 * m_box) {
         why << "runaway velocity: a particle moves " << fastest
             << " m/s, farther than the whole box in one step";
         return why.str();
@@ -381,7 +525,9 @@ std::optional<std::string> Simulation::setIntegrator(std::string_view name) {
     auto next = makeIntegrator(name);
     if (!next) return "unknown integrator '" + std::string(name) + "'; allowed: " + integratorNames();
     m_integrator = std::move(next);
+    m_integrator->setOptions(m_integratorOptions);
     m_integrator->prepare(m_system->layout());
+    m_hNext = m_dt;
     return std::nullopt;
 }
 

@@ -13,6 +13,7 @@
 // On failure the last good state is restored and kept; no non-finite value ever leaves.
 // Parameters change only between steps (the caller owns the thread that steps).
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <random>
@@ -74,7 +75,9 @@ public:
 
     // --- running ---
     // One step of dt. Returns false when the run has failed (now or before).
-    bool step();
+    // An adaptive integrator takes the step it last proposed (hNext), shortened so as not to
+    // pass `until`; a fixed-step one always takes dt.
+    bool step(double until = std::numeric_limits<double>::infinity());
     // Steps until time >= t_end (within round-off) or failure. Returns !failed().
     bool advanceTo(double tEnd);
     void reset();  // back to the start state, same parameters
@@ -90,6 +93,11 @@ public:
     // Validates and applies. A shape or start key rebuilds the body and resets.
     std::optional<std::string> setParameter(std::string_view key, double value);
     std::optional<std::string> setIntegrator(std::string_view name);
+    // Tolerances of adaptive methods, CG settings of implicit ones, step doubling.
+    void setIntegratorOptions(const IntegratorOptions& options);
+    const IntegratorOptions& integratorOptions() const { return m_integratorOptions; }
+    // The step the next step() will try (dt for fixed-step integrators) [s].
+    double nextStep() const { return m_integrator->adaptive() ? m_hNext : m_dt; }
     const Integrator& integrator() const { return *m_integrator; }
     double dt() const { return m_dt; }
 
@@ -153,6 +161,10 @@ private:
     double m_restitution = 0.5;
     double m_friction = 0.0;
     double m_dt = 0.003;
+    double m_hNext = 0.003;       // adaptive integrators: the step proposed by the last one [s]
+    double m_hTaken = 0.003;      // the step being checked [s]
+    IntegratorOptions m_integratorOptions;
+    Eigen::VectorXd m_doubling;   // step doubling: the full-step result [x | v | aux]
     double m_energyScale = 1.0;   // for runaway detection [J]
     Eigen::Index m_n = 0;         // 3N
 };

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "integrators.h"
 #include "scenes.h"
+#include "simulation.h"
 
 namespace cli {
 
@@ -92,6 +94,36 @@ SceneSetup sceneSetup(const Options& options) {
         throw UsageError("radius_inner (" + std::to_string(p.get("radius_inner")) +
                          ") must be below radius_outer (" + std::to_string(p.get("radius_outer")) + ")");
     return setup;
+}
+
+std::vector<std::string> integratorOptionNames() { return {"atol", "rtol", "newton"}; }
+std::vector<std::string> integratorFlagNames() { return {"fixed-step", "error-estimate"}; }
+
+simcore::IntegratorOptions integratorOptions(const Options& options) {
+    simcore::IntegratorOptions o;
+    o.atol = options.number("atol", o.atol, 0.0, 1.0, true);
+    o.rtol = options.number("rtol", o.rtol, 0.0, 1.0, false);
+    o.newtonIterations = static_cast<int>(options.integer("newton", o.newtonIterations, 1, 50));
+    o.fixedStep = options.has("fixed-step");
+    o.stepDoubling = options.has("error-estimate");
+    return o;
+}
+
+std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator) {
+    // Only explicit fixed-step methods have a step limit from the fastest rate; rk45 adapts
+    // its step and implicit-euler is unconditionally stable on the linearised system.
+    auto method = simcore::makeIntegrator(integrator);
+    if (!method || method->implicit() || integrator == "rk45") return {};
+    simcore::Simulation sim(params, integrator);
+    const double rate = sim.estimatedFastestRate();
+    if (!(rate * sim.dt() > simcore::kExplicitStabilityLimit)) return {};
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "warning: dt = %g s is above the estimated explicit stability limit ~%.3g s "
+                  "(fastest spring rate ~%.3g 1/s); an explicit integrator will likely blow up "
+                  "(implicit-euler or rk45 will not)",
+                  sim.dt(), simcore::kExplicitStabilityLimit / rate, rate);
+    return text;
 }
 
 }  // namespace cli

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "integrators.h"
 #include "params.h"
 
 namespace cli {
@@ -50,6 +51,13 @@ struct SceneSetup {
 
 // --scene S (default ring2d), --set key=value..., --dt H, --integrator NAME.
 SceneSetup sceneSetup(const Options& options);
+
+// Integrator tunables: --atol, --rtol, --fixed-step, --error-estimate, --newton.
+simcore::IntegratorOptions integratorOptions(const Options& options);
+std::vector<std::string> integratorOptionNames();  // the ones with a value
+std::vector<std::string> integratorFlagNames();    // the flags
+// The pre-run warning: dt above the explicit stability estimate (empty when none applies).
+std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator);
 // The option names sceneSetup reads, for a command's allowed list.
 std::vector<std::string> sceneOptionNames();
 
@@ -57,5 +65,9 @@ int commandScenes(const std::vector<std::string>& args);
 int commandParams(const std::vector<std::string>& args);
 int commandIntegrators(const std::vector<std::string>& args);
 int commandRun(const std::vector<std::string>& args);
+int commandStudy(const std::vector<std::string>& args);
+int commandStability(const std::vector<std::string>& args);
+int commandGallery(const std::vector<std::string>& args);
+int commandBench(const std::vector<std::string>& args);
 
 }  // namespace cli

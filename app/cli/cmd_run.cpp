@@ -37,7 +37,10 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
 int commandRun(const std::vector<std::string>& args) {
     auto names = sceneOptionNames();
     names.insert(names.end(), {"duration", "csv", "every", "state"});
-    Options options(args, names, {"quiet"});
+    for (const auto& n : integratorOptionNames()) names.push_back(n);
+    std::vector<std::string> flags = {"quiet"};
+    for (const auto& n : integratorFlagNames()) flags.push_back(n);
+    Options options(args, names, flags);
     SceneSetup setup = sceneSetup(options);
     const double duration = options.number("duration", 5.0, 0.0, 1e7, true);
     const long every = options.integer("every", 1, 1, 1000000000L);
@@ -54,12 +57,9 @@ int commandRun(const std::vector<std::string>& args) {
     }
 
     simcore::Simulation sim(setup.params, setup.integrator);
-    const double rate = sim.estimatedFastestRate();
-    if (rate * sim.dt() > simcore::kExplicitStabilityLimit)
-        std::fprintf(stderr,
-                     "warning: dt = %g s is above the estimated explicit stability limit ~%.3g s "
-                     "(fastest spring rate ~%.3g 1/s); an explicit integrator will likely blow up\n",
-                     sim.dt(), simcore::kExplicitStabilityLimit / rate, rate);
+    sim.setIntegratorOptions(integratorOptions(options));
+    if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
+        std::fprintf(stderr, "%s\n", warning.c_str());
 
     const auto columns = simcore::timeSeriesColumns(setup.params.kind());
     if (csv) {
@@ -69,7 +69,7 @@ int commandRun(const std::vector<std::string>& args) {
     const auto start = std::chrono::steady_clock::now();
     const double tEnd = duration;
     while (sim.time() < tEnd - 1e-9 * sim.dt()) {
-        if (!sim.step()) break;
+        if (!sim.step(tEnd)) break;
         const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
         if (csv && (sim.stepCount() % every == 0 || last))
             csv->write(simcore::csvRow(columns, sim.diagnostics()));
