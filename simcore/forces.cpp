@@ -255,18 +255,104 @@ double partialVolume(const Surface& surface, int dimension, const double* x, std
 
 ForceModel::ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms)
     : m_topology(topology), m_mass(mass), m_terms(terms) {
-    std::size_t scratch = 0;
-    for (const SpringSet& s : topology->springs) scratch = std::max(scratch, s.size());
-    for (const Surface& s : topology->surfaces) scratch = std::max(scratch, s.triangles.size());
     m_chunks = topology->springCount() >= kChunkThreshold ? kChunks : 1;
-    // Each chunk has its own scratch, indexed from the start of its range.
-    const std::size_t perChunk = scratch / static_cast<std::size_t>(m_chunks) + 1;
-    m_scratch.resize(static_cast<std::size_t>(m_chunks));
     for (SpringScratch& chunk : m_scratch)
         for (auto* buffer : {&chunk.dx, &chunk.dy, &chunk.dz, &chunk.dvx, &chunk.dvy, &chunk.dvz, &chunk.power})
-            buffer->assign(perChunk, 0.0);
-    const auto n3 = static_cast<std::size_t>(3 * topology->particleCount());
-    m_chunkForce.assign(static_cast<std::size_t>(m_chunks - 1), std::vector<double>(n3, 0.0));
+            buffer->assign(kBlock, 0.0);
+    partition();
+}
+
+void ForceModel::partition() {
+    // Ownership: a layered body's vertex k belongs to chunk 0 when k < perLayer / 2 (in both
+    // layers, so radius and most shear springs stay inside one chunk). A spring or face whose
+    // particles all belong to one chunk goes to that chunk's list; the rest, few with the
+    // Z-order numbering, to the shared list, evaluated after the chunks by one thread. The
+    // chunks write disjoint particles of f directly: no per-thread buffers, no reduction.
+    const Topology& topo = *m_topology;
+    const int n = topo.particleCount();
+    const bool layered = !topo.layerPairs.empty();
+    const int perLayer = layered ? n / 2 : n;
+    const int half = perLayer / 2;
+    auto owner = [&](int p) { return m_chunks == 1 ? 0 : ((p % perLayer) < half ? 0 : 1); };
+    m_ownedRanges = {};
+    if (m_chunks == 1) {
+        m_ownedRanges[0].push_back({0, n});
+    } else {
+        m_ownedRanges[0].push_back({0, half});
+        m_ownedRanges[1].push_back({half, perLayer});
+        if (layered) {
+            m_ownedRanges[0].push_back({perLayer, perLayer + half});
+            m_ownedRanges[1].push_back({perLayer + half, n});
+        }
+    }
+    for (auto& part : m_parts) part = Part{};
+    for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
+        const SpringSet& springs = topo.springs[static_cast<std::size_t>(fam)];
+        for (std::size_t k = 0; k < springs.size(); ++k) {
+            const int oa = owner(springs.a[k]), ob = owner(springs.b[k]);
+            Part& part = m_parts[static_cast<std::size_t>(oa == ob ? oa : kChunks)];
+            part.springs[static_cast<std::size_t>(fam)].add(springs.a[k], springs.b[k], springs.rest[k]);
+        }
+    }
+    for (const Surface& surface : topo.surfaces) {
+        for (auto& part : m_parts) {
+            part.surfaces.push_back(Surface{});
+            part.surfaces.back().layer = surface.layer;
+        }
+        for (const auto& tri : surface.triangles) {
+            const int o = owner(tri[0]);
+            const bool same = owner(tri[1]) == o && owner(tri[2]) == o;
+            m_parts[static_cast<std::size_t>(same ? o : kChunks)].surfaces.back().triangles.push_back(tri);
+        }
+        for (const auto& edge : surface.edges) {
+            const int o = owner(edge[0]);
+            m_parts[static_cast<std::size_t>(owner(edge[1]) == o ? o : kChunks)].surfaces.back().edges.push_back(edge);
+        }
+    }
+}
+
+std::size_t ForceModel::sharedElements() const {
+    const Part& shared = m_parts[kChunks];
+    std::size_t count = shared.springs[0].size() + shared.springs[1].size() + shared.springs[2].size();
+    for (const Surface& s : shared.surfaces) count += s.triangles.size() + s.edges.size();
+    return count;
+}
+
+void ForceModel::accumulatePart(const Part& part, const double* x, const double* v,
+                                const std::array<double, 2>& pressure, SpringScratch& scratch,
+                                double* f, double& power, int& degenerate) const {
+    if (m_terms.has(Term::Springs)) {
+        for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
+            const auto k = static_cast<std::size_t>(fam);
+            const SpringSet& s = part.springs[k];
+            // Blocks small enough that the scratch stays in L1 between the three passes.
+            for (std::size_t b0 = 0; b0 < s.size(); b0 += kBlock) {
+                const std::size_t b1 = std::min(s.size(), b0 + kBlock);
+                degenerate += springForcesSoA(s, params.ks[k], params.kd[k], x, v, b0, b1, scratch);
+                scatterPairs(s, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), f);
+                for (std::size_t e = 0; e < b1 - b0; ++e) power += scratch.power[e];
+            }
+        }
+    }
+    if (!m_terms.has(Term::Gas)) return;
+    for (const Surface& s : part.surfaces) {
+        const double p = pressure[static_cast<std::size_t>(layerSlot(s.layer))];
+        if (!(p > 0.0)) continue;
+        // 2D edge a->b, interior on the left: P*L*n/2 = P (dy, -dx)/2 to each end.
+        const double halfP = 0.5 * p;
+        for (auto [a, b] : s.edges) {
+            const double dx = x[3 * b] - x[3 * a], dy = x[3 * b + 1] - x[3 * a + 1];
+            f[3 * a] += halfP * dy;
+            f[3 * a + 1] -= halfP * dx;
+            f[3 * b] += halfP * dy;
+            f[3 * b + 1] -= halfP * dx;
+        }
+        for (std::size_t b0 = 0; b0 < s.triangles.size(); b0 += kBlock) {
+            const std::size_t b1 = std::min(s.triangles.size(), b0 + kBlock);
+            gasForcesSoA(s, p, x, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data());
+            scatterTriangles(s, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), f);
+        }
+    }
 }
 
 std::pair<std::size_t, std::size_t> ForceModel::range(std::size_t count, int chunk, int chunks) {
@@ -329,7 +415,6 @@ std::array<double, kSpringFamilyCount> ForceModel::springEnergies(const double* 
 
 void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtras& extras) {
     const Topology& topo = *m_topology;
-    const auto n3 = static_cast<std::size_t>(3 * topo.particleCount());
     extras = ForceExtras{};
     countTerms();
 
@@ -345,66 +430,31 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
             extras.pressure[slot] = pressure[slot];
         }
     }
-    // Stage 2: each chunk accumulates its springs and triangles into its own buffer.
-    runChunks([&](int c) {
-        double* out = c == 0 ? f : m_chunkForce[static_cast<std::size_t>(c - 1)].data();
-        std::fill(out, out + n3, 0.0);
-        double power = 0.0;
-        int degenerate = 0;
-        SpringScratch& scratch = m_scratch[static_cast<std::size_t>(c)];
-        if (m_terms.has(Term::Springs)) {
-            for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
-                const auto k = static_cast<std::size_t>(fam);
-                const SpringSet& s = topo.springs[k];
-                auto [begin, end] = range(s.size(), c, m_chunks);
-                degenerate += springForcesSoA(s, params.ks[k], params.kd[k], x, v, begin, end, scratch);
-                scatterPairs(s, begin, end, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), out);
-                for (std::size_t e = 0; e < end - begin; ++e) power += scratch.power[e];
-            }
-        }
-        if (gas) {
-            for (const Surface& s : topo.surfaces) {
-                const double p = pressure[static_cast<std::size_t>(layerSlot(s.layer))];
-                if (!(p > 0.0)) continue;
-                if (topo.dimension == 2) {
-                    // Edge a->b, interior on the left: P*L*n/2 = P (dy, -dx)/2 to each end.
-                    auto [begin, end] = range(s.edges.size(), c, m_chunks);
-                    const double half = 0.5 * p;
-                    for (std::size_t e = begin; e < end; ++e) {
-                        const int a = s.edges[e][0], b = s.edges[e][1];
-                        const double dx = x[3 * b] - x[3 * a], dy = x[3 * b + 1] - x[3 * a + 1];
-                        out[3 * a] += half * dy;
-                        out[3 * a + 1] -= half * dx;
-                        out[3 * b] += half * dy;
-                        out[3 * b + 1] -= half * dx;
-                    }
-                } else {
-                    auto [begin, end] = range(s.triangles.size(), c, m_chunks);
-                    gasForcesSoA(s, p, x, begin, end, scratch.dx.data(), scratch.dy.data(), scratch.dz.data());
-                    scatterTriangles(s, begin, end, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), out);
-                }
-            }
-        }
-        m_chunkPower[static_cast<std::size_t>(c)] = power;
-        m_chunkDegenerate[static_cast<std::size_t>(c)] = degenerate;
-    });
-    // Stage 3: sum the chunk buffers in chunk order and add gravity, by particle ranges.
+    // Stage 2: each chunk clears its own particles, adds gravity and its own springs and faces.
     const bool gravity = m_terms.has(Term::Gravity);
     const double g = params.gravity;
     const double* mass = m_mass->data();
-    if (m_chunks > 1 || gravity) {
-        runChunks([&](int c) {
-            auto [begin, end] = range(static_cast<std::size_t>(topo.particleCount()), c, m_chunks);
-            for (const std::vector<double>& buffer : m_chunkForce)
-                for (std::size_t k = 3 * begin; k < 3 * end; ++k) f[k] += buffer[k];
+    std::array<double, kChunks> chunkPower{};
+    std::array<int, kChunks> chunkDegenerate{};
+    runChunks([&](int c) {
+        const auto k = static_cast<std::size_t>(c);
+        for (auto [begin, end] : m_ownedRanges[k]) {
+            std::fill(f + 3 * begin, f + 3 * end, 0.0);
             if (gravity)
-                for (std::size_t i = begin; i < end; ++i) f[3 * i + 1] -= mass[i] * g;
-        });
-    }
+                for (int i = begin; i < end; ++i) f[3 * i + 1] -= mass[i] * g;
+        }
+        accumulatePart(m_parts[k], x, v, pressure, m_scratch[k], f, chunkPower[k], chunkDegenerate[k]);
+    });
+    // Stage 3: the elements shared between chunks, on this thread, in a fixed order.
+    double power = 0.0;
+    int degenerate = 0;
+    accumulatePart(m_parts[kChunks], x, v, pressure, m_scratch[0], f, power, degenerate);
     for (int c = 0; c < m_chunks; ++c) {
-        extras.dampingPower += m_chunkPower[static_cast<std::size_t>(c)];
-        extras.degenerateSprings += m_chunkDegenerate[static_cast<std::size_t>(c)];
+        extras.dampingPower += chunkPower[static_cast<std::size_t>(c)];
+        extras.degenerateSprings += chunkDegenerate[static_cast<std::size_t>(c)];
     }
+    extras.dampingPower += power;
+    extras.degenerateSprings += degenerate;
     if (m_terms.has(Term::Pointer) && pointer.active)
         extras.dampingPower += addPointer(pointer, params.mks, params.mkd, params.mouseRest, x, v, f);
 }

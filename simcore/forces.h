@@ -100,15 +100,18 @@ class ThreadPool;
 
 // Evaluates every declared term and counts evaluations.
 //
-// Large bodies are split into kChunks fixed pieces (springs and triangles by index range),
-// each accumulating into its own force buffer; the buffers are then summed in chunk order.
-// The split does not depend on the number of threads, so results are bit-identical whether a
-// pool of 1 or 2 threads runs the chunks.
+// Large bodies are split into kChunks fixed pieces by particle ownership; each chunk writes
+// only its own particles' forces, and the few springs and faces joining two chunks are added
+// afterwards in a fixed order. The split does not depend on the number of threads, so results
+// are bit-identical whether a pool of 1 or 2 threads runs the chunks.
 class ForceModel {
 public:
     static constexpr int kChunks = 2;
     // Bodies with fewer springs than this run as one chunk (threads would cost more than win).
     static constexpr std::size_t kChunkThreshold = 8192;
+    // Springs or triangles per block of the gather / arithmetic / scatter passes (scratch of
+    // 7 x 256 doubles = 14 KiB stays in L1).
+    static constexpr std::size_t kBlock = 256;
 
     ForceModel() = default;
     ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms);
@@ -120,6 +123,8 @@ public:
     // The pool that runs the chunks (nullptr: the calling thread runs them all).
     void setPool(ThreadPool* pool) { m_pool = pool; }
     int chunks() const { return m_chunks; }
+    // Springs and faces evaluated after the chunks because they join particles of two chunks.
+    std::size_t sharedElements() const;
 
     // Computes f = F(x, v) (3N). Overwrites f.
     void evaluate(const double* x, const double* v, double* f, ForceExtras& extras);
@@ -147,10 +152,19 @@ private:
     std::array<std::uint64_t, kTermCount> m_evaluations{};
     std::uint64_t m_forceEvaluations = 0;
     // Scratch, sized once: per-element results and per-chunk force buffers.
-    std::vector<SpringScratch> m_scratch;  // one per chunk
-    std::vector<std::vector<double>> m_chunkForce;  // chunks 1.. (chunk 0 writes f directly)
-    std::array<double, kChunks> m_chunkPower{};
-    std::array<int, kChunks> m_chunkDegenerate{};
+    // Springs and faces split by owner: parts 0..kChunks-1 touch only their chunk's
+    // particles; part kChunks holds those shared between chunks.
+    struct Part {
+        std::array<SpringSet, kSpringFamilyCount> springs;
+        std::vector<Surface> surfaces;
+    };
+    void partition();
+    void accumulatePart(const Part& part, const double* x, const double* v,
+                        const std::array<double, 2>& pressure, SpringScratch& scratch, double* f,
+                        double& power, int& degenerate) const;
+    std::array<Part, kChunks + 1> m_parts;
+    std::array<std::vector<std::pair<int, int>>, kChunks> m_ownedRanges;  // particle ranges per chunk
+    std::array<SpringScratch, kChunks> m_scratch;  // one block of scratch per chunk
 };
 
 }  // namespace simcore

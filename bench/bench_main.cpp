@@ -1,0 +1,107 @@
+// Benchmarks (Google Benchmark). Speed goals live here, never in timed tests.
+//
+//   build/release/bench/elastic-lab-bench --benchmark_filter=Sphere
+//
+// Counters: us per step, ns per spring evaluation, real-time factor at the scene's DT.
+#include <benchmark/benchmark.h>
+
+#include "forces.h"
+#include "simulation.h"
+
+namespace {
+
+using namespace simcore;
+
+void reportCounters(benchmark::State& state, const Simulation& sim, std::uint64_t evals) {
+    const double steps = static_cast<double>(state.iterations());
+    state.counters["particles"] = sim.particleCount();
+    state.counters["springs"] = static_cast<double>(sim.topology().springCount());
+    state.counters["us_per_step"] = benchmark::Counter(steps * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["ns_per_spring"] = benchmark::Counter(
+        static_cast<double>(evals) * static_cast<double>(sim.topology().springCount()) * 1e-9,
+        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["realtime_x"] = benchmark::Counter(steps * sim.dt(), benchmark::Counter::kIsRate);
+}
+
+void stepScene(benchmark::State& state, ParameterSet params, const char* integrator, int threads) {
+    Simulation sim(params, integrator);
+    sim.setThreads(threads);
+    const std::uint64_t before = sim.diagnostics().forceEvaluations;
+    for (auto _ : state) {
+        if (!sim.step()) {
+            state.SkipWithError(sim.failure()->reason.c_str());
+            break;
+        }
+    }
+    reportCounters(state, sim, sim.diagnostics().forceEvaluations - before);
+}
+
+void BM_Sphere3d(benchmark::State& state) {
+    ParameterSet p(SceneKind::Sphere3d);
+    p.set("subdivisions", static_cast<double>(state.range(0)));
+    stepScene(state, p, "rk4", static_cast<int>(state.range(1)));
+}
+BENCHMARK(BM_Sphere3d)->ArgsProduct({{1, 2, 3, 4, 5, 6, 7}, {1, 2}})->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+void BM_Ring2d(benchmark::State& state) {
+    ParameterSet p(SceneKind::Ring2d);
+    p.set("particles", static_cast<double>(state.range(0)));
+    // Large rings need a finer step: their edges are short and stiff in proportion.
+    stepScene(state, p, "rk4", 2);
+}
+BENCHMARK(BM_Ring2d)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+void BM_Integrators(benchmark::State& state, const char* integrator) {
+    ParameterSet p(SceneKind::Sphere3d);
+    p.set("subdivisions", 4);
+    stepScene(state, p, integrator, 2);
+}
+BENCHMARK_CAPTURE(BM_Integrators, euler, "euler")->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Integrators, midpoint, "midpoint")->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Integrators, rk4, "rk4")->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_Integrators, verlet, "verlet")->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+// One force evaluation: fast (chunked, vectorised) against the one-pass reference kernels.
+void BM_Forces(benchmark::State& state) {
+    const bool fast = state.range(1) != 0;
+    ParameterSet p(SceneKind::Sphere3d);
+    p.set("subdivisions", static_cast<double>(state.range(0)));
+    Body body = buildBody(p);
+    ForceModel model(&body.topology, &body.mass, sceneTerms(SceneKind::Sphere3d));
+    model.params.ks = {800, 700, 700};
+    model.params.kd = {15, 50, 50};
+    model.params.gasConstant = {20, 20};
+    const Eigen::Index n3 = 3 * body.topology.particleCount();
+    Eigen::VectorXd x = Eigen::Map<Eigen::VectorXd>(body.positions.data(), n3) * 1.01;
+    Eigen::VectorXd v = Eigen::VectorXd::Constant(n3, 0.1), f(n3);
+    ForceExtras extras;
+    for (auto _ : state) {
+        if (fast)
+            model.evaluate(x.data(), v.data(), f.data(), extras);
+        else
+            model.evaluateReference(x.data(), v.data(), f.data(), extras);
+        benchmark::DoNotOptimize(f.data());
+    }
+    state.counters["ns_per_spring"] = benchmark::Counter(
+        static_cast<double>(state.iterations()) * static_cast<double>(body.topology.springCount()) * 1e-9,
+        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Forces)->ArgsProduct({{4, 6}, {0, 1}})->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+// The GUI path: copying the positions out for a snapshot, against one step.
+void BM_SnapshotCopy(benchmark::State& state) {
+    ParameterSet p(SceneKind::Sphere3d);
+    p.set("subdivisions", static_cast<double>(state.range(0)));
+    Simulation sim(p, "rk4");
+    std::vector<float> snapshot(static_cast<std::size_t>(3 * sim.particleCount()));
+    for (auto _ : state) {
+        const auto x = sim.positions();
+        for (Eigen::Index k = 0; k < x.size(); ++k) snapshot[static_cast<std::size_t>(k)] = static_cast<float>(x.data()[k]);
+        benchmark::DoNotOptimize(snapshot.data());
+    }
+}
+BENCHMARK(BM_SnapshotCopy)->Arg(4)->Arg(6)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
