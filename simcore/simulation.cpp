@@ -149,6 +149,7 @@ void Simulation::build() {
     const int count = topo.particleCount();
     m_n = 3 * count;
     m_forces = ForceModel(&m_body.topology, &m_body.mass, sceneTerms(m_params.kind()));
+    setThreads(m_threads);
     m_boxCentre = m_body.positions.rowwise().mean();
 
     m_invMass3.setZero(m_n);
@@ -163,6 +164,18 @@ void Simulation::build() {
     m_normals.setZero(3, count);
     applyForceParams();
     reset();
+}
+
+void Simulation::setThreads(int threads) {
+    // A pool only pays when the body is split in chunks; never more threads than chunks.
+    m_threads = std::max(1, threads);
+    const int useful = std::min(m_threads, m_forces.chunks());
+    if (useful <= 1) {
+        m_pool.reset();
+    } else if (!m_pool || m_pool->threads() != useful) {
+        m_pool = std::make_unique<ThreadPool>(useful);
+    }
+    m_forces.setPool(m_pool.get());
 }
 
 void Simulation::applyForceParams() {
@@ -254,17 +267,14 @@ void Simulation::measure(Diagnostics& d) const {
         d.kinetic += 0.5 * m * vi.squaredNorm();
         if (m_forces.terms().has(Term::Gravity)) d.gravity += m * m_forces.params.gravity * x[3 * i + 1];
     }
-    for (int f = 0; f < kSpringFamilyCount; ++f) {
-        const auto k = static_cast<std::size_t>(f);
-        d.spring[k] = springEnergy(topo.springs[k], m_forces.params.ks[k], x);
-    }
+    d.spring = m_forces.springEnergies(x);
     d.hasGas = m_forces.terms().has(Term::Gas);
     d.gas = 0.0;
     if (d.hasGas) {
         for (const Surface& s : topo.surfaces) {
             const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
             const double c = m_forces.params.gasConstant[slot];
-            d.volume[slot] = enclosedVolume(s, x, topo.dimension);
+            d.volume[slot] = m_forces.volume(s, x);
             d.restVolume[slot] = s.restVolume;
             d.pressure[slot] = d.volume[slot] > 0.0 ? c / d.volume[slot] : 0.0;
             d.gas += gasEnergy(c, d.volume[slot]);

@@ -24,6 +24,7 @@
 #include "body.h"
 #include "forces.h"
 #include "integrators.h"
+#include "parallel.h"
 #include "params.h"
 #include "scenes.h"
 
@@ -113,6 +114,12 @@ public:
     void release();
     const PointerSpring& pointer() const { return m_forces.pointer; }
 
+    // --- threads ---
+    // Threads for force evaluation (used when the body is large enough to be split in chunks).
+    // Results are bit-identical whatever the count.
+    void setThreads(int threads);
+    int threads() const { return m_pool ? m_pool->threads() : 1; }
+
     // --- state and structure ---
     const Body& body() const { return m_body; }
     const Topology& topology() const { return m_body.topology; }
@@ -146,6 +153,8 @@ private:
     double totalEnergyNow() const;
 
     ParameterSet m_params;
+    int m_threads = hardwareThreads();
+    std::unique_ptr<ThreadPool> m_pool;  // declared before m_forces, which points to it
     Body m_body;
     std::unique_ptr<Integrator> m_integrator;
     std::unique_ptr<System> m_system;

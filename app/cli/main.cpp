@@ -20,6 +20,9 @@ commands:
       [--csv FILE] [--every N] [--state FILE] [--quiet]
                                   run headless; CSV row every N steps, final state table
 
+  bench --scene S [--set key=value]... [--integrator NAME] [--steps N] [--threads K] [--header]
+                                  time N steps: us/step, ns per spring evaluation, real-time factor, memory
+
 exit status: 0 success, 2 bad input, 3 the simulation failed
 )";
 
@@ -36,6 +39,7 @@ int main(int argc, char** argv) {
         {"params", cli::commandParams},
         {"integrators", cli::commandIntegrators},
         {"run", cli::commandRun},
+        {"bench", cli::commandBench},
     };
     const auto it = commands.find(args[0]);
     if (it == commands.end()) {
