@@ -1,6 +1,19 @@
 #include "parallel.h"
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define SIMCORE_CPU_RELAX() _mm_pause()
+#else
+#define SIMCORE_CPU_RELAX() std::this_thread::yield()
+#endif
+
 namespace simcore {
+
+namespace {
+// A worker spins this many times for the next run before it sleeps (about 100 us): a step
+// dispatches several runs back to back, and waking a sleeping thread costs tens of us.
+constexpr int kSpinsBeforeSleep = 2000;
+}  // namespace
 
 int hardwareThreads() {
     const unsigned n = std::thread::hardware_concurrency();
@@ -14,35 +27,40 @@ ThreadPool::ThreadPool(int threads) {
 ThreadPool::~ThreadPool() {
     {
         std::lock_guard lock(m_mutex);
-        m_stop = true;
+        m_stop.store(true, std::memory_order_release);
     }
     m_wake.notify_all();
     for (std::thread& t : m_workers) t.join();
 }
 
 void ThreadPool::drain() {
-    for (int i = m_next.fetch_add(1); i < m_count; i = m_next.fetch_add(1)) {
+    for (int i = m_next.fetch_add(1, std::memory_order_relaxed); i < m_count;
+         i = m_next.fetch_add(1, std::memory_order_relaxed))
         (*m_task)(i);
-    }
 }
 
 void ThreadPool::workerLoop() {
     unsigned long seen = 0;
     for (;;) {
-        {
+        int spins = 0;
+        while (m_generation.load(std::memory_order_acquire) == seen &&
+               !m_stop.load(std::memory_order_acquire)) {
+            if (++spins < kSpinsBeforeSleep) {
+                SIMCORE_CPU_RELAX();
+                continue;
+            }
             std::unique_lock lock(m_mutex);
-            m_wake.wait(lock, [&] { return m_stop || m_generation != seen; });
-            if (m_stop) return;
-            seen = m_generation;
-            ++m_busyWorkers;
-            ++m_joined;
+            m_wake.wait(lock, [&] {
+                return m_generation.load(std::memory_order_acquire) != seen ||
+                       m_stop.load(std::memory_order_acquire);
+            });
         }
+        if (m_stop.load(std::memory_order_acquire)) return;
+        seen = m_generation.load(std::memory_order_acquire);
         drain();
-        {
-            std::lock_guard lock(m_mutex);
-            --m_busyWorkers;
-        }
-        m_done.notify_all();
+        // Release: this worker's results and its last read of m_task happen before the caller
+        // sees the count, so the caller may publish the next run.
+        m_finishedWorkers.fetch_add(1, std::memory_order_acq_rel);
     }
 }
 
@@ -52,21 +70,27 @@ void ThreadPool::run(int count, const std::function<void(int)>& task) {
         for (int i = 0; i < count; ++i) task(i);
         return;
     }
+    m_task = &task;
+    m_count = count;
+    m_next.store(0, std::memory_order_relaxed);
+    m_finishedWorkers.store(0, std::memory_order_relaxed);
     {
+        // Under the mutex, so a worker about to sleep cannot miss the new generation.
         std::lock_guard lock(m_mutex);
-        m_task = &task;
-        m_count = count;
-        m_next.store(0);
-        m_joined = 0;
-        ++m_generation;
+        m_generation.fetch_add(1, std::memory_order_acq_rel);
     }
     m_wake.notify_all();
     drain();
-    // Wait until every worker has joined this generation and left drain(): no late worker can
-    // then read m_task or m_next of the next run.
-    std::unique_lock lock(m_mutex);
+    // Every worker joins each run (and leaves drain() at once when no task is left): when all
+    // have reported, none can still read m_task or m_next.
     const int workers = static_cast<int>(m_workers.size());
-    m_done.wait(lock, [&] { return m_joined == workers && m_busyWorkers == 0; });
+    int spins = 0;
+    while (m_finishedWorkers.load(std::memory_order_acquire) < workers) {
+        if (++spins < kSpinsBeforeSleep)
+            SIMCORE_CPU_RELAX();
+        else
+            std::this_thread::yield();
+    }
     m_task = nullptr;
 }
 

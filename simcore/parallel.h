@@ -1,7 +1,8 @@
 #pragma once
 // A small pool of threads that lives as long as its owner (a simulation): no thread is
 // created per step. run(count, task) calls task(0..count-1) spread over the threads and
-// returns when all are done; the calling thread takes part.
+// returns when all are done; the calling thread takes part. Workers spin briefly between runs
+// (a step makes several in a row) and sleep when the simulation pauses.
 //
 // Determinism is the caller's job and is easy: split work into a fixed number of tasks that
 // does not depend on the thread count, and combine their results in task order.
@@ -30,16 +31,14 @@ private:
     void drain();
 
     std::vector<std::thread> m_workers;
-    std::mutex m_mutex;
+    std::mutex m_mutex;                  // only for sleeping and waking workers
     std::condition_variable m_wake;
-    std::condition_variable m_done;
-    const std::function<void(int)>* m_task = nullptr;  // guarded by m_mutex for publication
+    const std::function<void(int)>* m_task = nullptr;  // published by m_generation
     int m_count = 0;
     std::atomic<int> m_next{0};
-    unsigned long m_generation = 0;
-    int m_busyWorkers = 0;  // workers inside drain()
-    int m_joined = 0;       // workers that picked up the current generation
-    bool m_stop = false;
+    std::atomic<unsigned long> m_generation{0};
+    std::atomic<int> m_finishedWorkers{0};
+    std::atomic<bool> m_stop{false};
 };
 
 // The number of hardware threads, at least 1.
