@@ -375,17 +375,26 @@ void ForceModel::countTerms() {
     if (m_terms.has(Term::Pointer) && pointer.active) ++m_evaluations[static_cast<std::size_t>(Term::Pointer)];
 }
 
-double ForceModel::volume(const Surface& surface, const double* x) {
-    const int dim = m_topology->dimension;
-    const std::size_t count = dim == 2 ? surface.edges.size() : surface.triangles.size();
-    std::array<double, kChunks> partial{};
+std::array<double, 2> ForceModel::volumes(const double* x) {
+    // Both layers in one dispatch; partial sums combined in chunk order (deterministic).
+    const Topology& topo = *m_topology;
+    const int dim = topo.dimension;
+    std::array<std::array<double, 2>, kChunks> partial{};
     runChunks([&](int c) {
-        auto [begin, end] = range(count, c, m_chunks);
-        partial[static_cast<std::size_t>(c)] = partialVolume(surface, dim, x, begin, end);
+        for (const Surface& s : topo.surfaces) {
+            const std::size_t count = dim == 2 ? s.edges.size() : s.triangles.size();
+            auto [begin, end] = range(count, c, m_chunks);
+            partial[static_cast<std::size_t>(c)][static_cast<std::size_t>(layerSlot(s.layer))] =
+                partialVolume(s, dim, x, begin, end);
+        }
     });
-    double sum = 0.0;
-    for (int c = 0; c < m_chunks; ++c) sum += partial[static_cast<std::size_t>(c)];
-    return dim == 2 ? 0.5 * sum : sum / 6.0;
+    std::array<double, 2> volume{};
+    for (std::size_t slot = 0; slot < 2; ++slot) {
+        double sum = 0.0;
+        for (int c = 0; c < m_chunks; ++c) sum += partial[static_cast<std::size_t>(c)][slot];
+        volume[slot] = dim == 2 ? 0.5 * sum : sum / 6.0;
+    }
+    return volume;
 }
 
 std::array<double, kSpringFamilyCount> ForceModel::springEnergies(const double* x) {
@@ -422,11 +431,11 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
     std::array<double, 2> pressure{};
     const bool gas = m_terms.has(Term::Gas);
     if (gas) {
+        const std::array<double, 2> volume = volumes(x);
         for (const Surface& s : topo.surfaces) {
             const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
-            const double volume = this->volume(s, x);
-            extras.volume[slot] = volume;
-            pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
+            extras.volume[slot] = volume[slot];
+            pressure[slot] = volume[slot] > 0.0 ? params.gasConstant[slot] / volume[slot] : 0.0;
             extras.pressure[slot] = pressure[slot];
         }
     }

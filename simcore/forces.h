@@ -132,7 +132,7 @@ public:
     void evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras);
     // Elastic energy per spring family and enclosed volume per surface, chunked like forces.
     std::array<double, kSpringFamilyCount> springEnergies(const double* x);
-    double volume(const Surface& surface, const double* x);
+    std::array<double, 2> volumes(const double* x);  // [inner, outer]; 0 where absent
 
     // Counts one evaluation of a post-step term (collisions, layer constraint).
     void countPostStep(Term term) { ++m_evaluations[static_cast<std::size_t>(term)]; }

@@ -271,10 +271,11 @@ void Simulation::measure(Diagnostics& d) const {
     d.hasGas = m_forces.terms().has(Term::Gas);
     d.gas = 0.0;
     if (d.hasGas) {
+        const std::array<double, 2> volume = m_forces.volumes(x);
         for (const Surface& s : topo.surfaces) {
             const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
             const double c = m_forces.params.gasConstant[slot];
-            d.volume[slot] = m_forces.volume(s, x);
+            d.volume[slot] = volume[slot];
             d.restVolume[slot] = s.restVolume;
             d.pressure[slot] = d.volume[slot] > 0.0 ? c / d.volume[slot] : 0.0;
             d.gas += gasEnergy(c, d.volume[slot]);
