@@ -136,6 +136,8 @@ Simulation::Simulation(const ParameterSet& params, std::string_view integrator)
 
 Simulation::~Simulation() = default;
 
+OdeSystem& Simulation::odeSystem() { return *m_system; }
+
 Eigen::Map<const Eigen::Matrix3Xd> Simulation::positions() const {
     return {m_y.data(), 3, particleCount()};
 }

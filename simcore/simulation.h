@@ -130,6 +130,8 @@ public:
     // Replaces positions and velocities (e.g. a saved state); resets the energy bookkeeping.
     void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v);
     const ForceModel& forces() const { return m_forces; }
+    // The ODE the integrators see, with its force Jacobians (for linear stability analysis).
+    OdeSystem& odeSystem();
     Eigen::Vector3d boxCentre() const { return m_boxCentre; }
     double boxHalfSize() const { return m_box; }
 

@@ -7,6 +7,7 @@
 #include "integrators.h"
 #include "scenes.h"
 #include "simulation.h"
+#include "stability.h"
 
 namespace cli {
 
@@ -110,20 +111,9 @@ simcore::IntegratorOptions integratorOptions(const Options& options) {
 }
 
 std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator) {
-    // Only explicit fixed-step methods have a step limit from the fastest rate; rk45 adapts
-    // its step and implicit-euler is unconditionally stable on the linearised system.
-    auto method = simcore::makeIntegrator(integrator);
-    if (!method || method->implicit() || integrator == "rk45") return {};
     simcore::Simulation sim(params, integrator);
-    const double rate = sim.estimatedFastestRate();
-    if (!(rate * sim.dt() > simcore::kExplicitStabilityLimit)) return {};
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "warning: dt = %g s is above the estimated explicit stability limit ~%.3g s "
-                  "(fastest spring rate ~%.3g 1/s); an explicit integrator will likely blow up "
-                  "(implicit-euler or rk45 will not)",
-                  sim.dt(), simcore::kExplicitStabilityLimit / rate, rate);
-    return text;
+    const auto warning = simcore::preRunStabilityWarning(sim);
+    return warning ? "warning: " + *warning : std::string();
 }
 
 }  // namespace cli

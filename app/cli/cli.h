@@ -64,6 +64,11 @@ std::vector<std::string> sceneOptionNames();
 int commandScenes(const std::vector<std::string>& args);
 int commandParams(const std::vector<std::string>& args);
 int commandIntegrators(const std::vector<std::string>& args);
+// Comma-separated lists and --shard K/N (returned 0-based: {K-1, N}).
+std::vector<double> numberList(const std::string& option, const std::string& text);
+std::vector<std::string> nameList(const std::string& text);
+std::pair<int, int> parseShard(const Options& options);
+
 int commandRun(const std::vector<std::string>& args);
 int commandStudy(const std::vector<std::string>& args);
 int commandStability(const std::vector<std::string>& args);

@@ -23,6 +23,19 @@ commands:
   bench --scene S [--set key=value]... [--integrator NAME] [--steps N] [--threads K] [--header]
                                   time N steps: us/step, ns per spring evaluation, real-time factor, memory
 
+  study --scene S [--set key=value]... --integrators a,b,... --dts h1,h2,... [--tols t1,...]
+      [--duration T] [--repeat R] [--reference auto|exact|rk4|rk45] [--csv FILE] [--plot FILE.svg]
+      [--shard K/N] [--samples G] [--fixed-step] [--quiet]
+  study --from-csv FILE [--plot FILE.svg]
+                                  work-precision study: error against wall time, force evaluations
+                                  and dt; fitted orders; shards concatenate into the full CSV
+  stability --scene S [--set key=value]... --integrators a,b,... [--duration T] [--csv FILE]
+      [--shard K/N] [--perturb A]
+                                  largest stable dt per integrator (bisection) beside the
+                                  linearised prediction (highest frequency, damping, stability region)
+  gallery [--run NAME|all] [--list]
+                                  stiff and extreme presets with their expected outcome
+
 exit status: 0 success, 2 bad input, 3 the simulation failed
 )";
 
@@ -39,6 +52,9 @@ int main(int argc, char** argv) {
         {"params", cli::commandParams},
         {"integrators", cli::commandIntegrators},
         {"run", cli::commandRun},
+        {"study", cli::commandStudy},
+        {"stability", cli::commandStability},
+        {"gallery", cli::commandGallery},
         {"bench", cli::commandBench},
     };
     const auto it = commands.find(args[0]);

@@ -1,0 +1,89 @@
+// `stability`: largest stable dt per integrator, measured beside the linearised prediction.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "cli.h"
+#include "output.h"
+#include "stability.h"
+
+namespace cli {
+
+namespace {
+
+std::string stepText(double h) {
+    if (std::isinf(h)) return "unlimited";
+    if (h <= 0.0) return "none";
+    char b[32];
+    std::snprintf(b, sizeof b, "%.4g", h);
+    return b;
+}
+
+}  // namespace
+
+int commandStability(const std::vector<std::string>& args) {
+    Options options(args, {"scene", "set", "integrators", "duration", "csv", "shard", "perturb", "hmin", "hmax"},
+                    {"quiet"});
+    SceneSetup setup = sceneSetup(options);
+    simcore::StabilitySpec spec;
+    spec.params = setup.params;
+    spec.integrators = nameList(options.valueOr("integrators", "euler,midpoint,rk4,symplectic-euler,verlet,rk45,implicit-euler"));
+    for (const auto& name : spec.integrators)
+        if (!simcore::makeIntegrator(name))
+            throw UsageError("unknown integrator '" + name + "'; allowed: " + simcore::integratorNames());
+    spec.duration = options.number("duration", 2.0, 0.0, 1e5, true);
+    spec.perturb = options.number("perturb", 0.01, 0.0, 1e3, false);
+    spec.hMin = options.number("hmin", 1e-5, 0.0, 1.0, true);
+    spec.hMax = options.number("hmax", 1.0, spec.hMin, 1.0, false);
+    std::tie(spec.shardIndex, spec.shardCount) = parseShard(options);
+
+    std::unique_ptr<simcore::AtomicFile> csv;
+    if (options.has("csv")) {
+        csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
+        if (!csv->ok()) throw UsageError(csv->error());
+    }
+    simcore::ParameterSet linearised = spec.params;
+    if (!linearised.isExplicit("perturb")) linearised.set("perturb", spec.perturb);
+    const simcore::LinearModes modes = simcore::linearModes(linearised);
+    const bool quiet = options.has("quiet");
+    if (!quiet) {
+        std::printf("scene        %s, T = %g s, start perturbed by %g m (seed %g)\n", setup.sceneName.c_str(),
+                    spec.duration, linearised.get("perturb"), linearised.get("seed"));
+        std::printf("linearised   %d free coordinates (%s); highest frequency w_max = %.4g rad/s "
+                    "(period %.4g s), its damping c = %.4g 1/s (zeta = %.3g); fastest modal damping %.4g 1/s",
+                    modes.freeCoordinates, modes.dense ? "all modes" : "power iteration, highest mode only",
+                    modes.omegaMax, modes.omegaMax > 0 ? 2 * M_PI / modes.omegaMax : 0.0, modes.dampingAtMax,
+                    modes.omegaMax > 0 ? modes.dampingAtMax / (2 * modes.omegaMax) : 0.0, modes.fastestDamping);
+        if (modes.unstableModes) std::printf("; %d physically unstable modes excluded", modes.unstableModes);
+        std::printf("\n");
+        std::printf("regions      undamped limits h*w: euler none, midpoint none, rk4 2.83, rk45 3.3 (fixed step), "
+                    "symplectic-euler 2, verlet 2, implicit-euler unlimited; damping moves them (see docs/numerics.md)\n\n");
+        std::printf("%-17s %12s %12s %12s %9s %9s  %s\n", "integrator", "measured", "(unstable)", "predicted",
+                    "h*w meas", "h*w pred", "what happens just above the measured limit");
+    }
+    std::vector<simcore::StabilityRow> rows;
+    for (const std::string& name : simcore::shardNames(spec.integrators, spec.shardIndex, spec.shardCount)) {
+        simcore::StabilityRow row = simcore::scanIntegrator(spec, name, modes);
+        if (!quiet) {
+            std::string meas = row.stable <= 0.0 ? "< " + stepText(spec.hMin) : stepText(row.stable);
+            if (std::isinf(row.unstable)) meas = ">= " + stepText(row.stable);
+            std::printf("%-17s %12s %12s %12s %9.3g %9.3g  %s\n", (name == "rk45" ? "rk45 (fixed)" : name.c_str()),
+                        meas.c_str(), stepText(row.unstable).c_str(), stepText(row.predicted).c_str(),
+                        row.stable * modes.omegaMax, std::isinf(row.predicted) ? INFINITY : row.predicted * modes.omegaMax,
+                        std::isinf(row.unstable) ? "(stable up to the largest dt scanned)" : row.reasonAbove.c_str());
+            std::fflush(stdout);
+        }
+        rows.push_back(std::move(row));
+    }
+    if (csv) {
+        if (spec.shardIndex == 0) csv->write(simcore::stabilityCsvHeader());
+        for (const auto& row : rows) csv->write(simcore::stabilityCsvRow(row, modes));
+        if (!csv->commit()) {
+            std::fprintf(stderr, "error: %s\n", csv->error().c_str());
+            return kExitBadInput;
+        }
+    }
+    return kExitOk;
+}
+
+}  // namespace cli

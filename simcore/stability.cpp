@@ -1,0 +1,254 @@
+#include "stability.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+
+#include <Eigen/Eigenvalues>
+
+#include "integrators.h"
+#include "output.h"
+#include "simulation.h"
+
+namespace simcore {
+
+namespace {
+
+// Spectral radius of a real 2x2 matrix.
+double radius2(double a, double b, double c, double d) {
+    const double tr = a + d, det = a * d - b * c;
+    const std::complex<double> disc = std::sqrt(std::complex<double>(tr * tr / 4.0 - det, 0.0));
+    return std::max(std::abs(tr / 2.0 + disc), std::abs(tr / 2.0 - disc));
+}
+
+// One step of a partitioned method on (x, v) for x'' = -w^2 x - c v.
+std::pair<double, double> partitionedStep(const std::string& name, double h, double w2, double c, double x, double v) {
+    auto acc = [&](double xx, double vv) { return -w2 * xx - c * vv; };
+    if (name == "symplectic-euler") {
+        const double v1 = v + h * acc(x, v);
+        return {x + h * v1, v1};
+    }
+    // velocity Verlet, damping at the half-step velocity (as the integrator does)
+    const double a0 = acc(x, v);
+    const double x1 = x + h * v + 0.5 * h * h * a0;
+    const double vh = v + 0.5 * h * a0;
+    return {x1, vh + 0.5 * h * acc(x1, vh)};
+}
+
+}  // namespace
+
+double modeAmplification(const std::string& integrator, double h, double omega, double c) {
+    const double w2 = omega * omega;
+    if (integrator == "symplectic-euler" || integrator == "verlet") {
+        const auto [a, cc] = partitionedStep(integrator, h, w2, c, 1.0, 0.0);
+        const auto [b, d] = partitionedStep(integrator, h, w2, c, 0.0, 1.0);
+        return radius2(a, b, cc, d);
+    }
+    // lambda^2 + c lambda + w^2 = 0
+    const std::complex<double> disc = std::sqrt(std::complex<double>(c * c / 4.0 - w2, 0.0));
+    const std::complex<double> l1 = -c / 2.0 + disc, l2 = -c / 2.0 - disc;
+    return std::max(std::abs(stabilityFunction(integrator, h * l1)), std::abs(stabilityFunction(integrator, h * l2)));
+}
+
+LinearModes linearModes(const ParameterSet& params) {
+    Simulation sim(params, "implicit-euler");
+    OdeSystem& system = sim.odeSystem();
+    system.linearize(0.0, sim.state());
+    const Eigen::VectorXd& mass = system.coordinateMass();
+    std::vector<Eigen::Index> free;
+    for (Eigen::Index i = 0; i < mass.size(); ++i)
+        if (mass[i] > 0.0) free.push_back(i);
+    const auto m = static_cast<Eigen::Index>(free.size());
+    LinearModes modes;
+    modes.freeCoordinates = static_cast<int>(m);
+    const Eigen::Index n = mass.size();
+    Eigen::VectorXd e = Eigen::VectorXd::Zero(n), zero = Eigen::VectorXd::Zero(n), out(n);
+    // Mass-normalised stiffness and damping on the free coordinates: A = -M^-1/2 K M^-1/2.
+    auto applyK = [&](const Eigen::VectorXd& u, bool damping) {
+        Eigen::VectorXd full = Eigen::VectorXd::Zero(n);
+        for (Eigen::Index j = 0; j < m; ++j) full[free[j]] = u[j] / std::sqrt(mass[free[j]]);
+        if (damping) system.forceJacobianProduct(zero, full, out);
+        else system.forceJacobianProduct(full, zero, out);
+        Eigen::VectorXd r(m);
+        for (Eigen::Index j = 0; j < m; ++j) r[j] = -out[free[j]] / std::sqrt(mass[free[j]]);
+        return r;
+    };
+    if (m == 0) return modes;
+    if (m <= 1200) {
+        Eigen::MatrixXd A(m, m), C(m, m);
+        Eigen::VectorXd unit = Eigen::VectorXd::Zero(m);
+        for (Eigen::Index j = 0; j < m; ++j) {
+            unit[j] = 1.0;
+            A.col(j) = applyK(unit, false);
+            C.col(j) = applyK(unit, true);
+            unit[j] = 0.0;
+        }
+        A = 0.5 * (A + A.transpose());
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
+        const Eigen::MatrixXd& phi = solver.eigenvectors();
+        for (Eigen::Index i = 0; i < m; ++i) {
+            modes.omega2.push_back(solver.eigenvalues()[i]);
+            modes.damping.push_back(phi.col(i).dot(C * phi.col(i)));
+        }
+    } else {
+        // Power iteration for the highest mode only.
+        modes.dense = false;
+        Eigen::VectorXd x = Eigen::VectorXd::Ones(m).normalized();
+        double lambda = 0.0;
+        for (int it = 0; it < 300; ++it) {
+            Eigen::VectorXd y = applyK(x, false);
+            lambda = x.dot(y);
+            if (y.norm() == 0.0) break;
+            x = y.normalized();
+        }
+        modes.omega2.push_back(lambda);
+        modes.damping.push_back(x.dot(applyK(x, true)));
+    }
+    for (std::size_t i = 0; i < modes.omega2.size(); ++i) {
+        if (modes.omega2[i] < -1e-9 * std::abs(modes.omega2.back())) ++modes.unstableModes;
+        modes.fastestDamping = std::max(modes.fastestDamping, modes.damping[i]);
+    }
+    const auto top = std::max_element(modes.omega2.begin(), modes.omega2.end()) - modes.omega2.begin();
+    modes.omegaMax = std::sqrt(std::max(0.0, modes.omega2[static_cast<std::size_t>(top)]));
+    modes.dampingAtMax = modes.damping[static_cast<std::size_t>(top)];
+    return modes;
+}
+
+double predictedStableStep(const std::string& integrator, const LinearModes& modes, double hMax) {
+    if (integrator == "implicit-euler") return std::numeric_limits<double>::infinity();
+    auto stable = [&](double h) {
+        for (std::size_t i = 0; i < modes.omega2.size(); ++i) {
+            if (modes.omega2[i] < 0.0) continue;
+            if (modeAmplification(integrator, h, std::sqrt(modes.omega2[i]), modes.damping[i]) > 1.0 + 1e-9) return false;
+        }
+        return true;
+    };
+    double lo = 0.0, h = 1e-7;
+    if (!stable(h)) return 0.0;
+    while (h < hMax && stable(h)) lo = h, h *= 1.05;
+    if (h >= hMax && stable(hMax)) return std::numeric_limits<double>::infinity();
+    double hi = std::min(h, hMax);
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (stable(mid) ? lo : hi) = mid;
+    }
+    return lo;
+}
+
+std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt) {
+    ParameterSet p = spec.params;
+    if (!p.isExplicit("perturb")) p.set("perturb", spec.perturb);
+    if (auto error = p.set("dt", dt)) return *error;
+    Simulation sim(p, integrator);
+    IntegratorOptions options;
+    options.fixedStep = true;  // rk45 at a fixed step: an adaptive step is always "stable"
+    sim.setIntegratorOptions(options);
+    const Diagnostics& d0 = sim.diagnostics();
+    double mass = 0.0;
+    for (Eigen::Index i = 0; i < sim.body().mass.size(); ++i) mass += sim.body().mass[i];
+    const double budget = 0.5 * (1.0 + d0.kinetic + d0.springTotal() +
+                                 mass * sim.forces().params.gravity * 2.0 * sim.boxHalfSize());
+    while (sim.time() < spec.duration - 1e-9 * dt) {
+        if (!sim.step()) return sim.failure()->reason;
+        const double drift = sim.diagnostics().energyDrift();
+        if (drift > budget) {
+            return "energy grew without bound: the balance gained " + formatDouble(drift) + " J (more than " +
+                   formatDouble(budget) + " J)";
+        }
+    }
+    return std::nullopt;
+}
+
+StabilityRow scanIntegrator(const StabilitySpec& spec, const std::string& integrator, const LinearModes& modes,
+                            const std::atomic<bool>* cancel) {
+    StabilityRow row;
+    row.integrator = integrator;
+    row.predicted = predictedStableStep(integrator, modes);
+    auto trial = [&](double h) {
+        ++row.runs;
+        return stabilityTrial(spec, integrator, h);
+    };
+    double h0 = std::isfinite(row.predicted) && row.predicted > 0.0 ? row.predicted : 0.01;
+    h0 = std::clamp(h0, spec.hMin, spec.hMax);
+    double lo = 0.0, hi = std::numeric_limits<double>::infinity();
+    std::string reason;
+    if (auto r = trial(h0)) {
+        hi = h0, reason = *r;
+        for (double h = h0 / 2.0;; h /= 2.0) {
+            if (h < spec.hMin) break;
+            if (cancel && cancel->load()) break;
+            if (auto rr = trial(h)) hi = h, reason = *rr;
+            else {
+                lo = h;
+                break;
+            }
+        }
+    } else {
+        lo = h0;
+        for (double h = std::min(h0 * 2.0, spec.hMax);; h = std::min(h * 2.0, spec.hMax)) {
+            if (cancel && cancel->load()) break;
+            if (auto rr = trial(h)) {
+                hi = h, reason = *rr;
+                break;
+            }
+            lo = h;
+            if (h >= spec.hMax) break;
+        }
+    }
+    while (lo > 0.0 && std::isfinite(hi) && hi / lo > 1.0 + spec.relativePrecision) {
+        if (cancel && cancel->load()) break;
+        const double mid = std::sqrt(lo * hi);
+        if (auto r = trial(mid)) hi = mid, reason = *r;
+        else lo = mid;
+    }
+    row.stable = lo;
+    row.unstable = hi;
+    row.reasonAbove = reason;
+    return row;
+}
+
+std::vector<std::string> shardNames(const std::vector<std::string>& names, int shardIndex, int shardCount) {
+    const auto m = static_cast<long>(names.size());
+    return {names.begin() + m * shardIndex / shardCount, names.begin() + m * (shardIndex + 1) / shardCount};
+}
+
+std::vector<StabilityRow> runStability(const StabilitySpec& spec, const LinearModes& modes,
+                                       const StabilityProgressFn& progress, const std::atomic<bool>* cancel) {
+    std::vector<StabilityRow> rows;
+    const auto names = shardNames(spec.integrators, spec.shardIndex, spec.shardCount);
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (cancel && cancel->load()) break;
+        if (progress) progress({static_cast<int>(i), static_cast<int>(names.size()), names[i]});
+        rows.push_back(scanIntegrator(spec, names[i], modes, cancel));
+    }
+    if (progress) progress({static_cast<int>(names.size()), static_cast<int>(names.size()), "done"});
+    return rows;
+}
+
+std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {
+    const Integrator& method = sim.integrator();
+    if (method.implicit() || method.name() == "rk45") return std::nullopt;
+    const double rate = sim.estimatedFastestRate();
+    if (!(rate * sim.dt() > kExplicitStabilityLimit)) return std::nullopt;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "dt = %g s is above the estimated explicit stability limit ~%.3g s (fastest spring rate ~%.3g "
+                  "1/s); an explicit integrator will likely blow up (implicit-euler or rk45 will not)",
+                  sim.dt(), kExplicitStabilityLimit / rate, rate);
+    return std::string(text);
+}
+
+std::string stabilityCsvHeader() {
+    return "integrator,dt_stable,dt_unstable,dt_predicted,h_omega_stable,h_omega_predicted,reason\n";
+}
+
+std::string stabilityCsvRow(const StabilityRow& row, const LinearModes& modes) {
+    auto num = [](double v) { return std::isinf(v) ? std::string("inf") : formatDouble(v); };
+    std::string reason = row.reasonAbove;
+    std::replace(reason.begin(), reason.end(), ',', ';');
+    return row.integrator + ',' + num(row.stable) + ',' + num(row.unstable) + ',' + num(row.predicted) + ',' +
+           num(row.stable * modes.omegaMax) + ',' + num(row.predicted * modes.omegaMax) + ',' + reason + '\n';
+}
+
+}  // namespace simcore

@@ -1,0 +1,97 @@
+#pragma once
+// Stability: the largest stable step, measured and predicted, side by side.
+//
+// Measured: bisection on dt per integrator. A run is stable when it does not fail (NaN,
+// runaway speed or energy, collapsed layer: Simulation's checks) and its energy balance never
+// gains more than half the energy the body can plausibly convert (gravity over the box height
+// + the start's kinetic and elastic energy + 1 J), over T, from a seeded small perturbation of
+// the rest state. Energy lost (numerical damping) is never counted as instability.
+//
+// Predicted: the system linearised at the start state, M x'' = K x + D x', split into modes of
+// M^-1 K (mass-normalised, symmetric eigenproblem): mode i has frequency w_i and damping
+// c_i = phi_i^T D phi_i (the diagonal of D in the modal basis: exact for proportional
+// damping, an approximation otherwise). Each mode is the scalar oscillator
+// x'' + c x' + w^2 x = 0; a method is stable at h when the spectral radius of its one-step
+// map on every mode is <= 1. Euler/midpoint/rk4/rk45/implicit-euler use their stability
+// function R(h lambda), symplectic Euler and velocity Verlet their 2x2 step matrix.
+//   undamped limits (h w):  euler none (grows for every h), midpoint none, rk4 2*sqrt(2),
+//   rk45 (fixed step) ~3.3, symplectic-euler 2, verlet 2, implicit-euler unlimited.
+
+#include <atomic>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "params.h"
+
+namespace simcore {
+
+struct LinearModes {
+    int freeCoordinates = 0;
+    bool dense = true;             // all modes (dense eigen-solver) or only the highest (power iteration)
+    std::vector<double> omega2;    // w_i^2 [1/s^2], ascending; negative = unstable physical mode
+    std::vector<double> damping;   // c_i [1/s]
+    double omegaMax = 0.0;         // highest frequency [rad/s]
+    double dampingAtMax = 0.0;     // c of that mode [1/s]
+    double fastestDamping = 0.0;   // largest c_i [1/s]
+    int unstableModes = 0;         // w^2 < 0 (e.g. buckling under pressure): excluded from limits
+};
+
+// Linearised at the start state of the scene (with its perturbation).
+LinearModes linearModes(const ParameterSet& params);
+
+// Spectral radius of one step of `integrator` on x'' + c x' + w^2 x = 0.
+double modeAmplification(const std::string& integrator, double h, double omega, double c);
+// Largest h with every mode's amplification <= 1 (+1e-9): 0 when there is none (grows for
+// every h), +infinity when unlimited (A-stable), searched up to hMax.
+double predictedStableStep(const std::string& integrator, const LinearModes& modes, double hMax = 10.0);
+
+struct StabilitySpec {
+    ParameterSet params{SceneKind::Ring2d};
+    std::vector<std::string> integrators;
+    double duration = 2.0;      // T [s]
+    double perturb = 0.01;      // used when params has no explicit perturb [m]
+    double hMin = 1e-5;         // [s] below this: "none"
+    double hMax = 1.0;          // [s] the parameter table's largest dt
+    double relativePrecision = 0.02;  // bisection stops when hi / lo < 1 + this
+    int shardIndex = 0;
+    int shardCount = 1;
+};
+
+struct StabilityRow {
+    std::string integrator;
+    double stable = 0.0;         // largest dt found stable [s] (0: none down to hMin)
+    double unstable = 0.0;       // smallest dt found unstable [s] (inf: stable up to hMax)
+    std::string reasonAbove;     // why the run at `unstable` failed
+    double predicted = 0.0;      // linearised prediction [s] (0 none, inf unlimited)
+    int runs = 0;
+};
+
+struct StabilityProgress {
+    int done = 0;
+    int total = 0;
+    std::string what;
+};
+using StabilityProgressFn = std::function<void(const StabilityProgress&)>;
+
+// One trial: stable (empty) or the reason it is not.
+std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt);
+StabilityRow scanIntegrator(const StabilitySpec& spec, const std::string& integrator, const LinearModes& modes,
+                            const std::atomic<bool>* cancel = nullptr);
+std::vector<StabilityRow> runStability(const StabilitySpec& spec, const LinearModes& modes,
+                                       const StabilityProgressFn& progress = {},
+                                       const std::atomic<bool>* cancel = nullptr);
+std::vector<std::string> shardNames(const std::vector<std::string>& names, int shardIndex, int shardCount);
+
+// The pre-run check: for an explicit fixed-step method, dt above the cheap estimate of the
+// largest stable step (Simulation::estimatedFastestRate, kExplicitStabilityLimit) gives a
+// warning text; rk45 adapts and implicit-euler has no such limit, so they never warn.
+class Simulation;
+std::optional<std::string> preRunStabilityWarning(const Simulation& sim);
+
+std::string stabilityCsvHeader();  // integrator,dt_stable,dt_unstable,dt_predicted,h_omega_stable,reason
+std::string stabilityCsvRow(const StabilityRow& row, const LinearModes& modes);
+
+}  // namespace simcore
