@@ -222,6 +222,13 @@ void Simulation::reset() {
     startBookkeeping();
 }
 
+void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step,
+                          double time) {
+    m_diag.step = step;
+    m_diag.time = time;
+    setState(x, v);
+}
+
 void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v) {
     if (x.cols() != particleCount() || v.cols() != particleCount())
         throw std::invalid_argument("state has the wrong number of particles");

@@ -129,6 +129,8 @@ public:
     Eigen::Map<const Eigen::Matrix3Xd> velocities() const;
     // Replaces positions and velocities (e.g. a saved state); resets the energy bookkeeping.
     void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v);
+    // The same, also setting the step counter and the simulated time (a resumed experiment).
+    void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step, double time);
     const ForceModel& forces() const { return m_forces; }
     // The ODE the integrators see, with its force Jacobians (for linear stability analysis).
     OdeSystem& odeSystem();

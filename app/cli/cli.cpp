@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "integrators.h"
+#include "scenefile.h"
 #include "scenes.h"
 #include "simulation.h"
 #include "stability.h"
@@ -78,15 +79,28 @@ SceneSetup sceneSetup(const Options& options) {
     SceneSetup setup;
     setup.sceneName = options.valueOr("scene", "ring2d");
     const simcore::SceneInfo* scene = simcore::findScene(setup.sceneName);
-    if (!scene)
-        throw UsageError("unknown scene '" + setup.sceneName + "'; allowed: " + simcore::sceneNames());
-    setup.params = simcore::ParameterSet(scene->kind);
+    std::string fileIntegrator;
+    if (!scene && setup.sceneName.size() > 5 && setup.sceneName.ends_with(".json")) {
+        // A scene file wherever a scene name is taken; --set, --dt, --integrator override it.
+        simcore::SceneFileResult read = simcore::readSceneFile(setup.sceneName);
+        if (!read.file) throw UsageError(read.error);
+        setup.sceneName = read.file->sceneName;
+        scene = simcore::findScene(setup.sceneName);
+        setup.params = read.file->params;
+        fileIntegrator = read.file->integrator;
+        setup.state = read.file->state;
+    } else if (!scene) {
+        throw UsageError("unknown scene '" + setup.sceneName + "'; allowed: " + simcore::sceneNames() +
+                         ", or a scene file (.json)");
+    } else {
+        setup.params = simcore::ParameterSet(scene->kind);
+    }
     for (const std::string& assignment : options.all("set"))
         if (auto error = setup.params.assign(assignment)) throw UsageError("--set " + *error);
     if (options.has("dt"))
         if (auto error = setup.params.setFromText("dt", options.value("dt")))
             throw UsageError("--" + *error);
-    setup.integrator = options.valueOr("integrator", "rk4");
+    setup.integrator = options.valueOr("integrator", fileIntegrator.empty() ? "rk4" : fileIntegrator);
     if (!simcore::makeIntegrator(setup.integrator))
         throw UsageError("unknown integrator '" + setup.integrator +
                          "'; allowed: " + simcore::integratorNames());

@@ -5,12 +5,14 @@
 // what is allowed), 3 the simulation failed (reason, step and time on stderr).
 
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "integrators.h"
 #include "params.h"
+#include "scenefile.h"
 
 namespace cli {
 
@@ -47,9 +49,10 @@ struct SceneSetup {
     simcore::ParameterSet params;
     std::string sceneName;
     std::string integrator = "rk4";
+    std::optional<simcore::SceneFile::State> state;  // from a scene file that saved one
 };
 
-// --scene S (default ring2d), --set key=value..., --dt H, --integrator NAME.
+// --scene S|FILE.json (default ring2d), --set key=value..., --dt H, --integrator NAME.
 SceneSetup sceneSetup(const Options& options);
 
 // Integrator tunables: --atol, --rtol, --fixed-step, --error-estimate, --newton.

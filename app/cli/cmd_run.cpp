@@ -36,7 +36,7 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
 
 int commandRun(const std::vector<std::string>& args) {
     auto names = sceneOptionNames();
-    names.insert(names.end(), {"duration", "csv", "every", "state"});
+    names.insert(names.end(), {"duration", "csv", "every", "state", "save-scene"});
     for (const auto& n : integratorOptionNames()) names.push_back(n);
     std::vector<std::string> flags = {"quiet"};
     for (const auto& n : integratorFlagNames()) flags.push_back(n);
@@ -46,7 +46,7 @@ int commandRun(const std::vector<std::string>& args) {
     const long every = options.integer("every", 1, 1, 1000000000L);
 
     // Open every output before running: an unwritable path is bad input, found at once.
-    std::unique_ptr<simcore::AtomicFile> csv, state;
+    std::unique_ptr<simcore::AtomicFile> csv, state, sceneOut;
     if (options.has("csv")) {
         csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
         if (!csv->ok()) throw UsageError(csv->error());
@@ -55,9 +55,14 @@ int commandRun(const std::vector<std::string>& args) {
         state = std::make_unique<simcore::AtomicFile>(options.value("state"));
         if (!state->ok()) throw UsageError(state->error());
     }
+    if (options.has("save-scene")) {
+        sceneOut = std::make_unique<simcore::AtomicFile>(options.value("save-scene"));
+        if (!sceneOut->ok()) throw UsageError(sceneOut->error());
+    }
 
     simcore::Simulation sim(setup.params, setup.integrator);
     sim.setIntegratorOptions(integratorOptions(options));
+    if (setup.state) simcore::applyState(sim, *setup.state);  // resume a saved experiment
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
@@ -67,7 +72,7 @@ int commandRun(const std::vector<std::string>& args) {
         csv->write(simcore::csvRow(columns, sim.diagnostics()));
     }
     const auto start = std::chrono::steady_clock::now();
-    const double tEnd = duration;
+    const double tEnd = sim.time() + duration;  // a resumed run continues from its saved time
     while (sim.time() < tEnd - 1e-9 * sim.dt()) {
         if (!sim.step(tEnd)) break;
         const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
@@ -76,8 +81,9 @@ int commandRun(const std::vector<std::string>& args) {
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (state) state->write(simcore::stateTable(sim));
+    if (sceneOut) sceneOut->write(simcore::sceneFileText(sim, setup.sceneName, true));
 
-    for (auto* file : {csv.get(), state.get()})
+    for (auto* file : {csv.get(), state.get(), sceneOut.get()})
         if (file && !file->commit()) {
             std::fprintf(stderr, "error: %s\n", file->error().c_str());
             return kExitBadInput;

@@ -17,8 +17,9 @@ commands:
   params [--scene S]              list every parameter: key, unit, default, range, meaning
   integrators                     list the integrators
   run --scene S [--set key=value]... [--integrator NAME] [--dt H] [--duration T]
-      [--csv FILE] [--every N] [--state FILE] [--quiet]
-                                  run headless; CSV row every N steps, final state table
+      [--csv FILE] [--every N] [--state FILE] [--save-scene FILE.json] [--quiet]
+                                  run headless; CSV row every N steps, final state table;
+                                  S may be a scene file (.json), which can carry a saved state
 
   bench --scene S [--set key=value]... [--integrator NAME] [--steps N] [--threads K] [--header]
                                   time N steps: us/step, ns per spring evaluation, real-time factor, memory

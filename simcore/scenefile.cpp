@@ -1,0 +1,178 @@
+#include "scenefile.h"
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "output.h"
+#include "scenes.h"
+#include "simulation.h"
+
+namespace simcore {
+
+namespace {
+
+using Json = nlohmann::json;
+
+SceneFileResult failure(std::string message) { return {std::nullopt, std::move(message)}; }
+
+// 1-based line of a byte offset.
+int lineOf(const std::string& text, std::size_t offset) {
+    int line = 1;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) line += text[i] == '\n';
+    return line;
+}
+
+std::optional<std::string> onlyKeys(const Json& object, const std::string& where,
+                                    std::initializer_list<const char*> allowed) {
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        bool known = false;
+        for (const char* key : allowed) known |= it.key() == key;
+        if (!known) {
+            std::string list;
+            for (const char* key : allowed) list += (list.empty() ? "" : ", ") + std::string(key);
+            return "unknown key '" + it.key() + "' in " + where + "; allowed: " + list;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> readVectors(const Json& array, const std::string& key, int count,
+                                       Eigen::Matrix3Xd& out) {
+    if (!array.is_array()) return "state." + key + " must be an array of [x, y, z]";
+    if (static_cast<int>(array.size()) != count)
+        return "state." + key + " has " + std::to_string(array.size()) + " rows; the body has " +
+               std::to_string(count) + " particles";
+    out.resize(3, count);
+    for (int i = 0; i < count; ++i) {
+        const Json& row = array[static_cast<std::size_t>(i)];
+        if (!row.is_array() || row.size() != 3)
+            return "state." + key + "[" + std::to_string(i) + "] must be [x, y, z]";
+        for (int k = 0; k < 3; ++k) {
+            const Json& value = row[static_cast<std::size_t>(k)];
+            if (!value.is_number() || !std::isfinite(value.get<double>()))
+                return "state." + key + "[" + std::to_string(i) + "] must hold finite numbers";
+            out(k, i) = value.get<double>();
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+SceneFileResult parseSceneFile(const std::string& text) {
+    Json root;
+    try {
+        root = Json::parse(text);
+    } catch (const Json::parse_error& e) {
+        return failure("not valid JSON at line " + std::to_string(lineOf(text, e.byte == 0 ? 0 : e.byte - 1)) +
+                       ": " + e.what());
+    }
+    if (!root.is_object()) return failure("a scene file must be a JSON object");
+    if (auto error = onlyKeys(root, "the file", {"format", "version", "scene", "integrator", "parameters", "state"}))
+        return failure(*error);
+    if (!root.contains("format") || root["format"] != "elastic-lab-scene")
+        return failure("format: expected \"elastic-lab-scene\"");
+    if (!root.contains("version") || !root["version"].is_number_integer())
+        return failure("version: expected a whole number");
+    const int version = root["version"].get<int>();
+    if (version > kSceneFormatVersion)
+        return failure("version " + std::to_string(version) + " is newer than this program reads (up to " +
+                       std::to_string(kSceneFormatVersion) + "); update Elastic Lab");
+    if (version < 1) return failure("version: must be 1 or more");
+    if (!root.contains("scene") || !root["scene"].is_string()) return failure("scene: expected a scene name");
+    SceneFile file;
+    file.sceneName = root["scene"].get<std::string>();
+    const SceneInfo* scene = findScene(file.sceneName);
+    if (!scene) return failure("scene: unknown scene '" + file.sceneName + "'; allowed: " + sceneNames());
+    file.params = ParameterSet(scene->kind);
+    if (root.contains("integrator")) {
+        if (!root["integrator"].is_string()) return failure("integrator: expected a name");
+        file.integrator = root["integrator"].get<std::string>();
+        if (!makeIntegrator(file.integrator))
+            return failure("integrator: unknown '" + file.integrator + "'; allowed: " + integratorNames());
+    }
+    if (root.contains("parameters")) {
+        const Json& params = root["parameters"];
+        if (!params.is_object()) return failure("parameters: expected an object of key: number");
+        for (auto it = params.begin(); it != params.end(); ++it) {
+            if (!it.value().is_number())
+                return failure("parameters." + it.key() + ": expected a number, got " + std::string(it.value().type_name()));
+            if (auto error = file.params.set(it.key(), it.value().get<double>()))
+                return failure("parameters." + *error);
+        }
+    }
+    if (scene->kind != SceneKind::Spring1d && file.params.get("radius_inner") >= file.params.get("radius_outer"))
+        return failure("parameters.radius_inner must be below radius_outer");
+    if (root.contains("state")) {
+        const Json& state = root["state"];
+        if (!state.is_object()) return failure("state: expected an object");
+        if (auto error = onlyKeys(state, "state", {"step", "time", "positions", "velocities"})) return failure(*error);
+        SceneFile::State s;
+        if (state.contains("step")) {
+            if (!state["step"].is_number_integer() || state["step"].get<long>() < 0)
+                return failure("state.step: expected a whole number >= 0");
+            s.step = state["step"].get<long>();
+        }
+        if (state.contains("time")) {
+            if (!state["time"].is_number() || !std::isfinite(state["time"].get<double>()) || state["time"].get<double>() < 0)
+                return failure("state.time: expected a finite number >= 0");
+            s.time = state["time"].get<double>();
+        }
+        // The particle count follows from the shape; building the body is cheap and exact.
+        const int count = buildBody(file.params).topology.particleCount();
+        if (!state.contains("positions") || !state.contains("velocities"))
+            return failure("state: needs both positions and velocities");
+        if (auto error = readVectors(state["positions"], "positions", count, s.positions)) return failure(*error);
+        if (auto error = readVectors(state["velocities"], "velocities", count, s.velocities)) return failure(*error);
+        file.state = std::move(s);
+    }
+    return {std::move(file), {}};
+}
+
+SceneFileResult readSceneFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return failure("cannot read '" + path + "'");
+    std::ostringstream text;
+    text << in.rdbuf();
+    SceneFileResult result = parseSceneFile(text.str());
+    if (!result.file) result.error = path + ": " + result.error;
+    return result;
+}
+
+std::string sceneFileText(const Simulation& sim, const std::string& sceneName, bool withState) {
+    // Numbers go out with to_chars' shortest round-trip form, so a reload is bit-exact.
+    std::ostringstream os;
+    os << "{\n  \"format\": \"elastic-lab-scene\",\n  \"version\": " << kSceneFormatVersion << ",\n"
+       << "  \"scene\": \"" << sceneName << "\",\n  \"integrator\": \"" << sim.integrator().name() << "\",\n"
+       << "  \"parameters\": {";
+    bool first = true;
+    for (const ParamSpec* spec : parametersFor(sim.parameters().kind())) {
+        os << (first ? "\n" : ",\n") << "    \"" << spec->key << "\": " << formatDouble(sim.parameters().get(spec->key));
+        first = false;
+    }
+    os << "\n  }";
+    if (withState) {
+        os << ",\n  \"state\": {\n    \"step\": " << sim.stepCount() << ",\n    \"time\": " << formatDouble(sim.time());
+        for (const char* key : {"positions", "velocities"}) {
+            const auto m = std::string(key) == "positions" ? sim.positions() : sim.velocities();
+            os << ",\n    \"" << key << "\": [";
+            for (Eigen::Index i = 0; i < m.cols(); ++i)
+                os << (i ? ", " : "") << "[" << formatDouble(m(0, i)) << ", " << formatDouble(m(1, i)) << ", "
+                   << formatDouble(m(2, i)) << "]";
+            os << "]";
+        }
+        os << "\n  }";
+    }
+    os << "\n}\n";
+    return os.str();
+}
+
+std::optional<std::string> applyState(Simulation& sim, const SceneFile::State& state) {
+    if (state.positions.cols() != sim.particleCount()) return std::string("state does not fit the body");
+    sim.setState(state.positions, state.velocities, state.step, state.time);
+    return std::nullopt;
+}
+
+}  // namespace simcore
