@@ -18,6 +18,12 @@ ParameterSet params(SceneKind kind, std::initializer_list<std::pair<const char*,
     return p;
 }
 
+long residentPages() {
+    QFile statm("/proc/self/statm");
+    if (!statm.open(QIODevice::ReadOnly)) return 0;
+    return statm.readAll().split(' ').value(1).toLong();
+}
+
 // |balance drift| relative to the largest energy the run moved around.
 double relativeDrift(const Diagnostics& d) {
     const double scale = std::max({std::abs(d.initialEnergy), std::abs(d.total()), d.removed(), 1e-12});
@@ -167,6 +173,19 @@ private slots:
         Simulation sim(ParameterSet(SceneKind(kind)), "rk4");
         QVERIFY2(sim.advanceTo(10.0), sim.failed() ? sim.failure()->reason.c_str() : "");
         QVERIFY(sim.diagnostics().kinetic < 1.0);  // settled
+    }
+    void longRunStaysStableWithFlatMemory_data() { energyBookkeepingCloses_data(); }
+    void longRunStaysStableWithFlatMemory() {
+        // Two simulated minutes at the defaults (the one-hour runs are in docs/reliability.md):
+        // no failure, and no memory growth once running (nothing is allocated per step).
+        QFETCH(int, kind);
+        Simulation sim(ParameterSet(SceneKind(kind)), "rk4");
+        QVERIFY(sim.advanceTo(10.0));
+        const long before = residentPages();
+        QVERIFY2(sim.advanceTo(120.0), sim.failed() ? sim.failure()->reason.c_str() : "");
+        QVERIFY(residentPages() - before <= 64);  // 256 KiB of slack for the allocator
+        QVERIFY(sim.state().allFinite());
+        QVERIFY(sim.diagnostics().kinetic < 1.0);  // at rest on the floor
     }
     void perturbationIsSeeded() {
         ParameterSet a = params(SceneKind::Ring2d, {{"perturb", 0.01}, {"seed", 1}});
