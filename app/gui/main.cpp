@@ -1,0 +1,144 @@
+// elastic-lab: the GUI.
+//
+//   elastic-lab [--scene S] [--set key=value]... [--integrator NAME] [--compare A,B,C]
+//               [--preset ID] [--screenshot FILE --after SECONDS]
+//
+// --screenshot runs (as fast as possible) to the given simulated time, renders the main
+// window, writes the PNG and exits: used by the tests and for the README's screenshots.
+#include <cstdio>
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QSurfaceFormat>
+#include <QTimer>
+
+#include "export.h"
+#include "main_window.h"
+#include "parameter_dock.h"
+#include "presets.h"
+#include "scenes.h"
+#include "simulation_controller.h"
+#include "viewport.h"
+
+namespace {
+
+int fail(const QString& message) {
+    std::fprintf(stderr, "elastic-lab: %s\n", qPrintable(message));
+    return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // The default format must be set before the application exists (QOpenGLWidget discipline).
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    format.setSamples(4);
+    QSurfaceFormat::setDefaultFormat(format);
+
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("ElasticLab"));
+    QApplication::setApplicationName(QStringLiteral("elastic-lab"));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Elastic Lab: two-layer elastic bodies, for teaching."));
+    parser.addHelpOption();
+    const QCommandLineOption sceneOpt(QStringLiteral("scene"), QStringLiteral("Scene: %1.").arg(elui::toQString(simcore::sceneNames())),
+                                      QStringLiteral("S"), QStringLiteral("ring2d"));
+    const QCommandLineOption setOpt(QStringLiteral("set"), QStringLiteral("Set a parameter (repeatable)."),
+                                    QStringLiteral("key=value"));
+    const QCommandLineOption integratorOpt(QStringLiteral("integrator"), QStringLiteral("Integrator."),
+                                           QStringLiteral("NAME"), QStringLiteral("rk4"));
+    const QCommandLineOption compareOpt(QStringLiteral("compare"),
+                                        QStringLiteral("Up to three integrators side by side, comma separated."),
+                                        QStringLiteral("A,B,C"));
+    const QCommandLineOption presetOpt(QStringLiteral("preset"), QStringLiteral("Start from a preset."),
+                                       QStringLiteral("ID"));
+    const QCommandLineOption shotOpt(QStringLiteral("screenshot"),
+                                     QStringLiteral("Render the main window to FILE (PNG) and exit."),
+                                     QStringLiteral("FILE"));
+    const QCommandLineOption afterOpt(QStringLiteral("after"), QStringLiteral("Simulated time before the screenshot."),
+                                      QStringLiteral("SECONDS"), QStringLiteral("0"));
+    const QCommandLineOption optionsOpt(QStringLiteral("show"),
+                                        QStringLiteral("Display switches: strain, forces, normals, noparticles, nofaces."),
+                                        QStringLiteral("LIST"));
+    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, shotOpt, afterOpt, optionsOpt});
+    parser.process(app);
+
+    // Scene and parameters, validated by simcore's table.
+    const elui::Preset* preset = nullptr;
+    if (parser.isSet(presetOpt)) {
+        preset = elui::findPreset(parser.value(presetOpt));
+        if (!preset) return fail(QStringLiteral("unknown preset '%1'").arg(parser.value(presetOpt)));
+    }
+    const simcore::SceneInfo* scene = simcore::findScene(parser.value(sceneOpt).toStdString());
+    if (!scene)
+        return fail(QStringLiteral("unknown scene '%1'; allowed: %2")
+                        .arg(parser.value(sceneOpt), elui::toQString(simcore::sceneNames())));
+    simcore::ParameterSet params = preset && !parser.isSet(sceneOpt) ? preset->parameters()
+                                                                     : simcore::ParameterSet(scene->kind);
+    for (const QString& assignment : parser.values(setOpt))
+        if (auto error = params.assign(assignment.toStdString())) return fail(QString::fromStdString(*error));
+    QStringList integrators{parser.value(integratorOpt)};
+    if (preset && !parser.isSet(integratorOpt)) integrators = preset->integrators;
+    if (parser.isSet(compareOpt)) integrators = parser.value(compareOpt).split(QLatin1Char(','), Qt::SkipEmptyParts);
+    if (integrators.isEmpty() || integrators.size() > 3) return fail(QStringLiteral("give one to three integrators"));
+    bool afterOk = false;
+    const double after = parser.value(afterOpt).toDouble(&afterOk);
+    if (!afterOk || after < 0) return fail(QStringLiteral("--after needs a time >= 0 in seconds"));
+
+    const bool screenshot = parser.isSet(shotOpt);
+    elui::MainWindow window(!screenshot);
+    if (parser.isSet(optionsOpt)) {
+        elui::ViewOptions o = window.viewOptions();
+        for (const QString& s : parser.value(optionsOpt).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            if (s == QLatin1String("strain")) o.strain = true;
+            else if (s == QLatin1String("forces")) o.forces = true;
+            else if (s == QLatin1String("normals")) o.normals = true;
+            else if (s == QLatin1String("noparticles")) o.particles = false;
+            else if (s == QLatin1String("nofaces")) o.faces = false;
+            else return fail(QStringLiteral("unknown --show switch '%1'").arg(s));
+        }
+        window.setViewOptions(o);
+    }
+    elui::SimulationController* controller = window.controller();
+    if (preset) controller->setStartKick(preset->kickInner, preset->kickOuter);
+    window.startScene(params, integrators);
+    window.show();
+
+    if (screenshot) {
+        const QString path = parser.value(shotOpt);
+        int exitCode = 0;
+        auto shoot = [&window, &app, path, &exitCode] {
+            // Let the last frame reach the viewports and be painted, then grab the window.
+            QTimer::singleShot(400, &window, [&window, &app, path, &exitCode] {
+                QApplication::processEvents();
+                const QString error = elui::writeImage(path, window.grab().toImage());
+                if (!error.isEmpty()) {
+                    std::fprintf(stderr, "elastic-lab: %s\n", qPrintable(error));
+                    exitCode = 1;
+                }
+                app.exit(exitCode);
+            });
+        };
+        QObject::connect(controller, &elui::SimulationController::reachedTime, &window, shoot);
+        QObject::connect(controller, &elui::SimulationController::runFailed, &window, shoot);
+        QObject::connect(controller, &elui::SimulationController::sceneRejected, &window,
+                         [&app](const QString& m) {
+                             std::fprintf(stderr, "elastic-lab: %s\n", qPrintable(m));
+                             app.exit(2);
+                         });
+        if (after > 0) controller->runUntil(after);
+        else QTimer::singleShot(300, &window, shoot);
+        // Never hang: give up after two minutes of wall time.
+        QTimer::singleShot(120000, &app, [&app] {
+            std::fprintf(stderr, "elastic-lab: screenshot timed out\n");
+            app.exit(3);
+        });
+        return app.exec();
+    }
+    return app.exec();
+}

@@ -1,0 +1,134 @@
+// The parameter and scene docks against simcore's parameter table: every key, unit, range and
+// default; edits validated by the same table; values round-trip.
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "parameter_dock.h"
+#include "scene_dock.h"
+#include "scenes.h"
+
+using namespace elui;
+using simcore::ParamGroup;
+using simcore::SceneKind;
+
+Q_DECLARE_METATYPE(simcore::SceneKind)
+
+class TestGuiParams : public QObject {
+    Q_OBJECT
+private slots:
+    void fieldsComeFromTheTable_data() {
+        QTest::addColumn<SceneKind>("kind");
+        for (const simcore::SceneInfo& s : simcore::sceneTable())
+            QTest::newRow(std::string(s.name).c_str()) << s.kind;
+    }
+    void fieldsComeFromTheTable() {
+        QFETCH(SceneKind, kind);
+        ParameterDock dock;
+        dock.showParameters(simcore::ParameterSet(kind));
+        QStringList expected;
+        for (const simcore::ParamSpec* spec : simcore::parametersFor(kind))
+            if (!spec->isShape()) expected << toQString(spec->key);
+        QCOMPARE(dock.form()->keys(), expected);
+        for (const simcore::ParamSpec* spec : simcore::parametersFor(kind)) {
+            if (spec->isShape()) continue;
+            QLineEdit* edit = dock.form()->field(toQString(spec->key));
+            QVERIFY(edit);
+            QCOMPARE(edit->text().toDouble(), simcore::ParameterSet(kind).get(spec->key));
+            const QString tip = edit->toolTip();
+            QVERIFY2(tip.contains(toQString(spec->meaning).toHtmlEscaped()), qPrintable(tip));
+            QVERIFY(tip.contains(QString::fromStdString(spec->rangeText())));
+            if (!spec->unit.empty()) QVERIFY(tip.contains(toQString(spec->unit)));
+        }
+        // Keys a scene does not have are not shown: no gas for the 1D spring.
+        QCOMPARE(dock.form()->field("pressure") != nullptr, kind != SceneKind::Spring1d);
+        QCOMPARE(dock.form()->field("rks") != nullptr, kind != SceneKind::Spring1d);
+    }
+
+    void valuesRoundTrip() {
+        simcore::ParameterSet params(SceneKind::Sphere3d);
+        QVERIFY(!params.set("ks", 1234.5));
+        QVERIFY(!params.set("pressure_inner", 7.25));
+        QVERIFY(!params.set("mass_outer", 0.125));
+        QVERIFY(!params.set("seed", 42));
+        ParameterDock dock;
+        dock.showParameters(params);
+        const simcore::ParameterSet shown = dock.form()->values();
+        for (const QString& key : dock.form()->keys())
+            QCOMPARE(shown.get(key.toStdString()), params.get(key.toStdString()));
+        // pressure_outer still inherits pressure (20), pressure_inner is its own.
+        QCOMPARE(dock.form()->field("pressure_outer")->text(), QString("20"));
+        QCOMPARE(dock.form()->field("pressure_inner")->text(), QString("7.25"));
+    }
+
+    void validEditEmitsOnce() {
+        ParameterDock dock;
+        dock.showParameters(simcore::ParameterSet(SceneKind::Ring2d));
+        QSignalSpy edited(&dock, &ParameterDock::parameterEdited);
+        QLineEdit* ks = dock.form()->field("ks");
+        ks->setText("999.5");
+        emit ks->editingFinished();
+        QCOMPARE(edited.count(), 1);
+        QCOMPARE(edited.at(0).at(0).toString(), QString("ks"));
+        QCOMPARE(edited.at(0).at(1).toDouble(), 999.5);
+        emit ks->editingFinished();  // unchanged: no second edit
+        QCOMPARE(edited.count(), 1);
+        // Showing new values from the model does not echo back as an edit.
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set("ks", 10.0);
+        dock.showParameters(p);
+        QCOMPARE(edited.count(), 1);
+        QCOMPARE(ks->text(), QString("10"));
+    }
+
+    void invalidEditIsRefusedWithTheTablesMessage_data() {
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<QString>("text");
+        QTest::newRow("negative stiffness") << "ks" << "-5";
+        QTest::newRow("not a number") << "kd" << "abc";
+        QTest::newRow("restitution above 1") << "restitution" << "1.5";
+        QTest::newRow("zero mass (exclusive)") << "mass" << "0";
+        QTest::newRow("fractional seed") << "seed" << "1.5";
+        QTest::newRow("trailing junk") << "gravity" << "9.81x";
+    }
+    void invalidEditIsRefusedWithTheTablesMessage() {
+        QFETCH(QString, key);
+        QFETCH(QString, text);
+        ParameterDock dock;
+        dock.showParameters(simcore::ParameterSet(SceneKind::Ring2d));
+        QSignalSpy edited(&dock, &ParameterDock::parameterEdited);
+        QSignalSpy rejected(&dock, &ParameterDock::parameterRejected);
+        QLineEdit* field = dock.form()->field(key);
+        field->setText(text);
+        emit field->editingFinished();
+        QCOMPARE(edited.count(), 0);
+        QCOMPARE(rejected.count(), 1);
+        const QString message = rejected.at(0).at(1).toString();
+        QVERIFY(message.startsWith(key));
+        const simcore::ParamSpec* spec = simcore::findParam(key.toStdString());
+        if (auto v = simcore::parseNumber(text.toStdString()))
+            QCOMPARE(message, QString::fromStdString(*simcore::validateValue(*spec, *v)));
+        QVERIFY(!field->styleSheet().isEmpty());  // marked
+    }
+
+    void sceneDockOffersTheShapeKeys_data() { fieldsComeFromTheTable_data(); }
+    void sceneDockOffersTheShapeKeys() {
+        QFETCH(SceneKind, kind);
+        SceneDock dock;
+        dock.showParameters(simcore::ParameterSet(kind));
+        const simcore::ParameterSet shape = dock.requestedShape();
+        QCOMPARE(shape.kind(), kind);
+        int count = 0;
+        for (const simcore::ParamSpec* spec : simcore::parametersFor(kind)) {
+            QCOMPARE(shape.isExplicit(spec->key), spec->isShape());
+            count += spec->isShape();
+        }
+        QVERIFY(count >= 1);
+        QSignalSpy rebuild(&dock, &SceneDock::rebuildRequested);
+        dock.findChild<QWidget*>("rebuildButton")->metaObject()->invokeMethod(dock.findChild<QWidget*>("rebuildButton"), "click");
+        QCOMPARE(rebuild.count(), 1);
+    }
+};
+
+QTEST_MAIN(TestGuiParams)
+#include "test_gui_params.moc"

@@ -1,0 +1,130 @@
+// Plot data per scene (only the quantities a scene has), and the file exports.
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "export.h"
+#include "main_window.h"
+#include "output.h"
+#include "plot_dock.h"
+#include "scenes.h"
+#include "simulation_controller.h"
+
+using namespace elui;
+using simcore::SceneKind;
+
+Q_DECLARE_METATYPE(simcore::SceneKind)
+
+namespace {
+std::vector<simcore::Diagnostics> runRows(SceneKind kind, int steps) {
+    simcore::Simulation sim(simcore::ParameterSet(kind), "rk4");
+    std::vector<simcore::Diagnostics> rows{sim.diagnostics()};
+    for (int i = 0; i < steps; ++i) {
+        sim.step();
+        rows.push_back(sim.diagnostics());
+    }
+    return rows;
+}
+}  // namespace
+
+class TestGuiPlots : public QObject {
+    Q_OBJECT
+private slots:
+    void onlyTheQuantitiesTheSceneHas_data() {
+        QTest::addColumn<SceneKind>("kind");
+        for (const simcore::SceneInfo& s : simcore::sceneTable())
+            QTest::newRow(std::string(s.name).c_str()) << s.kind;
+    }
+    void onlyTheQuantitiesTheSceneHas() {
+        QFETCH(SceneKind, kind);
+        PlotDock dock;
+        dock.setScene(kind);
+        const bool gas = simcore::hasGas(kind);
+        const QStringList expected = gas ? QStringList{"volume", "pressure", "energy"} : QStringList{"energy"};
+        QCOMPARE(dock.plotIds(), expected);
+        QCOMPARE(dock.seriesNames("energy").contains("gas"), gas);
+        QVERIFY(dock.seriesNames("energy").contains("total"));
+        QVERIFY(dock.seriesNames("energy").contains("removed"));
+        if (gas) QCOMPARE(dock.seriesNames("volume"), (QStringList{"inner", "outer"}));
+
+        const auto rows = runRows(kind, 40);
+        dock.appendRows(rows, 0, 10);
+        dock.appendRows(rows, 10, int(rows.size()) - 10);
+        for (const QString& id : dock.plotIds())
+            for (int s = 0; s < dock.seriesNames(id).size(); ++s) QCOMPARE(dock.pointCount(id, s), 41);
+        const simcore::Diagnostics& last = rows.back();
+        QCOMPARE(dock.lastValue("energy", 0), last.kinetic);
+        QCOMPARE(dock.lastValue("energy", dock.seriesNames("energy").indexOf("total")), last.total());
+        if (gas) {
+            QCOMPARE(dock.lastValue("volume", 1), last.volume[1]);
+            QCOMPARE(dock.lastValue("pressure", 0), last.pressure[0]);
+        }
+        dock.clear();
+        QCOMPARE(dock.pointCount("energy", 0), 0);
+    }
+
+    void mainWindowFollowsTheScene() {
+        // Offscreen there is no OpenGL: the window must still work, with a placeholder view.
+        MainWindow window(false);
+        QVERIFY(window.viewports().empty());
+        simcore::ParameterSet p(SceneKind::Spring1d);
+        window.startScene(p, {"rk4"});
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() &&
+                                     window.controller()->latest()->scene->kind == SceneKind::Spring1d,
+                                 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->plotIds(), QStringList{"energy"}, 5000);
+        window.controller()->step();
+        window.controller()->step();
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->pointCount("energy", 0), 3, 5000);
+        window.startScene(simcore::ParameterSet(SceneKind::Sphere3d), {"rk4"});
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->plotIds(), (QStringList{"volume", "pressure", "energy"}), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->pointCount("volume", 0), 1, 5000);
+    }
+
+    void csvHasTheCliColumns() {
+        QTemporaryDir dir;
+        const auto rows = runRows(SceneKind::Ring2d, 5);
+        const QString path = dir.filePath("run.csv");
+        QCOMPARE(writeCsv(path, SceneKind::Ring2d, rows), QString());
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = f.readAll().split('\n');
+        const auto columns = simcore::timeSeriesColumns(SceneKind::Ring2d);
+        QCOMPARE(lines[0] + '\n', QByteArray::fromStdString(simcore::csvHeader(columns)));
+        QCOMPARE(lines[3] + '\n', QByteArray::fromStdString(simcore::csvRow(columns, rows[2])));
+        QCOMPARE(lines.size(), 1 + 6 + 1);  // header, 6 rows, trailing newline
+        // 1D: no gas columns.
+        QCOMPARE(writeCsv(path, SceneKind::Spring1d, runRows(SceneKind::Spring1d, 2)), QString());
+        QVERIFY(f.seek(0) || true);
+        f.close();
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QVERIFY(!f.readLine().contains("volume"));
+        // An unwritable path leaves an error, not a half file.
+        QVERIFY(!writeCsv("/nonexistent-dir/x.csv", SceneKind::Ring2d, rows).isEmpty());
+    }
+
+    void plotExports() {
+        QTemporaryDir dir;
+        PlotDock dock;
+        dock.setScene(SceneKind::Ring2d);
+        const auto rows = runRows(SceneKind::Ring2d, 30);
+        dock.appendRows(rows, 0, int(rows.size()));
+        dock.replotNow();
+        const QList<QPair<QString, QByteArray>> formats = {
+            {"p.png", QByteArray("\x89PNG")}, {"p.svg", QByteArray("<?xml")}, {"p.pdf", QByteArray("%PDF")}};
+        for (const auto& [name, magic] : formats) {
+            const QString path = dir.filePath(name);
+            QCOMPARE(writePlots(path, dock.plots(), dock.specs()), QString());
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const QByteArray data = f.readAll();
+            QVERIFY2(data.startsWith(magic), qPrintable(name));
+            QVERIFY(data.size() > 1000);
+            if (name.endsWith("svg")) QVERIFY(data.count("<polyline") == 2 + 2 + 6);
+        }
+    }
+};
+
+QTEST_MAIN(TestGuiPlots)
+#include "test_gui_plots.moc"

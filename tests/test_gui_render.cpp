@@ -1,0 +1,209 @@
+// Rendering (needs OpenGL: runs under Xvfb on xcb). Every scene is drawn and the image is
+// checked for content: the body, both layers in their colours, the springs.
+#include <cmath>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QProcess>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "main_window.h"
+#include "presets.h"
+#include "scenes.h"
+#include "simulation_controller.h"
+#include "viewport.h"
+
+using namespace elui;
+using simcore::SceneKind;
+
+Q_DECLARE_METATYPE(simcore::SceneKind)
+
+namespace {
+
+struct Census {
+    double changed = 0;  // fraction of pixels that differ from the background
+    double bluish = 0;   // inner layer colour
+    double orange = 0;   // outer layer colour
+    double dark = 0;     // springs, particles
+    int colours = 0;
+};
+
+Census census(const QImage& image) {
+    Census c;
+    const QImage img = image.convertToFormat(QImage::Format_RGB32);
+    const QRgb background = img.pixel(3, img.height() / 2);
+    QSet<QRgb> seen;
+    const double n = double(img.width()) * img.height();
+    for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+            const QRgb p = img.pixel(x, y);
+            if (seen.size() < 5000) seen.insert(p);
+            if (p != background) c.changed += 1 / n;
+            const int r = qRed(p), g = qGreen(p), b = qBlue(p);
+            if (b > r + 50 && b > g) c.bluish += 1 / n;
+            if (r > b + 60 && r > g) c.orange += 1 / n;
+            if (r + g + b < 200) c.dark += 1 / n;
+        }
+    c.colours = int(seen.size());
+    return c;
+}
+
+bool waitForScene(MainWindow& w, SceneKind kind) {
+    QElapsedTimer t;
+    t.start();
+    while (t.elapsed() < 8000) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        const FramePtr& f = w.controller()->latest();
+        if (f && f->scene->kind == kind && !w.viewports().empty() && w.viewports().front()->frame() == f) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+class TestGuiRender : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { QVERIFY2(Viewport::openGLAvailable(), "OpenGL 3.3 core is needed (run under xvfb-run)"); }
+
+    void everySceneIsDrawn_data() {
+        QTest::addColumn<SceneKind>("kind");
+        for (const simcore::SceneInfo& s : simcore::sceneTable())
+            QTest::newRow(std::string(s.name).c_str()) << s.kind;
+    }
+    void everySceneIsDrawn() {
+        QFETCH(SceneKind, kind);
+        MainWindow w(false);
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.startScene(simcore::ParameterSet(kind), {"rk4"});
+        QVERIFY(waitForScene(w, kind));
+        Viewport* v = w.viewports().front();
+        const QImage image = v->grabFramebuffer();
+        QVERIFY(!image.isNull());
+        const Census c = census(image);
+        // Two particles on a spring cover little of the view; the layered bodies fill much of it.
+        const double least = kind == SceneKind::Spring1d ? 0.004 : 0.03;
+        QVERIFY2(c.changed > least, qPrintable(QString("only %1 of the pixels drawn").arg(c.changed)));
+        QVERIFY2(c.colours > 20, qPrintable(QString("%1 colours").arg(c.colours)));
+        QVERIFY2(c.dark > 0.001, "springs and particles are missing");
+        if (simcore::hasGas(kind)) {
+            // Inner (blue) and outer (orange) layers are both visible and distinct.
+            QVERIFY2(c.bluish > 0.01, qPrintable(QString("inner layer: %1").arg(c.bluish)));
+            QVERIFY2(c.orange > 0.01, qPrintable(QString("outer layer: %1").arg(c.orange)));
+        }
+        // Hiding everything leaves (nearly) only the background and the box.
+        ViewOptions none;
+        none.springs[0] = none.springs[1] = none.springs[2] = false;
+        none.faces = none.particles = none.box = false;
+        w.setViewOptions(none);
+        const Census empty = census(v->grabFramebuffer());
+        QVERIFY2(empty.changed < 0.3 * c.changed, qPrintable(QString("%1 drawn with everything off").arg(empty.changed)));
+    }
+
+    void strainColouringChangesTheSprings() {
+        MainWindow w(false);
+        w.resize(1000, 700);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        w.startScene(p, {"rk4"});
+        QVERIFY(waitForScene(w, SceneKind::Ring2d));
+        w.controller()->runUntil(0.6);  // squashed on the floor: springs strained
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() &&
+                                     w.controller()->latest()->lanes[0].diagnostics.time > 0.59,
+                                 8000);
+        QTest::qWait(100);
+        Viewport* v = w.viewports().front();
+        ViewOptions o;
+        o.faces = false;
+        w.setViewOptions(o);
+        const QImage plain = v->grabFramebuffer();
+        o.strain = true;
+        w.setViewOptions(o);
+        const QImage strained = v->grabFramebuffer();
+        const Census a = census(plain), b = census(strained);
+        QVERIFY(plain != strained);
+        QVERIFY2(b.bluish + b.orange > a.bluish + a.orange,
+                 "strain colours (blue compressed, red stretched) should appear");
+    }
+
+    void sideBySideMakesOneViewPerIntegrator() {
+        MainWindow w(false);
+        w.resize(1500, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const Preset p = stabilityPresets().at(1);  // DT 0.03
+        w.applyPreset(p);
+        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 3, 8000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.viewports()[2]->frame() != nullptr, 5000);
+        for (Viewport* v : w.viewports()) {
+            QTRY_VERIFY_WITH_TIMEOUT(v->isVisible() && v->width() > 100, 5000);
+            QVERIFY(census(v->grabFramebuffer()).changed > 0.03);
+        }
+        QCOMPARE(w.controller()->latest()->parameters.get("dt"), 0.03);
+        w.controller()->runUntil(2.0);
+        // On the two-layer ring at DT 0.03 every explicit method blows up within a second
+        // (measured with elastic-lab-cli); when all lanes have failed the run pauses by itself.
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() && w.controller()->latest()->lanes[2].failure, 20000);
+        FramePtr f = w.controller()->latest();
+        for (const LaneFrame& lane : f->lanes) {
+            QVERIFY(lane.failure.has_value());
+            for (float x : lane.positions) QVERIFY(std::isfinite(x));
+        }
+        // At DT 0.003 none fails, all reach the same time and they differ.
+        w.applyPreset(stabilityPresets().at(0));
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->parameters.get("dt") == 0.003 &&
+                                     !w.controller()->latest()->lanes[0].failure,
+                                 8000);
+        w.controller()->runUntil(1.0);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() &&
+                                     w.controller()->latest()->lanes[0].diagnostics.time > 0.99,
+                                 20000);
+        f = w.controller()->latest();
+        for (const LaneFrame& lane : f->lanes) {
+            QVERIFY(!lane.failure.has_value());
+            QCOMPARE(lane.diagnostics.time, f->lanes[0].diagnostics.time);
+        }
+        QVERIFY(f->lanes[1].divergence > 0.0 && f->lanes[2].divergence > 0.0);
+        w.singleView();
+        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 1, 8000);
+    }
+
+    void screenshotFromTheCommandLine() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("shot.png");
+        QProcess p;
+        p.start(ELASTIC_LAB_GUI, {"--scene", "sphere3d", "--set", "subdivisions=1", "--integrator", "verlet",
+                                  "--screenshot", path, "--after", "0.5"});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        const QImage image(path);
+        QVERIFY(!image.isNull());
+        QVERIFY(image.width() >= 800);
+        QVERIFY(census(image).colours > 50);
+        // Bad input is refused with a message, before any window.
+        QProcess bad;
+        bad.start(ELASTIC_LAB_GUI, {"--scene", "ring2d", "--set", "ks=-3", "--screenshot", path});
+        QVERIFY(bad.waitForFinished(20000));
+        QCOMPARE(bad.exitCode(), 2);
+        QVERIFY(bad.readAllStandardError().contains("ks"));
+    }
+};
+
+int main(int argc, char** argv) {
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    QSurfaceFormat::setDefaultFormat(format);
+    QApplication app(argc, argv);
+    TestGuiRender test;
+    return QTest::qExec(&test, argc, argv);
+}
+#include "test_gui_render.moc"

@@ -1,0 +1,54 @@
+#include "compare_dialog.h"
+
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QVBoxLayout>
+
+#include "integrators.h"
+#include "parameter_dock.h"
+
+namespace elui {
+
+CompareDialog::CompareDialog(const QStringList& current, double dt, QWidget* parent) : QDialog(parent) {
+    setWindowTitle(tr("Side by side"));
+    auto* layout = new QVBoxLayout(this);
+    auto* text = new QLabel(tr("Run the same scene with up to three integrators from the same start state. "
+                               "Parameter edits and mouse drags go to all of them."),
+                            this);
+    text->setWordWrap(true);
+    layout->addWidget(text);
+    auto* form = new QFormLayout;
+    for (int i = 0; i < 3; ++i) {
+        m_combo[i] = new QComboBox(this);
+        if (i > 0) m_combo[i]->addItem(tr("(none)"));
+        for (const simcore::IntegratorInfo& info : simcore::integratorTable()) m_combo[i]->addItem(toQString(info.name));
+        if (i < current.size()) m_combo[i]->setCurrentText(current[i]);
+        else if (i > 0) m_combo[i]->setCurrentIndex(0);
+        form->addRow(tr("View %1").arg(i + 1), m_combo[i]);
+    }
+    m_dt = new QLineEdit(QString::number(dt, 'g', 10), this);
+    form->addRow(tr("DT [s]"), m_dt);
+    layout->addLayout(form);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    layout->addWidget(buttons);
+}
+
+QStringList CompareDialog::integrators() const {
+    QStringList out;
+    for (QComboBox* c : m_combo)
+        if (c->currentText() != tr("(none)")) out << c->currentText();
+    return out;
+}
+
+double CompareDialog::dt() const {
+    double v = 0.003;
+    if (!ParameterForm::validate(*simcore::findParam("dt"), m_dt->text(), &v).isEmpty()) return 0.003;
+    return v;
+}
+
+}  // namespace elui

@@ -1,0 +1,81 @@
+#pragma once
+// Frame: an immutable snapshot of the running simulation(s), made on the worker thread and
+// handed to the GUI by shared pointer. The GUI never touches simcore::Simulation itself.
+//
+//   worker thread                         GUI thread
+//   ─────────────                         ──────────
+//   step, step, step ... ──publish──▶ [ latest frame slot ] ──take──▶ viewport, docks, plots
+//                                      (newest wins; the rows of
+//                                       every step are kept)
+//
+// One frame holds one lane per integrator (one in normal mode, up to three side by side).
+// The scene part (topology, rest lengths, box) changes only when the body is rebuilt; it is
+// shared between frames, so the viewport uploads topology only when `scene` changes.
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <QMetaType>
+#include <QString>
+#include <QVector3D>
+
+#include "body.h"
+#include "forces.h"
+#include "params.h"
+#include "simulation.h"
+
+namespace elui {
+
+// Topology and everything else that changes only on a rebuild.
+struct SceneData {
+    quint64 version = 0;                  // increases on every rebuild
+    simcore::SceneKind kind = simcore::SceneKind::Ring2d;
+    simcore::Topology topology;
+    Eigen::Vector3d boxCentre = Eigen::Vector3d::Zero();
+    double boxHalfSize = 2.5;             // [m]
+    double bodyRadius = 2.0;              // [m] rough size of the body, for the camera
+};
+
+enum class Speed { RealTime, Quarter, Tenth, AsFastAsPossible };
+
+// The factor simulated seconds advance per wall second (0: as fast as possible).
+double speedFactor(Speed speed);
+QString speedName(Speed speed);
+
+struct LaneFrame {
+    QString integrator;
+    std::vector<float> positions;         // 3N [m], x0 y0 z0 x1 ...
+    std::vector<float> forces;            // 3N [N], only when force vectors are asked for
+    simcore::Diagnostics diagnostics;
+    std::optional<simcore::Failure> failure;
+    simcore::PointerSpring pointer;
+    double divergence = 0.0;              // RMS distance to lane 0's particles [m]
+};
+
+struct Frame {
+    std::shared_ptr<const SceneData> scene;
+    simcore::ParameterSet parameters;
+    std::vector<LaneFrame> lanes;
+    bool running = false;
+    Speed speed = Speed::RealTime;
+    double wallSeconds = 0.0;             // wall time spent running since the last reset [s]
+    double stepsPerSecond = 0.0;          // lane 0, measured over the last second
+    bool fallingBehind = false;           // real-time mode could not keep up
+    double explicitDtLimit = 0.0;         // estimated largest stable DT of explicit methods [s]
+    quint64 serial = 0;                   // increases with every published frame
+};
+
+using FramePtr = std::shared_ptr<const Frame>;
+
+// Time-series rows of lane 0 accumulated since the last take (every recorded step).
+struct FrameBatch {
+    FramePtr frame;
+    std::vector<simcore::Diagnostics> rows;
+    bool historyReset = false;            // a reset/rebuild happened: clear plots first
+};
+
+}  // namespace elui
+
+Q_DECLARE_METATYPE(elui::FramePtr)
+Q_DECLARE_METATYPE(simcore::ParameterSet)

@@ -1,0 +1,100 @@
+#include "help_dialog.h"
+
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QTextBrowser>
+#include <QUrl>
+#include <QVBoxLayout>
+
+#include "integrators.h"
+#include "parameter_dock.h"
+#include "presets.h"
+
+namespace elui {
+
+namespace {
+QString docLink(const QString& file, const QString& text) {
+    const QString path = QDir(QStringLiteral(ELASTIC_LAB_SOURCE_DIR)).filePath(file);
+    return QStringLiteral("<a href='%1'>%2</a>").arg(QUrl::fromLocalFile(path).toString(), text.toHtmlEscaped());
+}
+
+// What each integrator means for a class, beyond its one-line description.
+QString integratorNote(const QString& name) {
+    if (name == QLatin1String("euler"))
+        return QObject::tr("Cheapest and least stable: on an undamped spring it gains energy at every DT. "
+                           "Blows up on the ring at DT 0.03.");
+    if (name == QLatin1String("midpoint"))
+        return QObject::tr("Two force evaluations per step, second order; survives DT 0.03 on the ring.");
+    if (name == QLatin1String("rk4"))
+        return QObject::tr("Four evaluations, fourth order; stable up to h·ω ≈ 2.8 — still not at DT 0.3.");
+    if (name == QLatin1String("symplectic-euler"))
+        return QObject::tr("Same cost as Euler, but energy stays bounded on an undamped spring (h·ω < 2).");
+    if (name == QLatin1String("verlet"))
+        return QObject::tr("Velocity Verlet: time-reversible, good long-run energy behaviour.");
+    if (name == QLatin1String("rk45"))
+        return QObject::tr("Chooses its own step to meet a tolerance; the readout shows its error estimate.");
+    if (name == QLatin1String("implicit-euler"))
+        return QObject::tr("Stable at any DT (it damps instead of blowing up): the one to use for DT 0.3.");
+    return {};
+}
+}  // namespace
+
+QString HelpDialog::html() {
+    QString h;
+    h += QObject::tr("<h2>Elastic Lab</h2><p>A two-layer elastic body: particles joined by springs, with gas "
+                     "inside each closed layer. Drag the body with the mouse; change any parameter while it "
+                     "runs.</p>");
+    h += QObject::tr(
+        "<h3>The model</h3><ul>"
+        "<li><b>Particles</b> carry mass; gravity pulls along −y.</li>"
+        "<li><b>Springs</b> (Hooke + damping): <i>structural</i> springs along each layer (KS, KD), "
+        "<i>radius</i> springs between paired inner and outer particles and <i>shear</i> springs across "
+        "them (RKS, RKD).</li>"
+        "<li><b>Gas</b>: each closed layer encloses gas with P = nRT / V, pushing outward on every edge "
+        "(2D) or face (3D). V is the exact area or volume.</li>"
+        "<li><b>Mouse spring</b> (MKS, MKD) from the pointer to the grabbed particle.</li>"
+        "<li><b>Collisions</b> with the box: a particle outside is put back and its normal speed reversed "
+        "and scaled by the restitution.</li></ul>"
+        "<p>The plots show the energy book: kinetic + spring + gravity + gas is the total; "
+        "what damping and collisions take out is 'removed'. For an exact integrator, total + removed − "
+        "work by the mouse stays constant; the readout's <i>energy drift</i> is how far it is off.</p>");
+    h += QObject::tr("<h3>Integrators</h3><table border=1 cellspacing=0 cellpadding=4>"
+                     "<tr><th>name</th><th>order</th><th>what it does</th><th>in class</th></tr>");
+    for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {
+        const QString name = toQString(info.name);
+        h += QStringLiteral("<tr><td><b>%1</b></td><td align=center>%2</td><td>%3</td><td>%4</td></tr>")
+                 .arg(name)
+                 .arg(info.order)
+                 .arg(toQString(info.description).toHtmlEscaped(), integratorNote(name).toHtmlEscaped());
+    }
+    h += QStringLiteral("</table>");
+    h += QObject::tr("<h3>Presets</h3><ul>");
+    for (const Preset& p : teachingPresets() + stabilityPresets())
+        h += QStringLiteral("<li><b>%1</b>: %2</li>").arg(p.title.toHtmlEscaped(), p.description.toHtmlEscaped());
+    h += QStringLiteral("</ul>");
+    h += QObject::tr("<h3>Mouse</h3><ul><li>Left-drag on the body: grab the nearest outer particle and pull "
+                     "it.</li><li>Left-drag elsewhere (3D): orbit. Right- or middle-drag: pan. Wheel: zoom. "
+                     "View → Reset view.</li></ul>");
+    h += QObject::tr("<h3>More</h3><ul>");
+    h += QStringLiteral("<li>%1</li>").arg(docLink(QStringLiteral("docs/gui.md"), QObject::tr("The GUI (docs/gui.md)")));
+    h += QStringLiteral("<li>%1</li>")
+             .arg(docLink(QStringLiteral("docs/architecture.md"), QObject::tr("Architecture (docs/architecture.md)")));
+    h += QStringLiteral("<li>%1</li>").arg(docLink(QStringLiteral("README.md"), QObject::tr("README")));
+    h += QStringLiteral("</ul>");
+    return h;
+}
+
+HelpDialog::HelpDialog(QWidget* parent) : QDialog(parent) {
+    setWindowTitle(tr("Elastic Lab help"));
+    resize(760, 680);
+    auto* layout = new QVBoxLayout(this);
+    auto* browser = new QTextBrowser(this);
+    browser->setOpenExternalLinks(true);
+    browser->setHtml(html());
+    layout->addWidget(browser);
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    layout->addWidget(buttons);
+}
+
+}  // namespace elui

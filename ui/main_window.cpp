@@ -1,0 +1,441 @@
+#include "main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFrame>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QStatusBar>
+#include <QVBoxLayout>
+
+#include "compare_dialog.h"
+#include "export.h"
+#include "help_dialog.h"
+#include "parameter_dock.h"
+#include "plot_dock.h"
+#include "presets.h"
+#include "run_dock.h"
+#include "scene_dock.h"
+#include "scenes.h"
+#include "simulation_controller.h"
+#include "viewport.h"
+
+namespace elui {
+
+MainWindow::MainWindow(bool useSettings, QWidget* parent) : QMainWindow(parent), m_useSettings(useSettings) {
+    setWindowTitle(tr("Elastic Lab"));
+    m_controller = new SimulationController(this);
+    createActions();
+    createMenus();
+    createCentral();
+    createDocks();
+    connectController();
+    readSettings();
+}
+
+MainWindow::~MainWindow() {
+    // Stop the worker before the viewports go: no frame may arrive at a half-destroyed window.
+    delete m_controller;
+    m_controller = nullptr;
+}
+
+void MainWindow::createActions() {
+    m_exportCsv = new QAction(tr("Export &CSV..."), this);
+    m_exportCsv->setToolTip(tr("The time series of this run, with the same columns as elastic-lab-cli run --csv"));
+    connect(m_exportCsv, &QAction::triggered, this, &MainWindow::exportCsv);
+    m_exportPlots = new QAction(tr("Export &plots (PNG, SVG, PDF)..."), this);
+    connect(m_exportPlots, &QAction::triggered, this, &MainWindow::exportPlots);
+    m_screenshot = new QAction(tr("Save &viewport screenshot..."), this);
+    connect(m_screenshot, &QAction::triggered, this, &MainWindow::saveViewportScreenshot);
+    m_quit = new QAction(tr("&Quit"), this);
+    m_quit->setShortcut(QKeySequence::Quit);
+    connect(m_quit, &QAction::triggered, this, &QWidget::close);
+
+    m_runPause = new QAction(tr("&Run / Pause"), this);
+    m_runPause->setShortcut(Qt::Key_Space);
+    connect(m_runPause, &QAction::triggered, this, [this] {
+        if (m_controller->running()) m_controller->pause();
+        else m_controller->run();
+    });
+    m_step = new QAction(tr("&Step"), this);
+    m_step->setShortcut(Qt::Key_S);
+    connect(m_step, &QAction::triggered, this, [this] { m_controller->step(); });
+    m_reset = new QAction(tr("R&eset"), this);
+    m_reset->setShortcut(Qt::CTRL | Qt::Key_R);
+    connect(m_reset, &QAction::triggered, this, [this] { m_controller->reset(); });
+    m_resetView = new QAction(tr("Reset &view"), this);
+    m_resetView->setShortcut(Qt::Key_Home);
+    connect(m_resetView, &QAction::triggered, this, [this] {
+        for (Viewport* v : m_viewports) v->resetView();
+    });
+
+    struct Toggle {
+        QString text;
+        bool ViewOptions::*flag;
+        int family;
+    };
+    const std::vector<Toggle> toggles = {
+        {tr("Structural springs"), nullptr, 0}, {tr("Radius springs"), nullptr, 1},
+        {tr("Shear springs"), nullptr, 2},      {tr("Faces"), &ViewOptions::faces, -1},
+        {tr("Particles"), &ViewOptions::particles, -1}, {tr("Normals"), &ViewOptions::normals, -1},
+        {tr("Force vectors"), &ViewOptions::forces, -1}, {tr("Colour springs by strain"), &ViewOptions::strain, -1},
+        {tr("Collision box"), &ViewOptions::box, -1},
+    };
+    for (const Toggle& t : toggles) {
+        auto* a = new QAction(t.text, this);
+        a->setCheckable(true);
+        a->setChecked(t.flag ? m_options.*(t.flag) : m_options.springs[t.family]);
+        a->setObjectName(QStringLiteral("toggle_") + t.text);
+        const auto flag = t.flag;
+        const int family = t.family;
+        connect(a, &QAction::toggled, this, [this, flag, family](bool on) {
+            ViewOptions o = m_options;
+            if (flag) o.*flag = on;
+            else o.springs[family] = on;
+            setViewOptions(o);
+        });
+        m_displayToggles.push_back(a);
+    }
+
+    m_sideBySide = new QAction(tr("&Side by side..."), this);
+    connect(m_sideBySide, &QAction::triggered, this, &MainWindow::chooseSideBySide);
+    m_single = new QAction(tr("Single &view"), this);
+    connect(m_single, &QAction::triggered, this, &MainWindow::singleView);
+    m_help = new QAction(tr("Elastic Lab &help"), this);
+    m_help->setShortcut(QKeySequence::HelpContents);
+    connect(m_help, &QAction::triggered, this, &MainWindow::showHelp);
+    m_about = new QAction(tr("&About"), this);
+    connect(m_about, &QAction::triggered, this, [this] {
+        QMessageBox::about(this, tr("About Elastic Lab"),
+                           tr("Elastic Lab: the dynamics of two-layer elastic bodies, for teaching."));
+    });
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(m_exportCsv);
+    file->addAction(m_exportPlots);
+    file->addAction(m_screenshot);
+    file->addSeparator();
+    file->addAction(m_quit);
+
+    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    sim->addAction(m_runPause);
+    sim->addAction(m_step);
+    sim->addAction(m_reset);
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));  // dock toggles are added in createDocks()
+    for (QAction* a : m_displayToggles) m_viewMenu->addAction(a);
+    m_viewMenu->addAction(m_resetView);
+    m_viewMenu->addSeparator();
+
+    QMenu* compare = menuBar()->addMenu(tr("&Compare"));
+    compare->addAction(m_sideBySide);
+    compare->addAction(m_single);
+    compare->addSeparator();
+    for (const Preset& p : stabilityPresets())
+        compare->addAction(p.title, this, [this, p] { applyPreset(p); });
+
+    QMenu* presets = menuBar()->addMenu(tr("&Presets"));
+    for (const Preset& p : teachingPresets()) {
+        QAction* a = presets->addAction(p.title, this, [this, p] { applyPreset(p); });
+        a->setToolTip(p.description);
+    }
+    presets->setToolTipsVisible(true);
+
+    m_studiesMenu = menuBar()->addMenu(tr("S&tudies"));
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(m_help);
+    help->addAction(m_about);
+}
+
+void MainWindow::createCentral() {
+    auto* central = new QWidget(this);
+    auto* layout = new QVBoxLayout(central);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+
+    m_banner = new QFrame(central);
+    m_banner->setObjectName(QStringLiteral("failureBanner"));
+    m_banner->setStyleSheet(QStringLiteral("#failureBanner { background: #fbe3e1; border-bottom: 2px solid #c0392b; }"));
+    auto* bannerLayout = new QHBoxLayout(m_banner);
+    m_bannerText = new QLabel(m_banner);
+    m_bannerText->setWordWrap(true);
+    m_bannerText->setTextFormat(Qt::RichText);
+    bannerLayout->addWidget(m_bannerText, 1);
+    auto* smaller = new QPushButton(tr("Halve DT and reset"), m_banner);
+    connect(smaller, &QPushButton::clicked, this, [this] {
+        m_controller->setParameter(QStringLiteral("dt"), m_controller->parameters().get("dt") * 0.5);
+        m_controller->reset();
+    });
+    auto* implicit = new QPushButton(tr("Use implicit-euler and reset"), m_banner);
+    connect(implicit, &QPushButton::clicked, this, [this] {
+        m_controller->setIntegrator(QStringLiteral("implicit-euler"));
+        m_controller->reset();
+    });
+    auto* reset = new QPushButton(tr("Reset"), m_banner);
+    connect(reset, &QPushButton::clicked, this, [this] { m_controller->reset(); });
+    bannerLayout->addWidget(smaller);
+    bannerLayout->addWidget(implicit);
+    bannerLayout->addWidget(reset);
+    m_banner->hide();
+    layout->addWidget(m_banner);
+
+    m_viewRow = new QHBoxLayout;
+    m_viewRow->setSpacing(2);
+    layout->addLayout(m_viewRow, 1);
+    if (!Viewport::openGLAvailable()) {
+        auto* label = new QLabel(tr("The 3D view needs OpenGL 3.3, which this display does not offer.\n"
+                                    "Plots, parameters and exports still work."),
+                                 central);
+        label->setAlignment(Qt::AlignCenter);
+        m_noGl = label;
+        m_viewRow->addWidget(label);
+    } else {
+        rebuildViewports(1);
+    }
+    setCentralWidget(central);
+}
+
+void MainWindow::rebuildViewports(int count) {
+    if (m_noGl) return;
+    if (int(m_viewports.size()) == count) return;
+    Camera camera = m_viewports.empty() ? Camera{} : m_viewports.front()->camera();
+    const FramePtr frame = m_viewports.empty() ? FramePtr{} : m_viewports.front()->frame();
+    for (Viewport* v : m_viewports) delete v;
+    m_viewports.clear();
+    for (int i = 0; i < count; ++i) {
+        auto* v = new Viewport(centralWidget() ? centralWidget() : this);
+        v->setObjectName(QStringLiteral("viewport%1").arg(i));
+        v->setLane(i);
+        v->setOptions(m_options);
+        if (frame) v->showFrame(frame);
+        v->setCamera(camera);
+        m_viewRow->addWidget(v, 1);
+        connect(v, &Viewport::grabRequested, m_controller, &SimulationController::grabAlongRay);
+        connect(v, &Viewport::anchorMoved, m_controller, &SimulationController::moveAnchor);
+        connect(v, &Viewport::releaseRequested, m_controller, &SimulationController::release);
+        connect(m_controller, &SimulationController::grabbed, v, &Viewport::onGrabbed);
+        m_viewports.push_back(v);
+    }
+    // One camera for all: orbiting one view orbits the others.
+    for (Viewport* v : m_viewports)
+        connect(v, &Viewport::cameraChanged, this, [this, v](const Camera& c) {
+            for (Viewport* other : m_viewports)
+                if (other != v) other->setCamera(c);
+        });
+}
+
+void MainWindow::createDocks() {
+    m_sceneDock = new SceneDock(this);
+    m_parameterDock = new ParameterDock(this);
+    m_runDock = new RunDock(this);
+    m_plotDock = new PlotDock(this);
+    addDockWidget(Qt::LeftDockWidgetArea, m_runDock);
+    addDockWidget(Qt::LeftDockWidgetArea, m_sceneDock);
+    addDockWidget(Qt::LeftDockWidgetArea, m_parameterDock);
+    tabifyDockWidget(m_sceneDock, m_parameterDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_plotDock);
+    for (QDockWidget* d : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_parameterDock),
+                           static_cast<QDockWidget*>(m_runDock), static_cast<QDockWidget*>(m_plotDock)})
+        m_viewMenu->addAction(d->toggleViewAction());
+    resizeDocks({m_runDock, m_plotDock}, {290, 420}, Qt::Horizontal);
+}
+
+void MainWindow::connectController() {
+    SimulationController* c = m_controller;
+    connect(c, &SimulationController::frameArrived, this, &MainWindow::onFrame);
+    connect(c, &SimulationController::sceneChanged, this,
+            [this](const std::shared_ptr<const SceneData>& scene) { m_plotDock->setScene(scene->kind); });
+    connect(c, &SimulationController::historyReset, m_plotDock, &PlotDock::clear);
+    connect(c, &SimulationController::rowsAppended, this,
+            [this](int first, int count) { m_plotDock->appendRows(m_controller->history(), first, count); });
+    connect(c, &SimulationController::parameterRejected, this,
+            [this](const QString&, const QString& message) { status(message); });
+    connect(c, &SimulationController::sceneRejected, this, [this](const QString& message) {
+        status(tr("Cannot build that body: %1").arg(message));
+    });
+
+    connect(m_parameterDock, &ParameterDock::parameterEdited, c, &SimulationController::setParameter);
+    connect(m_parameterDock, &ParameterDock::parameterRejected, this,
+            [this](const QString&, const QString& message) { status(message); });
+    connect(m_sceneDock, &SceneDock::rebuildRequested, this, &MainWindow::rebuildFromSceneDock);
+    connect(m_sceneDock, &SceneDock::shapeRejected, this, [this](const QString&, const QString& m) { status(m); });
+
+    connect(m_runDock, &RunDock::integratorChosen, c, &SimulationController::setIntegrator);
+    connect(m_runDock, &RunDock::dtEdited, this, [c](double dt) { c->setParameter(QStringLiteral("dt"), dt); });
+    connect(m_runDock, &RunDock::runRequested, c, &SimulationController::run);
+    connect(m_runDock, &RunDock::pauseRequested, c, &SimulationController::pause);
+    connect(m_runDock, &RunDock::stepRequested, c, &SimulationController::step);
+    connect(m_runDock, &RunDock::resetRequested, c, &SimulationController::reset);
+    connect(m_runDock, &RunDock::speedChosen, c, &SimulationController::setSpeed);
+    connect(m_runDock, &RunDock::stepDoublingToggled, c, &SimulationController::setStepDoubling);
+    connect(m_runDock, &RunDock::message, this, &MainWindow::status);
+}
+
+void MainWindow::readSettings() {
+    resize(1500, 900);
+    if (!m_useSettings) return;
+    QSettings settings;
+    if (settings.contains(QStringLiteral("geometry"))) restoreGeometry(settings.value("geometry").toByteArray());
+    restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+}
+
+void MainWindow::writeSettings() {
+    if (!m_useSettings) return;
+    QSettings settings;
+    settings.setValue(QStringLiteral("geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("windowState"), saveState());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    writeSettings();
+    event->accept();
+}
+
+void MainWindow::setViewOptions(const ViewOptions& options) {
+    const bool forcesChanged = options.forces != m_options.forces;
+    m_options = options;
+    for (Viewport* v : m_viewports) v->setOptions(options);
+    if (forcesChanged) m_controller->setForcesWanted(options.forces);
+}
+
+void MainWindow::startScene(const simcore::ParameterSet& params, const QStringList& integrators) {
+    m_controller->setScene(params, integrators.isEmpty() ? QStringList{QStringLiteral("rk4")} : integrators);
+}
+
+void MainWindow::applyPreset(const Preset& preset) {
+    m_controller->setStartKick(preset.kickInner, preset.kickOuter);
+    startScene(preset.parameters(), preset.integrators);
+    status(preset.title + QStringLiteral(": ") + preset.description + tr(" Press Run (Space)."));
+}
+
+void MainWindow::rebuildFromSceneDock(const simcore::ParameterSet& shape) {
+    // Keep the values set so far that the chosen scene also has; the shape comes from the dock.
+    simcore::ParameterSet params = shape;
+    for (const auto& [key, value] : m_controller->parameters().explicitValues()) {
+        const simcore::ParamSpec* spec = simcore::findParam(key);
+        if (spec && !spec->isShape() && !params.isExplicit(key)) params.set(key, value);
+    }
+    if (shape.kind() != m_controller->sceneKind()) m_controller->setStartKick(0.0, 0.0);
+    m_controller->setScene(params);
+}
+
+void MainWindow::onFrame(const FramePtr& frame) {
+    if (!frame || frame->lanes.empty()) return;
+    rebuildViewports(int(frame->lanes.size()));
+    const bool multi = frame->lanes.size() > 1;
+    for (Viewport* v : m_viewports) {
+        const LaneFrame& lane = frame->lanes[std::size_t(std::min<int>(v->lane(), int(frame->lanes.size()) - 1))];
+        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(frame->parameters.get("dt"))
+                          : QString());
+        v->showFrame(frame);
+    }
+    m_runDock->showFrame(frame);
+    if (!m_paramsShown || !(m_shownParams == frame->parameters)) {
+        m_shownParams = frame->parameters;
+        m_paramsShown = true;
+        m_parameterDock->showParameters(frame->parameters);
+        m_sceneDock->showParameters(frame->parameters);
+        setWindowTitle(tr("Elastic Lab — %1").arg(toQString(simcore::sceneInfo(frame->parameters.kind()).name)));
+    }
+    m_runPause->setText(frame->running ? tr("&Pause") : tr("&Run"));
+    showFailure(frame);
+}
+
+void MainWindow::showFailure(const FramePtr& frame) {
+    const LaneFrame& lane = frame->lanes.front();
+    const bool failed = frame->lanes.size() == 1 && lane.failure.has_value();
+    if (failed == m_failureShown) return;
+    m_failureShown = failed;
+    if (!failed) {
+        m_banner->hide();
+        return;
+    }
+    const simcore::Failure& f = *lane.failure;
+    const double dt = frame->parameters.get("dt");
+    QString advice;
+    if (frame->explicitDtLimit > 0 && dt > 0.5 * frame->explicitDtLimit)
+        advice = tr("DT = %1 s is too large for this body with %2: explicit integrators need roughly DT below "
+                    "%3 s here. Try a smaller DT, or implicit-euler (stable at any DT).")
+                     .arg(dt).arg(lane.integrator).arg(frame->explicitDtLimit, 0, 'g', 2);
+    else
+        advice = tr("Try a smaller DT, a more stable integrator (rk4, or implicit-euler), softer springs or "
+                    "less pressure, then Reset.");
+    m_bannerText->setText(tr("<b>The simulation blew up</b> at t = %1 s (step %2): %3.<br>"
+                             "The run is paused and shows the last good state. %4")
+                              .arg(f.time, 0, 'f', 3)
+                              .arg(f.step)
+                              .arg(QString::fromStdString(f.reason).toHtmlEscaped(), advice.toHtmlEscaped()));
+    m_banner->show();
+}
+
+QString MainWindow::failureText() const { return m_banner->isVisible() ? m_bannerText->text() : QString(); }
+
+void MainWindow::status(const QString& text) { statusBar()->showMessage(text, 12000); }
+
+void MainWindow::exportCsv() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), QStringLiteral("elastic-lab.csv"),
+                                                      tr("CSV files (*.csv)"));
+    if (path.isEmpty()) return;
+    const QString error = writeCsv(path, m_controller->sceneKind(), m_controller->history());
+    if (!error.isEmpty()) QMessageBox::warning(this, tr("Export CSV"), error);
+    else status(tr("Wrote %1 rows to %2").arg(m_controller->history().size()).arg(path));
+}
+
+void MainWindow::exportPlots() {
+    QString filter;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export plots"), QStringLiteral("elastic-lab-plots.png"),
+                                                      tr("PNG image (*.png);;SVG drawing (*.svg);;PDF document (*.pdf)"),
+                                                      &filter);
+    if (path.isEmpty()) return;
+    const QString error = writePlots(path, m_plotDock->plots(), m_plotDock->specs());
+    if (!error.isEmpty()) QMessageBox::warning(this, tr("Export plots"), error);
+    else status(tr("Wrote %1").arg(path));
+}
+
+void MainWindow::saveViewportScreenshot() {
+    if (m_viewports.empty()) return;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save viewport screenshot"),
+                                                      QStringLiteral("elastic-lab-view.png"), tr("PNG image (*.png)"));
+    if (path.isEmpty()) return;
+    QImage image;
+    if (m_viewports.size() == 1) {
+        image = m_viewports.front()->grabFramebuffer();
+    } else {
+        image = centralWidget()->grab().toImage();
+    }
+    const QString error = writeImage(path, image);
+    if (!error.isEmpty()) QMessageBox::warning(this, tr("Save screenshot"), error);
+    else status(tr("Wrote %1").arg(path));
+}
+
+void MainWindow::showHelp() {
+    auto* help = new HelpDialog(this);
+    help->setAttribute(Qt::WA_DeleteOnClose);
+    help->show();
+}
+
+void MainWindow::chooseSideBySide() {
+    QStringList current = m_controller->integrators();
+    if (current.size() < 2) current = {current.value(0, QStringLiteral("euler")), QStringLiteral("midpoint"), QStringLiteral("rk4")};
+    CompareDialog dialog(current, m_controller->parameters().get("dt"), this);
+    if (dialog.exec() != QDialog::Accepted) return;
+    simcore::ParameterSet params = m_controller->parameters();
+    params.set("dt", dialog.dt());
+    startScene(params, dialog.integrators());
+}
+
+void MainWindow::singleView() {
+    startScene(m_controller->parameters(), {m_controller->integrators().value(0, QStringLiteral("rk4"))});
+}
+
+}  // namespace elui

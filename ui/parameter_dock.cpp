@@ -1,0 +1,167 @@
+#include "parameter_dock.h"
+
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+namespace elui {
+
+QString toQString(std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); }
+
+QString groupName(simcore::ParamGroup group) {
+    using G = simcore::ParamGroup;
+    switch (group) {
+        case G::Springs: return QObject::tr("Springs");
+        case G::Gas: return QObject::tr("Gas");
+        case G::Mass: return QObject::tr("Mass");
+        case G::Environment: return QObject::tr("Environment");
+        case G::Pointer: return QObject::tr("Mouse spring");
+        case G::Time: return QObject::tr("Time");
+        case G::Shape: return QObject::tr("Shape");
+        case G::Start: return QObject::tr("Start");
+    }
+    return {};
+}
+
+static QString formatValue(double v) { return QString::number(v, 'g', 10); }
+
+ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::ParamGroup>& groups,
+                             QWidget* parent)
+    : QWidget(parent), m_kind(kind) {
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    std::map<simcore::ParamGroup, QFormLayout*> forms;
+    for (const simcore::ParamSpec* spec : simcore::parametersFor(kind)) {
+        if (!groups.count(spec->group)) continue;
+        QFormLayout*& form = forms[spec->group];
+        if (!form) {
+            auto* box = new QGroupBox(groupName(spec->group), this);
+            form = new QFormLayout(box);
+            form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+            outer->addWidget(box);
+        }
+        const QString key = toQString(spec->key);
+        const QString unit = toQString(spec->unit);
+        auto* edit = new QLineEdit(this);
+        edit->setObjectName(QStringLiteral("param_") + key);
+        const QString tip = QStringLiteral("<b>%1</b>%2<br>%3<br>allowed: %4<br>default: %5")
+                                .arg(key, unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit),
+                                     toQString(spec->meaning).toHtmlEscaped(),
+                                     QString::fromStdString(spec->rangeText()),
+                                     formatValue(spec->defaultFor(kind)));
+        edit->setToolTip(tip);
+        edit->setProperty("tip", tip);
+        auto* row = new QWidget(this);
+        auto* h = new QHBoxLayout(row);
+        h->setContentsMargins(0, 0, 0, 0);
+        h->addWidget(edit, 1);
+        auto* unitLabel = new QLabel(unit, row);
+        unitLabel->setMinimumWidth(44);
+        h->addWidget(unitLabel);
+        auto* label = new QLabel(key, this);
+        label->setToolTip(tip);
+        form->addRow(label, row);
+        m_fields[key] = edit;
+        connect(edit, &QLineEdit::editingFinished, this, [this, key] { commit(key); });
+    }
+    outer->addStretch(1);
+    setValues(simcore::ParameterSet(kind));
+}
+
+QStringList ParameterForm::keys() const {
+    QStringList out;
+    for (const simcore::ParamSpec* spec : simcore::parametersFor(m_kind)) {
+        const QString key = toQString(spec->key);
+        if (m_fields.count(key)) out << key;
+    }
+    return out;
+}
+
+QLineEdit* ParameterForm::field(const QString& key) const {
+    auto it = m_fields.find(key);
+    return it == m_fields.end() ? nullptr : it->second;
+}
+
+QString ParameterForm::validate(const simcore::ParamSpec& spec, const QString& text, double* value) {
+    const std::string t = text.trimmed().toStdString();
+    const auto parsed = simcore::parseNumber(t);
+    if (!parsed)
+        return QStringLiteral("%1: '%2' is not a number; allowed %3")
+            .arg(toQString(spec.key), text, QString::fromStdString(spec.rangeText()));
+    if (auto error = simcore::validateValue(spec, *parsed)) return QString::fromStdString(*error);
+    if (value) *value = *parsed;
+    return {};
+}
+
+simcore::ParameterSet ParameterForm::values() const {
+    simcore::ParameterSet out(m_kind);
+    for (const auto& [key, edit] : m_fields) {
+        const simcore::ParamSpec* spec = simcore::findParam(key.toStdString());
+        double v = 0.0;
+        if (spec && validate(*spec, edit->text(), &v).isEmpty()) out.set(key.toStdString(), v);
+    }
+    return out;
+}
+
+void ParameterForm::setValues(const simcore::ParameterSet& params) {
+    m_updating = true;
+    for (auto& [key, edit] : m_fields) {
+        const double v = params.get(key.toStdString());
+        m_shown[key] = v;
+        if (!edit->hasFocus() || edit->text().isEmpty()) edit->setText(formatValue(v));
+        edit->setStyleSheet(QString());
+        edit->setToolTip(edit->property("tip").toString());
+    }
+    m_updating = false;
+}
+
+void ParameterForm::commit(const QString& key) {
+    if (m_updating) return;
+    QLineEdit* edit = field(key);
+    const simcore::ParamSpec* spec = simcore::findParam(key.toStdString());
+    if (!edit || !spec) return;
+    double v = 0.0;
+    const QString error = validate(*spec, edit->text(), &v);
+    if (!error.isEmpty()) {
+        edit->setStyleSheet(QStringLiteral("background: #ffd6d6"));
+        edit->setToolTip(error);
+        emit rejected(key, error);
+        return;
+    }
+    edit->setStyleSheet(QString());
+    edit->setToolTip(edit->property("tip").toString());
+    if (m_shown.count(key) && m_shown[key] == v) return;  // nothing changed
+    m_shown[key] = v;
+    emit edited(key, v);
+}
+
+ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), parent) {
+    setObjectName(QStringLiteral("ParametersDock"));
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    m_host = new QWidget(scroll);
+    m_layout = new QVBoxLayout(m_host);
+    m_layout->setContentsMargins(4, 4, 4, 4);
+    scroll->setWidget(m_host);
+    setWidget(scroll);
+}
+
+void ParameterDock::showParameters(const simcore::ParameterSet& params) {
+    if (!m_form || m_form->kind() != params.kind()) {
+        delete m_form;
+        using G = simcore::ParamGroup;
+        m_form = new ParameterForm(params.kind(), {G::Springs, G::Gas, G::Mass, G::Environment, G::Pointer,
+                                                   G::Time, G::Start},
+                                   m_host);
+        m_layout->addWidget(m_form);
+        connect(m_form, &ParameterForm::edited, this, &ParameterDock::parameterEdited);
+        connect(m_form, &ParameterForm::rejected, this, &ParameterDock::parameterRejected);
+    }
+    m_form->setValues(params);
+}
+
+}  // namespace elui

@@ -1,0 +1,74 @@
+#pragma once
+// ParameterForm and ParameterDock: fields generated from simcore::parameterTable().
+//
+// One field per key of the current scene: its unit, its range and meaning in the tooltip,
+// validated by the same table the CLI uses (simcore::validateValue). Widget -> model: a valid
+// edit emits edited(key, value); model -> widget: setValues() refreshes the fields under a
+// guard, so showing a value never echoes back as an edit.
+
+#include <map>
+#include <set>
+
+#include <QDockWidget>
+#include <QWidget>
+
+#include "params.h"
+
+class QLineEdit;
+class QVBoxLayout;
+
+namespace elui {
+
+class ParameterForm : public QWidget {
+    Q_OBJECT
+public:
+    // The keys of `kind` whose group is in `groups`, grouped under a heading per group.
+    ParameterForm(simcore::SceneKind kind, const std::set<simcore::ParamGroup>& groups,
+                  QWidget* parent = nullptr);
+
+    simcore::SceneKind kind() const { return m_kind; }
+    QStringList keys() const;
+    QLineEdit* field(const QString& key) const;
+    // The values shown, as a parameter set of this form's scene (only keys of this form).
+    simcore::ParameterSet values() const;
+    void setValues(const simcore::ParameterSet& params);
+    // Validates a text with the table; an error message, or empty when the text is valid.
+    static QString validate(const simcore::ParamSpec& spec, const QString& text, double* value = nullptr);
+
+signals:
+    void edited(const QString& key, double value);
+    void rejected(const QString& key, const QString& message);
+
+private:
+    void commit(const QString& key);
+
+    simcore::SceneKind m_kind;
+    std::map<QString, QLineEdit*> m_fields;
+    std::map<QString, double> m_shown;  // value last shown or accepted per key
+    bool m_updating = false;
+};
+
+class ParameterDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit ParameterDock(QWidget* parent = nullptr);
+    ParameterForm* form() const { return m_form; }
+
+public slots:
+    // Rebuilds the fields when the scene kind changes, then shows the values.
+    void showParameters(const simcore::ParameterSet& params);
+
+signals:
+    void parameterEdited(const QString& key, double value);
+    void parameterRejected(const QString& key, const QString& message);
+
+private:
+    QWidget* m_host = nullptr;
+    QVBoxLayout* m_layout = nullptr;
+    ParameterForm* m_form = nullptr;
+};
+
+QString groupName(simcore::ParamGroup group);
+QString toQString(std::string_view text);
+
+}  // namespace elui

@@ -1,0 +1,193 @@
+#include "plot_dock.h"
+
+#include <algorithm>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include "qcustomplot.h"
+
+namespace elui {
+
+PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
+    setObjectName(QStringLiteral("PlotsDock"));
+    auto* host = new QWidget(this);
+    auto* layout = new QVBoxLayout(host);
+    layout->setContentsMargins(4, 4, 4, 4);
+    auto* bar = new QHBoxLayout;
+    m_windowCombo = new QComboBox(host);
+    m_windowCombo->setObjectName(QStringLiteral("plotWindow"));
+    m_windowCombo->addItem(tr("Last 5 s"), 5.0);
+    m_windowCombo->addItem(tr("Last 10 s"), 10.0);
+    m_windowCombo->addItem(tr("Last 30 s"), 30.0);
+    m_windowCombo->addItem(tr("Full history"), 0.0);
+    m_windowCombo->setCurrentIndex(1);
+    m_autoscale = new QCheckBox(tr("Autoscale"), host);
+    m_autoscale->setChecked(true);
+    m_autoscale->setToolTip(tr("Fit the axes to the data; off while you zoom (wheel) and pan (drag)"));
+    bar->addWidget(new QLabel(tr("Show"), host));
+    bar->addWidget(m_windowCombo);
+    bar->addWidget(m_autoscale);
+    bar->addStretch(1);
+    layout->addLayout(bar);
+    m_plotLayout = new QVBoxLayout;
+    layout->addLayout(m_plotLayout, 1);
+    setWidget(host);
+
+    m_replotTimer = new QTimer(this);
+    m_replotTimer->setSingleShot(true);
+    m_replotTimer->setInterval(40);
+    connect(m_replotTimer, &QTimer::timeout, this, &PlotDock::replotNow);
+    connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
+            [this] { setWindow(m_windowCombo->currentData().toDouble()); });
+    connect(m_autoscale, &QCheckBox::toggled, this, [this](bool on) {
+        if (on) scheduleReplot();
+    });
+    setScene(simcore::SceneKind::Ring2d);
+}
+
+void PlotDock::setScene(simcore::SceneKind kind) {
+    if (m_created && kind == m_kind) {
+        clear();
+        return;
+    }
+    m_created = true;
+    m_kind = kind;
+    for (QCustomPlot* p : m_plots) delete p;
+    m_plots.clear();
+    m_specs = plotSpecs(kind);
+    for (const PlotSpec& spec : m_specs) {
+        auto* plot = new QCustomPlot(widget());
+        plot->setObjectName(QStringLiteral("plot_") + spec.id);
+        plot->setMinimumHeight(140);
+        plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+        plot->plotLayout()->insertRow(0);
+        auto* title = new QCPTextElement(plot, spec.title, QFont(font().family(), font().pointSize(), QFont::Bold));
+        plot->plotLayout()->addElement(0, 0, title);
+        plot->xAxis->setLabel(tr("t [s]"));
+        plot->yAxis->setLabel(spec.yLabel);
+        plot->legend->setVisible(true);
+        plot->legend->setBrush(QColor(255, 255, 255, 190));
+        QFont legendFont = font();
+        legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
+        plot->legend->setFont(legendFont);
+        // The legend in one row under the axes, not over the newest data.
+        plot->axisRect()->insetLayout()->take(plot->legend);
+        plot->plotLayout()->addElement(2, 0, plot->legend);
+        plot->plotLayout()->setRowStretchFactor(2, 0.001);
+        plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+        plot->legend->setBorderPen(Qt::NoPen);
+        plot->legend->setMargins(QMargins(4, 0, 4, 0));
+        for (const SeriesSpec& s : spec.series) {
+            QCPGraph* g = plot->addGraph();
+            g->setName(s.name);
+            g->setPen(QPen(s.color, s.name == tr("total") ? 2.0 : 1.4));
+        }
+        // Zooming or dragging by hand means the user wants to look: stop autoscaling.
+        connect(plot, &QCustomPlot::mouseWheel, this, [this] { m_autoscale->setChecked(false); });
+        connect(plot, &QCustomPlot::mousePress, this, [this] { m_autoscale->setChecked(false); });
+        m_plotLayout->addWidget(plot, 1);
+        m_plots.push_back(plot);
+    }
+    clear();
+}
+
+QStringList PlotDock::plotIds() const {
+    QStringList ids;
+    for (const PlotSpec& s : m_specs) ids << s.id;
+    return ids;
+}
+
+QStringList PlotDock::seriesNames(const QString& plotId) const {
+    QStringList names;
+    for (const PlotSpec& p : m_specs)
+        if (p.id == plotId)
+            for (const SeriesSpec& s : p.series) names << s.name;
+    return names;
+}
+
+int PlotDock::pointCount(const QString& plotId, int series) const {
+    for (std::size_t i = 0; i < m_specs.size(); ++i)
+        if (m_specs[i].id == plotId && series < m_plots[i]->graphCount())
+            return m_plots[i]->graph(series)->data()->size();
+    return -1;
+}
+
+double PlotDock::lastValue(const QString& plotId, int series) const {
+    for (std::size_t i = 0; i < m_specs.size(); ++i)
+        if (m_specs[i].id == plotId && series < m_plots[i]->graphCount()) {
+            auto graphData = m_plots[i]->graph(series)->data();
+            return graphData->isEmpty() ? qQNaN() : (graphData->constEnd() - 1)->value;
+        }
+    return qQNaN();
+}
+
+void PlotDock::setWindow(double seconds) {
+    m_window = seconds;
+    const int index = m_windowCombo->findData(seconds);
+    if (index >= 0 && index != m_windowCombo->currentIndex()) m_windowCombo->setCurrentIndex(index);
+    scheduleReplot();
+}
+
+void PlotDock::clear() {
+    for (QCustomPlot* p : m_plots)
+        for (int g = 0; g < p->graphCount(); ++g) p->graph(g)->data()->clear();
+    m_lastTime = 0.0;
+    scheduleReplot();
+}
+
+void PlotDock::appendRows(const std::vector<simcore::Diagnostics>& history, int first, int count) {
+    for (std::size_t i = 0; i < m_specs.size(); ++i) {
+        QCustomPlot* plot = m_plots[i];
+        const auto& series = m_specs[i].series;
+        for (std::size_t s = 0; s < series.size(); ++s) {
+            QVector<QCPGraphData> points;
+            points.reserve(count);
+            for (int r = first; r < first + count; ++r) {
+                const simcore::Diagnostics& d = history[std::size_t(r)];
+                points.append(QCPGraphData(d.time, series[s].value(d)));
+            }
+            plot->graph(int(s))->data()->add(points, true);
+        }
+    }
+    if (count > 0) m_lastTime = history[std::size_t(first + count - 1)].time;
+    scheduleReplot();
+}
+
+void PlotDock::scheduleReplot() {
+    m_dirty = true;
+    if (!m_replotTimer->isActive()) m_replotTimer->start();
+}
+
+void PlotDock::replotNow() {
+    if (!m_dirty) return;
+    m_dirty = false;
+    const bool autoscale = m_autoscale->isChecked();
+    for (QCustomPlot* plot : m_plots) {
+        if (autoscale) {
+            const double lo = m_window > 0 ? std::max(0.0, m_lastTime - m_window) : 0.0;
+            const double hi = std::max(m_lastTime, lo + (m_window > 0 ? m_window : 1.0));
+            plot->xAxis->setRange(lo, m_window > 0 ? lo + m_window : hi);
+            bool found = false;
+            QCPRange y;
+            for (int g = 0; g < plot->graphCount(); ++g) {
+                bool ok = false;
+                const QCPRange r = plot->graph(g)->getValueRange(ok, QCP::sdBoth, QCPRange(lo, hi));
+                if (!ok) continue;
+                y = found ? QCPRange(std::min(y.lower, r.lower), std::max(y.upper, r.upper)) : r;
+                found = true;
+            }
+            if (found) {
+                const double pad = std::max(1e-9, 0.06 * (y.upper - y.lower));
+                plot->yAxis->setRange(y.lower - pad, y.upper + pad);
+            }
+        }
+        plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+}  // namespace elui

@@ -1,0 +1,62 @@
+#pragma once
+// PlotDock: live QCustomPlot graphs of lane 0's time series (volume, pressure, energies).
+//
+// Rows arrive as they are recorded; the plots are marked dirty and replotted at most ~25
+// times a second (queued replot), whatever the step rate. Rolling window or full history;
+// autoscale, or zoom and pan by mouse (autoscale switches off when the user zooms).
+
+#include <vector>
+
+#include <QDockWidget>
+
+#include "plot_series.h"
+
+class QCustomPlot;
+class QComboBox;
+class QCheckBox;
+class QTimer;
+class QVBoxLayout;
+
+namespace elui {
+
+class PlotDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit PlotDock(QWidget* parent = nullptr);
+
+    void setScene(simcore::SceneKind kind);
+    simcore::SceneKind kind() const { return m_kind; }
+    // Plot ids shown for the current scene, in order ("volume", "pressure", "energy").
+    QStringList plotIds() const;
+    QStringList seriesNames(const QString& plotId) const;
+    int pointCount(const QString& plotId, int series) const;
+    double lastValue(const QString& plotId, int series) const;
+    std::vector<QCustomPlot*> plots() const { return m_plots; }
+    const std::vector<PlotSpec>& specs() const { return m_specs; }
+
+    // Seconds of history shown; 0 = all of it.
+    void setWindow(double seconds);
+    double window() const { return m_window; }
+
+public slots:
+    void clear();
+    void appendRows(const std::vector<simcore::Diagnostics>& history, int first, int count);
+    void replotNow();
+
+private:
+    void scheduleReplot();
+
+    simcore::SceneKind m_kind = simcore::SceneKind::Ring2d;
+    std::vector<PlotSpec> m_specs;
+    std::vector<QCustomPlot*> m_plots;
+    QVBoxLayout* m_plotLayout = nullptr;
+    QComboBox* m_windowCombo = nullptr;
+    QCheckBox* m_autoscale = nullptr;
+    QTimer* m_replotTimer = nullptr;
+    double m_window = 10.0;
+    double m_lastTime = 0.0;
+    bool m_dirty = false;
+    bool m_created = false;
+};
+
+}  // namespace elui

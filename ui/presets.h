@@ -1,0 +1,33 @@
+#pragma once
+// Presets: the thesis's scenes and experiments, one click each.
+
+#include <QList>
+#include <QPair>
+#include <QString>
+#include <QStringList>
+
+#include "params.h"
+
+namespace elui {
+
+struct Preset {
+    QString id;            // short name, also accepted by --preset
+    QString title;         // menu text
+    QString description;   // what to look at (status bar, help)
+    QString scene;         // scene name
+    QList<QPair<QString, double>> values;
+    QStringList integrators;       // one: normal view; two or three: side by side
+    double kickInner = 0.0;        // start velocity along x of inner / outer particles [m/s]
+    double kickOuter = 0.0;
+
+    // The parameter set the preset builds (throws nothing: preset values are valid).
+    simcore::ParameterSet parameters() const;
+};
+
+QList<Preset> teachingPresets();
+// The thesis's stability experiment (§7.2.2, figs. 41-43): euler, midpoint and rk4 side by
+// side on the ring at one DT each of 0.003, 0.03 and 0.3.
+QList<Preset> stabilityPresets();
+const Preset* findPreset(const QString& id);
+
+}  // namespace elui

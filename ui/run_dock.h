@@ -1,0 +1,53 @@
+#pragma once
+// RunDock: integrator, DT, run/pause, single step, reset, speed, and the readout
+// (simulated time, wall time, steps per second, error estimate, divergence side by side).
+
+#include <QDockWidget>
+
+#include "frame.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+
+namespace elui {
+
+class RunDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit RunDock(QWidget* parent = nullptr);
+    QPushButton* runButton() const { return m_run; }
+    QComboBox* integratorCombo() const { return m_integrator; }
+    QLabel* readout() const { return m_readout; }
+
+public slots:
+    void showFrame(const elui::FramePtr& frame);
+
+signals:
+    void integratorChosen(const QString& name);
+    void dtEdited(double dt);
+    void runRequested();
+    void pauseRequested();
+    void stepRequested();
+    void resetRequested();
+    void speedChosen(elui::Speed speed);
+    void stepDoublingToggled(bool on);
+    void message(const QString& text);
+
+private:
+    QComboBox* m_integrator = nullptr;
+    QLineEdit* m_dt = nullptr;
+    QPushButton* m_run = nullptr;
+    QPushButton* m_step = nullptr;
+    QPushButton* m_reset = nullptr;
+    QComboBox* m_speed = nullptr;
+    QCheckBox* m_doubling = nullptr;
+    QLabel* m_readout = nullptr;
+    bool m_running = false;
+    bool m_updating = false;
+    double m_shownDt = -1.0;
+};
+
+}  // namespace elui

@@ -1,0 +1,62 @@
+#include "scene_dock.h"
+
+#include <QComboBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "parameter_dock.h"
+#include "scenes.h"
+
+namespace elui {
+
+SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
+    setObjectName(QStringLiteral("SceneDock"));
+    auto* host = new QWidget(this);
+    auto* layout = new QVBoxLayout(host);
+    layout->setContentsMargins(4, 4, 4, 4);
+    m_scene = new QComboBox(host);
+    m_scene->setObjectName(QStringLiteral("sceneCombo"));
+    for (const simcore::SceneInfo& s : simcore::sceneTable())
+        m_scene->addItem(toQString(s.name), int(s.kind));
+    layout->addWidget(m_scene);
+    m_description = new QLabel(host);
+    m_description->setWordWrap(true);
+    layout->addWidget(m_description);
+    m_formHost = new QVBoxLayout;
+    layout->addLayout(m_formHost);
+    auto* rebuild = new QPushButton(tr("Rebuild body"), host);
+    rebuild->setObjectName(QStringLiteral("rebuildButton"));
+    rebuild->setToolTip(tr("Build the chosen scene with this shape and start again from rest"));
+    layout->addWidget(rebuild);
+    layout->addStretch(1);
+    setWidget(host);
+
+    connect(m_scene, &QComboBox::currentIndexChanged, this, [this] {
+        if (m_updating) return;
+        rebuildForm(simcore::SceneKind(m_scene->currentData().toInt()));
+    });
+    connect(rebuild, &QPushButton::clicked, this, [this] { emit rebuildRequested(requestedShape()); });
+    rebuildForm(simcore::SceneKind::Ring2d);
+}
+
+void SceneDock::rebuildForm(simcore::SceneKind kind) {
+    delete m_form;
+    m_form = new ParameterForm(kind, {simcore::ParamGroup::Shape}, widget());
+    m_formHost->addWidget(m_form);
+    connect(m_form, &ParameterForm::rejected, this, &SceneDock::shapeRejected);
+    m_description->setText(toQString(simcore::sceneInfo(kind).description));
+}
+
+simcore::ParameterSet SceneDock::requestedShape() const { return m_form->values(); }
+
+void SceneDock::showParameters(const simcore::ParameterSet& params) {
+    m_updating = true;
+    const int index = m_scene->findData(int(params.kind()));
+    if (index != m_scene->currentIndex()) m_scene->setCurrentIndex(index);
+    m_updating = false;
+    if (m_form->kind() != params.kind()) rebuildForm(params.kind());
+    m_form->setValues(params);
+}
+
+}  // namespace elui

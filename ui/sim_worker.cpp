@@ -1,0 +1,407 @@
+#include "sim_worker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <QTimer>
+
+namespace elui {
+
+double speedFactor(Speed speed) {
+    switch (speed) {
+        case Speed::RealTime: return 1.0;
+        case Speed::Quarter: return 0.25;
+        case Speed::Tenth: return 0.1;
+        case Speed::AsFastAsPossible: return 0.0;
+    }
+    return 1.0;
+}
+
+QString speedName(Speed speed) {
+    switch (speed) {
+        case Speed::RealTime: return QStringLiteral("Real time");
+        case Speed::Quarter: return QStringLiteral("1/4 speed");
+        case Speed::Tenth: return QStringLiteral("1/10 speed");
+        case Speed::AsFastAsPossible: return QStringLiteral("As fast as possible");
+    }
+    return {};
+}
+
+namespace {
+// Per tick, stepping stops after this much wall time so commands and frames keep flowing [s].
+constexpr double kTickBudget = 0.015;
+// Frames are published at most this often while running [s] (the screen cannot show more).
+constexpr double kPublishInterval = 1.0 / 90.0;
+
+Eigen::Vector3d toEigen(const QVector3D& v) { return {v.x(), v.y(), v.z()}; }
+}  // namespace
+
+SimWorker::SimWorker() {
+    m_timer = new QTimer(this);
+    m_timer->setTimerType(Qt::PreciseTimer);
+    connect(m_timer, &QTimer::timeout, this, &SimWorker::tick);
+    m_publishClock.start();
+    m_rateClock.start();
+}
+
+SimWorker::~SimWorker() = default;
+
+FrameBatch SimWorker::takeBatch() {
+    std::lock_guard lock(m_slotMutex);
+    FrameBatch out = std::move(m_slot);
+    m_slot = FrameBatch{};
+    m_slotPending = false;
+    return out;
+}
+
+void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList& integrators) {
+    std::vector<std::unique_ptr<simcore::Simulation>> lanes;
+    try {
+        for (const QString& name : integrators) {
+            auto sim = std::make_unique<simcore::Simulation>(params, name.toStdString());
+            sim->setIntegratorOptions([&] {
+                simcore::IntegratorOptions o = sim->integratorOptions();
+                o.stepDoubling = m_stepDoubling;
+                return o;
+            }());
+            lanes.push_back(std::move(sim));
+        }
+    } catch (const std::exception& e) {
+        emit sceneRejected(QString::fromStdString(e.what()));
+        return;
+    }
+    if (lanes.empty()) return;
+    m_lanes = std::move(lanes);
+    m_params = params;
+    afterRebuild();
+}
+
+void SimWorker::afterRebuild() {
+    auto scene = std::make_shared<SceneData>();
+    const simcore::Simulation& sim = *m_lanes.front();
+    scene->version = ++m_sceneVersion;
+    scene->kind = m_params.kind();
+    scene->topology = sim.topology();
+    scene->boxCentre = sim.boxCentre();
+    scene->boxHalfSize = sim.boxHalfSize();
+    const auto x = sim.positions();
+    const Eigen::Vector3d centre = x.rowwise().mean();
+    double radius = 0.0;
+    for (Eigen::Index i = 0; i < x.cols(); ++i) radius = std::max(radius, (x.col(i) - centre).norm());
+    scene->bodyRadius = std::max(radius, 0.5);
+    m_scene = std::move(scene);
+    updateDtLimit();
+    applyKick();
+    m_commonTime = 0.0;
+    m_until = -1.0;
+    m_wallBeforeStart = 0.0;
+    m_lastRowTime = -1.0;
+    m_failureReported = false;
+    m_rows.clear();
+    m_historyReset = true;
+    recordRow();
+    restartClock();
+    publish(true);
+}
+
+void SimWorker::applyKick() {
+    if (m_kickInner == 0.0 && m_kickOuter == 0.0) return;
+    for (auto& sim : m_lanes) {
+        const Eigen::Matrix3Xd x = sim->positions();
+        Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, x.cols());
+        const auto& layer = sim->topology().layer;
+        for (Eigen::Index i = 0; i < x.cols(); ++i) {
+            const auto l = layer[static_cast<std::size_t>(i)];
+            v(0, i) = l == simcore::Layer::Inner ? m_kickInner
+                      : l == simcore::Layer::Outer ? m_kickOuter : 0.0;
+        }
+        sim->setState(x, v);
+    }
+}
+
+void SimWorker::setIntegrator(const QString& name) {
+    if (m_lanes.empty()) return;
+    if (auto error = m_lanes.front()->setIntegrator(name.toStdString()))
+        emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
+    publish(true);
+}
+
+void SimWorker::setParameter(const QString& key, double value) {
+    if (m_lanes.empty()) return;
+    const std::string k = key.toStdString();
+    const simcore::ParamSpec* spec = simcore::findParam(k);
+    const bool rebuilds = spec && (spec->isShape() || spec->group == simcore::ParamGroup::Start);
+    for (std::size_t i = 0; i < m_lanes.size(); ++i) {
+        if (auto error = m_lanes[i]->setParameter(k, value)) {
+            if (i == 0) {
+                emit parameterRejected(key, QString::fromStdString(*error));
+                publish(true);
+                return;
+            }
+        }
+    }
+    m_params = m_lanes.front()->parameters();
+    updateDtLimit();
+    if (rebuilds) {
+        afterRebuild();
+        return;
+    }
+    publish(true);
+}
+
+void SimWorker::setSpeed(int speed) {
+    m_speed = static_cast<Speed>(std::clamp(speed, 0, 3));
+    restartClock();
+    if (m_running) m_timer->start(m_speed == Speed::AsFastAsPossible ? 0 : 4);
+    publish(true);
+}
+
+void SimWorker::setStepDoubling(bool on) {
+    m_stepDoubling = on;
+    for (auto& sim : m_lanes) {
+        simcore::IntegratorOptions o = sim->integratorOptions();
+        o.stepDoubling = on;
+        sim->setIntegratorOptions(o);
+    }
+    publish(true);
+}
+
+void SimWorker::setForcesWanted(bool on) {
+    m_forcesWanted = on;
+    publish(true);
+}
+
+void SimWorker::setStartKick(double innerVx, double outerVx) {
+    m_kickInner = innerVx;
+    m_kickOuter = outerVx;
+}
+
+void SimWorker::run() {
+    if (m_lanes.empty() || allFailed()) return;
+    m_running = true;
+    m_until = -1.0;
+    restartClock();
+    m_timer->start(m_speed == Speed::AsFastAsPossible ? 0 : 4);
+    publish(true);
+}
+
+void SimWorker::runUntil(double simulatedTime) {
+    if (m_lanes.empty()) return;
+    m_running = true;
+    m_until = simulatedTime;
+    restartClock();
+    m_timer->start(0);
+    publish(true);
+}
+
+void SimWorker::pause() {
+    if (m_running) m_wallBeforeStart += m_clock.nsecsElapsed() * 1e-9;
+    m_running = false;
+    m_until = -1.0;
+    m_timer->stop();
+    publish(true);
+}
+
+void SimWorker::stepOnce() {
+    if (m_running) pause();
+    if (m_lanes.empty()) return;
+    stepAll();
+    publish(true);
+}
+
+void SimWorker::reset() {
+    for (auto& sim : m_lanes) sim->reset();
+    if (m_lanes.empty()) return;
+    applyKick();
+    m_commonTime = 0.0;
+    m_wallBeforeStart = 0.0;
+    m_lastRowTime = -1.0;
+    m_failureReported = false;
+    m_rows.clear();
+    m_historyReset = true;
+    recordRow();
+    restartClock();
+    publish(true);
+}
+
+void SimWorker::grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance) {
+    if (m_lanes.empty()) return;
+    const Eigen::Vector3d o = toEigen(origin), d = toEigen(direction).normalized();
+    const int particle = m_lanes.front()->pickAlongRay(o, d, maxDistance);
+    if (particle < 0) return;
+    const Eigen::Vector3d at = m_lanes.front()->positions().col(particle);
+    for (auto& sim : m_lanes) sim->grab(particle, at);
+    emit grabbed(particle, QVector3D(float(at.x()), float(at.y()), float(at.z())));
+    publish(true);
+}
+
+void SimWorker::moveAnchor(const QVector3D& anchor) {
+    for (auto& sim : m_lanes) sim->moveAnchor(toEigen(anchor));
+    if (!m_running) publish(true);
+}
+
+void SimWorker::release() {
+    for (auto& sim : m_lanes) sim->release();
+    publish(true);
+}
+
+void SimWorker::shutdown() {
+    m_running = false;
+    m_timer->stop();
+}
+
+void SimWorker::restartClock() {
+    m_clock.start();
+    m_clockSimStart = m_commonTime;
+    m_fallingBehind = false;
+}
+
+void SimWorker::updateDtLimit() {
+    const double rate = m_lanes.front()->estimatedFastestRate();
+    m_dtLimit = rate > 0.0 ? simcore::kExplicitStabilityLimit / rate : 0.0;
+}
+
+bool SimWorker::allFailed() const {
+    return std::all_of(m_lanes.begin(), m_lanes.end(), [](const auto& s) { return s->failed(); });
+}
+
+bool SimWorker::stepAll() {
+    if (allFailed()) return false;
+    if (m_lanes.size() == 1) {
+        simcore::Simulation& sim = *m_lanes.front();
+        const double until = m_until >= 0.0 ? m_until : std::numeric_limits<double>::infinity();
+        sim.step(until);
+        m_commonTime = sim.time();
+    } else {
+        // Side by side: every live lane reaches the same time after each common DT.
+        double target = m_commonTime + m_params.get("dt");
+        if (m_until >= 0.0) target = std::min(target, m_until);
+        for (auto& sim : m_lanes)
+            if (!sim->failed()) sim->advanceTo(target);
+        m_commonTime = target;
+    }
+    ++m_rateSteps;
+    recordRow();
+    return true;
+}
+
+void SimWorker::recordRow() {
+    const simcore::Simulation& sim = *m_lanes.front();
+    if (sim.failed()) return;
+    const double t = sim.time();
+    if (m_lastRowTime >= 0.0 && t - m_lastRowTime < kRowInterval * (1.0 - 1e-9)) return;
+    m_lastRowTime = t;
+    m_rows.push_back(sim.diagnostics());
+}
+
+void SimWorker::tick() {
+    if (!m_running || m_lanes.empty()) return;
+    QElapsedTimer budget;
+    budget.start();
+    const bool fast = m_speed == Speed::AsFastAsPossible || m_until >= 0.0;
+    // Where the honest clock says simulated time should be now.
+    const double target =
+        fast ? std::numeric_limits<double>::infinity()
+             : m_clockSimStart + m_clock.nsecsElapsed() * 1e-9 * speedFactor(m_speed);
+    bool outOfBudget = false;
+    while (m_commonTime < target) {
+        if (m_until >= 0.0 && m_commonTime >= m_until - 1e-12) break;
+        if (!stepAll()) break;
+        if (budget.nsecsElapsed() * 1e-9 > kTickBudget) {
+            outOfBudget = true;
+            break;
+        }
+        if (m_lanes.size() == 1 ? m_lanes.front()->failed() : allFailed()) break;
+    }
+    if (!fast) {
+        // Could not keep up: say so and restart the clock here instead of piling up debt.
+        m_fallingBehind = outOfBudget && m_commonTime < target;
+        if (m_fallingBehind) {
+            m_wallBeforeStart += m_clock.nsecsElapsed() * 1e-9;
+            m_clock.start();
+            m_clockSimStart = m_commonTime;
+        }
+    }
+    const double rateWindow = m_rateClock.nsecsElapsed() * 1e-9;
+    if (rateWindow >= 0.5) {
+        m_stepsPerSecond = m_rateSteps / rateWindow;
+        m_rateSteps = 0;
+        m_rateClock.start();
+    }
+
+    const bool laneZeroFailed = m_lanes.front()->failed();
+    if ((m_lanes.size() == 1 && laneZeroFailed) || allFailed()) {
+        pause();
+        if (!m_failureReported) {
+            m_failureReported = true;
+            const auto& f = *m_lanes.front()->failure();
+            emit runFailed(QString::fromStdString(f.reason));
+        }
+        return;
+    }
+    if (m_until >= 0.0 && m_commonTime >= m_until - 1e-12) {
+        const double reached = m_commonTime;
+        pause();
+        emit reachedTime(reached);
+        return;
+    }
+    publish(false);
+}
+
+void SimWorker::publish(bool force) {
+    if (!force && m_publishClock.nsecsElapsed() * 1e-9 < kPublishInterval) return;
+    m_publishClock.start();
+    if (m_lanes.empty()) return;
+
+    auto frame = std::make_shared<Frame>();
+    frame->scene = m_scene;
+    frame->parameters = m_params;
+    frame->running = m_running;
+    frame->speed = m_speed;
+    frame->wallSeconds = m_wallBeforeStart + (m_running ? m_clock.nsecsElapsed() * 1e-9 : 0.0);
+    frame->stepsPerSecond = m_running ? m_stepsPerSecond : 0.0;
+    frame->fallingBehind = m_fallingBehind;
+    frame->explicitDtLimit = m_dtLimit;
+    frame->serial = ++m_serial;
+    const auto x0 = m_lanes.front()->positions();
+    for (const auto& sim : m_lanes) {
+        LaneFrame lane;
+        lane.integrator = QString::fromUtf8(sim->integrator().name().data(),
+                                            qsizetype(sim->integrator().name().size()));
+        const auto x = sim->positions();
+        lane.positions.resize(std::size_t(x.size()));
+        for (Eigen::Index k = 0; k < x.size(); ++k) lane.positions[std::size_t(k)] = float(x.data()[k]);
+        if (m_forcesWanted) {
+            // A private copy of the force model: the simulation's own counters stay untouched.
+            simcore::ForceModel model = sim->forces();
+            model.setPool(nullptr);
+            simcore::ForceExtras extras;
+            std::vector<double> f(std::size_t(x.size()));
+            model.evaluate(x.data(), sim->velocities().data(), f.data(), extras);
+            lane.forces.assign(f.begin(), f.end());
+        }
+        lane.diagnostics = sim->diagnostics();
+        lane.failure = sim->failure();
+        lane.pointer = sim->pointer();
+        lane.divergence = std::sqrt((x - x0).colwise().squaredNorm().mean());
+        frame->lanes.push_back(std::move(lane));
+    }
+
+    std::lock_guard lock(m_slotMutex);
+    m_slot.frame = std::move(frame);
+    if (m_historyReset) {
+        // Rows not yet taken from before the reset belong to the old history: drop them.
+        m_slot.rows.clear();
+        m_slot.historyReset = true;
+        m_historyReset = false;
+    }
+    m_slot.rows.insert(m_slot.rows.end(), m_rows.begin(), m_rows.end());
+    m_rows.clear();
+    if (!m_slotPending) {
+        m_slotPending = true;
+        emit frameReady();
+    }
+}
+
+}  // namespace elui

@@ -1,0 +1,120 @@
+#pragma once
+// SimWorker: owns the simulations and steps them on its own thread (see simulation_controller.h).
+//
+// Every slot runs on the worker thread between two steps, so a command (parameter edit,
+// grab, reset, ...) can never land in the middle of a step. Stepping is driven by a timer:
+// each tick advances simulated time to where the clock says it should be (real time, a
+// fraction of it, or as far as a time budget allows), then publishes one frame.
+//
+// Lanes: one simulation per integrator. Side by side, every lane starts from the same
+// state, gets the same parameter edits and the same mouse input, and is advanced to the
+// same simulated time after every step of the common DT.
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QStringList>
+#include <QVector3D>
+
+#include "frame.h"
+
+class QTimer;
+
+namespace elui {
+
+class SimWorker : public QObject {
+    Q_OBJECT
+public:
+    SimWorker();
+    ~SimWorker() override;
+
+    // Thread-safe: the newest frame and the rows recorded since the last take.
+    FrameBatch takeBatch();
+
+    // Smallest simulated interval between two recorded time-series rows [s].
+    static constexpr double kRowInterval = 1e-3;
+
+public slots:
+    // Builds the lanes. An impossible scene keeps the old one and reports sceneRejected.
+    void setScene(const simcore::ParameterSet& params, const QStringList& integrators);
+    // Changes lane 0's integrator in place (single mode: the run continues from here).
+    void setIntegrator(const QString& name);
+    void setParameter(const QString& key, double value);
+    void setSpeed(int speed);
+    void setStepDoubling(bool on);
+    void setForcesWanted(bool on);
+    // Velocity given to every inner (+) and outer (-) particle along x at each start [m/s].
+    void setStartKick(double innerVx, double outerVx);
+
+    void run();
+    void runUntil(double simulatedTime);  // runs as fast as possible, pauses at that time
+    void pause();
+    void stepOnce();
+    void reset();
+
+    // Grabs the outer particle nearest the ray (lane 0 picks, every lane grabs the same one).
+    void grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    void moveAnchor(const QVector3D& anchor);
+    void release();
+
+    void shutdown();
+
+signals:
+    void frameReady();                    // a frame waits in the slot (emitted once per take)
+    void grabbed(int particle, const QVector3D& position);
+    void parameterRejected(const QString& key, const QString& message);
+    void sceneRejected(const QString& message);
+    void runFailed(const QString& reason);
+    void reachedTime(double simulatedTime);
+
+private:
+    void tick();
+    bool stepAll();                       // one common DT for every lane; false: nothing ran
+    void restartClock();
+    void applyKick();
+    void afterRebuild();
+    void recordRow();
+    void publish(bool force);
+    bool allFailed() const;
+    void updateDtLimit();
+
+    std::vector<std::unique_ptr<simcore::Simulation>> m_lanes;
+    std::shared_ptr<const SceneData> m_scene;
+    quint64 m_sceneVersion = 0;
+    simcore::ParameterSet m_params;
+    QTimer* m_timer = nullptr;
+
+    bool m_running = false;
+    Speed m_speed = Speed::RealTime;
+    double m_until = -1.0;                // runUntil target, < 0: none
+    bool m_forcesWanted = false;
+    bool m_stepDoubling = false;
+    double m_kickInner = 0.0, m_kickOuter = 0.0;
+    double m_dtLimit = 0.0;               // estimated explicit stability limit on DT [s]
+    double m_commonTime = 0.0;            // the time every live lane has reached [s]
+
+    // Clock: simulated time at the last (re)start, and wall time since then.
+    QElapsedTimer m_clock;
+    double m_clockSimStart = 0.0;
+    double m_wallBeforeStart = 0.0;       // wall time run before the last start [s]
+    bool m_fallingBehind = false;
+    QElapsedTimer m_rateClock;
+    long m_rateSteps = 0;
+    double m_stepsPerSecond = 0.0;
+    QElapsedTimer m_publishClock;
+    double m_lastRowTime = -1.0;
+    bool m_failureReported = false;
+
+    std::vector<simcore::Diagnostics> m_rows;  // recorded since the last publish (worker only)
+    bool m_historyReset = true;
+    quint64 m_serial = 0;
+
+    std::mutex m_slotMutex;               // guards the three fields below
+    FrameBatch m_slot;
+    bool m_slotPending = false;
+};
+
+}  // namespace elui

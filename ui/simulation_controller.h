@@ -1,0 +1,99 @@
+#pragma once
+// SimulationController: the GUI's handle on the simulation thread.
+//
+// Commands go to the worker as queued signals (applied between steps); frames come back
+// through a one-frame slot — the newest wins, and while the GUI is busy the worker simply
+// overwrites the slot, so frames are skipped instead of queued. The time-series rows of
+// every recorded step are kept (history) for the plots and CSV export.
+
+#include <QObject>
+#include <QStringList>
+#include <QThread>
+#include <QVector3D>
+
+#include "frame.h"
+
+namespace elui {
+
+class SimWorker;
+
+class SimulationController : public QObject {
+    Q_OBJECT
+public:
+    explicit SimulationController(QObject* parent = nullptr);
+    ~SimulationController() override;  // stops the worker and joins its thread
+
+    // The newest frame taken (nullptr before the first).
+    const FramePtr& latest() const { return m_latest; }
+    // Lane 0's recorded rows since the last reset (every step, at most one per kRowInterval).
+    const std::vector<simcore::Diagnostics>& history() const { return m_history; }
+    simcore::SceneKind sceneKind() const { return m_params.kind(); }
+    const simcore::ParameterSet& parameters() const { return m_params; }
+    QStringList integrators() const { return m_integrators; }
+    bool running() const { return m_latest && m_latest->running; }
+    QThread* workerThread() { return &m_thread; }
+    SimWorker* worker() const { return m_worker; }
+
+    // --- commands (all asynchronous) ---
+    void setScene(const simcore::ParameterSet& params, const QStringList& integrators);
+    void setScene(const simcore::ParameterSet& params);  // keeps the integrators
+    void setIntegrator(const QString& name);             // lane 0 only, keeps the run
+    void setParameter(const QString& key, double value);
+    void setSpeed(Speed speed);
+    void setStepDoubling(bool on);
+    void setForcesWanted(bool on);
+    void setStartKick(double innerVx, double outerVx);
+    void run();
+    void runUntil(double simulatedTime);
+    void pause();
+    void step();
+    void reset();
+    void grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    void moveAnchor(const QVector3D& anchor);
+    void release();
+
+signals:
+    // To the worker (queued).
+    void requestScene(const simcore::ParameterSet& params, const QStringList& integrators);
+    void requestIntegrator(const QString& name);
+    void requestParameter(const QString& key, double value);
+    void requestSpeed(int speed);
+    void requestStepDoubling(bool on);
+    void requestForces(bool on);
+    void requestKick(double innerVx, double outerVx);
+    void requestRun();
+    void requestRunUntil(double t);
+    void requestPause();
+    void requestStep();
+    void requestReset();
+    void requestGrab(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    void requestMove(const QVector3D& anchor);
+    void requestRelease();
+
+    // To the GUI.
+    void frameArrived(const elui::FramePtr& frame);
+    void historyReset();
+    void rowsAppended(int first, int count);
+    void sceneChanged(const std::shared_ptr<const elui::SceneData>& scene);
+    void grabbed(int particle, const QVector3D& position);
+    void parameterRejected(const QString& key, const QString& message);
+    void sceneRejected(const QString& message);
+    void runFailed(const QString& reason);
+    void reachedTime(double simulatedTime);
+
+private:
+    void takeFrame();
+
+    QThread m_thread;
+    SimWorker* m_worker = nullptr;
+    FramePtr m_latest;
+    std::vector<simcore::Diagnostics> m_history;
+    simcore::ParameterSet m_params;
+    QStringList m_integrators{QStringLiteral("rk4")};
+    quint64 m_sceneVersion = 0;
+};
+
+// The history is capped: beyond this many rows every other old row is dropped.
+inline constexpr std::size_t kMaxHistoryRows = 2'000'000;
+
+}  // namespace elui

@@ -1,0 +1,613 @@
+#include "viewport.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QGuiApplication>
+#include <QMouseEvent>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
+#include <QPainter>
+#include <QWheelEvent>
+
+static void initElasticLabResources() { Q_INIT_RESOURCE(elastic_lab); }
+
+namespace elui {
+
+namespace {
+
+const QVector4D kFamilyColor[3] = {
+    {0.12f, 0.14f, 0.22f, 1.0f},  // structural: near black
+    {0.10f, 0.55f, 0.25f, 1.0f},  // radius: green
+    {0.55f, 0.25f, 0.70f, 1.0f},  // shear: purple
+};
+const QVector4D kInnerFace{0.30f, 0.50f, 0.95f, 1.0f};
+const QVector4D kOuterFace{0.98f, 0.60f, 0.20f, 0.30f};
+const QVector4D kInnerFill{0.55f, 0.70f, 1.00f, 0.85f};
+const QVector4D kOuterFill{1.00f, 0.75f, 0.45f, 0.75f};
+const QVector4D kBoxColor{0.45f, 0.47f, 0.52f, 1.0f};
+const QVector4D kFloorColor{0.80f, 0.82f, 0.86f, 1.0f};
+const QVector4D kForceColor{0.85f, 0.10f, 0.10f, 1.0f};
+const QVector4D kNormalColor{0.10f, 0.55f, 0.60f, 1.0f};
+const QVector4D kMouseColor{0.95f, 0.70f, 0.00f, 1.0f};
+
+std::vector<GLuint> loopFan(const simcore::Surface& surface) {
+    // The polygon's vertices in edge order, as a triangle fan around the first one.
+    std::vector<GLuint> loop;
+    for (const auto& e : surface.edges) loop.push_back(GLuint(e[0]));
+    std::vector<GLuint> fan;
+    for (std::size_t i = 1; i + 1 < loop.size(); ++i) fan.insert(fan.end(), {loop[0], loop[i], loop[i + 1]});
+    return fan;
+}
+
+}  // namespace
+
+Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
+    initElasticLabResources();
+    setMinimumSize(240, 200);
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(false);
+}
+
+Viewport::~Viewport() {
+    makeCurrent();
+    cleanup();
+    doneCurrent();
+}
+
+bool Viewport::openGLAvailable() {
+    static int cached = -1;
+    if (cached >= 0) return cached == 1;
+    cached = 0;
+    const QString platform = QGuiApplication::platformName();
+    if (platform == QLatin1String("offscreen") || platform == QLatin1String("minimal")) return false;
+    QOpenGLContext context;
+    context.setFormat(QSurfaceFormat::defaultFormat());
+    if (!context.create()) return false;
+    QOffscreenSurface surface;
+    surface.setFormat(context.format());
+    surface.create();
+    if (!context.makeCurrent(&surface)) return false;
+    const auto version = context.format().version();
+    cached = version >= qMakePair(3, 3) ? 1 : 0;
+    context.doneCurrent();
+    return cached == 1;
+}
+
+void Viewport::setOptions(const ViewOptions& options) {
+    m_options = options;
+    update();
+}
+
+void Viewport::setCamera(const Camera& camera) {
+    if (m_camera == camera) return;
+    m_camera = camera;
+    update();
+}
+
+void Viewport::resetView() {
+    m_camera.resetView();
+    emit cameraChanged(m_camera);
+    update();
+}
+
+void Viewport::showFrame(const FramePtr& frame) {
+    if (!frame || frame->lanes.empty()) return;
+    const bool newScene = !m_frame || m_frame->scene != frame->scene;
+    if (newScene) {
+        const SceneData& s = *frame->scene;
+        const bool sameKind = m_frame && m_frame->scene->kind == s.kind &&
+                              std::abs(m_frame->scene->bodyRadius - s.bodyRadius) < 0.1 * s.bodyRadius;
+        m_camera.setMode2d(s.topology.dimension < 3);
+        if (!sameKind) {
+            const Eigen::Vector3d c = s.kind == simcore::SceneKind::Spring1d ? s.boxCentre : s.boxCentre;
+            m_camera.fit(QVector3D(float(c.x()), float(c.y()), float(c.z())), float(s.bodyRadius),
+                         float(s.boxHalfSize));
+        }
+    }
+    m_frame = frame;
+    update();
+}
+
+void Viewport::initializeGL() {
+    initializeOpenGLFunctions();
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::cleanup, Qt::UniqueConnection);
+
+    auto build = [](std::initializer_list<std::pair<QOpenGLShader::ShaderType, const char*>> stages) {
+        auto program = std::make_unique<QOpenGLShaderProgram>();
+        for (const auto& [type, file] : stages)
+            if (!program->addShaderFromSourceFile(type, QString::fromLatin1(file)))
+                qWarning("shader %s: %s", file, qPrintable(program->log()));
+        if (!program->link()) qWarning("link: %s", qPrintable(program->log()));
+        return program;
+    };
+    using S = QOpenGLShader;
+    m_lines = build({{S::Vertex, ":/shaders/lines.vert"}, {S::Geometry, ":/shaders/lines.geom"},
+                     {S::Fragment, ":/shaders/color.frag"}});
+    m_normals = build({{S::Vertex, ":/shaders/lines.vert"}, {S::Geometry, ":/shaders/normals.geom"},
+                       {S::Fragment, ":/shaders/color.frag"}});
+    m_surface = build({{S::Vertex, ":/shaders/lines.vert"}, {S::Fragment, ":/shaders/surface.frag"}});
+    m_points = build({{S::Vertex, ":/shaders/points.vert"}, {S::Fragment, ":/shaders/points.frag"}});
+
+    m_vao.create();
+    m_positions.create();
+    m_positions.setUsagePattern(QOpenGLBuffer::StreamDraw);
+    m_layers.create();
+    m_scratchVao.create();
+    m_scratch.create();
+    m_scratch.setUsagePattern(QOpenGLBuffer::StreamDraw);
+    for (auto& s : m_springs) s.buffer.create();
+    for (Elements* e : {&m_innerFaces, &m_outerFaces, &m_fill, &m_innerFan, &m_outerFan}) e->buffer.create();
+    glGenBuffers(3, m_restBuffers.data());
+    glGenTextures(3, m_restTextures.data());
+
+    m_scratchVao.bind();
+    m_scratch.bind();
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    m_scratchVao.release();
+
+    m_uploadedScene.reset();  // a new context needs everything again
+    m_glReady = true;
+}
+
+void Viewport::cleanup() {
+    if (!m_glReady) return;
+    makeCurrent();
+    m_lines.reset();
+    m_normals.reset();
+    m_surface.reset();
+    m_points.reset();
+    m_vao.destroy();
+    m_scratchVao.destroy();
+    m_positions.destroy();
+    m_layers.destroy();
+    m_scratch.destroy();
+    for (auto& s : m_springs) s.buffer.destroy();
+    for (Elements* e : {&m_innerFaces, &m_outerFaces, &m_fill, &m_innerFan, &m_outerFan}) e->buffer.destroy();
+    glDeleteTextures(3, m_restTextures.data());
+    glDeleteBuffers(3, m_restBuffers.data());
+    m_uploadedScene.reset();
+    m_glReady = false;
+    doneCurrent();
+}
+
+void Viewport::resizeGL(int, int) {}
+
+void Viewport::uploadScene() {
+    const SceneData& scene = *m_frame->scene;
+    const simcore::Topology& topo = scene.topology;
+    m_particleCount = topo.particleCount();
+
+    m_vao.bind();
+    m_positions.bind();
+    m_positions.allocate(int(sizeof(float)) * 3 * m_particleCount);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    std::vector<float> layer(static_cast<std::size_t>(m_particleCount));
+    for (int i = 0; i < m_particleCount; ++i) layer[std::size_t(i)] = float(topo.layer[std::size_t(i)]);
+    m_layers.bind();
+    m_layers.allocate(layer.data(), int(layer.size() * sizeof(float)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+
+    auto upload = [](Elements& e, const std::vector<GLuint>& indices) {
+        e.buffer.bind();
+        e.buffer.allocate(indices.data(), int(indices.size() * sizeof(GLuint)));
+        e.count = int(indices.size());
+    };
+    for (int f = 0; f < 3; ++f) {
+        const simcore::SpringSet& set = topo.springs[std::size_t(f)];
+        std::vector<GLuint> idx;
+        std::vector<float> rest;
+        for (std::size_t s = 0; s < set.size(); ++s) {
+            idx.push_back(GLuint(set.a[s]));
+            idx.push_back(GLuint(set.b[s]));
+            rest.push_back(float(set.rest[s]));
+        }
+        upload(m_springs[std::size_t(f)], idx);
+        if (rest.empty()) rest.push_back(1.0f);
+        glBindBuffer(GL_TEXTURE_BUFFER, m_restBuffers[std::size_t(f)]);
+        glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(rest.size() * sizeof(float)), rest.data(), GL_STATIC_DRAW);
+        glBindTexture(GL_TEXTURE_BUFFER, m_restTextures[std::size_t(f)]);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32F, m_restBuffers[std::size_t(f)]);
+    }
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+
+    auto triangles = [](const std::vector<std::array<int, 3>>& tris) {
+        std::vector<GLuint> idx;
+        for (const auto& t : tris) idx.insert(idx.end(), {GLuint(t[0]), GLuint(t[1]), GLuint(t[2])});
+        return idx;
+    };
+    upload(m_innerFaces, {});
+    upload(m_outerFaces, {});
+    upload(m_innerFan, {});
+    upload(m_outerFan, {});
+    for (const simcore::Surface& s : topo.surfaces) {
+        const bool inner = s.layer == simcore::Layer::Inner;
+        upload(inner ? m_innerFaces : m_outerFaces, triangles(s.triangles));
+        if (!s.edges.empty()) upload(inner ? m_innerFan : m_outerFan, loopFan(s));
+    }
+    upload(m_fill, triangles(topo.fillTriangles));
+    m_vao.release();
+    m_uploadedScene = m_frame->scene;
+}
+
+void Viewport::uploadPositions(const LaneFrame& lane) {
+    m_positions.bind();
+    m_positions.write(0, lane.positions.data(), int(lane.positions.size() * sizeof(float)));
+}
+
+void Viewport::drawElementsLines(const Elements& e, const QVector4D& color, float width, int family) {
+    if (e.count == 0) return;
+    m_lines->bind();
+    m_lines->setUniformValue("uColor", color);
+    m_lines->setUniformValue("uWidth", width * float(devicePixelRatioF()));
+    const bool strain = family >= 0 && m_options.strain;
+    m_lines->setUniformValue("uStrainMode", strain ? 1 : 0);
+    if (strain) {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_BUFFER, m_restTextures[std::size_t(family)]);
+        m_lines->setUniformValue("uRest", 0);
+        m_lines->setUniformValue("uStrainRange", float(m_options.strainRange));
+    }
+    m_vao.bind();
+    e.buffer.bind();
+    glDrawElements(GL_LINES, e.count, GL_UNSIGNED_INT, nullptr);
+}
+
+void Viewport::drawSegments(const std::vector<float>& xyz, const QVector4D& color, float width) {
+    if (xyz.size() < 6) return;
+    m_scratchVao.bind();
+    m_scratch.bind();
+    m_scratch.allocate(xyz.data(), int(xyz.size() * sizeof(float)));
+    m_lines->bind();
+    m_lines->setUniformValue("uColor", color);
+    m_lines->setUniformValue("uWidth", width * float(devicePixelRatioF()));
+    m_lines->setUniformValue("uStrainMode", 0);
+    glDrawArrays(GL_LINES, 0, GLsizei(xyz.size() / 3));
+    m_scratchVao.release();
+}
+
+void Viewport::drawSurface(const Elements& e, const QVector4D& color, bool lit) {
+    if (e.count == 0) return;
+    m_surface->bind();
+    m_surface->setUniformValue("uColor", color);
+    m_surface->setUniformValue("uLit", lit ? 1 : 0);
+    m_vao.bind();
+    e.buffer.bind();
+    glDrawElements(GL_TRIANGLES, e.count, GL_UNSIGNED_INT, nullptr);
+}
+
+void Viewport::drawPolygonStencil(const Elements& fan, const QVector4D& color) {
+    // Even-odd fill of a simple polygon of any shape: every fan triangle inverts the stencil;
+    // pixels covered an odd number of times are inside.
+    if (fan.count == 0) return;
+    glEnable(GL_STENCIL_TEST);
+    glClear(GL_STENCIL_BUFFER_BIT);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 0, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
+    drawSurface(fan, color, false);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilFunc(GL_NOTEQUAL, 0, 0xff);
+    glStencilOp(GL_ZERO, GL_ZERO, GL_ZERO);
+    drawSurface(fan, color, false);
+    glDisable(GL_STENCIL_TEST);
+}
+
+void Viewport::drawBox() {
+    const SceneData& s = *m_frame->scene;
+    const float h = float(s.boxHalfSize);
+    const QVector3D c(float(s.boxCentre.x()), float(s.boxCentre.y()), float(s.boxCentre.z()));
+    std::vector<float> v;
+    auto seg = [&](QVector3D a, QVector3D b) {
+        a = c + a * h;
+        b = c + b * h;
+        v.insert(v.end(), {a.x(), a.y(), a.z(), b.x(), b.y(), b.z()});
+    };
+    if (m_camera.is2d()) {
+        seg({-1, -1, 0}, {1, -1, 0});
+        seg({1, -1, 0}, {1, 1, 0});
+        seg({1, 1, 0}, {-1, 1, 0});
+        seg({-1, 1, 0}, {-1, -1, 0});
+        drawSegments(v, kBoxColor, 2.0f);
+        v.clear();
+        seg({-1, -1, 0}, {1, -1, 0});
+        drawSegments(v, {0.25f, 0.25f, 0.3f, 1.0f}, 5.0f);  // the floor
+        return;
+    }
+    for (int i = 0; i < 4; ++i) {
+        const float x0 = (i & 1) ? 1.f : -1.f, z0 = (i & 2) ? 1.f : -1.f;
+        seg({x0, -1, z0}, {x0, 1, z0});  // vertical edges
+    }
+    for (float y : {-1.f, 1.f}) {
+        seg({-1, y, -1}, {1, y, -1});
+        seg({-1, y, 1}, {1, y, 1});
+        seg({-1, y, -1}, {-1, y, 1});
+        seg({1, y, -1}, {1, y, 1});
+    }
+    drawSegments(v, kBoxColor, 1.5f);
+    // The floor as a filled quad, with a light grid.
+    std::vector<float> quad;
+    for (auto [x, z] : {std::pair{-1.f, -1.f}, {1.f, -1.f}, {1.f, 1.f}, {-1.f, -1.f}, {1.f, 1.f}, {-1.f, 1.f}}) {
+        const QVector3D p = c + QVector3D(x, -1.0f, z) * h;
+        quad.insert(quad.end(), {p.x(), p.y() - 0.002f * h, p.z()});
+    }
+    m_scratchVao.bind();
+    m_scratch.bind();
+    m_scratch.allocate(quad.data(), int(quad.size() * sizeof(float)));
+    m_surface->bind();
+    m_surface->setUniformValue("uColor", kFloorColor);
+    m_surface->setUniformValue("uLit", 0);
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    m_scratchVao.release();
+    v.clear();
+    for (int i = 1; i < 8; ++i) {
+        const float t = -1.0f + 2.0f * float(i) / 8.0f;
+        seg({t, -1, -1}, {t, -1, 1});
+        seg({-1, -1, t}, {1, -1, t});
+    }
+    drawSegments(v, {0.68f, 0.70f, 0.75f, 1.0f}, 1.0f);
+}
+
+void Viewport::paintGL() {
+    ++m_paints;
+    glClearColor(0.95f, 0.96f, 0.975f, 1.0f);
+    glClearStencil(0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    if (!m_frame || !m_lines || !m_lines->isLinked()) return;
+    const int laneIndex = std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1);
+    const LaneFrame& lane = m_frame->lanes[std::size_t(laneIndex)];
+    if (m_uploadedScene != m_frame->scene) uploadScene();
+    uploadPositions(lane);
+
+    const QSize pixels = size() * devicePixelRatioF();
+    const QMatrix4x4 mvp = m_camera.projection(size()) * m_camera.view();
+    const QVector2D viewport(float(pixels.width()), float(pixels.height()));
+    for (QOpenGLShaderProgram* p : {m_lines.get(), m_normals.get(), m_surface.get(), m_points.get()}) {
+        p->bind();
+        p->setUniformValue("uMVP", mvp);
+        p->setUniformValue("uViewport", viewport);
+        p->setUniformValue("uEye", m_camera.eye());
+    }
+    glEnable(GL_BLEND);
+    // Keep destination alpha at 1: the widget's image is composited as premultiplied ARGB.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+
+    const SceneData& scene = *m_frame->scene;
+    const bool flat = m_camera.is2d();
+    const float lineWidth = flat ? 2.5f : 1.6f;
+    const auto& x = lane.positions;
+    auto at = [&](int i) { return QVector3D(x[3 * std::size_t(i)], x[3 * std::size_t(i) + 1], x[3 * std::size_t(i) + 2]); };
+
+    if (flat) glDisable(GL_DEPTH_TEST);
+    else glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_TRUE);
+    if (m_options.box) drawBox();
+
+    if (m_options.faces) {
+        if (flat) {
+            drawSurface(m_fill, kOuterFill, false);
+            drawPolygonStencil(m_innerFan, kInnerFill);
+        } else {
+            drawSurface(m_innerFaces, kInnerFace, true);
+        }
+    }
+    for (int f = 0; f < 3; ++f)
+        if (m_options.springs[f])
+            drawElementsLines(m_springs[std::size_t(f)], kFamilyColor[f], f == 0 ? lineWidth * 1.3f : lineWidth, f);
+
+    if (m_options.normals) {
+        if (flat) {
+            std::vector<float> v;
+            const simcore::Surface* outer = scene.topology.surface(simcore::Layer::Outer);
+            if (outer) {
+                const float len = 0.25f * float(scene.bodyRadius);
+                for (const auto& e : outer->edges) {
+                    const QVector3D a = at(e[0]), b = at(e[1]);
+                    const QVector3D m = 0.5f * (a + b), d = b - a;
+                    const QVector3D n = QVector3D(d.y(), -d.x(), 0).normalized();  // interior on the left
+                    const QVector3D tip = m + n * len;
+                    v.insert(v.end(), {m.x(), m.y(), m.z(), tip.x(), tip.y(), tip.z()});
+                }
+            }
+            drawSegments(v, kNormalColor, 2.0f);
+        } else if (m_outerFaces.count > 0) {
+            m_normals->bind();
+            m_normals->setUniformValue("uColor", kNormalColor);
+            m_normals->setUniformValue("uWidth", 1.5f * float(devicePixelRatioF()));
+            m_normals->setUniformValue("uLength", 0.2f * float(scene.bodyRadius));
+            m_vao.bind();
+            m_outerFaces.buffer.bind();
+            glDrawElements(GL_TRIANGLES, m_outerFaces.count, GL_UNSIGNED_INT, nullptr);
+        }
+    }
+
+    if (m_options.particles && m_particleCount > 0) {
+        m_points->bind();
+        const float size = flat ? 11.0f : (m_particleCount > 600 ? 5.0f : 8.0f);
+        m_points->setUniformValue("uSize", size * float(devicePixelRatioF()));
+        m_points->setUniformValue("uGrabbed", lane.pointer.active ? lane.pointer.particle : -1);
+        m_vao.bind();
+        glDrawArrays(GL_POINTS, 0, m_particleCount);
+    }
+
+    if (m_options.forces && lane.forces.size() == x.size()) {
+        double largest = 0.0;
+        for (std::size_t i = 0; i + 2 < lane.forces.size(); i += 3)
+            largest = std::max(largest, std::hypot(double(lane.forces[i]), double(lane.forces[i + 1]),
+                                                   double(lane.forces[i + 2])));
+        if (largest > 0.0) {
+            const float scale = float(0.6 * scene.bodyRadius / largest);
+            std::vector<float> v;
+            for (std::size_t i = 0; i + 2 < x.size(); i += 3)
+                v.insert(v.end(), {x[i], x[i + 1], x[i + 2], x[i] + scale * lane.forces[i],
+                                   x[i + 1] + scale * lane.forces[i + 1], x[i + 2] + scale * lane.forces[i + 2]});
+            drawSegments(v, kForceColor, 2.0f);
+        }
+    }
+
+    if (lane.pointer.active && lane.pointer.particle >= 0 && lane.pointer.particle < m_particleCount) {
+        const QVector3D p = at(lane.pointer.particle);
+        const auto& a = lane.pointer.anchor;
+        const std::vector<float> v = {p.x(), p.y(), p.z(), float(a.x()), float(a.y()), float(a.z())};
+        glDisable(GL_DEPTH_TEST);
+        drawSegments(v, kMouseColor, 3.0f);
+        const float r = 6.0f * m_camera.worldPerPixel(size());
+        const QVector3D ac(float(a.x()), float(a.y()), float(a.z()));
+        drawSegments({ac.x() - r, ac.y(), ac.z(), ac.x() + r, ac.y(), ac.z(), ac.x(), ac.y() - r, ac.z(), ac.x(),
+                      ac.y() + r, ac.z()},
+                     {0.2f, 0.2f, 0.2f, 1.0f}, 2.0f);
+        if (!flat) glEnable(GL_DEPTH_TEST);
+    }
+
+    if (m_options.faces && !flat && m_outerFaces.count > 0) {
+        // The outer layer last and translucent: back faces first, then front faces.
+        glDepthMask(GL_FALSE);
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_FRONT);
+        drawSurface(m_outerFaces, kOuterFace, true);
+        glCullFace(GL_BACK);
+        drawSurface(m_outerFaces, kOuterFace, true);
+        glDisable(GL_CULL_FACE);
+        glDepthMask(GL_TRUE);
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glDisable(GL_DEPTH_TEST);
+    drawOverlay(lane);
+}
+
+void Viewport::drawOverlay(const LaneFrame& lane) {
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = painter.font();
+    font.setPointSizeF(font.pointSizeF() * 1.1);
+    painter.setFont(font);
+    const QFontMetrics fm(font);
+    int y = fm.ascent() + 8;
+    auto line = [&](const QString& text, const QColor& color) {
+        painter.setPen(color);
+        painter.drawText(10, y, text);
+        y += fm.height();
+    };
+    if (!m_title.isEmpty()) {
+        QFont bold = font;
+        bold.setBold(true);
+        painter.setFont(bold);
+        line(m_title, QColor(20, 20, 30));
+        painter.setFont(font);
+    }
+    line(QStringLiteral("t = %1 s").arg(lane.diagnostics.time, 0, 'f', 3), QColor(40, 40, 50));
+    if (m_frame->lanes.size() > 1 && m_lane > 0)
+        line(QStringLiteral("divergence from %1: %2 m").arg(m_frame->lanes[0].integrator).arg(lane.divergence, 0, 'g', 3),
+             QColor(40, 40, 50));
+    if (lane.failure) {
+        const QString text = tr("Blew up at t = %1 s: %2").arg(lane.failure->time, 0, 'f', 3)
+                                 .arg(QString::fromStdString(lane.failure->reason));
+        QRect box(8, y - fm.ascent(), width() - 16, fm.height() * 3);
+        painter.fillRect(box, QColor(200, 30, 30, 220));
+        painter.setPen(Qt::white);
+        painter.drawText(box.adjusted(6, 2, -6, -2), Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignVCenter, text);
+    }
+    if (m_options.strain) {
+        // Colour legend for strain (L - L0) / L0.
+        const int w = 18, h = 140, x0 = width() - w - 70, y0 = height() - h - 20;
+        QLinearGradient g(0, y0, 0, y0 + h);
+        g.setColorAt(0.0, QColor::fromRgbF(0.9f, 0.12f, 0.1f));
+        g.setColorAt(0.5, QColor::fromRgbF(0.95f, 0.95f, 0.95f));
+        g.setColorAt(1.0, QColor::fromRgbF(0.15f, 0.35f, 0.95f));
+        painter.fillRect(QRect(x0 - 8, y0 - fm.height() - 6, w + 74, h + fm.height() + 14), QColor(255, 255, 255, 200));
+        painter.fillRect(QRect(x0, y0, w, h), g);
+        painter.setPen(QColor(30, 30, 30));
+        painter.drawRect(QRect(x0, y0, w, h));
+        const int pct = int(std::lround(m_options.strainRange * 100));
+        painter.drawText(x0 + w + 5, y0 + fm.ascent() / 2, QStringLiteral("+%1 %").arg(pct));
+        painter.drawText(x0 + w + 5, y0 + h / 2 + fm.ascent() / 2, QStringLiteral("0"));
+        painter.drawText(x0 + w + 5, y0 + h + fm.ascent() / 2, QStringLiteral("-%1 %").arg(pct));
+        painter.drawText(x0 - 4, y0 - 6, tr("strain"));
+    }
+}
+
+bool Viewport::nearBody(const QPointF& pixel) const {
+    if (!m_frame) return false;
+    const auto& x = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))].positions;
+    const auto& layer = m_frame->scene->topology.layer;
+    const QMatrix4x4 mvp = m_camera.projection(size()) * m_camera.view();
+    const float limit = 28.0f;
+    for (std::size_t i = 0; i < layer.size(); ++i) {
+        if (layer[i] == simcore::Layer::Inner) continue;
+        const QVector3D ndc = mvp.map(QVector3D(x[3 * i], x[3 * i + 1], x[3 * i + 2]));
+        const QPointF p((ndc.x() + 1.0f) * 0.5f * float(width()), (1.0f - ndc.y()) * 0.5f * float(height()));
+        if (QLineF(p, pixel).length() < limit) return true;
+    }
+    return false;
+}
+
+QVector3D Viewport::anchorUnder(const QPointF& pixel) const {
+    const Ray ray = m_camera.rayAt(pixel, size());
+    const float denom = QVector3D::dotProduct(ray.direction, m_planeNormal);
+    if (std::abs(denom) < 1e-6f) return m_planePoint;
+    const float t = QVector3D::dotProduct(m_planePoint - ray.origin, m_planeNormal) / denom;
+    return ray.origin + t * ray.direction;
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+    m_lastPixel = event->position();
+    if (event->button() == Qt::LeftButton && nearBody(event->position())) {
+        const Ray ray = m_camera.rayAt(event->position(), size());
+        m_drag = Drag::Grab;
+        m_grabbed = false;
+        emit grabRequested(ray.origin, ray.direction, 28.0 * m_camera.worldPerPixel(size()));
+    } else if (event->button() == Qt::LeftButton && !m_camera.is2d()) {
+        m_drag = Drag::Orbit;
+    } else {
+        m_drag = Drag::Pan;
+    }
+}
+
+void Viewport::onGrabbed(int, const QVector3D& position) {
+    if (m_drag != Drag::Grab) return;
+    m_grabbed = true;
+    m_planePoint = position;
+    m_planeNormal = m_camera.forward();
+    emit anchorMoved(anchorUnder(m_lastPixel));
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF d = event->position() - m_lastPixel;
+    m_lastPixel = event->position();
+    switch (m_drag) {
+        case Drag::Grab:
+            if (m_grabbed) emit anchorMoved(anchorUnder(event->position()));
+            break;
+        case Drag::Orbit:
+            m_camera.orbit(float(d.x()), float(d.y()));
+            emit cameraChanged(m_camera);
+            update();
+            break;
+        case Drag::Pan:
+            m_camera.pan(float(d.x()), float(d.y()), size());
+            emit cameraChanged(m_camera);
+            update();
+            break;
+        case Drag::None: break;
+    }
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent*) {
+    if (m_drag == Drag::Grab) emit releaseRequested();
+    m_drag = Drag::None;
+    m_grabbed = false;
+}
+
+void Viewport::wheelEvent(QWheelEvent* event) {
+    m_camera.zoom(float(event->angleDelta().y()) / 120.0f);
+    emit cameraChanged(m_camera);
+    update();
+}
+
+}  // namespace elui

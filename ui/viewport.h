@@ -1,0 +1,115 @@
+#pragma once
+// Viewport: draws one lane of the newest frame with OpenGL 3.3 core (shaders in resources/).
+//
+// Buffers: positions are the only per-frame upload (plus force vectors when shown). Index
+// buffers (springs per family, faces, the 2D fill), particle layers and the rest lengths
+// used for strain colouring are uploaded when the scene changes, i.e. on a rebuild.
+//
+// Mouse: left press on the body grabs the nearest outer particle under the cursor (the
+// worker picks along the ray with simcore's pickAlongRay); dragging moves the anchor in the
+// plane through the particle facing the camera. Left drag elsewhere orbits (3D), right or
+// middle drag pans, the wheel zooms.
+
+#include <array>
+#include <memory>
+
+#include <QOpenGLBuffer>
+#include <QOpenGLFunctions_3_3_Core>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVertexArrayObject>
+#include <QOpenGLWidget>
+
+#include "camera.h"
+#include "frame.h"
+#include "view_options.h"
+
+namespace elui {
+
+class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
+    Q_OBJECT
+public:
+    explicit Viewport(QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    // False where a QOpenGLWidget cannot work (the offscreen platform, no GL 3.3).
+    static bool openGLAvailable();
+
+    void setLane(int lane) { m_lane = lane; }
+    int lane() const { return m_lane; }
+    void setOptions(const ViewOptions& options);
+    const ViewOptions& options() const { return m_options; }
+    Camera& camera() { return m_camera; }
+    void setCamera(const Camera& camera);
+    void setTitle(const QString& title) { m_title = title; update(); }
+    FramePtr frame() const { return m_frame; }
+    // Frames drawn since creation (for frame-rate measurements).
+    quint64 paintCount() const { return m_paints; }
+
+public slots:
+    void showFrame(const elui::FramePtr& frame);
+    void resetView();
+    void onGrabbed(int particle, const QVector3D& position);
+
+signals:
+    void grabRequested(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    void anchorMoved(const QVector3D& anchor);
+    void releaseRequested();
+    void cameraChanged(const elui::Camera& camera);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+
+private:
+    struct Elements {
+        mutable QOpenGLBuffer buffer{QOpenGLBuffer::IndexBuffer};
+        int count = 0;
+    };
+    void cleanup();
+    void uploadScene();
+    void uploadPositions(const LaneFrame& lane);
+    void drawElementsLines(const Elements& e, const QVector4D& color, float width, int family);
+    void drawSegments(const std::vector<float>& xyz, const QVector4D& color, float width);
+    void drawSurface(const Elements& e, const QVector4D& color, bool lit);
+    void drawPolygonStencil(const Elements& fan, const QVector4D& color);
+    void drawBox();
+    void drawOverlay(const LaneFrame& lane);
+    bool nearBody(const QPointF& pixel) const;
+    QVector3D anchorUnder(const QPointF& pixel) const;
+
+    FramePtr m_frame;
+    std::shared_ptr<const SceneData> m_uploadedScene;
+    int m_lane = 0;
+    ViewOptions m_options;
+    Camera m_camera;
+    QString m_title;
+    quint64 m_paints = 0;
+    bool m_glReady = false;
+
+    // GL objects (made in initializeGL, freed on aboutToBeDestroyed).
+    std::unique_ptr<QOpenGLShaderProgram> m_lines, m_normals, m_surface, m_points;
+    QOpenGLVertexArrayObject m_vao;
+    QOpenGLBuffer m_positions{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer m_layers{QOpenGLBuffer::VertexBuffer};
+    QOpenGLBuffer m_scratch{QOpenGLBuffer::VertexBuffer};  // segments: box, mouse spring, forces
+    QOpenGLVertexArrayObject m_scratchVao;
+    std::array<Elements, 3> m_springs;
+    std::array<GLuint, 3> m_restBuffers{}, m_restTextures{};
+    Elements m_innerFaces, m_outerFaces, m_fill, m_innerFan, m_outerFan;
+    int m_particleCount = 0;
+
+    // Mouse.
+    enum class Drag { None, Orbit, Pan, Grab };
+    Drag m_drag = Drag::None;
+    QPointF m_lastPixel;
+    bool m_grabbed = false;
+    QVector3D m_planePoint;   // the drag plane passes through here, facing the camera
+    QVector3D m_planeNormal;
+};
+
+}  // namespace elui
