@@ -392,6 +392,7 @@ bool Simulation::collide(bool apply) {
     // (1 - mu). Only the axes the body moves in are bounded.
     const int count = particleCount();
     const int dims = m_body.topology.dimension;
+    const double restingSpeed = 2.0 * m_forces.params.gravity * m_hTaken;
     bool any = false;
     for (int i = 0; i < count; ++i) {
         for (int axis = 0; axis < 3; ++axis) {
@@ -407,7 +408,11 @@ bool Simulation::collide(bool apply) {
             any = true;
             if (!apply) return true;
             x = below ? lo : hi;
-            if ((below && v < 0.0) || (above && v > 0.0)) v = -m_restitution * v;
+            // Resting contact: an approach no faster than what gravity adds in two steps is
+            // stopped, not bounced. Bouncing it would make a resting body chatter, each step
+            // sinking, being lifted back and bounced, pumping energy that damping then removes.
+            if ((below && v < 0.0) || (above && v > 0.0))
+                v = std::abs(v) <= restingSpeed ? 0.0 : -m_restitution * v;
             if (m_friction > 0.0) {
                 for (int other = 0; other < dims && other < 3; ++other) {
                     const int tangent = dims == 1 ? 1 : other;

@@ -98,6 +98,20 @@ private slots:
         QVERIFY(sim.positions()(1, 1) >= floor);
         QVERIFY(std::abs(sim.diagnostics().removedCollisions - 0.5 * (1.0 - e * e)) < 1e-9);
     }
+    void restingContactDoesNotBounce() {
+        // A free particle at rest on the floor under gravity sinks g h^2 per step and is put
+        // back: it must stay at rest (v = 0), not bounce at e g h every step.
+        ParameterSet p = params(SceneKind::Spring1d, {{"ks", 0.0}, {"kd", 0.0}, {"fixed_end", 0.0},
+                                                      {"box", 1.0}, {"restitution", 1.0}, {"dt", 0.001}});
+        Simulation sim(p, "rk4");
+        const double floor = sim.boxCentre().y() - sim.boxHalfSize();
+        Eigen::Matrix3Xd x = sim.positions();
+        x(1, 1) = floor;
+        sim.setState(x, Eigen::Matrix3Xd::Zero(3, 2));
+        for (int i = 0; i < 1000; ++i) QVERIFY(sim.step());
+        QCOMPARE(sim.positions()(1, 1), floor);
+        QCOMPARE(sim.velocities()(1, 1), 0.0);
+    }
     void innerLayerStaysInside() {
         // Push every inner particle outward through the outer layer: after one step the layer
         // constraint has put each back on the inner side of its partner's tangent plane.
