@@ -1,0 +1,164 @@
+// elastic-lab-cli study / stability / gallery and run's error columns: the scriptable contract.
+#include <QtTest>
+
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <cmath>
+
+namespace {
+
+struct Result {
+    int code = -1;
+    QString out;
+    QString err;
+};
+
+Result cli(const QStringList& args) {
+    QProcess p;
+    p.start(ELASTIC_LAB_CLI, args);
+    if (!p.waitForFinished(120000)) return {};
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
+}
+
+QString readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+}
+
+// The CSV without its wall_seconds column (the one field two identical runs do not share).
+QString withoutWall(const QString& csv) {
+    QStringList out;
+    for (const QString& line : csv.split('\n', Qt::SkipEmptyParts)) {
+        QStringList f = line.split(',');
+        f.removeAt(4);
+        out << f.join(',');
+    }
+    return out.join('\n');
+}
+
+const QStringList kStudy = {"study", "--scene", "spring1d", "--set", "box=100", "--integrators",
+                            "euler,midpoint,rk4,rk45", "--dts", "0.002,0.001", "--tols", "1e-5,1e-8",
+                            "--duration", "1", "--quiet"};
+
+}  // namespace
+
+class TestNumericsCli : public QObject {
+    Q_OBJECT
+private:
+    QTemporaryDir m_dir;
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+
+private slots:
+    void studyWritesTheDocumentedCsvAndPlot() {
+        QStringList args = kStudy;
+        args.removeAll("--quiet");
+        args << "--csv" << path("full.csv") << "--plot" << path("full.svg") << "--repeat" << "3";
+        const Result r = cli(args);
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.out.contains("reference    closed form"), qPrintable(r.out));
+        QVERIFY(r.out.contains("its estimated error at T"));
+        QVERIFY(r.out.contains("fitted convergence order"));
+        for (const char* name : {"euler", "midpoint", "rk4", "rk45"}) QVERIFY(r.out.contains(QString("  ") + name));
+        const QStringList lines = readAll(path("full.csv")).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.value(0), QString("integrator,dt,steps,force_evals,wall_seconds,error_final,error_max,error_energy,status"));
+        QCOMPARE(lines.size(), 1 + 3 * 2 + 2);
+        for (int i = 1; i < lines.size(); ++i) {
+            const QStringList f = lines[i].split(',');
+            QCOMPARE(f.size(), 9);
+            QCOMPARE(f[8], QString("ok"));
+            for (int k = 1; k < 8; ++k) QVERIFY2(std::isfinite(f[k].toDouble()), qPrintable(lines[i]));
+        }
+        const QString svg = readAll(path("full.svg"));
+        QVERIFY(svg.startsWith("<svg") && svg.contains("force evaluations") && svg.contains("wall time"));
+    }
+    void shardsConcatenateIntoTheSameCsv() {
+        QStringList full = kStudy;
+        full << "--csv" << path("one.csv");
+        QCOMPARE(cli(full).code, 0);
+        QString joined;
+        for (const char* shard : {"1/3", "2/3", "3/3"}) {
+            QStringList args = kStudy;
+            const QString file = path(QString("shard%1.csv").arg(shard[0]));
+            args << "--shard" << shard << "--csv" << file;
+            QCOMPARE(cli(args).code, 0);
+            joined += readAll(file);
+        }
+        QCOMPARE(withoutWall(joined), withoutWall(readAll(path("one.csv"))));
+        // Merging: fit and plot from the concatenated shards.
+        QFile out(path("joined.csv"));
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(joined.toUtf8());
+        out.close();
+        const Result merged = cli({"study", "--from-csv", path("joined.csv"), "--plot", path("joined.svg")});
+        QCOMPARE(merged.code, 0);
+        QVERIFY(merged.out.contains("rk4"));
+        QVERIFY(QFile::exists(path("joined.svg")));
+    }
+    void failedRunsAreMarkedNotPlotted() {
+        const Result r = cli({"study", "--scene", "ring2d", "--set", "ks=1e5", "--integrators", "euler,rk4", "--dts",
+                              "0.01,0.0005", "--duration", "0.5", "--samples", "5", "--csv", path("fail.csv"), "--quiet"});
+        QCOMPARE(r.code, 0);
+        const QStringList lines = readAll(path("fail.csv")).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 5);
+        QVERIFY2(lines[1].startsWith("euler,0.01,") && lines[1].contains(",,,failed@"), qPrintable(lines[1]));
+        QVERIFY2(lines[4].startsWith("rk4,") && lines[4].split(',')[1].toDouble() == 0.0005 && lines[4].endsWith(",ok"),
+                 qPrintable(lines[4]));
+    }
+    void badStudyInputIsRefused() {
+        QCOMPARE(cli({"study", "--scene", "spring1d", "--integrators", "euler", "--dts", "0.3", "--duration", "1"}).code, 2);
+        QCOMPARE(cli({"study", "--scene", "spring1d", "--integrators", "leapfrog", "--dts", "0.01"}).code, 2);
+        QCOMPARE(cli({"study", "--scene", "spring1d", "--integrators", "euler", "--dts", "0.01", "--shard", "3/2"}).code, 2);
+        QCOMPARE(cli({"study", "--scene", "ring2d", "--integrators", "euler", "--dts", "0.01", "--reference", "exact"}).code, 2);
+    }
+    void stabilityPrintsMeasuredBesidePredicted() {
+        const Result r = cli({"stability", "--scene", "spring1d", "--set", "kd=0", "--set", "gravity=0", "--set",
+                              "fixed_end=0", "--set", "box=100", "--integrators", "rk4,verlet,implicit-euler",
+                              "--duration", "2", "--csv", path("stab.csv")});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.out.contains("w_max = 40 rad/s"), qPrintable(r.out));
+        const QStringList lines = readAll(path("stab.csv")).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.value(0), QString("integrator,dt_stable,dt_unstable,dt_predicted,h_omega_stable,h_omega_predicted,reason"));
+        QCOMPARE(lines.size(), 4);
+        // rk4: predicted h w = 2 sqrt(2); measured within 15% above it (slow growth near the edge).
+        const QStringList rk4 = lines[1].split(',');
+        QVERIFY(std::abs(rk4[5].toDouble() - 2.0 * std::sqrt(2.0)) < 1e-3);
+        QVERIFY2(rk4[4].toDouble() > 0.9 * 2.0 * std::sqrt(2.0) && rk4[4].toDouble() < 1.15 * 2.0 * std::sqrt(2.0),
+                 qPrintable(lines[1]));
+        const QStringList verlet = lines[2].split(',');
+        QVERIFY2(std::abs(verlet[4].toDouble() - 2.0) < 0.1, qPrintable(lines[2]));
+        QVERIFY(lines[3].startsWith("implicit-euler,1,inf,inf"));
+    }
+    void runExportsErrorEstimates() {
+        const Result r = cli({"run", "--scene", "ring2d", "--integrator", "rk4", "--duration", "0.03", "--error-estimate",
+                              "--csv", path("est.csv"), "--quiet"});
+        QCOMPARE(r.code, 0);
+        const QStringList lines = readAll(path("est.csv")).split('\n', Qt::SkipEmptyParts);
+        const QStringList header = lines[0].split(',');
+        const auto e = header.indexOf("error_estimate");
+        QVERIFY(e >= 0 && header.contains("energy_drift"));
+        QCOMPARE(lines[1].split(',')[e].toDouble(), -1.0);  // the start row has no step yet
+        QVERIFY(lines[2].split(',')[e].toDouble() > 0.0);
+        const Result adaptive = cli({"run", "--scene", "ring2d", "--integrator", "rk45", "--atol", "1e-8", "--rtol",
+                                     "1e-8", "--duration", "0.5", "--csv", path("rk45.csv"), "--quiet"});
+        QCOMPARE(adaptive.code, 0);
+        const QStringList rows = readAll(path("rk45.csv")).split('\n', Qt::SkipEmptyParts);
+        const QStringList last = rows.last().split(',');
+        QCOMPARE(last[1].toDouble(), 0.5);  // lands on the end time
+        QVERIFY(last[e].toDouble() >= 0.0);
+    }
+    void preRunWarningOnlyForExplicitMethods() {
+        const QStringList base = {"run", "--scene", "ring2d", "--dt", "0.03", "--duration", "0.06", "--quiet"};
+        QVERIFY(cli(QStringList(base) << "--integrator" << "rk4").err.contains("warning: dt = 0.03"));
+        QVERIFY(!cli(QStringList(base) << "--integrator" << "implicit-euler").err.contains("warning"));
+    }
+    void galleryRunsByName() {
+        const Result r = cli({"gallery", "--run", "stiff-1e6-implicit"});
+        QCOMPARE(r.code, 0);
+        QVERIFY(r.out.contains("stiff-1e6-implicit") && r.out.contains(" ok "));
+        QCOMPARE(cli({"gallery", "--run", "no-such-case"}).code, 2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestNumericsCli)
+#include "test_numerics_cli.moc"
