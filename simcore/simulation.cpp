@@ -309,7 +309,11 @@ bool Simulation::step(double until) {
     double h = m_dt;
     bool clamped = false;
     if (m_integrator->adaptive()) {
-        h = m_hNext;
+        // Walls act between steps: no particle may cross more than a tenth of the box in
+        // one adaptive step (a smooth free fall would otherwise let the step grow without
+        // bound, since its error estimate is zero).
+        const double fastest = velocities().colwise().norm().maxCoeff();
+        h = fastest > 0.0 ? std::min(m_hNext, 0.1 * m_box / fastest) : m_hNext;
         if (until - t0 > 1e-12 * std::max(1.0, std::abs(until)) && t0 + h > until) {
             h = until - t0;
             clamped = true;
