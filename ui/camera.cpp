@@ -7,8 +7,9 @@ namespace elui {
 
 void Camera::fit(const QVector3D& centre, float bodyRadius, float boxHalfSize) {
     m_homeTarget = centre;
-    // Show the body large, with some of the box around it.
-    const float extent = std::min(boxHalfSize, bodyRadius * 1.6f) * 1.15f;
+    // 2D: the whole box (a dropped body must stay in view). 3D: the body large, with some of
+    // the box around it.
+    const float extent = m_flat ? boxHalfSize * 1.06f : std::min(boxHalfSize, bodyRadius * 1.6f) * 1.15f;
     m_homeHalfHeight = std::max(extent, bodyRadius * 1.2f);
     m_homeDistance = m_homeHalfHeight / std::tan(0.5f * m_fovY * float(M_PI) / 180.0f) * 1.25f;
     resetView();
@@ -18,6 +19,7 @@ void Camera::resetView() {
     m_target = m_homeTarget;
     m_distance = m_homeDistance;
     m_halfHeight = m_homeHalfHeight;
+    m_halfWidth = m_homeHalfHeight;
     m_yaw = 0.6f;
     m_pitch = 0.35f;
 }
@@ -41,6 +43,12 @@ void Camera::zoom(float steps) {
     const float factor = std::pow(0.85f, steps);
     m_distance = std::clamp(m_distance * factor, 0.5f, 500.0f);
     m_halfHeight = std::clamp(m_halfHeight * factor, 0.05f, 500.0f);
+    m_halfWidth = std::clamp(m_halfWidth * factor, 0.05f, 500.0f);
+}
+
+float Camera::flatHalfHeight(const QSize& viewport) const {
+    const float aspect = float(std::max(1, viewport.width())) / float(std::max(1, viewport.height()));
+    return std::max(m_halfHeight, m_halfWidth / aspect);
 }
 
 QVector3D Camera::eye() const {
@@ -61,7 +69,10 @@ QMatrix4x4 Camera::projection(const QSize& viewport) const {
     const float aspect = float(std::max(1, viewport.width())) / float(std::max(1, viewport.height()));
     QMatrix4x4 p;
     if (m_flat)
-        p.ortho(-m_halfHeight * aspect, m_halfHeight * aspect, -m_halfHeight, m_halfHeight, 1.0f, 200.0f);
+    {
+        const float hh = flatHalfHeight(viewport);
+        p.ortho(-hh * aspect, hh * aspect, -hh, hh, 1.0f, 200.0f);
+    }
     else
         p.perspective(m_fovY, aspect, std::max(0.05f, m_distance * 0.02f), m_distance * 20.0f);
     return p;
@@ -78,7 +89,7 @@ Ray Camera::rayAt(const QPointF& pixel, const QSize& viewport) const {
 
 float Camera::worldPerPixel(const QSize& viewport) const {
     const float h = float(std::max(1, viewport.height()));
-    if (m_flat) return 2.0f * m_halfHeight / h;
+    if (m_flat) return 2.0f * flatHalfHeight(viewport) / h;
     return 2.0f * m_distance * std::tan(0.5f * m_fovY * float(M_PI) / 180.0f) / h;
 }
 

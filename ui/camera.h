@@ -45,10 +45,13 @@ private:
     QVector3D m_target;
     float m_yaw = 0.6f, m_pitch = 0.35f, m_distance = 10.0f;  // [rad], [rad], [m]
     float m_halfHeight = 3.0f;                                 // 2D [m]
+    float m_halfWidth = 3.0f;                                  // 2D: at least this wide [m]
     float m_fovY = 40.0f;                                      // [deg]
     // The framing fit() chose, for resetView().
     QVector3D m_homeTarget;
     float m_homeDistance = 10.0f, m_homeHalfHeight = 3.0f;
+    // The 2D half-height that shows at least m_halfWidth across a viewport of this size.
+    float flatHalfHeight(const QSize& viewport) const;
 };
 
 }  // namespace elui

@@ -408,11 +408,9 @@ void MainWindow::saveViewportScreenshot() {
                                                       QStringLiteral("elastic-lab-view.png"), tr("PNG image (*.png)"));
     if (path.isEmpty()) return;
     QImage image;
-    if (m_viewports.size() == 1) {
-        image = m_viewports.front()->grabFramebuffer();
-    } else {
-        image = centralWidget()->grab().toImage();
-    }
+    // grab() keeps the text and legend drawn over the GL image.
+    if (m_viewports.size() == 1) image = m_viewports.front()->grab().toImage();
+    else image = centralWidget()->grab().toImage();
     const QString error = writeImage(path, image);
     if (!error.isEmpty()) QMessageBox::warning(this, tr("Save screenshot"), error);
     else status(tr("Wrote %1").arg(path));

@@ -60,6 +60,8 @@ void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList&
     try {
         for (const QString& name : integrators) {
             auto sim = std::make_unique<simcore::Simulation>(params, name.toStdString());
+            // One force thread: the GUI thread (and a software GL renderer) needs the other core.
+            sim->setThreads(m_threads);
             sim->setIntegratorOptions([&] {
                 simcore::IntegratorOptions o = sim->integratorOptions();
                 o.stepDoubling = m_stepDoubling;

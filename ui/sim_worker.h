@@ -10,6 +10,7 @@
 // state, gets the same parameter edits and the same mouse input, and is advanced to the
 // same simulated time after every step of the common DT.
 
+#include <algorithm>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -92,6 +93,7 @@ private:
     double m_until = -1.0;                // runUntil target, < 0: none
     bool m_forcesWanted = false;
     bool m_stepDoubling = false;
+    int m_threads = std::max(1, simcore::hardwareThreads() - 1);  // force-evaluation threads
     double m_kickInner = 0.0, m_kickOuter = 0.0;
     double m_dtLimit = 0.0;               // estimated explicit stability limit on DT [s]
     double m_commonTime = 0.0;            // the time every live lane has reached [s]

@@ -7,6 +7,7 @@
 #include <QMouseEvent>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QLabel>
 #include <QPainter>
 #include <QWheelEvent>
 
@@ -42,11 +43,57 @@ std::vector<GLuint> loopFan(const simcore::Surface& surface) {
 
 }  // namespace
 
+// Colour legend for strain (L - L0) / L0, matching lines.geom's map.
+class StrainLegend : public QWidget {
+public:
+    explicit StrainLegend(QWidget* parent) : QWidget(parent) {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setFixedSize(96, 190);
+    }
+    void setRange(double range) {
+        m_range = range;
+        update();
+    }
+
+protected:
+    void paintEvent(QPaintEvent*) override {
+        QPainter painter(this);
+        painter.fillRect(rect(), QColor(255, 255, 255, 215));
+        painter.setPen(QColor(160, 160, 170));
+        painter.drawRect(rect().adjusted(0, 0, -1, -1));
+        const QFontMetrics fm(font());
+        const int w = 18, x0 = 10, y0 = fm.height() + 12, h = height() - y0 - 12;
+        painter.setPen(QColor(30, 30, 30));
+        painter.drawText(x0, fm.ascent() + 5, tr("spring strain"));
+        QLinearGradient g(0, y0, 0, y0 + h);
+        g.setColorAt(0.0, QColor::fromRgbF(0.9f, 0.12f, 0.1f));
+        g.setColorAt(0.5, QColor::fromRgbF(0.95f, 0.95f, 0.95f));
+        g.setColorAt(1.0, QColor::fromRgbF(0.15f, 0.35f, 0.95f));
+        painter.fillRect(QRect(x0, y0, w, h), g);
+        painter.drawRect(QRect(x0, y0, w, h));
+        const int pct = int(std::lround(m_range * 100));
+        painter.drawText(x0 + w + 6, y0 + fm.ascent() / 2, QStringLiteral("+%1 %").arg(pct));
+        painter.drawText(x0 + w + 6, y0 + h / 2 + fm.ascent() / 2, QStringLiteral("0 (rest)"));
+        painter.drawText(x0 + w + 6, y0 + h + fm.ascent() / 2 - 2, QStringLiteral("-%1 %").arg(pct));
+    }
+
+private:
+    double m_range = 0.2;
+};
+
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     initElasticLabResources();
     setMinimumSize(240, 200);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
+    m_info = new QLabel(this);
+    m_info->setTextFormat(Qt::RichText);
+    m_info->setWordWrap(true);
+    m_info->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_info->setStyleSheet(QStringLiteral("QLabel { color: #202030; background: rgba(255,255,255,150); padding: 3px; }"));
+    m_info->move(8, 8);
+    m_legend = new StrainLegend(this);
+    m_legend->hide();
 }
 
 Viewport::~Viewport() {
@@ -76,6 +123,8 @@ bool Viewport::openGLAvailable() {
 
 void Viewport::setOptions(const ViewOptions& options) {
     m_options = options;
+    updateOverlay();
+    m_legend->setVisible(options.strain);
     update();
 }
 
@@ -106,6 +155,7 @@ void Viewport::showFrame(const FramePtr& frame) {
         }
     }
     m_frame = frame;
+    updateOverlay();
     update();
 }
 
@@ -478,58 +528,36 @@ void Viewport::paintGL() {
     glBindVertexArray(0);
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);
-    drawOverlay(lane);
 }
 
-void Viewport::drawOverlay(const LaneFrame& lane) {
-    QPainter painter(this);
-    painter.setRenderHint(QPainter::Antialiasing);
-    QFont font = painter.font();
-    font.setPointSizeF(font.pointSizeF() * 1.1);
-    painter.setFont(font);
-    const QFontMetrics fm(font);
-    int y = fm.ascent() + 8;
-    auto line = [&](const QString& text, const QColor& color) {
-        painter.setPen(color);
-        painter.drawText(10, y, text);
-        y += fm.height();
-    };
-    if (!m_title.isEmpty()) {
-        QFont bold = font;
-        bold.setBold(true);
-        painter.setFont(bold);
-        line(m_title, QColor(20, 20, 30));
-        painter.setFont(font);
-    }
-    line(QStringLiteral("t = %1 s").arg(lane.diagnostics.time, 0, 'f', 3), QColor(40, 40, 50));
+void Viewport::resizeEvent(QResizeEvent* event) {
+    QOpenGLWidget::resizeEvent(event);
+    if (m_legend) m_legend->move(width() - m_legend->width() - 10, height() - m_legend->height() - 10);
+    if (m_info) m_info->setMaximumWidth(std::max(200, width() - 20));
+}
+
+void Viewport::updateOverlay() {
+    if (!m_frame) return;
+    const LaneFrame& lane = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))];
+    QString html;
+    if (!m_title.isEmpty()) html += QStringLiteral("<b>%1</b><br>").arg(m_title.toHtmlEscaped());
+    html += QStringLiteral("t = %1 s").arg(lane.diagnostics.time, 0, 'f', 3);
     if (m_frame->lanes.size() > 1 && m_lane > 0)
-        line(QStringLiteral("divergence from %1: %2 m").arg(m_frame->lanes[0].integrator).arg(lane.divergence, 0, 'g', 3),
-             QColor(40, 40, 50));
-    if (lane.failure) {
-        const QString text = tr("Blew up at t = %1 s: %2").arg(lane.failure->time, 0, 'f', 3)
-                                 .arg(QString::fromStdString(lane.failure->reason));
-        QRect box(8, y - fm.ascent(), width() - 16, fm.height() * 3);
-        painter.fillRect(box, QColor(200, 30, 30, 220));
-        painter.setPen(Qt::white);
-        painter.drawText(box.adjusted(6, 2, -6, -2), Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignVCenter, text);
+        html += QStringLiteral("<br>%1 from %2: %3 m (RMS)")
+                    .arg(tr("distance"), m_frame->lanes[0].integrator)
+                    .arg(lane.divergence, 0, 'g', 3);
+    if (lane.failure)
+        html += QStringLiteral("<br><span style='background:#c0392b; color:white'>&nbsp;%1&nbsp;</span>")
+                    .arg(tr("Blew up at t = %1 s: %2")
+                             .arg(lane.failure->time, 0, 'f', 3)
+                             .arg(QString::fromStdString(lane.failure->reason))
+                             .toHtmlEscaped());
+    if (m_info->text() != html) {
+        m_info->setText(html);
+        m_info->adjustSize();
     }
-    if (m_options.strain) {
-        // Colour legend for strain (L - L0) / L0.
-        const int w = 18, h = 140, x0 = width() - w - 70, y0 = height() - h - 20;
-        QLinearGradient g(0, y0, 0, y0 + h);
-        g.setColorAt(0.0, QColor::fromRgbF(0.9f, 0.12f, 0.1f));
-        g.setColorAt(0.5, QColor::fromRgbF(0.95f, 0.95f, 0.95f));
-        g.setColorAt(1.0, QColor::fromRgbF(0.15f, 0.35f, 0.95f));
-        painter.fillRect(QRect(x0 - 8, y0 - fm.height() - 6, w + 74, h + fm.height() + 14), QColor(255, 255, 255, 200));
-        painter.fillRect(QRect(x0, y0, w, h), g);
-        painter.setPen(QColor(30, 30, 30));
-        painter.drawRect(QRect(x0, y0, w, h));
-        const int pct = int(std::lround(m_options.strainRange * 100));
-        painter.drawText(x0 + w + 5, y0 + fm.ascent() / 2, QStringLiteral("+%1 %").arg(pct));
-        painter.drawText(x0 + w + 5, y0 + h / 2 + fm.ascent() / 2, QStringLiteral("0"));
-        painter.drawText(x0 + w + 5, y0 + h + fm.ascent() / 2, QStringLiteral("-%1 %").arg(pct));
-        painter.drawText(x0 - 4, y0 - 6, tr("strain"));
-    }
+    m_legend->setRange(m_options.strainRange);
+    m_legend->setVisible(m_options.strain);
 }
 
 bool Viewport::nearBody(const QPointF& pixel) const {

@@ -23,7 +23,11 @@
 #include "frame.h"
 #include "view_options.h"
 
+class QLabel;
+
 namespace elui {
+
+class StrainLegend;
 
 class Viewport : public QOpenGLWidget, protected QOpenGLFunctions_3_3_Core {
     Q_OBJECT
@@ -40,7 +44,10 @@ public:
     const ViewOptions& options() const { return m_options; }
     Camera& camera() { return m_camera; }
     void setCamera(const Camera& camera);
-    void setTitle(const QString& title) { m_title = title; update(); }
+    void setTitle(const QString& title) {
+        m_title = title;
+        updateOverlay();
+    }
     FramePtr frame() const { return m_frame; }
     // Frames drawn since creation (for frame-rate measurements).
     quint64 paintCount() const { return m_paints; }
@@ -64,6 +71,7 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private:
     struct Elements {
@@ -78,7 +86,7 @@ private:
     void drawSurface(const Elements& e, const QVector4D& color, bool lit);
     void drawPolygonStencil(const Elements& fan, const QVector4D& color);
     void drawBox();
-    void drawOverlay(const LaneFrame& lane);
+    void updateOverlay();
     bool nearBody(const QPointF& pixel) const;
     QVector3D anchorUnder(const QPointF& pixel) const;
 
@@ -90,6 +98,9 @@ private:
     QString m_title;
     quint64 m_paints = 0;
     bool m_glReady = false;
+    // Text and legend are child widgets over the GL image (composited by Qt, kept in grab()).
+    QLabel* m_info = nullptr;
+    StrainLegend* m_legend = nullptr;
 
     // GL objects (made in initializeGL, freed on aboutToBeDestroyed).
     std::unique_ptr<QOpenGLShaderProgram> m_lines, m_normals, m_surface, m_points;

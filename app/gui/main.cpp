@@ -5,10 +5,12 @@
 //
 // --screenshot runs (as fast as possible) to the given simulated time, renders the main
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
+#include <algorithm>
 #include <cstdio>
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QElapsedTimer>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -36,7 +38,8 @@ int main(int argc, char** argv) {
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
     format.setStencilBufferSize(8);
-    format.setSamples(4);
+    // Multisampling smooths edges; ELASTIC_LAB_MSAA=0 turns it off (software GL is faster so).
+    format.setSamples(qEnvironmentVariableIsSet("ELASTIC_LAB_MSAA") ? qEnvironmentVariableIntValue("ELASTIC_LAB_MSAA") : 4);
     QSurfaceFormat::setDefaultFormat(format);
 
     QApplication app(argc, argv);
@@ -65,7 +68,11 @@ int main(int argc, char** argv) {
     const QCommandLineOption optionsOpt(QStringLiteral("show"),
                                         QStringLiteral("Display switches: strain, forces, normals, noparticles, nofaces."),
                                         QStringLiteral("LIST"));
-    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, shotOpt, afterOpt, optionsOpt});
+    const QCommandLineOption fpsOpt(QStringLiteral("measure-fps"),
+                                    QStringLiteral("Run in real time for SECONDS of wall time, print frame rate, "
+                                                   "step rate and GUI latency, exit."),
+                                    QStringLiteral("SECONDS"));
+    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, shotOpt, afterOpt, optionsOpt, fpsOpt});
     parser.process(app);
 
     // Scene and parameters, validated by simcore's table.
@@ -108,6 +115,40 @@ int main(int argc, char** argv) {
     if (preset) controller->setStartKick(preset->kickInner, preset->kickOuter);
     window.startScene(params, integrators);
     window.show();
+
+    if (parser.isSet(fpsOpt)) {
+        // Frames painted per wall second while the simulation runs in real time, and how late
+        // a 10 ms GUI timer fires (the UI's responsiveness).
+        const double seconds = std::max(1.0, parser.value(fpsOpt).toDouble());
+        auto* wall = new QElapsedTimer;
+        auto* probe = new QTimer(&window);
+        auto* worstLate = new double(0.0);
+        auto* last = new qint64(0);
+        QObject::connect(probe, &QTimer::timeout, &window, [=] {
+            const qint64 now = wall->nsecsElapsed();
+            if (*last > 0) *worstLate = std::max(*worstLate, (now - *last) * 1e-6 - 10.0);
+            *last = now;
+        });
+        QTimer::singleShot(1500, &window, [=, &window] {
+            controller->run();
+            wall->start();
+            probe->start(10);
+            const quint64 paints0 = window.viewports().empty() ? 0 : window.viewports().front()->paintCount();
+            QTimer::singleShot(int(seconds * 1000), &window, [=, &window] {
+                const double elapsed = wall->nsecsElapsed() * 1e-9;
+                const quint64 paints = window.viewports().empty() ? 0 : window.viewports().front()->paintCount();
+                const elui::FramePtr f = controller->latest();
+                std::printf("particles %d, frames/s %.1f, steps/s %.0f, simulated/wall %.3f, worst GUI timer delay "
+                            "%.1f ms, falling behind %s\n",
+                            f->scene->topology.particleCount(), double(paints - paints0) / elapsed,
+                            f->stepsPerSecond, f->lanes[0].diagnostics.time / elapsed, *worstLate,
+                            f->fallingBehind ? "yes" : "no");
+                std::fflush(stdout);
+                QApplication::exit(0);
+            });
+        });
+        return app.exec();
+    }
 
     if (screenshot) {
         const QString path = parser.value(shotOpt);
