@@ -17,9 +17,12 @@ namespace {
 
 // Spectral radius of a real 2x2 matrix.
 double radius2(double a, double b, double c, double d) {
-    const double tr = a + d, det = a * d - b * c;
-    const std::complex<double> disc = std::sqrt(std::complex<double>(tr * tr / 4.0 - det, 0.0));
-    return std::max(std::abs(tr / 2.0 + disc), std::abs(tr / 2.0 - disc));
+    // Eigenvalues tr/2 +- sqrt(D) with D = ((a - d)/2)^2 + b c: the same as tr^2/4 - det but
+    // without the cancellation that makes a double root at 1 look like 1 + 1e-9.
+    const double half = 0.5 * (a + d), diff = 0.5 * (a - d);
+    const double disc = diff * diff + b * c;
+    if (disc >= 0.0) return std::abs(half) + std::sqrt(disc);
+    return std::sqrt(std::abs(a * d - b * c));  // complex pair: |lambda|^2 = det
 }
 
 // One step of a partitioned method on (x, v) for x'' = -w^2 x - c v.
@@ -147,6 +150,7 @@ std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::
     if (!p.isExplicit("perturb")) p.set("perturb", spec.perturb);
     if (auto error = p.set("dt", dt)) return *error;
     Simulation sim(p, integrator);
+    sim.setThreads(1);
     IntegratorOptions options;
     options.fixedStep = true;  // rk45 at a fixed step: an adaptive step is always "stable"
     sim.setIntegratorOptions(options);

@@ -56,8 +56,24 @@ int commandStability(const std::vector<std::string>& args) {
                     modes.omegaMax > 0 ? modes.dampingAtMax / (2 * modes.omegaMax) : 0.0, modes.fastestDamping);
         if (modes.unstableModes) std::printf("; %d physically unstable modes excluded", modes.unstableModes);
         std::printf("\n");
-        std::printf("regions      undamped limits h*w: euler none, midpoint none, rk4 2.83, rk45 3.3 (fixed step), "
-                    "symplectic-euler 2, verlet 2, implicit-euler unlimited; damping moves them (see docs/numerics.md)\n\n");
+        // Each method's region, summarised by its limit on one undamped mode (w = 1) and on a
+        // purely damped one (real axis), computed from the same functions as the prediction.
+        std::printf("regions      limit of h*w on an undamped mode / of h*c on a pure decay rate c:");
+        for (const std::string& name : spec.integrators) {
+            simcore::LinearModes one;
+            one.omega2 = {1.0};
+            one.damping = {0.0};
+            one.omegaMax = 1.0;
+            const double undamped = simcore::predictedStableStep(name, one, 100.0);
+            // real axis: the overdamped limit c -> infinity has rates c and w^2/c -> a decay rate
+            // of 1 alone is the mode w^2 = 0, c = 1.
+            simcore::LinearModes decay;
+            decay.omega2 = {0.0};
+            decay.damping = {1.0};
+            const double real = simcore::predictedStableStep(name, decay, 100.0);
+            std::printf(" %s %s/%s", name.c_str(), stepText(undamped).c_str(), stepText(real).c_str());
+        }
+        std::printf("\n             (damping moves the undamped limits; see docs/numerics.md)\n\n");
         std::printf("%-17s %12s %12s %12s %9s %9s  %s\n", "integrator", "measured", "(unstable)", "predicted",
                     "h*w meas", "h*w pred", "what happens just above the measured limit");
     }
