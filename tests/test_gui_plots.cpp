@@ -10,6 +10,10 @@
 #include "plot_dock.h"
 #include "scenes.h"
 #include "simulation_controller.h"
+#include "studies_dialog.h"
+
+#include <QTableWidget>
+#include "qcustomplot.h"
 
 using namespace elui;
 using simcore::SceneKind;
@@ -102,6 +106,62 @@ private slots:
         QVERIFY(!f.readLine().contains("volume"));
         // An unwritable path leaves an error, not a half file.
         QVERIFY(!writeCsv("/nonexistent-dir/x.csv", SceneKind::Ring2d, rows).isEmpty());
+    }
+
+    void workPrecisionStudyRunsOnAThread() {
+        // simcore's study (the CLI's code) behind the dialog: rows, table, plot and orders.
+        simcore::ParameterSet p(SceneKind::Spring1d);
+        WorkPrecisionDialog dialog(p);
+        dialog.setSteps("0.01 0.005 0.0025");
+        dialog.setDuration(0.5);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QVERIFY(dialog.busy());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+        const auto& rows = dialog.result().rows;
+        QCOMPARE(int(rows.size()), 4 * 3);  // euler, midpoint, rk4, verlet x 3 steps
+        QCOMPARE(dialog.table()->rowCount(), 12);
+        QCOMPARE(dialog.plot()->graphCount(), 2 * 4);  // error vs run time and vs DT, per integrator
+        // RK4's error falls far faster with DT than Euler's.
+        auto err = [&](const char* name, double dt) {
+            for (const auto& r : rows)
+                if (r.item.integrator == name && std::abs(r.dt - dt) < 1e-12) return r.errorMax;
+            return -1.0;
+        };
+        QVERIFY(err("rk4", 0.0025) < err("euler", 0.0025) * 1e-3);
+        if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
+            dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/study.png");
+    }
+
+    void stabilityScanCancels() {
+        StabilityDialog dialog(simcore::ParameterSet(SceneKind::Sphere3d));
+        dialog.setDuration(3.0);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QTest::qWait(50);
+        dialog.cancel();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 30000);
+        QVERIFY(!dialog.busy());
+        QVERIFY(dialog.rows().size() < 4);  // stopped before scanning every chosen integrator
+    }
+
+    void stabilityScanFindsTheLimits() {
+        StabilityDialog dialog(simcore::ParameterSet(SceneKind::Spring1d));
+        dialog.setDuration(1.0);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, 60000);
+        QCOMPARE(int(dialog.rows().size()), 4);
+        QCOMPARE(dialog.table()->rowCount(), 4);
+        QCOMPARE(dialog.plot()->graphCount(), 2);  // measured and predicted
+        double euler = 0, rk4 = 0;
+        for (const auto& r : dialog.rows()) {
+            if (r.integrator == "euler") euler = r.stable;
+            if (r.integrator == "rk4") rk4 = r.stable;
+        }
+        QVERIFY2(rk4 > euler, "RK4 is stable at larger steps than explicit Euler");
+        if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
+            dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/stability.png");
     }
 
     void plotExports() {

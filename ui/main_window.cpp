@@ -25,6 +25,7 @@
 #include "scene_dock.h"
 #include "scenes.h"
 #include "simulation_controller.h"
+#include "studies_dialog.h"
 #include "viewport.h"
 
 namespace elui {
@@ -151,6 +152,16 @@ void MainWindow::createMenus() {
     presets->setToolTipsVisible(true);
 
     m_studiesMenu = menuBar()->addMenu(tr("S&tudies"));
+    m_studiesMenu->addAction(tr("&Work-precision study..."), this, [this] {
+        auto* d = new WorkPrecisionDialog(m_controller->parameters(), this);
+        d->setAttribute(Qt::WA_DeleteOnClose);
+        d->show();
+    });
+    m_studiesMenu->addAction(tr("&Stability scan..."), this, [this] {
+        auto* d = new StabilityDialog(m_controller->parameters(), this);
+        d->setAttribute(Qt::WA_DeleteOnClose);
+        d->show();
+    });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_help);

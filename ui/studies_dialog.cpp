@@ -1,0 +1,424 @@
+#include "studies_dialog.h"
+
+#include <cmath>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSplitter>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include "export.h"
+#include "integrators.h"
+#include "output.h"
+#include "parameter_dock.h"
+#include "plot_series.h"
+#include "qcustomplot.h"
+#include "scenes.h"
+
+namespace elui {
+
+namespace {
+const QColor kPalette[] = {QColor(200, 30, 30), QColor(30, 120, 200), QColor(30, 150, 60), QColor(150, 60, 170),
+                           QColor(230, 130, 0), QColor(0, 150, 150), QColor(100, 100, 100)};
+
+QColor integratorColor(const QString& name) {
+    int i = 0;
+    for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {
+        if (toQString(info.name) == name) return kPalette[i % 7];
+        ++i;
+    }
+    return Qt::black;
+}
+
+QString number(double v) { return QString::number(v, 'g', 4); }
+
+void setupLogAxis(QCPAxis* axis, const QString& label) {
+    axis->setScaleType(QCPAxis::stLogarithmic);
+    axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+    axis->setNumberFormat(QStringLiteral("eb"));
+    axis->setNumberPrecision(0);
+    axis->setLabel(label);
+}
+
+QString writeText(const QString& path, const QString& text) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) return QObject::tr("Could not open %1: %2").arg(path, file.errorString());
+    file.write(text.toUtf8());
+    if (!file.commit()) return QObject::tr("Could not write %1: %2").arg(path, file.errorString());
+    return {};
+}
+}  // namespace
+
+StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterSet& params, QWidget* parent)
+    : QDialog(parent), m_params(params) {
+    setWindowTitle(title);
+    resize(1000, 720);
+    auto* layout = new QVBoxLayout(this);
+    auto* top = new QHBoxLayout;
+    auto* scene = new QLabel(tr("Scene: <b>%1</b> with the current parameters")
+                                 .arg(toQString(simcore::sceneInfo(params.kind()).name)),
+                             this);
+    layout->addWidget(scene);
+    auto* integrators = new QWidget(this);
+    auto* grid = new QGridLayout(integrators);
+    grid->setContentsMargins(0, 0, 0, 0);
+    int i = 0;
+    for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {
+        auto* box = new QCheckBox(toQString(info.name), integrators);
+        const QString name = toQString(info.name);
+        box->setChecked(name == "euler" || name == "midpoint" || name == "rk4" || name == "verlet");
+        grid->addWidget(box, i / 4, i % 4);
+        m_integrators.push_back(box);
+        ++i;
+    }
+    top->addWidget(integrators, 2);
+    m_options = new QWidget(this);
+    new QFormLayout(m_options);
+    m_options->layout()->setContentsMargins(0, 0, 0, 0);
+    top->addWidget(m_options, 1);
+    layout->addLayout(top);
+
+    auto* controls = new QHBoxLayout;
+    m_run = new QPushButton(tr("Run"), this);
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setEnabled(false);
+    m_export = new QPushButton(tr("Export..."), this);
+    m_export->setEnabled(false);
+    m_progress = new QProgressBar(this);
+    m_status = new QLabel(this);
+    controls->addWidget(m_run);
+    controls->addWidget(m_cancel);
+    controls->addWidget(m_progress, 1);
+    controls->addWidget(m_status, 1);
+    controls->addWidget(m_export);
+    layout->addLayout(controls);
+
+    auto* split = new QSplitter(Qt::Vertical, this);
+    m_plot = new QCustomPlot(split);
+    m_plot->setMinimumHeight(260);
+    m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    m_table = new QTableWidget(split);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    split->addWidget(m_plot);
+    split->addWidget(m_table);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 2);
+    layout->addWidget(split, 1);
+    m_summary = new QLabel(this);
+    m_summary->setWordWrap(true);
+    layout->addWidget(m_summary);
+
+    connect(m_run, &QPushButton::clicked, this, &StudyDialogBase::start);
+    connect(m_cancel, &QPushButton::clicked, this, &StudyDialogBase::cancel);
+    connect(m_export, &QPushButton::clicked, this, &StudyDialogBase::exportResults);
+    connect(&m_watcher, &QFutureWatcher<void>::finished, this, [this] {
+        m_busy = false;
+        m_run->setEnabled(true);
+        m_cancel->setEnabled(false);
+        const bool cancelled = m_cancelFlag && m_cancelFlag->load();
+        m_status->setText(cancelled ? tr("Cancelled: partial results") : tr("Done"));
+        present();
+        m_export->setEnabled(true);
+        emit finished();
+    });
+}
+
+StudyDialogBase::~StudyDialogBase() {
+    // Never leave a computation running against a destroyed dialog.
+    if (m_cancelFlag) m_cancelFlag->store(true);
+    m_watcher.waitForFinished();
+}
+
+QStringList StudyDialogBase::chosenIntegrators() const {
+    QStringList out;
+    for (QCheckBox* box : m_integrators)
+        if (box->isChecked()) out << box->text();
+    return out;
+}
+
+void StudyDialogBase::setProgress(int done, int total, const QString& what) {
+    QMetaObject::invokeMethod(
+        this,
+        [this, done, total, what] {
+            m_progress->setMaximum(std::max(1, total));
+            m_progress->setValue(done);
+            m_status->setText(what);
+        },
+        Qt::QueuedConnection);
+}
+
+void StudyDialogBase::start() {
+    if (m_busy) return;
+    if (chosenIntegrators().isEmpty()) {
+        m_status->setText(tr("Choose at least one integrator"));
+        return;
+    }
+    if (const QString problem = validate(); !problem.isEmpty()) {
+        m_status->setText(problem);
+        return;
+    }
+    m_busy = true;
+    m_run->setEnabled(false);
+    m_cancel->setEnabled(true);
+    m_export->setEnabled(false);
+    m_progress->setValue(0);
+    m_cancelFlag = std::make_shared<std::atomic<bool>>(false);
+    auto flag = m_cancelFlag;
+    m_watcher.setFuture(QtConcurrent::run([this, flag] { compute(flag.get()); }));
+}
+
+void StudyDialogBase::cancel() {
+    if (m_cancelFlag) m_cancelFlag->store(true);
+    m_status->setText(tr("Cancelling..."));
+}
+
+void StudyDialogBase::exportResults() {
+    const QString svgText = svg();
+    const QString filter = svgText.isEmpty() ? tr("CSV table (*.csv);;PNG plot (*.png);;PDF plot (*.pdf)")
+                                             : tr("CSV table (*.csv);;SVG plot (*.svg);;PNG plot (*.png);;PDF plot (*.pdf)");
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export results"), QStringLiteral("study.csv"), filter);
+    if (path.isEmpty()) return;
+    QString error;
+    if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) error = writeText(path, csv());
+    else if (path.endsWith(QLatin1String(".svg"), Qt::CaseInsensitive)) error = writeText(path, svgText);
+    else if (path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) error = writePlots(path, {m_plot}, {PlotSpec{"study", windowTitle(), {}, {}}});
+    else error = writeImage(path, m_plot->toPixmap(1000, 600).toImage());
+    if (!error.isEmpty()) QMessageBox::warning(this, tr("Export"), error);
+    else m_status->setText(tr("Wrote %1").arg(path));
+}
+
+// ---------------------------------------------------------------- work-precision
+
+WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent)
+    : StudyDialogBase(tr("Work-precision study"), params, parent) {
+    auto* form = static_cast<QFormLayout*>(m_options->layout());
+    m_dts = new QLineEdit(QStringLiteral("0.01 0.005 0.0025 0.00125"), m_options);
+    m_dts->setToolTip(tr("Fixed steps DT [s], separated by spaces; T must be a multiple of each"));
+    m_duration = new QLineEdit(QStringLiteral("1"), m_options);
+    m_reference = new QComboBox(m_options);
+    m_reference->addItems({"auto", "exact", "rk4", "rk45"});
+    form->addRow(tr("DT values [s]"), m_dts);
+    form->addRow(tr("Duration T [s]"), m_duration);
+    form->addRow(tr("Reference"), m_reference);
+    m_plot->plotLayout()->clear();
+    auto* left = new QCPAxisRect(m_plot);
+    auto* right = new QCPAxisRect(m_plot);
+    m_plot->plotLayout()->addElement(0, 0, left);
+    m_plot->plotLayout()->addElement(0, 1, right);
+    setupLogAxis(left->axis(QCPAxis::atBottom), tr("run time [s]"));
+    setupLogAxis(left->axis(QCPAxis::atLeft), tr("max position error [m]"));
+    setupLogAxis(right->axis(QCPAxis::atBottom), tr("DT [s]"));
+    setupLogAxis(right->axis(QCPAxis::atLeft), tr("max position error [m]"));
+    m_plot->legend = new QCPLegend;
+    right->insetLayout()->addElement(m_plot->legend, Qt::AlignBottom | Qt::AlignRight);
+    m_plot->legend->setLayer(QStringLiteral("legend"));
+    m_plot->legend->setVisible(true);
+}
+
+void WorkPrecisionDialog::setSteps(const QString& dts) { m_dts->setText(dts); }
+void WorkPrecisionDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
+
+simcore::StudySpec WorkPrecisionDialog::spec() const {
+    simcore::StudySpec s;
+    s.params = m_params;
+    for (const QString& name : chosenIntegrators()) s.integrators.push_back(name.toStdString());
+    for (const QString& t : m_dts->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) s.dts.push_back(t.toDouble());
+    s.duration = m_duration->text().toDouble();
+    s.reference = m_reference->currentText().toStdString();
+    return s;
+}
+
+QString WorkPrecisionDialog::validate() const {
+    if (auto problem = simcore::validateStudy(spec())) return QString::fromStdString(*problem);
+    return {};
+}
+
+void WorkPrecisionDialog::compute(const std::atomic<bool>* cancel) {
+    m_spec = spec();
+    m_result = simcore::runStudy(
+        m_spec, [this](const simcore::StudyProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
+        cancel);
+}
+
+void WorkPrecisionDialog::present() {
+    const auto& rows = m_result.rows;
+    const QStringList headers = {tr("integrator"), tr("DT [s]"), tr("steps"), tr("force evals"), tr("run time [s]"),
+                                 tr("error at T [m]"), tr("max error [m]"), tr("energy error [J]"), tr("status")};
+    m_table->clear();
+    m_table->setColumnCount(int(headers.size()));
+    m_table->setHorizontalHeaderLabels(headers);
+    m_table->setRowCount(int(rows.size()));
+    for (int r = 0; r < int(rows.size()); ++r) {
+        const simcore::StudyRow& row = rows[std::size_t(r)];
+        const QStringList cells = {QString::fromStdString(row.item.integrator), number(row.dt), QString::number(row.steps),
+                                   QString::number(row.forceEvaluations), number(row.wallSeconds),
+                                   row.ok ? number(row.errorFinal) : QString(), row.ok ? number(row.errorMax) : QString(),
+                                   row.ok ? number(row.errorEnergy) : QString(), QString::fromStdString(row.status())};
+        for (int c = 0; c < cells.size(); ++c) m_table->setItem(r, c, new QTableWidgetItem(cells[c]));
+    }
+    m_table->resizeColumnsToContents();
+
+    m_plot->clearPlottables();
+    QCPAxisRect* left = m_plot->axisRect(0);
+    QCPAxisRect* right = m_plot->axisRect(1);
+    std::map<QString, std::pair<QCPGraph*, QCPGraph*>> graphs;
+    for (const simcore::StudyRow& row : rows) {
+        if (!row.ok || !(row.errorMax > 0) || !(row.wallSeconds > 0)) continue;
+        const QString name = QString::fromStdString(row.item.integrator);
+        auto& g = graphs[name];
+        if (!g.first) {
+            const QPen pen(integratorColor(name), 1.6);
+            g.first = m_plot->addGraph(left->axis(QCPAxis::atBottom), left->axis(QCPAxis::atLeft));
+            g.second = m_plot->addGraph(right->axis(QCPAxis::atBottom), right->axis(QCPAxis::atLeft));
+            for (QCPGraph* graph : {g.first, g.second}) {
+                graph->setPen(pen);
+                graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 6));
+                graph->setName(name);
+            }
+            g.first->removeFromLegend();
+        }
+        g.first->addData(row.wallSeconds, row.errorMax);
+        g.second->addData(row.dt, row.errorMax);
+    }
+    for (QCPAxisRect* rect : {left, right}) {
+        bool any = false;
+        for (QCPGraph* graph : rect->graphs()) {
+            graph->rescaleAxes(any);
+            any = true;
+        }
+        for (QCPAxis* axis : {rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft)})
+            axis->setRange(axis->range().lower / 2, axis->range().upper * 2);
+    }
+    m_plot->replot();
+
+    QString summary = tr("Reference: %1 (its own error about %2 m).")
+                          .arg(QString::fromStdString(m_result.reference.description))
+                          .arg(number(m_result.reference.estimatedError));
+    for (const simcore::OrderFit& fit : simcore::fitOrders(rows, m_result.reference.estimatedError))
+        if (fit.points >= 2)
+            summary += tr(" %1: order %2.").arg(QString::fromStdString(fit.integrator)).arg(fit.order, 0, 'f', 2);
+    m_summary->setText(summary);
+}
+
+QString WorkPrecisionDialog::csv() const {
+    std::string text = simcore::studyCsvHeader();
+    for (const simcore::StudyRow& row : m_result.rows) text += simcore::studyCsvRow(row);
+    return QString::fromStdString(text);
+}
+
+QString WorkPrecisionDialog::svg() const {
+    return QString::fromStdString(simcore::studySvg(m_result.rows, "work-precision: " +
+                                                                       std::string(simcore::sceneInfo(m_params.kind()).name)));
+}
+
+// ---------------------------------------------------------------- stability scan
+
+StabilityDialog::StabilityDialog(const simcore::ParameterSet& params, QWidget* parent)
+    : StudyDialogBase(tr("Stability scan"), params, parent) {
+    auto* form = static_cast<QFormLayout*>(m_options->layout());
+    m_duration = new QLineEdit(QStringLiteral("2"), m_options);
+    m_duration->setToolTip(tr("Each trial runs this long; a run that does not blow up and whose energy stays "
+                              "bounded is stable"));
+    form->addRow(tr("Duration T [s]"), m_duration);
+    auto* rect = m_plot->axisRect();
+    setupLogAxis(rect->axis(QCPAxis::atLeft), tr("largest stable DT [s]"));
+    m_plot->xAxis->setLabel(tr("integrator"));
+    m_plot->legend->setVisible(true);
+}
+
+void StabilityDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
+
+void StabilityDialog::compute(const std::atomic<bool>* cancel) {
+    m_spec = simcore::StabilitySpec{};
+    m_spec.params = m_params;
+    for (const QString& name : chosenIntegrators()) m_spec.integrators.push_back(name.toStdString());
+    m_spec.duration = m_duration->text().toDouble() > 0 ? m_duration->text().toDouble() : 2.0;
+    setProgress(0, int(m_spec.integrators.size()), tr("linearising"));
+    m_modes = simcore::linearModes(m_params);
+    m_rows = simcore::runStability(
+        m_spec, m_modes,
+        [this](const simcore::StabilityProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
+        cancel);
+}
+
+void StabilityDialog::present() {
+    const QStringList headers = {tr("integrator"), tr("stable DT [s]"), tr("unstable DT [s]"), tr("predicted DT [s]"),
+                                 tr("h·ω at stable"), tr("why it failed above")};
+    m_table->clear();
+    m_table->setColumnCount(int(headers.size()));
+    m_table->setHorizontalHeaderLabels(headers);
+    m_table->setRowCount(int(m_rows.size()));
+    auto dt = [](double v) {
+        if (std::isinf(v)) return QObject::tr("unlimited");
+        if (v <= 0) return QObject::tr("none");
+        return number(v);
+    };
+    for (int r = 0; r < int(m_rows.size()); ++r) {
+        const simcore::StabilityRow& row = m_rows[std::size_t(r)];
+        const QStringList cells = {QString::fromStdString(row.integrator), dt(row.stable), dt(row.unstable),
+                                   dt(row.predicted), number(row.stable * m_modes.omegaMax),
+                                   QString::fromStdString(row.reasonAbove)};
+        for (int c = 0; c < cells.size(); ++c) m_table->setItem(r, c, new QTableWidgetItem(cells[c]));
+    }
+    m_table->resizeColumnsToContents();
+    m_table->horizontalHeader()->setStretchLastSection(true);
+
+    m_plot->clearPlottables();
+    QSharedPointer<QCPAxisTickerText> ticker(new QCPAxisTickerText);
+    QCPGraph* measured = m_plot->addGraph();
+    measured->setName(tr("measured"));
+    measured->setLineStyle(QCPGraph::lsNone);
+    measured->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, QColor(200, 30, 30), 10));
+    QCPGraph* predicted = m_plot->addGraph();
+    predicted->setName(tr("linearised prediction"));
+    predicted->setLineStyle(QCPGraph::lsNone);
+    predicted->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QColor(30, 90, 200), 12));
+    double lo = 1.0, hi = 1e-5;
+    for (int r = 0; r < int(m_rows.size()); ++r) {
+        const simcore::StabilityRow& row = m_rows[std::size_t(r)];
+        ticker->addTick(r, QString::fromStdString(row.integrator));
+        const double shownMax = m_spec.hMax;
+        const double s = std::isinf(row.stable) ? shownMax : row.stable;
+        const double p = std::isinf(row.predicted) ? shownMax : row.predicted;
+        if (s > 0) {
+            measured->addData(r, s);
+            lo = std::min(lo, s);
+            hi = std::max(hi, s);
+        }
+        if (p > 0) {
+            predicted->addData(r, p);
+            lo = std::min(lo, p);
+            hi = std::max(hi, p);
+        }
+    }
+    m_plot->xAxis->setTicker(ticker);
+    m_plot->xAxis->setRange(-0.5, double(m_rows.size()) - 0.5);
+    m_plot->yAxis->setRange(lo / 2, hi * 2);
+    m_plot->replot();
+    m_summary->setText(tr("Highest mode of the linearised body: ω = %1 rad/s (damping %2 1/s), %3 free coordinates. "
+                          "A method is stable at DT when no mode grows; measured by bisection over %4 s runs.")
+                           .arg(number(m_modes.omegaMax), number(m_modes.dampingAtMax))
+                           .arg(m_modes.freeCoordinates)
+                           .arg(m_spec.duration));
+}
+
+QString StabilityDialog::csv() const {
+    std::string text = simcore::stabilityCsvHeader();
+    for (const simcore::StabilityRow& row : m_rows) text += simcore::stabilityCsvRow(row, m_modes);
+    return QString::fromStdString(text);
+}
+
+}  // namespace elui

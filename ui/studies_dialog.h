@@ -1,0 +1,118 @@
+#pragma once
+// Study dialogs: the work-precision study and the stability scan of simcore (study.h,
+// stability.h — the same code as `elastic-lab-cli study` / `stability`), run on a worker
+// thread with a progress bar and Cancel, their results plotted and exportable.
+
+#include <atomic>
+#include <memory>
+
+#include <QDialog>
+#include <QFutureWatcher>
+
+#include "params.h"
+#include "stability.h"
+#include "study.h"
+
+class QCheckBox;
+class QCustomPlot;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+class QComboBox;
+
+namespace elui {
+
+// Common frame: integrator choice, run/cancel, progress, table, plot, export.
+class StudyDialogBase : public QDialog {
+    Q_OBJECT
+public:
+    StudyDialogBase(const QString& title, const simcore::ParameterSet& params, QWidget* parent);
+    ~StudyDialogBase() override;
+    bool busy() const { return m_busy; }
+    QTableWidget* table() const { return m_table; }
+    QCustomPlot* plot() const { return m_plot; }
+    QPushButton* runButton() const { return m_run; }
+
+public slots:
+    void start();
+    void cancel();
+
+signals:
+    void finished();
+
+protected:
+    QStringList chosenIntegrators() const;
+    void setProgress(int done, int total, const QString& what);  // thread-safe
+    // Runs on the worker thread.
+    virtual void compute(const std::atomic<bool>* cancel) = 0;
+    // Back on the GUI thread: fill table and plot.
+    virtual void present() = 0;
+    virtual QString csv() const = 0;
+    virtual QString svg() const { return {}; }
+    virtual QString validate() const { return {}; }
+
+    simcore::ParameterSet m_params;
+    QWidget* m_options = nullptr;  // subclasses add their fields here (a QFormLayout)
+    QTableWidget* m_table = nullptr;
+    QCustomPlot* m_plot = nullptr;
+    QLabel* m_summary = nullptr;
+
+private:
+    void exportResults();
+    std::vector<QCheckBox*> m_integrators;
+    QPushButton* m_run = nullptr;
+    QPushButton* m_cancel = nullptr;
+    QPushButton* m_export = nullptr;
+    QProgressBar* m_progress = nullptr;
+    QLabel* m_status = nullptr;
+    std::shared_ptr<std::atomic<bool>> m_cancelFlag;
+    QFutureWatcher<void> m_watcher;
+    bool m_busy = false;
+};
+
+class WorkPrecisionDialog : public StudyDialogBase {
+    Q_OBJECT
+public:
+    WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    const simcore::StudyResult& result() const { return m_result; }
+    void setSteps(const QString& dts);
+    void setDuration(double seconds);
+
+protected:
+    void compute(const std::atomic<bool>* cancel) override;
+    void present() override;
+    QString csv() const override;
+    QString svg() const override;
+    QString validate() const override;
+
+private:
+    simcore::StudySpec spec() const;
+    QLineEdit* m_dts = nullptr;
+    QLineEdit* m_duration = nullptr;
+    QComboBox* m_reference = nullptr;
+    simcore::StudySpec m_spec;
+    simcore::StudyResult m_result;
+};
+
+class StabilityDialog : public StudyDialogBase {
+    Q_OBJECT
+public:
+    StabilityDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    const std::vector<simcore::StabilityRow>& rows() const { return m_rows; }
+    void setDuration(double seconds);
+
+protected:
+    void compute(const std::atomic<bool>* cancel) override;
+    void present() override;
+    QString csv() const override;
+
+private:
+    QLineEdit* m_duration = nullptr;
+    simcore::StabilitySpec m_spec;
+    simcore::LinearModes m_modes;
+    std::vector<simcore::StabilityRow> m_rows;
+};
+
+}  // namespace elui
