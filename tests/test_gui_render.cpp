@@ -5,6 +5,7 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QMouseEvent>
 #include <QProcess>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
@@ -172,6 +173,55 @@ private slots:
         QVERIFY(f->lanes[1].divergence > 0.0 && f->lanes[2].divergence > 0.0);
         w.singleView();
         QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 1, 8000);
+    }
+
+    void mouseDragGrabsAndPulls_data() {
+        QTest::addColumn<SceneKind>("kind");
+        QTest::newRow("ring2d") << SceneKind::Ring2d;
+        QTest::newRow("sphere3d") << SceneKind::Sphere3d;
+    }
+    void mouseDragGrabsAndPulls() {
+        QFETCH(SceneKind, kind);
+        MainWindow w(false);
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        simcore::ParameterSet p(kind);
+        p.set("gravity", 0.0);
+        w.startScene(p, {"rk4"});
+        QVERIFY(waitForScene(w, kind));
+        Viewport* v = w.viewports().front();
+        const FramePtr f = w.controller()->latest();
+        // The topmost outer particle, projected to the widget.
+        int top = -1;
+        const auto& x = f->lanes[0].positions;
+        for (int i = 0; i < f->scene->topology.particleCount(); ++i)
+            if (f->scene->topology.layer[std::size_t(i)] == simcore::Layer::Outer &&
+                (top < 0 || x[3 * std::size_t(i) + 1] > x[3 * std::size_t(top) + 1]))
+                top = i;
+        QVERIFY(top >= 0);
+        const QMatrix4x4 mvp = v->camera().projection(v->size()) * v->camera().view();
+        const QVector3D ndc = mvp.map(QVector3D(x[3 * std::size_t(top)], x[3 * std::size_t(top) + 1], x[3 * std::size_t(top) + 2]));
+        const QPointF at((ndc.x() + 1) * 0.5 * v->width(), (1 - ndc.y()) * 0.5 * v->height());
+        auto send = [v](QEvent::Type type, QPointF pos, Qt::MouseButtons buttons) {
+            QMouseEvent e(type, pos, v->mapToGlobal(pos), Qt::LeftButton, buttons, Qt::NoModifier);
+            QApplication::sendEvent(v, &e);
+        };
+        send(QEvent::MouseButtonPress, at, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.active, 5000);
+        const int grabbed = w.controller()->latest()->lanes[0].pointer.particle;
+        QCOMPARE(grabbed, top);  // the particle under the cursor, not another one
+        send(QEvent::MouseMove, at + QPointF(0, -120), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.anchor.y() > x[3 * std::size_t(top) + 1] + 0.3,
+                                 5000);
+        w.controller()->run();
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].diagnostics.time > 0.3, 8000);
+        // Pulled up: the particle followed the anchor.
+        QVERIFY(w.controller()->latest()->lanes[0].positions[3 * std::size_t(top) + 1] > x[3 * std::size_t(top) + 1] + 0.05);
+        QVERIFY(w.controller()->latest()->lanes[0].diagnostics.workPointer != 0.0);
+        send(QEvent::MouseButtonRelease, at + QPointF(0, -120), Qt::NoButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].pointer.active, 5000);
+        w.controller()->pause();
     }
 
     void screenshotFromTheCommandLine() {
