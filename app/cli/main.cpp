@@ -18,8 +18,11 @@ commands:
   integrators                     list the integrators
   run --scene S [--set key=value]... [--integrator NAME] [--dt H] [--duration T]
       [--csv FILE] [--every N] [--state FILE] [--save-scene FILE.json] [--quiet]
+      [--atol A] [--rtol R] [--fixed-step] [--error-estimate] [--newton N]
                                   run headless; CSV row every N steps, final state table;
-                                  S may be a scene file (.json), which can carry a saved state
+                                  S may be a scene file (.json), which can carry a saved state;
+                                  rk45 tolerances (or --fixed-step), step-doubling error_estimate
+                                  for fixed-step methods, Newton iterations of implicit-euler
 
   bench --scene S [--set key=value]... [--integrator NAME] [--steps N] [--threads K] [--header]
                                   time N steps: us/step, ns per spring evaluation, real-time factor, memory
