@@ -486,10 +486,17 @@ void Viewport::paintGL() {
     }
 
     if (m_options.forces && lane.forces.size() == x.size()) {
-        double largest = 0.0;
+        // Scale so that the 90th-percentile force is 0.4 body radii long: a few large contact
+        // forces must not shrink every other arrow to nothing.
+        std::vector<double> magnitude;
         for (std::size_t i = 0; i + 2 < lane.forces.size(); i += 3)
-            largest = std::max(largest, std::hypot(double(lane.forces[i]), double(lane.forces[i + 1]),
-                                                   double(lane.forces[i + 2])));
+            magnitude.push_back(std::hypot(double(lane.forces[i]), double(lane.forces[i + 1]), double(lane.forces[i + 2])));
+        double largest = 0.0;
+        if (!magnitude.empty()) {
+            auto nth = magnitude.begin() + std::ptrdiff_t(0.9 * double(magnitude.size() - 1));
+            std::nth_element(magnitude.begin(), nth, magnitude.end());
+            largest = *nth / 0.66;
+        }
         if (largest > 0.0) {
             const float scale = float(0.6 * scene.bodyRadius / largest);
             std::vector<float> v;

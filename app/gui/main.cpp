@@ -66,7 +66,8 @@ int main(int argc, char** argv) {
     const QCommandLineOption afterOpt(QStringLiteral("after"), QStringLiteral("Simulated time before the screenshot."),
                                       QStringLiteral("SECONDS"), QStringLiteral("0"));
     const QCommandLineOption optionsOpt(QStringLiteral("show"),
-                                        QStringLiteral("Display switches: strain, forces, normals, noparticles, nofaces."),
+                                        QStringLiteral("Display switches, comma separated: strain, forces, normals, noparticles, "
+                                                       "nofaces, nostructural, noradius, noshear, nobox."),
                                         QStringLiteral("LIST"));
     const QCommandLineOption fpsOpt(QStringLiteral("measure-fps"),
                                     QStringLiteral("Run in real time for SECONDS of wall time, print frame rate, "
@@ -107,6 +108,10 @@ int main(int argc, char** argv) {
             else if (s == QLatin1String("normals")) o.normals = true;
             else if (s == QLatin1String("noparticles")) o.particles = false;
             else if (s == QLatin1String("nofaces")) o.faces = false;
+            else if (s == QLatin1String("nostructural")) o.springs[0] = false;
+            else if (s == QLatin1String("noradius")) o.springs[1] = false;
+            else if (s == QLatin1String("noshear")) o.springs[2] = false;
+            else if (s == QLatin1String("nobox")) o.box = false;
             else return fail(QStringLiteral("unknown --show switch '%1'").arg(s));
         }
         window.setViewOptions(o);
