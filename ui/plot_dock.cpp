@@ -40,7 +40,7 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
 
     m_replotTimer = new QTimer(this);
     m_replotTimer->setSingleShot(true);
-    m_replotTimer->setInterval(40);
+    m_replotTimer->setInterval(100);  // 10 replots a second are plenty for a trace
     connect(m_replotTimer, &QTimer::timeout, this, &PlotDock::replotNow);
     connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
             [this] { setWindow(m_windowCombo->currentData().toDouble()); });

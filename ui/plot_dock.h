@@ -1,7 +1,7 @@
 #pragma once
 // PlotDock: live QCustomPlot graphs of lane 0's time series (volume, pressure, energies).
 //
-// Rows arrive as they are recorded; the plots are marked dirty and replotted at most ~25
+// Rows arrive as they are recorded; the plots are marked dirty and replotted at most 10
 // times a second (queued replot), whatever the step rate. Rolling window or full history;
 // autoscale, or zoom and pan by mouse (autoscale switches off when the user zooms).
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <QElapsedTimer>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -113,6 +115,10 @@ void RunDock::showFrame(const FramePtr& frame) {
     if (speedIndex != m_speed->currentIndex()) m_speed->setCurrentIndex(speedIndex);
     m_updating = false;
 
+    // While running, the numbers change every frame: five updates a second are readable and
+    // leave the GUI thread free; a paused or stepped frame always shows at once.
+    if (frame->running && m_lastReadout.isValid() && m_lastReadout.elapsed() < 200) return;
+    m_lastReadout.start();
     const simcore::Diagnostics& d = lane.diagnostics;
     auto row = [](const QString& name, const QString& value) {
         return QStringLiteral("<tr><td>%1&nbsp;</td><td align=right>%2</td></tr>").arg(name, value);

@@ -3,6 +3,7 @@
 // (simulated time, wall time, steps per second, error estimate, divergence side by side).
 
 #include <QDockWidget>
+#include <QElapsedTimer>
 
 #include "frame.h"
 
@@ -48,6 +49,7 @@ private:
     bool m_running = false;
     bool m_updating = false;
     double m_shownDt = -1.0;
+    QElapsedTimer m_lastReadout;
 };
 
 }  // namespace elui
