@@ -61,13 +61,16 @@ std::optional<std::string> readVectors(const Json& array, const std::string& key
 
 }  // namespace
 
-SceneFileResult parseSceneFile(const std::string& text) {
+// Everything but the exception boundary (parseSceneFile).
+static SceneFileResult parseSceneJson(const std::string& text) {
     Json root;
     try {
         root = Json::parse(text);
     } catch (const Json::parse_error& e) {
         return failure("not valid JSON at line " + std::to_string(lineOf(text, e.byte == 0 ? 0 : e.byte - 1)) +
                        ": " + e.what());
+    } catch (const Json::exception& e) {  // e.g. a number too large for a double (found by fuzzing)
+        return failure(std::string("not a readable scene file: ") + e.what());
     }
     if (!root.is_object()) return failure("a scene file must be a JSON object");
     if (auto error = onlyKeys(root, "the file", {"format", "version", "scene", "integrator", "parameters", "state"}))
@@ -129,6 +132,14 @@ SceneFileResult parseSceneFile(const std::string& text) {
         file.state = std::move(s);
     }
     return {std::move(file), {}};
+}
+
+SceneFileResult parseSceneFile(const std::string& text) {
+    try {
+        return parseSceneJson(text);
+    } catch (const nlohmann::json::exception& e) {  // e.g. get<> on a value out of range
+        return failure(std::string("not a readable scene file: ") + e.what());
+    }
 }
 
 SceneFileResult readSceneFile(const std::string& path) {
