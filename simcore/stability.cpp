@@ -88,6 +88,23 @@ LinearModes linearModes(const ParameterSet& params) {
             unit[j] = 0.0;
         }
         A = 0.5 * (A + A.transpose());
+        if (m <= kExactStepLimit) {
+            modes.stiffness = A;
+            modes.damping2 = C;
+        }
+        if (m <= kExactEigenLimit) {
+            // y = [M^1/2 x, M^1/2 v]: y' = [[0, I], [-A, -C]] y (A, C as built are -M^-1/2 K M^-1/2
+            // and -M^-1/2 D M^-1/2), same eigenvalues as [[0, I], [M^-1 K, M^-1 D]].
+            Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2 * m, 2 * m);
+            J.topRightCorner(m, m).setIdentity();
+            J.bottomLeftCorner(m, m) = -A;
+            J.bottomRightCorner(m, m) = -C;
+            Eigen::EigenSolver<Eigen::MatrixXd> eig(J, false);
+            for (Eigen::Index i = 0; i < 2 * m; ++i) {
+                modes.eigenvalues.push_back(eig.eigenvalues()[i]);
+                if (std::abs(eig.eigenvalues()[i]) > std::abs(modes.fastest)) modes.fastest = eig.eigenvalues()[i];
+            }
+        }
         Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
         const Eigen::MatrixXd& phi = solver.eigenvectors();
         for (Eigen::Index i = 0; i < m; ++i) {
@@ -118,8 +135,80 @@ LinearModes linearModes(const ParameterSet& params) {
     return modes;
 }
 
+namespace {
+
+// Spectral radius of one step of a partitioned method on y'' = -A y - C y' (exact matrices).
+double partitionedRadius(const std::string& name, double h, const Eigen::MatrixXd& A, const Eigen::MatrixXd& C) {
+    const Eigen::Index m = A.rows();
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(m, m);
+    Eigen::MatrixXd S(2 * m, 2 * m);  // [x; v] -> [x1; v1]
+    if (name == "symplectic-euler") {
+        const Eigen::MatrixXd vx = -h * A, vv = I - h * C;  // v1 = vx x + vv v
+        S << I + h * vx, h * vv, vx, vv;
+    } else {  // velocity Verlet, damping at the half-step velocity
+        const Eigen::MatrixXd xx = I - 0.5 * h * h * A, xv = h * I - 0.5 * h * h * C;
+        const Eigen::MatrixXd hx = -0.5 * h * A, hv = I - 0.5 * h * C;  // v_half
+        // v1 = v_half + h/2 (-A x1 - C v_half)
+        const Eigen::MatrixXd vx = hx - 0.5 * h * (A * xx + C * hx);
+        const Eigen::MatrixXd vv = hv - 0.5 * h * (A * xv + C * hv);
+        S << xx, xv, vx, vv;
+    }
+    Eigen::EigenSolver<Eigen::MatrixXd> eig(S, false);
+    return eig.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+}  // namespace
+
 double predictedStableStep(const std::string& integrator, const LinearModes& modes, double hMax) {
     if (integrator == "implicit-euler") return std::numeric_limits<double>::infinity();
+    // (With physically unstable modes the exact step matrix grows for every h; the modal path
+    // can leave them out.)
+    if ((integrator == "symplectic-euler" || integrator == "verlet") && modes.stiffness.rows() > 0 &&
+        modes.unstableModes == 0) {
+        // Rigid modes are Jordan blocks at 1, whose computed eigenvalues scatter by ~sqrt(eps):
+        // hence the looser 1e-6.
+        auto stableExact = [&](double h) {
+            return partitionedRadius(integrator, h, modes.stiffness, modes.damping2) <= 1.0 + 1e-6;
+        };
+        double lo = 0.0, h = 1e-5;
+        if (!stableExact(h)) return 0.0;
+        while (h < hMax && stableExact(h)) lo = h, h *= 1.1;
+        if (h >= hMax && stableExact(hMax)) return std::numeric_limits<double>::infinity();
+        double hi = std::min(h, hMax);
+        for (int it = 0; it < 30; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (stableExact(mid) ? lo : hi) = mid;
+        }
+        return lo;
+    }
+    if (hasStabilityFunction(integrator) && !modes.eigenvalues.empty()) {
+        // Exact for the linear system: |R(h lambda)| <= 1 for every eigenvalue. Growing
+        // physical modes (Re lambda > 0) are excluded, as in the modal path.
+        double scale = 0.0;
+        for (const auto& l : modes.eigenvalues) scale = std::max(scale, std::abs(l));
+        std::vector<std::complex<double>> lambdas;
+        // Rigid-body modes (|lambda| ~ 0, with round-off of either sign) cannot limit a step.
+        for (const auto& l : modes.eigenvalues)
+            if (std::abs(l) > 1e-6 * scale && l.real() <= 1e-9 * scale) lambdas.push_back(l);
+        if (integrator == "euler" || integrator == "midpoint")
+            for (const auto& l : lambdas)
+                if (std::abs(l.real()) <= 1e-9 * scale && std::abs(l.imag()) > 1e-6 * scale) return 0.0;
+        auto stableExact = [&](double h) {
+            for (const auto& l : lambdas)
+                if (std::abs(stabilityFunction(integrator, h * l)) > 1.0 + 1e-9) return false;
+            return true;
+        };
+        double lo = 0.0, h = 1e-7;
+        if (!stableExact(h)) return 0.0;
+        while (h < hMax && stableExact(h)) lo = h, h *= 1.05;
+        if (h >= hMax && stableExact(hMax)) return std::numeric_limits<double>::infinity();
+        double hi = std::min(h, hMax);
+        for (int it = 0; it < 60; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (stableExact(mid) ? lo : hi) = mid;
+        }
+        return lo;
+    }
     // Euler's and Heun's regions touch the imaginary axis only at 0: an undamped oscillating
     // mode grows for every h (too slowly near 0 to see in double precision, hence explicit).
     if (integrator == "euler" || integrator == "midpoint")
@@ -248,10 +337,37 @@ std::vector<StabilityRow> runStability(const StabilitySpec& spec, const LinearMo
 
 std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {
     const Integrator& method = sim.integrator();
-    if (method.implicit() || method.name() == "rk45") return std::nullopt;
+    if (method.implicit() || method.adaptive()) return std::nullopt;
+    const std::string name(method.name());
+    char text[500];
+    // Small bodies (up to kWarningDenseLimit free coordinates, well under 0.1 s): the
+    // linearised prediction of this very method, the same as `stability` prints.
+    ParameterSet p = sim.parameters();
+    const int free = 3 * sim.particleCount();
+    if (free <= kWarningDenseLimit) {
+        const LinearModes modes = linearModes(p);
+        const double limit = predictedStableStep(name, modes, 10.0);
+        if (limit <= 0.0) {
+            // Euler and Heun grow on undamped modes for every dt; say so only when it matters
+            // (the growth rate ~ h w^2 / 2 per second is above 1/s).
+            if (sim.dt() * modes.omegaMax * modes.omegaMax / 2.0 < 1.0) return std::nullopt;
+            std::snprintf(text, sizeof text,
+                          "%s has no stable step on this body's undamped modes (highest w = %.3g rad/s): its "
+                          "energy grows for every dt, here by ~%.2g per second; use a smaller dt or another method",
+                          name.c_str(), modes.omegaMax, sim.dt() * modes.omegaMax * modes.omegaMax / 2.0);
+            return std::string(text);
+        }
+        if (sim.dt() <= limit) return std::nullopt;
+        std::snprintf(text, sizeof text,
+                      "dt = %g s is above the largest stable step of %s predicted from the linearised body, ~%.3g s "
+                      "(highest mode w = %.3g rad/s with damping c = %.3g 1/s); it will likely blow up "
+                      "(implicit-euler or rk45 will not)",
+                      sim.dt(), name.c_str(), limit, modes.omegaMax, modes.dampingAtMax);
+        return std::string(text);
+    }
+    // Large bodies: the per-particle rate estimate against the largest explicit reach.
     const double rate = sim.estimatedFastestRate();
     if (!(rate * sim.dt() > kExplicitStabilityLimit)) return std::nullopt;
-    char text[400];
     std::snprintf(text, sizeof text,
                   "dt = %g s is above the estimated explicit stability limit ~%.3g s (fastest spring rate ~%.3g "
                   "1/s); an explicit integrator will likely blow up (implicit-euler or rk45 will not)",

@@ -14,12 +14,19 @@
 // c_i = phi_i^T D phi_i (the diagonal of D in the modal basis: exact for proportional
 // damping, an approximation otherwise). Each mode is the scalar oscillator
 // x'' + c x' + w^2 x = 0; a method is stable at h when the spectral radius of its one-step
-// map on every mode is <= 1. Euler/midpoint/rk4/rk45/implicit-euler use their stability
-// function R(h lambda), symplectic Euler and velocity Verlet their 2x2 step matrix.
+// map on every mode is <= 1. Symplectic Euler and velocity Verlet use their 2x2 step matrix
+// per mode. Euler/midpoint/rk4/rk45/implicit-euler use their stability function R(h lambda)
+// on the exact eigenvalues lambda of the first-order system when the body has at most
+// kExactEigenLimit free coordinates (no damping approximation), on the modes otherwise;
+// symplectic Euler and Verlet use the spectral radius of their exact 2m x 2m step matrix up
+// to kExactStepLimit free coordinates (the modal damping is ambiguous for degenerate modes).
 //   undamped limits (h w):  euler none (grows for every h), midpoint none, rk4 2*sqrt(2),
 //   rk45 (fixed step) ~3.3, symplectic-euler 2, verlet 2, implicit-euler unlimited.
 
 #include <atomic>
+
+#include <Eigen/Core>
+#include <complex>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -35,6 +42,14 @@ struct LinearModes {
     bool dense = true;             // all modes (dense eigen-solver) or only the highest (power iteration)
     std::vector<double> omega2;    // w_i^2 [1/s^2], ascending; negative = unstable physical mode
     std::vector<double> damping;   // c_i [1/s]
+    // Exact eigenvalues of the first-order linearised system y' = [[0, I], [A, C]] y
+    // (A = M^-1 K, C = M^-1 D), when the body is small enough (kExactEigenLimit free
+    // coordinates). Methods with a stability function R use these (no modal approximation).
+    std::vector<std::complex<double>> eigenvalues;
+    std::complex<double> fastest{0.0, 0.0};  // the eigenvalue of largest modulus [1/s]
+    // Mass-normalised stiffness and damping, a = -A x - C v (kept up to kExactStepLimit free
+    // coordinates): the partitioned methods' exact step matrices are built from them.
+    Eigen::MatrixXd stiffness, damping2;
     double omegaMax = 0.0;         // highest frequency [rad/s]
     double dampingAtMax = 0.0;     // c of that mode [1/s]
     double fastestDamping = 0.0;   // largest c_i [1/s]
@@ -42,6 +57,8 @@ struct LinearModes {
 };
 
 // Linearised at the start state of the scene (with its perturbation).
+inline constexpr int kExactEigenLimit = 400;
+inline constexpr int kExactStepLimit = 120;
 LinearModes linearModes(const ParameterSet& params);
 
 // Spectral radius of one step of `integrator` on x'' + c x' + w^2 x = 0.
@@ -87,9 +104,12 @@ std::vector<StabilityRow> runStability(const StabilitySpec& spec, const LinearMo
                                        const std::atomic<bool>* cancel = nullptr);
 std::vector<std::string> shardNames(const std::vector<std::string>& names, int shardIndex, int shardCount);
 
-// The pre-run check: for an explicit fixed-step method, dt above the cheap estimate of the
-// largest stable step (Simulation::estimatedFastestRate, kExplicitStabilityLimit) gives a
-// warning text; rk45 adapts and implicit-euler has no such limit, so they never warn.
+// The pre-run check: for an explicit fixed-step method, dt above an estimate of its largest
+// stable step gives a warning text. Bodies up to kWarningDenseLimit free coordinates use the
+// method's linearised prediction (predictedStableStep: all modes, well under 0.1 s); larger
+// ones the per-particle rate of Simulation::estimatedFastestRate against
+// kExplicitStabilityLimit. Adaptive rk45 and implicit-euler never warn.
+inline constexpr int kWarningDenseLimit = 600;
 class Simulation;
 std::optional<std::string> preRunStabilityWarning(const Simulation& sim);
 

@@ -56,6 +56,10 @@ int commandStability(const std::vector<std::string>& args) {
                     modes.omegaMax > 0 ? modes.dampingAtMax / (2 * modes.omegaMax) : 0.0, modes.fastestDamping);
         if (modes.unstableModes) std::printf("; %d physically unstable modes excluded", modes.unstableModes);
         std::printf("\n");
+        if (!modes.eigenvalues.empty())
+            std::printf("eigenvalues  exact for the first-order system (used for euler, midpoint, rk4, rk45; the "
+                        "partitioned methods use the modes): fastest lambda = %.4g %+.4gi 1/s\n",
+                        modes.fastest.real(), std::abs(modes.fastest.imag()));
         // Each method's region, summarised by its limit on one undamped mode (w = 1) and on a
         // purely damped one (real axis), computed from the same functions as the prediction.
         std::printf("regions      limit of h*w on an undamped mode / of h*c on a pure decay rate c:");
