@@ -206,6 +206,28 @@ void scatterPairs(const SpringSet& springs, std::size_t begin, std::size_t end, 
 }
 
 SIMCORE_VECTOR_KERNEL
+double gasGradientSoA(const Surface& surface, const double* x, std::size_t begin, std::size_t end,
+                      double* gx, double* gy, double* gz) {
+    // dV/dx for each corner of triangle abc is (b-a)x(c-a)/6 summed over a closed surface;
+    // the volume term x_a.(x_b x x_c) comes from the same loads.
+    double volume6 = 0.0;
+    const std::array<int, 3>* tri = surface.triangles.data();
+    for (std::size_t t = begin; t < end; ++t) {
+        const int a = 3 * tri[t][0], b = 3 * tri[t][1], c = 3 * tri[t][2];
+        volume6 += x[a] * (x[b + 1] * x[c + 2] - x[b + 2] * x[c + 1]) +
+                   x[a + 1] * (x[b + 2] * x[c] - x[b] * x[c + 2]) +
+                   x[a + 2] * (x[b] * x[c + 1] - x[b + 1] * x[c]);
+        const double ux = x[b] - x[a], uy = x[b + 1] - x[a + 1], uz = x[b + 2] - x[a + 2];
+        const double wx = x[c] - x[a], wy = x[c + 1] - x[a + 1], wz = x[c + 2] - x[a + 2];
+        const std::size_t k = t - begin;
+        gx[k] = (uy * wz - uz * wy) / 6.0;
+        gy[k] = (uz * wx - ux * wz) / 6.0;
+        gz[k] = (ux * wy - uy * wx) / 6.0;
+    }
+    return volume6;
+}
+
+SIMCORE_VECTOR_KERNEL
 void gasForcesSoA(const Surface& surface, double pressure, const double* x, std::size_t begin,
                   std::size_t end, double* gx, double* gy, double* gz) {
     const double sixth = pressure / 6.0;
@@ -260,6 +282,7 @@ ForceModel::ForceModel(const Topology* topology, const Eigen::VectorXd* mass, Te
         for (auto* buffer : {&chunk.dx, &chunk.dy, &chunk.dz, &chunk.dvx, &chunk.dvy, &chunk.dvz, &chunk.power})
             buffer->assign(kBlock, 0.0);
     partition();
+    if (terms.has(Term::Gas)) m_gradient.assign(static_cast<std::size_t>(3 * topology->particleCount()), 0.0);
 }
 
 void ForceModel::partition() {
@@ -276,7 +299,9 @@ void ForceModel::partition() {
     auto owner = [&](int p) { return m_chunks == 1 ? 0 : ((p % perLayer) < half ? 0 : 1); };
     m_ownedRanges = {};
     if (m_chunks == 1) {
-        m_ownedRanges[0].push_back({0, n});
+        // One range per layer: the gas scaling reads one pressure per range.
+        m_ownedRanges[0].push_back({0, perLayer});
+        if (layered) m_ownedRanges[0].push_back({perLayer, n});
     } else {
         m_ownedRanges[0].push_back({0, half});
         m_ownedRanges[1].push_back({half, perLayer});
@@ -319,8 +344,8 @@ std::size_t ForceModel::sharedElements() const {
 }
 
 void ForceModel::accumulatePart(const Part& part, const double* x, const double* v,
-                                const std::array<double, 2>& pressure, SpringScratch& scratch,
-                                double* f, double& power, int& degenerate) const {
+                                SpringScratch& scratch, double* f, double* grad,
+                                std::array<double, 2>& volume, double& power, int& degenerate) const {
     if (m_terms.has(Term::Springs)) {
         for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
             const auto k = static_cast<std::size_t>(fam);
@@ -336,21 +361,22 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
     }
     if (!m_terms.has(Term::Gas)) return;
     for (const Surface& s : part.surfaces) {
-        const double p = pressure[static_cast<std::size_t>(layerSlot(s.layer))];
-        if (!(p > 0.0)) continue;
-        // 2D edge a->b, interior on the left: P*L*n/2 = P (dy, -dx)/2 to each end.
-        const double halfP = 0.5 * p;
+        // The unscaled gradient dV/dx goes to `grad`; P = c / V is known only once every
+        // part's volume is summed, and scales it afterwards.
+        double& sum = volume[static_cast<std::size_t>(layerSlot(s.layer))];
         for (auto [a, b] : s.edges) {
+            // 2D edge a->b, interior on the left: dA/dx = (dy, -dx)/2 to each end.
             const double dx = x[3 * b] - x[3 * a], dy = x[3 * b + 1] - x[3 * a + 1];
-            f[3 * a] += halfP * dy;
-            f[3 * a + 1] -= halfP * dx;
-            f[3 * b] += halfP * dy;
-            f[3 * b + 1] -= halfP * dx;
+            sum += x[3 * a] * x[3 * b + 1] - x[3 * b] * x[3 * a + 1];
+            grad[3 * a] += 0.5 * dy;
+            grad[3 * a + 1] -= 0.5 * dx;
+            grad[3 * b] += 0.5 * dy;
+            grad[3 * b + 1] -= 0.5 * dx;
         }
         for (std::size_t b0 = 0; b0 < s.triangles.size(); b0 += kBlock) {
             const std::size_t b1 = std::min(s.triangles.size(), b0 + kBlock);
-            gasForcesSoA(s, p, x, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data());
-            scatterTriangles(s, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), f);
+            sum += gasGradientSoA(s, x, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data());
+            scatterTriangles(s, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), grad);
         }
     }
 }
@@ -427,43 +453,58 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
     extras = ForceExtras{};
     countTerms();
 
-    // Stage 1: volumes (the gas force needs P = c / V of the whole layer first).
-    std::array<double, 2> pressure{};
+    // Stage 1: each chunk clears its own particles, adds gravity and its own springs, and for
+    // the gas its faces' volume and unscaled gradient dV/dx (P = c/V needs the whole volume).
     const bool gas = m_terms.has(Term::Gas);
-    if (gas) {
-        const std::array<double, 2> volume = volumes(x);
-        for (const Surface& s : topo.surfaces) {
-            const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
-            extras.volume[slot] = volume[slot];
-            pressure[slot] = volume[slot] > 0.0 ? params.gasConstant[slot] / volume[slot] : 0.0;
-            extras.pressure[slot] = pressure[slot];
-        }
-    }
-    // Stage 2: each chunk clears its own particles, adds gravity and its own springs and faces.
     const bool gravity = m_terms.has(Term::Gravity);
     const double g = params.gravity;
     const double* mass = m_mass->data();
+    double* grad = m_gradient.data();
     std::array<double, kChunks> chunkPower{};
     std::array<int, kChunks> chunkDegenerate{};
+    std::array<std::array<double, 2>, kChunks + 1> volumeSums{};
     runChunks([&](int c) {
         const auto k = static_cast<std::size_t>(c);
         for (auto [begin, end] : m_ownedRanges[k]) {
             std::fill(f + 3 * begin, f + 3 * end, 0.0);
+            if (gas) std::fill(grad + 3 * begin, grad + 3 * end, 0.0);
             if (gravity)
                 for (int i = begin; i < end; ++i) f[3 * i + 1] -= mass[i] * g;
         }
-        accumulatePart(m_parts[k], x, v, pressure, m_scratch[k], f, chunkPower[k], chunkDegenerate[k]);
+        accumulatePart(m_parts[k], x, v, m_scratch[k], f, grad, volumeSums[k], chunkPower[k], chunkDegenerate[k]);
     });
-    // Stage 3: the elements shared between chunks, on this thread, in a fixed order.
+    // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
     double power = 0.0;
     int degenerate = 0;
-    accumulatePart(m_parts[kChunks], x, v, pressure, m_scratch[0], f, power, degenerate);
+    accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f, grad, volumeSums[kChunks], power, degenerate);
     for (int c = 0; c < m_chunks; ++c) {
         extras.dampingPower += chunkPower[static_cast<std::size_t>(c)];
         extras.degenerateSprings += chunkDegenerate[static_cast<std::size_t>(c)];
     }
     extras.dampingPower += power;
     extras.degenerateSprings += degenerate;
+    // Stage 3: the gas force P dV/dx, with P = c / V of each layer (V <= 0: no force; the
+    // simulation reports the layer as inside out).
+    if (gas) {
+        std::array<double, 2> pressure{};
+        for (const Surface& s : topo.surfaces) {
+            const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+            double sum = 0.0;
+            for (int c = 0; c < m_chunks; ++c) sum += volumeSums[static_cast<std::size_t>(c)][slot];
+            sum += volumeSums[kChunks][slot];
+            const double volume = topo.dimension == 2 ? 0.5 * sum : sum / 6.0;
+            extras.volume[slot] = volume;
+            pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
+            extras.pressure[slot] = pressure[slot];
+        }
+        runChunks([&](int c) {
+            for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(c)]) {
+                // Each owned range lies in one layer (see partition()).
+                const double p = pressure[static_cast<std::size_t>(layerSlot(topo.layer[static_cast<std::size_t>(begin)]))];
+                for (int k = 3 * begin; k < 3 * end; ++k) f[k] += p * grad[k];
+            }
+        });
+    }
     if (m_terms.has(Term::Pointer) && pointer.active)
         extras.dampingPower += addPointer(pointer, params.mks, params.mkd, params.mouseRest, x, v, f);
 }

@@ -88,6 +88,10 @@ int springForcesSoA(const SpringSet& springs, double ks, double kd, const double
 // Adds f[k - begin] of springs [begin, end) to their first and subtracts it from their second particle.
 void scatterPairs(const SpringSet& springs, std::size_t begin, std::size_t end, const double* fx,
                   const double* fy, const double* fz, double* f);
+// Per-triangle volume gradient (b-a)x(c-a)/6 for triangles [begin, end), into g[t - begin];
+// returns the sum of x_a.(x_b x x_c) over them (six times their share of the volume).
+double gasGradientSoA(const Surface& surface, const double* x, std::size_t begin, std::size_t end,
+                      double* gx, double* gy, double* gz);
 // Per-triangle gas force (P/6) (b-a)x(c-a) for triangles [begin, end), into g[t - begin].
 void gasForcesSoA(const Surface& surface, double pressure, const double* x, std::size_t begin,
                   std::size_t end, double* gx, double* gy, double* gz);
@@ -159,12 +163,15 @@ private:
         std::vector<Surface> surfaces;
     };
     void partition();
-    void accumulatePart(const Part& part, const double* x, const double* v,
-                        const std::array<double, 2>& pressure, SpringScratch& scratch, double* f,
-                        double& power, int& degenerate) const;
+    // Adds the part's spring forces to f and its gas gradient dV/dx to grad; adds its
+    // enclosed-volume sums (6V in 3D, 2A in 2D) to volume.
+    void accumulatePart(const Part& part, const double* x, const double* v, SpringScratch& scratch,
+                        double* f, double* grad, std::array<double, 2>& volume, double& power,
+                        int& degenerate) const;
     std::array<Part, kChunks + 1> m_parts;
     std::array<std::vector<std::pair<int, int>>, kChunks> m_ownedRanges;  // particle ranges per chunk
     std::array<SpringScratch, kChunks> m_scratch;  // one block of scratch per chunk
+    std::vector<double> m_gradient;                // dV/dx of each particle's layer (3N)
 };
 
 }  // namespace simcore
