@@ -54,7 +54,7 @@ double modeAmplification(const std::string& integrator, double h, double omega, 
     return std::max(std::abs(stabilityFunction(integrator, h * l1)), std::abs(stabilityFunction(integrator, h * l2)));
 }
 
-LinearModes linearModes(const ParameterSet& params) {
+LinearModes linearModes(const ParameterSet& params, int exactEigenLimit) {
     Simulation sim(params, "implicit-euler");
     OdeSystem& system = sim.odeSystem();
     system.linearize(0.0, sim.state());
@@ -92,7 +92,7 @@ LinearModes linearModes(const ParameterSet& params) {
             modes.stiffness = A;
             modes.damping2 = C;
         }
-        if (m <= kExactEigenLimit) {
+        if (m <= exactEigenLimit) {
             // y = [M^1/2 x, M^1/2 v]: y' = [[0, I], [-A, -C]] y (A, C as built are -M^-1/2 K M^-1/2
             // and -M^-1/2 D M^-1/2), same eigenvalues as [[0, I], [M^-1 K, M^-1 D]].
             Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2 * m, 2 * m);
@@ -345,7 +345,7 @@ std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {
     ParameterSet p = sim.parameters();
     const int free = 3 * sim.particleCount();
     if (free <= kWarningDenseLimit) {
-        const LinearModes modes = linearModes(p);
+        const LinearModes modes = linearModes(p, 150);  // cheap: exact eigenvalues for small bodies only
         const double limit = predictedStableStep(name, modes, 10.0);
         if (limit <= 0.0) {
             // Euler and Heun grow on undamped modes for every dt; say so only when it matters

@@ -59,7 +59,9 @@ struct LinearModes {
 // Linearised at the start state of the scene (with its perturbation).
 inline constexpr int kExactEigenLimit = 400;
 inline constexpr int kExactStepLimit = 120;
-LinearModes linearModes(const ParameterSet& params);
+// exactEigenLimit: up to this many free coordinates the first-order eigenvalues are computed
+// (a dense non-symmetric eigen-solve of twice that size: ~1 s at 400).
+LinearModes linearModes(const ParameterSet& params, int exactEigenLimit = kExactEigenLimit);
 
 // Spectral radius of one step of `integrator` on x'' + c x' + w^2 x = 0.
 double modeAmplification(const std::string& integrator, double h, double omega, double c);
