@@ -129,6 +129,19 @@ private slots:
         QVERIFY2(std::abs(verlet[4].toDouble() - 2.0) < 0.1, qPrintable(lines[2]));
         QVERIFY(lines[3].startsWith("implicit-euler,1,inf,inf"));
     }
+    void stabilityShardsConcatenate() {
+        const QStringList base = {"stability", "--scene", "spring1d", "--integrators", "euler,rk4,verlet",
+                                  "--duration", "1", "--quiet"};
+        QCOMPARE(cli(QStringList(base) << "--csv" << path("stab-full.csv")).code, 0);
+        QString joined;
+        for (const char* shard : {"1/2", "2/2"}) {
+            const QString file = path(QString("stab-%1.csv").arg(shard[0]));
+            QCOMPARE(cli(QStringList(base) << "--shard" << shard << "--csv" << file).code, 0);
+            joined += readAll(file);
+        }
+        QCOMPARE(joined, readAll(path("stab-full.csv")));  // no timings: byte-identical
+        QCOMPARE(joined.count('\n'), 4);
+    }
     void runExportsErrorEstimates() {
         const Result r = cli({"run", "--scene", "ring2d", "--integrator", "rk4", "--duration", "0.03", "--error-estimate",
                               "--csv", path("est.csv"), "--quiet"});
