@@ -36,9 +36,10 @@ QList<Preset> teachingPresets() {
                      "bottom-heavy (thesis 8.1)."),
          "sphere3d", {{"subdivisions", 2}, {"mass_inner", 5.0}}, rk4},
         {"liquid", QObject::tr("Liquid motion and inertia"),
-         QObject::tr("Inner and outer layers pushed in opposite directions without gravity: the inner layer "
-                     "sloshes inside the outer one like a liquid (thesis fig. 47)."),
-         "ring2d", {{"gravity", 0.0}}, rk4, 3.0, -3.0},
+         QObject::tr("Inner and outer layers pushed in opposite directions (3 m/s), without gravity and with "
+                     "soft, lightly damped radius and shear springs: the inner layer sloshes inside the outer "
+                     "one like a liquid (thesis fig. 47)."),
+         "ring2d", {{"gravity", 0.0}, {"rks", 40.0}, {"rkd", 0.5}}, rk4, 3.0, -3.0},
     };
 }
 

@@ -136,9 +136,12 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
     });
 }
 
-StudyDialogBase::~StudyDialogBase() {
+StudyDialogBase::~StudyDialogBase() { stopAndWait(); }
+
+void StudyDialogBase::stopAndWait() {
     // Never leave a computation running against a destroyed dialog.
     if (m_cancelFlag) m_cancelFlag->store(true);
+    m_watcher.disconnect(this);
     m_watcher.waitForFinished();
 }
 
@@ -177,6 +180,7 @@ void StudyDialogBase::start() {
     m_progress->setValue(0);
     m_cancelFlag = std::make_shared<std::atomic<bool>>(false);
     auto flag = m_cancelFlag;
+    prepare();
     m_watcher.setFuture(QtConcurrent::run([this, flag] { compute(flag.get()); }));
 }
 
@@ -246,8 +250,9 @@ QString WorkPrecisionDialog::validate() const {
     return {};
 }
 
+void WorkPrecisionDialog::prepare() { m_spec = spec(); }
+
 void WorkPrecisionDialog::compute(const std::atomic<bool>* cancel) {
-    m_spec = spec();
     m_result = simcore::runStudy(
         m_spec, [this](const simcore::StudyProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
         cancel);
@@ -341,11 +346,14 @@ StabilityDialog::StabilityDialog(const simcore::ParameterSet& params, QWidget* p
 
 void StabilityDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
 
-void StabilityDialog::compute(const std::atomic<bool>* cancel) {
+void StabilityDialog::prepare() {
     m_spec = simcore::StabilitySpec{};
     m_spec.params = m_params;
     for (const QString& name : chosenIntegrators()) m_spec.integrators.push_back(name.toStdString());
     m_spec.duration = m_duration->text().toDouble() > 0 ? m_duration->text().toDouble() : 2.0;
+}
+
+void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));
     m_modes = simcore::linearModes(m_params);
     m_rows = simcore::runStability(

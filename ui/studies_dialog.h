@@ -43,9 +43,14 @@ signals:
     void finished();
 
 protected:
+    // Cancels a running computation and waits for it. Every subclass calls it in its
+    // destructor: the computation writes the subclass's members, which die before the base.
+    void stopAndWait();
     QStringList chosenIntegrators() const;
     void setProgress(int done, int total, const QString& what);  // thread-safe
-    // Runs on the worker thread.
+    // On the GUI thread, before the run: read the widgets into the spec.
+    virtual void prepare() = 0;
+    // Runs on the worker thread: uses only what prepare() stored (never a widget).
     virtual void compute(const std::atomic<bool>* cancel) = 0;
     // Back on the GUI thread: fill table and plot.
     virtual void present() = 0;
@@ -76,11 +81,13 @@ class WorkPrecisionDialog : public StudyDialogBase {
     Q_OBJECT
 public:
     WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    ~WorkPrecisionDialog() override { stopAndWait(); }
     const simcore::StudyResult& result() const { return m_result; }
     void setSteps(const QString& dts);
     void setDuration(double seconds);
 
 protected:
+    void prepare() override;
     void compute(const std::atomic<bool>* cancel) override;
     void present() override;
     QString csv() const override;
@@ -100,10 +107,12 @@ class StabilityDialog : public StudyDialogBase {
     Q_OBJECT
 public:
     StabilityDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    ~StabilityDialog() override { stopAndWait(); }
     const std::vector<simcore::StabilityRow>& rows() const { return m_rows; }
     void setDuration(double seconds);
 
 protected:
+    void prepare() override;
     void compute(const std::atomic<bool>* cancel) override;
     void present() override;
     QString csv() const override;
