@@ -243,11 +243,7 @@ std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::
     IntegratorOptions options;
     options.fixedStep = true;  // rk45 at a fixed step: an adaptive step is always "stable"
     sim.setIntegratorOptions(options);
-    const Diagnostics& d0 = sim.diagnostics();
-    double mass = 0.0;
-    for (Eigen::Index i = 0; i < sim.body().mass.size(); ++i) mass += sim.body().mass[i];
-    const double budget = 0.5 * (1.0 + d0.kinetic + d0.springTotal() +
-                                 mass * sim.forces().params.gravity * 2.0 * sim.boxHalfSize());
+    const double budget = 0.5 * convertibleEnergy(sim);
     // Bounded energy: gains (never losses) in the energy balance. A run is unbounded when it
     // gains more than the budget and is still growing: its largest gain in the second half
     // of the run is more than twice that of the first half. A bounded but inaccurate method
@@ -333,6 +329,15 @@ std::vector<StabilityRow> runStability(const StabilitySpec& spec, const LinearMo
     }
     if (progress) progress({static_cast<int>(names.size()), static_cast<int>(names.size()), "done"});
     return rows;
+}
+
+double convertibleEnergy(const Simulation& sim) {
+    const Diagnostics& d = sim.diagnostics();
+    double energy = 1.0 + d.kinetic + d.springTotal();
+    energy += sim.body().mass.sum() * sim.forces().params.gravity * 2.0 * sim.boxHalfSize();
+    if (sim.forces().terms().has(Term::Gas))
+        energy += (sim.forces().params.gasConstant[0] + sim.forces().params.gasConstant[1]) * std::log(100.0);
+    return energy;
 }
 
 std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {

@@ -115,6 +115,11 @@ inline constexpr int kWarningDenseLimit = 600;
 class Simulation;
 std::optional<std::string> preRunStabilityWarning(const Simulation& sim);
 
+// The energy a body can plausibly convert from its current state [J]: 1 J + its kinetic and
+// elastic energy + its weight falling the box height + each gas expanding 100-fold (c ln 100).
+// The yardstick of "bounded energy" here and of the gallery's tolerances.
+double convertibleEnergy(const Simulation& sim);
+
 std::string stabilityCsvHeader();  // integrator,dt_stable,dt_unstable,dt_predicted,h_omega_stable,reason
 std::string stabilityCsvRow(const StabilityRow& row, const LinearModes& modes);
 
