@@ -235,6 +235,25 @@ private slots:
         QCOMPARE(f.lanes[2].pointer.anchor.y(), 3.0);
     }
 
+    void errorEstimateIsReported() {
+        SimulationController c;
+        c.setScene(ring(), {"rk4"});
+        QVERIFY(waitFor(c, [](const Frame& f) { return f.scene != nullptr; }));
+        c.step();
+        QVERIFY(waitFor(c, [](const Frame& f) { return f.lanes[0].diagnostics.step == 1; }));
+        QVERIFY(c.latest()->lanes[0].diagnostics.errorEstimate < 0);  // off by default
+        c.setStepDoubling(true);
+        c.step();
+        QVERIFY(waitFor(c, [](const Frame& f) { return f.lanes[0].diagnostics.step == 2; }));
+        QVERIFY(c.latest()->lanes[0].diagnostics.errorEstimate >= 0);
+        // rk45 always estimates; switching integrator keeps the run going from where it is.
+        c.setStepDoubling(false);
+        c.setIntegrator("rk45");
+        c.step();
+        QVERIFY(waitFor(c, [](const Frame& f) { return f.lanes[0].integrator == "rk45" && f.lanes[0].diagnostics.step == 3; }));
+        QVERIFY(c.latest()->lanes[0].diagnostics.errorEstimate >= 0);
+    }
+
     void shutdownJoinsTheThread() {
         auto* c = new SimulationController;
         c->setScene(ring(), {"rk4"});

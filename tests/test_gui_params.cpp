@@ -4,7 +4,13 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <QFileInfo>
+#include <QUrl>
+
+#include "help_dialog.h"
+#include "integrators.h"
 #include "parameter_dock.h"
+#include "presets.h"
 #include "scene_dock.h"
 #include "scenes.h"
 
@@ -127,6 +133,43 @@ private slots:
         QSignalSpy rebuild(&dock, &SceneDock::rebuildRequested);
         dock.findChild<QWidget*>("rebuildButton")->metaObject()->invokeMethod(dock.findChild<QWidget*>("rebuildButton"), "click");
         QCOMPARE(rebuild.count(), 1);
+    }
+    void helpPageCoversEveryIntegratorAndLinksExist() {
+        const QString html = HelpDialog::html();
+        for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {
+            QVERIFY2(html.contains("<b>" + toQString(info.name) + "</b>"), std::string(info.name).c_str());
+            QVERIFY(html.contains(toQString(info.description).toHtmlEscaped()));
+        }
+        for (const Preset& p : teachingPresets() + stabilityPresets()) QVERIFY(html.contains(p.title.toHtmlEscaped()));
+        // Every link points at a file that exists (docs/gui.md, docs/architecture.md, README.md).
+        int links = 0;
+        for (qsizetype at = html.indexOf("href='"); at >= 0; at = html.indexOf("href='", at + 1)) {
+            const qsizetype end = html.indexOf('\'', at + 6);
+            const QString url = html.mid(at + 6, end - at - 6);
+            QVERIFY2(QFileInfo::exists(QUrl(url).toLocalFile()), qPrintable(url));
+            ++links;
+        }
+        QVERIFY(links >= 3);
+        if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR")) {
+            HelpDialog d;
+            d.resize(760, 900);
+            d.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/help.png");
+        }
+    }
+
+    void presetsAreValid() {
+        // Every preset's values pass the table for its scene, and its integrators exist.
+        for (const Preset& p : teachingPresets() + stabilityPresets()) {
+            const simcore::SceneInfo* scene = simcore::findScene(p.scene.toStdString());
+            QVERIFY2(scene, qPrintable(p.id));
+            simcore::ParameterSet params(scene->kind);
+            for (const auto& [key, value] : p.values)
+                QVERIFY2(!params.set(key.toStdString(), value), qPrintable(p.id + ": " + key));
+            QVERIFY(!p.integrators.isEmpty() && p.integrators.size() <= 3);
+            for (const QString& name : p.integrators) QVERIFY(simcore::makeIntegrator(name.toStdString()) != nullptr);
+            QCOMPARE(findPreset(p.id), findPreset(p.id));
+            QVERIFY(findPreset(p.id) != nullptr);
+        }
     }
 };
 

@@ -97,6 +97,14 @@ private slots:
             QVERIFY2(c.bluish > 0.01, qPrintable(QString("inner layer: %1").arg(c.bluish)));
             QVERIFY2(c.orange > 0.01, qPrintable(QString("outer layer: %1").arg(c.orange)));
         }
+        // Normals and force vectors add to the picture.
+        ViewOptions more;
+        more.normals = more.forces = true;
+        w.setViewOptions(more);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].forces.empty(), 5000);
+        QTest::qWait(50);
+        const QImage extra = v->grabFramebuffer();
+        QVERIFY(extra != image);
         // Hiding everything leaves (nearly) only the background and the box.
         ViewOptions none;
         none.springs[0] = none.springs[1] = none.springs[2] = false;

@@ -592,7 +592,9 @@ QVector3D Viewport::anchorUnder(const QPointF& pixel) const {
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
     m_lastPixel = event->position();
-    if (event->button() == Qt::LeftButton && nearBody(event->position())) {
+    // Shift+left always orbits (a large body can cover the whole view).
+    const bool orbitOnly = event->modifiers() & Qt::ShiftModifier;
+    if (event->button() == Qt::LeftButton && !orbitOnly && nearBody(event->position())) {
         const Ray ray = m_camera.rayAt(event->position(), size());
         m_drag = Drag::Grab;
         m_grabbed = false;
