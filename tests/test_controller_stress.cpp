@@ -1,0 +1,94 @@
+// Thread stress: the GUI's controller driven through thousands of random cycles of run,
+// pause, step, parameter edits (valid and invalid), scene changes, integrator changes, pointer
+// drags, reset and shutdown. Passes when nothing deadlocks or crashes, every frame stays
+// finite, and after the storm the controller still answers exactly. Run it under the tsan
+// preset for data races and under asan for leaks (docs/reliability.md).
+#include <QtTest>
+
+#include <random>
+
+#include "simulation_controller.h"
+
+using namespace elui;
+
+namespace {
+
+simcore::ParameterSet smallScene(std::mt19937& rng) {
+    const simcore::SceneKind kinds[] = {simcore::SceneKind::Spring1d, simcore::SceneKind::Ring2d,
+                                        simcore::SceneKind::Sphere3d, simcore::SceneKind::Sphere3dLatLong};
+    simcore::ParameterSet p(kinds[rng() % 4]);
+    if (p.kind() == simcore::SceneKind::Sphere3d) p.set("subdivisions", double(rng() % 3));
+    if (p.kind() == simcore::SceneKind::Ring2d) p.set("particles", double(3 + rng() % 40));
+    return p;
+}
+
+bool frameIsFinite(const FramePtr& frame) {
+    if (!frame) return true;
+    for (const LaneFrame& lane : frame->lanes) {
+        for (float x : lane.positions)
+            if (!std::isfinite(x)) return false;
+        if (!std::isfinite(lane.diagnostics.total())) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+class TestControllerStress : public QObject {
+    Q_OBJECT
+private slots:
+    void randomCycles() {
+        std::mt19937 rng(20261123);
+        const QStringList integrators = {"euler", "midpoint", "rk4", "symplectic-euler", "verlet", "rk45", "implicit-euler"};
+        const QStringList keys = {"ks", "kd", "mass", "gravity", "restitution", "dt", "box", "pressure", "nonsense"};
+        int cycles = 0, shutdowns = 0, framesSeen = 0;
+        for (int round = 0; round < 12; ++round) {
+            auto controller = std::make_unique<SimulationController>();
+            QObject::connect(controller.get(), &SimulationController::frameArrived, [&](const FramePtr& f) {
+                ++framesSeen;
+                QVERIFY(frameIsFinite(f));
+            });
+            controller->setScene(smallScene(rng));
+            for (int i = 0; i < 100; ++i, ++cycles) {
+                switch (rng() % 12) {
+                    case 0: controller->run(); break;
+                    case 1: controller->pause(); break;
+                    case 2: controller->step(); break;
+                    case 3: controller->reset(); break;
+                    case 4: controller->setScene(smallScene(rng)); break;
+                    case 5: controller->setIntegrator(integrators[int(rng() % integrators.size())]); break;
+                    case 6: {
+                        // Valid, out of range, and NaN values: the table refuses the bad ones.
+                        const double values[] = {0.5, 2.0, 100.0, -1.0, std::nan(""), 1e12, 0.003};
+                        controller->setParameter(keys[int(rng() % keys.size())], values[rng() % 7]);
+                        break;
+                    }
+                    case 7: controller->grabAlongRay(QVector3D(0, 0, 10), QVector3D(0, 0, -1), 5.0); break;
+                    case 8: controller->moveAnchor(QVector3D(float(rng() % 5) - 2.f, float(rng() % 5) - 2.f, 0)); break;
+                    case 9: controller->release(); break;
+                    case 10: controller->setSpeed(Speed(rng() % 4)); break;
+                    case 11: QTest::qWait(int(rng() % 3)); break;
+                }
+                if (i % 10 == 0) QCoreApplication::processEvents();
+            }
+            QTest::qWait(5);
+            controller.reset();  // shutdown with commands still in flight
+            ++shutdowns;
+        }
+        QVERIFY(cycles >= 1000);
+        QCOMPARE(shutdowns, 12);
+        QVERIFY(framesSeen > 0);
+
+        // After the storm a fresh controller answers exactly: one step from the start state.
+        SimulationController controller;
+        QSignalSpy frames(&controller, &SimulationController::frameArrived);
+        simcore::ParameterSet p(simcore::SceneKind::Ring2d);
+        controller.setScene(p, {"rk4"});
+        controller.step();
+        QTRY_VERIFY_WITH_TIMEOUT(controller.latest() && controller.latest()->lanes.at(0).diagnostics.step == 1, 10000);
+        QCOMPARE(controller.latest()->lanes.at(0).diagnostics.time, 0.003);
+    }
+};
+
+QTEST_MAIN(TestControllerStress)
+#include "test_controller_stress.moc"
