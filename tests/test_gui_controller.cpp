@@ -148,10 +148,10 @@ private slots:
         wall.start();
         QVERIFY(waitFor(c, [](const Frame& f) { return f.lanes[0].diagnostics.time > 0.01; }));
         const double t0 = c.latest()->lanes[0].diagnostics.time;
-        const double w0 = wall.elapsed() * 1e-3;
+        const double w0 = double(wall.elapsed()) * 1e-3;
         QTest::qWait(1200);
         const double simulated = c.latest()->lanes[0].diagnostics.time - t0;
-        const double elapsed = wall.elapsed() * 1e-3 - w0;
+        const double elapsed = double(wall.elapsed()) * 1e-3 - w0;
         QVERIFY2(simulated > 0.6 * elapsed && simulated < 1.15 * elapsed,
                  qPrintable(QString("simulated %1 s in %2 s wall").arg(simulated).arg(elapsed)));
         // A quarter of real time.
@@ -161,7 +161,7 @@ private slots:
         wall.restart();
         QTest::qWait(1200);
         const double quarter = c.latest()->lanes[0].diagnostics.time - t1;
-        const double elapsed2 = wall.elapsed() * 1e-3;
+        const double elapsed2 = double(wall.elapsed()) * 1e-3;
         QVERIFY2(quarter > 0.15 * elapsed2 && quarter < 0.3 * elapsed2,
                  qPrintable(QString("quarter speed: %1 s in %2 s wall").arg(quarter).arg(elapsed2)));
         c.pause();

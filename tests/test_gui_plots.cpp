@@ -59,7 +59,7 @@ private slots:
             for (int s = 0; s < dock.seriesNames(id).size(); ++s) QCOMPARE(dock.pointCount(id, s), 41);
         const simcore::Diagnostics& last = rows.back();
         QCOMPARE(dock.lastValue("energy", 0), last.kinetic);
-        QCOMPARE(dock.lastValue("energy", dock.seriesNames("energy").indexOf("total")), last.total());
+        QCOMPARE(dock.lastValue("energy", int(dock.seriesNames("energy").indexOf("total"))), last.total());
         if (gas) {
             QCOMPARE(dock.lastValue("volume", 1), last.volume[1]);
             QCOMPARE(dock.lastValue("pressure", 0), last.pressure[0]);

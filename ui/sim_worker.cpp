@@ -35,6 +35,7 @@ constexpr double kTickBudget = 0.015;
 constexpr double kPublishInterval = 1.0 / 90.0;
 
 Eigen::Vector3d toEigen(const QVector3D& v) { return {v.x(), v.y(), v.z()}; }
+double seconds(const QElapsedTimer& t) { return double(t.nsecsElapsed()) * 1e-9; }
 }  // namespace
 
 SimWorker::SimWorker() {
@@ -198,7 +199,7 @@ void SimWorker::runUntil(double simulatedTime) {
 }
 
 void SimWorker::pause() {
-    if (m_running) m_wallBeforeStart += m_clock.nsecsElapsed() * 1e-9;
+    if (m_running) m_wallBeforeStart += seconds(m_clock);
     m_running = false;
     m_until = -1.0;
     m_timer->stop();
@@ -305,12 +306,12 @@ void SimWorker::tick() {
     // Where the honest clock says simulated time should be now.
     const double target =
         fast ? std::numeric_limits<double>::infinity()
-             : m_clockSimStart + m_clock.nsecsElapsed() * 1e-9 * speedFactor(m_speed);
+             : m_clockSimStart + seconds(m_clock) * speedFactor(m_speed);
     bool outOfBudget = false;
     while (m_commonTime < target) {
         if (m_until >= 0.0 && m_commonTime >= m_until - 1e-12) break;
         if (!stepAll()) break;
-        if (budget.nsecsElapsed() * 1e-9 > kTickBudget) {
+        if (seconds(budget) > kTickBudget) {
             outOfBudget = true;
             break;
         }
@@ -320,14 +321,14 @@ void SimWorker::tick() {
         // Could not keep up: say so and restart the clock here instead of piling up debt.
         m_fallingBehind = outOfBudget && m_commonTime < target;
         if (m_fallingBehind) {
-            m_wallBeforeStart += m_clock.nsecsElapsed() * 1e-9;
+            m_wallBeforeStart += seconds(m_clock);
             m_clock.start();
             m_clockSimStart = m_commonTime;
         }
     }
-    const double rateWindow = m_rateClock.nsecsElapsed() * 1e-9;
+    const double rateWindow = seconds(m_rateClock);
     if (rateWindow >= 0.5) {
-        m_stepsPerSecond = m_rateSteps / rateWindow;
+        m_stepsPerSecond = double(m_rateSteps) / rateWindow;
         m_rateSteps = 0;
         m_rateClock.start();
     }
@@ -352,7 +353,7 @@ void SimWorker::tick() {
 }
 
 void SimWorker::publish(bool force) {
-    if (!force && m_publishClock.nsecsElapsed() * 1e-9 < kPublishInterval) return;
+    if (!force && seconds(m_publishClock) < kPublishInterval) return;
     m_publishClock.start();
     if (m_lanes.empty()) return;
 
@@ -361,7 +362,7 @@ void SimWorker::publish(bool force) {
     frame->parameters = m_params;
     frame->running = m_running;
     frame->speed = m_speed;
-    frame->wallSeconds = m_wallBeforeStart + (m_running ? m_clock.nsecsElapsed() * 1e-9 : 0.0);
+    frame->wallSeconds = m_wallBeforeStart + (m_running ? seconds(m_clock) : 0.0);
     frame->stepsPerSecond = m_running ? m_stepsPerSecond : 0.0;
     frame->fallingBehind = m_fallingBehind;
     frame->explicitDtLimit = m_dtLimit;

@@ -149,7 +149,7 @@ void Viewport::showFrame(const FramePtr& frame) {
                               std::abs(m_frame->scene->bodyRadius - s.bodyRadius) < 0.1 * s.bodyRadius;
         m_camera.setMode2d(s.topology.dimension < 3);
         if (!sameKind) {
-            const Eigen::Vector3d c = s.kind == simcore::SceneKind::Spring1d ? s.boxCentre : s.boxCentre;
+            const Eigen::Vector3d& c = s.boxCentre;
             m_camera.fit(QVector3D(float(c.x()), float(c.y()), float(c.z())), float(s.bodyRadius),
                          float(s.boxHalfSize));
         }
@@ -352,10 +352,11 @@ void Viewport::drawBox() {
     const float h = float(s.boxHalfSize);
     const QVector3D c(float(s.boxCentre.x()), float(s.boxCentre.y()), float(s.boxCentre.z()));
     std::vector<float> v;
+    v.reserve(6 * 28);
     auto seg = [&](QVector3D a, QVector3D b) {
         a = c + a * h;
         b = c + b * h;
-        v.insert(v.end(), {a.x(), a.y(), a.z(), b.x(), b.y(), b.z()});
+        for (float f : {a.x(), a.y(), a.z(), b.x(), b.y(), b.z()}) v.push_back(f);
     };
     if (m_camera.is2d()) {
         seg({-1, -1, 0}, {1, -1, 0});

@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
         auto* last = new qint64(0);
         QObject::connect(probe, &QTimer::timeout, &window, [=] {
             const qint64 now = wall->nsecsElapsed();
-            if (*last > 0) *worstLate = std::max(*worstLate, (now - *last) * 1e-6 - 10.0);
+            if (*last > 0) *worstLate = std::max(*worstLate, double(now - *last) * 1e-6 - 10.0);
             *last = now;
         });
         QTimer::singleShot(1500, &window, [=, &window] {
@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
             probe->start(10);
             const quint64 paints0 = window.viewports().empty() ? 0 : window.viewports().front()->paintCount();
             QTimer::singleShot(int(seconds * 1000), &window, [=, &window] {
-                const double elapsed = wall->nsecsElapsed() * 1e-9;
+                const double elapsed = double(wall->nsecsElapsed()) * 1e-9;
                 const quint64 paints = window.viewports().empty() ? 0 : window.viewports().front()->paintCount();
                 const elui::FramePtr f = controller->latest();
                 std::printf("particles %d, frames/s %.1f, steps/s %.0f, simulated/wall %.3f, worst GUI timer delay "
