@@ -347,7 +347,9 @@ bool Simulation::step(double until) {
     }
 
     // Wall contacts and the layer constraint change the state outside the ODE. Whatever
-    // energy they change is measured across them and booked as removed by collisions.
+    // energy they change is measured across them and booked as removed by collisions (in the
+    // new diagnostics only: a step that then fails leaves the books as they were).
+    double removedByContacts = 0.0;
     if (m_y.allFinite()) {
         const bool walls = m_forces.terms().has(Term::Collisions);
         const bool layers = m_forces.terms().has(Term::LayerConstraint);
@@ -357,12 +359,13 @@ bool Simulation::step(double until) {
             const double before = totalEnergyNow();
             if (walls) collide(true);
             if (layers) constrainLayers(true);
-            m_diag.removedCollisions += before - totalEnergyNow();
+            removedByContacts = before - totalEnergyNow();
         }
     }
 
     // One measurement serves both the checks and the diagnostics.
     Diagnostics next = m_diag;
+    next.removedCollisions += removedByContacts;
     measure(next);
     if (const auto problem = checkState(next)) {
         m_failure = Failure{*problem, m_diag.step + 1, t0};
