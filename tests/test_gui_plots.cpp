@@ -12,7 +12,15 @@
 #include "simulation_controller.h"
 #include "studies_dialog.h"
 
+#include <QComboBox>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QTableWidget>
+
+#include "run_dock.h"
+#include "scene_dock.h"
 #include "qcustomplot.h"
 
 using namespace elui;
@@ -84,6 +92,45 @@ private slots:
         window.startScene(simcore::ParameterSet(SceneKind::Sphere3d), {"rk4"});
         QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->plotIds(), (QStringList{"volume", "pressure", "energy"}), 5000);
         QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->pointCount("volume", 0), 1, 5000);
+    }
+
+    void sceneDockRebuildsKeepingEdits() {
+        MainWindow window(false);
+        window.startScene(simcore::ParameterSet(SceneKind::Ring2d), {"rk4"});
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, 5000);
+        window.controller()->setParameter("ks", 500.0);
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller()->parameters().get("ks"), 500.0, 5000);
+        // Choose the sphere, level 1, and rebuild from the dock.
+        SceneDock* dock = window.sceneDock();
+        dock->sceneCombo()->setCurrentIndex(dock->sceneCombo()->findText("sphere3d"));
+        auto* subdivisions = dock->findChild<QLineEdit*>("param_subdivisions");
+        QVERIFY(subdivisions);
+        subdivisions->setText("1");
+        emit subdivisions->editingFinished();
+        QTest::mouseClick(dock->findChild<QPushButton*>("rebuildButton"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest()->scene->kind == SceneKind::Sphere3d, 5000);
+        const FramePtr f = window.controller()->latest();
+        QCOMPARE(f->scene->topology.particleCount(), 2 * 18);  // 4 * 4^1 + 2 per layer
+        QCOMPARE(f->parameters.get("ks"), 500.0);            // the edit carried over
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->plotIds(), (QStringList{"volume", "pressure", "energy"}), 5000);
+    }
+
+    void layoutIsSavedAndRestored() {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+        {
+            MainWindow window(true);
+            window.show();
+            window.plotDock()->hide();
+            window.close();  // writes the settings
+        }
+        {
+            MainWindow window(true);
+            window.show();
+            QVERIFY(window.plotDock()->isHidden());
+            QVERIFY(!window.runDock()->isHidden());
+        }
+        QSettings().clear();
     }
 
     void csvHasTheCliColumns() {
