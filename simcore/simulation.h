@@ -168,6 +168,7 @@ private:
     Eigen::VectorXd m_invMass3;   // 3N inverse masses, 0 on fixed particles and absent axes
     Eigen::Matrix3Xd m_normals;   // scratch: outer-layer vertex normals
     Diagnostics m_diag;
+    double m_timeCarry = 0.0;     // round-off carried by the compensated time sum [s]
     std::optional<Failure> m_failure;
     Eigen::Vector3d m_boxCentre = Eigen::Vector3d::Zero();
     double m_box = 5.0;

@@ -141,6 +141,15 @@ private slots:
             QCOMPARE(sim.integrator().evaluationsPerStep(), stages);
         }
     }
+    void longRunsLandOnTheirEndTime() {
+        // 10^6 steps of 1 ms: the step count is exact (no extra step from summed round-off).
+        ParameterSet p = oscillator(1.0);
+        p.set("dt", 0.001);
+        Simulation sim(p, "euler");
+        QVERIFY(sim.advanceTo(1000.0));
+        QCOMPARE(sim.stepCount(), 1000000L);
+        QVERIFY(std::abs(sim.time() - 1000.0) < 1e-9);
+    }
     void unknownIntegratorIsRefused() {
         QVERIFY(!makeIntegrator("rk5"));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Simulation(oscillator(1.0), "leapfrog"));
