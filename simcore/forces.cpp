@@ -227,22 +227,6 @@ double gasGradientSoA(const Surface& surface, const double* x, std::size_t begin
     return volume6;
 }
 
-SIMCORE_VECTOR_KERNEL
-void gasForcesSoA(const Surface& surface, double pressure, const double* x, std::size_t begin,
-                  std::size_t end, double* gx, double* gy, double* gz) {
-    const double sixth = pressure / 6.0;
-    const std::array<int, 3>* tri = surface.triangles.data();
-    for (std::size_t t = begin; t < end; ++t) {
-        const int a = 3 * tri[t][0], b = 3 * tri[t][1], c = 3 * tri[t][2];
-        const double ux = x[b] - x[a], uy = x[b + 1] - x[a + 1], uz = x[b + 2] - x[a + 2];
-        const double wx = x[c] - x[a], wy = x[c + 1] - x[a + 1], wz = x[c + 2] - x[a + 2];
-        const std::size_t k = t - begin;
-        gx[k] = sixth * (uy * wz - uz * wy);
-        gy[k] = sixth * (uz * wx - ux * wz);
-        gz[k] = sixth * (ux * wy - uy * wx);
-    }
-}
-
 void scatterTriangles(const Surface& surface, std::size_t begin, std::size_t end,
                       const double* gx, const double* gy, const double* gz, double* f) {
     const std::array<int, 3>* tri = surface.triangles.data();
