@@ -92,6 +92,7 @@ void scatterPairs(const SpringSet& springs, std::size_t begin, std::size_t end, 
 // returns the sum of x_a.(x_b x x_c) over them (six times their share of the volume).
 double gasGradientSoA(const Surface& surface, const double* x, std::size_t begin, std::size_t end,
                       double* gx, double* gy, double* gz);
+// Adds g[t - begin] of triangles [begin, end) to each of their three corners.
 void scatterTriangles(const Surface& surface, std::size_t begin, std::size_t end,
                       const double* gx, const double* gy, const double* gz, double* f);
 double partialVolume(const Surface& surface, int dimension, const double* x, std::size_t begin,
