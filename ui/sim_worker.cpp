@@ -98,13 +98,13 @@ void SimWorker::afterRebuild() {
     applyKick();
     m_commonTime = 0.0;
     m_until = -1.0;
+    restartClock();
     m_wallBeforeStart = 0.0;
     m_lastRowTime = -1.0;
     m_failureReported = false;
     m_rows.clear();
     m_historyReset = true;
     recordRow();
-    restartClock();
     publish(true);
 }
 
@@ -182,18 +182,18 @@ void SimWorker::setStartKick(double innerVx, double outerVx) {
 
 void SimWorker::run() {
     if (m_lanes.empty() || allFailed()) return;
+    if (!m_running) restartClock();
     m_running = true;
     m_until = -1.0;
-    restartClock();
     m_timer->start(m_speed == Speed::AsFastAsPossible ? 0 : 4);
     publish(true);
 }
 
 void SimWorker::runUntil(double simulatedTime) {
     if (m_lanes.empty()) return;
+    if (!m_running) restartClock();
     m_running = true;
     m_until = simulatedTime;
-    restartClock();
     m_timer->start(0);
     publish(true);
 }
@@ -218,13 +218,13 @@ void SimWorker::reset() {
     if (m_lanes.empty()) return;
     applyKick();
     m_commonTime = 0.0;
+    restartClock();
     m_wallBeforeStart = 0.0;
     m_lastRowTime = -1.0;
     m_failureReported = false;
     m_rows.clear();
     m_historyReset = true;
     recordRow();
-    restartClock();
     publish(true);
 }
 
@@ -255,6 +255,8 @@ void SimWorker::shutdown() {
 }
 
 void SimWorker::restartClock() {
+    // The wall time run so far is kept; the clock then counts from here.
+    if (m_running && m_clock.isValid()) m_wallBeforeStart += seconds(m_clock);
     m_clock.start();
     m_clockSimStart = m_commonTime;
     m_fallingBehind = false;
