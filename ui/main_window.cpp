@@ -351,6 +351,7 @@ void MainWindow::onFrame(const FramePtr& frame) {
         v->showFrame(frame);
     }
     m_runDock->showFrame(frame);
+    m_plotDock->setLive(frame->running);
     if (!m_paramsShown || !(m_shownParams == frame->parameters)) {
         m_shownParams = frame->parameters;
         m_paramsShown = true;

@@ -65,6 +65,8 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         plot->setObjectName(QStringLiteral("plot_") + spec.id);
         plot->setMinimumHeight(140);
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+        // Live traces: fast polylines and cached labels keep a replot cheap on a busy machine.
+        plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
         plot->plotLayout()->insertRow(0);
         auto* title = new QCPTextElement(plot, spec.title, QFont(font().family(), font().pointSize(), QFont::Bold));
         plot->plotLayout()->addElement(0, 0, title);
@@ -90,6 +92,7 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         // Zooming or dragging by hand means the user wants to look: stop autoscaling.
         connect(plot, &QCustomPlot::mouseWheel, this, [this] { m_autoscale->setChecked(false); });
         connect(plot, &QCustomPlot::mousePress, this, [this] { m_autoscale->setChecked(false); });
+        plot->setNotAntialiasedElements(m_live ? QCP::aePlottables : QCP::aeNone);
         m_plotLayout->addWidget(plot, 1);
         m_plots.push_back(plot);
     }
@@ -130,6 +133,13 @@ void PlotDock::setWindow(double seconds) {
     m_window = seconds;
     const int index = m_windowCombo->findData(seconds);
     if (index >= 0 && index != m_windowCombo->currentIndex()) m_windowCombo->setCurrentIndex(index);
+    scheduleReplot();
+}
+
+void PlotDock::setLive(bool live) {
+    if (live == m_live) return;
+    m_live = live;
+    for (QCustomPlot* p : m_plots) p->setNotAntialiasedElements(live ? QCP::aePlottables : QCP::aeNone);
     scheduleReplot();
 }
 

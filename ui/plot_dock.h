@@ -36,6 +36,8 @@ public:
 
     // Seconds of history shown; 0 = all of it.
     void setWindow(double seconds);
+    // While live, traces are drawn without antialiasing (cheaper); paused, smooth.
+    void setLive(bool live);
     double window() const { return m_window; }
 
 public slots:
@@ -56,6 +58,7 @@ private:
     double m_window = 10.0;
     double m_lastTime = 0.0;
     bool m_dirty = false;
+    bool m_live = false;
     bool m_created = false;
 };
 

@@ -7,6 +7,7 @@
 #include <QMouseEvent>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QLabel>
 #include <QPainter>
 #include <QWheelEvent>
@@ -16,6 +17,9 @@ static void initElasticLabResources() { Q_INIT_RESOURCE(elastic_lab); }
 namespace elui {
 
 namespace {
+
+QString g_renderer;  // GL_RENDERER of the probe context
+int g_samples = -1;  // viewports' multisampling, < 0: the default format's
 
 const QVector4D kFamilyColor[3] = {
     {0.12f, 0.14f, 0.22f, 1.0f},  // structural: near black
@@ -83,6 +87,11 @@ private:
 
 Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     initElasticLabResources();
+    if (g_samples >= 0) {
+        QSurfaceFormat f = format();
+        f.setSamples(g_samples);
+        setFormat(f);
+    }
     setMinimumSize(240, 200);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -102,6 +111,15 @@ Viewport::~Viewport() {
     doneCurrent();
 }
 
+QString Viewport::rendererName() { return g_renderer; }
+
+bool Viewport::softwareRenderer() {
+    return g_renderer.contains(QLatin1String("llvmpipe")) || g_renderer.contains(QLatin1String("softpipe")) ||
+           g_renderer.contains(QLatin1String("swrast"));
+}
+
+void Viewport::setSamples(int samples) { g_samples = samples; }
+
 bool Viewport::openGLAvailable() {
     static int cached = -1;
     if (cached >= 0) return cached == 1;
@@ -117,6 +135,8 @@ bool Viewport::openGLAvailable() {
     if (!context.makeCurrent(&surface)) return false;
     const auto version = context.format().version();
     cached = version >= qMakePair(3, 3) ? 1 : 0;
+    if (const auto* name = context.functions()->glGetString(GL_RENDERER))
+        g_renderer = QString::fromLatin1(reinterpret_cast<const char*>(name));
     context.doneCurrent();
     return cached == 1;
 }

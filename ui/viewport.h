@@ -37,6 +37,12 @@ public:
 
     // False where a QOpenGLWidget cannot work (the offscreen platform, no GL 3.3).
     static bool openGLAvailable();
+    // GL_RENDERER of the probe context ("" before openGLAvailable() or without GL).
+    static QString rendererName();
+    // True for Mesa's CPU renderers (llvmpipe, softpipe, swrast).
+    static bool softwareRenderer();
+    // Multisampling of viewports created from now on (< 0: the default format's).
+    static void setSamples(int samples);
 
     void setLane(int lane) { m_lane = lane; }
     int lane() const { return m_lane; }

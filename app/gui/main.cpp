@@ -99,6 +99,11 @@ int main(int argc, char** argv) {
     if (!afterOk || after < 0) return fail(QStringLiteral("--after needs a time >= 0 in seconds"));
 
     const bool screenshot = parser.isSet(shotOpt);
+    // Interactive on a CPU renderer (Mesa llvmpipe): no multisampling, it costs more than half
+    // the frame rate. Screenshots keep it (quality over speed); ELASTIC_LAB_MSAA decides if set.
+    if (!screenshot && !qEnvironmentVariableIsSet("ELASTIC_LAB_MSAA") && elui::Viewport::openGLAvailable() &&
+        elui::Viewport::softwareRenderer())
+        elui::Viewport::setSamples(0);
     elui::MainWindow window(!screenshot);
     if (parser.isSet(optionsOpt)) {
         elui::ViewOptions o = window.viewOptions();
