@@ -370,7 +370,8 @@ std::pair<std::size_t, std::size_t> ForceModel::range(std::size_t count, int chu
     return {count * c / n, count * (c + 1) / n};
 }
 
-void ForceModel::runChunks(const std::function<void(int)>& task) {
+template <class F>
+void ForceModel::runChunks(F&& task) {
     if (m_pool && m_chunks > 1) {
         m_pool->run(m_chunks, task);
     } else {

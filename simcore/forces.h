@@ -7,7 +7,6 @@
 
 #include <array>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -142,7 +141,8 @@ public:
     std::uint64_t forceEvaluations() const { return m_forceEvaluations; }
 
 private:
-    void runChunks(const std::function<void(int)>& task);
+    template <class F>
+    void runChunks(F&& task);
     static std::pair<std::size_t, std::size_t> range(std::size_t count, int chunk, int chunks);
     void countTerms();
 

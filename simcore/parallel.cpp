@@ -64,7 +64,7 @@ void ThreadPool::workerLoop() {
     }
 }
 
-void ThreadPool::run(int count, const std::function<void(int)>& task) {
+void ThreadPool::run(int count, TaskRef task) {
     if (count <= 0) return;
     if (m_workers.empty() || count == 1) {
         for (int i = 0; i < count; ++i) task(i);

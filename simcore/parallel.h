@@ -9,12 +9,30 @@
 
 #include <atomic>
 #include <condition_variable>
-#include <functional>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace simcore {
+
+// A non-owning reference to a callable taking a task index: unlike std::function it never
+// allocates, so dispatching work inside a step allocates nothing.
+class TaskRef {
+public:
+    // The callable must outlive the call it is passed to (a temporary lambda in the call's own
+    // full expression does).
+    template <class F>
+        requires(!std::is_same_v<std::remove_cvref_t<F>, TaskRef>)
+    TaskRef(F&& f)  // NOLINT: implicit on purpose, like std::function_ref
+        : m_object(const_cast<void*>(static_cast<const void*>(&f))),
+          m_call([](void* object, int i) { (*static_cast<std::remove_reference_t<F>*>(object))(i); }) {}
+    void operator()(int i) const { m_call(m_object, i); }
+
+private:
+    void* m_object;
+    void (*m_call)(void*, int);
+};
 
 class ThreadPool {
 public:
@@ -24,7 +42,7 @@ public:
     ThreadPool& operator=(const ThreadPool&) = delete;
 
     int threads() const { return static_cast<int>(m_workers.size()) + 1; }
-    void run(int count, const std::function<void(int)>& task);
+    void run(int count, TaskRef task);
 
 private:
     void workerLoop();
@@ -33,7 +51,7 @@ private:
     std::vector<std::thread> m_workers;
     std::mutex m_mutex;                  // only for sleeping and waking workers
     std::condition_variable m_wake;
-    const std::function<void(int)>* m_task = nullptr;  // published by m_generation
+    const TaskRef* m_task = nullptr;  // published by m_generation
     int m_count = 0;
     std::atomic<int> m_next{0};
     std::atomic<unsigned long> m_generation{0};

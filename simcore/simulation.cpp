@@ -489,12 +489,13 @@ bool Simulation::constrainLayers(bool apply) {
 }
 
 std::optional<std::string> Simulation::checkState(const Diagnostics& d) const {
-    // Causes before symptoms: speed and energy first, then the shape they wreck.
-    std::ostringstream why;
+    // Causes before symptoms: speed and energy first, then the shape they wreck. (The message
+    // stream is built only on failure: nothing is allocated in a good step.)
     if (!m_y.allFinite() || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
     const auto v = velocities();
     const double fastest = v.colwise().norm().maxCoeff();
     if (fastest * m_hTaken > 2.0 * m_box) {
+        std::ostringstream why;
         why << "runaway velocity: a particle moves " << fastest
             << " m/s, farther than the whole box in one step";
         return why.str();
@@ -503,6 +504,7 @@ std::optional<std::string> Simulation::checkState(const Diagnostics& d) const {
     const double budget = kRunawayEnergyFactor *
                           (m_energyScale + std::abs(m_diag.workPointer) + std::abs(m_diag.workEdits));
     if (held > budget) {
+        std::ostringstream why;
         why << "runaway energy: kinetic + elastic energy " << held << " J exceeds " << budget
             << " J (" << kRunawayEnergyFactor << " x the body's energy scale)";
         return why.str();
@@ -511,6 +513,7 @@ std::optional<std::string> Simulation::checkState(const Diagnostics& d) const {
     for (const Surface& s : topo.surfaces) {
         const double volume = d.volume[static_cast<std::size_t>(layerSlot(s.layer))];
         if (volume <= kCollapsedVolumeFraction * s.restVolume) {
+            std::ostringstream why;
             why << "the " << layerName(s.layer) << " layer "
                 << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
                 << (topo.dimension == 2 ? "area" : "volume") << " is " << volume

@@ -3,12 +3,25 @@
 // bit-identical trajectories (reruns and side-by-side comparisons agree).
 #include <QtTest>
 
+#include <atomic>
+#include <cstdlib>
+#include <new>
 #include <random>
 
 #include "forces.h"
 #include "simulation.h"
 
 using namespace simcore;
+
+// Every allocation in this test binary is counted (STYLE: nothing is allocated in a step).
+static std::atomic<long> g_allocations{0};
+void* operator new(std::size_t size) {
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(size ? size : 1)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -102,6 +115,30 @@ private slots:
         }
         QVERIFY(one.state() == two.state());  // bit for bit
         QCOMPARE(one.diagnostics().total(), two.diagnostics().total());
+    }
+    void stepsAllocateNothing_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("integrator");
+        QTest::addColumn<int>("threads");
+        QTest::newRow("sphere L4 rk4 2 threads") << "sphere3d" << "rk4" << 2;
+        QTest::newRow("sphere L4 verlet 1 thread") << "sphere3d" << "verlet" << 1;
+        QTest::newRow("ring rk4") << "ring2d" << "rk4" << 1;
+        QTest::newRow("spring euler") << "spring1d" << "euler" << 1;
+    }
+    void stepsAllocateNothing() {
+        QFETCH(QString, scene);
+        QFETCH(QString, integrator);
+        QFETCH(int, threads);
+        ParameterSet p(findScene(scene.toStdString())->kind);
+        if (scene == "sphere3d") p.set("subdivisions", 4);
+        p.set("perturb", 0.01);
+        Simulation sim(p, integrator.toStdString());
+        sim.setThreads(threads);
+        sim.grab(sim.nearestGrabbable(Eigen::Vector3d(0, 3, 0)), Eigen::Vector3d(0.5, 3, 0));
+        for (int i = 0; i < 5; ++i) QVERIFY(sim.step());  // warm-up
+        const long before = g_allocations.load();
+        for (int i = 0; i < 200; ++i) QVERIFY(sim.step());  // includes wall contacts
+        QCOMPARE(g_allocations.load() - before, 0L);
     }
     void poolRunsEveryTaskOnce() {
         ThreadPool pool(2);
