@@ -561,7 +561,15 @@ void Viewport::paintGL() {
 void Viewport::resizeEvent(QResizeEvent* event) {
     QOpenGLWidget::resizeEvent(event);
     if (m_legend) m_legend->move(width() - m_legend->width() - 10, height() - m_legend->height() - 10);
-    if (m_info) m_info->setMaximumWidth(std::max(200, width() - 20));
+    layoutInfo();
+}
+
+void Viewport::layoutInfo() {
+    if (!m_info) return;
+    // As wide as the text needs, at most the view's width; tall enough for the wrapped lines.
+    const int widest = std::max(120, width() - 16);
+    m_info->setFixedWidth(std::min(widest, m_info->sizeHint().width()));
+    m_info->setFixedHeight(m_info->heightForWidth(m_info->width()));
 }
 
 void Viewport::updateOverlay() {
@@ -582,7 +590,7 @@ void Viewport::updateOverlay() {
                              .toHtmlEscaped());
     if (m_info->text() != html) {
         m_info->setText(html);
-        m_info->adjustSize();
+        layoutInfo();
     }
     m_legend->setRange(m_options.strainRange);
     m_legend->setVisible(m_options.strain);

@@ -93,6 +93,7 @@ private:
     void drawPolygonStencil(const Elements& fan, const QVector4D& color);
     void drawBox();
     void updateOverlay();
+    void layoutInfo();
     bool nearBody(const QPointF& pixel) const;
     QVector3D anchorUnder(const QPointF& pixel) const;
 
