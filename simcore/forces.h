@@ -89,8 +89,9 @@ void scatterPairs(const SpringSet& springs, std::size_t begin, std::size_t end, 
                   const double* fy, const double* fz, double* f);
 // Per-triangle volume gradient (b-a)x(c-a)/6 for triangles [begin, end), into g[t - begin];
 // returns the sum of x_a.(x_b x x_c) over them (six times their share of the volume).
+// volumeScratch holds end - begin doubles.
 double gasGradientSoA(const Surface& surface, const double* x, std::size_t begin, std::size_t end,
-                      double* gx, double* gy, double* gz);
+                      double* gx, double* gy, double* gz, double* volumeScratch);
 // Adds g[t - begin] of triangles [begin, end) to each of their three corners.
 void scatterTriangles(const Surface& surface, std::size_t begin, std::size_t end,
                       const double* gx, const double* gy, const double* gz, double* f);
