@@ -1,6 +1,8 @@
 // elastic-lab-cli contract: listings, CSV and state columns, exit codes, no NaN in output.
 #include <QtTest>
 
+#include "cli_process.h"
+
 #include <QProcess>
 #include <QTemporaryDir>
 
@@ -11,18 +13,8 @@
 
 namespace {
 
-struct Result {
-    int code = -1;
-    QString out;
-    QString err;
-};
-
-Result cli(const QStringList& args) {
-    QProcess p;
-    p.start(ELASTIC_LAB_CLI, args);
-    if (!p.waitForFinished(120000)) return {};
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
-}
+using Result = CliResult;
+Result cli(const QStringList& args) { return runCli(args); }
 
 QList<QStringList> readCsv(const QString& path) {
     QFile f(path);
