@@ -456,10 +456,10 @@ std::array<double, kSpringFamilyCount> ForceModel::springEnergies(const double* 
     return energy;
 }
 
-void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtras& extras) {
+void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtras& extras, bool count) {
     const Topology& topo = *m_topology;
     extras = ForceExtras{};
-    countTerms();
+    if (count) countTerms();
 
     // Stage 1: each chunk clears its own particles, adds gravity and its own springs, and for
     // the gas its faces' volume and unscaled gradient dV/dx (P = c/V needs the whole volume).

@@ -128,8 +128,9 @@ public:
     // Springs and faces evaluated after the chunks because they join particles of two chunks.
     std::size_t sharedElements() const;
 
-    // Computes f = F(x, v) (3N). Overwrites f.
-    void evaluate(const double* x, const double* v, double* f, ForceExtras& extras);
+    // Computes f = F(x, v) (3N). Overwrites f. With count = false the evaluation is not
+    // counted (a display asking for the current forces is not part of the run's cost).
+    void evaluate(const double* x, const double* v, double* f, ForceExtras& extras, bool count = true);
     // The same forces by the plain one-pass kernels (the reference the fast path is tested on).
     void evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras);
     // Elastic energy per spring family and enclosed volume per surface, chunked like forces.

@@ -297,6 +297,11 @@ void Simulation::measure(Diagnostics& d) const {
     d.forceEvaluations = m_forces.forceEvaluations();
 }
 
+void Simulation::currentForces(double* f) const {
+    ForceExtras extras;
+    m_forces.evaluate(m_y.data(), m_y.data() + m_n, f, extras, false);
+}
+
 double Simulation::totalEnergyNow() const {
     Diagnostics d;
     measure(d);

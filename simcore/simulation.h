@@ -132,6 +132,9 @@ public:
     // The same, also setting the step counter and the simulated time (a resumed experiment).
     void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step, double time);
     const ForceModel& forces() const { return m_forces; }
+    // The total force on every particle in the current state (3N) [N], e.g. to draw force
+    // vectors. Not counted as a force evaluation of the run.
+    void currentForces(double* f) const;
     // The ODE the integrators see, with its force Jacobians (for linear stability analysis).
     OdeSystem& odeSystem();
     Eigen::Vector3d boxCentre() const { return m_boxCentre; }

@@ -152,6 +152,22 @@ private slots:
         for (int i = 0; i < 200; ++i) QVERIFY(sim.step());  // includes wall contacts
         QCOMPARE(g_allocations.load() - before, 0L);
     }
+    void currentForcesAreUncountedAndExact() {
+        Simulation sim(largeSphere(4), "rk4");
+        for (int i = 0; i < 3; ++i) QVERIFY(sim.step());
+        const std::uint64_t evaluations = sim.diagnostics().forceEvaluations;
+        const std::uint64_t springTerm = sim.forces().evaluations(Term::Springs);
+        Eigen::VectorXd f(3 * sim.particleCount()), reference(3 * sim.particleCount());
+        sim.currentForces(f.data());
+        ForceModel copy = sim.forces();
+        copy.setPool(nullptr);
+        ForceExtras extras;
+        copy.evaluateReference(sim.positions().data(), sim.velocities().data(), reference.data(), extras);
+        QVERIFY((f - reference).cwiseAbs().maxCoeff() <= 1e-12 * reference.cwiseAbs().maxCoeff());
+        QCOMPARE(sim.forces().evaluations(Term::Springs), springTerm);
+        QVERIFY(sim.step());
+        QCOMPARE(sim.diagnostics().forceEvaluations, evaluations + 4);
+    }
     void poolRunsEveryTaskOnce() {
         ThreadPool pool(2);
         for (int round = 0; round < 2000; ++round) {

@@ -378,12 +378,9 @@ void SimWorker::publish(bool force) {
         lane.positions.resize(std::size_t(x.size()));
         for (Eigen::Index k = 0; k < x.size(); ++k) lane.positions[std::size_t(k)] = float(x.data()[k]);
         if (m_forcesWanted) {
-            // A private copy of the force model: the simulation's own counters stay untouched.
-            simcore::ForceModel model = sim->forces();
-            model.setPool(nullptr);
-            simcore::ForceExtras extras;
+            // Not counted as one of the run's force evaluations.
             std::vector<double> f(std::size_t(x.size()));
-            model.evaluate(x.data(), sim->velocities().data(), f.data(), extras);
+            sim->currentForces(f.data());
             lane.forces.assign(f.begin(), f.end());
         }
         lane.diagnostics = sim->diagnostics();
