@@ -10,6 +10,7 @@
 #include <QOpenGLFunctions>
 #include <QLabel>
 #include <QPainter>
+#include <QTextDocument>
 #include <QWheelEvent>
 
 static void initElasticLabResources() { Q_INIT_RESOURCE(elastic_lab); }
@@ -566,10 +567,18 @@ void Viewport::resizeEvent(QResizeEvent* event) {
 
 void Viewport::layoutInfo() {
     if (!m_info) return;
-    // As wide as the text needs, at most the view's width; tall enough for the wrapped lines.
+    // As wide as the text's longest line needs (a word-wrapping label's size hint is not
+    // that), at most the view's width; tall enough for the wrapped lines.
+    QTextDocument document;
+    document.setDefaultFont(m_info->font());
+    document.setHtml(m_info->text());
+    const int padding = 2 * 3 + 2 * m_info->margin() + m_info->contentsMargins().left() +
+                        m_info->contentsMargins().right() + 4;  // style sheet padding: 3px
+    const int natural = int(std::ceil(document.idealWidth())) + padding;
     const int widest = std::max(120, width() - 16);
-    m_info->setFixedWidth(std::min(widest, m_info->sizeHint().width()));
-    m_info->setFixedHeight(m_info->heightForWidth(m_info->width()));
+    m_info->setFixedWidth(std::clamp(natural, 40, widest));
+    const int height = m_info->heightForWidth(m_info->width());
+    m_info->setFixedHeight(height > 0 ? height : m_info->sizeHint().height());
 }
 
 void Viewport::updateOverlay() {
