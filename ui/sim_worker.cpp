@@ -95,17 +95,8 @@ void SimWorker::afterRebuild() {
     scene->bodyRadius = std::max(radius, 0.5);
     m_scene = std::move(scene);
     updateDtLimit();
-    applyKick();
-    m_commonTime = 0.0;
     m_until = -1.0;
-    restartClock();
-    m_wallBeforeStart = 0.0;
-    m_lastRowTime = -1.0;
-    m_failureReported = false;
-    m_rows.clear();
-    m_historyReset = true;
-    recordRow();
-    publish(true);
+    startHistory();
 }
 
 void SimWorker::applyKick() {
@@ -216,6 +207,11 @@ void SimWorker::stepOnce() {
 void SimWorker::reset() {
     for (auto& sim : m_lanes) sim->reset();
     if (m_lanes.empty()) return;
+    startHistory();
+}
+
+void SimWorker::startHistory() {
+    // Back at t = 0 (a new scene or a reset): kick, clocks, rows and a first frame.
     applyKick();
     m_commonTime = 0.0;
     restartClock();

@@ -76,6 +76,7 @@ private:
     bool stepAll();                       // one common DT for every lane; false: nothing ran
     void restartClock();
     void applyKick();
+    void startHistory();
     void afterRebuild();
     void recordRow();
     void publish(bool force);
