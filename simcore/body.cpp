@@ -1,10 +1,11 @@
 #include "body.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 
 namespace simcore {
@@ -305,7 +306,73 @@ Body buildLatLongSphere(const LatLongShape& shape, double massInner, double mass
     return twoLayerSphere(mesh, edges, shape.radiusInner, shape.radiusOuter, massInner, massOuter);
 }
 
+BodySize bodySize(const ParameterSet& params) {
+    switch (params.kind()) {
+        case SceneKind::Spring1d: return {2, 1, 0};
+        case SceneKind::Ring2d: {
+            // per layer n particles and n gas edges; springs: 2n structural, n radius, 2n shear
+            const long long n = params.getInt("particles");
+            return {2 * n, 5 * n, 2 * n};
+        }
+        case SceneKind::Sphere3d: {
+            // per layer V = 4*4^L + 2, E = 12*4^L, F = 8*4^L; springs: 2E structural, V radius, 2E shear
+            const long long q = 1LL << (2 * params.getInt("subdivisions"));
+            const long long v = 4 * q + 2, e = 12 * q, f = 8 * q;
+            return {2 * v, 4 * e + v, 2 * f};
+        }
+        case SceneKind::Sphere3dLatLong: {
+            // per layer V = 2 + slices(stacks-1), E = slices(2 stacks - 1), F = 2 slices(stacks-1)
+            const long long s = params.getInt("slices"), k = params.getInt("stacks");
+            const long long v = 2 + s * (k - 1), e = s * (2 * k - 1), f = 2 * s * (k - 1);
+            return {2 * v, 4 * e + v, 2 * f};
+        }
+    }
+    throw std::invalid_argument("unknown scene kind");
+}
+
+double memoryBoundBytes(const BodySize& size) {
+    // Bytes per particle, spring and face, rounded up from the live heap measured with each
+    // integrator (implicit Euler needs the most: its conjugate-gradient vectors).
+    constexpr double kPerParticle = 1060.0, kPerSpring = 80.0, kPerFace = 48.0;
+    return kPerParticle * double(size.particles) + kPerSpring * double(size.springs) +
+           kPerFace * double(size.faces);
+}
+
+std::optional<std::string> validateShape(const ParameterSet& params) {
+    if (params.kind() != SceneKind::Spring1d &&
+        !(params.get("radius_inner") < params.get("radius_outer"))) {
+        std::ostringstream os;
+        os << "radius_inner (" << params.get("radius_inner") << " m) must be below radius_outer ("
+           << params.get("radius_outer") << " m)";
+        return os.str();
+    }
+    const BodySize size = bodySize(params);
+    const double bytes = memoryBoundBytes(size);
+    if (bytes <= kMemoryLimitBytes) return std::nullopt;
+    std::string resolution;
+    switch (params.kind()) {
+        case SceneKind::Ring2d: resolution = "particles=" + std::to_string(params.getInt("particles")); break;
+        case SceneKind::Sphere3d: resolution = "subdivisions=" + std::to_string(params.getInt("subdivisions")); break;
+        case SceneKind::Sphere3dLatLong:
+            resolution = "slices=" + std::to_string(params.getInt("slices")) +
+                         ", stacks=" + std::to_string(params.getInt("stacks"));
+            break;
+        case SceneKind::Spring1d: break;
+    }
+    // The largest body of this kind within the limit, at its ratio of springs and faces per particle.
+    const double perParticle = bytes / double(size.particles);
+    std::ostringstream os;
+    os.precision(3);
+    os << "resolution too large: " << resolution << " gives " << size.particles << " particles and "
+       << size.springs << " springs, needing up to " << bytes / (1024.0 * 1024.0 * 1024.0)
+       << " GiB; the limit is " << kMemoryLimitBytes / (1024.0 * 1024.0 * 1024.0)
+       << " GiB per simulation (about " << static_cast<long long>(kMemoryLimitBytes / perParticle)
+       << " particles for this scene)";
+    return os.str();
+}
+
 Body buildBody(const ParameterSet& params) {
+    if (auto error = validateShape(params)) throw std::invalid_argument(*error);
     switch (params.kind()) {
         case SceneKind::Spring1d:
             return buildSpring1d({params.get("length"), params.get("initial_length"),

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -118,7 +119,29 @@ Body buildSphere3d(const SphereShape& shape, double massInner, double massOuter)
 Body buildLatLongSphere(const LatLongShape& shape, double massInner, double massOuter);
 // Latitude/longitude structural edges exclude the quads' diagonals; see body.cpp.
 
-// The body a scene describes, from its parameters.
+// How large the body a scene describes is, counted from its shape parameters without building
+// it: particles (both layers), springs (all families) and gas faces (triangles in 3D, edges in
+// 2D). Equal to the built body's counts (tested).
+struct BodySize {
+    long long particles = 0;
+    long long springs = 0;
+    long long faces = 0;
+};
+BodySize bodySize(const ParameterSet& params);
+
+// The stated memory limit of one simulation, and an upper bound of what a body of a given size
+// takes with the most memory-hungry integrator (implicit Euler): state, integrator stages, force
+// buffers, topology and the chunked spring copy. Measured live heap is 0.6-0.9 of this bound
+// (tested); see docs/reliability.md.
+inline constexpr double kMemoryLimitBytes = 1024.0 * 1024.0 * 1024.0;
+double memoryBoundBytes(const BodySize& size);
+
+// Checks what no single parameter can: radius_inner below radius_outer, and a resolution whose
+// memory bound stays within kMemoryLimitBytes. The message says what is allowed.
+std::optional<std::string> validateShape(const ParameterSet& params);
+
+// The body a scene describes, from its parameters; throws std::invalid_argument with
+// validateShape's message for a shape it refuses.
 Body buildBody(const ParameterSet& params);
 
 // Exact enclosed measure of a closed layer at the given positions: shoelace area (2D) or

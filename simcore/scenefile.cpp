@@ -106,8 +106,7 @@ static SceneFileResult parseSceneJson(const std::string& text) {
                 return failure("parameters." + *error);
         }
     }
-    if (scene->kind != SceneKind::Spring1d && file.params.get("radius_inner") >= file.params.get("radius_outer"))
-        return failure("parameters.radius_inner must be below radius_outer");
+    if (auto error = validateShape(file.params)) return failure("parameters: " + *error);
     if (root.contains("state")) {
         const Json& state = root["state"];
         if (!state.is_object()) return failure("state: expected an object");

@@ -191,6 +191,67 @@ private slots:
     void refusesCrossedRadii() {
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildRing2d({12, 2.0, 1.5}, 1.0, 1.0));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildSphere3d({1, 2.0, 2.0}, 1.0, 1.0));
+        ParameterSet p(SceneKind::Sphere3dLatLong);
+        p.set("radius_inner", 2.5);
+        const auto error = validateShape(p);
+        QVERIFY(error && error->find("radius_inner") != std::string::npos);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildBody(p));
+    }
+    // bodySize counts without building; it must agree with what the builders make.
+    void sizeWithoutBuildingMatchesTheBody_data() {
+        QTest::addColumn<int>("kind");
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<int>("value");
+        QTest::addColumn<int>("stacks");
+        QTest::newRow("spring1d") << int(SceneKind::Spring1d) << "" << 0 << 0;
+        for (int n : {3, 12, 1001})
+            QTest::addRow("ring %d", n) << int(SceneKind::Ring2d) << "particles" << n << 0;
+        for (int level = 0; level <= 5; ++level)
+            QTest::addRow("sphere L%d", level) << int(SceneKind::Sphere3d) << "subdivisions" << level << 0;
+        for (auto [slices, stacks] : {std::pair{3, 2}, std::pair{8, 4}, std::pair{37, 19}})
+            QTest::addRow("latlong %dx%d", slices, stacks)
+                << int(SceneKind::Sphere3dLatLong) << "slices" << slices << stacks;
+    }
+    void sizeWithoutBuildingMatchesTheBody() {
+        QFETCH(int, kind);
+        QFETCH(QString, key);
+        QFETCH(int, value);
+        QFETCH(int, stacks);
+        ParameterSet p{SceneKind(kind)};
+        if (!key.isEmpty()) QVERIFY(!p.set(key.toStdString(), value));
+        if (stacks) QVERIFY(!p.set("stacks", stacks));
+        const Body body = buildBody(p);
+        long long faces = 0;
+        for (const Surface& s : body.topology.surfaces)
+            faces += static_cast<long long>(s.triangles.size() + s.edges.size());
+        const BodySize size = bodySize(p);
+        QCOMPARE(size.particles, static_cast<long long>(body.topology.particleCount()));
+        QCOMPARE(size.springs, static_cast<long long>(body.topology.springCount()));
+        QCOMPARE(size.faces, faces);
+    }
+    // The largest resolutions the table allows are checked against the stated memory limit
+    // before anything is built; the message names the resolution and says what fits.
+    void refusesResolutionsBeyondTheMemoryLimit() {
+        ParameterSet latlong(SceneKind::Sphere3dLatLong);
+        latlong.set("slices", 1024);
+        latlong.set("stacks", 512);
+        const auto error = validateShape(latlong);
+        QVERIFY(error);
+        for (const char* word : {"slices=1024", "stacks=512", "GiB", "limit is 1 GiB", "particles for this scene"})
+            QVERIFY2(error->find(word) != std::string::npos, error->c_str());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildBody(latlong));
+        // What the table allows for the octahedron sphere (L7, 262,152 particles) and the ring
+        // (100,000 per layer) fits; so does a lat/long sphere of the same size as L7.
+        ParameterSet sphere(SceneKind::Sphere3d);
+        sphere.set("subdivisions", 7);
+        QVERIFY(!validateShape(sphere));
+        ParameterSet ring(SceneKind::Ring2d);
+        ring.set("particles", 100000);
+        QVERIFY(!validateShape(ring));
+        latlong.set("slices", 512);
+        latlong.set("stacks", 256);
+        QVERIFY(!validateShape(latlong));
+        QVERIFY(memoryBoundBytes(bodySize(latlong)) <= kMemoryLimitBytes);
     }
 };
 

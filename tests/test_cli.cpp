@@ -115,6 +115,9 @@ private slots:
         QTest::newRow("unwritable csv") << QStringList{"run", "--csv", "/nonexistent-dir/x.csv"} << "/nonexistent-dir/x.csv";
         QTest::newRow("unknown command") << QStringList{"fly"} << "fly";
         QTest::newRow("crossed radii") << QStringList{"run", "--set", "radius_inner=3"} << "radius_inner";
+        QTest::newRow("beyond the memory limit")
+            << QStringList{"run", "--scene", "sphere3d-latlong", "--set", "slices=1024", "--set", "stacks=512"}
+            << "limit is 1 GiB";
     }
     void badInputExitsWithTwo() {
         QFETCH(QStringList, args);

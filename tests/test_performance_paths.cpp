@@ -3,12 +3,15 @@
 // bit-identical trajectories (reruns and side-by-side comparisons agree).
 #include <QtTest>
 
+#include <malloc.h>
+
 #include <atomic>
 #include <cstdlib>
 #include <new>
 #include <random>
 
 #include "forces.h"
+#include "integrators.h"
 #include "simulation.h"
 
 using namespace simcore;
@@ -151,6 +154,44 @@ private slots:
         const long before = g_allocations.load();
         for (int i = 0; i < 200; ++i) QVERIFY(sim.step());  // includes wall contacts
         QCOMPARE(g_allocations.load() - before, 0L);
+    }
+    // The memory bound that validateShape checks against the stated limit must cover what a
+    // simulation really holds on the heap (state, stages, forces, topology) with every
+    // integrator, and not overstate it by more than 2x (else the limit refuses bodies that fit).
+    void memoryBoundCoversTheLiveHeap_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<int>("value");
+        QTest::newRow("sphere L5") << "sphere3d" << "subdivisions" << 5;
+        QTest::newRow("ring 20000") << "ring2d" << "particles" << 20000;
+        QTest::newRow("latlong 192x96") << "sphere3d-latlong" << "slices" << 192;
+    }
+    void memoryBoundCoversTheLiveHeap() {
+        if (!ELASTIC_LAB_COUNT_ALLOCATIONS) QSKIP("heap accounting needs the default allocator");
+        QFETCH(QString, scene);
+        QFETCH(QString, key);
+        QFETCH(int, value);
+        ParameterSet p(findScene(scene.toStdString())->kind);
+        p.set(key.toStdString(), value);
+        if (scene == "sphere3d-latlong") p.set("stacks", value / 2);
+        p.set("gravity", 0.0);  // only the memory matters here: keep every integrator stable
+        p.set("dt", 1e-4);
+        const double bound = memoryBoundBytes(bodySize(p));
+        auto liveHeap = [] {
+            const struct mallinfo2 m = mallinfo2();
+            return double(m.uordblks + m.hblkhd);
+        };
+        for (const IntegratorInfo& info : integratorTable()) {
+            const double before = liveHeap();
+            Simulation sim(p, info.name);
+            sim.setThreads(2);
+            for (int i = 0; i < 3; ++i) QVERIFY(sim.step());
+            const double held = liveHeap() - before;
+            const QByteArray what = QByteArray(info.name.data(), qsizetype(info.name.size())) + ": " +
+                                    QByteArray::number(held) + " B held, bound " + QByteArray::number(bound);
+            QVERIFY2(held <= bound, what);
+            QVERIFY2(bound <= 2.0 * held || info.name != "implicit-euler", what);
+        }
     }
     void currentForcesAreUncountedAndExact() {
         Simulation sim(largeSphere(4), "rk4");

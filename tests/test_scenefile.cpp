@@ -95,6 +95,7 @@ private slots:
         QTest::newRow("nan is not JSON") << "\"kd\": 15" << "\"kd\": NaN" << "line 8";
         QTest::newRow("state of wrong size") << "\"positions\": [[" << "\"positions\": [[0, 0, 0], [" << "positions";
         QTest::newRow("unknown state key") << "\"time\":" << "\"clock\":" << "clock";
+        QTest::newRow("crossed radii") << "\"radius_inner\": 1.5" << "\"radius_inner\": 2.5" << "radius_inner (2.5 m) must be below";
     }
     void refusesBadFiles() {
         QFETCH(QString, from);

@@ -104,10 +104,7 @@ SceneSetup sceneSetup(const Options& options) {
     if (!simcore::makeIntegrator(setup.integrator))
         throw UsageError("unknown integrator '" + setup.integrator +
                          "'; allowed: " + simcore::integratorNames());
-    const auto& p = setup.params;
-    if (scene->kind != simcore::SceneKind::Spring1d && p.get("radius_inner") >= p.get("radius_outer"))
-        throw UsageError("radius_inner (" + std::to_string(p.get("radius_inner")) +
-                         ") must be below radius_outer (" + std::to_string(p.get("radius_outer")) + ")");
+    if (auto error = simcore::validateShape(setup.params)) throw UsageError(*error);
     return setup;
 }
 
