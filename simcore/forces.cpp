@@ -133,127 +133,6 @@ double pointerEnergy(const PointerSpring& pointer, double mks, double rest, cons
     return 0.5 * mks * stretch * stretch;
 }
 
-// Multi-versioned for AVX2 where the CPU has it (chosen at load time), plain x86-64 otherwise.
-// Without -ffast-math and with FP contraction off (ISO C++ mode) both versions round alike.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(ELASTIC_LAB_MULTIVERSION)
-#define SIMCORE_VECTOR_KERNEL __attribute__((target_clones("avx2", "default")))
-#else
-#define SIMCORE_VECTOR_KERNEL
-#endif
-
-// Sum of v[0..n) in four interleaved lanes: independent add chains (four times the
-// throughput of one running sum) in an order fixed by n alone, so results stay deterministic.
-static double sumLanes(const double* v, std::size_t n) {
-    double lane[4] = {0.0, 0.0, 0.0, 0.0};
-    std::size_t k = 0;
-    for (; k + 4 <= n; k += 4)
-        for (int l = 0; l < 4; ++l) lane[l] += v[k + static_cast<std::size_t>(l)];
-    for (; k < n; ++k) lane[0] += v[k];
-    return (lane[0] + lane[1]) + (lane[2] + lane[3]);
-}
-
-SIMCORE_VECTOR_KERNEL
-static void springMath(std::size_t count, double ks, double kd, const double* __restrict rest,
-                       double* __restrict dx, double* __restrict dy, double* __restrict dz,
-                       const double* __restrict dvx, const double* __restrict dvy,
-                       const double* __restrict dvz, double* __restrict power) {
-    // Pure structure-of-arrays arithmetic (no gathers): vectorises with SSE2, AVX2 or AVX-512.
-    // In: separations d and relative velocities dv per spring. Out: force on the first
-    // particle in (dx, dy, dz) and damping power. A spring shorter than kDegenerateLength keeps
-    // a finite direction (divided by the epsilon instead of its length) and a zero force.
-    for (std::size_t s = 0; s < count; ++s) {
-        const double length = std::sqrt(dx[s] * dx[s] + dy[s] * dy[s] + dz[s] * dz[s]);
-        const bool tooShort = length < kDegenerateLength;
-        const double inv = 1.0 / std::max(length, kDegenerateLength);
-        const double live = tooShort ? 0.0 : 1.0;
-        const double ux = dx[s] * inv, uy = dy[s] * inv, uz = dz[s] * inv;
-        const double closing = dvx[s] * ux + dvy[s] * uy + dvz[s] * uz;
-        const double magnitude = live * (ks * (length - rest[s]) + kd * closing);
-        dx[s] = magnitude * ux;
-        dy[s] = magnitude * uy;
-        dz[s] = magnitude * uz;
-        power[s] = live * kd * closing * closing;
-    }
-}
-
-int springForcesSoA(const SpringSet& springs, double ks, double kd, const double* x,
-                    const double* v, std::size_t begin, std::size_t end, SpringScratch& scratch) {
-    // Gather pass (scalar loads, streaming stores), then the vectorised arithmetic.
-    const int* ia = springs.a.data();
-    const int* ib = springs.b.data();
-    const std::size_t count = end - begin;
-    double *dx = scratch.dx.data(), *dy = scratch.dy.data(), *dz = scratch.dz.data();
-    double *dvx = scratch.dvx.data(), *dvy = scratch.dvy.data(), *dvz = scratch.dvz.data();
-    int degenerate = 0;
-    for (std::size_t k = 0; k < count; ++k) {
-        const int i = 3 * ia[begin + k], j = 3 * ib[begin + k];
-        dx[k] = x[j] - x[i];
-        dy[k] = x[j + 1] - x[i + 1];
-        dz[k] = x[j + 2] - x[i + 2];
-        degenerate += dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k] < kDegenerateLength * kDegenerateLength;
-        dvx[k] = v[j] - v[i];
-        dvy[k] = v[j + 1] - v[i + 1];
-        dvz[k] = v[j + 2] - v[i + 2];
-    }
-    springMath(count, ks, kd, springs.rest.data() + begin, dx, dy, dz, dvx, dvy, dvz,
-               scratch.power.data());
-    return degenerate;
-}
-
-void scatterPairs(const SpringSet& springs, std::size_t begin, std::size_t end, const double* fx,
-                  const double* fy, const double* fz, double* f) {
-    const int* ia = springs.a.data();
-    const int* ib = springs.b.data();
-    for (std::size_t s = begin; s < end; ++s) {
-        const int i = 3 * ia[s], j = 3 * ib[s];
-        const std::size_t k = s - begin;
-        f[i] += fx[k];
-        f[i + 1] += fy[k];
-        f[i + 2] += fz[k];
-        f[j] -= fx[k];
-        f[j + 1] -= fy[k];
-        f[j + 2] -= fz[k];
-    }
-}
-
-SIMCORE_VECTOR_KERNEL
-static void gasGradientMath(const Surface& surface, const double* x, std::size_t begin,
-                            std::size_t end, double* __restrict gx, double* __restrict gy,
-                            double* __restrict gz, double* __restrict volume6) {
-    const std::array<int, 3>* tri = surface.triangles.data();
-    for (std::size_t t = begin; t < end; ++t) {
-        const int a = 3 * tri[t][0], b = 3 * tri[t][1], c = 3 * tri[t][2];
-        const std::size_t k = t - begin;
-        volume6[k] = x[a] * (x[b + 1] * x[c + 2] - x[b + 2] * x[c + 1]) +
-                     x[a + 1] * (x[b + 2] * x[c] - x[b] * x[c + 2]) +
-                     x[a + 2] * (x[b] * x[c + 1] - x[b + 1] * x[c]);
-        const double ux = x[b] - x[a], uy = x[b + 1] - x[a + 1], uz = x[b + 2] - x[a + 2];
-        const double wx = x[c] - x[a], wy = x[c + 1] - x[a + 1], wz = x[c + 2] - x[a + 2];
-        gx[k] = (uy * wz - uz * wy) / 6.0;
-        gy[k] = (uz * wx - ux * wz) / 6.0;
-        gz[k] = (ux * wy - uy * wx) / 6.0;
-    }
-}
-
-double gasGradientSoA(const Surface& surface, const double* x, std::size_t begin, std::size_t end,
-                      double* gx, double* gy, double* gz, double* volumeScratch) {
-    // dV/dx for each corner of triangle abc is (b-a)x(c-a)/6 summed over a closed surface;
-    // the volume term x_a.(x_b x x_c) comes from the same loads, summed afterwards.
-    gasGradientMath(surface, x, begin, end, gx, gy, gz, volumeScratch);
-    return sumLanes(volumeScratch, end - begin);
-}
-
-void scatterTriangles(const Surface& surface, std::size_t begin, std::size_t end,
-                      const double* gx, const double* gy, const double* gz, double* f) {
-    const std::array<int, 3>* tri = surface.triangles.data();
-    for (std::size_t t = begin; t < end; ++t)
-        for (int corner : tri[t]) {
-            f[3 * corner] += gx[t - begin];
-            f[3 * corner + 1] += gy[t - begin];
-            f[3 * corner + 2] += gz[t - begin];
-        }
-}
-
 double partialVolume(const Surface& surface, int dimension, const double* x, std::size_t begin,
                      std::size_t end) {
     double sum = 0.0;
@@ -279,11 +158,10 @@ double partialVolume(const Surface& surface, int dimension, const double* x, std
 ForceModel::ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms)
     : m_topology(topology), m_mass(mass), m_terms(terms) {
     m_chunks = topology->springCount() >= kChunkThreshold ? kChunks : 1;
-    for (SpringScratch& chunk : m_scratch)
-        for (auto* buffer : {&chunk.dx, &chunk.dy, &chunk.dz, &chunk.dvx, &chunk.dvy, &chunk.dvz, &chunk.power})
-            buffer->assign(kBlock, 0.0);
     partition();
-    if (terms.has(Term::Gas)) m_gradient.assign(static_cast<std::size_t>(3 * topology->particleCount()), 0.0);
+    const auto n4 = static_cast<std::size_t>(4 * topology->particleCount());
+    m_force4 = kernels::AlignedBuffer(n4);
+    if (terms.has(Term::Gas)) m_gradient4 = kernels::AlignedBuffer(n4);
 }
 
 void ForceModel::partition() {
@@ -345,41 +223,34 @@ std::size_t ForceModel::sharedElements() const {
 }
 
 void ForceModel::accumulatePart(const Part& part, const double* x, const double* v,
-                                SpringScratch& scratch, double* f, double* grad,
+                                kernels::Scratch& scratch, double* f4, double* g4,
                                 std::array<double, 2>& volume, double& power, int& degenerate) const {
+    using kernels::kBlock;
     if (m_terms.has(Term::Springs)) {
         for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
             const auto k = static_cast<std::size_t>(fam);
             const SpringSet& s = part.springs[k];
-            // Blocks small enough that the scratch stays in L1 between the three passes.
-            for (std::size_t b0 = 0; b0 < s.size(); b0 += kBlock) {
-                const std::size_t b1 = std::min(s.size(), b0 + kBlock);
-                degenerate += springForcesSoA(s, params.ks[k], params.kd[k], x, v, b0, b1, scratch);
-                scatterPairs(s, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), f);
-                power += sumLanes(scratch.power.data(), b1 - b0);
-            }
+            for (std::size_t b0 = 0; b0 < s.size(); b0 += kBlock)
+                power += kernels::springBlock(s, b0, std::min(s.size(), b0 + kBlock), params.ks[k],
+                                              params.kd[k], x, v, f4, degenerate, scratch);
         }
     }
     if (!m_terms.has(Term::Gas)) return;
     for (const Surface& s : part.surfaces) {
-        // The unscaled gradient dV/dx goes to `grad`; P = c / V is known only once every
-        // part's volume is summed, and scales it afterwards.
+        // The unscaled gradient dV/dx goes to g4; P = c / V is known only once every part's
+        // volume is summed, and scales it afterwards.
         double& sum = volume[static_cast<std::size_t>(layerSlot(s.layer))];
         for (auto [a, b] : s.edges) {
             // 2D edge a->b, interior on the left: dA/dx = (dy, -dx)/2 to each end.
             const double dx = x[3 * b] - x[3 * a], dy = x[3 * b + 1] - x[3 * a + 1];
             sum += x[3 * a] * x[3 * b + 1] - x[3 * b] * x[3 * a + 1];
-            grad[3 * a] += 0.5 * dy;
-            grad[3 * a + 1] -= 0.5 * dx;
-            grad[3 * b] += 0.5 * dy;
-            grad[3 * b + 1] -= 0.5 * dx;
+            g4[4 * a] += 0.5 * dy;
+            g4[4 * a + 1] -= 0.5 * dx;
+            g4[4 * b] += 0.5 * dy;
+            g4[4 * b + 1] -= 0.5 * dx;
         }
-        for (std::size_t b0 = 0; b0 < s.triangles.size(); b0 += kBlock) {
-            const std::size_t b1 = std::min(s.triangles.size(), b0 + kBlock);
-            sum += gasGradientSoA(s, x, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(),
-                                  scratch.power.data());
-            scatterTriangles(s, b0, b1, scratch.dx.data(), scratch.dy.data(), scratch.dz.data(), grad);
-        }
+        for (std::size_t b0 = 0; b0 < s.triangles.size(); b0 += kBlock)
+            sum += kernels::triangleBlock(s, b0, std::min(s.triangles.size(), b0 + kBlock), x, g4, scratch);
     }
 }
 
@@ -433,16 +304,16 @@ std::array<double, kSpringFamilyCount> ForceModel::springEnergies(const double* 
             const SpringSet& s = m_topology->springs[static_cast<std::size_t>(fam)];
             auto [begin, end] = range(s.size(), c, m_chunks);
             double sum = 0.0;
-            std::array<double, kBlock> squared;  // on the stack: nothing allocated
-            for (std::size_t b0 = begin; b0 < end; b0 += kBlock) {
-                const std::size_t b1 = std::min(end, b0 + kBlock);
+            std::array<double, kernels::kBlock> squared;  // on the stack: nothing allocated
+            for (std::size_t b0 = begin; b0 < end; b0 += kernels::kBlock) {
+                const std::size_t b1 = std::min(end, b0 + kernels::kBlock);
                 for (std::size_t k = b0; k < b1; ++k) {
                     const int i = 3 * s.a[k], j = 3 * s.b[k];
                     const double dx = x[j] - x[i], dy = x[j + 1] - x[i + 1], dz = x[j + 2] - x[i + 2];
                     const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - s.rest[k];
                     squared[k - b0] = stretch * stretch;
                 }
-                sum += sumLanes(squared.data(), b1 - b0);
+                sum += kernels::sumLanes(squared.data(), b1 - b0);
             }
             partial[static_cast<std::size_t>(c)][static_cast<std::size_t>(fam)] = sum;
         }
@@ -463,38 +334,40 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
 
     // Stage 1: each chunk clears its own particles, adds gravity and its own springs, and for
     // the gas its faces' volume and unscaled gradient dV/dx (P = c/V needs the whole volume).
+    // Forces and gradients collect in padded buffers (4 doubles per particle).
     const bool gas = m_terms.has(Term::Gas);
     const bool gravity = m_terms.has(Term::Gravity);
     const double g = params.gravity;
     const double* mass = m_mass->data();
-    double* grad = m_gradient.data();
+    double* f4 = m_force4.data();
+    double* g4 = m_gradient4.data();
     std::array<double, kChunks> chunkPower{};
     std::array<int, kChunks> chunkDegenerate{};
     std::array<std::array<double, 2>, kChunks + 1> volumeSums{};
     runChunks([&](int c) {
         const auto k = static_cast<std::size_t>(c);
         for (auto [begin, end] : m_ownedRanges[k]) {
-            std::fill(f + 3 * begin, f + 3 * end, 0.0);
-            if (gas) std::fill(grad + 3 * begin, grad + 3 * end, 0.0);
+            std::fill(f4 + 4 * begin, f4 + 4 * end, 0.0);
+            if (gas) std::fill(g4 + 4 * begin, g4 + 4 * end, 0.0);
             if (gravity)
-                for (int i = begin; i < end; ++i) f[3 * i + 1] -= mass[i] * g;
+                for (int i = begin; i < end; ++i) f4[4 * i + 1] -= mass[i] * g;
         }
-        accumulatePart(m_parts[k], x, v, m_scratch[k], f, grad, volumeSums[k], chunkPower[k], chunkDegenerate[k]);
+        accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, volumeSums[k], chunkPower[k], chunkDegenerate[k]);
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
     double power = 0.0;
     int degenerate = 0;
-    accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f, grad, volumeSums[kChunks], power, degenerate);
+    accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f4, g4, volumeSums[kChunks], power, degenerate);
     for (int c = 0; c < m_chunks; ++c) {
         extras.dampingPower += chunkPower[static_cast<std::size_t>(c)];
         extras.degenerateSprings += chunkDegenerate[static_cast<std::size_t>(c)];
     }
     extras.dampingPower += power;
     extras.degenerateSprings += degenerate;
-    // Stage 3: the gas force P dV/dx, with P = c / V of each layer (V <= 0: no force; the
-    // simulation reports the layer as inside out).
+    // Stage 3: f = F + P dV/dx with P = c / V of each layer (V <= 0: no force; the simulation
+    // reports the layer as inside out), unpadded into the caller's 3-per-particle layout.
+    std::array<double, 2> pressure{};
     if (gas) {
-        std::array<double, 2> pressure{};
         for (const Surface& s : topo.surfaces) {
             const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
             double sum = 0.0;
@@ -505,14 +378,21 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
             pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
             extras.pressure[slot] = pressure[slot];
         }
-        runChunks([&](int c) {
-            for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(c)]) {
+    }
+    runChunks([&](int c) {
+        for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(c)]) {
+            if (gas) {
                 // Each owned range lies in one layer (see partition()).
                 const double p = pressure[static_cast<std::size_t>(layerSlot(topo.layer[static_cast<std::size_t>(begin)]))];
-                for (int k = 3 * begin; k < 3 * end; ++k) f[k] += p * grad[k];
+                for (int i = begin; i < end; ++i)
+                    for (int axis = 0; axis < 3; ++axis)
+                        f[3 * i + axis] = f4[4 * i + axis] + p * g4[4 * i + axis];
+            } else {
+                for (int i = begin; i < end; ++i)
+                    for (int axis = 0; axis < 3; ++axis) f[3 * i + axis] = f4[4 * i + axis];
             }
-        });
-    }
+        }
+    });
     if (m_terms.has(Term::Pointer) && pointer.active)
         extras.dampingPower += addPointer(pointer, params.mks, params.mkd, params.mouseRest, x, v, f);
 }

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "body.h"
+#include "force_kernels.h"
 
 namespace simcore {
 
@@ -71,30 +72,6 @@ double pointerEnergy(const PointerSpring& pointer, double mks, double rest, cons
 // Index into the [inner, outer] arrays for a surface's layer.
 inline int layerSlot(Layer layer) { return layer == Layer::Inner ? 0 : 1; }
 
-// Fast kernels (the hot path). Each works on a range [begin, end) of springs or triangles:
-// a compute pass writes per-element results into structure-of-arrays scratch (no scatter, so
-// the compiler vectorises it), then a scatter pass adds them to the particles.
-// Per-spring scratch (structure of arrays) of one chunk, indexed from the start of its range.
-struct SpringScratch {
-    std::vector<double> dx, dy, dz;     // separation in, force on the first particle out
-    std::vector<double> dvx, dvy, dvz;  // relative velocity
-    std::vector<double> power;          // damping power per spring
-};
-// Forces of springs [begin, end) into scratch (dx, dy, dz) and scratch.power. Returns the
-// number of degenerate (near zero length) springs in the range.
-int springForcesSoA(const SpringSet& springs, double ks, double kd, const double* x,
-                    const double* v, std::size_t begin, std::size_t end, SpringScratch& scratch);
-// Adds f[k - begin] of springs [begin, end) to their first and subtracts it from their second particle.
-void scatterPairs(const SpringSet& springs, std::size_t begin, std::size_t end, const double* fx,
-                  const double* fy, const double* fz, double* f);
-// Per-triangle volume gradient (b-a)x(c-a)/6 for triangles [begin, end), into g[t - begin];
-// returns the sum of x_a.(x_b x x_c) over them (six times their share of the volume).
-// volumeScratch holds end - begin doubles.
-double gasGradientSoA(const Surface& surface, const double* x, std::size_t begin, std::size_t end,
-                      double* gx, double* gy, double* gz, double* volumeScratch);
-// Adds g[t - begin] of triangles [begin, end) to each of their three corners.
-void scatterTriangles(const Surface& surface, std::size_t begin, std::size_t end,
-                      const double* gx, const double* gy, const double* gz, double* f);
 double partialVolume(const Surface& surface, int dimension, const double* x, std::size_t begin,
                      std::size_t end);  // sum of x_a.(x_b x x_c) (3D) or shoelace terms (2D)
 
@@ -111,9 +88,6 @@ public:
     static constexpr int kChunks = 2;
     // Bodies with fewer springs than this run as one chunk (threads would cost more than win).
     static constexpr std::size_t kChunkThreshold = 8192;
-    // Springs or triangles per block of the gather / arithmetic / scatter passes (scratch of
-    // 7 x 256 doubles = 14 KiB stays in L1).
-    static constexpr std::size_t kBlock = 256;
 
     ForceModel() = default;
     ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms);
@@ -163,15 +137,16 @@ private:
         std::vector<Surface> surfaces;
     };
     void partition();
-    // Adds the part's spring forces to f and its gas gradient dV/dx to grad; adds its
-    // enclosed-volume sums (6V in 3D, 2A in 2D) to volume.
-    void accumulatePart(const Part& part, const double* x, const double* v, SpringScratch& scratch,
-                        double* f, double* grad, std::array<double, 2>& volume, double& power,
+    // Adds the part's spring forces to f4 and its gas gradient dV/dx to g4 (padded, 4 doubles
+    // per particle); adds its enclosed-volume sums (6V in 3D, 2A in 2D) to volume.
+    void accumulatePart(const Part& part, const double* x, const double* v, kernels::Scratch& scratch,
+                        double* f4, double* g4, std::array<double, 2>& volume, double& power,
                         int& degenerate) const;
     std::array<Part, kChunks + 1> m_parts;
     std::array<std::vector<std::pair<int, int>>, kChunks> m_ownedRanges;  // particle ranges per chunk
-    std::array<SpringScratch, kChunks> m_scratch;  // one block of scratch per chunk
-    std::vector<double> m_gradient;                // dV/dx of each particle's layer (3N)
+    std::array<kernels::Scratch, kChunks> m_scratch;  // one block of scratch per chunk
+    kernels::AlignedBuffer m_force4;                  // forces, padded (4N)
+    kernels::AlignedBuffer m_gradient4;               // dV/dx of each particle's layer, padded (4N)
 };
 
 }  // namespace simcore

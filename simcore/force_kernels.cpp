@@ -1,0 +1,347 @@
+#include "force_kernels.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+
+#include "forces.h"  // kDegenerateLength
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define SIMCORE_AVX2_KERNELS 1
+#include <immintrin.h>
+#else
+#define SIMCORE_AVX2_KERNELS 0
+#endif
+
+// The portable arithmetic is compiled twice (AVX2 and baseline x86-64) and picked at load
+// time. Without -ffast-math and with FP contraction off (ISO C++ mode) both round alike.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(ELASTIC_LAB_MULTIVERSION)
+#define SIMCORE_VECTOR_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define SIMCORE_VECTOR_KERNEL
+#endif
+
+namespace simcore::kernels {
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Portable kernels
+
+SIMCORE_VECTOR_KERNEL
+void springMath(std::size_t count, double ks, double kd, const double* __restrict rest,
+                double* __restrict dx, double* __restrict dy, double* __restrict dz,
+                const double* __restrict dvx, const double* __restrict dvy,
+                const double* __restrict dvz, double* __restrict power) {
+    // In: separations d and relative velocities dv per spring. Out: force on the first
+    // particle in (dx, dy, dz) and damping power. A spring shorter than kDegenerateLength keeps
+    // a finite direction (divided by the epsilon instead of its length) and a zero force.
+    for (std::size_t s = 0; s < count; ++s) {
+        const double length = std::sqrt(dx[s] * dx[s] + dy[s] * dy[s] + dz[s] * dz[s]);
+        const bool tooShort = length < kDegenerateLength;
+        const double inv = 1.0 / std::max(length, kDegenerateLength);
+        const double live = tooShort ? 0.0 : 1.0;
+        const double ux = dx[s] * inv, uy = dy[s] * inv, uz = dz[s] * inv;
+        const double closing = dvx[s] * ux + dvy[s] * uy + dvz[s] * uz;
+        const double magnitude = live * (ks * (length - rest[s]) + kd * closing);
+        dx[s] = magnitude * ux;
+        dy[s] = magnitude * uy;
+        dz[s] = magnitude * uz;
+        power[s] = live * kd * closing * closing;
+    }
+}
+
+double springBlockPortable(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
+                           double kd, const double* x, const double* v, double* f4,
+                           int& degenerate, Scratch& scratch) {
+    const int* ia = springs.a.data() + begin;
+    const int* ib = springs.b.data() + begin;
+    const std::size_t count = end - begin;
+    double *dx = scratch.dx, *dy = scratch.dy, *dz = scratch.dz;
+    double *dvx = scratch.dvx, *dvy = scratch.dvy, *dvz = scratch.dvz;
+    for (std::size_t k = 0; k < count; ++k) {
+        const int i = 3 * ia[k], j = 3 * ib[k];
+        dx[k] = x[j] - x[i];
+        dy[k] = x[j + 1] - x[i + 1];
+        dz[k] = x[j + 2] - x[i + 2];
+        degenerate += dx[k] * dx[k] + dy[k] * dy[k] + dz[k] * dz[k] < kDegenerateLength * kDegenerateLength;
+        dvx[k] = v[j] - v[i];
+        dvy[k] = v[j + 1] - v[i + 1];
+        dvz[k] = v[j + 2] - v[i + 2];
+    }
+    springMath(count, ks, kd, springs.rest.data() + begin, dx, dy, dz, dvx, dvy, dvz, scratch.power);
+    for (std::size_t k = 0; k < count; ++k) {
+        double* fa = f4 + 4 * ia[k];
+        double* fb = f4 + 4 * ib[k];
+        fa[0] += dx[k];
+        fa[1] += dy[k];
+        fa[2] += dz[k];
+        fb[0] -= dx[k];
+        fb[1] -= dy[k];
+        fb[2] -= dz[k];
+    }
+    return sumLanes(scratch.power, count);
+}
+
+SIMCORE_VECTOR_KERNEL
+void triangleMath(const std::array<int, 3>* tri, std::size_t count, const double* x,
+                  double* __restrict gx, double* __restrict gy, double* __restrict gz,
+                  double* __restrict volume6) {
+    for (std::size_t k = 0; k < count; ++k) {
+        const int a = 3 * tri[k][0], b = 3 * tri[k][1], c = 3 * tri[k][2];
+        volume6[k] = x[a] * (x[b + 1] * x[c + 2] - x[b + 2] * x[c + 1]) +
+                     x[a + 1] * (x[b + 2] * x[c] - x[b] * x[c + 2]) +
+                     x[a + 2] * (x[b] * x[c + 1] - x[b + 1] * x[c]);
+        const double ux = x[b] - x[a], uy = x[b + 1] - x[a + 1], uz = x[b + 2] - x[a + 2];
+        const double wx = x[c] - x[a], wy = x[c + 1] - x[a + 1], wz = x[c + 2] - x[a + 2];
+        gx[k] = (uy * wz - uz * wy) / 6.0;
+        gy[k] = (uz * wx - ux * wz) / 6.0;
+        gz[k] = (ux * wy - uy * wx) / 6.0;
+    }
+}
+
+double triangleBlockPortable(const Surface& surface, std::size_t begin, std::size_t end,
+                             const double* x, double* g4, Scratch& scratch) {
+    const std::array<int, 3>* tri = surface.triangles.data() + begin;
+    const std::size_t count = end - begin;
+    triangleMath(tri, count, x, scratch.dx, scratch.dy, scratch.dz, scratch.power);
+    for (std::size_t k = 0; k < count; ++k)
+        for (int corner : tri[k]) {
+            double* g = g4 + 4 * corner;
+            g[0] += scratch.dx[k];
+            g[1] += scratch.dy[k];
+            g[2] += scratch.dz[k];
+        }
+    return sumLanes(scratch.power, count);
+}
+
+// ---------------------------------------------------------------------------------------------
+// AVX2 kernels
+
+#if SIMCORE_AVX2_KERNELS
+
+#define SIMCORE_AVX2 __attribute__((target("avx2")))
+
+// (x, y, z, 0) of particle p from a 3-per-particle array; the fourth double is never read.
+SIMCORE_AVX2 inline __m256d loadRow(const double* a, int p) {
+    return _mm256_maskload_pd(a + 3 * p, _mm256_setr_epi64x(-1, -1, -1, 0));
+}
+
+// Four rows (x, y, z, w) to three columns X, Y, Z.
+SIMCORE_AVX2 inline void toColumns(__m256d r0, __m256d r1, __m256d r2, __m256d r3, __m256d& X,
+                                   __m256d& Y, __m256d& Z) {
+    const __m256d t0 = _mm256_unpacklo_pd(r0, r1);  // x0 x1 z0 z1
+    const __m256d t1 = _mm256_unpackhi_pd(r0, r1);  // y0 y1 w0 w1
+    const __m256d t2 = _mm256_unpacklo_pd(r2, r3);  // x2 x3 z2 z3
+    const __m256d t3 = _mm256_unpackhi_pd(r2, r3);  // y2 y3 w2 w3
+    X = _mm256_permute2f128_pd(t0, t2, 0x20);
+    Y = _mm256_permute2f128_pd(t1, t3, 0x20);
+    Z = _mm256_permute2f128_pd(t0, t2, 0x31);
+}
+
+// Three columns to four rows (x, y, z, 0).
+SIMCORE_AVX2 inline void toRows(__m256d X, __m256d Y, __m256d Z, __m256d (&r)[4]) {
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d t0 = _mm256_unpacklo_pd(X, Y);     // x0 y0 x2 y2
+    const __m256d t1 = _mm256_unpackhi_pd(X, Y);     // x1 y1 x3 y3
+    const __m256d t2 = _mm256_unpacklo_pd(Z, zero);  // z0 0 z2 0
+    const __m256d t3 = _mm256_unpackhi_pd(Z, zero);  // z1 0 z3 0
+    r[0] = _mm256_permute2f128_pd(t0, t2, 0x20);
+    r[1] = _mm256_permute2f128_pd(t1, t3, 0x20);
+    r[2] = _mm256_permute2f128_pd(t0, t2, 0x31);
+    r[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
+}
+
+SIMCORE_AVX2 inline void addRow(double* f4, int p, __m256d row) {
+    double* at = f4 + 4 * p;
+    _mm256_store_pd(at, _mm256_add_pd(_mm256_load_pd(at), row));
+}
+SIMCORE_AVX2 inline void subRow(double* f4, int p, __m256d row) {
+    double* at = f4 + 4 * p;
+    _mm256_store_pd(at, _mm256_sub_pd(_mm256_load_pd(at), row));
+}
+
+SIMCORE_AVX2
+double springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
+                       double kd, const double* x, const double* v, double* f4, int& degenerate,
+                       Scratch& scratch) {
+    const int* ia = springs.a.data() + begin;
+    const int* ib = springs.b.data() + begin;
+    const double* rest = springs.rest.data() + begin;
+    const std::size_t count = end - begin;
+    const __m256d vks = _mm256_set1_pd(ks), vkd = _mm256_set1_pd(kd);
+    const __m256d eps = _mm256_set1_pd(kDegenerateLength);
+    const __m256d eps2 = _mm256_set1_pd(kDegenerateLength * kDegenerateLength);
+    const __m256d one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd();
+    __m256d lanes = zero;  // damping power, spring k in lane k mod 4
+    std::size_t k = 0;
+    for (; k + 4 <= count; k += 4) {
+        __m256d d[4], dv[4];
+        for (int l = 0; l < 4; ++l) {
+            const int i = ia[k + l], j = ib[k + l];
+            d[l] = _mm256_sub_pd(loadRow(x, j), loadRow(x, i));
+            dv[l] = _mm256_sub_pd(loadRow(v, j), loadRow(v, i));
+        }
+        __m256d dx, dy, dz, dvx, dvy, dvz;
+        toColumns(d[0], d[1], d[2], d[3], dx, dy, dz);
+        toColumns(dv[0], dv[1], dv[2], dv[3], dvx, dvy, dvz);
+        // The portable springMath, operation by operation.
+        const __m256d length2 =
+            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+        degenerate += __builtin_popcount(static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(length2, eps2, _CMP_LT_OQ))));
+        const __m256d length = _mm256_sqrt_pd(length2);
+        const __m256d tooShort = _mm256_cmp_pd(length, eps, _CMP_LT_OQ);
+        const __m256d inv = _mm256_div_pd(one, _mm256_blendv_pd(length, eps, tooShort));
+        const __m256d live = _mm256_blendv_pd(one, zero, tooShort);
+        const __m256d ux = _mm256_mul_pd(dx, inv), uy = _mm256_mul_pd(dy, inv), uz = _mm256_mul_pd(dz, inv);
+        const __m256d closing = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dvx, ux), _mm256_mul_pd(dvy, uy)),
+                                              _mm256_mul_pd(dvz, uz));
+        const __m256d stretch = _mm256_sub_pd(length, _mm256_loadu_pd(rest + k));
+        const __m256d magnitude = _mm256_mul_pd(
+            live, _mm256_add_pd(_mm256_mul_pd(vks, stretch), _mm256_mul_pd(vkd, closing)));
+        lanes = _mm256_add_pd(lanes, _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(live, vkd), closing), closing));
+        __m256d force[4];
+        toRows(_mm256_mul_pd(magnitude, ux), _mm256_mul_pd(magnitude, uy), _mm256_mul_pd(magnitude, uz), force);
+        for (int l = 0; l < 4; ++l) {
+            addRow(f4, ia[k + l], force[l]);
+            subRow(f4, ib[k + l], force[l]);
+        }
+    }
+    alignas(32) double lane[4];
+    _mm256_store_pd(lane, lanes);
+    if (k < count) {
+        // The last one to three springs by the portable path; like sumLanes, their power
+        // goes into lane 0 one by one.
+        springBlockPortable(springs, begin + k, end, ks, kd, x, v, f4, degenerate, scratch);
+        for (std::size_t t = 0; t < count - k; ++t) lane[0] += scratch.power[t];
+    }
+    return (lane[0] + lane[1]) + (lane[2] + lane[3]);
+}
+
+// p q - r s
+SIMCORE_AVX2 inline __m256d cross(__m256d p, __m256d q, __m256d r, __m256d s) {
+    return _mm256_sub_pd(_mm256_mul_pd(p, q), _mm256_mul_pd(r, s));
+}
+
+SIMCORE_AVX2
+double triangleBlockAvx2(const Surface& surface, std::size_t begin, std::size_t end,
+                         const double* x, double* g4, Scratch& scratch) {
+    const std::array<int, 3>* tri = surface.triangles.data() + begin;
+    const std::size_t count = end - begin;
+    const __m256d sixth = _mm256_set1_pd(6.0);
+    __m256d lanes = _mm256_setzero_pd();  // x_a.(x_b x x_c), triangle k in lane k mod 4
+    std::size_t k = 0;
+    for (; k + 4 <= count; k += 4) {
+        __m256d ax, ay, az, bx, by, bz, cx, cy, cz;
+        toColumns(loadRow(x, tri[k][0]), loadRow(x, tri[k + 1][0]), loadRow(x, tri[k + 2][0]),
+                  loadRow(x, tri[k + 3][0]), ax, ay, az);
+        toColumns(loadRow(x, tri[k][1]), loadRow(x, tri[k + 1][1]), loadRow(x, tri[k + 2][1]),
+                  loadRow(x, tri[k + 3][1]), bx, by, bz);
+        toColumns(loadRow(x, tri[k][2]), loadRow(x, tri[k + 1][2]), loadRow(x, tri[k + 2][2]),
+                  loadRow(x, tri[k + 3][2]), cx, cy, cz);
+        // The portable triangleMath, operation by operation.
+        const __m256d volume6 = _mm256_add_pd(
+            _mm256_add_pd(_mm256_mul_pd(ax, cross(by, cz, bz, cy)), _mm256_mul_pd(ay, cross(bz, cx, bx, cz))),
+            _mm256_mul_pd(az, cross(bx, cy, by, cx)));
+        lanes = _mm256_add_pd(lanes, volume6);
+        const __m256d ux = _mm256_sub_pd(bx, ax), uy = _mm256_sub_pd(by, ay), uz = _mm256_sub_pd(bz, az);
+        const __m256d wx = _mm256_sub_pd(cx, ax), wy = _mm256_sub_pd(cy, ay), wz = _mm256_sub_pd(cz, az);
+        __m256d gradient[4];
+        toRows(_mm256_div_pd(cross(uy, wz, uz, wy), sixth), _mm256_div_pd(cross(uz, wx, ux, wz), sixth),
+               _mm256_div_pd(cross(ux, wy, uy, wx), sixth), gradient);
+        for (int l = 0; l < 4; ++l)
+            for (int corner : tri[k + static_cast<std::size_t>(l)]) addRow(g4, corner, gradient[l]);
+    }
+    alignas(32) double lane[4];
+    _mm256_store_pd(lane, lanes);
+    if (k < count) {
+        // The last one to three triangles by the portable path, into lane 0 one by one.
+        triangleBlockPortable(surface, begin + k, end, x, g4, scratch);
+        for (std::size_t t = 0; t < count - k; ++t) lane[0] += scratch.power[t];
+    }
+    return (lane[0] + lane[1]) + (lane[2] + lane[3]);
+}
+
+#endif  // SIMCORE_AVX2_KERNELS
+
+bool detectAvx2() {
+#if SIMCORE_AVX2_KERNELS
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+
+std::atomic<bool> g_useAvx2{detectAvx2()};
+
+}  // namespace
+
+double sumLanes(const double* v, std::size_t n) {
+    // The AVX2 kernels keep the same four lanes in one register.
+    double lane[4] = {0.0, 0.0, 0.0, 0.0};
+    std::size_t k = 0;
+    for (; k + 4 <= n; k += 4)
+        for (int l = 0; l < 4; ++l) lane[l] += v[k + static_cast<std::size_t>(l)];
+    for (; k < n; ++k) lane[0] += v[k];
+    return (lane[0] + lane[1]) + (lane[2] + lane[3]);
+}
+
+Scratch::Scratch() : storage(new double[7 * kBlock]()) {
+    double* p = storage.get();
+    for (double** buffer : {&dx, &dy, &dz, &dvx, &dvy, &dvz, &power}) {
+        *buffer = p;
+        p += kBlock;
+    }
+}
+
+bool avx2Available() {
+    static const bool available = detectAvx2();
+    return available;
+}
+
+bool useAvx2(bool on) {
+    g_useAvx2.store(on && avx2Available(), std::memory_order_relaxed);
+    return usingAvx2();
+}
+
+bool usingAvx2() { return g_useAvx2.load(std::memory_order_relaxed); }
+
+double springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
+                   double kd, const double* x, const double* v, double* f4, int& degenerate,
+                   Scratch& scratch) {
+#if SIMCORE_AVX2_KERNELS
+    if (usingAvx2()) return springBlockAvx2(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
+#endif
+    return springBlockPortable(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
+}
+
+double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end, const double* x,
+                     double* g4, Scratch& scratch) {
+#if SIMCORE_AVX2_KERNELS
+    if (usingAvx2()) return triangleBlockAvx2(surface, begin, end, x, g4, scratch);
+#endif
+    return triangleBlockPortable(surface, begin, end, x, g4, scratch);
+}
+
+AlignedBuffer::AlignedBuffer(std::size_t count) : m_size(count) {
+    const std::size_t bytes = (count * sizeof(double) + 63) / 64 * 64;
+    void* p = std::aligned_alloc(64, std::max<std::size_t>(bytes, 64));
+    if (!p) throw std::bad_alloc();
+    m_data.reset(static_cast<double*>(p));
+    std::fill(data(), data() + count, 0.0);
+}
+
+AlignedBuffer::AlignedBuffer(const AlignedBuffer& other) : AlignedBuffer(other.m_size) {
+    std::copy(other.data(), other.data() + m_size, data());
+}
+
+AlignedBuffer& AlignedBuffer::operator=(const AlignedBuffer& other) {
+    if (this != &other) *this = AlignedBuffer(other);
+    return *this;
+}
+
+void AlignedBuffer::Free::operator()(double* p) const { std::free(p); }
+
+}  // namespace simcore::kernels

@@ -1,0 +1,82 @@
+#pragma once
+// The hot loops of the force evaluation (internal to simcore; ForceModel drives them).
+//
+// Each kernel works on one block of springs or triangles and adds its results into a padded
+// particle buffer: 4 doubles per particle (x, y, z, 0), 32-byte aligned, so that a particle's
+// force is one aligned 256-bit load and store. Positions and velocities are read in the
+// state's own layout (3 doubles per particle).
+//
+// Two implementations of every kernel give bit-identical results (tested):
+//  - portable: a gather pass into structure-of-arrays scratch, arithmetic the compiler
+//    vectorises, a scatter pass;
+//  - AVX2 (x86-64, picked at run time when the CPU has it): four springs or triangles at a
+//    time, loaded as rows and transposed in registers, the same arithmetic in the same order
+//    (no FMA: each operation rounds as in the portable code), transposed back and added.
+
+#include <cstddef>
+#include <memory>
+
+#include "body.h"
+
+namespace simcore::kernels {
+
+// Springs or triangles per block (the portable path's scratch of 7 x 256 doubles = 14 KiB
+// stays in L1 between its passes).
+inline constexpr std::size_t kBlock = 256;
+
+// Scratch of the portable path, one per thread. A copy gets scratch of its own.
+struct Scratch {
+    Scratch();
+    Scratch(const Scratch&) : Scratch() {}
+    Scratch& operator=(const Scratch&) { return *this; }
+    std::unique_ptr<double[]> storage;
+    double *dx, *dy, *dz, *dvx, *dvy, *dvz, *power;
+};
+
+// Sum of v[0..n) in four interleaved lanes (v[k] into lane k mod 4, the remainder into lane 0,
+// then (l0 + l1) + (l2 + l3)): independent add chains in an order fixed by n alone.
+double sumLanes(const double* v, std::size_t n);
+
+// Whether the AVX2 kernels exist in this build and the CPU runs them.
+bool avx2Available();
+// Selects the AVX2 kernels (when available) or the portable ones, for every thread; returns
+// whether AVX2 is now in use. Meant for tests and benchmarks comparing the two.
+bool useAvx2(bool on);
+bool usingAvx2();
+
+// Springs [begin, end) of a set: adds F to the first particle and -F to the second in f4,
+// where F = [ks (L - L0) + kd (dv.u)] u. Returns the damping power of the block summed in four
+// interleaved lanes (spring k into lane k mod 4, the remainder into lane 0); counts springs
+// shorter than kDegenerateLength into `degenerate` (they get no force).
+double springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
+                   double kd, const double* x, const double* v, double* f4, int& degenerate,
+                   Scratch& scratch);
+
+// Triangles [begin, end) of a closed surface: adds the volume gradient (b-a)x(c-a)/6 to each
+// corner in g4 and returns the sum of x_a.(x_b x x_c) (six times their share of the volume),
+// summed in lanes like springBlock.
+double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end, const double* x,
+                     double* g4, Scratch& scratch);
+
+// A buffer of doubles aligned to 64 bytes (a cache line), zero-filled.
+class AlignedBuffer {
+public:
+    AlignedBuffer() = default;
+    explicit AlignedBuffer(std::size_t count);
+    AlignedBuffer(const AlignedBuffer& other);
+    AlignedBuffer& operator=(const AlignedBuffer& other);
+    AlignedBuffer(AlignedBuffer&&) noexcept = default;
+    AlignedBuffer& operator=(AlignedBuffer&&) noexcept = default;
+    double* data() { return m_data.get(); }
+    const double* data() const { return m_data.get(); }
+    std::size_t size() const { return m_size; }
+
+private:
+    struct Free {
+        void operator()(double* p) const;
+    };
+    std::unique_ptr<double, Free> m_data;
+    std::size_t m_size = 0;
+};
+
+}  // namespace simcore::kernels
