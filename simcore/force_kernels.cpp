@@ -34,7 +34,7 @@ SIMCORE_VECTOR_KERNEL
 void springMath(std::size_t count, double ks, double kd, const double* __restrict rest,
                 double* __restrict dx, double* __restrict dy, double* __restrict dz,
                 const double* __restrict dvx, const double* __restrict dvy,
-                const double* __restrict dvz, double* __restrict power) {
+                const double* __restrict dvz, double* __restrict power, double* __restrict stretch2) {
     // In: separations d and relative velocities dv per spring. Out: force on the first
     // particle in (dx, dy, dz) and damping power. A spring shorter than kDegenerateLength keeps
     // a finite direction (divided by the epsilon instead of its length) and a zero force.
@@ -50,12 +50,13 @@ void springMath(std::size_t count, double ks, double kd, const double* __restric
         dy[s] = magnitude * uy;
         dz[s] = magnitude * uz;
         power[s] = live * kd * closing * closing;
+        stretch2[s] = (length - rest[s]) * (length - rest[s]);
     }
 }
 
-double springBlockPortable(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
-                           double kd, const double* x, const double* v, double* f4,
-                           int& degenerate, Scratch& scratch) {
+SpringSums springBlockPortable(const SpringSet& springs, std::size_t begin, std::size_t end,
+                               double ks, double kd, const double* x, const double* v, double* f4,
+                               int& degenerate, Scratch& scratch) {
     const int* ia = springs.a.data() + begin;
     const int* ib = springs.b.data() + begin;
     const std::size_t count = end - begin;
@@ -71,7 +72,8 @@ double springBlockPortable(const SpringSet& springs, std::size_t begin, std::siz
         dvy[k] = v[j + 1] - v[i + 1];
         dvz[k] = v[j + 2] - v[i + 2];
     }
-    springMath(count, ks, kd, springs.rest.data() + begin, dx, dy, dz, dvx, dvy, dvz, scratch.power);
+    springMath(count, ks, kd, springs.rest.data() + begin, dx, dy, dz, dvx, dvy, dvz, scratch.power,
+               scratch.stretch2);
     for (std::size_t k = 0; k < count; ++k) {
         double* fa = f4 + 4 * ia[k];
         double* fb = f4 + 4 * ib[k];
@@ -82,7 +84,7 @@ double springBlockPortable(const SpringSet& springs, std::size_t begin, std::siz
         fb[1] -= dy[k];
         fb[2] -= dz[k];
     }
-    return sumLanes(scratch.power, count);
+    return {sumLanes(scratch.power, count), sumLanes(scratch.stretch2, count)};
 }
 
 SIMCORE_VECTOR_KERNEL
@@ -164,9 +166,9 @@ SIMCORE_AVX2 inline void subRow(double* f4, int p, __m256d row) {
 }
 
 SIMCORE_AVX2
-double springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
-                       double kd, const double* x, const double* v, double* f4, int& degenerate,
-                       Scratch& scratch) {
+SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
+                           double kd, const double* x, const double* v, double* f4,
+                           int& degenerate, Scratch& scratch) {
     const int* ia = springs.a.data() + begin;
     const int* ib = springs.b.data() + begin;
     const double* rest = springs.rest.data() + begin;
@@ -175,7 +177,8 @@ double springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t 
     const __m256d eps = _mm256_set1_pd(kDegenerateLength);
     const __m256d eps2 = _mm256_set1_pd(kDegenerateLength * kDegenerateLength);
     const __m256d one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd();
-    __m256d lanes = zero;  // damping power, spring k in lane k mod 4
+    __m256d lanes = zero;    // damping power, spring k in lane k mod 4
+    __m256d squares = zero;  // (L - L0)^2, the same way
     std::size_t k = 0;
     for (; k + 4 <= count; k += 4) {
         __m256d d[4], dv[4];
@@ -199,6 +202,7 @@ double springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t 
         const __m256d closing = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dvx, ux), _mm256_mul_pd(dvy, uy)),
                                               _mm256_mul_pd(dvz, uz));
         const __m256d stretch = _mm256_sub_pd(length, _mm256_loadu_pd(rest + k));
+        squares = _mm256_add_pd(squares, _mm256_mul_pd(stretch, stretch));
         const __m256d magnitude = _mm256_mul_pd(
             live, _mm256_add_pd(_mm256_mul_pd(vks, stretch), _mm256_mul_pd(vkd, closing)));
         lanes = _mm256_add_pd(lanes, _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(live, vkd), closing), closing));
@@ -209,15 +213,19 @@ double springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t 
             subRow(f4, ib[k + l], force[l]);
         }
     }
-    alignas(32) double lane[4];
+    alignas(32) double lane[4], square[4];
     _mm256_store_pd(lane, lanes);
+    _mm256_store_pd(square, squares);
     if (k < count) {
-        // The last one to three springs by the portable path; like sumLanes, their power
-        // goes into lane 0 one by one.
+        // The last one to three springs by the portable path; like sumLanes, their sums go
+        // into lane 0 one by one.
         springBlockPortable(springs, begin + k, end, ks, kd, x, v, f4, degenerate, scratch);
-        for (std::size_t t = 0; t < count - k; ++t) lane[0] += scratch.power[t];
+        for (std::size_t t = 0; t < count - k; ++t) {
+            lane[0] += scratch.power[t];
+            square[0] += scratch.stretch2[t];
+        }
     }
-    return (lane[0] + lane[1]) + (lane[2] + lane[3]);
+    return {(lane[0] + lane[1]) + (lane[2] + lane[3]), (square[0] + square[1]) + (square[2] + square[3])};
 }
 
 // p q - r s
@@ -288,9 +296,9 @@ double sumLanes(const double* v, std::size_t n) {
     return (lane[0] + lane[1]) + (lane[2] + lane[3]);
 }
 
-Scratch::Scratch() : storage(new double[7 * kBlock]()) {
+Scratch::Scratch() : storage(new double[8 * kBlock]()) {
     double* p = storage.get();
-    for (double** buffer : {&dx, &dy, &dz, &dvx, &dvy, &dvz, &power}) {
+    for (double** buffer : {&dx, &dy, &dz, &dvx, &dvy, &dvz, &power, &stretch2}) {
         *buffer = p;
         p += kBlock;
     }
@@ -308,9 +316,9 @@ bool useAvx2(bool on) {
 
 bool usingAvx2() { return g_useAvx2.load(std::memory_order_relaxed); }
 
-double springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
-                   double kd, const double* x, const double* v, double* f4, int& degenerate,
-                   Scratch& scratch) {
+SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
+                       double kd, const double* x, const double* v, double* f4, int& degenerate,
+                       Scratch& scratch) {
 #if SIMCORE_AVX2_KERNELS
     if (usingAvx2()) return springBlockAvx2(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
 #endif

@@ -20,7 +20,7 @@
 
 namespace simcore::kernels {
 
-// Springs or triangles per block (the portable path's scratch of 7 x 256 doubles = 14 KiB
+// Springs or triangles per block (the portable path's scratch of 8 x 256 doubles = 16 KiB
 // stays in L1 between its passes).
 inline constexpr std::size_t kBlock = 256;
 
@@ -30,7 +30,7 @@ struct Scratch {
     Scratch(const Scratch&) : Scratch() {}
     Scratch& operator=(const Scratch&) { return *this; }
     std::unique_ptr<double[]> storage;
-    double *dx, *dy, *dz, *dvx, *dvy, *dvz, *power;
+    double *dx, *dy, *dz, *dvx, *dvy, *dvz, *power, *stretch2;
 };
 
 // Sum of v[0..n) in four interleaved lanes (v[k] into lane k mod 4, the remainder into lane 0,
@@ -44,13 +44,18 @@ bool avx2Available();
 bool useAvx2(bool on);
 bool usingAvx2();
 
+// Sums over a block of springs, each in four interleaved lanes (see sumLanes).
+struct SpringSums {
+    double power = 0.0;     // damping power kd (dv.u)^2 [W]
+    double stretch2 = 0.0;  // (L - L0)^2, for the elastic energy ks/2 (L - L0)^2 [m^2]
+};
+
 // Springs [begin, end) of a set: adds F to the first particle and -F to the second in f4,
-// where F = [ks (L - L0) + kd (dv.u)] u. Returns the damping power of the block summed in four
-// interleaved lanes (spring k into lane k mod 4, the remainder into lane 0); counts springs
-// shorter than kDegenerateLength into `degenerate` (they get no force).
-double springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
-                   double kd, const double* x, const double* v, double* f4, int& degenerate,
-                   Scratch& scratch);
+// where F = [ks (L - L0) + kd (dv.u)] u. Counts springs shorter than kDegenerateLength into
+// `degenerate` (they get no force, but their stretch still counts).
+SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
+                       double kd, const double* x, const double* v, double* f4, int& degenerate,
+                       Scratch& scratch);
 
 // Triangles [begin, end) of a closed surface: adds the volume gradient (b-a)x(c-a)/6 to each
 // corner in g4 and returns the sum of x_a.(x_b x x_c) (six times their share of the volume),

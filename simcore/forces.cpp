@@ -223,23 +223,26 @@ std::size_t ForceModel::sharedElements() const {
 }
 
 void ForceModel::accumulatePart(const Part& part, const double* x, const double* v,
-                                kernels::Scratch& scratch, double* f4, double* g4,
-                                std::array<double, 2>& volume, double& power, int& degenerate) const {
+                                kernels::Scratch& scratch, double* f4, double* g4, Sums& sums) const {
     using kernels::kBlock;
     if (m_terms.has(Term::Springs)) {
         for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
             const auto k = static_cast<std::size_t>(fam);
             const SpringSet& s = part.springs[k];
-            for (std::size_t b0 = 0; b0 < s.size(); b0 += kBlock)
-                power += kernels::springBlock(s, b0, std::min(s.size(), b0 + kBlock), params.ks[k],
-                                              params.kd[k], x, v, f4, degenerate, scratch);
+            for (std::size_t b0 = 0; b0 < s.size(); b0 += kBlock) {
+                const kernels::SpringSums block =
+                    kernels::springBlock(s, b0, std::min(s.size(), b0 + kBlock), params.ks[k],
+                                         params.kd[k], x, v, f4, sums.degenerate, scratch);
+                sums.power += block.power;
+                sums.stretch2[k] += block.stretch2;
+            }
         }
     }
     if (!m_terms.has(Term::Gas)) return;
     for (const Surface& s : part.surfaces) {
         // The unscaled gradient dV/dx goes to g4; P = c / V is known only once every part's
         // volume is summed, and scales it afterwards.
-        double& sum = volume[static_cast<std::size_t>(layerSlot(s.layer))];
+        double& sum = sums.volume[static_cast<std::size_t>(layerSlot(s.layer))];
         for (auto [a, b] : s.edges) {
             // 2D edge a->b, interior on the left: dA/dx = (dy, -dx)/2 to each end.
             const double dx = x[3 * b] - x[3 * a], dy = x[3 * b + 1] - x[3 * a + 1];
@@ -341,9 +344,7 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
     const double* mass = m_mass->data();
     double* f4 = m_force4.data();
     double* g4 = m_gradient4.data();
-    std::array<double, kChunks> chunkPower{};
-    std::array<int, kChunks> chunkDegenerate{};
-    std::array<std::array<double, 2>, kChunks + 1> volumeSums{};
+    std::array<Sums, kChunks + 1> sums{};  // per chunk, then the shared part
     runChunks([&](int c) {
         const auto k = static_cast<std::size_t>(c);
         for (auto [begin, end] : m_ownedRanges[k]) {
@@ -352,28 +353,30 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
             if (gravity)
                 for (int i = begin; i < end; ++i) f4[4 * i + 1] -= mass[i] * g;
         }
-        accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, volumeSums[k], chunkPower[k], chunkDegenerate[k]);
+        accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, sums[k]);
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
-    double power = 0.0;
-    int degenerate = 0;
-    accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f4, g4, volumeSums[kChunks], power, degenerate);
-    for (int c = 0; c < m_chunks; ++c) {
-        extras.dampingPower += chunkPower[static_cast<std::size_t>(c)];
-        extras.degenerateSprings += chunkDegenerate[static_cast<std::size_t>(c)];
-    }
-    extras.dampingPower += power;
-    extras.degenerateSprings += degenerate;
+    accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f4, g4, sums[kChunks]);
+    // Sums in a fixed order (chunk 0, chunk 1, shared), whatever the number of threads.
+    std::array<double, 2> volumeSum{};
+    std::array<double, kSpringFamilyCount> stretch2{};
+    auto add = [&](const Sums& part) {
+        extras.dampingPower += part.power;
+        extras.degenerateSprings += part.degenerate;
+        for (std::size_t slot = 0; slot < 2; ++slot) volumeSum[slot] += part.volume[slot];
+        for (std::size_t fam = 0; fam < stretch2.size(); ++fam) stretch2[fam] += part.stretch2[fam];
+    };
+    for (int c = 0; c < m_chunks; ++c) add(sums[static_cast<std::size_t>(c)]);
+    add(sums[kChunks]);
+    for (std::size_t fam = 0; fam < stretch2.size(); ++fam)
+        extras.springEnergy[fam] = 0.5 * params.ks[fam] * stretch2[fam];
     // Stage 3: f = F + P dV/dx with P = c / V of each layer (V <= 0: no force; the simulation
     // reports the layer as inside out), unpadded into the caller's 3-per-particle layout.
     std::array<double, 2> pressure{};
     if (gas) {
         for (const Surface& s : topo.surfaces) {
             const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
-            double sum = 0.0;
-            for (int c = 0; c < m_chunks; ++c) sum += volumeSums[static_cast<std::size_t>(c)][slot];
-            sum += volumeSums[kChunks][slot];
-            const double volume = topo.dimension == 2 ? 0.5 * sum : sum / 6.0;
+            const double volume = topo.dimension == 2 ? 0.5 * volumeSum[slot] : volumeSum[slot] / 6.0;
             extras.volume[slot] = volume;
             pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
             extras.pressure[slot] = pressure[slot];

@@ -49,6 +49,7 @@ struct ForceExtras {
     std::array<double, 2> volume{};    // enclosed volume of [inner, outer] layer
     std::array<double, 2> pressure{};  // P = c / V
     double dampingPower = 0.0;         // power removed by spring and mouse damping [W], >= 0
+    std::array<double, kSpringFamilyCount> springEnergy{};  // elastic energy per family [J]
     int degenerateSprings = 0;         // springs shorter than kDegenerateLength
 };
 
@@ -111,6 +112,8 @@ public:
     std::array<double, kSpringFamilyCount> springEnergies(const double* x);
     std::array<double, 2> volumes(const double* x);  // [inner, outer]; 0 where absent
 
+    // Counts an evaluation whose result was kept from an uncounted one at the same state.
+    void countReusedEvaluation() { countTerms(); }
     // Counts one evaluation of a post-step term (collisions, layer constraint).
     void countPostStep(Term term) { ++m_evaluations[static_cast<std::size_t>(term)]; }
     std::uint64_t evaluations(Term term) const { return m_evaluations[static_cast<std::size_t>(term)]; }
@@ -137,11 +140,18 @@ private:
         std::vector<Surface> surfaces;
     };
     void partition();
+    // What one part adds up besides forces: enclosed-volume sums (6V in 3D, 2A in 2D) per
+    // layer, damping power, squared stretch per spring family, degenerate springs.
+    struct Sums {
+        std::array<double, 2> volume{};
+        double power = 0.0;
+        std::array<double, kSpringFamilyCount> stretch2{};
+        int degenerate = 0;
+    };
     // Adds the part's spring forces to f4 and its gas gradient dV/dx to g4 (padded, 4 doubles
-    // per particle); adds its enclosed-volume sums (6V in 3D, 2A in 2D) to volume.
+    // per particle); adds its sums to `sums`.
     void accumulatePart(const Part& part, const double* x, const double* v, kernels::Scratch& scratch,
-                        double* f4, double* g4, std::array<double, 2>& volume, double& power,
-                        int& degenerate) const;
+                        double* f4, double* g4, Sums& sums) const;
     std::array<Part, kChunks + 1> m_parts;
     std::array<std::vector<std::pair<int, int>>, kChunks> m_ownedRanges;  // particle ranges per chunk
     std::array<kernels::Scratch, kChunks> m_scratch;  // one block of scratch per chunk

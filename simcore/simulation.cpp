@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace simcore {
 
@@ -15,12 +16,30 @@ public:
     explicit System(Simulation& sim) : m_sim(sim) {}
     StateLayout layout() const override { return {m_sim.m_n, 1}; }
     void derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) override {
+        if (m_offered) {
+            // The end-of-step measurement already evaluated f at the state this step starts
+            // from: the integrator's first stage takes it (counted as the evaluation it is).
+            Eigen::VectorXd* offered = std::exchange(m_offered, nullptr);
+            if (&y == &m_sim.m_y) {
+                dydt.swap(*offered);  // no copy: the two buffers trade places
+                m_extras = m_sim.m_endExtras;
+                m_sim.m_forces.countReusedEvaluation();
+                return;
+            }
+        }
+        compute(y, dydt, m_extras, true);
+    }
+    // dy/dt at y into dydt, with the force by-products; counted as a force evaluation or not.
+    void compute(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, ForceExtras& extras, bool count) {
         const Eigen::Index n = m_sim.m_n;
-        m_sim.m_forces.evaluate(y.data(), y.data() + n, dydt.data() + n, m_extras);
+        m_sim.m_forces.evaluate(y.data(), y.data() + n, dydt.data() + n, extras, count);
         dydt.head(n) = y.segment(n, n);
         dydt.segment(n, n).array() *= m_sim.m_invMass3.array();
-        dydt[2 * n] = m_extras.dampingPower;
+        dydt[2 * n] = extras.dampingPower;
     }
+    // Offers dy/dt at the simulation's current state to the next derivative() call (taken if
+    // that call is at the current state; withdrawn either way); nullptr withdraws it.
+    void offer(Eigen::VectorXd* dydt) { m_offered = dydt; }
     const ForceExtras& extras() const { return m_extras; }
 
     // --- Jacobians for implicit integrators (kernels in jacobians.h) ---
@@ -123,6 +142,7 @@ private:
     std::array<Eigen::VectorXd, 2> m_gradient;  // dV/dx of [inner, outer], 3N each
     std::array<double, 2> m_volume{};
     bool m_gasOn = false;
+    Eigen::VectorXd* m_offered = nullptr;
 };
 
 Simulation::Simulation(const ParameterSet& params, std::string_view integrator)
@@ -200,6 +220,7 @@ void Simulation::applyForceParams() {
 }
 
 void Simulation::reset() {
+    m_endValid = false;
     const Eigen::Index n = m_n;
     m_y.setZero(2 * n + 1);
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = m_body.positions;
@@ -214,6 +235,7 @@ void Simulation::reset() {
     m_integrator->prepare(m_system->layout());
     m_hNext = m_hTaken = m_dt;
     m_doubling.setZero(m_y.size());
+    m_endDerivative.setZero(m_y.size());
     m_lastGood = m_y;
     m_failure.reset();
     m_forces.pointer = PointerSpring{};
@@ -233,6 +255,7 @@ void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, 
 void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v) {
     if (x.cols() != particleCount() || v.cols() != particleCount())
         throw std::invalid_argument("state has the wrong number of particles");
+    m_endValid = false;
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = x;
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data() + m_n, 3, particleCount()) = v;
     m_y[2 * m_n] = 0.0;
@@ -265,6 +288,19 @@ void Simulation::startBookkeeping() {
 }
 
 void Simulation::measure(Diagnostics& d) const {
+    fillDiagnostics(d, m_forces.springEnergies(m_y.data()),
+                    m_forces.terms().has(Term::Gas) ? m_forces.volumes(m_y.data()) : std::array<double, 2>{});
+}
+
+void Simulation::measureWithForces(Diagnostics& d) {
+    // One uncounted force evaluation yields the energies and volumes, and f at this state,
+    // which the next step's first stage takes instead of evaluating it again.
+    m_system->compute(m_y, m_endDerivative, m_endExtras, false);
+    fillDiagnostics(d, m_endExtras.springEnergy, m_endExtras.volume);
+}
+
+void Simulation::fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
+                                 const std::array<double, 2>& volume) const {
     const double* x = m_y.data();
     const double* v = m_y.data() + m_n;
     const Topology& topo = m_body.topology;
@@ -278,11 +314,10 @@ void Simulation::measure(Diagnostics& d) const {
         d.kinetic += 0.5 * m * vi.squaredNorm();
         if (m_forces.terms().has(Term::Gravity)) d.gravity += m * m_forces.params.gravity * x[3 * i + 1];
     }
-    d.spring = m_forces.springEnergies(x);
+    d.spring = spring;
     d.hasGas = m_forces.terms().has(Term::Gas);
     d.gas = 0.0;
     if (d.hasGas) {
-        const std::array<double, 2> volume = m_forces.volumes(x);
         for (const Surface& s : topo.surfaces) {
             const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
             const double c = m_forces.params.gasConstant[slot];
@@ -326,7 +361,10 @@ bool Simulation::step(double until) {
             clamped = true;
         }
     }
+    m_system->offer(m_endValid ? &m_endDerivative : nullptr);
+    m_endValid = false;
     StepReport report = m_integrator->step(*m_system, t0, h, m_y);
+    m_system->offer(nullptr);
     if (report.failure) {
         m_failure = Failure{report.failure, m_diag.step + 1, t0};
         m_y = m_lastGood;
@@ -373,7 +411,10 @@ bool Simulation::step(double until) {
     // One measurement serves both the checks and the diagnostics.
     Diagnostics next = m_diag;
     next.removedCollisions += removedByContacts;
-    measure(next);
+    if (m_reuseEndForces)
+        measureWithForces(next);
+    else
+        measure(next);
     if (const auto problem = checkState(next)) {
         m_failure = Failure{*problem, m_diag.step + 1, t0};
         m_y = m_lastGood;  // keep the last good state: nothing non-finite leaves
@@ -389,6 +430,7 @@ bool Simulation::step(double until) {
     m_diag.dt = report.h;
     m_diag.errorEstimate = report.errorEstimate;
     m_diag.degenerateSprings = m_system->extras().degenerateSprings;
+    m_endValid = m_reuseEndForces;
     return true;
 }
 
@@ -549,6 +591,7 @@ std::optional<std::string> Simulation::setParameter(std::string_view key, double
     // stretch, a heavier particle more kinetic energy): book the jump as work by the edit.
     const double before = totalEnergyNow();
     m_params = next;
+    m_endValid = false;
     if (key == "mass" || key == "mass_inner" || key == "mass_outer") {
         const Topology& topo = m_body.topology;
         for (int i = 0; i < topo.particleCount(); ++i) {
@@ -571,6 +614,7 @@ std::optional<std::string> Simulation::setIntegrator(std::string_view name) {
     auto next = makeIntegrator(name);
     if (!next) return "unknown integrator '" + std::string(name) + "'; allowed: " + integratorNames();
     m_integrator = std::move(next);
+    m_endValid = false;
     m_integrator->setOptions(m_integratorOptions);
     m_integrator->prepare(m_system->layout());
     m_hNext = m_dt;
@@ -621,6 +665,7 @@ void Simulation::grab(int particle, const Eigen::Vector3d& anchor) {
     if (particle < 0 || particle >= particleCount() || m_failure) return;
     // Creating the spring stores energy: that is work done by the pointer.
     const double before = m_diag.pointer;
+    m_endValid = false;
     m_forces.pointer = PointerSpring{true, particle, anchor};
     measure(m_diag);
     m_diag.workPointer += m_diag.pointer - before;
@@ -630,6 +675,7 @@ void Simulation::moveAnchor(const Eigen::Vector3d& anchor) {
     if (!m_forces.pointer.active || m_failure) return;
     // The anchor moves between steps; the change in the spring's energy is the pointer's work.
     const double before = m_diag.pointer;
+    m_endValid = false;
     m_forces.pointer.anchor = anchor;
     measure(m_diag);
     m_diag.workPointer += m_diag.pointer - before;
@@ -638,6 +684,7 @@ void Simulation::moveAnchor(const Eigen::Vector3d& anchor) {
 void Simulation::release() {
     if (!m_forces.pointer.active) return;
     const double before = m_diag.pointer;
+    m_endValid = false;
     m_forces.pointer = PointerSpring{};
     measure(m_diag);
     m_diag.workPointer += m_diag.pointer - before;

@@ -142,6 +142,13 @@ public:
 
     // Energies and volumes of the current state (fills the non-accumulated fields of d).
     void measure(Diagnostics& d) const;
+    // Whether each step measures its end state by a force evaluation whose result the next
+    // step's first stage reuses (default), instead of separate energy and volume passes.
+    // Trajectories are bit-identical either way; the switch exists to test and measure that.
+    void setReuseEndForces(bool on) {
+        m_reuseEndForces = on;
+        m_endValid = false;
+    }
     // Cheap upper estimate of the body's fastest rate |s| [1/s] (spring frequency or damping
     // rate); explicit methods need roughly dt * |s| < kExplicitStabilityLimit. Used to warn
     // before a run.
@@ -158,6 +165,9 @@ private:
     // Why the state (measured into d) is unusable, or nothing.
     std::optional<std::string> checkState(const Diagnostics& d) const;
     double totalEnergyNow() const;
+    void measureWithForces(Diagnostics& d);
+    void fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
+                         const std::array<double, 2>& volume) const;
 
     ParameterSet m_params;
     int m_threads = hardwareThreads();
@@ -183,6 +193,12 @@ private:
     IntegratorOptions m_integratorOptions;
     Eigen::VectorXd m_doubling;   // step doubling: the full-step result [x | v | aux]
     double m_energyScale = 1.0;   // for runaway detection [J]
+    // dy/dt at the end of the last step, evaluated to measure it; valid until anything but
+    // the next step changes the state, the parameters or the pointer.
+    bool m_reuseEndForces = true;
+    bool m_endValid = false;
+    Eigen::VectorXd m_endDerivative;
+    ForceExtras m_endExtras;
     Eigen::Index m_n = 0;         // 3N
 };
 
