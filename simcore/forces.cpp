@@ -91,22 +91,29 @@ double addGas(const Surface& surface, int dimension, double c, const double* x, 
     return volume;
 }
 
-double addPointer(const PointerSpring& pointer, double mks, double mkd, double rest,
-                  const double* x, const double* v, double* f) {
+bool pointerForce(const PointerSpring& pointer, double mks, double mkd, double rest,
+                  const double* x, const double* v, double* force, double& power) {
     // A spring from the particle p to the anchor r_m (which does not move during a step):
     // d = r_m - x_p, F_p = [mks (L - rest) - mkd v_p.u] u.
-    if (!pointer.active || pointer.particle < 0) return 0.0;
+    if (!pointer.active || pointer.particle < 0) return false;
     const int p = 3 * pointer.particle;
     const Eigen::Vector3d d = pointer.anchor - Eigen::Vector3d(x[p], x[p + 1], x[p + 2]);
     const double length = d.norm();
-    if (length < kDegenerateLength) return 0.0;
+    if (length < kDegenerateLength) return false;
     const Eigen::Vector3d u = d / length;
     const double closing = -(v[p] * u.x() + v[p + 1] * u.y() + v[p + 2] * u.z());
     const double magnitude = mks * (length - rest) + mkd * closing;
-    f[p] += magnitude * u.x();
-    f[p + 1] += magnitude * u.y();
-    f[p + 2] += magnitude * u.z();
-    return mkd * closing * closing;
+    for (int axis = 0; axis < 3; ++axis) force[axis] = magnitude * u[axis];
+    power = mkd * closing * closing;
+    return true;
+}
+
+double addPointer(const PointerSpring& pointer, double mks, double mkd, double rest,
+                  const double* x, const double* v, double* f) {
+    double force[3], power = 0.0;
+    if (!pointerForce(pointer, mks, mkd, rest, x, v, force, power)) return 0.0;
+    for (int axis = 0; axis < 3; ++axis) f[3 * pointer.particle + axis] += force[axis];
+    return power;
 }
 
 double springEnergy(const SpringSet& springs, double ks, const double* x) {
@@ -331,16 +338,26 @@ std::array<double, kSpringFamilyCount> ForceModel::springEnergies(const double* 
 }
 
 void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtras& extras, bool count) {
+    evaluateInto(x, v, nullptr, nullptr, f, extras, count);
+}
+
+void ForceModel::evaluateMotion(const double* x, const double* v, const double* invMass3, double* xdot,
+                                double* a, ForceExtras& extras, bool count) {
+    evaluateInto(x, v, invMass3, xdot, a, extras, count);
+}
+
+void ForceModel::evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
+                              double* out, ForceExtras& extras, bool count) {
     const Topology& topo = *m_topology;
     extras = ForceExtras{};
     if (count) countTerms();
 
-    // Stage 1: each chunk clears its own particles, adds gravity and its own springs, and for
-    // the gas its faces' volume and unscaled gradient dV/dx (P = c/V needs the whole volume).
-    // Forces and gradients collect in padded buffers (4 doubles per particle).
+    // Stage 1: each chunk starts its own particles at their weight (0, -m g, 0) and adds its
+    // own springs, and for the gas its faces' volume and unscaled gradient dV/dx (P = c/V
+    // needs the whole volume). Forces and gradients collect in padded buffers (4 doubles per
+    // particle).
     const bool gas = m_terms.has(Term::Gas);
-    const bool gravity = m_terms.has(Term::Gravity);
-    const double g = params.gravity;
+    const double g = m_terms.has(Term::Gravity) ? params.gravity : 0.0;
     const double* mass = m_mass->data();
     double* f4 = m_force4.data();
     double* g4 = m_gradient4.data();
@@ -348,10 +365,12 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
     runChunks([&](int c) {
         const auto k = static_cast<std::size_t>(c);
         for (auto [begin, end] : m_ownedRanges[k]) {
-            std::fill(f4 + 4 * begin, f4 + 4 * end, 0.0);
+            for (int i = begin; i < end; ++i) {
+                double* fi = f4 + 4 * i;
+                fi[0] = fi[2] = fi[3] = 0.0;
+                fi[1] = 0.0 - mass[i] * g;
+            }
             if (gas) std::fill(g4 + 4 * begin, g4 + 4 * end, 0.0);
-            if (gravity)
-                for (int i = begin; i < end; ++i) f4[4 * i + 1] -= mass[i] * g;
         }
         accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, sums[k]);
     });
@@ -382,22 +401,37 @@ void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtr
             extras.pressure[slot] = pressure[slot];
         }
     }
+    // Total force of particle i along an axis, before the pointer's.
+    auto force = [&](int i, int axis, double p) {
+        return gas ? f4[4 * i + axis] + p * g4[4 * i + axis] : f4[4 * i + axis];
+    };
+    auto layerPressure = [&](int i) {
+        return pressure[static_cast<std::size_t>(layerSlot(topo.layer[static_cast<std::size_t>(i)]))];
+    };
     runChunks([&](int c) {
         for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(c)]) {
-            if (gas) {
-                // Each owned range lies in one layer (see partition()).
-                const double p = pressure[static_cast<std::size_t>(layerSlot(topo.layer[static_cast<std::size_t>(begin)]))];
-                for (int i = begin; i < end; ++i)
-                    for (int axis = 0; axis < 3; ++axis)
-                        f[3 * i + axis] = f4[4 * i + axis] + p * g4[4 * i + axis];
-            } else {
-                for (int i = begin; i < end; ++i)
-                    for (int axis = 0; axis < 3; ++axis) f[3 * i + axis] = f4[4 * i + axis];
-            }
+            const double p = layerPressure(begin);  // each owned range lies in one layer (see partition())
+            for (int i = begin; i < end; ++i)
+                for (int axis = 0; axis < 3; ++axis) {
+                    const int k = 3 * i + axis;
+                    out[k] = invMass3 ? force(i, axis, p) * invMass3[k] : force(i, axis, p);
+                    if (xdot) xdot[k] = v[k];
+                }
         }
     });
-    if (m_terms.has(Term::Pointer) && pointer.active)
-        extras.dampingPower += addPointer(pointer, params.mks, params.mkd, params.mouseRest, x, v, f);
+    // The mouse spring acts on one particle: its total is redone with the pointer's force
+    // added before the division by the mass.
+    double pointerF[3], pointerPower = 0.0;
+    if (m_terms.has(Term::Pointer) &&
+        pointerForce(pointer, params.mks, params.mkd, params.mouseRest, x, v, pointerF, pointerPower)) {
+        const int i = pointer.particle;
+        for (int axis = 0; axis < 3; ++axis) {
+            const int k = 3 * i + axis;
+            const double total = force(i, axis, layerPressure(i)) + pointerF[axis];
+            out[k] = invMass3 ? total * invMass3[k] : total;
+        }
+        extras.dampingPower += pointerPower;
+    }
 }
 
 void ForceModel::evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras) {

@@ -62,6 +62,10 @@ double addSprings(const SpringSet& springs, double ks, double kd, const double* 
                   double* f, int& degenerate);
 // Gas of one closed layer with nRT = c. Returns the volume V; force P * dV/dx.
 double addGas(const Surface& surface, int dimension, double c, const double* x, double* f);
+// The mouse spring's force on its particle into force[0..2] and its damping power; false
+// (nothing written) when it does not act (inactive, or the particle on the anchor).
+bool pointerForce(const PointerSpring& pointer, double mks, double mkd, double rest,
+                  const double* x, const double* v, double* force, double& power);
 double addPointer(const PointerSpring& pointer, double mks, double mkd, double rest,
                   const double* x, const double* v, double* f);
 
@@ -106,6 +110,10 @@ public:
     // Computes f = F(x, v) (3N). Overwrites f. With count = false the evaluation is not
     // counted (a display asking for the current forces is not part of the run's cost).
     void evaluate(const double* x, const double* v, double* f, ForceExtras& extras, bool count = true);
+    // The same forces as the right-hand side of the equations of motion: xdot = v and
+    // a = F * invMass3 (3N each, 0 where invMass3 is 0), written by the chunks in parallel.
+    void evaluateMotion(const double* x, const double* v, const double* invMass3, double* xdot,
+                        double* a, ForceExtras& extras, bool count = true);
     // The same forces by the plain one-pass kernels (the reference the fast path is tested on).
     void evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras);
     // Elastic energy per spring family and enclosed volume per surface, chunked like forces.
@@ -124,6 +132,10 @@ private:
     void runChunks(F&& task);
     static std::pair<std::size_t, std::size_t> range(std::size_t count, int chunk, int chunks);
     void countTerms();
+    // evaluate() and evaluateMotion(): out = F (invMass3 == nullptr) or F * invMass3, and
+    // xdot = v when xdot is given.
+    void evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
+                      double* out, ForceExtras& extras, bool count);
 
     const Topology* m_topology = nullptr;
     const Eigen::VectorXd* m_mass = nullptr;

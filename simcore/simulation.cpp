@@ -32,9 +32,8 @@ public:
     // dy/dt at y into dydt, with the force by-products; counted as a force evaluation or not.
     void compute(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, ForceExtras& extras, bool count) {
         const Eigen::Index n = m_sim.m_n;
-        m_sim.m_forces.evaluate(y.data(), y.data() + n, dydt.data() + n, extras, count);
-        dydt.head(n) = y.segment(n, n);
-        dydt.segment(n, n).array() *= m_sim.m_invMass3.array();
+        m_sim.m_forces.evaluateMotion(y.data(), y.data() + n, m_sim.m_invMass3.data(), dydt.data(),
+                                      dydt.data() + n, extras, count);
         dydt[2 * n] = extras.dampingPower;
     }
     // Offers dy/dt at the simulation's current state to the next derivative() call (taken if

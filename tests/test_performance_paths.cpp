@@ -106,7 +106,16 @@ private slots:
         for (int f = 0; f < kSpringFamilyCount; ++f) {
             const double reference1 = springEnergy(body.topology.springs[std::size_t(f)], model.params.ks[std::size_t(f)], x.data());
             QVERIFY(std::abs(energies[std::size_t(f)] - reference1) <= 1e-12 * std::max(1.0, reference1));
+            // The evaluation's own energy sums, which the end-of-step measurement uses.
+            QVERIFY(std::abs(a.springEnergy[std::size_t(f)] - reference1) <= 1e-12 * std::max(1.0, reference1));
         }
+        // As the right-hand side of the ODE: xdot = v and a = F / m exactly, pointer included.
+        Eigen::VectorXd invMass3(n3), xdot(n3), accel(n3);
+        for (Eigen::Index k = 0; k < n3; ++k) invMass3[k] = k % 5 == 0 ? 0.0 : 1.0 / (1.0 + 0.01 * double(k % 7));
+        model.evaluateMotion(x.data(), v.data(), invMass3.data(), xdot.data(), accel.data(), a);
+        QVERIFY(xdot == v);
+        QVERIFY(accel == Eigen::VectorXd(fast.cwiseProduct(invMass3)));  // bit for bit
+        QVERIFY(accel[3 * 7 + 1] != 0.0);  // the grabbed particle's row is not a fixed one
     }
     // The AVX2 kernels do the portable kernels' arithmetic in the same order: the two give
     // bit-identical trajectories (so results do not depend on the CPU the lab runs on).
