@@ -28,6 +28,8 @@
 
 #include <Eigen/Core>
 
+#include "parallel.h"
+
 namespace simcore {
 
 struct StateLayout {
@@ -42,6 +44,11 @@ public:
     virtual StateLayout layout() const = 0;
     // dydt = f(t, y). Must not allocate.
     virtual void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) = 0;
+
+    // Element-wise vector work of a step (y + h k, ...) may be split in pieces that run on
+    // several threads: runPieces calls task(0..pieces()-1) and returns when all are done.
+    virtual int pieces() const { return 1; }
+    virtual void runPieces(TaskRef task) { task(0); }
 
     // --- mechanical structure, for implicit methods (M v' = F(x, v)) ---
     virtual bool hasForceJacobian() const { return false; }

@@ -36,6 +36,13 @@ public:
                                       dydt.data() + n, extras, count);
         dydt[2 * n] = extras.dampingPower;
     }
+    int pieces() const override { return m_sim.m_pool ? m_sim.m_pool->threads() : 1; }
+    void runPieces(TaskRef task) override {
+        if (m_sim.m_pool)
+            m_sim.m_pool->run(m_sim.m_pool->threads(), task);
+        else
+            task(0);
+    }
     // Offers dy/dt at the simulation's current state to the next derivative() call (taken if
     // that call is at the current state; withdrawn either way); nullptr withdraws it.
     void offer(Eigen::VectorXd* dydt) { m_offered = dydt; }
@@ -393,27 +400,26 @@ bool Simulation::step(double until) {
     // Wall contacts and the layer constraint change the state outside the ODE. Whatever
     // energy they change is measured across them and booked as removed by collisions (in the
     // new diagnostics only: a step that then fails leaves the books as they were).
-    double removedByContacts = 0.0;
+    std::optional<double> beforeContacts;
     if (m_y.allFinite()) {
         const bool walls = m_forces.terms().has(Term::Collisions);
         const bool layers = m_forces.terms().has(Term::LayerConstraint);
         if (walls) m_forces.countPostStep(Term::Collisions);
         if (layers) m_forces.countPostStep(Term::LayerConstraint);
         if ((walls && collide(false)) || (layers && constrainLayers(false))) {
-            const double before = totalEnergyNow();
+            beforeContacts = totalEnergyNow();
             if (walls) collide(true);
             if (layers) constrainLayers(true);
-            removedByContacts = before - totalEnergyNow();
         }
     }
 
-    // One measurement serves both the checks and the diagnostics.
+    // One measurement serves the checks, the diagnostics and the energy after the contacts.
     Diagnostics next = m_diag;
-    next.removedCollisions += removedByContacts;
     if (m_reuseEndForces)
         measureWithForces(next);
     else
         measure(next);
+    if (beforeContacts) next.removedCollisions += *beforeContacts - next.total();
     if (const auto problem = checkState(next)) {
         m_failure = Failure{*problem, m_diag.step + 1, t0};
         m_y = m_lastGood;  // keep the last good state: nothing non-finite leaves
