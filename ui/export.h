@@ -1,6 +1,8 @@
 #pragma once
-// Export: CSV time series (the CLI's columns), plots (PNG, SVG, PDF) and images, every file
-// written atomically through QSaveFile (an interrupted write never leaves half a file).
+// Export: CSV time series (the CLI's columns), plots (PNG, SVG, PDF), images and scene files,
+// every file written atomically through QSaveFile (a failed or interrupted write leaves the old
+// file untouched and no partial or temporary file behind); an existing device such as
+// /dev/null is written in place, never renamed over.
 
 #include <vector>
 
@@ -16,7 +18,8 @@ namespace elui {
 
 struct PlotSpec;
 
-// Returns an error message, or empty on success.
+// Each returns an error message naming the file and the system's reason, or empty on success.
+QString writeFile(const QString& path, const QByteArray& bytes);
 QString writeCsv(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows);
 QString writeImage(const QString& path, const QImage& image);
 // The plots stacked vertically; the format follows the suffix (.png, .svg, .pdf).

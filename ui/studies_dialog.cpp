@@ -14,7 +14,6 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -53,13 +52,6 @@ void setupLogAxis(QCPAxis* axis, const QString& label) {
     axis->setLabel(label);
 }
 
-QString writeText(const QString& path, const QString& text) {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly)) return QObject::tr("Could not open %1: %2").arg(path, file.errorString());
-    file.write(text.toUtf8());
-    if (!file.commit()) return QObject::tr("Could not write %1: %2").arg(path, file.errorString());
-    return {};
-}
 }  // namespace
 
 StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterSet& params, QWidget* parent)
@@ -196,8 +188,8 @@ void StudyDialogBase::exportResults() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export results"), QStringLiteral("study.csv"), filter);
     if (path.isEmpty()) return;
     QString error;
-    if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) error = writeText(path, csv());
-    else if (path.endsWith(QLatin1String(".svg"), Qt::CaseInsensitive)) error = writeText(path, svgText);
+    if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) error = writeFile(path, csv().toUtf8());
+    else if (path.endsWith(QLatin1String(".svg"), Qt::CaseInsensitive)) error = writeFile(path, svgText.toUtf8());
     else if (path.endsWith(QLatin1String(".pdf"), Qt::CaseInsensitive)) error = writePlots(path, {m_plot}, {PlotSpec{"study", windowTitle(), {}, {}}});
     else error = writeImage(path, m_plot->toPixmap(1000, 600).toImage());
     if (!error.isEmpty()) QMessageBox::warning(this, tr("Export"), error);
