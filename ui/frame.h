@@ -23,6 +23,7 @@
 #include "body.h"
 #include "forces.h"
 #include "params.h"
+#include "scenefile.h"
 #include "simulation.h"
 
 namespace elui {
@@ -75,7 +76,17 @@ struct FrameBatch {
     bool historyReset = false;            // a reset/rebuild happened: clear plots first
 };
 
+// A scene file captured on the worker thread between two steps (SimulationController::captureScene).
+struct SceneCapture {
+    std::string text;                     // simcore::sceneFileText of lane 0, with its exact state
+    simcore::ParameterSet parameters;     // what the text holds
+    QString integrator;                   // lane 0's
+    int lanes = 0;                        // views running (side by side: > 1; only lane 0 is in text)
+    double time = 0.0;                    // lane 0's simulated time [s]
+};
+
 }  // namespace elui
 
 Q_DECLARE_METATYPE(elui::FramePtr)
+Q_DECLARE_METATYPE(simcore::SceneFile)
 Q_DECLARE_METATYPE(simcore::ParameterSet)

@@ -5,6 +5,7 @@
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QFrame>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -30,7 +31,8 @@
 
 namespace elui {
 
-MainWindow::MainWindow(bool useSettings, QWidget* parent) : QMainWindow(parent), m_useSettings(useSettings) {
+MainWindow::MainWindow(bool useSettings, QWidget* parent)
+    : QMainWindow(parent), m_useSettings(useSettings), m_recent(useSettings ? new QSettings(this) : nullptr) {
     setWindowTitle(tr("Elastic Lab"));
     m_controller = new SimulationController(this);
     createActions();
@@ -48,6 +50,17 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::createActions() {
+    m_openScene = new QAction(tr("&Open scene..."), this);
+    m_openScene->setShortcut(QKeySequence::Open);
+    m_openScene->setToolTip(tr("A scene file (.json): scene, parameters, integrator and, if saved, the exact state"));
+    connect(m_openScene, &QAction::triggered, this, &MainWindow::openSceneDialog);
+    m_saveScene = new QAction(tr("&Save scene"), this);
+    m_saveScene->setShortcut(QKeySequence::Save);
+    m_saveScene->setToolTip(tr("Scene, every parameter, the integrator and the exact current state"));
+    connect(m_saveScene, &QAction::triggered, this, &MainWindow::saveScene);
+    m_saveSceneAs = new QAction(tr("Save scene &as..."), this);
+    m_saveSceneAs->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
+    connect(m_saveSceneAs, &QAction::triggered, this, &MainWindow::saveSceneAs);
     m_exportCsv = new QAction(tr("Export &CSV..."), this);
     m_exportCsv->setToolTip(tr("The time series of this run, with the same columns as elastic-lab-cli run --csv"));
     connect(m_exportCsv, &QAction::triggered, this, &MainWindow::exportCsv);
@@ -121,6 +134,15 @@ void MainWindow::createActions() {
 
 void MainWindow::createMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->setToolTipsVisible(true);
+    file->addAction(m_openScene);
+    m_recentMenu = file->addMenu(tr("Open &recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    m_recentMenu->setToolTipsVisible(true);
+    fillRecentMenu();
+    file->addAction(m_saveScene);
+    file->addAction(m_saveSceneAs);
+    file->addSeparator();
     file->addAction(m_exportCsv);
     file->addAction(m_exportPlots);
     file->addAction(m_screenshot);
@@ -272,8 +294,15 @@ void MainWindow::connectController() {
     connect(c, &SimulationController::parameterRejected, this,
             [this](const QString&, const QString& message) { status(message); });
     connect(c, &SimulationController::sceneRejected, this, [this](const QString& message) {
+        if (m_pending) {
+            const QString path = m_pending->path;
+            m_pending.reset();
+            warn(tr("Open scene"), tr("Could not open %1: %2").arg(path, message));
+            return;
+        }
         status(tr("Cannot build that body: %1").arg(message));
     });
+    connect(c, &SimulationController::sceneChanged, this, &MainWindow::adoptOpenedFile);
 
     connect(m_parameterDock, &ParameterDock::parameterEdited, c, &SimulationController::setParameter);
     connect(m_parameterDock, &ParameterDock::parameterRejected, this,
@@ -324,6 +353,8 @@ void MainWindow::startScene(const simcore::ParameterSet& params, const QStringLi
 }
 
 void MainWindow::applyPreset(const Preset& preset) {
+    // A preset is a new experiment: it is not the scene file's, so Save asks for a name.
+    setCurrentFile({}, simcore::ParameterSet{}, {});
     m_controller->setStartKick(preset.kickInner, preset.kickOuter);
     startScene(preset.parameters(), preset.integrators);
     status(preset.title + QStringLiteral(": ") + preset.description + tr(" Press Run (Space)."));
@@ -357,8 +388,8 @@ void MainWindow::onFrame(const FramePtr& frame) {
         m_paramsShown = true;
         m_parameterDock->showParameters(frame->parameters);
         m_sceneDock->showParameters(frame->parameters);
-        setWindowTitle(tr("Elastic Lab — %1").arg(toQString(simcore::sceneInfo(frame->parameters.kind()).name)));
     }
+    updateTitle(*frame);
     m_runPause->setText(frame->running ? tr("&Pause") : tr("&Run"));
     showFailure(frame);
 }
@@ -394,12 +425,178 @@ QString MainWindow::failureText() const { return m_banner->isVisible() ? m_banne
 
 void MainWindow::status(const QString& text) { statusBar()->showMessage(text, 12000); }
 
+void MainWindow::warn(const QString& title, const QString& text) {
+    auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+    status(text);
+}
+
+namespace {
+// Equal values for every key of the scene (explicit or default alike).
+bool sameValues(const simcore::ParameterSet& a, const simcore::ParameterSet& b) {
+    if (a.kind() != b.kind()) return false;
+    for (const simcore::ParamSpec* spec : simcore::parametersFor(a.kind()))
+        if (a.get(spec->key) != b.get(spec->key)) return false;
+    return true;
+}
+// Larger than any scene file this program writes (a level-4 sphere with its state: ~0.3 MB).
+constexpr qint64 kMaxSceneFileBytes = 64 << 20;
+}  // namespace
+
+void MainWindow::setCurrentFile(const QString& path, const simcore::ParameterSet& saved, const QString& integrator) {
+    m_currentFile = path;
+    m_savedParams = saved;
+    m_savedIntegrator = integrator;
+    if (m_controller->latest()) updateTitle(*m_controller->latest());
+}
+
+void MainWindow::updateTitle(const Frame& frame) {
+    // Modified = the parameters or lane 0's integrator differ from what the file holds. Running
+    // alone does not count: the state changes all the time, and Save always stores it.
+    const QString scene = toQString(simcore::sceneInfo(frame.parameters.kind()).name);
+    bool modified = false;
+    QString title;
+    if (m_currentFile.isEmpty()) {
+        title = tr("Elastic Lab — %1").arg(scene);
+    } else {
+        title = tr("%1[*] — Elastic Lab (%2)").arg(QFileInfo(m_currentFile).fileName(), scene);
+        modified = !sameValues(frame.parameters, m_savedParams) || frame.lanes.front().integrator != m_savedIntegrator;
+    }
+    if (title != windowTitle()) setWindowTitle(title);
+    setWindowModified(modified);
+}
+
+void MainWindow::fillRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList paths = m_recent.paths();
+    for (int i = 0; i < paths.size(); ++i) {
+        const QFileInfo info(paths[i]);
+        QAction* a = m_recentMenu->addAction(QStringLiteral("&%1 %2").arg(i + 1).arg(info.fileName()));
+        a->setToolTip(paths[i]);
+        a->setData(paths[i]);
+        const QString path = paths[i];
+        connect(a, &QAction::triggered, this, [this, path] { openRecent(path); });
+    }
+    if (paths.isEmpty()) m_recentMenu->addAction(tr("(none)"))->setEnabled(false);
+    m_recentMenu->addSeparator();
+    QAction* clear = m_recentMenu->addAction(tr("&Clear"), this, [this] {
+        m_recent.clear();
+        fillRecentMenu();
+    });
+    clear->setEnabled(!paths.isEmpty());
+}
+
+void MainWindow::openSceneDialog() {
+    const QString dir = m_currentFile.isEmpty() ? QString() : QFileInfo(m_currentFile).absolutePath();
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Open scene"), dir, tr("Elastic Lab scenes (*.json);;All files (*)"));
+    if (!path.isEmpty()) openSceneFile(path);
+}
+
+QString MainWindow::openSceneFile(const QString& path) {
+    // Read here (no simulation is touched), validated by simcore's reader: the running scene
+    // changes only when the whole file is good.
+    QFile file(path);
+    QString error;
+    if (!QFileInfo(path).isFile())
+        error = QFileInfo::exists(path) ? tr("Could not open %1: not a regular file").arg(path)
+                                        : tr("Could not open %1: no such file").arg(path);
+    else if (file.size() > kMaxSceneFileBytes)
+        error = tr("Could not open %1: %2 bytes is too large for a scene file").arg(path).arg(file.size());
+    else if (!file.open(QIODevice::ReadOnly))
+        error = tr("Could not open %1: %2").arg(path, file.errorString());
+    simcore::SceneFileResult read;
+    if (error.isEmpty()) {
+        read = simcore::parseSceneFile(file.readAll().toStdString());
+        if (!read.file) error = tr("%1 is not a scene this program can open:\n%2").arg(path, QString::fromStdString(read.error));
+    }
+    if (!error.isEmpty()) {
+        warn(tr("Open scene"), error);
+        return error;
+    }
+    openScene(*read.file, {}, path);
+    return {};
+}
+
+void MainWindow::openScene(const simcore::SceneFile& file, const QStringList& integrators, const QString& path,
+                           const simcore::SceneFile* onDisk) {
+    const simcore::SceneFile& saved = onDisk ? *onDisk : file;
+    m_pending = PendingOpen{path, saved.params, QString::fromStdString(saved.integrator), file.state.has_value(),
+                            file.state ? file.state->time : 0.0};
+    m_controller->openScene(file, integrators);
+}
+
+void MainWindow::adoptOpenedFile() {
+    // The scene of a pending open runs now: it becomes the window's file.
+    if (!m_pending) return;
+    const PendingOpen opened = *m_pending;
+    m_pending.reset();
+    setCurrentFile(opened.path, opened.params, opened.integrator);
+    if (!opened.path.isEmpty()) {
+        m_recent.add(opened.path);
+        fillRecentMenu();
+    }
+    status(opened.hasState ? tr("Opened %1: the saved state at t = %2 s, paused. Press Run (Space).")
+                                 .arg(opened.path).arg(opened.time)
+                           : tr("Opened %1 (no saved state: starts at t = 0). Press Run (Space).").arg(opened.path));
+}
+
+QString MainWindow::openRecent(const QString& path) {
+    if (!QFileInfo::exists(path)) {
+        m_recent.remove(path);
+        fillRecentMenu();
+        const QString error = tr("%1 no longer exists; it has been removed from the recent files.").arg(path);
+        warn(tr("Open recent"), error);
+        return error;
+    }
+    return openSceneFile(path);
+}
+
+void MainWindow::saveScene() {
+    if (m_currentFile.isEmpty()) saveSceneAs();
+    else saveSceneFile(m_currentFile);
+}
+
+void MainWindow::saveSceneAs() {
+    const QString suggested = m_currentFile.isEmpty()
+                                  ? QStringLiteral("%1.json").arg(toQString(simcore::sceneInfo(m_controller->sceneKind()).name))
+                                  : m_currentFile;
+    QString path = QFileDialog::getSaveFileName(this, tr("Save scene as"), suggested, tr("Elastic Lab scenes (*.json)"));
+    if (path.isEmpty()) return;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".json");
+    saveSceneFile(path);
+}
+
+QString MainWindow::saveSceneFile(const QString& path) {
+    // The state is captured on the worker thread between two steps; the run goes on.
+    const SceneCapture capture = m_controller->captureScene();
+    QString error = capture.text.empty() ? tr("Could not save %1: no scene is running yet").arg(path)
+                                         : writeFile(path, QByteArray::fromStdString(capture.text));
+    if (!error.isEmpty()) {
+        warn(tr("Save scene"), error);
+        return error;
+    }
+    setCurrentFile(path, capture.parameters, capture.integrator);
+    m_recent.add(path);
+    fillRecentMenu();
+    // Side by side, the file holds the first view only (one integrator, one state).
+    if (capture.lanes > 1)
+        status(tr("Saved the first view (%1) at t = %2 s to %3; %4 not in the file.")
+                   .arg(capture.integrator)
+                   .arg(capture.time)
+                   .arg(path, capture.lanes == 2 ? tr("the second view is") : tr("the other views are")));
+    else
+        status(tr("Saved %1 at t = %2 s (%3).").arg(path).arg(capture.time).arg(capture.integrator));
+    return {};
+}
+
 void MainWindow::exportCsv() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), QStringLiteral("elastic-lab.csv"),
                                                       tr("CSV files (*.csv)"));
     if (path.isEmpty()) return;
     const QString error = writeCsv(path, m_controller->sceneKind(), m_controller->history());
-    if (!error.isEmpty()) QMessageBox::warning(this, tr("Export CSV"), error);
+    if (!error.isEmpty()) warn(tr("Export CSV"), error);
     else status(tr("Wrote %1 rows to %2").arg(m_controller->history().size()).arg(path));
 }
 
@@ -410,7 +607,7 @@ void MainWindow::exportPlots() {
                                                       &filter);
     if (path.isEmpty()) return;
     const QString error = writePlots(path, m_plotDock->plots(), m_plotDock->specs());
-    if (!error.isEmpty()) QMessageBox::warning(this, tr("Export plots"), error);
+    if (!error.isEmpty()) warn(tr("Export plots"), error);
     else status(tr("Wrote %1").arg(path));
 }
 
@@ -424,7 +621,7 @@ void MainWindow::saveViewportScreenshot() {
     if (m_viewports.size() == 1) image = m_viewports.front()->grab().toImage();
     else image = centralWidget()->grab().toImage();
     const QString error = writeImage(path, image);
-    if (!error.isEmpty()) QMessageBox::warning(this, tr("Save screenshot"), error);
+    if (!error.isEmpty()) warn(tr("Save screenshot"), error);
     else status(tr("Wrote %1").arg(path));
 }
 

@@ -3,11 +3,13 @@
 //   createActions -> createMenus -> createCentral -> createDocks -> connectController -> readSettings
 // Every dock has an objectName and a View-menu toggle; the layout is kept with saveState().
 
+#include <optional>
 #include <vector>
 
 #include <QMainWindow>
 
 #include "frame.h"
+#include "recent_files.h"
 #include "view_options.h"
 
 class QAction;
@@ -42,9 +44,26 @@ public:
     const ViewOptions& viewOptions() const { return m_options; }
     void setViewOptions(const ViewOptions& options);
     QString failureText() const;
+    // The scene file the window is about (empty: none yet), and the recent-files list.
+    QString currentFile() const { return m_currentFile; }
+    const RecentFiles& recentFiles() const { return m_recent; }
+    QMenu* recentMenu() const { return m_recentMenu; }
 
 public slots:
     void startScene(const simcore::ParameterSet& params, const QStringList& integrators);
+    // Scene files. Each returns the error shown to the user (non-blocking message box and
+    // status bar), or empty on success; a refused file leaves the running scene as it is.
+    QString openSceneFile(const QString& path);
+    QString openRecent(const QString& path);  // a file that has gone is dropped from the list
+    QString saveSceneFile(const QString& path);
+    // A scene file already read (e.g. by main()): integrators empty = the file's own. The file
+    // becomes the window's current file once its scene runs. onDisk: what the file holds when
+    // `file` was changed after reading (main()'s --set), so the title marks it modified.
+    void openScene(const simcore::SceneFile& file, const QStringList& integrators, const QString& path,
+                   const simcore::SceneFile* onDisk = nullptr);
+    void openSceneDialog();
+    void saveScene();  // to the current file, or Save as when there is none
+    void saveSceneAs();
     void applyPreset(const elui::Preset& preset);
     void exportCsv();
     void exportPlots();
@@ -70,6 +89,13 @@ private:
     void rebuildFromSceneDock(const simcore::ParameterSet& shape);
     void showFailure(const FramePtr& frame);
     void status(const QString& text);
+    // A warning in a window-modal message box that does not block (the run goes on), and in
+    // the status bar.
+    void warn(const QString& title, const QString& text);
+    void setCurrentFile(const QString& path, const simcore::ParameterSet& saved, const QString& integrator);
+    void updateTitle(const Frame& frame);
+    void fillRecentMenu();
+    void adoptOpenedFile();
 
     SimulationController* m_controller = nullptr;
     bool m_useSettings = true;
@@ -91,7 +117,26 @@ private:
     bool m_paramsShown = false;
     bool m_failureShown = false;
 
+    // Scene file: the path, and the parameters and integrator it holds (what "modified" is
+    // measured against). An open waits in m_pending until its scene runs.
+    QString m_currentFile;
+    simcore::ParameterSet m_savedParams;
+    QString m_savedIntegrator;
+    struct PendingOpen {
+        QString path;
+        simcore::ParameterSet params;
+        QString integrator;
+        bool hasState = false;
+        double time = 0.0;
+    };
+    std::optional<PendingOpen> m_pending;
+    RecentFiles m_recent;
+    QMenu* m_recentMenu = nullptr;
+
     // Actions.
+    QAction* m_openScene = nullptr;
+    QAction* m_saveScene = nullptr;
+    QAction* m_saveSceneAs = nullptr;
     QAction* m_exportCsv = nullptr;
     QAction* m_exportPlots = nullptr;
     QAction* m_screenshot = nullptr;

@@ -6,6 +6,8 @@
 
 #include <QTimer>
 
+#include "scenes.h"
+
 namespace elui {
 
 double speedFactor(Speed speed) {
@@ -36,6 +38,10 @@ constexpr double kPublishInterval = 1.0 / 90.0;
 
 Eigen::Vector3d toEigen(const QVector3D& v) { return {v.x(), v.y(), v.z()}; }
 double seconds(const QElapsedTimer& t) { return double(t.nsecsElapsed()) * 1e-9; }
+QString integratorName(const simcore::Simulation& sim) {
+    const std::string_view name = sim.integrator().name();
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
+}
 }  // namespace
 
 SimWorker::SimWorker() {
@@ -56,7 +62,8 @@ FrameBatch SimWorker::takeBatch() {
     return out;
 }
 
-void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList& integrators) {
+std::vector<std::unique_ptr<simcore::Simulation>> SimWorker::buildLanes(const simcore::ParameterSet& params,
+                                                                        const QStringList& integrators) {
     std::vector<std::unique_ptr<simcore::Simulation>> lanes;
     try {
         for (const QString& name : integrators) {
@@ -72,12 +79,45 @@ void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList&
         }
     } catch (const std::exception& e) {
         emit sceneRejected(QString::fromStdString(e.what()));
-        return;
+        return {};
     }
+    return lanes;
+}
+
+void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList& integrators) {
+    auto lanes = buildLanes(params, integrators);
     if (lanes.empty()) return;
     m_lanes = std::move(lanes);
     m_params = params;
     afterRebuild();
+}
+
+void SimWorker::openScene(const simcore::SceneFile& file, const QStringList& integrators) {
+    auto lanes = buildLanes(file.params, integrators);
+    if (lanes.empty()) return;
+    if (file.state)
+        for (auto& sim : lanes)
+            if (auto error = simcore::applyState(*sim, *file.state)) {
+                emit sceneRejected(QString::fromStdString(*error));
+                return;
+            }
+    // The file is the whole experiment: a preset's start kick does not apply to it.
+    m_kickInner = m_kickOuter = 0.0;
+    m_lanes = std::move(lanes);
+    m_params = file.params;
+    afterRebuild();
+}
+
+SceneCapture SimWorker::captureScene() const {
+    SceneCapture capture;
+    if (m_lanes.empty()) return capture;
+    const simcore::Simulation& sim = *m_lanes.front();
+    capture.text = simcore::sceneFileText(sim, std::string(simcore::sceneInfo(sim.parameters().kind()).name), true);
+    capture.parameters = sim.parameters();
+    capture.integrator = integratorName(sim);
+    capture.lanes = int(m_lanes.size());
+    capture.time = sim.time();
+    return capture;
 }
 
 void SimWorker::afterRebuild() {
@@ -211,9 +251,10 @@ void SimWorker::reset() {
 }
 
 void SimWorker::startHistory() {
-    // Back at t = 0 (a new scene or a reset): kick, clocks, rows and a first frame.
+    // Back at the start (t = 0 after a new scene or a reset; a saved state's time after
+    // openScene): kick, clocks, rows and a first frame.
     applyKick();
-    m_commonTime = 0.0;
+    m_commonTime = m_lanes.front()->time();
     restartClock();
     m_wallBeforeStart = 0.0;
     m_lastRowTime = -1.0;
@@ -368,8 +409,7 @@ void SimWorker::publish(bool force) {
     const auto x0 = m_lanes.front()->positions();
     for (const auto& sim : m_lanes) {
         LaneFrame lane;
-        lane.integrator = QString::fromUtf8(sim->integrator().name().data(),
-                                            qsizetype(sim->integrator().name().size()));
+        lane.integrator = integratorName(*sim);
         const auto x = sim->positions();
         lane.positions.resize(std::size_t(x.size()));
         for (Eigen::Index k = 0; k < x.size(); ++k) lane.positions[std::size_t(k)] = float(x.data()[k]);

@@ -34,6 +34,8 @@ public:
 
     // Thread-safe: the newest frame and the rows recorded since the last take.
     FrameBatch takeBatch();
+    // Lane 0 as a scene file with its exact state. Worker thread only (between two steps).
+    SceneCapture captureScene() const;
 
     // Smallest simulated interval between two recorded time-series rows [s].
     static constexpr double kRowInterval = 1e-3;
@@ -41,6 +43,10 @@ public:
 public slots:
     // Builds the lanes. An impossible scene keeps the old one and reports sceneRejected.
     void setScene(const simcore::ParameterSet& params, const QStringList& integrators);
+    // Builds the lanes from a scene file and, if it holds one, gives every lane its saved state
+    // (time and step counter included), so the run resumes exactly. No start kick. A file that
+    // cannot be built keeps the old scene and reports sceneRejected.
+    void openScene(const simcore::SceneFile& file, const QStringList& integrators);
     // Changes lane 0's integrator in place (single mode: the run continues from here).
     void setIntegrator(const QString& name);
     void setParameter(const QString& key, double value);
@@ -73,6 +79,9 @@ signals:
 
 private:
     void tick();
+    // The lanes for params, one per integrator; empty (after sceneRejected) when impossible.
+    std::vector<std::unique_ptr<simcore::Simulation>> buildLanes(const simcore::ParameterSet& params,
+                                                                 const QStringList& integrators);
     bool stepAll();                       // one common DT for every lane; false: nothing ran
     void restartClock();
     void applyKick();

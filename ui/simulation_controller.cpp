@@ -7,6 +7,7 @@ namespace elui {
 SimulationController::SimulationController(QObject* parent) : QObject(parent) {
     qRegisterMetaType<elui::FramePtr>();
     qRegisterMetaType<simcore::ParameterSet>("simcore::ParameterSet");
+    qRegisterMetaType<simcore::SceneFile>("simcore::SceneFile");
     m_thread.setObjectName(QStringLiteral("simulation"));
     m_worker = new SimWorker;
     m_worker->moveToThread(&m_thread);
@@ -14,6 +15,7 @@ SimulationController::SimulationController(QObject* parent) : QObject(parent) {
 
     auto q = Qt::QueuedConnection;
     connect(this, &SimulationController::requestScene, m_worker, &SimWorker::setScene, q);
+    connect(this, &SimulationController::requestOpen, m_worker, &SimWorker::openScene, q);
     connect(this, &SimulationController::requestIntegrator, m_worker, &SimWorker::setIntegrator, q);
     connect(this, &SimulationController::requestParameter, m_worker, &SimWorker::setParameter, q);
     connect(this, &SimulationController::requestSpeed, m_worker, &SimWorker::setSpeed, q);
@@ -32,7 +34,7 @@ SimulationController::SimulationController(QObject* parent) : QObject(parent) {
     connect(m_worker, &SimWorker::frameReady, this, &SimulationController::takeFrame, q);
     connect(m_worker, &SimWorker::grabbed, this, &SimulationController::grabbed, q);
     connect(m_worker, &SimWorker::parameterRejected, this, &SimulationController::parameterRejected, q);
-    connect(m_worker, &SimWorker::sceneRejected, this, &SimulationController::sceneRejected, q);
+    connect(m_worker, &SimWorker::sceneRejected, this, &SimulationController::restoreScene, q);
     connect(m_worker, &SimWorker::runFailed, this, &SimulationController::runFailed, q);
     connect(m_worker, &SimWorker::reachedTime, this, &SimulationController::reachedTime, q);
     m_thread.start();
@@ -44,6 +46,16 @@ SimulationController::~SimulationController() {
     QMetaObject::invokeMethod(m_worker, &SimWorker::shutdown, Qt::BlockingQueuedConnection);
     m_thread.quit();
     m_thread.wait();
+}
+
+void SimulationController::restoreScene(const QString& message) {
+    // The worker kept the scene it had: so do we (what setScene/openScene assumed is undone).
+    if (m_latest) {
+        m_params = m_latest->parameters;
+        m_integrators.clear();
+        for (const LaneFrame& lane : m_latest->lanes) m_integrators << lane.integrator;
+    }
+    emit sceneRejected(message);
 }
 
 void SimulationController::takeFrame() {
@@ -80,6 +92,18 @@ void SimulationController::setScene(const simcore::ParameterSet& params, const Q
     emit requestScene(params, integrators);
 }
 void SimulationController::setScene(const simcore::ParameterSet& params) { setScene(params, m_integrators); }
+void SimulationController::openScene(const simcore::SceneFile& file, const QStringList& integrators) {
+    m_params = file.params;
+    m_integrators = integrators.isEmpty() ? QStringList{QString::fromStdString(file.integrator)} : integrators;
+    emit requestOpen(file, m_integrators);
+}
+SceneCapture SimulationController::captureScene() {
+    SceneCapture capture;
+    // Queued behind every command already sent, so the text includes their effect.
+    QMetaObject::invokeMethod(
+        m_worker, [&capture, this] { capture = m_worker->captureScene(); }, Qt::BlockingQueuedConnection);
+    return capture;
+}
 void SimulationController::setIntegrator(const QString& name) {
     if (!m_integrators.isEmpty()) m_integrators[0] = name;
     emit requestIntegrator(name);

@@ -37,6 +37,13 @@ public:
     // --- commands (all asynchronous) ---
     void setScene(const simcore::ParameterSet& params, const QStringList& integrators);
     void setScene(const simcore::ParameterSet& params);  // keeps the integrators
+    // A scene file (already read and validated): its scene, parameters and exact state, in one
+    // lane with the file's integrator, or side by side with the given integrators.
+    void openScene(const simcore::SceneFile& file, const QStringList& integrators = {});
+    // Lane 0 as a scene file with its exact state. Blocks until the worker has applied every
+    // command sent before and is between two steps (at most one tick, ~15 ms); the GUI never
+    // reads the simulation itself.
+    SceneCapture captureScene();
     void setIntegrator(const QString& name);             // lane 0 only, keeps the run
     void setParameter(const QString& key, double value);
     void setSpeed(Speed speed);
@@ -55,6 +62,7 @@ public:
 signals:
     // To the worker (queued).
     void requestScene(const simcore::ParameterSet& params, const QStringList& integrators);
+    void requestOpen(const simcore::SceneFile& file, const QStringList& integrators);
     void requestIntegrator(const QString& name);
     void requestParameter(const QString& key, double value);
     void requestSpeed(int speed);
@@ -83,6 +91,7 @@ signals:
 
 private:
     void takeFrame();
+    void restoreScene(const QString& message);
 
     QThread m_thread;
     SimWorker* m_worker = nullptr;

@@ -1,12 +1,13 @@
 // elastic-lab: the GUI.
 //
-//   elastic-lab [--scene S] [--set key=value]... [--integrator NAME] [--compare A,B,C]
+//   elastic-lab [--scene S|FILE.json] [--set key=value]... [--integrator NAME] [--compare A,B,C]
 //               [--preset ID] [--screenshot FILE --after SECONDS]
 //
 // --screenshot runs (as fast as possible) to the given simulated time, renders the main
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -14,10 +15,12 @@
 #include <QSurfaceFormat>
 #include <QTimer>
 
+#include "body.h"
 #include "export.h"
 #include "main_window.h"
 #include "parameter_dock.h"
 #include "presets.h"
+#include "scenefile.h"
 #include "scenes.h"
 #include "simulation_controller.h"
 #include "viewport.h"
@@ -49,7 +52,7 @@ int main(int argc, char** argv) {
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Elastic Lab: two-layer elastic bodies, for teaching."));
     parser.addHelpOption();
-    const QCommandLineOption sceneOpt(QStringLiteral("scene"), QStringLiteral("Scene: %1.").arg(elui::toQString(simcore::sceneNames())),
+    const QCommandLineOption sceneOpt(QStringLiteral("scene"), QStringLiteral("Scene: %1, or a scene file (.json).").arg(elui::toQString(simcore::sceneNames())),
                                       QStringLiteral("S"), QStringLiteral("ring2d"));
     const QCommandLineOption setOpt(QStringLiteral("set"), QStringLiteral("Set a parameter (repeatable)."),
                                     QStringLiteral("key=value"));
@@ -82,16 +85,32 @@ int main(int argc, char** argv) {
         preset = elui::findPreset(parser.value(presetOpt));
         if (!preset) return fail(QStringLiteral("unknown preset '%1'").arg(parser.value(presetOpt)));
     }
-    const simcore::SceneInfo* scene = simcore::findScene(parser.value(sceneOpt).toStdString());
+    // --scene takes a scene name or a scene file (.json), as the CLI does; --set, --integrator
+    // and --compare override what the file holds.
+    const QString sceneArg = parser.value(sceneOpt);
+    const simcore::SceneInfo* scene = simcore::findScene(sceneArg.toStdString());
+    std::optional<simcore::SceneFile> file;
+    if (!scene && sceneArg.endsWith(QLatin1String(".json"))) {
+        simcore::SceneFileResult read = simcore::readSceneFile(sceneArg.toStdString());
+        if (!read.file) return fail(QString::fromStdString(read.error));
+        file = std::move(read.file);
+        scene = &simcore::sceneInfo(file->params.kind());
+    }
     if (!scene)
-        return fail(QStringLiteral("unknown scene '%1'; allowed: %2")
-                        .arg(parser.value(sceneOpt), elui::toQString(simcore::sceneNames())));
-    simcore::ParameterSet params = preset && !parser.isSet(sceneOpt) ? preset->parameters()
-                                                                     : simcore::ParameterSet(scene->kind);
+        return fail(QStringLiteral("unknown scene '%1'; allowed: %2, or a scene file (.json)")
+                        .arg(sceneArg, elui::toQString(simcore::sceneNames())));
+    simcore::ParameterSet params = file                                 ? file->params
+                                   : preset && !parser.isSet(sceneOpt) ? preset->parameters()
+                                                                       : simcore::ParameterSet(scene->kind);
     for (const QString& assignment : parser.values(setOpt))
         if (auto error = params.assign(assignment.toStdString())) return fail(QString::fromStdString(*error));
+    if (auto error = simcore::validateShape(params)) return fail(QString::fromStdString(*error));
+    if (file && file->state && simcore::buildBody(params).topology.particleCount() != file->state->positions.cols())
+        return fail(QStringLiteral("--set changes the shape of the body in %1, so its saved state no longer fits")
+                        .arg(sceneArg));
     QStringList integrators{parser.value(integratorOpt)};
     if (preset && !parser.isSet(integratorOpt)) integrators = preset->integrators;
+    if (file && !parser.isSet(integratorOpt)) integrators = {QString::fromStdString(file->integrator)};
     if (parser.isSet(compareOpt)) integrators = parser.value(compareOpt).split(QLatin1Char(','), Qt::SkipEmptyParts);
     if (integrators.isEmpty() || integrators.size() > 3) return fail(QStringLiteral("give one to three integrators"));
     bool afterOk = false;
@@ -122,8 +141,15 @@ int main(int argc, char** argv) {
         window.setViewOptions(o);
     }
     elui::SimulationController* controller = window.controller();
-    if (preset) controller->setStartKick(preset->kickInner, preset->kickOuter);
-    window.startScene(params, integrators);
+    if (file) {
+        simcore::SceneFile changed = *file;
+        changed.params = params;
+        changed.integrator = integrators.front().toStdString();
+        window.openScene(changed, integrators, sceneArg, &*file);
+    } else {
+        if (preset) controller->setStartKick(preset->kickInner, preset->kickOuter);
+        window.startScene(params, integrators);
+    }
     window.show();
 
     if (parser.isSet(fpsOpt)) {

@@ -1,0 +1,617 @@
+// Scene files in the GUI and the failure paths of every GUI write (offscreen: the MainWindow
+// gets a placeholder instead of its GL views, everything else is the real thing).
+//
+//   - save -> open through the controller: identical state, bit-identical trajectory after;
+//   - bad files refused with the reader's message while the running scene goes on untouched;
+//   - Open shows the file's values in the docks, the title tracks the file and its changes;
+//   - scene save, CSV, plot and screenshot writes into a missing folder, onto a folder, onto
+//     an existing file when the disk fills up (RLIMIT_FSIZE: works as root, where permission
+//     bits do not) and into a full device node of our own (never /dev/full itself): an error
+//     naming the file, the old file byte-identical, no temporary file left;
+//   - the recent-files list: order, cap, persistence, a missing file dropped when chosen.
+#include <QComboBox>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <csignal>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
+#include "export.h"
+#include "main_window.h"
+#include "parameter_dock.h"
+#include "plot_dock.h"
+#include "presets.h"
+#include "recent_files.h"
+#include "run_dock.h"
+#include "scenefile.h"
+#include "scenes.h"
+#include "simulation_controller.h"
+
+using namespace elui;
+
+namespace {
+
+// Processes events until pred() holds (or the timeout passes).
+template <class Pred>
+bool waitUntil(Pred pred, int timeoutMs = 15000) {
+    QElapsedTimer t;
+    t.start();
+    while (t.elapsed() < timeoutMs) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        if (pred()) return true;
+        QThread::msleep(2);
+    }
+    return pred();
+}
+
+bool waitForFrame(const SimulationController& c, const std::function<bool(const Frame&)>& pred) {
+    return waitUntil([&] { return c.latest() && pred(*c.latest()); });
+}
+
+long stepOf(const SimulationController& c) { return c.latest()->lanes[0].diagnostics.step; }
+
+// Single steps through the controller (queued, applied between steps) until lane 0 has taken
+// `count` more.
+bool stepBy(SimulationController& c, int count) {
+    const long target = stepOf(c) + count;
+    for (int i = 0; i < count; ++i) c.step();
+    return waitForFrame(c, [target](const Frame& f) { return f.lanes[0].diagnostics.step == target; });
+}
+
+simcore::ParameterSet sceneParams(const QString& scene) {
+    simcore::ParameterSet p(simcore::findScene(scene.toStdString())->kind);
+    p.set("ks", 900.5);
+    p.set("perturb", 0.01);  // an asymmetric start: every particle moves differently
+    return p;
+}
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<unreadable>");
+}
+
+QString latestWarning(const QWidget& window) {
+    const auto boxes = window.findChildren<QMessageBox*>();
+    return boxes.isEmpty() ? QString() : boxes.back()->text();
+}
+
+// A good scene file text with one piece replaced.
+std::string edited(const std::string& text, const std::string& from, const std::string& to) {
+    std::string out = text;
+    const auto at = out.find(from);
+    if (at == std::string::npos) qFatal("fixture text not found: %s", from.c_str());
+    return out.replace(at, from.size(), to);
+}
+
+enum class Writer { Scene, Csv, PlotsPng, PlotsSvg, PlotsPdf, Screenshot };
+enum class Failure { MissingFolder, IsAFolder, DiskFullOverExisting, ReadOnlyFolderOverExisting, FullDevice };
+
+// Writes well over 1 KiB with the given writer; the error message or empty.
+QString writeWith(Writer writer, const QString& path) {
+    static const std::vector<simcore::Diagnostics> rows = [] {
+        simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Ring2d), "rk4");
+        std::vector<simcore::Diagnostics> out{sim.diagnostics()};
+        for (int i = 0; i < 200; ++i) {
+            sim.step();
+            out.push_back(sim.diagnostics());
+        }
+        return out;
+    }();
+    switch (writer) {
+        case Writer::Scene: {
+            simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Sphere3d), "rk4");
+            return writeFile(path, QByteArray::fromStdString(simcore::sceneFileText(sim, "sphere3d", true)));
+        }
+        case Writer::Csv: return writeCsv(path, simcore::SceneKind::Ring2d, rows);
+        case Writer::PlotsPng:
+        case Writer::PlotsSvg:
+        case Writer::PlotsPdf: {
+            PlotDock dock;
+            dock.setScene(simcore::SceneKind::Ring2d);
+            dock.appendRows(rows, 0, int(rows.size()));
+            dock.replotNow();
+            return writePlots(path, dock.plots(), dock.specs());
+        }
+        case Writer::Screenshot: {
+            QImage image(320, 240, QImage::Format_RGB32);
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) image.setPixel(x, y, qRgb(x * 7 % 256, y * 13 % 256, (x * y) % 256));
+            return writeImage(path, image);
+        }
+    }
+    return {};
+}
+
+QString suffixOf(Writer writer) {
+    switch (writer) {
+        case Writer::Scene: return QStringLiteral("json");
+        case Writer::Csv: return QStringLiteral("csv");
+        case Writer::PlotsPng: return QStringLiteral("png");
+        case Writer::PlotsSvg: return QStringLiteral("svg");
+        case Writer::PlotsPdf: return QStringLiteral("pdf");
+        case Writer::Screenshot: return QStringLiteral("png");
+    }
+    return {};
+}
+
+// Files may grow to `bytes` at most while it lives (root included); SIGXFSZ ignored so that
+// a write beyond fails with EFBIG instead of killing the test.
+class FileSizeLimit {
+public:
+    explicit FileSizeLimit(rlim_t bytes) {
+        getrlimit(RLIMIT_FSIZE, &m_old);
+        m_oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+        rlimit limit = m_old;
+        limit.rlim_cur = bytes;
+        m_ok = setrlimit(RLIMIT_FSIZE, &limit) == 0;
+    }
+    ~FileSizeLimit() {
+        setrlimit(RLIMIT_FSIZE, &m_old);
+        std::signal(SIGXFSZ, m_oldHandler);
+    }
+    bool ok() const { return m_ok; }
+
+private:
+    rlimit m_old{};
+    void (*m_oldHandler)(int) = nullptr;
+    bool m_ok = false;
+};
+
+}  // namespace
+
+Q_DECLARE_METATYPE(Writer)
+Q_DECLARE_METATYPE(Failure)
+
+class TestGuiFiles : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        // Nothing here may touch the user's settings.
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("ElasticLabTest"));
+    }
+
+    // --- save -> open through the controller ---
+
+    void saveOpenResumesBitIdentically_data() {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("integrator");
+        QTest::newRow("ring2d rk4") << "ring2d" << "rk4";
+        QTest::newRow("sphere3d rk4") << "sphere3d" << "rk4";
+        QTest::newRow("sphere3d verlet") << "sphere3d" << "verlet";
+        QTest::newRow("spring1d euler") << "spring1d" << "euler";
+    }
+    void saveOpenResumesBitIdentically() {
+        QFETCH(QString, scene);
+        QFETCH(QString, integrator);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("experiment.json");
+
+        // A paused experiment 40 steps in, saved through the worker and a real file.
+        SimulationController original;
+        original.setScene(sceneParams(scene), {integrator});
+        QVERIFY(waitForFrame(original, [](const Frame& f) { return f.scene != nullptr; }));
+        QVERIFY(stepBy(original, 40));
+        const SceneCapture saved = original.captureScene();
+        QCOMPARE(saved.lanes, 1);
+        QCOMPARE(saved.integrator, integrator);
+        QCOMPARE(writeFile(path, QByteArray::fromStdString(saved.text)), QString());
+        QCOMPARE(readAll(path), QByteArray::fromStdString(saved.text));
+
+        // Reopened in another controller: the same state, step and time.
+        const simcore::SceneFileResult read = simcore::readSceneFile(path.toStdString());
+        QVERIFY2(read.file, read.error.c_str());
+        QVERIFY(read.file->state);
+        QCOMPARE(read.file->state->step, 40L);
+        SimulationController resumed;
+        resumed.openScene(*read.file);
+        QVERIFY(waitForFrame(resumed, [](const Frame& f) { return f.scene && f.lanes[0].diagnostics.step == 40; }));
+        QVERIFY(!resumed.latest()->running);
+        QCOMPARE(resumed.integrators(), QStringList{integrator});
+        QCOMPARE(resumed.latest()->lanes[0].diagnostics.time, original.latest()->lanes[0].diagnostics.time);
+        QCOMPARE(resumed.latest()->lanes[0].positions, original.latest()->lanes[0].positions);
+        QCOMPARE(resumed.captureScene().text, saved.text);  // every double, in shortest round-trip form
+        // History starts at the saved time.
+        QCOMPARE(resumed.history().size(), std::size_t(1));
+        QCOMPARE(resumed.history().front().step, 40L);
+
+        // 60 more steps in both: bit-identical positions and velocities.
+        QVERIFY(stepBy(original, 60));
+        QVERIFY(stepBy(resumed, 60));
+        const SceneCapture a = original.captureScene(), b = resumed.captureScene();
+        QVERIFY(a.text.find("\"step\": 100") != std::string::npos);
+        QVERIFY(a.text == b.text);
+        QCOMPARE(resumed.latest()->lanes[0].positions, original.latest()->lanes[0].positions);
+
+        // Reset goes back to t = 0 of the file's parameters.
+        resumed.reset();
+        QVERIFY(waitForFrame(resumed, [](const Frame& f) { return f.lanes[0].diagnostics.step == 0; }));
+        QCOMPARE(resumed.latest()->lanes[0].diagnostics.time, 0.0);
+    }
+
+    void captureWhileRunningIsBetweenSteps() {
+        SimulationController c;
+        c.setScene(sceneParams("ring2d"), {"rk4"});
+        c.run();
+        QVERIFY(waitForFrame(c, [](const Frame& f) { return f.running && f.lanes[0].diagnostics.time > 0.05; }));
+        for (int i = 0; i < 5; ++i) {
+            const SceneCapture capture = c.captureScene();
+            const simcore::SceneFileResult read = simcore::parseSceneFile(capture.text);
+            QVERIFY2(read.file, read.error.c_str());
+            // A step boundary: the time is exactly the step count times the fixed DT.
+            const auto& s = *read.file->state;
+            QCOMPARE(s.time, capture.time);
+            QVERIFY(s.step > 0);
+            QVERIFY(std::abs(s.time - double(s.step) * 0.003) < 1e-9);
+            QTest::qWait(30);
+        }
+        QVERIFY(c.running());  // the run went on
+    }
+
+    void sideBySideOpensWithTheStateInEveryLane() {
+        simcore::Simulation sim(sceneParams("ring2d"), "rk4");
+        QVERIFY(sim.advanceTo(0.3));
+        const simcore::SceneFileResult read = simcore::parseSceneFile(simcore::sceneFileText(sim, "ring2d", true));
+        QVERIFY(read.file);
+        SimulationController c;
+        c.openScene(*read.file, {"rk4", "verlet"});
+        QVERIFY(waitForFrame(c, [](const Frame& f) { return f.lanes.size() == 2; }));
+        QCOMPARE(c.latest()->lanes[1].positions, c.latest()->lanes[0].positions);
+        QCOMPARE(c.latest()->lanes[1].diagnostics.time, sim.time());
+        // Saving side by side stores lane 0.
+        const SceneCapture capture = c.captureScene();
+        QCOMPARE(capture.lanes, 2);
+        QCOMPARE(capture.integrator, QString("rk4"));
+    }
+
+    void unbuildableFileKeepsTheRunningScene() {
+        // A state that does not fit the body (the reader checks this too; here the worker's own
+        // check is exercised): refused, the old scene goes on, the controller's view restored.
+        SimulationController c;
+        QSignalSpy rejected(&c, &SimulationController::sceneRejected);
+        c.setScene(sceneParams("ring2d"), {"midpoint"});
+        c.run();
+        QVERIFY(waitForFrame(c, [](const Frame& f) { return f.running && f.lanes[0].diagnostics.time > 0.05; }));
+        const auto scene = c.latest()->scene;
+        simcore::SceneFile file;
+        file.sceneName = "sphere3d";
+        file.params = simcore::ParameterSet(simcore::SceneKind::Sphere3d);
+        file.state = simcore::SceneFile::State{};
+        file.state->positions = Eigen::Matrix3Xd::Zero(3, 5);
+        file.state->velocities = Eigen::Matrix3Xd::Zero(3, 5);
+        c.openScene(file);
+        QVERIFY(rejected.wait(5000));
+        QVERIFY(rejected.front().front().toString().contains("state"));
+        const double t = c.latest()->lanes[0].diagnostics.time;
+        QVERIFY(waitForFrame(c, [t](const Frame& f) { return f.lanes[0].diagnostics.time > t + 0.05; }));
+        QCOMPARE(c.latest()->scene, scene);
+        QCOMPARE(c.sceneKind(), simcore::SceneKind::Ring2d);
+        QCOMPARE(c.integrators(), QStringList{"midpoint"});
+    }
+
+    // --- Open in the window ---
+
+    void badFilesAreRefusedAndTheSceneRunsOn_data() {
+        QTest::addColumn<QString>("from");
+        QTest::addColumn<QString>("to");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("syntax error") << "\"kd\": 15," << "\"kd\": 15,," << "line 8";
+        QTest::newRow("unknown key") << "\"ks\":" << "\"kss\":" << "kss";
+        QTest::newRow("out of range") << "\"restitution\": 0.5" << "\"restitution\": 2" << "restitution";
+        QTest::newRow("newer version") << "\"version\": 1" << "\"version\": 7" << "newer";
+        QTest::newRow("wrong state size") << "\"positions\": [[" << "\"positions\": [[0, 0, 0], [" << "positions";
+        QTest::newRow("missing file") << "" << "" << "no such file";
+        QTest::newRow("a folder") << "" << "" << "not a regular file";
+    }
+    void badFilesAreRefusedAndTheSceneRunsOn() {
+        QFETCH(QString, from);
+        QFETCH(QString, to);
+        QFETCH(QString, mentions);
+        QTemporaryDir dir;
+        QString path = dir.filePath("bad.json");
+        if (QTest::currentDataTag() == QLatin1String("missing file")) {
+            path = dir.filePath("missing.json");
+        } else if (QTest::currentDataTag() == QLatin1String("a folder")) {
+            QVERIFY(QDir(dir.path()).mkdir("folder.json"));
+            path = dir.filePath("folder.json");
+        } else {
+            simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Ring2d), "rk4");
+            const std::string text = edited(simcore::sceneFileText(sim, "ring2d", true), from.toStdString(), to.toStdString());
+            QCOMPARE(writeFile(path, QByteArray::fromStdString(text)), QString());
+        }
+
+        MainWindow window(false);
+        SimulationController* c = window.controller();
+        simcore::ParameterSet params = sceneParams("sphere3d");
+        window.startScene(params, {"verlet"});
+        c->run();
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.running && f.lanes[0].diagnostics.time > 0.03; }));
+        const auto scene = c->latest()->scene;
+
+        const QString error = window.openSceneFile(path);
+        QVERIFY2(error.contains(mentions), qPrintable(error));
+        QVERIFY(error.contains(path));
+        QCOMPARE(latestWarning(window), error);
+        QVERIFY(window.statusBar()->currentMessage().contains(mentions));
+
+        // The running scene is untouched and keeps running.
+        const double t = c->latest()->lanes[0].diagnostics.time;
+        QVERIFY(waitForFrame(*c, [t](const Frame& f) { return f.lanes[0].diagnostics.time > t + 0.03; }));
+        QVERIFY(c->latest()->running);
+        QCOMPARE(c->latest()->scene, scene);
+        QCOMPARE(c->latest()->parameters, params);
+        QCOMPARE(c->latest()->lanes[0].integrator, QString("verlet"));
+        QCOMPARE(window.currentFile(), QString());
+        QVERIFY(window.recentFiles().paths().isEmpty());
+    }
+
+    void openShowsTheFileInTheDocksAndTitle() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("squashed.json");
+        simcore::ParameterSet p(simcore::SceneKind::Sphere3d);
+        p.set("ks", 950);
+        p.set("dt", 0.002);
+        simcore::Simulation sim(p, "verlet");
+        QVERIFY(sim.advanceTo(0.25));
+        QCOMPARE(writeFile(path, QByteArray::fromStdString(simcore::sceneFileText(sim, "sphere3d", true))), QString());
+
+        MainWindow window(false);
+        SimulationController* c = window.controller();
+        window.startScene(simcore::ParameterSet(simcore::SceneKind::Ring2d), {"rk4"});
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.scene != nullptr; }));
+        QCOMPARE(window.openSceneFile(path), QString());
+        QVERIFY(waitUntil([&] { return window.currentFile() == path; }));
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.scene->kind == simcore::SceneKind::Sphere3d; }));
+        QCoreApplication::processEvents();
+
+        // The docks show the file's values; the run waits at the saved time.
+        QCOMPARE(window.parameterDock()->form()->field("ks")->text(), QString("950"));
+        QCOMPARE(window.parameterDock()->form()->field("dt")->text(), QString("0.002"));
+        QCOMPARE(window.runDock()->integratorCombo()->currentText(), QString("verlet"));
+        QCOMPARE(c->latest()->lanes[0].diagnostics.time, sim.time());
+        QVERIFY(!c->latest()->running);
+        QVERIFY(window.windowTitle().startsWith("squashed.json[*]"));
+        QVERIFY(!window.isWindowModified());
+        QCOMPARE(window.recentFiles().paths(), QStringList{path});
+
+        // Running alone does not modify; a parameter or integrator change does.
+        c->run();
+        QVERIFY(waitForFrame(*c, [&](const Frame& f) { return f.lanes[0].diagnostics.time > sim.time() + 0.02; }));
+        QVERIFY(!window.isWindowModified());
+        c->setParameter("ks", 1000);
+        QVERIFY(waitUntil([&] { return window.isWindowModified(); }));
+        c->setParameter("ks", 950);
+        QVERIFY(waitUntil([&] { return !window.isWindowModified(); }));
+        c->setIntegrator("rk4");
+        QVERIFY(waitUntil([&] { return window.isWindowModified(); }));
+
+        // Save as: the new file is current, unmodified, first in the recent list.
+        const QString copy = dir.filePath("copy.json");
+        QCOMPARE(window.saveSceneFile(copy), QString());
+        QVERIFY(!window.isWindowModified());
+        QVERIFY(window.windowTitle().startsWith("copy.json[*]"));
+        QCOMPARE(window.recentFiles().paths(), (QStringList{copy, path}));
+        const simcore::SceneFileResult reread = simcore::readSceneFile(copy.toStdString());
+        QVERIFY2(reread.file, reread.error.c_str());
+        QCOMPARE(reread.file->integrator, std::string("rk4"));
+        QVERIFY(reread.file->state->time > sim.time());
+
+        // A preset is a new experiment: no current file.
+        window.applyPreset(*findPreset("ring2d"));
+        QCOMPARE(window.currentFile(), QString());
+        QVERIFY(waitUntil([&] { return window.windowTitle().startsWith("Elastic Lab"); }));
+    }
+
+    void sideBySideSavesTheFirstView() {
+        QTemporaryDir dir;
+        MainWindow window(false);
+        SimulationController* c = window.controller();
+        window.startScene(sceneParams("ring2d"), {"euler", "midpoint", "rk4"});
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.lanes.size() == 3; }));
+        QVERIFY(stepBy(*c, 10));
+        const QString path = dir.filePath("compare.json");
+        QCOMPARE(window.saveSceneFile(path), QString());
+        QVERIFY2(window.statusBar()->currentMessage().contains("first view (euler)"),
+                 qPrintable(window.statusBar()->currentMessage()));
+        const simcore::SceneFileResult read = simcore::readSceneFile(path.toStdString());
+        QVERIFY(read.file);
+        QCOMPARE(read.file->integrator, std::string("euler"));
+        QCOMPARE(read.file->state->step, 10L);
+    }
+
+    void saveFailureIsReportedInTheWindow() {
+        QTemporaryDir dir;
+        MainWindow window(false);
+        window.startScene(sceneParams("ring2d"), {"rk4"});
+        QVERIFY(waitForFrame(*window.controller(), [](const Frame& f) { return f.scene != nullptr; }));
+        const QString path = dir.filePath("no/such/folder/x.json");
+        const QString error = window.saveSceneFile(path);
+        QVERIFY(error.contains(path));
+        QCOMPARE(latestWarning(window), error);
+        QCOMPARE(window.currentFile(), QString());
+        QVERIFY(window.recentFiles().paths().isEmpty());
+    }
+
+    // --- every GUI write, failing ---
+
+    void failedWritesLeaveNoTrace_data() {
+        QTest::addColumn<Writer>("writer");
+        QTest::addColumn<Failure>("failure");
+        const QList<QPair<const char*, Writer>> writers = {
+            {"scene", Writer::Scene},         {"csv", Writer::Csv},           {"plots png", Writer::PlotsPng},
+            {"plots svg", Writer::PlotsSvg}, {"plots pdf", Writer::PlotsPdf}, {"screenshot", Writer::Screenshot}};
+        const QList<QPair<const char*, Failure>> failures = {{"missing folder", Failure::MissingFolder},
+                                                             {"onto a folder", Failure::IsAFolder},
+                                                             {"disk full over a file", Failure::DiskFullOverExisting},
+                                                             {"read-only folder over a file", Failure::ReadOnlyFolderOverExisting},
+                                                             {"full device", Failure::FullDevice}};
+        for (const auto& [wname, w] : writers)
+            for (const auto& [fname, f] : failures)
+                QTest::newRow(qPrintable(QStringLiteral("%1, %2").arg(wname, fname))) << w << f;
+    }
+    void failedWritesLeaveNoTrace() {
+        QFETCH(Writer, writer);
+        QFETCH(Failure, failure);
+        QTemporaryDir dir;
+        const QString name = QStringLiteral("out.") + suffixOf(writer);
+        const QByteArray old = "the previous file, which must survive\n";
+        QString path;
+        QString error;
+        switch (failure) {
+            case Failure::MissingFolder:
+                path = dir.filePath("missing/" + name);
+                error = writeWith(writer, path);
+                QVERIFY2(error.contains("No such file or directory"), qPrintable(error));
+                break;
+            case Failure::IsAFolder:
+                QVERIFY(QDir(dir.path()).mkdir(name));
+                path = dir.filePath(name);
+                error = writeWith(writer, path);
+                QVERIFY2(error.contains("directory"), qPrintable(error));
+                QVERIFY(QFileInfo(path).isDir());
+                QVERIFY(QDir(path).isEmpty());
+                break;
+            case Failure::DiskFullOverExisting: {
+                path = dir.filePath(name);
+                QCOMPARE(writeFile(path, old), QString());
+                {
+                    FileSizeLimit limit(1024);
+                    QVERIFY(limit.ok());
+                    error = writeWith(writer, path);
+                }
+                QVERIFY2(error.contains("too large"), qPrintable(error));  // EFBIG's text
+                QCOMPARE(readAll(path), old);
+                break;
+            }
+            case Failure::ReadOnlyFolderOverExisting: {
+                // Permission bits do not stop root (the usual test user here): then skipped,
+                // the disk-full row covers a failure over an existing file.
+                if (::geteuid() == 0) QSKIP("running as root: a read-only folder does not stop writes");
+                path = dir.filePath(name);
+                QCOMPARE(writeFile(path, old), QString());
+                QVERIFY(QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::ExeOwner));
+                error = writeWith(writer, path);
+                QFile::setPermissions(dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+                QVERIFY2(error.contains("Permission denied"), qPrintable(error));
+                QCOMPARE(readAll(path), old);
+                break;
+            }
+            case Failure::FullDevice: {
+                // Our own node of /dev/full's kind (char 1,7) in the temporary folder: a device
+                // is written in place, and it must still be that device afterwards.
+                path = dir.filePath(name);
+                if (::mknod(QFile::encodeName(path).constData(), S_IFCHR | 0666, makedev(1, 7)) != 0)
+                    QSKIP("cannot create a device node here (needs CAP_MKNOD)");
+                error = writeWith(writer, path);
+                QVERIFY2(error.contains("No space left on device"), qPrintable(error));
+                struct stat st {};
+                QCOMPARE(::stat(QFile::encodeName(path).constData(), &st), 0);
+                QVERIFY(S_ISCHR(st.st_mode));
+                QCOMPARE(major(st.st_rdev), 1u);
+                QCOMPARE(minor(st.st_rdev), 7u);
+                break;
+            }
+        }
+        QVERIFY2(error.contains(path), qPrintable(error));
+        // Nothing else in the folder: no temporary file, no half file (System: device nodes too).
+        const QStringList entries =
+            QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden | QDir::System);
+        const QStringList expected = failure == Failure::MissingFolder ? QStringList{} : QStringList{name};
+        QCOMPARE(entries, expected);
+    }
+
+    void writesSucceedOverAnExistingFile() {
+        // The same writers replace an existing file completely when nothing fails.
+        QTemporaryDir dir;
+        for (Writer w : {Writer::Scene, Writer::Csv, Writer::PlotsPng, Writer::PlotsSvg, Writer::PlotsPdf,
+                         Writer::Screenshot}) {
+            const QString path = dir.filePath("out." + suffixOf(w));
+            QCOMPARE(writeFile(path, "old"), QString());
+            QCOMPARE(writeWith(w, path), QString());
+            QVERIFY(readAll(path).size() > 1024);
+        }
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 5);  // two .png share a name
+    }
+
+    // --- recent files ---
+
+    void recentFilesKeepOrderAndCap() {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath("settings.ini"), QSettings::IniFormat);
+        RecentFiles recent(&settings);
+        QVERIFY(recent.paths().isEmpty());
+        auto file = [&](int i) { return dir.filePath(QStringLiteral("s%1.json").arg(i)); };
+        recent.add(file(1));
+        recent.add(file(2));
+        recent.add(file(3));
+        QCOMPARE(recent.paths(), (QStringList{file(3), file(2), file(1)}));
+        recent.add(file(1));  // reopened: to the front, once
+        QCOMPARE(recent.paths(), (QStringList{file(1), file(3), file(2)}));
+        for (int i = 4; i <= 12; ++i) recent.add(file(i));
+        QCOMPARE(recent.paths().size(), RecentFiles::kMax);
+        QCOMPARE(recent.paths().front(), file(12));
+        QCOMPARE(recent.paths().back(), file(5));
+        // Relative paths are stored absolute.
+        const QString cwd = QDir::currentPath();
+        QDir::setCurrent(dir.path());
+        recent.add(QStringLiteral("s7.json"));
+        QDir::setCurrent(cwd);
+        QCOMPARE(recent.paths().front(), file(7));
+        QCOMPARE(recent.paths().count(file(7)), 1);
+        // Kept across instances (a restart).
+        settings.sync();
+        QSettings again(dir.filePath("settings.ini"), QSettings::IniFormat);
+        QCOMPARE(RecentFiles(&again).paths(), recent.paths());
+        recent.remove(file(12));
+        QVERIFY(!recent.paths().contains(file(12)));
+        recent.clear();
+        QVERIFY(recent.paths().isEmpty());
+        QCOMPARE(settings.value("recentScenes").toStringList(), QStringList{});
+    }
+
+    void recentMenuOpensAndDropsMissingFiles() {
+        QTemporaryDir dir;
+        MainWindow window(false);
+        SimulationController* c = window.controller();
+        window.startScene(sceneParams("ring2d"), {"rk4"});
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.scene != nullptr; }));
+        const QString a = dir.filePath("a.json"), b = dir.filePath("b.json");
+        QCOMPARE(window.saveSceneFile(a), QString());
+        QCOMPARE(window.saveSceneFile(b), QString());
+        QStringList texts;
+        for (QAction* action : window.recentMenu()->actions())
+            if (!action->isSeparator()) texts << action->text();
+        QCOMPARE(texts, (QStringList{"&1 b.json", "&2 a.json", "&Clear"}));
+
+        // Chosen after it was deleted: a message, and it leaves the list; the scene runs on.
+        QVERIFY(QFile::remove(a));
+        const auto scene = c->latest()->scene;
+        const QString error = window.openRecent(a);
+        QVERIFY2(error.contains(a) && error.contains("no longer exists"), qPrintable(error));
+        QCOMPARE(latestWarning(window), error);
+        QCOMPARE(window.recentFiles().paths(), QStringList{b});
+        QCOMPARE(c->latest()->scene, scene);
+
+        // An existing one opens and moves to the front.
+        QCOMPARE(window.openRecent(b), QString());
+        QVERIFY(waitUntil([&] { return c->latest()->scene != scene; }));
+        QCOMPARE(window.currentFile(), b);
+        window.recentMenu()->actions().back()->trigger();  // Clear
+        QVERIFY(window.recentFiles().paths().isEmpty());
+    }
+};
+
+QTEST_MAIN(TestGuiFiles)
+#include "test_gui_files.moc"
