@@ -11,8 +11,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "export.h"
 #include "main_window.h"
 #include "presets.h"
+#include "scenefile.h"
 #include "scenes.h"
 #include "simulation_controller.h"
 #include "viewport.h"
@@ -250,6 +252,42 @@ private slots:
         QVERIFY(bad.waitForFinished(20000));
         QCOMPARE(bad.exitCode(), 2);
         QVERIFY(bad.readAllStandardError().contains("ks"));
+    }
+
+    void sceneFileOnTheCommandLine() {
+        // --scene takes a scene file too: a ring saved at t = 0.3 s resumes and runs to 0.5 s.
+        QTemporaryDir dir;
+        const QString scene = dir.filePath("ring.json"), shot = dir.filePath("shot.png");
+        simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Ring2d), "midpoint");
+        QVERIFY(sim.advanceTo(0.3));
+        QCOMPARE(elui::writeFile(scene, QByteArray::fromStdString(simcore::sceneFileText(sim, "ring2d", true))),
+                 QString());
+        QProcess p;
+        p.start(ELASTIC_LAB_GUI, {"--scene", scene, "--set", "kd=20", "--screenshot", shot, "--after", "0.5"});
+        QVERIFY(p.waitForFinished(60000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        QVERIFY(census(QImage(shot)).colours > 20);
+        // Refused before any window: a bad file (naming the key), a missing one, and a --set
+        // that changes the body's shape under a saved state.
+        QFile file(scene);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray broken = file.readAll().replace("\"kd\"", "\"kdd\"");
+        file.close();
+        const QString bad = dir.filePath("bad.json");
+        QCOMPARE(elui::writeFile(bad, broken), QString());
+        const QList<QPair<QStringList, QString>> refusals = {
+            {{"--scene", bad}, "kdd"},
+            {{"--scene", dir.filePath("missing.json")}, "missing.json"},
+            {{"--scene", scene, "--set", "particles=20"}, "no longer fits"},
+        };
+        for (const auto& [args, mentions] : refusals) {
+            QProcess refused;
+            refused.start(ELASTIC_LAB_GUI, args + QStringList{"--screenshot", shot});
+            QVERIFY(refused.waitForFinished(20000));
+            QCOMPARE(refused.exitCode(), 2);
+            const QByteArray err = refused.readAllStandardError();
+            QVERIFY2(err.contains(mentions.toUtf8()), err.constData());
+        }
     }
 };
 
