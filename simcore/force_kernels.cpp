@@ -119,6 +119,16 @@ double triangleBlockPortable(const Surface& surface, std::size_t begin, std::siz
     return sumLanes(scratch.power, count);
 }
 
+void unpadPortable(const double* f4, const double* g4, double p, const double* invMass3, int begin,
+                   int end, double* out) {
+    for (int i = begin; i < end; ++i)
+        for (int axis = 0; axis < 3; ++axis) {
+            const int k = 3 * i + axis;
+            const double f = g4 ? f4[4 * i + axis] + p * g4[4 * i + axis] : f4[4 * i + axis];
+            out[k] = invMass3 ? f * invMass3[k] : f;
+        }
+}
+
 // ---------------------------------------------------------------------------------------------
 // AVX2 kernels
 
@@ -272,6 +282,23 @@ double triangleBlockAvx2(const Surface& surface, std::size_t begin, std::size_t 
     return (lane[0] + lane[1]) + (lane[2] + lane[3]);
 }
 
+SIMCORE_AVX2
+void unpadAvx2(const double* f4, const double* g4, double p, const double* invMass3, int begin,
+               int end, double* out) {
+    // Four doubles are stored per particle; the fourth lands on the next particle's x, which
+    // is written right after. The last particle of the range is left to the portable loop
+    // (its fourth double belongs to another range, or lies beyond the array).
+    const __m256d vp = _mm256_set1_pd(p);
+    int i = begin;
+    for (; i + 1 < end; ++i) {
+        __m256d f = _mm256_load_pd(f4 + 4 * i);
+        if (g4) f = _mm256_add_pd(f, _mm256_mul_pd(vp, _mm256_load_pd(g4 + 4 * i)));
+        if (invMass3) f = _mm256_mul_pd(f, loadRow(invMass3, i));
+        _mm256_storeu_pd(out + 3 * i, f);
+    }
+    unpadPortable(f4, g4, p, invMass3, i, end, out);
+}
+
 #endif  // SIMCORE_AVX2_KERNELS
 
 bool detectAvx2() {
@@ -331,6 +358,14 @@ double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end,
     if (usingAvx2()) return triangleBlockAvx2(surface, begin, end, x, g4, scratch);
 #endif
     return triangleBlockPortable(surface, begin, end, x, g4, scratch);
+}
+
+void unpad(const double* f4, const double* g4, double p, const double* invMass3, int begin, int end,
+           double* out) {
+#if SIMCORE_AVX2_KERNELS
+    if (usingAvx2()) return unpadAvx2(f4, g4, p, invMass3, begin, end, out);
+#endif
+    unpadPortable(f4, g4, p, invMass3, begin, end, out);
 }
 
 AlignedBuffer::AlignedBuffer(std::size_t count) : m_size(count) {

@@ -63,6 +63,11 @@ SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t 
 double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end, const double* x,
                      double* g4, Scratch& scratch);
 
+// Particles [begin, end) from the padded buffers to the 3-per-particle layout:
+// out = f4 + p g4 (without g4 when it is nullptr), times invMass3 when that is given.
+void unpad(const double* f4, const double* g4, double p, const double* invMass3, int begin, int end,
+           double* out);
+
 // A buffer of doubles aligned to 64 bytes (a cache line), zero-filled.
 class AlignedBuffer {
 public:

@@ -411,12 +411,8 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
     runChunks([&](int c) {
         for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(c)]) {
             const double p = layerPressure(begin);  // each owned range lies in one layer (see partition())
-            for (int i = begin; i < end; ++i)
-                for (int axis = 0; axis < 3; ++axis) {
-                    const int k = 3 * i + axis;
-                    out[k] = invMass3 ? force(i, axis, p) * invMass3[k] : force(i, axis, p);
-                    if (xdot) xdot[k] = v[k];
-                }
+            kernels::unpad(f4, gas ? g4 : nullptr, p, invMass3, begin, end, out);
+            if (xdot) std::copy(v + 3 * begin, v + 3 * end, xdot + 3 * begin);
         }
     });
     // The mouse spring acts on one particle: its total is redone with the pointer's force
