@@ -2,6 +2,7 @@
 
 #include "jacobians.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -310,15 +311,27 @@ void Simulation::fillDiagnostics(Diagnostics& d, const std::array<double, kSprin
     const double* x = m_y.data();
     const double* v = m_y.data() + m_n;
     const Topology& topo = m_body.topology;
-    const int count = topo.particleCount();
+    // Per piece, then summed in piece order (a fixed number of pieces: the same sums for any
+    // number of threads).
+    std::array<double, kPiecesMax> kinetic{}, gravity{};
+    const bool weighs = m_forces.terms().has(Term::Gravity);
+    inPieces([&](int piece, int begin, int end) {
+        double k = 0.0, g = 0.0;
+        for (int i = begin; i < end; ++i) {
+            if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+            const double m = m_body.mass[i];
+            Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
+            k += 0.5 * m * vi.squaredNorm();
+            if (weighs) g += m * m_forces.params.gravity * x[3 * i + 1];
+        }
+        kinetic[static_cast<std::size_t>(piece)] = k;
+        gravity[static_cast<std::size_t>(piece)] = g;
+    });
     d.kinetic = 0.0;
     d.gravity = 0.0;
-    for (int i = 0; i < count; ++i) {
-        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
-        const double m = m_body.mass[i];
-        Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
-        d.kinetic += 0.5 * m * vi.squaredNorm();
-        if (m_forces.terms().has(Term::Gravity)) d.gravity += m * m_forces.params.gravity * x[3 * i + 1];
+    for (std::size_t piece = 0; piece < kPiecesMax; ++piece) {
+        d.kinetic += kinetic[piece];
+        d.gravity += gravity[piece];
     }
     d.spring = spring;
     d.hasGas = m_forces.terms().has(Term::Gas);
@@ -351,7 +364,13 @@ double Simulation::totalEnergyNow() const {
 
 bool Simulation::step(double until) {
     if (m_failure) return false;
-    m_lastGood = m_y;
+    inPieces([&](int, int begin, int end) {
+        // x and v of the piece's particles; the last piece also takes the damping account.
+        const Eigen::Index b = 3 * begin, l = 3 * (end - begin);
+        m_lastGood.segment(b, l) = m_y.segment(b, l);
+        m_lastGood.segment(m_n + b, l) = m_y.segment(m_n + b, l);
+        if (end == particleCount()) m_lastGood[2 * m_n] = m_y[2 * m_n];
+    });
     const double t0 = m_diag.time;
     // Adaptive methods take the step they proposed, shortened to land on `until`.
     double h = m_dt;
@@ -379,7 +398,7 @@ bool Simulation::step(double until) {
     if (m_integrator->adaptive())
         m_hNext = clamped && report.rejected == 0 ? std::max(m_hNext, report.hNext) : report.hNext;
     m_hTaken = report.h;
-    if (m_integratorOptions.stepDoubling && !m_integrator->adaptive() && m_y.allFinite()) {
+    if (m_integratorOptions.stepDoubling && !m_integrator->adaptive() && stateIsFinite()) {
         // Step doubling (Richardson): y_h from one step, y_h/2 from two half steps from the
         // same start; the local error of y_h is about |y_h/2 - y_h| / (1 - 2^-p) and that of
         // y_h/2 is 2^-p of it. The run keeps y_h, so switching the estimate on changes
@@ -401,7 +420,8 @@ bool Simulation::step(double until) {
     // energy they change is measured across them and booked as removed by collisions (in the
     // new diagnostics only: a step that then fails leaves the books as they were).
     std::optional<double> beforeContacts;
-    if (m_y.allFinite()) {
+    const bool finite = stateIsFinite();
+    if (finite) {
         const bool walls = m_forces.terms().has(Term::Collisions);
         const bool layers = m_forces.terms().has(Term::LayerConstraint);
         if (walls) m_forces.countPostStep(Term::Collisions);
@@ -420,7 +440,7 @@ bool Simulation::step(double until) {
     else
         measure(next);
     if (beforeContacts) next.removedCollisions += *beforeContacts - next.total();
-    if (const auto problem = checkState(next)) {
+    if (const auto problem = checkState(next, finite)) {
         m_failure = Failure{*problem, m_diag.step + 1, t0};
         m_y = m_lastGood;  // keep the last good state: nothing non-finite leaves
         return false;
@@ -454,12 +474,20 @@ void Simulation::setIntegratorOptions(const IntegratorOptions& options) {
 bool Simulation::collide(bool apply) {
     // Axis-aligned box planes (thesis 4.6; MODEL.md): a particle outside is projected back
     // and its normal velocity becomes -e v_n; friction scales the tangential velocity by
-    // (1 - mu). Only the axes the body moves in are bounded.
-    const int count = particleCount();
+    // (1 - mu). Only the axes the body moves in are bounded. Particles are independent: the
+    // pieces run in parallel.
+    std::array<bool, kPiecesMax> pieceAny{};
+    inPieces([&](int piece, int begin, int end) {
+        pieceAny[static_cast<std::size_t>(piece)] = collideRange(apply, begin, end);
+    });
+    return std::find(pieceAny.begin(), pieceAny.end(), true) != pieceAny.end();
+}
+
+bool Simulation::collideRange(bool apply, int begin, int end) {
     const int dims = m_body.topology.dimension;
     const double restingSpeed = 2.0 * m_forces.params.gravity * m_hTaken;
     bool any = false;
-    for (int i = 0; i < count; ++i) {
+    for (int i = begin; i < end; ++i) {
         for (int axis = 0; axis < 3; ++axis) {
             const Eigen::Index k = 3 * i + axis;
             if (m_invMass3[k] == 0.0) continue;
@@ -488,6 +516,17 @@ bool Simulation::collide(bool apply) {
         }
     }
     return any;
+}
+
+bool Simulation::stateIsFinite() const {
+    std::array<bool, kPiecesMax> pieceFinite;
+    pieceFinite.fill(true);
+    inPieces([&](int piece, int begin, int end) {
+        const Eigen::Index b = 3 * begin, l = 3 * (end - begin);
+        pieceFinite[static_cast<std::size_t>(piece)] = m_y.segment(b, l).allFinite() && m_y.segment(m_n + b, l).allFinite();
+    });
+    return std::find(pieceFinite.begin(), pieceFinite.end(), false) == pieceFinite.end() &&
+           std::isfinite(m_y[2 * m_n]);
 }
 
 bool Simulation::constrainLayers(bool apply) {
@@ -540,12 +579,15 @@ bool Simulation::constrainLayers(bool apply) {
     return any;
 }
 
-std::optional<std::string> Simulation::checkState(const Diagnostics& d) const {
+std::optional<std::string> Simulation::checkState(const Diagnostics& d, bool finite) const {
     // Causes before symptoms: speed and energy first, then the shape they wreck. (The message
     // stream is built only on failure: nothing is allocated in a good step.)
-    if (!m_y.allFinite() || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
-    const auto v = velocities();
-    const double fastest = v.colwise().norm().maxCoeff();
+    if (!finite || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
+    std::array<double, kPiecesMax> pieceFastest{};
+    inPieces([&](int piece, int begin, int end) {
+        pieceFastest[static_cast<std::size_t>(piece)] = velocities().middleCols(begin, end - begin).colwise().norm().maxCoeff();
+    });
+    const double fastest = *std::max_element(pieceFastest.begin(), pieceFastest.end());
     if (fastest * m_hTaken > 2.0 * m_box) {
         std::ostringstream why;
         why << "runaway velocity: a particle moves " << fastest

@@ -161,9 +161,25 @@ private:
     void startBookkeeping();
     // With apply = false only report whether anything is in contact.
     bool collide(bool apply);
+    bool collideRange(bool apply, int begin, int end);
+    bool stateIsFinite() const;
+    // Per-particle work in a fixed number of pieces (the force model's chunks, so sums
+    // combined in piece order are the same for any number of threads), on the pool when
+    // there is one: body(piece, firstParticle, endParticle).
+    static constexpr int kPiecesMax = ForceModel::kChunks;
+    template <class F>
+    void inPieces(F&& body) const {
+        const int pieces = m_forces.chunks(), n = particleCount();
+        auto task = [&](int k) { body(k, n * k / pieces, n * (k + 1) / pieces); };
+        if (m_pool && pieces > 1)
+            m_pool->run(pieces, task);
+        else
+            for (int k = 0; k < pieces; ++k) task(k);
+    }
     bool constrainLayers(bool apply);
     // Why the state (measured into d) is unusable, or nothing.
-    std::optional<std::string> checkState(const Diagnostics& d) const;
+    // `finite`: whether the state is free of NaN and infinity (known to the caller).
+    std::optional<std::string> checkState(const Diagnostics& d, bool finite) const;
     double totalEnergyNow() const;
     void measureWithForces(Diagnostics& d);
     void fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
