@@ -110,7 +110,8 @@ static SceneFileResult parseSceneJson(const std::string& text) {
     if (root.contains("state")) {
         const Json& state = root["state"];
         if (!state.is_object()) return failure("state: expected an object");
-        if (auto error = onlyKeys(state, "state", {"step", "time", "positions", "velocities"})) return failure(*error);
+        if (auto error = onlyKeys(state, "state", {"step", "time", "next_step", "positions", "velocities"}))
+            return failure(*error);
         SceneFile::State s;
         if (state.contains("step")) {
             if (!state["step"].is_number_integer() || state["step"].get<long>() < 0)
@@ -122,8 +123,14 @@ static SceneFileResult parseSceneJson(const std::string& text) {
                 return failure("state.time: expected a finite number >= 0");
             s.time = state["time"].get<double>();
         }
-        // The particle count follows from the shape; building the body is cheap and exact.
-        const int count = buildBody(file.params).topology.particleCount();
+        if (state.contains("next_step")) {
+            const Json& h = state["next_step"];
+            if (!h.is_number() || !std::isfinite(h.get<double>()) || !(h.get<double>() > 0.0))
+                return failure("state.next_step: expected a finite number > 0 (seconds)");
+            s.nextStep = h.get<double>();
+        }
+        // The particle count follows from the shape (counted, not built).
+        const auto count = static_cast<int>(bodySize(file.params).particles);
         if (!state.contains("positions") || !state.contains("velocities"))
             return failure("state: needs both positions and velocities");
         if (auto error = readVectors(state["positions"], "positions", count, s.positions)) return failure(*error);
@@ -165,6 +172,7 @@ std::string sceneFileText(const Simulation& sim, const std::string& sceneName, b
     os << "\n  }";
     if (withState) {
         os << ",\n  \"state\": {\n    \"step\": " << sim.stepCount() << ",\n    \"time\": " << formatDouble(sim.time());
+        if (sim.integrator().adaptive()) os << ",\n    \"next_step\": " << formatDouble(sim.nextStep());
         for (const char* key : {"positions", "velocities"}) {
             const auto m = std::string(key) == "positions" ? sim.positions() : sim.velocities();
             os << ",\n    \"" << key << "\": [";
@@ -182,6 +190,7 @@ std::string sceneFileText(const Simulation& sim, const std::string& sceneName, b
 std::optional<std::string> applyState(Simulation& sim, const SceneFile::State& state) {
     if (state.positions.cols() != sim.particleCount()) return std::string("state does not fit the body");
     sim.setState(state.positions, state.velocities, state.step, state.time);
+    if (state.nextStep) sim.setNextStep(*state.nextStep);
     return std::nullopt;
 }
 

@@ -7,7 +7,10 @@
 //     "scene": "ring2d", "integrator": "rk4",
 //     "parameters": { "ks": 800, "kd": 15, ... every key of the scene ... },
 //     "state": { "step": 410, "time": 1.23,                       (optional)
+//                "next_step": 0.0021,          (adaptive integrators: the step proposed next)
 //                "positions": [[x, y, z], ...], "velocities": [[vx, vy, vz], ...] }
+//
+// Version 2 added state.next_step (so an rk45 run resumes exactly); version 1 files load.
 //   }
 //
 // Reading validates everything through the parameter table: unknown keys (at any level),
@@ -25,7 +28,7 @@ namespace simcore {
 
 class Simulation;
 
-inline constexpr int kSceneFormatVersion = 1;
+inline constexpr int kSceneFormatVersion = 2;
 
 struct SceneFile {
     std::string sceneName;
@@ -34,6 +37,7 @@ struct SceneFile {
     struct State {
         long step = 0;
         double time = 0.0;
+        std::optional<double> nextStep;  // adaptive integrators: the step they proposed [s]
         Eigen::Matrix3Xd positions;
         Eigen::Matrix3Xd velocities;
     };

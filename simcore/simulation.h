@@ -13,6 +13,7 @@
 // On failure the last good state is restored and kept; no non-finite value ever leaves.
 // Parameters change only between steps (the caller owns the thread that steps).
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -99,6 +100,10 @@ public:
     const IntegratorOptions& integratorOptions() const { return m_integratorOptions; }
     // The step the next step() will try (dt for fixed-step integrators) [s].
     double nextStep() const { return m_integrator->adaptive() ? m_hNext : m_dt; }
+    // Sets the step an adaptive integrator tries next (a resumed run); h > 0 and finite.
+    void setNextStep(double h) {
+        if (std::isfinite(h) && h > 0.0) m_hNext = h;
+    }
     const Integrator& integrator() const { return *m_integrator; }
     double dt() const { return m_dt; }
 

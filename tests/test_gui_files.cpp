@@ -31,6 +31,7 @@
 #include "export.h"
 #include "main_window.h"
 #include "parameter_dock.h"
+#include "scenefile.h"
 #include "plot_dock.h"
 #include "presets.h"
 #include "recent_files.h"
@@ -310,7 +311,8 @@ private slots:
         QTest::newRow("syntax error") << "\"kd\": 15," << "\"kd\": 15,," << "line 8";
         QTest::newRow("unknown key") << "\"ks\":" << "\"kss\":" << "kss";
         QTest::newRow("out of range") << "\"restitution\": 0.5" << "\"restitution\": 2" << "restitution";
-        QTest::newRow("newer version") << "\"version\": 1" << "\"version\": 7" << "newer";
+        QTest::newRow("newer version") << QString("\"version\": %1").arg(simcore::kSceneFormatVersion)
+                                       << "\"version\": 99" << "newer";
         QTest::newRow("wrong state size") << "\"positions\": [[" << "\"positions\": [[0, 0, 0], [" << "positions";
         QTest::newRow("missing file") << "" << "" << "no such file";
         QTest::newRow("a folder") << "" << "" << "not a regular file";

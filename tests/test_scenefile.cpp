@@ -44,6 +44,7 @@ private slots:
         QTest::newRow("ring2d rk4") << "ring2d" << "rk4";
         QTest::newRow("sphere3d verlet") << "sphere3d" << "verlet";
         QTest::newRow("latlong midpoint") << "sphere3d-latlong" << "midpoint";
+        QTest::newRow("ring2d rk45 (next step saved)") << "ring2d" << "rk45";
     }
     void roundTripIsExact() {
         QFETCH(QString, scene);
@@ -88,7 +89,9 @@ private slots:
         QTest::newRow("wrong type") << "\"kd\": 15" << "\"kd\": \"15\"" << "kd";
         QTest::newRow("out of range") << "\"restitution\": 0.5" << "\"restitution\": 2" << "restitution";
         QTest::newRow("zero mass") << "\"mass\": 1" << "\"mass\": 0" << "mass";
-        QTest::newRow("newer version") << "\"version\": 1" << "\"version\": 7" << "newer";
+        QTest::newRow("newer version") << QString("\"version\": %1").arg(kSceneFormatVersion) << "\"version\": 99"
+                                       << "newer";
+        QTest::newRow("next step not positive") << "\"step\":" << "\"next_step\": 0, \"step\":" << "next_step";
         QTest::newRow("unknown scene") << "\"ring2d\"" << "\"torus\"" << "torus";
         QTest::newRow("unknown integrator") << "\"rk4\"" << "\"rk7\"" << "rk7";
         QTest::newRow("syntax error names the line") << "\"kd\": 15," << "\"kd\": 15,," << "line 8";

@@ -62,7 +62,8 @@ int commandRun(const std::vector<std::string>& args) {
 
     simcore::Simulation sim(setup.params, setup.integrator);
     sim.setIntegratorOptions(integratorOptions(options));
-    if (setup.state) simcore::applyState(sim, *setup.state);  // resume a saved experiment
+    if (setup.state)  // resume a saved experiment
+        if (auto error = simcore::applyState(sim, *setup.state)) throw UsageError(*error);
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
