@@ -61,9 +61,15 @@ BENCHMARK_CAPTURE(BM_Integrators, midpoint, "midpoint")->Unit(benchmark::kMicros
 BENCHMARK_CAPTURE(BM_Integrators, rk4, "rk4")->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_Integrators, verlet, "verlet")->Unit(benchmark::kMicrosecond)->UseRealTime();
 
-// One force evaluation: fast (chunked, vectorised) against the one-pass reference kernels.
+// One force evaluation: 0 = the one-pass reference kernels, 1 = the fast path with the
+// portable kernels, 2 = the fast path with the AVX2 kernels (where the CPU has AVX2).
 void BM_Forces(benchmark::State& state) {
     const bool fast = state.range(1) != 0;
+    if (state.range(1) == 2 && !kernels::avx2Available()) {
+        state.SkipWithError("no AVX2 on this CPU");
+        return;
+    }
+    kernels::useAvx2(state.range(1) == 2);
     ParameterSet p(SceneKind::Sphere3d);
     p.set("subdivisions", static_cast<double>(state.range(0)));
     Body body = buildBody(p);
@@ -85,8 +91,9 @@ void BM_Forces(benchmark::State& state) {
     state.counters["ns_per_spring"] = benchmark::Counter(
         static_cast<double>(state.iterations()) * static_cast<double>(body.topology.springCount()) * 1e-9,
         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    kernels::useAvx2(true);
 }
-BENCHMARK(BM_Forces)->ArgsProduct({{4, 6}, {0, 1}})->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_Forces)->ArgsProduct({{4, 6}, {0, 1, 2}})->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 // The GUI path: copying the positions out for a snapshot, against one step.
 void BM_SnapshotCopy(benchmark::State& state) {
