@@ -129,6 +129,56 @@ void unpadPortable(const double* f4, const double* g4, double p, const double* i
         }
 }
 
+// One spring of a quad, exactly as springMath computes it; returns whether it is degenerate.
+inline bool quadLane(const double* d, const double* dv, double ks, double kd, double rest,
+                     double* force, double& power, double& stretch2) {
+    const double length2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    const double length = std::sqrt(length2);
+    const bool tooShort = length < kDegenerateLength;
+    const double inv = 1.0 / (tooShort ? kDegenerateLength : length);
+    const double live = tooShort ? 0.0 : 1.0;
+    const double ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
+    const double closing = dv[0] * ux + dv[1] * uy + dv[2] * uz;
+    const double magnitude = live * (ks * (length - rest) + kd * closing);
+    force[0] = magnitude * ux;
+    force[1] = magnitude * uy;
+    force[2] = magnitude * uz;
+    power = live * kd * closing * closing;
+    stretch2 = (length - rest) * (length - rest);
+    return length2 < kDegenerateLength * kDegenerateLength;
+}
+
+QuadSums quadBlockPortable(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
+                           std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
+                           const double* v, double* f4, int& degenerate) {
+    double powerLane[4] = {0.0, 0.0, 0.0, 0.0}, squareLane[4] = {0.0, 0.0, 0.0, 0.0};
+    for (std::size_t q = begin; q < end; ++q) {
+        const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
+        const int first[4] = {a, A, A, B}, second[4] = {b, B, b, a};
+        double F[4][3];
+        for (int l = 0; l < 4; ++l) {
+            double d[3], dv[3];
+            for (int axis = 0; axis < 3; ++axis) {
+                d[axis] = x[3 * second[l] + axis] - x[3 * first[l] + axis];
+                dv[axis] = v[3 * second[l] + axis] - v[3 * first[l] + axis];
+            }
+            double power = 0.0, square = 0.0;
+            degenerate += quadLane(d, dv, ks[l / 2], kd[l / 2], quads.rest[q][static_cast<std::size_t>(l)], F[l],
+                                   power, square);
+            powerLane[l] += power;
+            squareLane[l] += square;
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+            f4[4 * a + axis] += F[0][axis] - F[3][axis];
+            f4[4 * b + axis] -= F[0][axis] + F[2][axis];
+            f4[4 * A + axis] += F[1][axis] + F[2][axis];
+            f4[4 * B + axis] += F[3][axis] - F[1][axis];
+        }
+    }
+    return {(powerLane[0] + powerLane[1]) + (powerLane[2] + powerLane[3]),
+            {squareLane[0] + squareLane[1], squareLane[2] + squareLane[3]}};
+}
+
 // ---------------------------------------------------------------------------------------------
 // AVX2 kernels
 
@@ -175,6 +225,35 @@ SIMCORE_AVX2 inline void subRow(double* f4, int p, __m256d row) {
     _mm256_store_pd(at, _mm256_sub_pd(_mm256_load_pd(at), row));
 }
 
+// The spring arithmetic of four lanes (springMath's, operation by operation): forces on the
+// first particles (fx, fy, fz), damping power and stretch L - L0 per lane; counts degenerate
+// lanes into `degenerate`.
+struct SpringLanes {
+    __m256d fx, fy, fz, power, stretch;
+};
+SIMCORE_AVX2 inline SpringLanes springLanes(__m256d dx, __m256d dy, __m256d dz, __m256d dvx, __m256d dvy,
+                                            __m256d dvz, __m256d rest, __m256d ks, __m256d kd,
+                                            int& degenerate) {
+    const __m256d eps = _mm256_set1_pd(kDegenerateLength);
+    const __m256d eps2 = _mm256_set1_pd(kDegenerateLength * kDegenerateLength);
+    const __m256d one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd();
+    const __m256d length2 =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
+    degenerate += __builtin_popcount(static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(length2, eps2, _CMP_LT_OQ))));
+    const __m256d length = _mm256_sqrt_pd(length2);
+    const __m256d tooShort = _mm256_cmp_pd(length, eps, _CMP_LT_OQ);
+    const __m256d inv = _mm256_div_pd(one, _mm256_blendv_pd(length, eps, tooShort));
+    const __m256d live = _mm256_blendv_pd(one, zero, tooShort);
+    const __m256d ux = _mm256_mul_pd(dx, inv), uy = _mm256_mul_pd(dy, inv), uz = _mm256_mul_pd(dz, inv);
+    const __m256d closing =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dvx, ux), _mm256_mul_pd(dvy, uy)), _mm256_mul_pd(dvz, uz));
+    const __m256d stretch = _mm256_sub_pd(length, rest);
+    const __m256d magnitude =
+        _mm256_mul_pd(live, _mm256_add_pd(_mm256_mul_pd(ks, stretch), _mm256_mul_pd(kd, closing)));
+    return {_mm256_mul_pd(magnitude, ux), _mm256_mul_pd(magnitude, uy), _mm256_mul_pd(magnitude, uz),
+            _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(live, kd), closing), closing), stretch};
+}
+
 SIMCORE_AVX2
 SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
                            double kd, const double* x, const double* v, double* f4,
@@ -183,10 +262,7 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
     const int* ib = springs.b.data() + begin;
     const double* rest = springs.rest.data() + begin;
     const std::size_t count = end - begin;
-    const __m256d vks = _mm256_set1_pd(ks), vkd = _mm256_set1_pd(kd);
-    const __m256d eps = _mm256_set1_pd(kDegenerateLength);
-    const __m256d eps2 = _mm256_set1_pd(kDegenerateLength * kDegenerateLength);
-    const __m256d one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd();
+    const __m256d vks = _mm256_set1_pd(ks), vkd = _mm256_set1_pd(kd), zero = _mm256_setzero_pd();
     __m256d lanes = zero;    // damping power, spring k in lane k mod 4
     __m256d squares = zero;  // (L - L0)^2, the same way
     std::size_t k = 0;
@@ -200,24 +276,11 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
         __m256d dx, dy, dz, dvx, dvy, dvz;
         toColumns(d[0], d[1], d[2], d[3], dx, dy, dz);
         toColumns(dv[0], dv[1], dv[2], dv[3], dvx, dvy, dvz);
-        // The portable springMath, operation by operation.
-        const __m256d length2 =
-            _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
-        degenerate += __builtin_popcount(static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(length2, eps2, _CMP_LT_OQ))));
-        const __m256d length = _mm256_sqrt_pd(length2);
-        const __m256d tooShort = _mm256_cmp_pd(length, eps, _CMP_LT_OQ);
-        const __m256d inv = _mm256_div_pd(one, _mm256_blendv_pd(length, eps, tooShort));
-        const __m256d live = _mm256_blendv_pd(one, zero, tooShort);
-        const __m256d ux = _mm256_mul_pd(dx, inv), uy = _mm256_mul_pd(dy, inv), uz = _mm256_mul_pd(dz, inv);
-        const __m256d closing = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dvx, ux), _mm256_mul_pd(dvy, uy)),
-                                              _mm256_mul_pd(dvz, uz));
-        const __m256d stretch = _mm256_sub_pd(length, _mm256_loadu_pd(rest + k));
-        squares = _mm256_add_pd(squares, _mm256_mul_pd(stretch, stretch));
-        const __m256d magnitude = _mm256_mul_pd(
-            live, _mm256_add_pd(_mm256_mul_pd(vks, stretch), _mm256_mul_pd(vkd, closing)));
-        lanes = _mm256_add_pd(lanes, _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(live, vkd), closing), closing));
+        const SpringLanes lane = springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(rest + k), vks, vkd, degenerate);
+        lanes = _mm256_add_pd(lanes, lane.power);
+        squares = _mm256_add_pd(squares, _mm256_mul_pd(lane.stretch, lane.stretch));
         __m256d force[4];
-        toRows(_mm256_mul_pd(magnitude, ux), _mm256_mul_pd(magnitude, uy), _mm256_mul_pd(magnitude, uz), force);
+        toRows(lane.fx, lane.fy, lane.fz, force);
         for (int l = 0; l < 4; ++l) {
             addRow(f4, ia[k + l], force[l]);
             subRow(f4, ib[k + l], force[l]);
@@ -299,6 +362,41 @@ void unpadAvx2(const double* f4, const double* g4, double p, const double* invMa
     unpadPortable(f4, g4, p, invMass3, i, end, out);
 }
 
+SIMCORE_AVX2
+QuadSums quadBlockAvx2(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
+                       std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
+                       const double* v, double* f4, int& degenerate) {
+    // One quad per iteration: lanes (a, b), (A, B), (A, b), (B, a). The arithmetic is
+    // quadLane's, operation by operation.
+    const __m256d vks = _mm256_setr_pd(ks[0], ks[0], ks[1], ks[1]);
+    const __m256d vkd = _mm256_setr_pd(kd[0], kd[0], kd[1], kd[1]), zero = _mm256_setzero_pd();
+    __m256d powerLanes = zero, squareLanes = zero;
+    for (std::size_t q = begin; q < end; ++q) {
+        const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
+        const __m256d xa = loadRow(x, a), xb = loadRow(x, b), xA = loadRow(x, A), xB = loadRow(x, B);
+        const __m256d va = loadRow(v, a), vb = loadRow(v, b), vA = loadRow(v, A), vB = loadRow(v, B);
+        __m256d dx, dy, dz, dvx, dvy, dvz;
+        toColumns(_mm256_sub_pd(xb, xa), _mm256_sub_pd(xB, xA), _mm256_sub_pd(xb, xA), _mm256_sub_pd(xa, xB),
+                  dx, dy, dz);
+        toColumns(_mm256_sub_pd(vb, va), _mm256_sub_pd(vB, vA), _mm256_sub_pd(vb, vA), _mm256_sub_pd(va, vB),
+                  dvx, dvy, dvz);
+        const SpringLanes lane =
+            springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(quads.rest[q].data()), vks, vkd, degenerate);
+        powerLanes = _mm256_add_pd(powerLanes, lane.power);
+        squareLanes = _mm256_add_pd(squareLanes, _mm256_mul_pd(lane.stretch, lane.stretch));
+        __m256d F[4];
+        toRows(lane.fx, lane.fy, lane.fz, F);
+        addRow(f4, a, _mm256_sub_pd(F[0], F[3]));
+        subRow(f4, b, _mm256_add_pd(F[0], F[2]));
+        addRow(f4, A, _mm256_add_pd(F[1], F[2]));
+        addRow(f4, B, _mm256_sub_pd(F[3], F[1]));
+    }
+    alignas(32) double power[4], square[4];
+    _mm256_store_pd(power, powerLanes);
+    _mm256_store_pd(square, squareLanes);
+    return {(power[0] + power[1]) + (power[2] + power[3]), {square[0] + square[1], square[2] + square[3]}};
+}
+
 #endif  // SIMCORE_AVX2_KERNELS
 
 bool detectAvx2() {
@@ -350,6 +448,15 @@ SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t 
     if (usingAvx2()) return springBlockAvx2(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
 #endif
     return springBlockPortable(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
+}
+
+QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
+                   std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
+                   const double* v, double* f4, int& degenerate) {
+#if SIMCORE_AVX2_KERNELS
+    if (usingAvx2()) return quadBlockAvx2(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
+#endif
+    return quadBlockPortable(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
 }
 
 double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end, const double* x,

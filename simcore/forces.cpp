@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 #include "parallel.h"
 
@@ -197,9 +199,43 @@ void ForceModel::partition() {
         }
     }
     for (auto& part : m_parts) part = Part{};
+    // Edge quads (see kernels::QuadSet): an inner structural spring (a, b) whose outer copy
+    // (A, B) and shear springs (A, b), (B, a) all exist goes, with them, into one quad.
+    std::array<std::vector<bool>, kSpringFamilyCount> inQuad;
+    for (int fam = 0; fam < kSpringFamilyCount; ++fam)
+        inQuad[static_cast<std::size_t>(fam)].assign(topo.springs[static_cast<std::size_t>(fam)].size(), false);
+    if (layered) {
+        const SpringSet& structural = topo.family(SpringFamily::Structural);
+        const SpringSet& shear = topo.family(SpringFamily::Shear);
+        auto key = [n](int i, int j) { return static_cast<std::uint64_t>(i) * static_cast<std::uint64_t>(n) + static_cast<std::uint64_t>(j); };
+        std::unordered_map<std::uint64_t, std::size_t> structuralAt, shearAt;
+        for (std::size_t k = 0; k < structural.size(); ++k) structuralAt.emplace(key(structural.a[k], structural.b[k]), k);
+        for (std::size_t k = 0; k < shear.size(); ++k) shearAt.emplace(key(shear.a[k], shear.b[k]), k);
+        auto& usedStructural = inQuad[static_cast<std::size_t>(SpringFamily::Structural)];
+        auto& usedShear = inQuad[static_cast<std::size_t>(SpringFamily::Shear)];
+        for (std::size_t k = 0; k < structural.size(); ++k) {
+            const int a = structural.a[k], b = structural.b[k];
+            if (a >= perLayer || b >= perLayer) continue;
+            const int A = a + perLayer, B = b + perLayer;
+            const auto outer = structuralAt.find(key(A, B));
+            const auto shearAb = shearAt.find(key(A, b)), shearBa = shearAt.find(key(B, a));
+            if (outer == structuralAt.end() || shearAb == shearAt.end() || shearBa == shearAt.end()) continue;
+            if (usedStructural[outer->second] || usedShear[shearAb->second] || usedShear[shearBa->second]) continue;
+            usedStructural[k] = usedStructural[outer->second] = true;
+            usedShear[shearAb->second] = usedShear[shearBa->second] = true;
+            // a and A share an owner, as do b and B: the quad is a chunk's when a's and b's are one.
+            const int oa = owner(a), ob = owner(b);
+            kernels::QuadSet& quads = m_parts[static_cast<std::size_t>(oa == ob ? oa : kChunks)].quads;
+            quads.a.push_back(a);
+            quads.b.push_back(b);
+            quads.rest.push_back({structural.rest[k], structural.rest[outer->second], shear.rest[shearAb->second],
+                                  shear.rest[shearBa->second]});
+        }
+    }
     for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
         const SpringSet& springs = topo.springs[static_cast<std::size_t>(fam)];
         for (std::size_t k = 0; k < springs.size(); ++k) {
+            if (inQuad[static_cast<std::size_t>(fam)][k]) continue;
             const int oa = owner(springs.a[k]), ob = owner(springs.b[k]);
             Part& part = m_parts[static_cast<std::size_t>(oa == ob ? oa : kChunks)];
             part.springs[static_cast<std::size_t>(fam)].add(springs.a[k], springs.b[k], springs.rest[k]);
@@ -222,9 +258,16 @@ void ForceModel::partition() {
     }
 }
 
+std::size_t ForceModel::quadCount() const {
+    std::size_t count = 0;
+    for (const Part& part : m_parts) count += part.quads.size();
+    return count;
+}
+
 std::size_t ForceModel::sharedElements() const {
     const Part& shared = m_parts[kChunks];
-    std::size_t count = shared.springs[0].size() + shared.springs[1].size() + shared.springs[2].size();
+    std::size_t count = shared.springs[0].size() + shared.springs[1].size() + shared.springs[2].size() +
+                        4 * shared.quads.size();
     for (const Surface& s : shared.surfaces) count += s.triangles.size() + s.edges.size();
     return count;
 }
@@ -233,6 +276,18 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
                                 kernels::Scratch& scratch, double* f4, double* g4, Sums& sums) const {
     using kernels::kBlock;
     if (m_terms.has(Term::Springs)) {
+        const int perLayer = m_topology->particleCount() / 2;
+        constexpr auto kStructural = static_cast<std::size_t>(SpringFamily::Structural);
+        constexpr auto kShear = static_cast<std::size_t>(SpringFamily::Shear);
+        for (std::size_t b0 = 0; b0 < part.quads.size(); b0 += kBlock) {
+            const kernels::QuadSums block = kernels::quadBlock(
+                part.quads, b0, std::min(part.quads.size(), b0 + kBlock), perLayer,
+                {params.ks[kStructural], params.ks[kShear]}, {params.kd[kStructural], params.kd[kShear]}, x, v,
+                f4, sums.degenerate);
+            sums.power += block.power;
+            sums.stretch2[kStructural] += block.stretch2[0];
+            sums.stretch2[kShear] += block.stretch2[1];
+        }
         for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
             const auto k = static_cast<std::size_t>(fam);
             const SpringSet& s = part.springs[k];

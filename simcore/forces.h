@@ -106,6 +106,8 @@ public:
     int chunks() const { return m_chunks; }
     // Springs and faces evaluated after the chunks because they join particles of two chunks.
     std::size_t sharedElements() const;
+    // Edge quads over all parts (each holds four springs).
+    std::size_t quadCount() const;
 
     // Computes f = F(x, v) (3N). Overwrites f. With count = false the evaluation is not
     // counted (a display asking for the current forces is not part of the run's cost).
@@ -148,7 +150,8 @@ private:
     // Springs and faces split by owner: parts 0..kChunks-1 touch only their chunk's
     // particles; part kChunks holds those shared between chunks.
     struct Part {
-        std::array<SpringSet, kSpringFamilyCount> springs;
+        kernels::QuadSet quads;  // most structural and shear springs of a two-layer body
+        std::array<SpringSet, kSpringFamilyCount> springs;  // the rest
         std::vector<Surface> surfaces;
     };
     void partition();

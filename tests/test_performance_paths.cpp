@@ -152,6 +152,12 @@ private slots:
         QVERIFY(kernels::usingAvx2());
         QVERIFY(stepped);
         QVERIFY(portable == vector);  // bit for bit
+        // Every mesh edge's four springs (inner, outer, two shear) form one quad.
+        const Simulation sim(p, "rk4");
+        const Topology& topo = sim.topology();
+        QCOMPARE(sim.forces().quadCount(), topo.family(SpringFamily::Structural).size() / 2);
+        QCOMPARE(4 * sim.forces().quadCount(),
+                 topo.family(SpringFamily::Structural).size() + topo.family(SpringFamily::Shear).size());
         QVERIFY((portable - Eigen::VectorXd(Simulation(p, "rk4").state())).norm() > 0.0);  // it moved
     }
     void threadsGiveBitIdenticalTrajectories_data() {
