@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <QThread>
 #include <QTimer>
 
 #include "scenes.h"
@@ -233,7 +234,7 @@ void SimWorker::pause() {
     if (m_running) m_wallBeforeStart += seconds(m_clock);
     m_running = false;
     m_until = -1.0;
-    m_timer->stop();
+    if (m_timer) m_timer->stop();
     publish(true);
 }
 
@@ -288,7 +289,21 @@ void SimWorker::release() {
 
 void SimWorker::shutdown() {
     m_running = false;
-    m_timer->stop();
+    m_until = -1.0;
+    delete m_timer;  // a QTimer is stopped and destroyed on the thread that runs it
+    m_timer = nullptr;
+    m_lanes.clear();
+    m_scene.reset();
+    m_params = simcore::ParameterSet{};
+    m_rows = {};
+    {
+        std::lock_guard lock(m_slotMutex);
+        m_slot = FrameBatch{};
+    }
+    // Quit from here rather than QThread::quit() on the GUI thread: that would wake this
+    // thread's event dispatcher (a write to its eventfd) with no ordering TSan can see before
+    // the dispatcher closes it as the thread ends.
+    thread()->quit();
 }
 
 void SimWorker::restartClock() {

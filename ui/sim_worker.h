@@ -1,8 +1,9 @@
 #pragma once
 // SimWorker: owns the simulations and steps them on its own thread (see simulation_controller.h).
 //
-// Every slot runs on the worker thread between two steps, so a command (parameter edit,
-// grab, reset, ...) can never land in the middle of a step. Stepping is driven by a timer:
+// Every command runs on the worker thread between two steps (the controller's inbox delivers
+// them as events, never inside a timer tick), so a parameter edit, a grab, a reset ... can
+// never land in the middle of a step. Stepping is driven by a timer:
 // each tick advances simulated time to where the clock says it should be (real time, a
 // fraction of it, or as far as a time budget allows), then publishes one frame.
 //
@@ -40,7 +41,7 @@ public:
     // Smallest simulated interval between two recorded time-series rows [s].
     static constexpr double kRowInterval = 1e-3;
 
-public slots:
+    // --- commands: worker thread only (SimulationController posts them through its inbox) ---
     // Builds the lanes. An impossible scene keeps the old one and reports sceneRejected.
     void setScene(const simcore::ParameterSet& params, const QStringList& integrators);
     // Builds the lanes from a scene file and, if it holds one, gives every lane its saved state
@@ -67,8 +68,13 @@ public slots:
     void moveAnchor(const QVector3D& anchor);
     void release();
 
+    // The last command: stops, and destroys the timer, the simulations and everything else
+    // made or touched on this thread, here, then quits the thread's event loop. Nothing of the
+    // worker runs afterwards; the controller joins the thread and deletes the (empty) object.
     void shutdown();
 
+    // Emitted on the worker thread. The controller connects them directly and hands them on
+    // through its outbox, so their arguments never travel through Qt's event queue.
 signals:
     void frameReady();                    // a frame waits in the slot (emitted once per take)
     void grabbed(int particle, const QVector3D& position);

@@ -4,48 +4,55 @@
 
 namespace elui {
 
-SimulationController::SimulationController(QObject* parent) : QObject(parent) {
+template <class... Params, class... Args>
+void SimulationController::toWorker(void (SimWorker::*command)(Params...), Args... args) {
+    m_inbox->post([w = m_worker, command, ... args = std::move(args)] { (w->*command)(args...); });
+}
+
+template <class Signal, class Slot>
+void SimulationController::fromWorker(Signal signal, Slot slot) {
+    // Runs on the worker thread as the signal is emitted: the arguments are copied into the
+    // message there, and the slot runs on this thread.
+    connect(
+        m_worker, signal, this,
+        [this, slot](auto... args) { m_outbox->post([this, slot, args...] { (this->*slot)(args...); }); },
+        Qt::DirectConnection);
+}
+
+SimulationController::SimulationController(QObject* parent)
+    : QObject(parent), m_worker(new SimWorker), m_inbox(new Mailbox(m_worker)), m_outbox(new Mailbox(this)) {
     qRegisterMetaType<elui::FramePtr>();
-    qRegisterMetaType<simcore::ParameterSet>("simcore::ParameterSet");
-    qRegisterMetaType<simcore::SceneFile>("simcore::SceneFile");
     m_thread.setObjectName(QStringLiteral("simulation"));
-    m_worker = new SimWorker;
     m_worker->moveToThread(&m_thread);
-    connect(&m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
 
-    auto q = Qt::QueuedConnection;
-    connect(this, &SimulationController::requestScene, m_worker, &SimWorker::setScene, q);
-    connect(this, &SimulationController::requestOpen, m_worker, &SimWorker::openScene, q);
-    connect(this, &SimulationController::requestIntegrator, m_worker, &SimWorker::setIntegrator, q);
-    connect(this, &SimulationController::requestParameter, m_worker, &SimWorker::setParameter, q);
-    connect(this, &SimulationController::requestSpeed, m_worker, &SimWorker::setSpeed, q);
-    connect(this, &SimulationController::requestStepDoubling, m_worker, &SimWorker::setStepDoubling, q);
-    connect(this, &SimulationController::requestForces, m_worker, &SimWorker::setForcesWanted, q);
-    connect(this, &SimulationController::requestKick, m_worker, &SimWorker::setStartKick, q);
-    connect(this, &SimulationController::requestRun, m_worker, &SimWorker::run, q);
-    connect(this, &SimulationController::requestRunUntil, m_worker, &SimWorker::runUntil, q);
-    connect(this, &SimulationController::requestPause, m_worker, &SimWorker::pause, q);
-    connect(this, &SimulationController::requestStep, m_worker, &SimWorker::stepOnce, q);
-    connect(this, &SimulationController::requestReset, m_worker, &SimWorker::reset, q);
-    connect(this, &SimulationController::requestGrab, m_worker, &SimWorker::grabAlongRay, q);
-    connect(this, &SimulationController::requestMove, m_worker, &SimWorker::moveAnchor, q);
-    connect(this, &SimulationController::requestRelease, m_worker, &SimWorker::release, q);
+    fromWorker(&SimWorker::frameReady, &SimulationController::takeFrame);
+    fromWorker(&SimWorker::grabbed, &SimulationController::grabbed);
+    fromWorker(&SimWorker::parameterRejected, &SimulationController::parameterRejected);
+    fromWorker(&SimWorker::sceneRejected, &SimulationController::restoreScene);
+    fromWorker(&SimWorker::runFailed, &SimulationController::runFailed);
+    fromWorker(&SimWorker::reachedTime, &SimulationController::reachedTime);
 
-    connect(m_worker, &SimWorker::frameReady, this, &SimulationController::takeFrame, q);
-    connect(m_worker, &SimWorker::grabbed, this, &SimulationController::grabbed, q);
-    connect(m_worker, &SimWorker::parameterRejected, this, &SimulationController::parameterRejected, q);
-    connect(m_worker, &SimWorker::sceneRejected, this, &SimulationController::restoreScene, q);
-    connect(m_worker, &SimWorker::runFailed, this, &SimulationController::runFailed, q);
-    connect(m_worker, &SimWorker::reachedTime, this, &SimulationController::reachedTime, q);
+    // Nothing is posted to the worker before its thread has started and made its event
+    // dispatcher (QThread emits started() after that, on the new thread): the first wake-up
+    // writes to the dispatcher's eventfd, and this wait orders its creation before that write.
+    Latch started;
+    const auto connection =
+        connect(&m_thread, &QThread::started, &m_thread, [&started] { started.open(); }, Qt::DirectConnection);
     m_thread.start();
+    started.wait();
+    disconnect(connection);
 }
 
 SimulationController::~SimulationController() {
-    // Stop stepping first (queued behind any command already sent), then end the thread; the
-    // worker and its simulations are deleted on their own thread as it finishes.
-    QMetaObject::invokeMethod(m_worker, &SimWorker::shutdown, Qt::BlockingQueuedConnection);
-    m_thread.quit();
+    // The last command, behind every one already sent: the worker stops, destroys its
+    // simulations and quits its event loop, all on its own thread, and runs none of our code
+    // afterwards (Mailbox::call returns once it has). Then the thread ends and the empty worker
+    // (with the inbox) is deleted here.
+    m_inbox->call([w = m_worker] { w->shutdown(); });
     m_thread.wait();
+    delete m_worker;
+    m_worker = nullptr;
+    m_inbox = nullptr;
 }
 
 void SimulationController::restoreScene(const QString& message) {
@@ -89,39 +96,42 @@ void SimulationController::takeFrame() {
 void SimulationController::setScene(const simcore::ParameterSet& params, const QStringList& integrators) {
     m_params = params;
     m_integrators = integrators;
-    emit requestScene(params, integrators);
+    toWorker(&SimWorker::setScene, params, integrators);
 }
 void SimulationController::setScene(const simcore::ParameterSet& params) { setScene(params, m_integrators); }
 void SimulationController::openScene(const simcore::SceneFile& file, const QStringList& integrators) {
     m_params = file.params;
     m_integrators = integrators.isEmpty() ? QStringList{QString::fromStdString(file.integrator)} : integrators;
-    emit requestOpen(file, m_integrators);
+    toWorker(&SimWorker::openScene, file, m_integrators);
 }
 SceneCapture SimulationController::captureScene() {
     SceneCapture capture;
-    // Queued behind every command already sent, so the text includes their effect.
-    QMetaObject::invokeMethod(
-        m_worker, [&capture, this] { capture = m_worker->captureScene(); }, Qt::BlockingQueuedConnection);
+    // Behind every command already sent, so the text includes their effect.
+    m_inbox->call([&capture, w = m_worker] { capture = w->captureScene(); });
     return capture;
 }
 void SimulationController::setIntegrator(const QString& name) {
     if (!m_integrators.isEmpty()) m_integrators[0] = name;
-    emit requestIntegrator(name);
+    toWorker(&SimWorker::setIntegrator, name);
 }
-void SimulationController::setParameter(const QString& key, double value) { emit requestParameter(key, value); }
-void SimulationController::setSpeed(Speed speed) { emit requestSpeed(int(speed)); }
-void SimulationController::setStepDoubling(bool on) { emit requestStepDoubling(on); }
-void SimulationController::setForcesWanted(bool on) { emit requestForces(on); }
-void SimulationController::setStartKick(double innerVx, double outerVx) { emit requestKick(innerVx, outerVx); }
-void SimulationController::run() { emit requestRun(); }
-void SimulationController::runUntil(double t) { emit requestRunUntil(t); }
-void SimulationController::pause() { emit requestPause(); }
-void SimulationController::step() { emit requestStep(); }
-void SimulationController::reset() { emit requestReset(); }
+void SimulationController::setParameter(const QString& key, double value) {
+    toWorker(&SimWorker::setParameter, key, value);
+}
+void SimulationController::setSpeed(Speed speed) { toWorker(&SimWorker::setSpeed, int(speed)); }
+void SimulationController::setStepDoubling(bool on) { toWorker(&SimWorker::setStepDoubling, on); }
+void SimulationController::setForcesWanted(bool on) { toWorker(&SimWorker::setForcesWanted, on); }
+void SimulationController::setStartKick(double innerVx, double outerVx) {
+    toWorker(&SimWorker::setStartKick, innerVx, outerVx);
+}
+void SimulationController::run() { toWorker(&SimWorker::run); }
+void SimulationController::runUntil(double t) { toWorker(&SimWorker::runUntil, t); }
+void SimulationController::pause() { toWorker(&SimWorker::pause); }
+void SimulationController::step() { toWorker(&SimWorker::stepOnce); }
+void SimulationController::reset() { toWorker(&SimWorker::reset); }
 void SimulationController::grabAlongRay(const QVector3D& o, const QVector3D& d, double maxDistance) {
-    emit requestGrab(o, d, maxDistance);
+    toWorker(&SimWorker::grabAlongRay, o, d, maxDistance);
 }
-void SimulationController::moveAnchor(const QVector3D& anchor) { emit requestMove(anchor); }
-void SimulationController::release() { emit requestRelease(); }
+void SimulationController::moveAnchor(const QVector3D& anchor) { toWorker(&SimWorker::moveAnchor, anchor); }
+void SimulationController::release() { toWorker(&SimWorker::release); }
 
 }  // namespace elui

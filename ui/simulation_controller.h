@@ -1,10 +1,17 @@
 #pragma once
 // SimulationController: the GUI's handle on the simulation thread.
 //
-// Commands go to the worker as queued signals (applied between steps); frames come back
-// through a one-frame slot — the newest wins, and while the GUI is busy the worker simply
-// overwrites the slot, so frames are skipped instead of queued. The time-series rows of
-// every recorded step are kept (history) for the plots and CSV export.
+//   GUI thread                                              worker thread ("simulation")
+//   SimulationController ── inbox: commands (closures) ──▶ SimWorker, between two steps
+//        public signals ◀── outbox: takeFrame, grabbed, ── worker signals (connected
+//        (emitted here)      rejections, runFailed, ...     directly, posted as closures)
+//
+// Both mailboxes (mailbox.h) hand their messages over under a std::mutex and let Qt carry
+// only argument-less wake-ups, so ThreadSanitizer sees every hand-over even though Qt itself
+// is not instrumented. Commands are applied between steps, in the order they were sent;
+// frames come back through a one-frame slot — the newest wins, and while the GUI is busy the
+// worker simply overwrites the slot, so frames are skipped instead of queued. The time-series
+// rows of every recorded step are kept (history) for the plots and CSV export.
 
 #include <QObject>
 #include <QStringList>
@@ -12,6 +19,7 @@
 #include <QVector3D>
 
 #include "frame.h"
+#include "mailbox.h"
 
 namespace elui {
 
@@ -21,7 +29,7 @@ class SimulationController : public QObject {
     Q_OBJECT
 public:
     explicit SimulationController(QObject* parent = nullptr);
-    ~SimulationController() override;  // stops the worker and joins its thread
+    ~SimulationController() override;  // shuts the worker down, joins its thread, deletes it
 
     // The newest frame taken (nullptr before the first).
     const FramePtr& latest() const { return m_latest; }
@@ -33,6 +41,8 @@ public:
     bool running() const { return m_latest && m_latest->running; }
     QThread* workerThread() { return &m_thread; }
     SimWorker* worker() const { return m_worker; }
+    // Commands sent and not yet taken by the worker (0 right after captureScene returns).
+    std::size_t commandsInFlight() const { return m_inbox->pending(); }
 
     // --- commands (all asynchronous) ---
     void setScene(const simcore::ParameterSet& params, const QStringList& integrators);
@@ -60,25 +70,7 @@ public:
     void release();
 
 signals:
-    // To the worker (queued).
-    void requestScene(const simcore::ParameterSet& params, const QStringList& integrators);
-    void requestOpen(const simcore::SceneFile& file, const QStringList& integrators);
-    void requestIntegrator(const QString& name);
-    void requestParameter(const QString& key, double value);
-    void requestSpeed(int speed);
-    void requestStepDoubling(bool on);
-    void requestForces(bool on);
-    void requestKick(double innerVx, double outerVx);
-    void requestRun();
-    void requestRunUntil(double t);
-    void requestPause();
-    void requestStep();
-    void requestReset();
-    void requestGrab(const QVector3D& origin, const QVector3D& direction, double maxDistance);
-    void requestMove(const QVector3D& anchor);
-    void requestRelease();
-
-    // To the GUI.
+    // To the GUI (emitted on the GUI thread).
     void frameArrived(const elui::FramePtr& frame);
     void historyReset();
     void rowsAppended(int first, int count);
@@ -92,9 +84,17 @@ signals:
 private:
     void takeFrame();
     void restoreScene(const QString& message);
+    // Queues (worker.*command)(args...) for the worker thread; args are copied here.
+    template <class... Params, class... Args>
+    void toWorker(void (SimWorker::*command)(Params...), Args... args);
+    // Worker signal → slot(args...) on the GUI thread, through the outbox.
+    template <class Signal, class Slot>
+    void fromWorker(Signal signal, Slot slot);
 
     QThread m_thread;
-    SimWorker* m_worker = nullptr;
+    SimWorker* m_worker = nullptr;  // deleted by the destructor once its thread has ended
+    Mailbox* m_inbox = nullptr;     // to the worker thread (the worker's child)
+    Mailbox* m_outbox = nullptr;    // to this (GUI) thread (our child)
     FramePtr m_latest;
     std::vector<simcore::Diagnostics> m_history;
     simcore::ParameterSet m_params;
