@@ -263,6 +263,7 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
     const double* rest = springs.rest.data() + begin;
     const std::size_t count = end - begin;
     const __m256d vks = _mm256_set1_pd(ks), vkd = _mm256_set1_pd(kd), zero = _mm256_setzero_pd();
+    int shortSprings = 0;    // a local count: a reference could alias the index arrays
     __m256d lanes = zero;    // damping power, spring k in lane k mod 4
     __m256d squares = zero;  // (L - L0)^2, the same way
     std::size_t k = 0;
@@ -276,7 +277,7 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
         __m256d dx, dy, dz, dvx, dvy, dvz;
         toColumns(d[0], d[1], d[2], d[3], dx, dy, dz);
         toColumns(dv[0], dv[1], dv[2], dv[3], dvx, dvy, dvz);
-        const SpringLanes lane = springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(rest + k), vks, vkd, degenerate);
+        const SpringLanes lane = springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(rest + k), vks, vkd, shortSprings);
         lanes = _mm256_add_pd(lanes, lane.power);
         squares = _mm256_add_pd(squares, _mm256_mul_pd(lane.stretch, lane.stretch));
         __m256d force[4];
@@ -286,6 +287,7 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
             subRow(f4, ib[k + l], force[l]);
         }
     }
+    degenerate += shortSprings;
     alignas(32) double lane[4], square[4];
     _mm256_store_pd(lane, lanes);
     _mm256_store_pd(square, squares);
@@ -371,6 +373,7 @@ QuadSums quadBlockAvx2(const QuadSet& quads, std::size_t begin, std::size_t end,
     const __m256d vks = _mm256_setr_pd(ks[0], ks[0], ks[1], ks[1]);
     const __m256d vkd = _mm256_setr_pd(kd[0], kd[0], kd[1], kd[1]), zero = _mm256_setzero_pd();
     __m256d powerLanes = zero, squareLanes = zero;
+    int shortSprings = 0;  // a local count: a reference could alias the index arrays
     for (std::size_t q = begin; q < end; ++q) {
         const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
         const __m256d xa = loadRow(x, a), xb = loadRow(x, b), xA = loadRow(x, A), xB = loadRow(x, B);
@@ -381,7 +384,7 @@ QuadSums quadBlockAvx2(const QuadSet& quads, std::size_t begin, std::size_t end,
         toColumns(_mm256_sub_pd(vb, va), _mm256_sub_pd(vB, vA), _mm256_sub_pd(vb, vA), _mm256_sub_pd(va, vB),
                   dvx, dvy, dvz);
         const SpringLanes lane =
-            springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(quads.rest[q].data()), vks, vkd, degenerate);
+            springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(quads.rest[q].data()), vks, vkd, shortSprings);
         powerLanes = _mm256_add_pd(powerLanes, lane.power);
         squareLanes = _mm256_add_pd(squareLanes, _mm256_mul_pd(lane.stretch, lane.stretch));
         __m256d F[4];
@@ -391,6 +394,7 @@ QuadSums quadBlockAvx2(const QuadSet& quads, std::size_t begin, std::size_t end,
         addRow(f4, A, _mm256_add_pd(F[1], F[2]));
         addRow(f4, B, _mm256_sub_pd(F[3], F[1]));
     }
+    degenerate += shortSprings;
     alignas(32) double power[4], square[4];
     _mm256_store_pd(power, powerLanes);
     _mm256_store_pd(square, squareLanes);
