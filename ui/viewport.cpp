@@ -107,6 +107,10 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 Viewport::~Viewport() {
+    // The context outlives this part of the object (QOpenGLWidget's destructor destroys it):
+    // its aboutToBeDestroyed must not call cleanup() on a Viewport that is already gone
+    // (found by UBSan: a downcast to a destroyed Viewport).
+    if (QOpenGLContext* gl = context()) disconnect(gl, nullptr, this, nullptr);
     makeCurrent();
     cleanup();
     doneCurrent();
