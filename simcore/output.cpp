@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace simcore {
@@ -30,13 +32,24 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
     if (ec || target.empty()) target = m_path;
     m_target = target;
     m_tempPath = target + ".tmp-" + std::to_string(::getpid());
-    m_file = std::fopen(m_tempPath.c_str(), "wb");
+    // An unnamed file in the target's folder (O_TMPFILE): if the process is killed before the
+    // commit, the kernel drops it and nothing is left behind. It gets its temporary name only
+    // at the commit, just before the rename. Filesystems without O_TMPFILE get the named
+    // temporary file from the start (removed on any failure we live through).
+    const fs::path parent = fs::path(target).parent_path();
+    const int fd = ::open(parent.empty() ? "." : parent.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+        m_file = ::fdopen(fd, "wb");
+        if (!m_file) ::close(fd);
+        m_unnamed = m_file != nullptr;
+    }
+    if (!m_file) m_file = std::fopen(m_tempPath.c_str(), "wb");
     if (!m_file) fail(std::strerror(errno));
 }
 
 AtomicFile::~AtomicFile() {
     if (m_file) std::fclose(m_file);
-    if (!m_committed && !m_tempPath.empty()) std::remove(m_tempPath.c_str());
+    if (!m_committed && !m_tempPath.empty() && !m_unnamed) std::remove(m_tempPath.c_str());
 }
 
 void AtomicFile::fail(const std::string& what) {
@@ -58,6 +71,19 @@ bool AtomicFile::commit() {
         (!m_tempPath.empty() && ::fsync(::fileno(m_file)) != 0)) {
         fail(std::strerror(errno));
         return false;
+    }
+    if (m_unnamed) {
+        // Give the unnamed file its temporary name (through /proc, which needs no privilege);
+        // a stale file of that name from a killed run of the same pid is replaced.
+        const std::string self = "/proc/self/fd/" + std::to_string(::fileno(m_file));
+        int linked = ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, m_tempPath.c_str(), AT_SYMLINK_FOLLOW);
+        if (linked != 0 && errno == EEXIST && std::remove(m_tempPath.c_str()) == 0)
+            linked = ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, m_tempPath.c_str(), AT_SYMLINK_FOLLOW);
+        if (linked != 0) {
+            fail(std::strerror(errno));
+            return false;
+        }
+        m_unnamed = false;  // from here on a failure removes the named file
     }
     const int closed = std::fclose(m_file);
     m_file = nullptr;

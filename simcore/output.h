@@ -3,7 +3,8 @@
 //
 // A file is written to a temporary sibling and renamed over the target only when complete
 // (POSIX rename is atomic): a failed or interrupted write leaves any existing file untouched
-// and no partial file behind. A target that is not a regular file (a device such as
+// and no partial file behind. The sibling is an unnamed O_TMPFILE file until the commit, so
+// even a killed process (SIGKILL, power loss before the commit) leaves nothing behind. A target that is not a regular file (a device such as
 // /dev/stdout or /dev/full, a pipe) is written in place, since it cannot be renamed over.
 
 #include <cstdio>
@@ -35,6 +36,7 @@ private:
     std::string m_path;
     std::string m_target;    // the file renamed over (m_path, or what its symlink points to)
     std::string m_tempPath;  // empty when writing in place to a device or pipe
+    bool m_unnamed = false;  // writing an O_TMPFILE file that has no name yet
     std::FILE* m_file = nullptr;
     std::string m_error;
     bool m_committed = false;

@@ -7,6 +7,7 @@
 #include <QTemporaryDir>
 
 #include <cmath>
+#include <csignal>
 
 #include "params.h"
 #include "scenes.h"
@@ -153,6 +154,35 @@ private slots:
         QVERIFY2(r.err.contains("/dev/full"), qPrintable(r.err));
         QVERIFY(QFileInfo("/dev/full").exists() && !QFileInfo("/dev/full").isFile());
         QVERIFY(QDir("/dev").entryList({"full.tmp-*"}, QDir::AllEntries | QDir::System).isEmpty());
+    }
+    void killedRunLeavesExistingFilesAndNothingElse() {
+        // A run killed outright (SIGKILL: no handler, no destructor runs) while it streams its
+        // CSV and state: the files that were there keep their bytes and nothing else appears
+        // in the folder (the output is written to an unnamed O_TMPFILE file until the commit).
+        QTemporaryDir dir;
+        const QString csv = dir.filePath("series.csv"), state = dir.filePath("state.csv");
+        for (const QString& name : {csv, state}) {
+            QFile f(name);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("precious " + name.toUtf8() + "\n");
+        }
+        QProcess p;
+        p.start(ELASTIC_LAB_CLI, {"run", "--scene", "sphere3d", "--set", "subdivisions=4", "--set", "gravity=0",
+                                  "--duration", "100000", "--csv", csv, "--state", state});
+        QVERIFY(p.waitForStarted());
+        QTest::qWait(1500);  // well into the run: thousands of rows written
+        QCOMPARE(p.state(), QProcess::Running);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 2);  // nothing named yet
+        ::kill(static_cast<pid_t>(p.processId()), SIGKILL);
+        QVERIFY(p.waitForFinished());
+        QCOMPARE(p.exitStatus(), QProcess::CrashExit);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden | QDir::System),
+                 QStringList({"series.csv", "state.csv"}));
+        for (const QString& name : {csv, state}) {
+            QFile f(name);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            QCOMPARE(f.readAll(), "precious " + name.toUtf8() + "\n");
+        }
     }
     void existingFileSurvivesAFailedRunStart() {
         const QString csv = path("keep.csv");
