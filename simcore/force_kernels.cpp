@@ -30,27 +30,39 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 // Portable kernels
 
+// One spring's arithmetic: separation d and relative velocity dv in; force on the first
+// particle, damping power and squared stretch out. A spring shorter than kDegenerateLength keeps
+// a finite direction (divided by the epsilon instead of its length) and a zero force. The AVX2
+// kernels (springLanes) do these operations in this order.
+struct SpringResult {
+    double fx, fy, fz, power, stretch2;
+};
+inline SpringResult springArithmetic(double dx, double dy, double dz, double dvx, double dvy, double dvz,
+                                     double ks, double kd, double rest) {
+    const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const bool tooShort = length < kDegenerateLength;
+    const double inv = 1.0 / std::max(length, kDegenerateLength);
+    const double live = tooShort ? 0.0 : 1.0;
+    const double ux = dx * inv, uy = dy * inv, uz = dz * inv;
+    const double closing = dvx * ux + dvy * uy + dvz * uz;
+    const double magnitude = live * (ks * (length - rest) + kd * closing);
+    return {magnitude * ux, magnitude * uy, magnitude * uz, live * kd * closing * closing,
+            (length - rest) * (length - rest)};
+}
+
 SIMCORE_VECTOR_KERNEL
 void springMath(std::size_t count, double ks, double kd, const double* __restrict rest,
                 double* __restrict dx, double* __restrict dy, double* __restrict dz,
                 const double* __restrict dvx, const double* __restrict dvy,
                 const double* __restrict dvz, double* __restrict power, double* __restrict stretch2) {
-    // In: separations d and relative velocities dv per spring. Out: force on the first
-    // particle in (dx, dy, dz) and damping power. A spring shorter than kDegenerateLength keeps
-    // a finite direction (divided by the epsilon instead of its length) and a zero force.
+    // Structure-of-arrays in and out (the forces overwrite d): a loop the compiler vectorises.
     for (std::size_t s = 0; s < count; ++s) {
-        const double length = std::sqrt(dx[s] * dx[s] + dy[s] * dy[s] + dz[s] * dz[s]);
-        const bool tooShort = length < kDegenerateLength;
-        const double inv = 1.0 / std::max(length, kDegenerateLength);
-        const double live = tooShort ? 0.0 : 1.0;
-        const double ux = dx[s] * inv, uy = dy[s] * inv, uz = dz[s] * inv;
-        const double closing = dvx[s] * ux + dvy[s] * uy + dvz[s] * uz;
-        const double magnitude = live * (ks * (length - rest[s]) + kd * closing);
-        dx[s] = magnitude * ux;
-        dy[s] = magnitude * uy;
-        dz[s] = magnitude * uz;
-        power[s] = live * kd * closing * closing;
-        stretch2[s] = (length - rest[s]) * (length - rest[s]);
+        const SpringResult r = springArithmetic(dx[s], dy[s], dz[s], dvx[s], dvy[s], dvz[s], ks, kd, rest[s]);
+        dx[s] = r.fx;
+        dy[s] = r.fy;
+        dz[s] = r.fz;
+        power[s] = r.power;
+        stretch2[s] = r.stretch2;
     }
 }
 
@@ -129,25 +141,6 @@ void unpadPortable(const double* f4, const double* g4, double p, const double* i
         }
 }
 
-// One spring of a quad, exactly as springMath computes it; returns whether it is degenerate.
-inline bool quadLane(const double* d, const double* dv, double ks, double kd, double rest,
-                     double* force, double& power, double& stretch2) {
-    const double length2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    const double length = std::sqrt(length2);
-    const bool tooShort = length < kDegenerateLength;
-    const double inv = 1.0 / (tooShort ? kDegenerateLength : length);
-    const double live = tooShort ? 0.0 : 1.0;
-    const double ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
-    const double closing = dv[0] * ux + dv[1] * uy + dv[2] * uz;
-    const double magnitude = live * (ks * (length - rest) + kd * closing);
-    force[0] = magnitude * ux;
-    force[1] = magnitude * uy;
-    force[2] = magnitude * uz;
-    power = live * kd * closing * closing;
-    stretch2 = (length - rest) * (length - rest);
-    return length2 < kDegenerateLength * kDegenerateLength;
-}
-
 QuadSums quadBlockPortable(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
                            std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
                            const double* v, double* f4, int& degenerate) {
@@ -157,16 +150,19 @@ QuadSums quadBlockPortable(const QuadSet& quads, std::size_t begin, std::size_t 
         const int first[4] = {a, A, A, B}, second[4] = {b, B, b, a};
         double F[4][3];
         for (int l = 0; l < 4; ++l) {
-            double d[3], dv[3];
-            for (int axis = 0; axis < 3; ++axis) {
-                d[axis] = x[3 * second[l] + axis] - x[3 * first[l] + axis];
-                dv[axis] = v[3 * second[l] + axis] - v[3 * first[l] + axis];
-            }
-            double power = 0.0, square = 0.0;
-            degenerate += quadLane(d, dv, ks[l / 2], kd[l / 2], quads.rest[q][static_cast<std::size_t>(l)], F[l],
-                                   power, square);
-            powerLane[l] += power;
-            squareLane[l] += square;
+            const double* xi = x + 3 * first[l];
+            const double* xj = x + 3 * second[l];
+            const double* vi = v + 3 * first[l];
+            const double* vj = v + 3 * second[l];
+            const double dx = xj[0] - xi[0], dy = xj[1] - xi[1], dz = xj[2] - xi[2];
+            degenerate += dx * dx + dy * dy + dz * dz < kDegenerateLength * kDegenerateLength;
+            const SpringResult r = springArithmetic(dx, dy, dz, vj[0] - vi[0], vj[1] - vi[1], vj[2] - vi[2],
+                                                    ks[l / 2], kd[l / 2], quads.rest[q][static_cast<std::size_t>(l)]);
+            F[l][0] = r.fx;
+            F[l][1] = r.fy;
+            F[l][2] = r.fz;
+            powerLane[l] += r.power;
+            squareLane[l] += r.stretch2;
         }
         for (int axis = 0; axis < 3; ++axis) {
             f4[4 * a + axis] += F[0][axis] - F[3][axis];
