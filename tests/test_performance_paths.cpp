@@ -209,7 +209,8 @@ private slots:
     }
     // The memory bound that validateShape checks against the stated limit must cover what a
     // simulation really holds on the heap (state, stages, forces, topology) with every
-    // integrator, and not overstate it by more than 2x (else the limit refuses bodies that fit).
+    // integrator, and not overstate what the hungriest one (implicit Euler, the one the bound is
+    // for) holds by more than 2x (else the limit refuses bodies that fit).
     void memoryBoundCoversTheLiveHeap_data() {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QString>("key");
