@@ -5,6 +5,9 @@
 // Counters: us per step, ns per spring evaluation, real-time factor at the scene's DT.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstdint>
+
 #include "forces.h"
 #include "simulation.h"
 
@@ -62,14 +65,16 @@ BENCHMARK_CAPTURE(BM_Integrators, rk4, "rk4")->Unit(benchmark::kMicrosecond)->Us
 BENCHMARK_CAPTURE(BM_Integrators, verlet, "verlet")->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 // One force evaluation: 0 = the one-pass reference kernels, 1 = the fast path with the
-// portable kernels, 2 = the fast path with the AVX2 kernels (where the CPU has AVX2).
+// portable kernels, 2 = with the AVX2 kernels, 3 = with the AVX-512 kernels (where the CPU
+// has them).
 void BM_Forces(benchmark::State& state) {
     const bool fast = state.range(1) != 0;
-    if (state.range(1) == 2 && !kernels::avx2Available()) {
-        state.SkipWithError("no AVX2 on this CPU");
+    const auto set = static_cast<kernels::KernelSet>(std::max<std::int64_t>(0, state.range(1) - 1));
+    if (set > kernels::widestKernels()) {
+        state.SkipWithError("this CPU lacks these kernels");
         return;
     }
-    kernels::useAvx2(state.range(1) == 2);
+    kernels::useKernels(set);
     ParameterSet p(SceneKind::Sphere3d);
     p.set("subdivisions", static_cast<double>(state.range(0)));
     Body body = buildBody(p);
@@ -91,9 +96,9 @@ void BM_Forces(benchmark::State& state) {
     state.counters["ns_per_spring"] = benchmark::Counter(
         static_cast<double>(state.iterations()) * static_cast<double>(body.topology.springCount()) * 1e-9,
         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-    kernels::useAvx2(true);
+    kernels::useKernels(kernels::widestKernels());
 }
-BENCHMARK(BM_Forces)->ArgsProduct({{4, 6}, {0, 1, 2}})->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_Forces)->ArgsProduct({{4, 6}, {0, 1, 2, 3}})->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 // The GUI path: copying the positions out for a snapshot, against one step.
 void BM_SnapshotCopy(benchmark::State& state) {

@@ -10,9 +10,17 @@
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define SIMCORE_AVX2_KERNELS 1
+#define SIMCORE_AVX512_KERNELS 1
+// GCC 12 warns inside its own AVX-512 intrinsics (_mm512_undefined_pd, GCC bug 105593); the
+// warning is reported at the header's lines, so it is silenced for the header alone.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 #include <immintrin.h>
+#pragma GCC diagnostic pop
 #else
 #define SIMCORE_AVX2_KERNELS 0
+#define SIMCORE_AVX512_KERNELS 0
 #endif
 
 // The portable arithmetic is compiled twice (AVX2 and baseline x86-64) and picked at load
@@ -29,6 +37,16 @@ namespace {
 
 // ---------------------------------------------------------------------------------------------
 // Portable kernels
+
+// A block's quad sums from their accumulators [parity][lane] (see QuadSums).
+QuadSums combineQuadLanes(const double (&power)[2][4], const double (&square)[2][4]) {
+    double p[4], q[4];
+    for (int l = 0; l < 4; ++l) {
+        p[l] = power[0][l] + power[1][l];
+        q[l] = square[0][l] + square[1][l];
+    }
+    return {(p[0] + p[1]) + (p[2] + p[3]), {q[0] + q[1], q[2] + q[3]}};
+}
 
 // One spring's arithmetic: separation d and relative velocity dv in; force on the first
 // particle, damping power and squared stretch out. A spring shorter than kDegenerateLength keeps
@@ -144,8 +162,9 @@ void unpadPortable(const double* f4, const double* g4, double p, const double* i
 QuadSums quadBlockPortable(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
                            std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
                            const double* v, double* f4, int& degenerate) {
-    double powerLane[4] = {0.0, 0.0, 0.0, 0.0}, squareLane[4] = {0.0, 0.0, 0.0, 0.0};
+    double powerLane[2][4] = {}, squareLane[2][4] = {};
     for (std::size_t q = begin; q < end; ++q) {
+        const std::size_t parity = (q - begin) & 1;
         const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
         const int first[4] = {a, A, A, B}, second[4] = {b, B, b, a};
         double F[4][3];
@@ -161,8 +180,8 @@ QuadSums quadBlockPortable(const QuadSet& quads, std::size_t begin, std::size_t 
             F[l][0] = r.fx;
             F[l][1] = r.fy;
             F[l][2] = r.fz;
-            powerLane[l] += r.power;
-            squareLane[l] += r.stretch2;
+            powerLane[parity][l] += r.power;
+            squareLane[parity][l] += r.stretch2;
         }
         for (int axis = 0; axis < 3; ++axis) {
             f4[4 * a + axis] += F[0][axis] - F[3][axis];
@@ -171,8 +190,7 @@ QuadSums quadBlockPortable(const QuadSet& quads, std::size_t begin, std::size_t 
             f4[4 * B + axis] += F[3][axis] - F[1][axis];
         }
     }
-    return {(powerLane[0] + powerLane[1]) + (powerLane[2] + powerLane[3]),
-            {squareLane[0] + squareLane[1], squareLane[2] + squareLane[3]}};
+    return combineQuadLanes(powerLane, squareLane);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -221,33 +239,55 @@ SIMCORE_AVX2 inline void subRow(double* f4, int p, __m256d row) {
     _mm256_store_pd(at, _mm256_sub_pd(_mm256_load_pd(at), row));
 }
 
-// The spring arithmetic of four lanes (springMath's, operation by operation): forces on the
-// first particles (fx, fy, fz), damping power and stretch L - L0 per lane; counts degenerate
-// lanes into `degenerate`.
+SIMCORE_AVX2 inline __m256d vectorSqrt(__m256d v) { return _mm256_sqrt_pd(v); }
+#if SIMCORE_AVX512_KERNELS
+#define SIMCORE_AVX512 __attribute__((target("avx512f,avx2")))
+SIMCORE_AVX512 inline __m512d vectorSqrt(__m512d v) { return _mm512_sqrt_pd(v); }
+#endif
+
+// The spring arithmetic of four or eight lanes (springArithmetic's, operation by operation):
+// forces on the first particles (fx, fy, fz), damping power and stretch L - L0 per lane;
+// counts degenerate lanes into `shortCount` (a 64-bit count per lane: no scalar chain through
+// the loop). Written once with GCC's vector operators for __m256d and __m512d; inlined into
+// the AVX2 and AVX-512 kernels, it compiles to their instructions (and, with
+// -ffp-contract=off, never to a fused multiply-add).
+// (Plain vector types: __m256d's may_alias attribute would be dropped as a template argument.)
+using Vec4 = double __attribute__((vector_size(32)));
+using Vec8 = double __attribute__((vector_size(64)));
+template <class V>
 struct SpringLanes {
-    __m256d fx, fy, fz, power, stretch;
+    V fx, fy, fz, power, stretch;
 };
-SIMCORE_AVX2 inline SpringLanes springLanes(__m256d dx, __m256d dy, __m256d dz, __m256d dvx, __m256d dvy,
-                                            __m256d dvz, __m256d rest, __m256d ks, __m256d kd,
-                                            int& degenerate) {
-    const __m256d eps = _mm256_set1_pd(kDegenerateLength);
-    const __m256d eps2 = _mm256_set1_pd(kDegenerateLength * kDegenerateLength);
-    const __m256d one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd();
-    const __m256d length2 =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz));
-    degenerate += __builtin_popcount(static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(length2, eps2, _CMP_LT_OQ))));
-    const __m256d length = _mm256_sqrt_pd(length2);
-    const __m256d tooShort = _mm256_cmp_pd(length, eps, _CMP_LT_OQ);
-    const __m256d inv = _mm256_div_pd(one, _mm256_blendv_pd(length, eps, tooShort));
-    const __m256d live = _mm256_blendv_pd(one, zero, tooShort);
-    const __m256d ux = _mm256_mul_pd(dx, inv), uy = _mm256_mul_pd(dy, inv), uz = _mm256_mul_pd(dz, inv);
-    const __m256d closing =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dvx, ux), _mm256_mul_pd(dvy, uy)), _mm256_mul_pd(dvz, uz));
-    const __m256d stretch = _mm256_sub_pd(length, rest);
-    const __m256d magnitude =
-        _mm256_mul_pd(live, _mm256_add_pd(_mm256_mul_pd(ks, stretch), _mm256_mul_pd(kd, closing)));
-    return {_mm256_mul_pd(magnitude, ux), _mm256_mul_pd(magnitude, uy), _mm256_mul_pd(magnitude, uz),
-            _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(live, kd), closing), closing), stretch};
+// Always inlined into a kernel with the instructions enabled, so the vector arguments never
+// cross a call: GCC's note on their calling convention does not apply.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+template <class V, class Count>
+[[gnu::always_inline]] inline SpringLanes<V> springLanes(V dx, V dy, V dz, V dvx, V dvy, V dvz, V rest, V ks,
+                                                         V kd, Count& shortCount) {
+    const V zero{}, one = zero + 1.0, eps = zero + kDegenerateLength;
+    const V length2 = (dx * dx + dy * dy) + dz * dz;
+    shortCount -= length2 < eps * eps;  // a true comparison is -1 in each lane
+    const V length = vectorSqrt(length2);
+    const auto tooShort = length < eps;
+    const V inv = one / (tooShort ? eps : length);
+    const V live = tooShort ? zero : one;
+    const V ux = dx * inv, uy = dy * inv, uz = dz * inv;
+    const V closing = (dvx * ux + dvy * uy) + dvz * uz;
+    const V stretch = length - rest;
+    const V magnitude = live * (ks * stretch + kd * closing);
+    return {magnitude * ux, magnitude * uy, magnitude * uz, ((live * kd) * closing) * closing, stretch};
+}
+#pragma GCC diagnostic pop
+
+// Per-lane counts (the type a comparison of V gives) and their total.
+template <class V>
+using LaneCount = decltype(V{} < V{});
+template <class Count>
+[[gnu::always_inline]] inline int laneTotal(Count count) {
+    long long total = 0;
+    for (std::size_t l = 0; l < sizeof(Count) / sizeof(long long); ++l) total += count[l];
+    return static_cast<int>(total);
 }
 
 SIMCORE_AVX2
@@ -259,7 +299,7 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
     const double* rest = springs.rest.data() + begin;
     const std::size_t count = end - begin;
     const __m256d vks = _mm256_set1_pd(ks), vkd = _mm256_set1_pd(kd), zero = _mm256_setzero_pd();
-    int shortSprings = 0;    // a local count: a reference could alias the index arrays
+    LaneCount<Vec4> shortSprings{};
     __m256d lanes = zero;    // damping power, spring k in lane k mod 4
     __m256d squares = zero;  // (L - L0)^2, the same way
     std::size_t k = 0;
@@ -273,7 +313,7 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
         __m256d dx, dy, dz, dvx, dvy, dvz;
         toColumns(d[0], d[1], d[2], d[3], dx, dy, dz);
         toColumns(dv[0], dv[1], dv[2], dv[3], dvx, dvy, dvz);
-        const SpringLanes lane = springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(rest + k), vks, vkd, shortSprings);
+        const SpringLanes<Vec4> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(rest + k), vks, vkd, shortSprings);
         lanes = _mm256_add_pd(lanes, lane.power);
         squares = _mm256_add_pd(squares, _mm256_mul_pd(lane.stretch, lane.stretch));
         __m256d force[4];
@@ -283,7 +323,7 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
             subRow(f4, ib[k + l], force[l]);
         }
     }
-    degenerate += shortSprings;
+    degenerate += laneTotal(shortSprings);
     alignas(32) double lane[4], square[4];
     _mm256_store_pd(lane, lanes);
     _mm256_store_pd(square, squares);
@@ -304,35 +344,35 @@ SIMCORE_AVX2 inline __m256d cross(__m256d p, __m256d q, __m256d r, __m256d s) {
     return _mm256_sub_pd(_mm256_mul_pd(p, q), _mm256_mul_pd(r, s));
 }
 
+// Triangles tri[0..3]: their gradients added to g4 in order; returns their x_a.(x_b x x_c).
+SIMCORE_AVX2 inline __m256d triangleGroupAvx2(const std::array<int, 3>* tri, const double* x, double* g4) {
+    const __m256d sixth = _mm256_set1_pd(6.0);
+    __m256d ax, ay, az, bx, by, bz, cx, cy, cz;
+    toColumns(loadRow(x, tri[0][0]), loadRow(x, tri[1][0]), loadRow(x, tri[2][0]), loadRow(x, tri[3][0]), ax, ay, az);
+    toColumns(loadRow(x, tri[0][1]), loadRow(x, tri[1][1]), loadRow(x, tri[2][1]), loadRow(x, tri[3][1]), bx, by, bz);
+    toColumns(loadRow(x, tri[0][2]), loadRow(x, tri[1][2]), loadRow(x, tri[2][2]), loadRow(x, tri[3][2]), cx, cy, cz);
+    // The portable triangleMath, operation by operation.
+    const __m256d volume6 = _mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(ax, cross(by, cz, bz, cy)), _mm256_mul_pd(ay, cross(bz, cx, bx, cz))),
+        _mm256_mul_pd(az, cross(bx, cy, by, cx)));
+    const __m256d ux = _mm256_sub_pd(bx, ax), uy = _mm256_sub_pd(by, ay), uz = _mm256_sub_pd(bz, az);
+    const __m256d wx = _mm256_sub_pd(cx, ax), wy = _mm256_sub_pd(cy, ay), wz = _mm256_sub_pd(cz, az);
+    __m256d gradient[4];
+    toRows(_mm256_div_pd(cross(uy, wz, uz, wy), sixth), _mm256_div_pd(cross(uz, wx, ux, wz), sixth),
+           _mm256_div_pd(cross(ux, wy, uy, wx), sixth), gradient);
+    for (int l = 0; l < 4; ++l)
+        for (int corner : tri[l]) addRow(g4, corner, gradient[l]);
+    return volume6;
+}
+
 SIMCORE_AVX2
 double triangleBlockAvx2(const Surface& surface, std::size_t begin, std::size_t end,
                          const double* x, double* g4, Scratch& scratch) {
     const std::array<int, 3>* tri = surface.triangles.data() + begin;
     const std::size_t count = end - begin;
-    const __m256d sixth = _mm256_set1_pd(6.0);
     __m256d lanes = _mm256_setzero_pd();  // x_a.(x_b x x_c), triangle k in lane k mod 4
     std::size_t k = 0;
-    for (; k + 4 <= count; k += 4) {
-        __m256d ax, ay, az, bx, by, bz, cx, cy, cz;
-        toColumns(loadRow(x, tri[k][0]), loadRow(x, tri[k + 1][0]), loadRow(x, tri[k + 2][0]),
-                  loadRow(x, tri[k + 3][0]), ax, ay, az);
-        toColumns(loadRow(x, tri[k][1]), loadRow(x, tri[k + 1][1]), loadRow(x, tri[k + 2][1]),
-                  loadRow(x, tri[k + 3][1]), bx, by, bz);
-        toColumns(loadRow(x, tri[k][2]), loadRow(x, tri[k + 1][2]), loadRow(x, tri[k + 2][2]),
-                  loadRow(x, tri[k + 3][2]), cx, cy, cz);
-        // The portable triangleMath, operation by operation.
-        const __m256d volume6 = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(ax, cross(by, cz, bz, cy)), _mm256_mul_pd(ay, cross(bz, cx, bx, cz))),
-            _mm256_mul_pd(az, cross(bx, cy, by, cx)));
-        lanes = _mm256_add_pd(lanes, volume6);
-        const __m256d ux = _mm256_sub_pd(bx, ax), uy = _mm256_sub_pd(by, ay), uz = _mm256_sub_pd(bz, az);
-        const __m256d wx = _mm256_sub_pd(cx, ax), wy = _mm256_sub_pd(cy, ay), wz = _mm256_sub_pd(cz, az);
-        __m256d gradient[4];
-        toRows(_mm256_div_pd(cross(uy, wz, uz, wy), sixth), _mm256_div_pd(cross(uz, wx, ux, wz), sixth),
-               _mm256_div_pd(cross(ux, wy, uy, wx), sixth), gradient);
-        for (int l = 0; l < 4; ++l)
-            for (int corner : tri[k + static_cast<std::size_t>(l)]) addRow(g4, corner, gradient[l]);
-    }
+    for (; k + 4 <= count; k += 4) lanes = _mm256_add_pd(lanes, triangleGroupAvx2(tri + k, x, g4));
     alignas(32) double lane[4];
     _mm256_store_pd(lane, lanes);
     if (k < count) {
@@ -360,54 +400,164 @@ void unpadAvx2(const double* f4, const double* g4, double p, const double* invMa
     unpadPortable(f4, g4, p, invMass3, i, end, out);
 }
 
+// One quad: lanes (a, b), (A, B), (A, b), (B, a), the arithmetic of springArithmetic; its
+// forces added to f4, its sums to the given accumulators.
+SIMCORE_AVX2 inline void quadAvx2(int a, int b, int n, const double* rest, __m256d ks, __m256d kd,
+                                  const double* x, const double* v, double* f4, __m256d& power,
+                                  __m256d& square, LaneCount<Vec4>& shortCount) {
+    const int A = a + n, B = b + n;
+    const __m256d xa = loadRow(x, a), xb = loadRow(x, b), xA = loadRow(x, A), xB = loadRow(x, B);
+    const __m256d va = loadRow(v, a), vb = loadRow(v, b), vA = loadRow(v, A), vB = loadRow(v, B);
+    __m256d dx, dy, dz, dvx, dvy, dvz;
+    toColumns(_mm256_sub_pd(xb, xa), _mm256_sub_pd(xB, xA), _mm256_sub_pd(xb, xA), _mm256_sub_pd(xa, xB), dx, dy, dz);
+    toColumns(_mm256_sub_pd(vb, va), _mm256_sub_pd(vB, vA), _mm256_sub_pd(vb, vA), _mm256_sub_pd(va, vB), dvx, dvy, dvz);
+    const SpringLanes<Vec4> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(rest), ks, kd, shortCount);
+    power = _mm256_add_pd(power, lane.power);
+    square = _mm256_add_pd(square, _mm256_mul_pd(lane.stretch, lane.stretch));
+    __m256d F[4];
+    toRows(lane.fx, lane.fy, lane.fz, F);
+    addRow(f4, a, _mm256_sub_pd(F[0], F[3]));
+    subRow(f4, b, _mm256_add_pd(F[0], F[2]));
+    addRow(f4, A, _mm256_add_pd(F[1], F[2]));
+    addRow(f4, B, _mm256_sub_pd(F[3], F[1]));
+}
+
+SIMCORE_AVX2 inline QuadSums finishQuads(__m256d evenPower, __m256d oddPower, __m256d evenSquare,
+                                         __m256d oddSquare) {
+    alignas(32) double power[2][4], square[2][4];
+    _mm256_store_pd(power[0], evenPower);
+    _mm256_store_pd(power[1], oddPower);
+    _mm256_store_pd(square[0], evenSquare);
+    _mm256_store_pd(square[1], oddSquare);
+    return combineQuadLanes(power, square);
+}
+
 SIMCORE_AVX2
 QuadSums quadBlockAvx2(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
                        std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
                        const double* v, double* f4, int& degenerate) {
-    // One quad per iteration: lanes (a, b), (A, B), (A, b), (B, a). The arithmetic is
-    // quadLane's, operation by operation.
     const __m256d vks = _mm256_setr_pd(ks[0], ks[0], ks[1], ks[1]);
-    const __m256d vkd = _mm256_setr_pd(kd[0], kd[0], kd[1], kd[1]), zero = _mm256_setzero_pd();
-    __m256d powerLanes = zero, squareLanes = zero;
-    int shortSprings = 0;  // a local count: a reference could alias the index arrays
+    const __m256d vkd = _mm256_setr_pd(kd[0], kd[0], kd[1], kd[1]);
+    __m256d power[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, square[2] = {power[0], power[0]};
+    LaneCount<Vec4> shortSprings{};
     for (std::size_t q = begin; q < end; ++q) {
-        const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
-        const __m256d xa = loadRow(x, a), xb = loadRow(x, b), xA = loadRow(x, A), xB = loadRow(x, B);
-        const __m256d va = loadRow(v, a), vb = loadRow(v, b), vA = loadRow(v, A), vB = loadRow(v, B);
-        __m256d dx, dy, dz, dvx, dvy, dvz;
-        toColumns(_mm256_sub_pd(xb, xa), _mm256_sub_pd(xB, xA), _mm256_sub_pd(xb, xA), _mm256_sub_pd(xa, xB),
-                  dx, dy, dz);
-        toColumns(_mm256_sub_pd(vb, va), _mm256_sub_pd(vB, vA), _mm256_sub_pd(vb, vA), _mm256_sub_pd(va, vB),
-                  dvx, dvy, dvz);
-        const SpringLanes lane =
-            springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(quads.rest[q].data()), vks, vkd, shortSprings);
-        powerLanes = _mm256_add_pd(powerLanes, lane.power);
-        squareLanes = _mm256_add_pd(squareLanes, _mm256_mul_pd(lane.stretch, lane.stretch));
-        __m256d F[4];
-        toRows(lane.fx, lane.fy, lane.fz, F);
-        addRow(f4, a, _mm256_sub_pd(F[0], F[3]));
-        subRow(f4, b, _mm256_add_pd(F[0], F[2]));
-        addRow(f4, A, _mm256_add_pd(F[1], F[2]));
-        addRow(f4, B, _mm256_sub_pd(F[3], F[1]));
+        const std::size_t parity = (q - begin) & 1;
+        quadAvx2(quads.a[q], quads.b[q], n, quads.rest[q].data(), vks, vkd, x, v, f4, power[parity],
+                 square[parity], shortSprings);
     }
-    degenerate += shortSprings;
-    alignas(32) double power[4], square[4];
-    _mm256_store_pd(power, powerLanes);
-    _mm256_store_pd(square, squareLanes);
-    return {(power[0] + power[1]) + (power[2] + power[3]), {square[0] + square[1], square[2] + square[3]}};
+    degenerate += laneTotal(shortSprings);
+    return finishQuads(power[0], power[1], square[0], square[1]);
 }
+
+#if SIMCORE_AVX512_KERNELS
+
+// Rows of particles p and q in one register: [p | q].
+SIMCORE_AVX512 inline __m512d loadPair(const double* a, int p, int q) {
+    return _mm512_insertf64x4(_mm512_castpd256_pd512(loadRow(a, p)), loadRow(a, q), 1);
+}
+
+// Four registers of row pairs [r_j | r'_j] to three columns whose lanes hold
+// (j = 0, 1, 0', 1', 2, 3, 2', 3').
+SIMCORE_AVX512 inline void toColumns8(__m512d r0, __m512d r1, __m512d r2, __m512d r3, __m512d& X,
+                                      __m512d& Y, __m512d& Z) {
+    const __m512d t0 = _mm512_unpacklo_pd(r0, r1);  // x0 x1 z0 z1 | x0' x1' z0' z1'
+    const __m512d t1 = _mm512_unpackhi_pd(r0, r1);  // y0 y1 w0 w1 | y0' y1' w0' w1'
+    const __m512d t2 = _mm512_unpacklo_pd(r2, r3);  // x2 x3 z2 z3 | x2' x3' z2' z3'
+    const __m512d t3 = _mm512_unpackhi_pd(r2, r3);  // y2 y3 w2 w3 | y2' y3' w2' w3'
+    X = _mm512_shuffle_f64x2(t0, t2, 0x88);  // 128-bit pieces 0, 2 of t0, then 0, 2 of t2
+    Y = _mm512_shuffle_f64x2(t1, t3, 0x88);
+    Z = _mm512_shuffle_f64x2(t0, t2, 0xdd);  // pieces 1, 3 of t0, then 1, 3 of t2
+}
+
+// Three such columns back to row pairs (x, y, z, 0): r[j] = [row j | row j'].
+SIMCORE_AVX512 inline void toRows8(__m512d X, __m512d Y, __m512d Z, __m512d (&r)[4]) {
+    const __m512d zero = _mm512_setzero_pd();
+    const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11);
+    const __m512i second = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
+    const __m512d t0 = _mm512_unpacklo_pd(X, Y);     // x0 y0 x0' y0' | x2 y2 x2' y2'
+    const __m512d t1 = _mm512_unpackhi_pd(X, Y);     // x1 y1 x1' y1' | x3 y3 x3' y3'
+    const __m512d t2 = _mm512_unpacklo_pd(Z, zero);  // z0 0 z0' 0 | z2 0 z2' 0
+    const __m512d t3 = _mm512_unpackhi_pd(Z, zero);  // z1 0 z1' 0 | z3 0 z3' 0
+    r[0] = _mm512_permutex2var_pd(t0, first, t2);
+    r[1] = _mm512_permutex2var_pd(t1, first, t3);
+    r[2] = _mm512_permutex2var_pd(t0, second, t2);
+    r[3] = _mm512_permutex2var_pd(t1, second, t3);
+}
+
+SIMCORE_AVX512 inline __m256d low(__m512d v) { return _mm512_castpd512_pd256(v); }
+SIMCORE_AVX512 inline __m256d high(__m512d v) { return _mm512_extractf64x4_pd(v, 1); }
+
+SIMCORE_AVX512
+QuadSums quadBlockAvx512(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
+                         std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
+                         const double* v, double* f4, int& degenerate) {
+    // Two quads q (even) and q' (odd) per iteration; lanes (0, 1, 0', 1', 2, 3, 2', 3') of the
+    // four springs (a, b), (A, B), (A, b), (B, a), so lanes 0-3 are structural, 4-7 shear.
+    const __m512d vks = _mm512_setr_pd(ks[0], ks[0], ks[0], ks[0], ks[1], ks[1], ks[1], ks[1]);
+    const __m512d vkd = _mm512_setr_pd(kd[0], kd[0], kd[0], kd[0], kd[1], kd[1], kd[1], kd[1]);
+    const __m512d zero = _mm512_setzero_pd();
+    const __m512i restOrder = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11);
+    __m512d power = zero, square = zero;
+    LaneCount<Vec8> shortSprings{};
+    std::size_t q = begin;
+    for (; q + 2 <= end; q += 2) {
+        const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
+        const int a1 = quads.a[q + 1], b1 = quads.b[q + 1], A1 = a1 + n, B1 = b1 + n;
+        const __m512d xa = loadPair(x, a, a1), xb = loadPair(x, b, b1), xA = loadPair(x, A, A1), xB = loadPair(x, B, B1);
+        const __m512d va = loadPair(v, a, a1), vb = loadPair(v, b, b1), vA = loadPair(v, A, A1), vB = loadPair(v, B, B1);
+        __m512d dx, dy, dz, dvx, dvy, dvz;
+        toColumns8(_mm512_sub_pd(xb, xa), _mm512_sub_pd(xB, xA), _mm512_sub_pd(xb, xA), _mm512_sub_pd(xa, xB), dx, dy, dz);
+        toColumns8(_mm512_sub_pd(vb, va), _mm512_sub_pd(vB, vA), _mm512_sub_pd(vb, vA), _mm512_sub_pd(va, vB), dvx, dvy, dvz);
+        const __m512d rest = _mm512_permutex2var_pd(_mm512_castpd256_pd512(_mm256_loadu_pd(quads.rest[q].data())), restOrder,
+                                                    _mm512_castpd256_pd512(_mm256_loadu_pd(quads.rest[q + 1].data())));
+        const SpringLanes<Vec8> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, rest, vks, vkd, shortSprings);
+        power = _mm512_add_pd(power, lane.power);
+        square = _mm512_add_pd(square, _mm512_mul_pd(lane.stretch, lane.stretch));
+        __m512d F[4];  // [F_j | F_j'] per spring j
+        toRows8(lane.fx, lane.fy, lane.fz, F);
+        const __m512d fa = _mm512_sub_pd(F[0], F[3]), fb = _mm512_add_pd(F[0], F[2]);
+        const __m512d fA = _mm512_add_pd(F[1], F[2]), fB = _mm512_sub_pd(F[3], F[1]);
+        addRow(f4, a, low(fa));
+        subRow(f4, b, low(fb));
+        addRow(f4, A, low(fA));
+        addRow(f4, B, low(fB));
+        addRow(f4, a1, high(fa));
+        subRow(f4, b1, high(fb));
+        addRow(f4, A1, high(fA));
+        addRow(f4, B1, high(fB));
+    }
+    // Lanes (0, 1, 0', 1', 2, 3, 2', 3') to the even and odd accumulators.
+    const __m512i evenLanes = _mm512_setr_epi64(0, 1, 4, 5, 0, 0, 0, 0);
+    const __m512i oddLanes = _mm512_setr_epi64(2, 3, 6, 7, 0, 0, 0, 0);
+    __m256d evenPower = low(_mm512_permutexvar_pd(evenLanes, power));
+    __m256d evenSquare = low(_mm512_permutexvar_pd(evenLanes, square));
+    const __m256d oddPower = low(_mm512_permutexvar_pd(oddLanes, power));
+    const __m256d oddSquare = low(_mm512_permutexvar_pd(oddLanes, square));
+    LaneCount<Vec4> tailShort{};
+    if (q < end)  // an odd count: the last quad is an even one
+        quadAvx2(quads.a[q], quads.b[q], n, quads.rest[q].data(), _mm256_setr_pd(ks[0], ks[0], ks[1], ks[1]),
+                 _mm256_setr_pd(kd[0], kd[0], kd[1], kd[1]), x, v,
+                 f4, evenPower, evenSquare, tailShort);
+    degenerate += laneTotal(shortSprings) + laneTotal(tailShort);
+    return finishQuads(evenPower, oddPower, evenSquare, oddSquare);
+}
+
+#endif  // SIMCORE_AVX512_KERNELS
 
 #endif  // SIMCORE_AVX2_KERNELS
 
-bool detectAvx2() {
-#if SIMCORE_AVX2_KERNELS
-    return __builtin_cpu_supports("avx2");
-#else
-    return false;
+KernelSet detectWidest() {
+#if SIMCORE_AVX512_KERNELS
+    // libgcc's check includes the OS saving the registers (XCR0).
+    if (__builtin_cpu_supports("avx512f")) return KernelSet::Avx512;
 #endif
+#if SIMCORE_AVX2_KERNELS
+    if (__builtin_cpu_supports("avx2")) return KernelSet::Avx2;
+#endif
+    return KernelSet::Portable;
 }
 
-std::atomic<bool> g_useAvx2{detectAvx2()};
+std::atomic<KernelSet> g_kernels{detectWidest()};
 
 }  // namespace
 
@@ -429,23 +579,32 @@ Scratch::Scratch() : storage(new double[8 * kBlock]()) {
     }
 }
 
-bool avx2Available() {
-    static const bool available = detectAvx2();
-    return available;
+const char* kernelSetName(KernelSet set) {
+    switch (set) {
+        case KernelSet::Portable: return "portable";
+        case KernelSet::Avx2: return "avx2";
+        case KernelSet::Avx512: return "avx512";
+    }
+    return "?";
 }
 
-bool useAvx2(bool on) {
-    g_useAvx2.store(on && avx2Available(), std::memory_order_relaxed);
-    return usingAvx2();
+KernelSet widestKernels() {
+    static const KernelSet widest = detectWidest();
+    return widest;
 }
 
-bool usingAvx2() { return g_useAvx2.load(std::memory_order_relaxed); }
+KernelSet useKernels(KernelSet wanted) {
+    g_kernels.store(std::min(wanted, widestKernels()), std::memory_order_relaxed);
+    return kernelsInUse();
+}
+
+KernelSet kernelsInUse() { return g_kernels.load(std::memory_order_relaxed); }
 
 SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
                        double kd, const double* x, const double* v, double* f4, int& degenerate,
                        Scratch& scratch) {
 #if SIMCORE_AVX2_KERNELS
-    if (usingAvx2()) return springBlockAvx2(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
+    if (kernelsInUse() >= KernelSet::Avx2) return springBlockAvx2(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
 #endif
     return springBlockPortable(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
 }
@@ -453,8 +612,11 @@ SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t 
 QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
                    std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
                    const double* v, double* f4, int& degenerate) {
+#if SIMCORE_AVX512_KERNELS
+    if (kernelsInUse() == KernelSet::Avx512) return quadBlockAvx512(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
+#endif
 #if SIMCORE_AVX2_KERNELS
-    if (usingAvx2()) return quadBlockAvx2(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
+    if (kernelsInUse() >= KernelSet::Avx2) return quadBlockAvx2(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
 #endif
     return quadBlockPortable(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
 }
@@ -462,7 +624,7 @@ QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int
 double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end, const double* x,
                      double* g4, Scratch& scratch) {
 #if SIMCORE_AVX2_KERNELS
-    if (usingAvx2()) return triangleBlockAvx2(surface, begin, end, x, g4, scratch);
+    if (kernelsInUse() >= KernelSet::Avx2) return triangleBlockAvx2(surface, begin, end, x, g4, scratch);
 #endif
     return triangleBlockPortable(surface, begin, end, x, g4, scratch);
 }
@@ -470,7 +632,7 @@ double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end,
 void unpad(const double* f4, const double* g4, double p, const double* invMass3, int begin, int end,
            double* out) {
 #if SIMCORE_AVX2_KERNELS
-    if (usingAvx2()) return unpadAvx2(f4, g4, p, invMass3, begin, end, out);
+    if (kernelsInUse() >= KernelSet::Avx2) return unpadAvx2(f4, g4, p, invMass3, begin, end, out);
 #endif
     unpadPortable(f4, g4, p, invMass3, begin, end, out);
 }

@@ -6,12 +6,16 @@
 // force is one aligned 256-bit load and store. Positions and velocities are read in the
 // state's own layout (3 doubles per particle).
 //
-// Two implementations of every kernel give bit-identical results (tested):
+// Up to three implementations of every kernel give bit-identical results (tested):
 //  - portable: a gather pass into structure-of-arrays scratch, arithmetic the compiler
 //    vectorises, a scatter pass;
 //  - AVX2 (x86-64, picked at run time when the CPU has it): four springs or triangles at a
 //    time, loaded as rows and transposed in registers, the same arithmetic in the same order
-//    (no FMA: each operation rounds as in the portable code), transposed back and added.
+//    (no FMA: each operation rounds as in the portable code), transposed back and added;
+//  - AVX-512 (picked when the CPU and the OS have it): the edge quads two at a time, eight
+//    lanes wide (the other kernels are AVX2's: eight-wide triangles measured slower).
+// The sums a block returns (damping power, stretch, volume) are defined lane by lane (see
+// QuadSums, sumLanes) so that every implementation adds the same numbers in the same order.
 
 #include <array>
 #include <cstddef>
@@ -39,12 +43,15 @@ struct Scratch {
 // then (l0 + l1) + (l2 + l3)): independent add chains in an order fixed by n alone.
 double sumLanes(const double* v, std::size_t n);
 
-// Whether the AVX2 kernels exist in this build and the CPU runs them.
-bool avx2Available();
-// Selects the AVX2 kernels (when available) or the portable ones, for every thread; returns
-// whether AVX2 is now in use. Meant for tests and benchmarks comparing the two.
-bool useAvx2(bool on);
-bool usingAvx2();
+// The implementations, from the plainest to the widest.
+enum class KernelSet { Portable, Avx2, Avx512 };
+const char* kernelSetName(KernelSet set);
+// The widest implementation this build and this CPU can run.
+KernelSet widestKernels();
+// Selects `wanted`, or the widest available one below it, for every thread; returns the one
+// now in use. Meant for tests and benchmarks comparing them (the default is the widest).
+KernelSet useKernels(KernelSet wanted);
+KernelSet kernelsInUse();
 
 // Sums over a block of springs, each in four interleaved lanes (see sumLanes).
 struct SpringSums {
@@ -70,7 +77,10 @@ struct QuadSet {
     std::size_t size() const { return a.size(); }
 };
 
-// Sums over a block of quads: lanes 0-1 are structural springs, lanes 2-3 shear springs.
+// Sums over a block of quads. Quad j of the block (j = q - begin) adds lane l's damping power
+// and squared stretch into accumulator [j % 2][l], in order; lane l's sum is then
+// [0][l] + [1][l]. power = (l0 + l1) + (l2 + l3); lanes 0-1 are the structural springs,
+// lanes 2-3 the shear springs.
 struct QuadSums {
     double power = 0.0;  // damping power of all four [W]
     std::array<double, 2> stretch2{};  // (L - L0)^2 of [structural, shear] springs [m^2]

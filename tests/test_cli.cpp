@@ -115,6 +115,7 @@ private slots:
         QTest::newRow("unknown option") << QStringList{"run", "--color"} << "--color";
         QTest::newRow("unwritable csv") << QStringList{"run", "--csv", "/nonexistent-dir/x.csv"} << "/nonexistent-dir/x.csv";
         QTest::newRow("unknown command") << QStringList{"fly"} << "fly";
+        QTest::newRow("unknown kernels") << QStringList{"bench", "--kernels", "sse9"} << "sse9";
         QTest::newRow("crossed radii") << QStringList{"run", "--set", "radius_inner=3"} << "radius_inner";
         QTest::newRow("beyond the memory limit")
             << QStringList{"run", "--scene", "sphere3d-latlong", "--set", "slices=1024", "--set", "stacks=512"}
@@ -128,6 +129,47 @@ private slots:
         QCOMPARE(r.err.trimmed().count('\n'), 0);  // one line
         QVERIFY2(r.err.contains(mentions), qPrintable(r.err));
         QVERIFY(r.out.isEmpty());
+    }
+    // bench: one row per run with the header's columns; the body's counts, the steps and the
+    // kernels used are reported as they are; times are positive and consistent.
+    void benchReportsTheRunItTimed_data() {
+        QTest::addColumn<QString>("kernels");
+        QTest::newRow("default") << "";
+        QTest::newRow("portable") << "portable";
+        QTest::newRow("avx512") << "avx512";
+    }
+    void benchReportsTheRunItTimed() {
+        QFETCH(QString, kernels);
+        QStringList args{"bench", "--scene", "sphere3d", "--set", "subdivisions=2", "--steps", "30",
+                         "--threads", "2", "--integrator", "verlet", "--header"};
+        if (!kernels.isEmpty()) args << "--kernels" << kernels;
+        const Result r = cli(args);
+        QCOMPARE(r.code, 0);
+        const QStringList lines = r.out.trimmed().split('\n');
+        QCOMPARE(lines.size(), 2);
+        const QStringList header = lines[0].split(','), row = lines[1].split(',');
+        QCOMPARE(header, (QStringList{"scene", "integrator", "threads", "particles", "springs", "faces", "steps",
+                                      "us_per_step", "ns_per_spring_eval", "steps_per_second", "real_time_factor",
+                                      "build_seconds", "peak_rss_mib", "kernels"}));
+        QCOMPARE(row.size(), header.size());
+        auto at = [&](const char* column) { return row[header.indexOf(column)]; };
+        QCOMPARE(at("scene"), QString("sphere3d"));
+        QCOMPARE(at("integrator"), QString("verlet"));
+        // Level 2: 2 x 66 particles, 834 springs, 2 x 128 triangles; one chunk below 8,192
+        // springs, so a second thread is not started.
+        QCOMPARE(at("particles"), QString("132"));
+        QCOMPARE(at("springs"), QString("834"));
+        QCOMPARE(at("faces"), QString("256"));
+        QCOMPARE(at("steps"), QString("30"));
+        const double us = at("us_per_step").toDouble(), rate = at("steps_per_second").toDouble();
+        QVERIFY(us > 0.0 && at("ns_per_spring_eval").toDouble() > 0.0 && at("peak_rss_mib").toDouble() > 0.0);
+        QVERIFY(std::abs(rate * us / 1e6 - 1.0) < 0.01);  // steps/s = 1e6 / us per step (rounded)
+        QVERIFY(std::abs(at("real_time_factor").toDouble() / (rate * 0.003) - 1.0) < 0.01);  // DT 0.003
+        const QStringList sets{"portable", "avx2", "avx512"};
+        QVERIFY(sets.contains(at("kernels")));
+        if (kernels == "portable") QCOMPARE(at("kernels"), QString("portable"));
+        // Asking for more than the CPU has falls back; never wider than asked.
+        if (!kernels.isEmpty()) QVERIFY(sets.indexOf(at("kernels")) <= sets.indexOf(kernels));
     }
     void failedRunExitsWithThreeAndKeepsGoodRows() {
         const QString csv = path("fail.csv"), state = path("fail-state.csv");

@@ -117,41 +117,56 @@ private slots:
         QVERIFY(accel == Eigen::VectorXd(fast.cwiseProduct(invMass3)));  // bit for bit
         QVERIFY(accel[3 * 7 + 1] != 0.0);  // the grabbed particle's row is not a fixed one
     }
-    // The AVX2 kernels do the portable kernels' arithmetic in the same order: the two give
-    // bit-identical trajectories (so results do not depend on the CPU the lab runs on).
+    // The AVX2 and AVX-512 kernels do the portable kernels' arithmetic in the same order: all
+    // give bit-identical trajectories (so results do not depend on the CPU the lab runs on).
     void vectorKernelsMatchPortableBitForBit_data() {
         QTest::addColumn<QString>("scene");
         QTest::newRow("sphere3d L4") << "sphere3d";
-        QTest::newRow("latlong 30x15") << "sphere3d-latlong";
+        QTest::newRow("latlong 31x16") << "sphere3d-latlong";
         QTest::newRow("ring2d 3001") << "ring2d";
     }
     void vectorKernelsMatchPortableBitForBit() {
-        if (!kernels::avx2Available()) QSKIP("this CPU has no AVX2");
+        if (kernels::widestKernels() == kernels::KernelSet::Portable) QSKIP("this CPU has neither AVX2 nor AVX-512");
         QFETCH(QString, scene);
         ParameterSet p(findScene(scene.toStdString())->kind);
         if (scene == "sphere3d") p.set("subdivisions", 4);
         if (scene == "sphere3d-latlong") {
-            p.set("slices", 30);  // block remainders: neither springs nor faces a multiple of 4
-            p.set("stacks", 15);
+            p.set("slices", 31);  // block remainders: neither springs nor faces a multiple of 8,
+            p.set("stacks", 16);  // and an odd number of quads (checked below)
         }
         if (scene == "ring2d") p.set("particles", 3001);
         p.set("perturb", 0.02);
         p.set("gravity", 0.0);  // no floor contact: every step exercises only the forces
         p.set("dt", 5e-4);      // within the stability limit of the finest lat/long cells
         bool stepped = true;
-        auto run = [&](bool avx2) {
-            kernels::useAvx2(avx2);
+        auto run = [&](kernels::KernelSet set) {
+            const kernels::KernelSet inUse = kernels::useKernels(set);
             Simulation sim(p, "rk4");
             sim.setThreads(2);
             for (int i = 0; i < 40; ++i) stepped = sim.step() && stepped;
-            return Eigen::VectorXd(sim.state());
+            kernels::useKernels(kernels::widestKernels());
+            return std::pair{inUse, Eigen::VectorXd(sim.state())};
         };
-        const Eigen::VectorXd portable = run(false);
-        QVERIFY(!kernels::usingAvx2());
-        const Eigen::VectorXd vector = run(true);
-        QVERIFY(kernels::usingAvx2());
+        const auto [portableSet, portable] = run(kernels::KernelSet::Portable);
+        QVERIFY(portableSet == kernels::KernelSet::Portable);
         QVERIFY(stepped);
-        QVERIFY(portable == vector);  // bit for bit
+        for (kernels::KernelSet set : {kernels::KernelSet::Avx2, kernels::KernelSet::Avx512}) {
+            if (set > kernels::widestKernels()) {
+                qInfo("%s kernels not available on this CPU: not compared", kernels::kernelSetName(set));
+                continue;
+            }
+            const auto [inUse, vector] = run(set);
+            QVERIFY(inUse == set);
+            QVERIFY(stepped);
+            QVERIFY2(portable == vector, kernels::kernelSetName(set));  // bit for bit
+        }
+        if (scene == "sphere3d-latlong") {
+            // One chunk (below the threshold), so its last block of quads has an odd count:
+            // the AVX-512 kernel's single-quad tail is exercised.
+            const Simulation one(p, "rk4");
+            QCOMPARE(one.forces().chunks(), 1);
+            QVERIFY(one.forces().quadCount() % 2 == 1);
+        }
         // Every mesh edge's four springs (inner, outer, two shear) form one quad.
         const Simulation sim(p, "rk4");
         const Topology& topo = sim.topology();

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cli.h"
+#include "force_kernels.h"
 #include "simulation.h"
 
 namespace cli {
@@ -21,12 +22,25 @@ long peakResidentKiB() {
 
 int commandBench(const std::vector<std::string>& args) {
     auto names = sceneOptionNames();
-    names.insert(names.end(), {"steps", "threads", "warmup"});
+    names.insert(names.end(), {"steps", "threads", "warmup", "kernels"});
     Options options(args, names, {"header"});
     SceneSetup setup = sceneSetup(options);
     const long steps = options.integer("steps", 200, 1, 100000000L);
     const long warmup = options.integer("warmup", 10, 0, 1000000L);
     const long threads = options.integer("threads", simcore::hardwareThreads(), 1, 256);
+    // The force kernels to time (default: the widest this CPU runs); the row names the set
+    // actually used, which is narrower when the CPU lacks the one asked for.
+    namespace kernels = simcore::kernels;
+    if (options.has("kernels")) {
+        const std::string wanted = options.value("kernels");
+        bool known = false;
+        for (auto set : {kernels::KernelSet::Portable, kernels::KernelSet::Avx2, kernels::KernelSet::Avx512})
+            if (wanted == kernels::kernelSetName(set)) {
+                kernels::useKernels(set);
+                known = true;
+            }
+        if (!known) throw UsageError("--kernels: '" + wanted + "' is not one of portable, avx2, avx512");
+    }
 
     const auto buildStart = std::chrono::steady_clock::now();
     simcore::Simulation sim(setup.params, setup.integrator);
@@ -51,11 +65,11 @@ int commandBench(const std::vector<std::string>& args) {
     const double realTime = sim.dt() / (seconds / static_cast<double>(steps));
     if (options.has("header"))
         std::printf("scene,integrator,threads,particles,springs,faces,steps,us_per_step,ns_per_spring_eval,"
-                    "steps_per_second,real_time_factor,build_seconds,peak_rss_mib\n");
-    std::printf("%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f\n", setup.sceneName.c_str(),
+                    "steps_per_second,real_time_factor,build_seconds,peak_rss_mib,kernels\n");
+    std::printf("%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%s\n", setup.sceneName.c_str(),
                 setup.integrator.c_str(), sim.threads(), topo.particleCount(), topo.springCount(), faces,
                 steps, usPerStep, nsPerSpring, 1e6 / usPerStep, realTime, buildSeconds,
-                static_cast<double>(peakResidentKiB()) / 1024.0);
+                static_cast<double>(peakResidentKiB()) / 1024.0, kernels::kernelSetName(kernels::kernelsInUse()));
     return kExitOk;
 }
 

@@ -25,7 +25,9 @@ commands:
                                   for fixed-step methods, Newton iterations of implicit-euler
 
   bench --scene S [--set key=value]... [--integrator NAME] [--steps N] [--threads K] [--header]
-                                  time N steps: us/step, ns per spring evaluation, real-time factor, memory
+      [--kernels portable|avx2|avx512]
+                                  time N steps: us/step, ns per spring evaluation, real-time factor,
+                                  memory, and the force kernels used (default: the widest the CPU runs)
 
   study --scene S [--set key=value]... --integrators a,b,... --dts h1,h2,... [--tols t1,...]
       [--duration T] [--repeat R] [--reference auto|exact|rk4|rk45] [--csv FILE] [--plot FILE.svg]
