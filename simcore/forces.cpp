@@ -300,7 +300,12 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
             }
         }
     }
-    if (!m_terms.has(Term::Gas)) return;
+    if (m_terms.has(Term::Gas)) accumulateGas(part, x, scratch, g4, sums);
+}
+
+void ForceModel::accumulateGas(const Part& part, const double* x, kernels::Scratch& scratch, double* g4,
+                               Sums& sums) const {
+    using kernels::kBlock;
     for (const Surface& s : part.surfaces) {
         // The unscaled gradient dV/dx goes to g4; P = c / V is known only once every part's
         // volume is summed, and scales it afterwards.
@@ -317,6 +322,24 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
         for (std::size_t b0 = 0; b0 < s.triangles.size(); b0 += kBlock)
             sum += kernels::triangleBlock(s, b0, std::min(s.triangles.size(), b0 + kBlock), x, g4, scratch);
     }
+}
+
+void ForceModel::clearGradient(int chunk) {
+    double* g4 = m_gradient4.data();
+    for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(chunk)]) std::fill(g4 + 4 * begin, g4 + 4 * end, 0.0);
+}
+
+const double* ForceModel::computeVolumeGradient(const double* x) {
+    if (!m_terms.has(Term::Gas)) return nullptr;
+    std::array<Sums, kChunks + 1> sums{};
+    double* g4 = m_gradient4.data();
+    runChunks([&](int c) {
+        clearGradient(c);
+        accumulateGas(m_parts[static_cast<std::size_t>(c)], x, m_scratch[static_cast<std::size_t>(c)], g4,
+                      sums[static_cast<std::size_t>(c)]);
+    });
+    accumulateGas(m_parts[kChunks], x, m_scratch[0], g4, sums[kChunks]);
+    return g4;
 }
 
 std::pair<std::size_t, std::size_t> ForceModel::range(std::size_t count, int chunk, int chunks) {
@@ -425,8 +448,8 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
                 fi[0] = fi[2] = fi[3] = 0.0;
                 fi[1] = 0.0 - mass[i] * g;
             }
-            if (gas) std::fill(g4 + 4 * begin, g4 + 4 * end, 0.0);
         }
+        if (gas) clearGradient(c);
         accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, sums[k]);
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.

@@ -190,7 +190,6 @@ void Simulation::build() {
         if (topo.dimension >= 2) m_invMass3[3 * i] = inv;
         if (topo.dimension == 3) m_invMass3[3 * i + 2] = inv;
     }
-    m_normals.setZero(3, count);
     applyForceParams();
     reset();
 }
@@ -297,6 +296,13 @@ void Simulation::startBookkeeping() {
 void Simulation::measure(Diagnostics& d) const {
     fillDiagnostics(d, m_forces.springEnergies(m_y.data()),
                     m_forces.terms().has(Term::Gas) ? m_forces.volumes(m_y.data()) : std::array<double, 2>{});
+}
+
+void Simulation::measureState(Diagnostics& d) {
+    if (m_reuseEndForces)
+        measureWithForces(d);
+    else
+        measure(d);
 }
 
 void Simulation::measureWithForces(Diagnostics& d) {
@@ -418,27 +424,32 @@ bool Simulation::step(double until) {
 
     // Wall contacts and the layer constraint change the state outside the ODE. Whatever
     // energy they change is measured across them and booked as removed by collisions (in the
-    // new diagnostics only: a step that then fails leaves the books as they were).
+    // new diagnostics only: a step that then fails leaves the books as they were). The layer
+    // constraint's normals are the outer layer's volume gradient, which the measurement of
+    // the state (a force evaluation) leaves behind: it is checked after that measurement, and
+    // a step it corrects is measured again.
     std::optional<double> beforeContacts;
     const bool finite = stateIsFinite();
-    if (finite) {
-        const bool walls = m_forces.terms().has(Term::Collisions);
-        const bool layers = m_forces.terms().has(Term::LayerConstraint);
-        if (walls) m_forces.countPostStep(Term::Collisions);
-        if (layers) m_forces.countPostStep(Term::LayerConstraint);
-        if ((walls && collide(false)) || (layers && constrainLayers(false))) {
+    if (finite && m_forces.terms().has(Term::Collisions)) {
+        m_forces.countPostStep(Term::Collisions);
+        if (collide(false)) {
             beforeContacts = totalEnergyNow();
-            if (walls) collide(true);
-            if (layers) constrainLayers(true);
+            collide(true);
         }
     }
 
     // One measurement serves the checks, the diagnostics and the energy after the contacts.
     Diagnostics next = m_diag;
-    if (m_reuseEndForces)
-        measureWithForces(next);
-    else
-        measure(next);
+    measureState(next);
+    if (finite && m_forces.terms().has(Term::LayerConstraint)) {
+        m_forces.countPostStep(Term::LayerConstraint);
+        const double* normals = m_reuseEndForces ? m_forces.volumeGradient() : m_forces.computeVolumeGradient(m_y.data());
+        if (constrainLayers(false, normals)) {
+            if (!beforeContacts) beforeContacts = next.total();
+            constrainLayers(true, normals);
+            measureState(next);
+        }
+    }
     if (beforeContacts) next.removedCollisions += *beforeContacts - next.total();
     if (const auto problem = checkState(next, finite)) {
         m_failure = Failure{*problem, m_diag.step + 1, t0};
@@ -529,54 +540,42 @@ bool Simulation::stateIsFinite() const {
            std::isfinite(m_y[2 * m_n]);
 }
 
-bool Simulation::constrainLayers(bool apply) {
+bool Simulation::constrainLayers(bool apply, const double* normals4) {
     // Each inner particle must stay on the inner side of the tangent plane of its paired
-    // outer particle. The outer vertex normal is the area-weighted mean of the adjacent
-    // face normals (3D) or the perpendicular of the neighbouring chord (2D). A violation is
-    // undone symmetrically: positions and relative normal velocity are corrected with
-    // mass weights, so momentum is conserved.
-    const Topology& topo = m_body.topology;
-    const Surface* outer = topo.surface(Layer::Outer);
-    if (!outer || topo.layerPairs.empty()) return false;
+    // outer particle. The outer vertex normal is the direction of the outer layer's volume
+    // gradient dV/dx there (normals4, padded rows): the area-weighted mean of the adjacent face
+    // normals (3D) or the perpendicular of the neighbouring chords (2D). A violation is undone
+    // symmetrically: positions and relative normal velocity are corrected with mass weights,
+    // so momentum is conserved. Pairs are independent: the pieces run in parallel.
+    const auto& pairs = m_body.topology.layerPairs;
+    if (pairs.empty() || !normals4) return false;
     double* x = m_y.data();
     double* v = m_y.data() + m_n;
-    m_normals.setZero();
-    if (topo.dimension == 2) {
-        for (auto [a, b] : outer->edges) {
-            const Eigen::Vector3d n(x[3 * b + 1] - x[3 * a + 1], -(x[3 * b] - x[3 * a]), 0.0);
-            m_normals.col(a) += n;
-            m_normals.col(b) += n;
+    std::array<bool, kPiecesMax> pieceAny{};
+    inPiecesOf(static_cast<int>(pairs.size()), [&](int piece, int begin, int end) {
+        for (int k = begin; k < end; ++k) {
+            const auto [in, out] = pairs[static_cast<std::size_t>(k)];
+            const Eigen::Map<const Eigen::Vector3d> gradient(normals4 + 4 * out);
+            const double norm = gradient.norm();
+            if (norm <= 0.0) continue;
+            const Eigen::Vector3d n = gradient / norm;
+            Eigen::Map<Eigen::Vector3d> xi(x + 3 * in), xo(x + 3 * out), vi(v + 3 * in), vo(v + 3 * out);
+            const double depth = (xi - xo).dot(n);
+            if (depth <= 0.0) continue;
+            pieceAny[static_cast<std::size_t>(piece)] = true;
+            if (!apply) return;
+            const double mi = m_body.mass[in], mo = m_body.mass[out];
+            const double wi = mo / (mi + mo), wo = mi / (mi + mo);
+            xi -= wi * depth * n;
+            xo += wo * depth * n;
+            const double separating = (vi - vo).dot(n);
+            if (separating > 0.0) {
+                vi -= wi * separating * n;
+                vo += wo * separating * n;
+            }
         }
-    } else {
-        for (auto [a, b, c] : outer->triangles) {
-            Eigen::Map<const Eigen::Vector3d> xa(x + 3 * a), xb(x + 3 * b), xc(x + 3 * c);
-            const Eigen::Vector3d n = (xb - xa).cross(xc - xa);
-            m_normals.col(a) += n;
-            m_normals.col(b) += n;
-            m_normals.col(c) += n;
-        }
-    }
-    bool any = false;
-    for (auto [in, out] : topo.layerPairs) {
-        const double norm = m_normals.col(out).norm();
-        if (norm <= 0.0) continue;
-        const Eigen::Vector3d n = m_normals.col(out) / norm;
-        Eigen::Map<Eigen::Vector3d> xi(x + 3 * in), xo(x + 3 * out), vi(v + 3 * in), vo(v + 3 * out);
-        const double depth = (xi - xo).dot(n);
-        if (depth <= 0.0) continue;
-        any = true;
-        if (!apply) return true;
-        const double mi = m_body.mass[in], mo = m_body.mass[out];
-        const double wi = mo / (mi + mo), wo = mi / (mi + mo);
-        xi -= wi * depth * n;
-        xo += wo * depth * n;
-        const double separating = (vi - vo).dot(n);
-        if (separating > 0.0) {
-            vi -= wi * separating * n;
-            vo += wo * separating * n;
-        }
-    }
-    return any;
+    });
+    return std::find(pieceAny.begin(), pieceAny.end(), true) != pieceAny.end();
 }
 
 std::optional<std::string> Simulation::checkState(const Diagnostics& d, bool finite) const {

@@ -174,19 +174,27 @@ private:
     static constexpr int kPiecesMax = ForceModel::kChunks;
     template <class F>
     void inPieces(F&& body) const {
-        const int pieces = m_forces.chunks(), n = particleCount();
+        inPiecesOf(particleCount(), std::forward<F>(body));
+    }
+    // The same over items 0..n-1 of something else (layer pairs).
+    template <class F>
+    void inPiecesOf(int n, F&& body) const {
+        const int pieces = m_forces.chunks();
         auto task = [&](int k) { body(k, n * k / pieces, n * (k + 1) / pieces); };
         if (m_pool && pieces > 1)
             m_pool->run(pieces, task);
         else
             for (int k = 0; k < pieces; ++k) task(k);
     }
-    bool constrainLayers(bool apply);
+    // normals4: the outer layer's dV/dx, padded (ForceModel::volumeGradient()).
+    bool constrainLayers(bool apply, const double* normals4);
     // Why the state (measured into d) is unusable, or nothing.
     // `finite`: whether the state is free of NaN and infinity (known to the caller).
     std::optional<std::string> checkState(const Diagnostics& d, bool finite) const;
     double totalEnergyNow() const;
     void measureWithForces(Diagnostics& d);
+    // measureWithForces when the end-of-step forces are kept for the next step, else measure.
+    void measureState(Diagnostics& d);
     void fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
                          const std::array<double, 2>& volume) const;
 
@@ -200,7 +208,6 @@ private:
     Eigen::VectorXd m_y;          // [x | v | removed-by-damping]
     Eigen::VectorXd m_lastGood;   // state before the current step
     Eigen::VectorXd m_invMass3;   // 3N inverse masses, 0 on fixed particles and absent axes
-    Eigen::Matrix3Xd m_normals;   // scratch: outer-layer vertex normals
     Diagnostics m_diag;
     double m_timeCarry = 0.0;     // round-off carried by the compensated time sum [s]
     std::optional<Failure> m_failure;

@@ -128,6 +128,66 @@ private slots:
         QVERIFY(sim.forces().evaluations(Term::LayerConstraint) == 1);
     }
 
+    // The same on a sphere, in one piece and in two pieces on two threads: every inner
+    // particle ends on the inner side of the tangent plane at its partner (normal: the
+    // area-weighted mean of the outer faces, computed here independently of the simulation's
+    // volume-gradient normals), momentum is kept, the energy the correction changed is booked,
+    // and threads and the end-of-step reuse change no bit.
+    void innerLayerStaysInsideASphere_data() {
+        QTest::addColumn<int>("subdivisions");
+        QTest::addColumn<int>("threads");
+        QTest::newRow("L2, one piece") << 2 << 1;
+        QTest::newRow("L5, two pieces, two threads") << 5 << 2;
+    }
+    void innerLayerStaysInsideASphere() {
+        QFETCH(int, subdivisions);
+        QFETCH(int, threads);
+        const ParameterSet p = params(SceneKind::Sphere3d, {{"subdivisions", double(subdivisions)}, {"gravity", 0.0},
+                                                            {"box", 100.0}, {"dt", 0.0005}});
+        auto pushedOut = [&](Simulation& sim) {
+            Eigen::Matrix3Xd x = sim.positions();
+            Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, x.cols());
+            for (auto [in, out] : sim.topology().layerPairs) {
+                x.col(in) *= 1.5;  // r 2.25 > r_out 2
+                v.col(in) = 0.1 * x.col(in);  // and moving outward
+            }
+            sim.setState(x, v);
+        };
+        Simulation sim(p, "rk4"), other(p, "rk4"), plain(p, "rk4");
+        sim.setThreads(threads);
+        other.setThreads(3 - threads);
+        plain.setReuseEndForces(false);
+        for (Simulation* s : {&sim, &other, &plain}) pushedOut(*s);
+        QCOMPARE(sim.forces().chunks(), subdivisions >= 5 ? 2 : 1);
+        const Eigen::Matrix3Xd start = sim.positions();
+        const Eigen::Vector3d momentum = sim.velocities() * Eigen::VectorXd(sim.body().mass);
+        QVERIFY(sim.step() && other.step() && plain.step());
+        QVERIFY(sim.state() == other.state());  // bit for bit
+        QVERIFY(sim.state() == plain.state());
+        QCOMPARE(sim.forces().evaluations(Term::LayerConstraint), std::uint64_t(1));
+        // The deepest inner particle beyond its partner's tangent plane, before and after.
+        auto deepest = [&](const Eigen::Matrix3Xd& x) {
+            Eigen::Matrix3Xd normals = Eigen::Matrix3Xd::Zero(3, x.cols());
+            for (auto [a, b, c] : sim.topology().surface(Layer::Outer)->triangles) {
+                const Eigen::Vector3d n = (x.col(b) - x.col(a)).cross(x.col(c) - x.col(a));
+                normals.col(a) += n;
+                normals.col(b) += n;
+                normals.col(c) += n;
+            }
+            double depth = -1.0;
+            for (auto [in, out] : sim.topology().layerPairs)
+                depth = std::max(depth, (x.col(in) - x.col(out)).dot(normals.col(out).normalized()));
+            return depth;
+        };
+        QVERIFY(deepest(start) > 0.2);
+        // One projection along the normals of the uncorrected state leaves the second-order
+        // rest (the corrected outer particles tilt their neighbours' normals).
+        QVERIFY(deepest(sim.positions()) <= 1e-3 * deepest(start));
+        const Eigen::Vector3d after = sim.velocities() * Eigen::VectorXd(sim.body().mass);
+        QVERIFY((after - momentum).norm() <= 1e-9 * std::max(1.0, momentum.norm()));
+        QVERIFY(sim.diagnostics().removedCollisions != 0.0);  // the correction's energy is booked
+    }
+
     void blowUpIsDetected_data() {
         QTest::addColumn<int>("kind");
         QTest::addColumn<QString>("integrator");
