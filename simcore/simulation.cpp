@@ -295,50 +295,84 @@ void Simulation::startBookkeeping() {
 
 void Simulation::measure(Diagnostics& d) const {
     fillDiagnostics(d, m_forces.springEnergies(m_y.data()),
-                    m_forces.terms().has(Term::Gas) ? m_forces.volumes(m_y.data()) : std::array<double, 2>{});
+                    m_forces.terms().has(Term::Gas) ? m_forces.volumes(m_y.data()) : std::array<double, 2>{},
+                    scanState());
 }
 
-void Simulation::measureState(Diagnostics& d) {
+void Simulation::measureState(Diagnostics& d, const Scan& scan) {
     if (m_reuseEndForces)
-        measureWithForces(d);
+        measureWithForces(d, scan);
     else
-        measure(d);
+        fillDiagnostics(d, m_forces.springEnergies(m_y.data()),
+                        m_forces.terms().has(Term::Gas) ? m_forces.volumes(m_y.data()) : std::array<double, 2>{},
+                        scan);
 }
 
-void Simulation::measureWithForces(Diagnostics& d) {
+void Simulation::measureWithForces(Diagnostics& d, const Scan& scan) {
     // One uncounted force evaluation yields the energies and volumes, and f at this state,
     // which the next step's first stage takes instead of evaluating it again.
     m_system->compute(m_y, m_endDerivative, m_endExtras, false);
-    fillDiagnostics(d, m_endExtras.springEnergy, m_endExtras.volume);
+    fillDiagnostics(d, m_endExtras.springEnergy, m_endExtras.volume, scan);
+}
+
+Simulation::Scan Simulation::scanState() const {
+    const double* x = m_y.data();
+    const double* v = m_y.data() + m_n;
+    const double* inv = m_invMass3.data();
+    const bool weighs = m_forces.terms().has(Term::Gravity);
+    const double g = m_forces.params.gravity;
+    const double infinity = std::numeric_limits<double>::infinity();
+    std::array<Scan, kPiecesMax> pieces;
+    inPieces([&](int piece, int begin, int end) {
+        Scan s;
+        s.low.setConstant(infinity);
+        s.high.setConstant(-infinity);
+        bool finite = true;
+        double kinetic = 0.0, gravity = 0.0, fastest2 = 0.0;
+        for (int i = begin; i < end; ++i) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const int k = 3 * i + axis;
+                finite = finite && std::isfinite(x[k]) && std::isfinite(v[k]);
+                if (inv[k] == 0.0) continue;  // a fixed particle or an axis the body does not move in
+                s.low[axis] = std::min(s.low[axis], x[k]);
+                s.high[axis] = std::max(s.high[axis], x[k]);
+            }
+            const Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
+            const double speed2 = vi.squaredNorm();
+            fastest2 = std::max(fastest2, speed2);
+            if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+            const double m = m_body.mass[i];
+            kinetic += 0.5 * m * speed2;
+            if (weighs) gravity += m * g * x[3 * i + 1];
+        }
+        s.finite = finite;
+        s.kinetic = kinetic;
+        s.gravity = gravity;
+        s.fastest = std::sqrt(fastest2);
+        pieces[static_cast<std::size_t>(piece)] = s;
+    });
+    Scan total;
+    total.low.setConstant(infinity);
+    total.high.setConstant(-infinity);
+    total.finite = std::isfinite(m_y[2 * m_n]);
+    for (int piece = 0; piece < m_forces.chunks(); ++piece) {
+        const Scan& s = pieces[static_cast<std::size_t>(piece)];
+        total.finite = total.finite && s.finite;
+        total.low = total.low.min(s.low);
+        total.high = total.high.max(s.high);
+        total.kinetic += s.kinetic;
+        total.gravity += s.gravity;
+        total.fastest = std::max(total.fastest, s.fastest);
+    }
+    return total;
 }
 
 void Simulation::fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
-                                 const std::array<double, 2>& volume) const {
+                                 const std::array<double, 2>& volume, const Scan& scan) const {
     const double* x = m_y.data();
-    const double* v = m_y.data() + m_n;
     const Topology& topo = m_body.topology;
-    // Per piece, then summed in piece order (a fixed number of pieces: the same sums for any
-    // number of threads).
-    std::array<double, kPiecesMax> kinetic{}, gravity{};
-    const bool weighs = m_forces.terms().has(Term::Gravity);
-    inPieces([&](int piece, int begin, int end) {
-        double k = 0.0, g = 0.0;
-        for (int i = begin; i < end; ++i) {
-            if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
-            const double m = m_body.mass[i];
-            Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
-            k += 0.5 * m * vi.squaredNorm();
-            if (weighs) g += m * m_forces.params.gravity * x[3 * i + 1];
-        }
-        kinetic[static_cast<std::size_t>(piece)] = k;
-        gravity[static_cast<std::size_t>(piece)] = g;
-    });
-    d.kinetic = 0.0;
-    d.gravity = 0.0;
-    for (std::size_t piece = 0; piece < kPiecesMax; ++piece) {
-        d.kinetic += kinetic[piece];
-        d.gravity += gravity[piece];
-    }
+    d.kinetic = scan.kinetic;
+    d.gravity = scan.gravity;
     d.spring = spring;
     d.hasGas = m_forces.terms().has(Term::Gas);
     d.gas = 0.0;
@@ -404,7 +438,7 @@ bool Simulation::step(double until) {
     if (m_integrator->adaptive())
         m_hNext = clamped && report.rejected == 0 ? std::max(m_hNext, report.hNext) : report.hNext;
     m_hTaken = report.h;
-    if (m_integratorOptions.stepDoubling && !m_integrator->adaptive() && stateIsFinite()) {
+    if (m_integratorOptions.stepDoubling && !m_integrator->adaptive() && scanState().finite) {
         // Step doubling (Richardson): y_h from one step, y_h/2 from two half steps from the
         // same start; the local error of y_h is about |y_h/2 - y_h| / (1 - 2^-p) and that of
         // y_h/2 is 2^-p of it. The run keeps y_h, so switching the estimate on changes
@@ -429,29 +463,33 @@ bool Simulation::step(double until) {
     // the state (a force evaluation) leaves behind: it is checked after that measurement, and
     // a step it corrects is measured again.
     std::optional<double> beforeContacts;
-    const bool finite = stateIsFinite();
-    if (finite && m_forces.terms().has(Term::Collisions)) {
+    Scan scan = scanState();
+    if (scan.finite && m_forces.terms().has(Term::Collisions)) {
         m_forces.countPostStep(Term::Collisions);
-        if (collide(false)) {
+        // Most steps touch no wall: the scan's extent says so without a second pass.
+        const Eigen::Array3d wallLow = m_boxCentre.array() - m_box, wallHigh = m_boxCentre.array() + m_box;
+        if (((scan.low <= wallLow) || (scan.high >= wallHigh)).any() && collide(false)) {
             beforeContacts = totalEnergyNow();
             collide(true);
+            scan = scanState();
         }
     }
 
     // One measurement serves the checks, the diagnostics and the energy after the contacts.
     Diagnostics next = m_diag;
-    measureState(next);
-    if (finite && m_forces.terms().has(Term::LayerConstraint)) {
+    measureState(next, scan);
+    if (scan.finite && m_forces.terms().has(Term::LayerConstraint)) {
         m_forces.countPostStep(Term::LayerConstraint);
         const double* normals = m_reuseEndForces ? m_forces.volumeGradient() : m_forces.computeVolumeGradient(m_y.data());
         if (constrainLayers(false, normals)) {
             if (!beforeContacts) beforeContacts = next.total();
             constrainLayers(true, normals);
-            measureState(next);
+            scan = scanState();
+            measureState(next, scan);
         }
     }
     if (beforeContacts) next.removedCollisions += *beforeContacts - next.total();
-    if (const auto problem = checkState(next, finite)) {
+    if (const auto problem = checkState(next, scan)) {
         m_failure = Failure{*problem, m_diag.step + 1, t0};
         m_y = m_lastGood;  // keep the last good state: nothing non-finite leaves
         return false;
@@ -529,17 +567,6 @@ bool Simulation::collideRange(bool apply, int begin, int end) {
     return any;
 }
 
-bool Simulation::stateIsFinite() const {
-    std::array<bool, kPiecesMax> pieceFinite;
-    pieceFinite.fill(true);
-    inPieces([&](int piece, int begin, int end) {
-        const Eigen::Index b = 3 * begin, l = 3 * (end - begin);
-        pieceFinite[static_cast<std::size_t>(piece)] = m_y.segment(b, l).allFinite() && m_y.segment(m_n + b, l).allFinite();
-    });
-    return std::find(pieceFinite.begin(), pieceFinite.end(), false) == pieceFinite.end() &&
-           std::isfinite(m_y[2 * m_n]);
-}
-
 bool Simulation::constrainLayers(bool apply, const double* normals4) {
     // Each inner particle must stay on the inner side of the tangent plane of its paired
     // outer particle. The outer vertex normal is the direction of the outer layer's volume
@@ -578,15 +605,11 @@ bool Simulation::constrainLayers(bool apply, const double* normals4) {
     return std::find(pieceAny.begin(), pieceAny.end(), true) != pieceAny.end();
 }
 
-std::optional<std::string> Simulation::checkState(const Diagnostics& d, bool finite) const {
+std::optional<std::string> Simulation::checkState(const Diagnostics& d, const Scan& scan) const {
     // Causes before symptoms: speed and energy first, then the shape they wreck. (The message
     // stream is built only on failure: nothing is allocated in a good step.)
-    if (!finite || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
-    std::array<double, kPiecesMax> pieceFastest{};
-    inPieces([&](int piece, int begin, int end) {
-        pieceFastest[static_cast<std::size_t>(piece)] = velocities().middleCols(begin, end - begin).colwise().norm().maxCoeff();
-    });
-    const double fastest = *std::max_element(pieceFastest.begin(), pieceFastest.end());
+    if (!scan.finite || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
+    const double fastest = scan.fastest;
     if (fastest * m_hTaken > 2.0 * m_box) {
         std::ostringstream why;
         why << "runaway velocity: a particle moves " << fastest

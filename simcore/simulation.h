@@ -167,7 +167,16 @@ private:
     // With apply = false only report whether anything is in contact.
     bool collide(bool apply);
     bool collideRange(bool apply, int begin, int end);
-    bool stateIsFinite() const;
+    // One pass over the particles (in pieces, summed in piece order) for what the checks and
+    // the diagnostics need of the state: a step scans once, and again only after contacts.
+    struct Scan {
+        bool finite = true;                 // no NaN or infinity in x, v or the damping account
+        Eigen::Array3d low, high;           // extent of the moving coordinates per axis [m]
+        double kinetic = 0.0;               // sum of m v^2 / 2 over free particles [J]
+        double gravity = 0.0;               // sum of m g y over free particles [J]
+        double fastest = 0.0;               // largest particle speed [m/s]
+    };
+    Scan scanState() const;
     // Per-particle work in a fixed number of pieces (the force model's chunks, so sums
     // combined in piece order are the same for any number of threads), on the pool when
     // there is one: body(piece, firstParticle, endParticle).
@@ -190,13 +199,14 @@ private:
     bool constrainLayers(bool apply, const double* normals4);
     // Why the state (measured into d) is unusable, or nothing.
     // `finite`: whether the state is free of NaN and infinity (known to the caller).
-    std::optional<std::string> checkState(const Diagnostics& d, bool finite) const;
+    // `scan`: the state's scan (finiteness, fastest particle).
+    std::optional<std::string> checkState(const Diagnostics& d, const Scan& scan) const;
     double totalEnergyNow() const;
-    void measureWithForces(Diagnostics& d);
+    void measureWithForces(Diagnostics& d, const Scan& scan);
     // measureWithForces when the end-of-step forces are kept for the next step, else measure.
-    void measureState(Diagnostics& d);
+    void measureState(Diagnostics& d, const Scan& scan);
     void fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
-                         const std::array<double, 2>& volume) const;
+                         const std::array<double, 2>& volume, const Scan& scan) const;
 
     ParameterSet m_params;
     int m_threads = hardwareThreads();
