@@ -416,16 +416,16 @@ std::array<double, kSpringFamilyCount> ForceModel::springEnergies(const double* 
 }
 
 void ForceModel::evaluate(const double* x, const double* v, double* f, ForceExtras& extras, bool count) {
-    evaluateInto(x, v, nullptr, nullptr, f, extras, count);
+    evaluateInto(x, v, nullptr, nullptr, f, extras, count, nullptr);
 }
 
 void ForceModel::evaluateMotion(const double* x, const double* v, const double* invMass3, double* xdot,
-                                double* a, ForceExtras& extras, bool count) {
-    evaluateInto(x, v, invMass3, xdot, a, extras, count);
+                                double* a, ForceExtras& extras, bool count, const RangeWork* then) {
+    evaluateInto(x, v, invMass3, xdot, a, extras, count, then);
 }
 
 void ForceModel::evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
-                              double* out, ForceExtras& extras, bool count) {
+                              double* out, ForceExtras& extras, bool count, const RangeWork* then) {
     const Topology& topo = *m_topology;
     extras = ForceExtras{};
     if (count) countTerms();
@@ -479,33 +479,40 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
             extras.pressure[slot] = pressure[slot];
         }
     }
-    // Total force of particle i along an axis, before the pointer's.
-    auto force = [&](int i, int axis, double p) {
-        return gas ? f4[4 * i + axis] + p * g4[4 * i + axis] : f4[4 * i + axis];
-    };
     auto layerPressure = [&](int i) {
         return pressure[static_cast<std::size_t>(layerSlot(topo.layer[static_cast<std::size_t>(i)]))];
     };
+    // The mouse spring acts on one particle: its total is redone with the pointer's force
+    // added before the division by the mass. Taken now: x and v may be overwritten once the
+    // chunks hand their ranges to `then`.
+    double pointerOut[3], pointerF[3], pointerPower = 0.0;
+    const int pulled = m_terms.has(Term::Pointer) &&
+                               pointerForce(pointer, params.mks, params.mkd, params.mouseRest, x, v, pointerF, pointerPower)
+                           ? pointer.particle
+                           : -1;
+    if (pulled >= 0) {
+        const double p = layerPressure(pulled);
+        for (int axis = 0; axis < 3; ++axis) {
+            const int k = 3 * pulled + axis;
+            const double total = (gas ? f4[4 * pulled + axis] + p * g4[4 * pulled + axis] : f4[4 * pulled + axis]) + pointerF[axis];
+            pointerOut[axis] = invMass3 ? total * invMass3[k] : total;
+        }
+        extras.dampingPower += pointerPower;
+    }
+    const auto n3 = static_cast<std::ptrdiff_t>(3 * topo.particleCount());
     runChunks([&](int c) {
         for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(c)]) {
             const double p = layerPressure(begin);  // each owned range lies in one layer (see partition())
             kernels::unpad(f4, gas ? g4 : nullptr, p, invMass3, begin, end, out);
+            if (begin <= pulled && pulled < end) std::copy(pointerOut, pointerOut + 3, out + 3 * pulled);
             if (xdot) std::copy(v + 3 * begin, v + 3 * end, xdot + 3 * begin);
+            if (then) {
+                const std::ptrdiff_t first = 3 * begin, length = 3 * (end - begin);
+                (*then)(first, length);
+                (*then)(n3 + first, length);
+            }
         }
     });
-    // The mouse spring acts on one particle: its total is redone with the pointer's force
-    // added before the division by the mass.
-    double pointerF[3], pointerPower = 0.0;
-    if (m_terms.has(Term::Pointer) &&
-        pointerForce(pointer, params.mks, params.mkd, params.mouseRest, x, v, pointerF, pointerPower)) {
-        const int i = pointer.particle;
-        for (int axis = 0; axis < 3; ++axis) {
-            const int k = 3 * i + axis;
-            const double total = force(i, axis, layerPressure(i)) + pointerF[axis];
-            out[k] = invMass3 ? total * invMass3[k] : total;
-        }
-        extras.dampingPower += pointerPower;
-    }
 }
 
 void ForceModel::evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras) {

@@ -13,6 +13,7 @@
 
 #include "body.h"
 #include "force_kernels.h"
+#include "parallel.h"
 
 namespace simcore {
 
@@ -114,8 +115,12 @@ public:
     void evaluate(const double* x, const double* v, double* f, ForceExtras& extras, bool count = true);
     // The same forces as the right-hand side of the equations of motion: xdot = v and
     // a = F * invMass3 (3N each, 0 where invMass3 is 0), written by the chunks in parallel.
+    // With `then`, each chunk calls then(begin, length) on its ranges of the combined vector
+    // [xdot | a] (xdot at 0, a at 3N) as soon as they are written; no element of x or v is
+    // read after its range is handed over, so `then` may overwrite them.
+    using RangeWork = FunctionRef<void(std::ptrdiff_t, std::ptrdiff_t)>;
     void evaluateMotion(const double* x, const double* v, const double* invMass3, double* xdot,
-                        double* a, ForceExtras& extras, bool count = true);
+                        double* a, ForceExtras& extras, bool count = true, const RangeWork* then = nullptr);
     // The same forces by the plain one-pass kernels (the reference the fast path is tested on).
     void evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras);
     // dV/dx of each particle's own layer, unscaled, padded (4 doubles per particle): as left by
@@ -142,7 +147,7 @@ private:
     // evaluate() and evaluateMotion(): out = F (invMass3 == nullptr) or F * invMass3, and
     // xdot = v when xdot is given.
     void evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
-                      double* out, ForceExtras& extras, bool count);
+                      double* out, ForceExtras& extras, bool count, const RangeWork* then);
 
     const Topology* m_topology = nullptr;
     const Eigen::VectorXd* m_mass = nullptr;

@@ -37,28 +37,14 @@ protected:
     Eigen::VectorXd m_k1, m_k2, m_k3, m_k4, m_tmp;
 };
 
-// Runs body(begin, length) over [0, size) in the system's pieces, split at multiples of eight
-// doubles (one cache line) so that no two threads write the same line. The work is element by
-// element, so the split does not change a bit of the result.
-template <class F>
-void elementwise(OdeSystem& system, Eigen::Index size, F&& body) {
-    const int pieces = system.pieces();
-    if (pieces <= 1) {
-        body(Eigen::Index{0}, size);
-        return;
-    }
-    auto bound = [&](int k) { return k == pieces ? size : (size * k / pieces) / 8 * 8; };
-    system.runPieces([&](int k) { body(bound(k), bound(k + 1) - bound(k)); });
-}
-
 class Euler final : public ExplicitBase {
 public:
     std::string_view name() const override { return "euler"; }
     int order() const override { return 1; }
     int evaluationsPerStep() const override { return 1; }
     StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
-        system.derivative(t, y, m_k1);
-        elementwise(system, y.size(), [&](Eigen::Index b, Eigen::Index l) { y.segment(b, l) += h * m_k1.segment(b, l); });
+        // The update of each range as soon as its derivative is final (see OdeSystem).
+        system.derivative(t, y, m_k1, [&](Eigen::Index b, Eigen::Index l) { y.segment(b, l) += h * m_k1.segment(b, l); });
         return {h, h, -1.0, 1};
     }
 };
@@ -70,12 +56,10 @@ public:
     int evaluationsPerStep() const override { return 2; }
     StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
         // Thesis eq. 31-33: k1 = A(y), k2 = A(y + h k1), y += h (k1 + k2) / 2.
-        system.derivative(t, y, m_k1);
-        elementwise(system, y.size(), [&](Eigen::Index b, Eigen::Index l) {
+        system.derivative(t, y, m_k1, [&](Eigen::Index b, Eigen::Index l) {
             m_tmp.segment(b, l) = y.segment(b, l) + h * m_k1.segment(b, l);
         });
-        system.derivative(t + h, m_tmp, m_k2);
-        elementwise(system, y.size(), [&](Eigen::Index b, Eigen::Index l) {
+        system.derivative(t + h, m_tmp, m_k2, [&](Eigen::Index b, Eigen::Index l) {
             y.segment(b, l) += (0.5 * h) * (m_k1.segment(b, l) + m_k2.segment(b, l));
         });
         return {h, h, -1.0, 2};
@@ -88,20 +72,17 @@ public:
     int order() const override { return 4; }
     int evaluationsPerStep() const override { return 4; }
     StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
-        // The stage sums element by element, in pieces that may run in parallel.
-        auto stage = [&](double c, const Eigen::VectorXd& k) {
-            elementwise(system, y.size(), [&](Eigen::Index b, Eigen::Index l) {
-                m_tmp.segment(b, l) = y.segment(b, l) + c * k.segment(b, l);
-            });
+        // The stage sums element by element, each range as soon as its derivative is final
+        // (see OdeSystem::derivative).
+        auto stage = [this, &y](double c, const Eigen::VectorXd* k) {
+            return [this, &y, c, k](Eigen::Index b, Eigen::Index l) {
+                m_tmp.segment(b, l) = y.segment(b, l) + c * k->segment(b, l);
+            };
         };
-        system.derivative(t, y, m_k1);
-        stage(0.5 * h, m_k1);
-        system.derivative(t + 0.5 * h, m_tmp, m_k2);
-        stage(0.5 * h, m_k2);
-        system.derivative(t + 0.5 * h, m_tmp, m_k3);
-        stage(h, m_k3);
-        system.derivative(t + h, m_tmp, m_k4);
-        elementwise(system, y.size(), [&](Eigen::Index b, Eigen::Index l) {
+        system.derivative(t, y, m_k1, stage(0.5 * h, &m_k1));
+        system.derivative(t + 0.5 * h, m_tmp, m_k2, stage(0.5 * h, &m_k2));
+        system.derivative(t + 0.5 * h, m_tmp, m_k3, stage(h, &m_k3));
+        system.derivative(t + h, m_tmp, m_k4, [&](Eigen::Index b, Eigen::Index l) {
             y.segment(b, l) += (h / 6.0) * (m_k1.segment(b, l) + 2.0 * m_k2.segment(b, l) +
                                             2.0 * m_k3.segment(b, l) + m_k4.segment(b, l));
         });

@@ -16,23 +16,29 @@
 
 namespace simcore {
 
-// A non-owning reference to a callable taking a task index: unlike std::function it never
-// allocates, so dispatching work inside a step allocates nothing.
-class TaskRef {
+// A non-owning reference to a callable: unlike std::function it never allocates, so
+// dispatching work inside a step allocates nothing.
+template <class Signature>
+class FunctionRef;
+template <class... Args>
+class FunctionRef<void(Args...)> {
 public:
     // The callable must outlive the call it is passed to (a temporary lambda in the call's own
     // full expression does).
     template <class F>
-        requires(!std::is_same_v<std::remove_cvref_t<F>, TaskRef>)
-    TaskRef(F&& f)  // NOLINT: implicit on purpose, like std::function_ref
+        requires(!std::is_same_v<std::remove_cvref_t<F>, FunctionRef>)
+    FunctionRef(F&& f)  // NOLINT: implicit on purpose, like std::function_ref
         : m_object(const_cast<void*>(static_cast<const void*>(&f))),
-          m_call([](void* object, int i) { (*static_cast<std::remove_reference_t<F>*>(object))(i); }) {}
-    void operator()(int i) const { m_call(m_object, i); }
+          m_call([](void* object, Args... args) { (*static_cast<std::remove_reference_t<F>*>(object))(args...); }) {}
+    void operator()(Args... args) const { m_call(m_object, args...); }
 
 private:
     void* m_object;
-    void (*m_call)(void*, int);
+    void (*m_call)(void*, Args...);
 };
+
+// A task of a run: called with its index.
+using TaskRef = FunctionRef<void(int)>;
 
 class ThreadPool {
 public:

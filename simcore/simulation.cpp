@@ -17,25 +17,34 @@ public:
     explicit System(Simulation& sim) : m_sim(sim) {}
     StateLayout layout() const override { return {m_sim.m_n, 1}; }
     void derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) override {
-        if (m_offered) {
-            // The end-of-step measurement already evaluated f at the state this step starts
-            // from: the integrator's first stage takes it (counted as the evaluation it is).
-            Eigen::VectorXd* offered = std::exchange(m_offered, nullptr);
-            if (&y == &m_sim.m_y) {
-                dydt.swap(*offered);  // no copy: the two buffers trade places
-                m_extras = m_sim.m_endExtras;
-                m_sim.m_forces.countReusedEvaluation();
-                return;
-            }
-        }
-        compute(y, dydt, m_extras, true);
+        if (!takeOffered(y, dydt)) compute(y, dydt, m_extras, true);
+    }
+    void derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt, RangeWork then) override {
+        if (takeOffered(y, dydt))
+            inPieces(dydt.size(), then);
+        else
+            compute(y, dydt, m_extras, true, &then);
+    }
+    // The end-of-step measurement already evaluated f at the state this step starts from:
+    // the integrator's first stage takes it (counted as the evaluation it is).
+    bool takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+        if (!m_offered) return false;
+        Eigen::VectorXd* offered = std::exchange(m_offered, nullptr);
+        if (&y != &m_sim.m_y) return false;
+        dydt.swap(*offered);  // no copy: the two buffers trade places
+        m_extras = m_sim.m_endExtras;
+        m_sim.m_forces.countReusedEvaluation();
+        return true;
     }
     // dy/dt at y into dydt, with the force by-products; counted as a force evaluation or not.
-    void compute(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, ForceExtras& extras, bool count) {
+    // With `then`, the chunks run it on their ranges of dydt as they finish them.
+    void compute(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, ForceExtras& extras, bool count,
+                 const RangeWork* then = nullptr) {
         const Eigen::Index n = m_sim.m_n;
         m_sim.m_forces.evaluateMotion(y.data(), y.data() + n, m_sim.m_invMass3.data(), dydt.data(),
-                                      dydt.data() + n, extras, count);
+                                      dydt.data() + n, extras, count, then);
         dydt[2 * n] = extras.dampingPower;
+        if (then) (*then)(2 * n, 1);
     }
     int pieces() const override { return m_sim.m_pool ? m_sim.m_pool->threads() : 1; }
     void runPieces(TaskRef task) override {
