@@ -336,15 +336,19 @@ Simulation::Scan Simulation::scanState() const {
         Scan s;
         s.low.setConstant(infinity);
         s.high.setConstant(-infinity);
-        bool finite = true;
+        // (x - x) + (v - v) is 0 for finite coordinates and NaN otherwise: summed, it tells
+        // whether all are finite without a branch per coordinate.
+        double nonFinite = 0.0;
         double kinetic = 0.0, gravity = 0.0, fastest2 = 0.0;
         for (int i = begin; i < end; ++i) {
             for (int axis = 0; axis < 3; ++axis) {
                 const int k = 3 * i + axis;
-                finite = finite && std::isfinite(x[k]) && std::isfinite(v[k]);
-                if (inv[k] == 0.0) continue;  // a fixed particle or an axis the body does not move in
-                s.low[axis] = std::min(s.low[axis], x[k]);
-                s.high[axis] = std::max(s.high[axis], x[k]);
+                nonFinite += (x[k] - x[k]) + (v[k] - v[k]);
+                // Only moving coordinates (not a fixed particle's, not an axis the body does
+                // not move in) count for the extent.
+                const bool moves = inv[k] != 0.0;
+                s.low[axis] = std::min(s.low[axis], moves ? x[k] : infinity);
+                s.high[axis] = std::max(s.high[axis], moves ? x[k] : -infinity);
             }
             const Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
             const double speed2 = vi.squaredNorm();
@@ -354,7 +358,7 @@ Simulation::Scan Simulation::scanState() const {
             kinetic += 0.5 * m * speed2;
             if (weighs) gravity += m * g * x[3 * i + 1];
         }
-        s.finite = finite;
+        s.finite = nonFinite == 0.0;
         s.kinetic = kinetic;
         s.gravity = gravity;
         s.fastest = std::sqrt(fastest2);
@@ -592,10 +596,12 @@ bool Simulation::constrainLayers(bool apply, const double* normals4) {
         for (int k = begin; k < end; ++k) {
             const auto [in, out] = pairs[static_cast<std::size_t>(k)];
             const Eigen::Map<const Eigen::Vector3d> gradient(normals4 + 4 * out);
+            Eigen::Map<Eigen::Vector3d> xi(x + 3 * in), xo(x + 3 * out), vi(v + 3 * in), vo(v + 3 * out);
+            // The sign first (no root, no division for the pairs that are fine, nearly all).
+            if (!((xi - xo).dot(gradient) > 0.0)) continue;
             const double norm = gradient.norm();
             if (norm <= 0.0) continue;
             const Eigen::Vector3d n = gradient / norm;
-            Eigen::Map<Eigen::Vector3d> xi(x + 3 * in), xo(x + 3 * out), vi(v + 3 * in), vo(v + 3 * out);
             const double depth = (xi - xo).dot(n);
             if (depth <= 0.0) continue;
             pieceAny[static_cast<std::size_t>(piece)] = true;
