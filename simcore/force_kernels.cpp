@@ -290,22 +290,24 @@ template <class Count>
     return static_cast<int>(total);
 }
 
-SIMCORE_AVX2
-SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
-                           double kd, const double* x, const double* v, double* f4,
-                           int& degenerate, Scratch& scratch) {
-    const int* ia = springs.a.data() + begin;
-    const int* ib = springs.b.data() + begin;
-    const double* rest = springs.rest.data() + begin;
-    const std::size_t count = end - begin;
-    const __m256d vks = _mm256_set1_pd(ks), vkd = _mm256_set1_pd(kd), zero = _mm256_setzero_pd();
+// A block's spring sums in four lanes (spring k of the block in lane k mod 4) while they
+// are accumulated.
+struct SpringAccumulators {
+    Vec4 power{};   // damping power
+    Vec4 square{};  // (L - L0)^2
     LaneCount<Vec4> shortSprings{};
-    __m256d lanes = zero;    // damping power, spring k in lane k mod 4
-    __m256d squares = zero;  // (L - L0)^2, the same way
-    std::size_t k = 0;
-    for (; k + 4 <= count; k += 4) {
+};
+
+// Springs [k, end) in groups of four from k into the accumulators; returns where it stopped
+// (fewer than four left).
+SIMCORE_AVX2 inline std::size_t springGroupsAvx2(const SpringSet& springs, std::size_t k, std::size_t end,
+                                                 __m256d ks, __m256d kd, const double* x, const double* v,
+                                                 double* f4, SpringAccumulators& sums) {
+    const int* ia = springs.a.data();
+    const int* ib = springs.b.data();
+    for (; k + 4 <= end; k += 4) {
         __m256d d[4], dv[4];
-        for (int l = 0; l < 4; ++l) {
+        for (std::size_t l = 0; l < 4; ++l) {
             const int i = ia[k + l], j = ib[k + l];
             d[l] = _mm256_sub_pd(loadRow(x, j), loadRow(x, i));
             dv[l] = _mm256_sub_pd(loadRow(v, j), loadRow(v, i));
@@ -313,30 +315,46 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
         __m256d dx, dy, dz, dvx, dvy, dvz;
         toColumns(d[0], d[1], d[2], d[3], dx, dy, dz);
         toColumns(dv[0], dv[1], dv[2], dv[3], dvx, dvy, dvz);
-        const SpringLanes<Vec4> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(rest + k), vks, vkd, shortSprings);
-        lanes = _mm256_add_pd(lanes, lane.power);
-        squares = _mm256_add_pd(squares, _mm256_mul_pd(lane.stretch, lane.stretch));
+        const SpringLanes<Vec4> lane =
+            springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(springs.rest.data() + k), ks, kd, sums.shortSprings);
+        sums.power = _mm256_add_pd(sums.power, lane.power);
+        sums.square = _mm256_add_pd(sums.square, _mm256_mul_pd(lane.stretch, lane.stretch));
         __m256d force[4];
         toRows(lane.fx, lane.fy, lane.fz, force);
-        for (int l = 0; l < 4; ++l) {
+        for (std::size_t l = 0; l < 4; ++l) {
             addRow(f4, ia[k + l], force[l]);
             subRow(f4, ib[k + l], force[l]);
         }
     }
-    degenerate += laneTotal(shortSprings);
+    return k;
+}
+
+// The last one to three springs [k, end) by the portable path (like sumLanes, their sums go
+// into lane 0 one by one), and the block's sums.
+SIMCORE_AVX2 inline SpringSums finishSprings(const SpringSet& springs, std::size_t k, std::size_t end, double ks,
+                                             double kd, const double* x, const double* v, double* f4,
+                                             int& degenerate, Scratch& scratch, const SpringAccumulators& sums) {
+    degenerate += laneTotal(sums.shortSprings);
     alignas(32) double lane[4], square[4];
-    _mm256_store_pd(lane, lanes);
-    _mm256_store_pd(square, squares);
-    if (k < count) {
-        // The last one to three springs by the portable path; like sumLanes, their sums go
-        // into lane 0 one by one.
-        springBlockPortable(springs, begin + k, end, ks, kd, x, v, f4, degenerate, scratch);
-        for (std::size_t t = 0; t < count - k; ++t) {
+    _mm256_store_pd(lane, sums.power);
+    _mm256_store_pd(square, sums.square);
+    if (k < end) {
+        springBlockPortable(springs, k, end, ks, kd, x, v, f4, degenerate, scratch);
+        for (std::size_t t = 0; t < end - k; ++t) {
             lane[0] += scratch.power[t];
             square[0] += scratch.stretch2[t];
         }
     }
     return {(lane[0] + lane[1]) + (lane[2] + lane[3]), (square[0] + square[1]) + (square[2] + square[3])};
+}
+
+SIMCORE_AVX2
+SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
+                           double kd, const double* x, const double* v, double* f4,
+                           int& degenerate, Scratch& scratch) {
+    SpringAccumulators sums;
+    const std::size_t k = springGroupsAvx2(springs, begin, end, _mm256_set1_pd(ks), _mm256_set1_pd(kd), x, v, f4, sums);
+    return finishSprings(springs, k, end, ks, kd, x, v, f4, degenerate, scratch, sums);
 }
 
 // p q - r s
@@ -542,6 +560,78 @@ QuadSums quadBlockAvx512(const QuadSet& quads, std::size_t begin, std::size_t en
     return finishQuads(evenPower, oddPower, evenSquare, oddSquare);
 }
 
+// Eight consecutive rows (x, y, z) of a 3-per-particle array, from three registers
+// (24 doubles), to columns in natural order: X = (x0 .. x7) and so on.
+SIMCORE_AVX512 inline void rowsToColumns8(const double* at, __m512d& X, __m512d& Y, __m512d& Z) {
+    const __m512d r0 = _mm512_loadu_pd(at), r1 = _mm512_loadu_pd(at + 8), r2 = _mm512_loadu_pd(at + 16);
+    // Indices 0-7 pick from the first operand, 8-15 from the second.
+    const __m512d x01 = _mm512_permutex2var_pd(r0, _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 0, 0), r1);
+    const __m512d y01 = _mm512_permutex2var_pd(r0, _mm512_setr_epi64(1, 4, 7, 10, 13, 0, 0, 0), r1);
+    const __m512d z01 = _mm512_permutex2var_pd(r0, _mm512_setr_epi64(2, 5, 8, 11, 14, 0, 0, 0), r1);
+    X = _mm512_permutex2var_pd(x01, _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 10, 13), r2);
+    Y = _mm512_permutex2var_pd(y01, _mm512_setr_epi64(0, 1, 2, 3, 4, 8, 11, 14), r2);
+    Z = _mm512_permutex2var_pd(z01, _mm512_setr_epi64(0, 1, 2, 3, 4, 9, 12, 15), r2);
+}
+
+// Columns in natural order to padded rows (x, y, z, 0), two per register: [row 2j | row 2j+1].
+SIMCORE_AVX512 inline void columnsToRowPairs(__m512d X, __m512d Y, __m512d Z, __m512d (&r)[4]) {
+    const __m512d zero = _mm512_setzero_pd();
+    const __m512d t0 = _mm512_unpacklo_pd(X, Y);     // x0 y0 | x2 y2 | x4 y4 | x6 y6
+    const __m512d t1 = _mm512_unpackhi_pd(X, Y);     // x1 y1 | x3 y3 | x5 y5 | x7 y7
+    const __m512d t2 = _mm512_unpacklo_pd(Z, zero);  // z0 0 | z2 0 | z4 0 | z6 0
+    const __m512d t3 = _mm512_unpackhi_pd(Z, zero);  // z1 0 | z3 0 | z5 0 | z7 0
+    const __m512i first = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11);
+    const __m512i second = _mm512_setr_epi64(4, 5, 12, 13, 6, 7, 14, 15);
+    const __m512d even02 = _mm512_permutex2var_pd(t0, first, t2);   // [row 0 | row 2]
+    const __m512d odd13 = _mm512_permutex2var_pd(t1, first, t3);    // [row 1 | row 3]
+    const __m512d even46 = _mm512_permutex2var_pd(t0, second, t2);  // [row 4 | row 6]
+    const __m512d odd57 = _mm512_permutex2var_pd(t1, second, t3);   // [row 5 | row 7]
+    r[0] = _mm512_shuffle_f64x2(even02, odd13, 0x44);  // [row 0 | row 1]
+    r[1] = _mm512_shuffle_f64x2(even02, odd13, 0xee);  // [row 2 | row 3]
+    r[2] = _mm512_shuffle_f64x2(even46, odd57, 0x44);
+    r[3] = _mm512_shuffle_f64x2(even46, odd57, 0xee);
+}
+
+SIMCORE_AVX512
+SpringSums radiusRunAvx512(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double ks,
+                           double kd, const double* x, const double* v, double* f4, int& degenerate,
+                           Scratch& scratch) {
+    // Spring k joins particles p = a[begin] + (k - begin) and p + n: eight consecutive ones per
+    // iteration, read and written as whole rows. Lanes 0-3 then 4-7 go into the four-lane sums
+    // in that order, as springBlock adds them.
+    const __m512d vks = _mm512_set1_pd(ks), vkd = _mm512_set1_pd(kd);
+    SpringAccumulators sums;
+    LaneCount<Vec8> shortSprings{};
+    const int first = springs.a[begin];
+    std::size_t k = begin;
+    for (; k + 8 <= end; k += 8) {
+        const int p = first + static_cast<int>(k - begin), q = p + n;
+        __m512d ax, ay, az, bx, by, bz, avx, avy, avz, bvx, bvy, bvz;
+        rowsToColumns8(x + 3 * p, ax, ay, az);
+        rowsToColumns8(x + 3 * q, bx, by, bz);
+        rowsToColumns8(v + 3 * p, avx, avy, avz);
+        rowsToColumns8(v + 3 * q, bvx, bvy, bvz);
+        const SpringLanes<Vec8> lane =
+            springLanes(_mm512_sub_pd(bx, ax), _mm512_sub_pd(by, ay), _mm512_sub_pd(bz, az), _mm512_sub_pd(bvx, avx),
+                        _mm512_sub_pd(bvy, avy), _mm512_sub_pd(bvz, avz), _mm512_loadu_pd(springs.rest.data() + k), vks,
+                        vkd, shortSprings);
+        const __m512d square = _mm512_mul_pd(lane.stretch, lane.stretch);
+        sums.power = _mm256_add_pd(_mm256_add_pd(sums.power, low(lane.power)), high(lane.power));
+        sums.square = _mm256_add_pd(_mm256_add_pd(sums.square, low(square)), high(square));
+        __m512d rows[4];
+        columnsToRowPairs(lane.fx, lane.fy, lane.fz, rows);
+        for (int j = 0; j < 4; ++j) {
+            double* at = f4 + 4 * (p + 2 * j);
+            _mm512_storeu_pd(at, _mm512_add_pd(_mm512_loadu_pd(at), rows[j]));
+            double* bt = f4 + 4 * (q + 2 * j);
+            _mm512_storeu_pd(bt, _mm512_sub_pd(_mm512_loadu_pd(bt), rows[j]));
+        }
+    }
+    degenerate += laneTotal(shortSprings);
+    k = springGroupsAvx2(springs, k, end, _mm256_set1_pd(ks), _mm256_set1_pd(kd), x, v, f4, sums);
+    return finishSprings(springs, k, end, ks, kd, x, v, f4, degenerate, scratch, sums);
+}
+
 #endif  // SIMCORE_AVX512_KERNELS
 
 #endif  // SIMCORE_AVX2_KERNELS
@@ -607,6 +697,17 @@ SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t 
     if (kernelsInUse() >= KernelSet::Avx2) return springBlockAvx2(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
 #endif
     return springBlockPortable(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
+}
+
+SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double ks,
+                          double kd, const double* x, const double* v, double* f4, int& degenerate,
+                          Scratch& scratch) {
+#if SIMCORE_AVX512_KERNELS
+    if (kernelsInUse() == KernelSet::Avx512)
+        return radiusRunAvx512(springs, begin, end, n, ks, kd, x, v, f4, degenerate, scratch);
+#endif
+    (void)n;
+    return springBlock(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
 }
 
 QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int n,

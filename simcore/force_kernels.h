@@ -66,6 +66,13 @@ SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t 
                        double kd, const double* x, const double* v, double* f4, int& degenerate,
                        Scratch& scratch);
 
+// The same for springs [begin, end) that form a run: spring k joins particle
+// a[begin] + (k - begin) to that particle + n (the radius springs of a two-layer body, in
+// order). The AVX-512 kernel reads and writes such runs as whole rows, eight at a time.
+SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double ks,
+                          double kd, const double* x, const double* v, double* f4, int& degenerate,
+                          Scratch& scratch);
+
 // Edge quads of a two-layer body: for a mesh edge (a, b) of the inner layer and its copy
 // (A, B) = (a + n, b + n) in the outer layer, the four springs over the same four particles,
 // one per lane: structural inner (a, b), structural outer (A, B), shear (A, b) and (B, a).

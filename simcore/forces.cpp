@@ -241,6 +241,14 @@ void ForceModel::partition() {
             part.springs[static_cast<std::size_t>(fam)].add(springs.a[k], springs.b[k], springs.rest[k]);
         }
     }
+    if (layered)
+        for (Part& part : m_parts) {
+            const SpringSet& radius = part.springs[static_cast<std::size_t>(SpringFamily::Radius)];
+            bool run = radius.size() > 0;
+            for (std::size_t k = 0; run && k < radius.size(); ++k)
+                run = radius.a[k] == radius.a[0] + static_cast<int>(k) && radius.b[k] == radius.a[k] + perLayer;
+            part.radiusRun = run;
+        }
     for (const Surface& surface : topo.surfaces) {
         for (auto& part : m_parts) {
             part.surfaces.push_back(Surface{});
@@ -262,6 +270,10 @@ std::size_t ForceModel::quadCount() const {
     std::size_t count = 0;
     for (const Part& part : m_parts) count += part.quads.size();
     return count;
+}
+
+int ForceModel::radiusRuns() const {
+    return static_cast<int>(std::count_if(m_parts.begin(), m_parts.end(), [](const Part& p) { return p.radiusRun; }));
 }
 
 std::size_t ForceModel::sharedElements() const {
@@ -291,10 +303,13 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
         for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
             const auto k = static_cast<std::size_t>(fam);
             const SpringSet& s = part.springs[k];
+            const bool run = part.radiusRun && fam == static_cast<int>(SpringFamily::Radius);
             for (std::size_t b0 = 0; b0 < s.size(); b0 += kBlock) {
+                const std::size_t b1 = std::min(s.size(), b0 + kBlock);
                 const kernels::SpringSums block =
-                    kernels::springBlock(s, b0, std::min(s.size(), b0 + kBlock), params.ks[k],
-                                         params.kd[k], x, v, f4, sums.degenerate, scratch);
+                    run ? kernels::springRunBlock(s, b0, b1, perLayer, params.ks[k], params.kd[k], x, v, f4,
+                                                  sums.degenerate, scratch)
+                        : kernels::springBlock(s, b0, b1, params.ks[k], params.kd[k], x, v, f4, sums.degenerate, scratch);
                 sums.power += block.power;
                 sums.stretch2[k] += block.stretch2;
             }

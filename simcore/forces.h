@@ -109,6 +109,8 @@ public:
     std::size_t sharedElements() const;
     // Edge quads over all parts (each holds four springs).
     std::size_t quadCount() const;
+    // Parts whose radius springs form a run (kernels::springRunBlock).
+    int radiusRuns() const;
 
     // Computes f = F(x, v) (3N). Overwrites f. With count = false the evaluation is not
     // counted (a display asking for the current forces is not part of the run's cost).
@@ -162,6 +164,8 @@ private:
     struct Part {
         kernels::QuadSet quads;  // most structural and shear springs of a two-layer body
         std::array<SpringSet, kSpringFamilyCount> springs;  // the rest
+        // Whether the radius springs form a run (kernels::springRunBlock): particle k to k + n.
+        bool radiusRun = false;
         std::vector<Surface> surfaces;
     };
     void partition();

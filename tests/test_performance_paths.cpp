@@ -160,6 +160,9 @@ private slots:
             QVERIFY(stepped);
             QVERIFY2(portable == vector, kernels::kernelSetName(set));  // bit for bit
         }
+        // The radius springs of every layered scene form runs (read as whole rows by the
+        // AVX-512 kernel): both chunks' at L4 and on the ring, the one chunk's on the lat/long.
+        QCOMPARE(Simulation(p, "rk4").forces().radiusRuns(), scene == "sphere3d-latlong" ? 1 : 2);
         if (scene == "sphere3d-latlong") {
             // One chunk (below the threshold), so its last block of quads has an odd count:
             // the AVX-512 kernel's single-quad tail is exercised.
