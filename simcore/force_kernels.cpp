@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 
@@ -200,8 +201,12 @@ QuadSums quadBlockPortable(const QuadSet& quads, std::size_t begin, std::size_t 
 
 #define SIMCORE_AVX2 __attribute__((target("avx2")))
 
+// A particle index as an unsigned offset (indices are never negative): addresses from it need
+// no sign extension.
+inline std::size_t index(int p) { return static_cast<std::uint32_t>(p); }
+
 // (x, y, z, 0) of particle p from a 3-per-particle array; the fourth double is never read.
-SIMCORE_AVX2 inline __m256d loadRow(const double* a, int p) {
+SIMCORE_AVX2 inline __m256d loadRow(const double* a, std::size_t p) {
     return _mm256_maskload_pd(a + 3 * p, _mm256_setr_epi64x(-1, -1, -1, 0));
 }
 
@@ -230,11 +235,11 @@ SIMCORE_AVX2 inline void toRows(__m256d X, __m256d Y, __m256d Z, __m256d (&r)[4]
     r[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
 }
 
-SIMCORE_AVX2 inline void addRow(double* f4, int p, __m256d row) {
+SIMCORE_AVX2 inline void addRow(double* f4, std::size_t p, __m256d row) {
     double* at = f4 + 4 * p;
     _mm256_store_pd(at, _mm256_add_pd(_mm256_load_pd(at), row));
 }
-SIMCORE_AVX2 inline void subRow(double* f4, int p, __m256d row) {
+SIMCORE_AVX2 inline void subRow(double* f4, std::size_t p, __m256d row) {
     double* at = f4 + 4 * p;
     _mm256_store_pd(at, _mm256_sub_pd(_mm256_load_pd(at), row));
 }
@@ -362,25 +367,35 @@ SIMCORE_AVX2 inline __m256d cross(__m256d p, __m256d q, __m256d r, __m256d s) {
     return _mm256_sub_pd(_mm256_mul_pd(p, q), _mm256_mul_pd(r, s));
 }
 
-// Triangles tri[0..3]: their gradients added to g4 in order; returns their x_a.(x_b x x_c).
-SIMCORE_AVX2 inline __m256d triangleGroupAvx2(const std::array<int, 3>* tri, const double* x, double* g4) {
+// Triangles tri[0..3]: their gradients (rows, not yet added) and x_a.(x_b x x_c).
+struct TriangleGroup {
+    __m256d gradient[4];
+    __m256d volume6;
+};
+SIMCORE_AVX2 inline TriangleGroup triangleGroupAvx2(const std::array<int, 3>* tri, const double* x) {
     const __m256d sixth = _mm256_set1_pd(6.0);
     __m256d ax, ay, az, bx, by, bz, cx, cy, cz;
-    toColumns(loadRow(x, tri[0][0]), loadRow(x, tri[1][0]), loadRow(x, tri[2][0]), loadRow(x, tri[3][0]), ax, ay, az);
-    toColumns(loadRow(x, tri[0][1]), loadRow(x, tri[1][1]), loadRow(x, tri[2][1]), loadRow(x, tri[3][1]), bx, by, bz);
-    toColumns(loadRow(x, tri[0][2]), loadRow(x, tri[1][2]), loadRow(x, tri[2][2]), loadRow(x, tri[3][2]), cx, cy, cz);
+    toColumns(loadRow(x, index(tri[0][0])), loadRow(x, index(tri[1][0])), loadRow(x, index(tri[2][0])),
+              loadRow(x, index(tri[3][0])), ax, ay, az);
+    toColumns(loadRow(x, index(tri[0][1])), loadRow(x, index(tri[1][1])), loadRow(x, index(tri[2][1])),
+              loadRow(x, index(tri[3][1])), bx, by, bz);
+    toColumns(loadRow(x, index(tri[0][2])), loadRow(x, index(tri[1][2])), loadRow(x, index(tri[2][2])),
+              loadRow(x, index(tri[3][2])), cx, cy, cz);
     // The portable triangleMath, operation by operation.
-    const __m256d volume6 = _mm256_add_pd(
+    TriangleGroup r;
+    r.volume6 = _mm256_add_pd(
         _mm256_add_pd(_mm256_mul_pd(ax, cross(by, cz, bz, cy)), _mm256_mul_pd(ay, cross(bz, cx, bx, cz))),
         _mm256_mul_pd(az, cross(bx, cy, by, cx)));
     const __m256d ux = _mm256_sub_pd(bx, ax), uy = _mm256_sub_pd(by, ay), uz = _mm256_sub_pd(bz, az);
     const __m256d wx = _mm256_sub_pd(cx, ax), wy = _mm256_sub_pd(cy, ay), wz = _mm256_sub_pd(cz, az);
-    __m256d gradient[4];
     toRows(_mm256_div_pd(cross(uy, wz, uz, wy), sixth), _mm256_div_pd(cross(uz, wx, ux, wz), sixth),
-           _mm256_div_pd(cross(ux, wy, uy, wx), sixth), gradient);
+           _mm256_div_pd(cross(ux, wy, uy, wx), sixth), r.gradient);
+    return r;
+}
+// A group's gradients added to its corners' rows, triangle by triangle.
+SIMCORE_AVX2 inline void addTriangleGroup(const std::array<int, 3>* tri, const TriangleGroup& group, double* g4) {
     for (int l = 0; l < 4; ++l)
-        for (int corner : tri[l]) addRow(g4, corner, gradient[l]);
-    return volume6;
+        for (int corner : tri[l]) addRow(g4, index(corner), group.gradient[l]);
 }
 
 SIMCORE_AVX2
@@ -390,7 +405,20 @@ double triangleBlockAvx2(const Surface& surface, std::size_t begin, std::size_t 
     const std::size_t count = end - begin;
     __m256d lanes = _mm256_setzero_pd();  // x_a.(x_b x x_c), triangle k in lane k mod 4
     std::size_t k = 0;
-    for (; k + 4 <= count; k += 4) lanes = _mm256_add_pd(lanes, triangleGroupAvx2(tri + k, x, g4));
+    // Two groups per iteration, both computed before either is added (independent chains
+    // for the out-of-order core to overlap).
+    for (; k + 8 <= count; k += 8) {
+        const TriangleGroup first = triangleGroupAvx2(tri + k, x), second = triangleGroupAvx2(tri + k + 4, x);
+        lanes = _mm256_add_pd(_mm256_add_pd(lanes, first.volume6), second.volume6);
+        addTriangleGroup(tri + k, first, g4);
+        addTriangleGroup(tri + k + 4, second, g4);
+    }
+    if (k + 4 <= count) {
+        const TriangleGroup last = triangleGroupAvx2(tri + k, x);
+        lanes = _mm256_add_pd(lanes, last.volume6);
+        addTriangleGroup(tri + k, last, g4);
+        k += 4;
+    }
     alignas(32) double lane[4];
     _mm256_store_pd(lane, lanes);
     if (k < count) {
@@ -420,10 +448,10 @@ void unpadAvx2(const double* f4, const double* g4, double p, const double* invMa
 
 // One quad: lanes (a, b), (A, B), (A, b), (B, a), the arithmetic of springArithmetic; its
 // forces added to f4, its sums to the given accumulators.
-SIMCORE_AVX2 inline void quadAvx2(int a, int b, int n, const double* rest, __m256d ks, __m256d kd,
-                                  const double* x, const double* v, double* f4, __m256d& power,
+SIMCORE_AVX2 inline void quadAvx2(std::size_t a, std::size_t b, std::size_t n, const double* rest, __m256d ks,
+                                  __m256d kd, const double* x, const double* v, double* f4, __m256d& power,
                                   __m256d& square, LaneCount<Vec4>& shortCount) {
-    const int A = a + n, B = b + n;
+    const std::size_t A = a + n, B = b + n;
     const __m256d xa = loadRow(x, a), xb = loadRow(x, b), xA = loadRow(x, A), xB = loadRow(x, B);
     const __m256d va = loadRow(v, a), vb = loadRow(v, b), vA = loadRow(v, A), vB = loadRow(v, B);
     __m256d dx, dy, dz, dvx, dvy, dvz;
@@ -460,8 +488,8 @@ QuadSums quadBlockAvx2(const QuadSet& quads, std::size_t begin, std::size_t end,
     LaneCount<Vec4> shortSprings{};
     for (std::size_t q = begin; q < end; ++q) {
         const std::size_t parity = (q - begin) & 1;
-        quadAvx2(quads.a[q], quads.b[q], n, quads.rest[q].data(), vks, vkd, x, v, f4, power[parity],
-                 square[parity], shortSprings);
+        quadAvx2(index(quads.a[q]), index(quads.b[q]), index(n), quads.rest[q].data(), vks, vkd, x, v, f4,
+                 power[parity], square[parity], shortSprings);
     }
     degenerate += laneTotal(shortSprings);
     return finishQuads(power[0], power[1], square[0], square[1]);
@@ -470,7 +498,7 @@ QuadSums quadBlockAvx2(const QuadSet& quads, std::size_t begin, std::size_t end,
 #if SIMCORE_AVX512_KERNELS
 
 // Rows of particles p and q in one register: [p | q].
-SIMCORE_AVX512 inline __m512d loadPair(const double* a, int p, int q) {
+SIMCORE_AVX512 inline __m512d loadPair(const double* a, std::size_t p, std::size_t q) {
     return _mm512_insertf64x4(_mm512_castpd256_pd512(loadRow(a, p)), loadRow(a, q), 1);
 }
 
@@ -505,44 +533,87 @@ SIMCORE_AVX512 inline void toRows8(__m512d X, __m512d Y, __m512d Z, __m512d (&r)
 SIMCORE_AVX512 inline __m256d low(__m512d v) { return _mm512_castpd512_pd256(v); }
 SIMCORE_AVX512 inline __m256d high(__m512d v) { return _mm512_extractf64x4_pd(v, 1); }
 
+// Two quads q (even) and q' (odd) in lanes (0, 1, 0', 1', 2, 3, 2', 3') of the four springs
+// (a, b), (A, B), (A, b), (B, a), so lanes 0-3 are structural, 4-7 shear: their forces per
+// particle row pair [quad | quad'], computed but not yet added.
+struct QuadPair {
+    std::size_t a, b, a1, b1;
+    __m512d fa, fb, fA, fB;  // added to a, subtracted from b, added to A and B
+    __m512d power, square;
+};
+
+SIMCORE_AVX512 inline QuadPair quadPairAvx512(const QuadSet& quads, std::size_t q, const double* x, const double* v,
+                                              const double* xo, const double* vo, __m512d ks, __m512d kd,
+                                              LaneCount<Vec8>& shortSprings) {
+    // Outer particles through the outer layer's base pointers: no index arithmetic beyond
+    // each index's own scaling (unsigned: no sign extension either).
+    QuadPair r;
+    r.a = index(quads.a[q]);
+    r.b = index(quads.b[q]);
+    r.a1 = index(quads.a[q + 1]);
+    r.b1 = index(quads.b[q + 1]);
+    const __m512d xa = loadPair(x, r.a, r.a1), xb = loadPair(x, r.b, r.b1);
+    const __m512d xA = loadPair(xo, r.a, r.a1), xB = loadPair(xo, r.b, r.b1);
+    const __m512d va = loadPair(v, r.a, r.a1), vb = loadPair(v, r.b, r.b1);
+    const __m512d vA = loadPair(vo, r.a, r.a1), vB = loadPair(vo, r.b, r.b1);
+    __m512d dx, dy, dz, dvx, dvy, dvz;
+    toColumns8(_mm512_sub_pd(xb, xa), _mm512_sub_pd(xB, xA), _mm512_sub_pd(xb, xA), _mm512_sub_pd(xa, xB), dx, dy, dz);
+    toColumns8(_mm512_sub_pd(vb, va), _mm512_sub_pd(vB, vA), _mm512_sub_pd(vb, vA), _mm512_sub_pd(va, vB), dvx, dvy, dvz);
+    const __m512i restOrder = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11);
+    const __m512d rest = _mm512_permutex2var_pd(_mm512_castpd256_pd512(_mm256_loadu_pd(quads.rest[q].data())), restOrder,
+                                                _mm512_castpd256_pd512(_mm256_loadu_pd(quads.rest[q + 1].data())));
+    const SpringLanes<Vec8> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, rest, ks, kd, shortSprings);
+    r.power = lane.power;
+    r.square = _mm512_mul_pd(lane.stretch, lane.stretch);
+    __m512d F[4];  // [F_j | F_j'] per spring j
+    toRows8(lane.fx, lane.fy, lane.fz, F);
+    r.fa = _mm512_sub_pd(F[0], F[3]);
+    r.fb = _mm512_add_pd(F[0], F[2]);
+    r.fA = _mm512_add_pd(F[1], F[2]);
+    r.fB = _mm512_sub_pd(F[3], F[1]);
+    return r;
+}
+
+// A pair's forces into f4 (inner rows) and fo (outer rows), quad q's before quad q''s.
+SIMCORE_AVX512 inline void addQuadPair(const QuadPair& r, double* f4, double* fo) {
+    addRow(f4, r.a, low(r.fa));
+    subRow(f4, r.b, low(r.fb));
+    addRow(fo, r.a, low(r.fA));
+    addRow(fo, r.b, low(r.fB));
+    addRow(f4, r.a1, high(r.fa));
+    subRow(f4, r.b1, high(r.fb));
+    addRow(fo, r.a1, high(r.fA));
+    addRow(fo, r.b1, high(r.fB));
+}
+
 SIMCORE_AVX512
 QuadSums quadBlockAvx512(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
                          std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
                          const double* v, double* f4, int& degenerate) {
-    // Two quads q (even) and q' (odd) per iteration; lanes (0, 1, 0', 1', 2, 3, 2', 3') of the
-    // four springs (a, b), (A, B), (A, b), (B, a), so lanes 0-3 are structural, 4-7 shear.
     const __m512d vks = _mm512_setr_pd(ks[0], ks[0], ks[0], ks[0], ks[1], ks[1], ks[1], ks[1]);
     const __m512d vkd = _mm512_setr_pd(kd[0], kd[0], kd[0], kd[0], kd[1], kd[1], kd[1], kd[1]);
-    const __m512d zero = _mm512_setzero_pd();
-    const __m512i restOrder = _mm512_setr_epi64(0, 1, 8, 9, 2, 3, 10, 11);
-    __m512d power = zero, square = zero;
+    __m512d power = _mm512_setzero_pd(), square = power;
     LaneCount<Vec8> shortSprings{};
+    const std::size_t outer = index(n);
+    const double *xo = x + 3 * outer, *vo = v + 3 * outer;
+    double* fo = f4 + 4 * outer;
     std::size_t q = begin;
-    for (; q + 2 <= end; q += 2) {
-        const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
-        const int a1 = quads.a[q + 1], b1 = quads.b[q + 1], A1 = a1 + n, B1 = b1 + n;
-        const __m512d xa = loadPair(x, a, a1), xb = loadPair(x, b, b1), xA = loadPair(x, A, A1), xB = loadPair(x, B, B1);
-        const __m512d va = loadPair(v, a, a1), vb = loadPair(v, b, b1), vA = loadPair(v, A, A1), vB = loadPair(v, B, B1);
-        __m512d dx, dy, dz, dvx, dvy, dvz;
-        toColumns8(_mm512_sub_pd(xb, xa), _mm512_sub_pd(xB, xA), _mm512_sub_pd(xb, xA), _mm512_sub_pd(xa, xB), dx, dy, dz);
-        toColumns8(_mm512_sub_pd(vb, va), _mm512_sub_pd(vB, vA), _mm512_sub_pd(vb, vA), _mm512_sub_pd(va, vB), dvx, dvy, dvz);
-        const __m512d rest = _mm512_permutex2var_pd(_mm512_castpd256_pd512(_mm256_loadu_pd(quads.rest[q].data())), restOrder,
-                                                    _mm512_castpd256_pd512(_mm256_loadu_pd(quads.rest[q + 1].data())));
-        const SpringLanes<Vec8> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, rest, vks, vkd, shortSprings);
-        power = _mm512_add_pd(power, lane.power);
-        square = _mm512_add_pd(square, _mm512_mul_pd(lane.stretch, lane.stretch));
-        __m512d F[4];  // [F_j | F_j'] per spring j
-        toRows8(lane.fx, lane.fy, lane.fz, F);
-        const __m512d fa = _mm512_sub_pd(F[0], F[3]), fb = _mm512_add_pd(F[0], F[2]);
-        const __m512d fA = _mm512_add_pd(F[1], F[2]), fB = _mm512_sub_pd(F[3], F[1]);
-        addRow(f4, a, low(fa));
-        subRow(f4, b, low(fb));
-        addRow(f4, A, low(fA));
-        addRow(f4, B, low(fB));
-        addRow(f4, a1, high(fa));
-        subRow(f4, b1, high(fb));
-        addRow(f4, A1, high(fA));
-        addRow(f4, B1, high(fB));
+    // Two pairs per iteration, both computed before either is added: two independent chains
+    // of sqrt, divide and shuffles for the out-of-order core to overlap.
+    for (; q + 4 <= end; q += 4) {
+        const QuadPair first = quadPairAvx512(quads, q, x, v, xo, vo, vks, vkd, shortSprings);
+        const QuadPair second = quadPairAvx512(quads, q + 2, x, v, xo, vo, vks, vkd, shortSprings);
+        power = _mm512_add_pd(_mm512_add_pd(power, first.power), second.power);
+        square = _mm512_add_pd(_mm512_add_pd(square, first.square), second.square);
+        addQuadPair(first, f4, fo);
+        addQuadPair(second, f4, fo);
+    }
+    if (q + 2 <= end) {
+        const QuadPair last = quadPairAvx512(quads, q, x, v, xo, vo, vks, vkd, shortSprings);
+        power = _mm512_add_pd(power, last.power);
+        square = _mm512_add_pd(square, last.square);
+        addQuadPair(last, f4, fo);
+        q += 2;
     }
     // Lanes (0, 1, 0', 1', 2, 3, 2', 3') to the even and odd accumulators.
     const __m512i evenLanes = _mm512_setr_epi64(0, 1, 4, 5, 0, 0, 0, 0);
@@ -553,9 +624,9 @@ QuadSums quadBlockAvx512(const QuadSet& quads, std::size_t begin, std::size_t en
     const __m256d oddSquare = low(_mm512_permutexvar_pd(oddLanes, square));
     LaneCount<Vec4> tailShort{};
     if (q < end)  // an odd count: the last quad is an even one
-        quadAvx2(quads.a[q], quads.b[q], n, quads.rest[q].data(), _mm256_setr_pd(ks[0], ks[0], ks[1], ks[1]),
-                 _mm256_setr_pd(kd[0], kd[0], kd[1], kd[1]), x, v,
-                 f4, evenPower, evenSquare, tailShort);
+        quadAvx2(index(quads.a[q]), index(quads.b[q]), outer, quads.rest[q].data(),
+                 _mm256_setr_pd(ks[0], ks[0], ks[1], ks[1]), _mm256_setr_pd(kd[0], kd[0], kd[1], kd[1]), x, v, f4,
+                 evenPower, evenSquare, tailShort);
     degenerate += laneTotal(shortSprings) + laneTotal(tailShort);
     return finishQuads(evenPower, oddPower, evenSquare, oddSquare);
 }
