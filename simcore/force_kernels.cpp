@@ -446,11 +446,16 @@ void unpadAvx2(const double* f4, const double* g4, double p, const double* invMa
     unpadPortable(f4, g4, p, invMass3, i, end, out);
 }
 
-// One quad: lanes (a, b), (A, B), (A, b), (B, a), the arithmetic of springArithmetic; its
-// forces added to f4, its sums to the given accumulators.
-SIMCORE_AVX2 inline void quadAvx2(std::size_t a, std::size_t b, std::size_t n, const double* rest, __m256d ks,
-                                  __m256d kd, const double* x, const double* v, double* f4, __m256d& power,
-                                  __m256d& square, LaneCount<Vec4>& shortCount) {
+// One quad: lanes (a, b), (A, B), (A, b), (B, a), the arithmetic of springArithmetic: its
+// force rows (not yet added) and sums.
+struct QuadLanes {
+    std::size_t a, b;
+    __m256d fa, fb, fA, fB;  // added to a, subtracted from b, added to A and B
+    __m256d power, square;
+};
+SIMCORE_AVX2 inline QuadLanes quadLanesAvx2(std::size_t a, std::size_t b, std::size_t n, const double* rest,
+                                            __m256d ks, __m256d kd, const double* x, const double* v,
+                                            LaneCount<Vec4>& shortCount) {
     const std::size_t A = a + n, B = b + n;
     const __m256d xa = loadRow(x, a), xb = loadRow(x, b), xA = loadRow(x, A), xB = loadRow(x, B);
     const __m256d va = loadRow(v, a), vb = loadRow(v, b), vA = loadRow(v, A), vB = loadRow(v, B);
@@ -458,14 +463,25 @@ SIMCORE_AVX2 inline void quadAvx2(std::size_t a, std::size_t b, std::size_t n, c
     toColumns(_mm256_sub_pd(xb, xa), _mm256_sub_pd(xB, xA), _mm256_sub_pd(xb, xA), _mm256_sub_pd(xa, xB), dx, dy, dz);
     toColumns(_mm256_sub_pd(vb, va), _mm256_sub_pd(vB, vA), _mm256_sub_pd(vb, vA), _mm256_sub_pd(va, vB), dvx, dvy, dvz);
     const SpringLanes<Vec4> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, _mm256_loadu_pd(rest), ks, kd, shortCount);
-    power = _mm256_add_pd(power, lane.power);
-    square = _mm256_add_pd(square, _mm256_mul_pd(lane.stretch, lane.stretch));
     __m256d F[4];
     toRows(lane.fx, lane.fy, lane.fz, F);
-    addRow(f4, a, _mm256_sub_pd(F[0], F[3]));
-    subRow(f4, b, _mm256_add_pd(F[0], F[2]));
-    addRow(f4, A, _mm256_add_pd(F[1], F[2]));
-    addRow(f4, B, _mm256_sub_pd(F[3], F[1]));
+    return {a, b, _mm256_sub_pd(F[0], F[3]), _mm256_add_pd(F[0], F[2]), _mm256_add_pd(F[1], F[2]),
+            _mm256_sub_pd(F[3], F[1]), lane.power, _mm256_mul_pd(lane.stretch, lane.stretch)};
+}
+SIMCORE_AVX2 inline void addQuad(const QuadLanes& r, std::size_t n, double* f4) {
+    addRow(f4, r.a, r.fa);
+    subRow(f4, r.b, r.fb);
+    addRow(f4, r.a + n, r.fA);
+    addRow(f4, r.b + n, r.fB);
+}
+// One quad computed and added, its sums into the given accumulators.
+SIMCORE_AVX2 inline void quadAvx2(std::size_t a, std::size_t b, std::size_t n, const double* rest, __m256d ks,
+                                  __m256d kd, const double* x, const double* v, double* f4, __m256d& power,
+                                  __m256d& square, LaneCount<Vec4>& shortCount) {
+    const QuadLanes r = quadLanesAvx2(a, b, n, rest, ks, kd, x, v, shortCount);
+    power = _mm256_add_pd(power, r.power);
+    square = _mm256_add_pd(square, r.square);
+    addQuad(r, n, f4);
 }
 
 SIMCORE_AVX2 inline QuadSums finishQuads(__m256d evenPower, __m256d oddPower, __m256d evenSquare,
@@ -486,11 +502,24 @@ QuadSums quadBlockAvx2(const QuadSet& quads, std::size_t begin, std::size_t end,
     const __m256d vkd = _mm256_setr_pd(kd[0], kd[0], kd[1], kd[1]);
     __m256d power[2] = {_mm256_setzero_pd(), _mm256_setzero_pd()}, square[2] = {power[0], power[0]};
     LaneCount<Vec4> shortSprings{};
-    for (std::size_t q = begin; q < end; ++q) {
-        const std::size_t parity = (q - begin) & 1;
-        quadAvx2(index(quads.a[q]), index(quads.b[q]), index(n), quads.rest[q].data(), vks, vkd, x, v, f4,
-                 power[parity], square[parity], shortSprings);
+    const std::size_t outer = index(n);
+    std::size_t q = begin;
+    // Two quads (even, odd) per iteration, both computed before either is added.
+    for (; q + 2 <= end; q += 2) {
+        const QuadLanes even = quadLanesAvx2(index(quads.a[q]), index(quads.b[q]), outer, quads.rest[q].data(), vks,
+                                             vkd, x, v, shortSprings);
+        const QuadLanes odd = quadLanesAvx2(index(quads.a[q + 1]), index(quads.b[q + 1]), outer,
+                                            quads.rest[q + 1].data(), vks, vkd, x, v, shortSprings);
+        power[0] = _mm256_add_pd(power[0], even.power);
+        square[0] = _mm256_add_pd(square[0], even.square);
+        power[1] = _mm256_add_pd(power[1], odd.power);
+        square[1] = _mm256_add_pd(square[1], odd.square);
+        addQuad(even, outer, f4);
+        addQuad(odd, outer, f4);
     }
+    if (q < end)
+        quadAvx2(index(quads.a[q]), index(quads.b[q]), outer, quads.rest[q].data(), vks, vkd, x, v, f4, power[0],
+                 square[0], shortSprings);
     degenerate += laneTotal(shortSprings);
     return finishQuads(power[0], power[1], square[0], square[1]);
 }
