@@ -4,11 +4,15 @@
 // A step is a fixed list of stages, in this order:
 //
 //   integrate   the integrator calls derivative() once per stage:
-//                 clear forces -> gravity -> springs -> gas -> pointer -> a = F / m
+//                 springs -> gas -> gravity, pointer -> a = F / m -> its stage sums
+//   scan        one pass: finiteness, extent, kinetic and gravity energy, fastest speed
 //   collide     box planes: project back, v_n -> -e v_n (energy removed is recorded)
-//   constrain   inner layer kept inside the outer one
+//   measure     a force evaluation at the end state: energies, volumes, pressures, and
+//               the derivative the next step's first stage takes
+//   constrain   inner layer kept inside the outer one (normals: the outer layer's dV/dx
+//               from the measurement; a corrected state is measured again)
 //   check       non-finite, layer inside out, runaway velocity or energy -> failure
-//   diagnose    volumes, pressures, energies, balance
+//   diagnose    energies, balance
 //
 // On failure the last good state is restored and kept; no non-finite value ever leaves.
 // Parameters change only between steps (the caller owns the thread that steps).
