@@ -362,6 +362,57 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
     return finishSprings(springs, k, end, ks, kd, x, v, f4, degenerate, scratch, sums);
 }
 
+// Four consecutive rows (x, y, z) of a 3-per-particle array (12 doubles, three registers) to
+// columns X = (x0 x1 x2 x3) and so on: blends, then one permute each.
+SIMCORE_AVX2 inline void rowsToColumns4(const double* at, __m256d& X, __m256d& Y, __m256d& Z) {
+    const __m256d r0 = _mm256_loadu_pd(at);      // x0 y0 z0 x1
+    const __m256d r1 = _mm256_loadu_pd(at + 4);  // y1 z1 x2 y2
+    const __m256d r2 = _mm256_loadu_pd(at + 8);  // z2 x3 y3 z3
+    X = _mm256_permute4x64_pd(_mm256_blend_pd(_mm256_blend_pd(r0, r1, 0b0100), r2, 0b0010), 0x6c);  // x0 x3 x2 x1
+    Y = _mm256_permute_pd(_mm256_blend_pd(_mm256_blend_pd(r0, r1, 0b1001), r2, 0b0100), 0b0101);     // y1 y0 y3 y2
+    Z = _mm256_permute4x64_pd(_mm256_blend_pd(_mm256_blend_pd(r0, r1, 0b0010), r2, 0b1001), 0xc6);  // z2 z1 z0 z3
+}
+
+// Springs [k, end) of a run (spring k joins particle first + (k - begin) and that + n) in groups
+// of four read as whole rows, into the accumulators; returns where it stopped.
+SIMCORE_AVX2 inline std::size_t radiusGroupsAvx2(const SpringSet& springs, std::size_t begin, std::size_t k,
+                                                 std::size_t end, std::size_t n, __m256d ks, __m256d kd,
+                                                 const double* x, const double* v, double* f4,
+                                                 SpringAccumulators& sums) {
+    const std::size_t first = index(springs.a[begin]);
+    for (; k + 4 <= end; k += 4) {
+        const std::size_t p = first + (k - begin), q = p + n;
+        __m256d ax, ay, az, bx, by, bz, avx, avy, avz, bvx, bvy, bvz;
+        rowsToColumns4(x + 3 * p, ax, ay, az);
+        rowsToColumns4(x + 3 * q, bx, by, bz);
+        rowsToColumns4(v + 3 * p, avx, avy, avz);
+        rowsToColumns4(v + 3 * q, bvx, bvy, bvz);
+        const SpringLanes<Vec4> lane =
+            springLanes(_mm256_sub_pd(bx, ax), _mm256_sub_pd(by, ay), _mm256_sub_pd(bz, az), _mm256_sub_pd(bvx, avx),
+                        _mm256_sub_pd(bvy, avy), _mm256_sub_pd(bvz, avz), _mm256_loadu_pd(springs.rest.data() + k), ks,
+                        kd, sums.shortSprings);
+        sums.power = _mm256_add_pd(sums.power, lane.power);
+        sums.square = _mm256_add_pd(sums.square, _mm256_mul_pd(lane.stretch, lane.stretch));
+        __m256d force[4];
+        toRows(lane.fx, lane.fy, lane.fz, force);
+        for (std::size_t l = 0; l < 4; ++l) {
+            addRow(f4, p + l, force[l]);
+            subRow(f4, q + l, force[l]);
+        }
+    }
+    return k;
+}
+
+SIMCORE_AVX2
+SpringSums radiusRunAvx2(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double ks,
+                         double kd, const double* x, const double* v, double* f4, int& degenerate,
+                         Scratch& scratch) {
+    SpringAccumulators sums;
+    const std::size_t k = radiusGroupsAvx2(springs, begin, begin, end, index(n), _mm256_set1_pd(ks),
+                                           _mm256_set1_pd(kd), x, v, f4, sums);
+    return finishSprings(springs, k, end, ks, kd, x, v, f4, degenerate, scratch, sums);
+}
+
 // p q - r s
 SIMCORE_AVX2 inline __m256d cross(__m256d p, __m256d q, __m256d r, __m256d s) {
     return _mm256_sub_pd(_mm256_mul_pd(p, q), _mm256_mul_pd(r, s));
@@ -728,7 +779,7 @@ SpringSums radiusRunAvx512(const SpringSet& springs, std::size_t begin, std::siz
         }
     }
     degenerate += laneTotal(shortSprings);
-    k = springGroupsAvx2(springs, k, end, _mm256_set1_pd(ks), _mm256_set1_pd(kd), x, v, f4, sums);
+    k = radiusGroupsAvx2(springs, begin, k, end, index(n), _mm256_set1_pd(ks), _mm256_set1_pd(kd), x, v, f4, sums);
     return finishSprings(springs, k, end, ks, kd, x, v, f4, degenerate, scratch, sums);
 }
 
@@ -805,6 +856,9 @@ SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size
 #if SIMCORE_AVX512_KERNELS
     if (kernelsInUse() == KernelSet::Avx512)
         return radiusRunAvx512(springs, begin, end, n, ks, kd, x, v, f4, degenerate, scratch);
+#endif
+#if SIMCORE_AVX2_KERNELS
+    if (kernelsInUse() == KernelSet::Avx2) return radiusRunAvx2(springs, begin, end, n, ks, kd, x, v, f4, degenerate, scratch);
 #endif
     (void)n;
     return springBlock(springs, begin, end, ks, kd, x, v, f4, degenerate, scratch);
