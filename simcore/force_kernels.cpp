@@ -364,7 +364,7 @@ SpringSums springBlockAvx2(const SpringSet& springs, std::size_t begin, std::siz
 
 // Four consecutive rows (x, y, z) of a 3-per-particle array (12 doubles, three registers) to
 // columns X = (x0 x1 x2 x3) and so on: blends, then one permute each.
-SIMCORE_AVX2 inline void rowsToColumns4(const double* at, __m256d& X, __m256d& Y, __m256d& Z) {
+SIMCORE_AVX2 inline void rowsToColumns(const double* at, Vec4& X, Vec4& Y, Vec4& Z) {
     const __m256d r0 = _mm256_loadu_pd(at);      // x0 y0 z0 x1
     const __m256d r1 = _mm256_loadu_pd(at + 4);  // y1 z1 x2 y2
     const __m256d r2 = _mm256_loadu_pd(at + 8);  // z2 x3 y3 z3
@@ -372,6 +372,26 @@ SIMCORE_AVX2 inline void rowsToColumns4(const double* at, __m256d& X, __m256d& Y
     Y = _mm256_permute_pd(_mm256_blend_pd(_mm256_blend_pd(r0, r1, 0b1001), r2, 0b0100), 0b0101);     // y1 y0 y3 y2
     Z = _mm256_permute4x64_pd(_mm256_blend_pd(_mm256_blend_pd(r0, r1, 0b0010), r2, 0b1001), 0xc6);  // z2 z1 z0 z3
 }
+
+// The springs from particles p.. to q.. (a run's group of four or eight): their end rows read
+// as whole rows and transposed, then springLanes. (Written once for both widths; always
+// inlined into a kernel with the instructions enabled.)
+#if SIMCORE_AVX512_KERNELS
+SIMCORE_AVX512 inline void rowsToColumns(const double* at, Vec8& X, Vec8& Y, Vec8& Z);
+#endif
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+template <class V, class Count>
+[[gnu::always_inline]] inline SpringLanes<V> radiusLanes(const double* x, const double* v, std::size_t p,
+                                                         std::size_t q, V rest, V ks, V kd, Count& shortCount) {
+    V ax, ay, az, bx, by, bz, avx, avy, avz, bvx, bvy, bvz;
+    rowsToColumns(x + 3 * p, ax, ay, az);
+    rowsToColumns(x + 3 * q, bx, by, bz);
+    rowsToColumns(v + 3 * p, avx, avy, avz);
+    rowsToColumns(v + 3 * q, bvx, bvy, bvz);
+    return springLanes<V>(bx - ax, by - ay, bz - az, bvx - avx, bvy - avy, bvz - avz, rest, ks, kd, shortCount);
+}
+#pragma GCC diagnostic pop
 
 // Springs [k, end) of a run (spring k joins particle first + (k - begin) and that + n) in groups
 // of four read as whole rows, into the accumulators; returns where it stopped.
@@ -382,15 +402,8 @@ SIMCORE_AVX2 inline std::size_t radiusGroupsAvx2(const SpringSet& springs, std::
     const std::size_t first = index(springs.a[begin]);
     for (; k + 4 <= end; k += 4) {
         const std::size_t p = first + (k - begin), q = p + n;
-        __m256d ax, ay, az, bx, by, bz, avx, avy, avz, bvx, bvy, bvz;
-        rowsToColumns4(x + 3 * p, ax, ay, az);
-        rowsToColumns4(x + 3 * q, bx, by, bz);
-        rowsToColumns4(v + 3 * p, avx, avy, avz);
-        rowsToColumns4(v + 3 * q, bvx, bvy, bvz);
         const SpringLanes<Vec4> lane =
-            springLanes(_mm256_sub_pd(bx, ax), _mm256_sub_pd(by, ay), _mm256_sub_pd(bz, az), _mm256_sub_pd(bvx, avx),
-                        _mm256_sub_pd(bvy, avy), _mm256_sub_pd(bvz, avz), _mm256_loadu_pd(springs.rest.data() + k), ks,
-                        kd, sums.shortSprings);
+            radiusLanes<Vec4>(x, v, p, q, _mm256_loadu_pd(springs.rest.data() + k), ks, kd, sums.shortSprings);
         sums.power = _mm256_add_pd(sums.power, lane.power);
         sums.square = _mm256_add_pd(sums.square, _mm256_mul_pd(lane.stretch, lane.stretch));
         __m256d force[4];
@@ -713,7 +726,7 @@ QuadSums quadBlockAvx512(const QuadSet& quads, std::size_t begin, std::size_t en
 
 // Eight consecutive rows (x, y, z) of a 3-per-particle array, from three registers
 // (24 doubles), to columns in natural order: X = (x0 .. x7) and so on.
-SIMCORE_AVX512 inline void rowsToColumns8(const double* at, __m512d& X, __m512d& Y, __m512d& Z) {
+SIMCORE_AVX512 inline void rowsToColumns(const double* at, Vec8& X, Vec8& Y, Vec8& Z) {
     const __m512d r0 = _mm512_loadu_pd(at), r1 = _mm512_loadu_pd(at + 8), r2 = _mm512_loadu_pd(at + 16);
     // Indices 0-7 pick from the first operand, 8-15 from the second.
     const __m512d x01 = _mm512_permutex2var_pd(r0, _mm512_setr_epi64(0, 3, 6, 9, 12, 15, 0, 0), r1);
@@ -756,16 +769,9 @@ SpringSums radiusRunAvx512(const SpringSet& springs, std::size_t begin, std::siz
     const int first = springs.a[begin];
     std::size_t k = begin;
     for (; k + 8 <= end; k += 8) {
-        const int p = first + static_cast<int>(k - begin), q = p + n;
-        __m512d ax, ay, az, bx, by, bz, avx, avy, avz, bvx, bvy, bvz;
-        rowsToColumns8(x + 3 * p, ax, ay, az);
-        rowsToColumns8(x + 3 * q, bx, by, bz);
-        rowsToColumns8(v + 3 * p, avx, avy, avz);
-        rowsToColumns8(v + 3 * q, bvx, bvy, bvz);
+        const std::size_t p = index(first) + (k - begin), q = p + index(n);
         const SpringLanes<Vec8> lane =
-            springLanes(_mm512_sub_pd(bx, ax), _mm512_sub_pd(by, ay), _mm512_sub_pd(bz, az), _mm512_sub_pd(bvx, avx),
-                        _mm512_sub_pd(bvy, avy), _mm512_sub_pd(bvz, avz), _mm512_loadu_pd(springs.rest.data() + k), vks,
-                        vkd, shortSprings);
+            radiusLanes<Vec8>(x, v, p, q, _mm512_loadu_pd(springs.rest.data() + k), vks, vkd, shortSprings);
         const __m512d square = _mm512_mul_pd(lane.stretch, lane.stretch);
         sums.power = _mm256_add_pd(_mm256_add_pd(sums.power, low(lane.power)), high(lane.power));
         sums.square = _mm256_add_pd(_mm256_add_pd(sums.square, low(square)), high(square));
