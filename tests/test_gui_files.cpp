@@ -8,7 +8,9 @@
 //     an existing file when the disk fills up (RLIMIT_FSIZE: works as root, where permission
 //     bits do not) and into a full device node of our own (never /dev/full itself): an error
 //     naming the file, the old file byte-identical, no temporary file left;
-//   - the recent-files list: order, cap, persistence, a missing file dropped when chosen.
+//   - the recent-files list: order, cap, persistence, a missing file dropped when chosen;
+//   - unsaved changes: quitting or opening another file asks Save / Discard / Cancel.
+#include <QAbstractButton>
 #include <QComboBox>
 #include <QDir>
 #include <QElapsedTimer>
@@ -21,6 +23,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include <csignal>
 #include <sys/resource.h>
@@ -86,6 +89,21 @@ QByteArray readAll(const QString& path) {
 QString latestWarning(const QWidget& window) {
     const auto boxes = window.findChildren<QMessageBox*>();
     return boxes.isEmpty() ? QString() : boxes.back()->text();
+}
+
+// Answers the window's next "unsaved changes" box with `button`, from inside the box's own
+// event loop; counts the boxes it answered into *answered.
+void answerUnsavedBox(QWidget& window, QMessageBox::StandardButton button, int* answered) {
+    auto* timer = new QTimer(&window);
+    QObject::connect(timer, &QTimer::timeout, &window, [&window, timer, button, answered] {
+        auto* box = window.findChild<QMessageBox*>(QStringLiteral("unsavedChangesBox"));
+        if (!box || !box->isVisible()) return;
+        timer->stop();
+        timer->deleteLater();
+        ++*answered;
+        box->button(button)->click();
+    });
+    timer->start(10);
 }
 
 // A good scene file text with one piece replaced.
@@ -414,6 +432,59 @@ private slots:
         window.applyPreset(*findPreset("ring2d"));
         QCOMPARE(window.currentFile(), QString());
         QVERIFY(waitUntil([&] { return window.windowTitle().startsWith("Elastic Lab"); }));
+    }
+
+    void unsavedChangesAreAskedAbout() {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("ring.json");
+        simcore::ParameterSet p(simcore::SceneKind::Ring2d);
+        p.set("ks", 950);
+        const simcore::Simulation sim(p, "rk4");
+        QCOMPARE(writeFile(path, QByteArray::fromStdString(simcore::sceneFileText(sim, "ring2d", true))), QString());
+        const QByteArray original = readAll(path);
+        auto savedKs = [&] {
+            const simcore::SceneFileResult read = simcore::readSceneFile(path.toStdString());
+            return read.file ? read.file->params.get("ks") : -1.0;
+        };
+
+        MainWindow window(false);
+        SimulationController* c = window.controller();
+        window.show();
+        QCOMPARE(window.openSceneFile(path), QString());
+        QVERIFY(waitUntil([&] { return window.currentFile() == path && c->latest() != nullptr; }));
+        int answered = 0;
+
+        // Nothing changed: quitting asks nothing.
+        QVERIFY(window.close());
+        QCOMPARE(answered, 0);
+        window.show();
+
+        c->setParameter("ks", 1234);
+        QVERIFY(waitUntil([&] { return window.isWindowModified(); }));
+        // Cancel keeps the window, the scene and the file.
+        answerUnsavedBox(window, QMessageBox::Cancel, &answered);
+        QVERIFY(!window.close());
+        QCOMPARE(answered, 1);
+        QVERIFY(window.isVisible());
+        // Open asks first; Cancel: no file dialog, nothing opened.
+        answerUnsavedBox(window, QMessageBox::Cancel, &answered);
+        window.openSceneDialog();
+        QCOMPARE(answered, 2);
+        QCOMPARE(window.currentFile(), path);
+        QVERIFY(window.isWindowModified());
+        QCOMPARE(readAll(path), original);
+        // Discard closes and leaves the file as it was.
+        answerUnsavedBox(window, QMessageBox::Discard, &answered);
+        QVERIFY(window.close());
+        QCOMPARE(answered, 3);
+        QCOMPARE(readAll(path), original);
+        // Save writes the changes, then closes.
+        window.show();
+        answerUnsavedBox(window, QMessageBox::Save, &answered);
+        QVERIFY(window.close());
+        QCOMPARE(answered, 4);
+        QCOMPARE(savedKs(), 1234.0);
+        QVERIFY(!window.isWindowModified());
     }
 
     void sideBySideSavesTheFirstView() {

@@ -337,8 +337,30 @@ void MainWindow::writeSettings() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
     writeSettings();
     event->accept();
+}
+
+bool MainWindow::maybeSave() {
+    // The title's modified mark is the measure: the parameters or the integrator differ from
+    // what the current file holds (running alone does not count).
+    if (m_currentFile.isEmpty() || !isWindowModified()) return true;
+    QMessageBox box(QMessageBox::Warning, tr("Unsaved changes"),
+                    tr("The parameters or the integrator of %1 have changed since it was saved.")
+                        .arg(QFileInfo(m_currentFile).fileName()),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, this);
+    box.setInformativeText(tr("Save stores the changes and the current state in the file."));
+    box.setDefaultButton(QMessageBox::Save);
+    box.setObjectName(QStringLiteral("unsavedChangesBox"));
+    switch (box.exec()) {
+        case QMessageBox::Save: return saveSceneFile(m_currentFile).isEmpty();
+        case QMessageBox::Discard: return true;
+        default: return false;
+    }
 }
 
 void MainWindow::setViewOptions(const ViewOptions& options) {
@@ -476,7 +498,9 @@ void MainWindow::fillRecentMenu() {
         a->setToolTip(paths[i]);
         a->setData(paths[i]);
         const QString path = paths[i];
-        connect(a, &QAction::triggered, this, [this, path] { openRecent(path); });
+        connect(a, &QAction::triggered, this, [this, path] {
+            if (maybeSave()) openRecent(path);
+        });
     }
     if (paths.isEmpty()) m_recentMenu->addAction(tr("(none)"))->setEnabled(false);
     m_recentMenu->addSeparator();
@@ -488,6 +512,7 @@ void MainWindow::fillRecentMenu() {
 }
 
 void MainWindow::openSceneDialog() {
+    if (!maybeSave()) return;
     const QString dir = m_currentFile.isEmpty() ? QString() : QFileInfo(m_currentFile).absolutePath();
     const QString path =
         QFileDialog::getOpenFileName(this, tr("Open scene"), dir, tr("Elastic Lab scenes (*.json);;All files (*)"));

@@ -61,7 +61,11 @@ public slots:
     // `file` was changed after reading (main()'s --set), so the title marks it modified.
     void openScene(const simcore::SceneFile& file, const QStringList& integrators, const QString& path,
                    const simcore::SceneFile* onDisk = nullptr);
-    void openSceneDialog();
+    void openSceneDialog();  // asks first when the current file has unsaved changes
+    // Whether the window may drop its scene (quit, open another file): true when nothing is
+    // unsaved; otherwise asks Save / Discard / Cancel (window-modal) and says whether to go on
+    // (Save: only when the save worked).
+    bool maybeSave();
     void saveScene();  // to the current file, or Save as when there is none
     void saveSceneAs();
     void applyPreset(const elui::Preset& preset);
