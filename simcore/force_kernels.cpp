@@ -437,7 +437,7 @@ struct TriangleGroup {
     __m256d volume6;
 };
 SIMCORE_AVX2 inline TriangleGroup triangleGroupAvx2(const std::array<int, 3>* tri, const double* x) {
-    const __m256d sixth = _mm256_set1_pd(6.0);
+    const __m256d six = _mm256_set1_pd(6.0);
     __m256d ax, ay, az, bx, by, bz, cx, cy, cz;
     toColumns(loadRow(x, index(tri[0][0])), loadRow(x, index(tri[1][0])), loadRow(x, index(tri[2][0])),
               loadRow(x, index(tri[3][0])), ax, ay, az);
@@ -452,8 +452,8 @@ SIMCORE_AVX2 inline TriangleGroup triangleGroupAvx2(const std::array<int, 3>* tr
         _mm256_mul_pd(az, cross(bx, cy, by, cx)));
     const __m256d ux = _mm256_sub_pd(bx, ax), uy = _mm256_sub_pd(by, ay), uz = _mm256_sub_pd(bz, az);
     const __m256d wx = _mm256_sub_pd(cx, ax), wy = _mm256_sub_pd(cy, ay), wz = _mm256_sub_pd(cz, az);
-    toRows(_mm256_div_pd(cross(uy, wz, uz, wy), sixth), _mm256_div_pd(cross(uz, wx, ux, wz), sixth),
-           _mm256_div_pd(cross(ux, wy, uy, wx), sixth), r.gradient);
+    toRows(_mm256_div_pd(cross(uy, wz, uz, wy), six), _mm256_div_pd(cross(uz, wx, ux, wz), six),
+           _mm256_div_pd(cross(ux, wy, uy, wx), six), r.gradient);
     return r;
 }
 // A group's gradients added to its corners' rows, triangle by triangle.

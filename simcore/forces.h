@@ -120,7 +120,6 @@ public:
     // With `then`, each chunk calls then(begin, length) on its ranges of the combined vector
     // [xdot | a] (xdot at 0, a at 3N) as soon as they are written; no element of x or v is
     // read after its range is handed over, so `then` may overwrite them.
-    using RangeWork = FunctionRef<void(std::ptrdiff_t, std::ptrdiff_t)>;
     void evaluateMotion(const double* x, const double* v, const double* invMass3, double* xdot,
                         double* a, ForceExtras& extras, bool count = true, const RangeWork* then = nullptr);
     // The same forces by the plain one-pass kernels (the reference the fast path is tested on).

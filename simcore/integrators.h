@@ -45,8 +45,6 @@ public:
     // dydt = f(t, y). Must not allocate.
     virtual void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) = 0;
 
-    // Element-wise work on a range (begin, length) of a state-sized vector.
-    using RangeWork = FunctionRef<void(Eigen::Index, Eigen::Index)>;
     // dydt = f(t, y), then then(begin, length) over ranges that cover dydt once, each called
     // when its part of dydt is final; `then` may overwrite its range of y (the system reads
     // no element of y after handing over its range). A system that computes dydt in pieces

@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <cstddef>
 #include <mutex>
 #include <thread>
 #include <type_traits>
@@ -39,6 +40,8 @@ private:
 
 // A task of a run: called with its index.
 using TaskRef = FunctionRef<void(int)>;
+// Element-wise work on a range (begin, length) of a vector.
+using RangeWork = FunctionRef<void(std::ptrdiff_t, std::ptrdiff_t)>;
 
 class ThreadPool {
 public:

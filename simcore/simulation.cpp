@@ -302,19 +302,19 @@ void Simulation::startBookkeeping() {
     m_energyScale = scale;
 }
 
-void Simulation::measure(Diagnostics& d) const {
+void Simulation::measure(Diagnostics& d) const { measureByPasses(d, scanState()); }
+
+void Simulation::measureByPasses(Diagnostics& d, const Scan& scan) const {
     fillDiagnostics(d, m_forces.springEnergies(m_y.data()),
                     m_forces.terms().has(Term::Gas) ? m_forces.volumes(m_y.data()) : std::array<double, 2>{},
-                    scanState());
+                    scan);
 }
 
 void Simulation::measureState(Diagnostics& d, const Scan& scan) {
     if (m_reuseEndForces)
         measureWithForces(d, scan);
     else
-        fillDiagnostics(d, m_forces.springEnergies(m_y.data()),
-                        m_forces.terms().has(Term::Gas) ? m_forces.volumes(m_y.data()) : std::array<double, 2>{},
-                        scan);
+        measureByPasses(d, scan);
 }
 
 void Simulation::measureWithForces(Diagnostics& d, const Scan& scan) {

@@ -202,12 +202,14 @@ private:
     // normals4: the outer layer's dV/dx, padded (ForceModel::volumeGradient()).
     bool constrainLayers(bool apply, const double* normals4);
     // Why the state (measured into d) is unusable, or nothing.
-    // `finite`: whether the state is free of NaN and infinity (known to the caller).
     // `scan`: the state's scan (finiteness, fastest particle).
     std::optional<std::string> checkState(const Diagnostics& d, const Scan& scan) const;
     double totalEnergyNow() const;
     void measureWithForces(Diagnostics& d, const Scan& scan);
-    // measureWithForces when the end-of-step forces are kept for the next step, else measure.
+    // The energies and volumes by their own passes (no force evaluation).
+    void measureByPasses(Diagnostics& d, const Scan& scan) const;
+    // measureWithForces when the end-of-step forces are kept for the next step, else
+    // measureByPasses.
     void measureState(Diagnostics& d, const Scan& scan);
     void fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
                          const std::array<double, 2>& volume, const Scan& scan) const;
