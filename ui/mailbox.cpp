@@ -1,8 +1,16 @@
 #include "mailbox.h"
 
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
-#include <QMetaMethod>
+#include <sys/eventfd.h>
+#include <unistd.h>
+
+#include <QSocketNotifier>
 #include <QThread>
 
 namespace elui {
@@ -18,15 +26,33 @@ void Latch::wait() {
     m_opened.wait(lock, [this] { return m_open; });
 }
 
+Mailbox::Mailbox(QObject* receiver) : QObject(receiver), m_wakeFd(::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC)) {
+    if (m_wakeFd < 0) throw std::runtime_error(std::string("mailbox: eventfd: ") + std::strerror(errno));
+    m_notifier = new QSocketNotifier(m_wakeFd, QSocketNotifier::Read, this);
+    connect(m_notifier, &QSocketNotifier::activated, this, &Mailbox::wake);
+}
+
+Mailbox::~Mailbox() {
+    delete m_notifier;  // before its descriptor is closed
+    ::close(m_wakeFd);
+}
+
 void Mailbox::post(Message message) {
     std::lock_guard lock(m_mutex);
     m_queue.push_back(std::move(message));
-    if (m_wakePending) return;  // the queued wake-up will find this message too
+    if (m_wakePending) return;  // the wake-up already written will find this message too
     m_wakePending = true;
-    // Under the lock: Qt's event for the wake-up is made before the unlock that deliver()'s
-    // lock follows, so its destruction on the receiver's thread is ordered after it.
-    static const QMetaMethod wakeUp = staticMetaObject.method(staticMetaObject.indexOfMethod("deliver()"));
-    wakeUp.invoke(this, Qt::QueuedConnection);
+    const std::uint64_t one = 1;
+    // Cannot fail short of a counter at 2^64 - 2 (one write per delivery here) or a closed
+    // descriptor (the mailbox outlives every sender by design).
+    [[maybe_unused]] const ssize_t written = ::write(m_wakeFd, &one, sizeof one);
+}
+
+void Mailbox::wake() {
+    // Reset the counter first: a message posted from here on writes a new wake-up.
+    std::uint64_t count = 0;
+    [[maybe_unused]] const ssize_t read = ::read(m_wakeFd, &count, sizeof count);
+    deliver();
 }
 
 void Mailbox::call(Message message) {
