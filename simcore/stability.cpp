@@ -234,7 +234,8 @@ double predictedStableStep(const std::string& integrator, const LinearModes& mod
     return lo;
 }
 
-std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt) {
+std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt,
+                                          const std::atomic<bool>* cancel) {
     ParameterSet p = spec.params;
     if (!p.isExplicit("perturb")) p.set("perturb", spec.perturb);
     if (auto error = p.set("dt", dt)) return *error;
@@ -250,6 +251,7 @@ std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::
     // (symplectic Euler's energy oscillates by ~h w / 2 of the energy) is not unstable.
     double firstHalf = 0.0, secondHalf = 0.0;
     while (sim.time() < spec.duration - 1e-9 * dt) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return std::nullopt;
         if (!sim.step()) return sim.failure()->reason;
         const double gain = std::max(0.0, sim.diagnostics().energyDrift());
         (sim.time() <= 0.5 * spec.duration ? firstHalf : secondHalf) = std::max(
@@ -272,7 +274,7 @@ StabilityRow scanIntegrator(const StabilitySpec& spec, const std::string& integr
     row.predicted = predictedStableStep(integrator, modes);
     auto trial = [&](double h) {
         ++row.runs;
-        return stabilityTrial(spec, integrator, h);
+        return stabilityTrial(spec, integrator, h, cancel);
     };
     double h0 = std::isfinite(row.predicted) && row.predicted > 0.0 ? row.predicted : 0.01;
     h0 = std::clamp(h0, spec.hMin, spec.hMax);
@@ -325,7 +327,9 @@ std::vector<StabilityRow> runStability(const StabilitySpec& spec, const LinearMo
     for (std::size_t i = 0; i < names.size(); ++i) {
         if (cancel && cancel->load()) break;
         if (progress) progress({static_cast<int>(i), static_cast<int>(names.size()), names[i]});
-        rows.push_back(scanIntegrator(spec, names[i], modes, cancel));
+        StabilityRow row = scanIntegrator(spec, names[i], modes, cancel);
+        if (cancel && cancel->load()) break;  // a scan cut short has no limits to report
+        rows.push_back(std::move(row));
     }
     if (progress) progress({static_cast<int>(names.size()), static_cast<int>(names.size()), "done"});
     return rows;

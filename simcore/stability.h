@@ -98,7 +98,10 @@ struct StabilityProgress {
 using StabilityProgressFn = std::function<void(const StabilityProgress&)>;
 
 // One trial: stable (empty) or the reason it is not.
-std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt);
+// One run at a fixed step: why it is unstable, or nothing. A run cancelled part-way (*cancel
+// true) returns nothing too: the caller checks the flag before it believes the answer.
+std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt,
+                                          const std::atomic<bool>* cancel = nullptr);
 StabilityRow scanIntegrator(const StabilitySpec& spec, const std::string& integrator, const LinearModes& modes,
                             const std::atomic<bool>* cancel = nullptr);
 std::vector<StabilityRow> runStability(const StabilitySpec& spec, const LinearModes& modes,

@@ -2,6 +2,7 @@
 // stability engines. Every assertion is physics with an explicit tolerance; nothing is timed.
 #include <QtTest>
 
+#include <atomic>
 #include <cmath>
 #include <numbers>
 
@@ -131,6 +132,30 @@ private slots:
     }
 
     // --- stability facts (MODEL.md, issue 3 notes) ---
+    void stabilityScanCancelKeepsWholeRows() {
+        // Cancel while the second integrator is being scanned: the first row is kept whole, the
+        // second (cut short, its limits unknown) is not reported, the third never starts.
+        StabilitySpec spec;
+        spec.params = ParameterSet(SceneKind::Spring1d);
+        spec.integrators = {"euler", "rk4", "verlet"};
+        spec.duration = 0.2;
+        std::atomic<bool> cancel{false};
+        int trialsAfterCancel = 0;
+        const auto rows = runStability(
+            spec, linearModes(spec.params),
+            [&](const StabilityProgress& p) {
+                if (p.what == "rk4") cancel = true;
+                if (cancel && p.what == "verlet") ++trialsAfterCancel;
+            },
+            &cancel);
+        QCOMPARE(int(rows.size()), 1);
+        QCOMPARE(rows[0].integrator, std::string("euler"));
+        QVERIFY(rows[0].stable > 0.0 && rows[0].unstable > rows[0].stable);
+        QCOMPARE(trialsAfterCancel, 0);
+        // A trial that sees the flag stops at once and claims nothing.
+        QVERIFY(!stabilityTrial(spec, "euler", 0.1, &cancel).has_value());
+        QVERIFY(stabilityTrial(spec, "euler", 0.1).has_value());  // the same step without cancel fails
+    }
     void undampedEulerGrowsForEveryStep() {
         // Explicit Euler on x'' = -w^2 x multiplies w^2 x^2 + v^2 by exactly (1 + h^2 w^2) per
         // step: it grows for every h > 0, however small.
