@@ -4,8 +4,10 @@
 #include <QString>
 #include <QStringList>
 
+#include "test_support.h"
+
 struct CliResult {
-    int code = -1;  // exit status; -1 if it did not finish within two minutes
+    int code = -1;  // exit status; -1 if it hung (see test_support.h)
     QString out;
     QString err;
 };
@@ -13,7 +15,7 @@ struct CliResult {
 inline CliResult runCli(const QStringList& args) {
     QProcess p;
     p.start(ELASTIC_LAB_CLI, args);
-    if (!p.waitForFinished(120000)) return {};
+    if (!testsupport::waitForExit(p)) return {};
     return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()),
             QString::fromUtf8(p.readAllStandardError())};
 }

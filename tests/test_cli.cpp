@@ -26,6 +26,17 @@ QList<QStringList> readCsv(const QString& path) {
     return rows;
 }
 
+// Bytes in the files process pid holds open under folder (its unnamed O_TMPFILE outputs show
+// there as "folder/#inode (deleted)").
+qint64 streamedBytes(qint64 pid, const QString& folder) {
+    qint64 bytes = 0;
+    const QString fds = QString("/proc/%1/fd").arg(pid);
+    for (const QFileInfo& fd : QDir(fds).entryInfoList(QDir::Files | QDir::System | QDir::NoDotAndDotDot))
+        if (fd.symLinkTarget().startsWith(folder + "/") || QFile::symLinkTarget(fd.filePath()).startsWith(folder + "/"))
+            bytes += fd.size();
+    return bytes;
+}
+
 }  // namespace
 
 class TestCli : public QObject {
@@ -211,12 +222,13 @@ private slots:
         QProcess p;
         p.start(ELASTIC_LAB_CLI, {"run", "--scene", "sphere3d", "--set", "subdivisions=4", "--set", "gravity=0",
                                   "--duration", "100000", "--csv", csv, "--state", state});
-        QVERIFY(p.waitForStarted());
-        QTest::qWait(1500);  // well into the run: thousands of rows written
+        QVERIFY(p.waitForStarted(testsupport::kHangGuardMs));
+        // Killed while it streams: once its unnamed CSV file in the folder holds rows.
+        QVERIFY(testsupport::waitUntil([&] { return streamedBytes(p.processId(), dir.path()) > 4096; }));
         QCOMPARE(p.state(), QProcess::Running);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 2);  // nothing named yet
         ::kill(static_cast<pid_t>(p.processId()), SIGKILL);
-        QVERIFY(p.waitForFinished());
+        QVERIFY(testsupport::waitForExit(p));
         QCOMPARE(p.exitStatus(), QProcess::CrashExit);
         QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden | QDir::System),
                  QStringList({"series.csv", "state.csv"}));

@@ -12,6 +12,7 @@
 
 #include "sim_worker.h"
 #include "simulation_controller.h"
+#include "test_support.h"
 
 using namespace elui;
 
@@ -121,7 +122,7 @@ private slots:
         simcore::ParameterSet p(simcore::SceneKind::Ring2d);
         controller.setScene(p, {"rk4"});
         controller.step();
-        QTRY_VERIFY_WITH_TIMEOUT(controller.latest() && controller.latest()->lanes.at(0).diagnostics.step == 1, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(controller.latest() && controller.latest()->lanes.at(0).diagnostics.step == 1, testsupport::kHangGuardMs);
         QCOMPARE(controller.latest()->lanes.at(0).diagnostics.time, 0.003);
     }
 };

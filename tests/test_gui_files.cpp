@@ -42,23 +42,13 @@
 #include "scenefile.h"
 #include "scenes.h"
 #include "simulation_controller.h"
+#include "test_support.h"
 
 using namespace elui;
 
 namespace {
 
-// Processes events until pred() holds (or the timeout passes).
-template <class Pred>
-bool waitUntil(Pred pred, int timeoutMs = 15000) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        if (pred()) return true;
-        QThread::msleep(2);
-    }
-    return pred();
-}
+using testsupport::waitUntil;
 
 bool waitForFrame(const SimulationController& c, const std::function<bool(const Frame&)>& pred) {
     return waitUntil([&] { return c.latest() && pred(*c.latest()); });
@@ -274,7 +264,9 @@ private slots:
             QCOMPARE(s.time, capture.time);
             QVERIFY(s.step > 0);
             QVERIFY(std::abs(s.time - double(s.step) * 0.003) < 1e-9);
-            QTest::qWait(30);
+            // The next capture only after the run has gone on: a different step boundary.
+            const double t = capture.time;
+            QVERIFY(waitForFrame(c, [t](const Frame& f) { return f.lanes[0].diagnostics.time > t; }));
         }
         QVERIFY(c.running());  // the run went on
     }
@@ -311,7 +303,7 @@ private slots:
         file.state->positions = Eigen::Matrix3Xd::Zero(3, 5);
         file.state->velocities = Eigen::Matrix3Xd::Zero(3, 5);
         c.openScene(file);
-        QVERIFY(rejected.wait(5000));
+        QVERIFY(waitUntil([&] { return rejected.count() >= 1; }));
         QVERIFY(rejected.front().front().toString().contains("state"));
         const double t = c.latest()->lanes[0].diagnostics.time;
         QVERIFY(waitForFrame(c, [t](const Frame& f) { return f.lanes[0].diagnostics.time > t + 0.05; }));

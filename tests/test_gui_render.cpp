@@ -17,6 +17,7 @@
 #include "scenefile.h"
 #include "scenes.h"
 #include "simulation_controller.h"
+#include "test_support.h"
 #include "viewport.h"
 
 using namespace elui;
@@ -55,14 +56,15 @@ Census census(const QImage& image) {
 }
 
 bool waitForScene(MainWindow& w, SceneKind kind) {
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < 8000) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+    return testsupport::waitUntil([&] {
         const FramePtr& f = w.controller()->latest();
-        if (f && f->scene->kind == kind && !w.viewports().empty() && w.viewports().front()->frame() == f) return true;
-    }
-    return false;
+        return f && f->scene->kind == kind && !w.viewports().empty() && w.viewports().front()->frame() == f;
+    });
+}
+
+// The newest frame has reached the first viewport (it draws that one on the next grab).
+bool viewportShowsLatest(MainWindow& w) {
+    return testsupport::waitUntil([&] { return w.viewports().front()->frame() == w.controller()->latest(); });
 }
 
 }  // namespace
@@ -82,7 +84,7 @@ private slots:
         MainWindow w(false);
         w.resize(1200, 800);
         w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
         w.startScene(simcore::ParameterSet(kind), {"rk4"});
         QVERIFY(waitForScene(w, kind));
         Viewport* v = w.viewports().front();
@@ -103,8 +105,8 @@ private slots:
         ViewOptions more;
         more.normals = more.forces = true;
         w.setViewOptions(more);
-        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].forces.empty(), 5000);
-        QTest::qWait(50);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].forces.empty(), testsupport::kHangGuardMs);
+        QVERIFY(viewportShowsLatest(w));
         const QImage extra = v->grabFramebuffer();
         QVERIFY(extra != image);
         // Hiding everything leaves (nearly) only the background and the box.
@@ -120,15 +122,14 @@ private slots:
         MainWindow w(false);
         w.resize(1000, 700);
         w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
         simcore::ParameterSet p(SceneKind::Ring2d);
         w.startScene(p, {"rk4"});
         QVERIFY(waitForScene(w, SceneKind::Ring2d));
         w.controller()->runUntil(0.6);  // squashed on the floor: springs strained
         QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() &&
-                                     w.controller()->latest()->lanes[0].diagnostics.time > 0.59,
-                                 8000);
-        QTest::qWait(100);
+                                     w.controller()->latest()->lanes[0].diagnostics.time > 0.59, testsupport::kHangGuardMs);
+        QVERIFY(viewportShowsLatest(w));
         Viewport* v = w.viewports().front();
         ViewOptions o;
         o.faces = false;
@@ -147,20 +148,20 @@ private slots:
         MainWindow w(false);
         w.resize(1500, 800);
         w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
         const Preset p = stabilityPresets().at(1);  // DT 0.03
         w.applyPreset(p);
-        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 3, 8000);
-        QTRY_VERIFY_WITH_TIMEOUT(w.viewports()[2]->frame() != nullptr, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 3, testsupport::kHangGuardMs);
+        QTRY_VERIFY_WITH_TIMEOUT(w.viewports()[2]->frame() != nullptr, testsupport::kHangGuardMs);
         for (Viewport* v : w.viewports()) {
-            QTRY_VERIFY_WITH_TIMEOUT(v->isVisible() && v->width() > 100, 5000);
+            QTRY_VERIFY_WITH_TIMEOUT(v->isVisible() && v->width() > 100, testsupport::kHangGuardMs);
             QVERIFY(census(v->grabFramebuffer()).changed > 0.03);
         }
         QCOMPARE(w.controller()->latest()->parameters.get("dt"), 0.03);
         w.controller()->runUntil(2.0);
         // On the two-layer ring at DT 0.03 every explicit method blows up within a second
         // (measured with elastic-lab-cli); when all lanes have failed the run pauses by itself.
-        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() && w.controller()->latest()->lanes[2].failure, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() && w.controller()->latest()->lanes[2].failure, testsupport::kHangGuardMs);
         FramePtr f = w.controller()->latest();
         for (const LaneFrame& lane : f->lanes) {
             QVERIFY(lane.failure.has_value());
@@ -169,12 +170,10 @@ private slots:
         // At DT 0.003 none fails, all reach the same time and they differ.
         w.applyPreset(stabilityPresets().at(0));
         QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->parameters.get("dt") == 0.003 &&
-                                     !w.controller()->latest()->lanes[0].failure,
-                                 8000);
+                                     !w.controller()->latest()->lanes[0].failure, testsupport::kHangGuardMs);
         w.controller()->runUntil(1.0);
         QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() &&
-                                     w.controller()->latest()->lanes[0].diagnostics.time > 0.99,
-                                 20000);
+                                     w.controller()->latest()->lanes[0].diagnostics.time > 0.99, testsupport::kHangGuardMs);
         f = w.controller()->latest();
         for (const LaneFrame& lane : f->lanes) {
             QVERIFY(!lane.failure.has_value());
@@ -182,7 +181,7 @@ private slots:
         }
         QVERIFY(f->lanes[1].divergence > 0.0 && f->lanes[2].divergence > 0.0);
         w.singleView();
-        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 1, 8000);
+        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 1, testsupport::kHangGuardMs);
     }
 
     void mouseDragGrabsAndPulls_data() {
@@ -195,7 +194,7 @@ private slots:
         MainWindow w(false);
         w.resize(1200, 800);
         w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
         simcore::ParameterSet p(kind);
         p.set("gravity", 0.0);
         w.startScene(p, {"rk4"});
@@ -218,19 +217,18 @@ private slots:
             QApplication::sendEvent(v, &e);
         };
         send(QEvent::MouseButtonPress, at, Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.active, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.active, testsupport::kHangGuardMs);
         const int grabbed = w.controller()->latest()->lanes[0].pointer.particle;
         QCOMPARE(grabbed, top);  // the particle under the cursor, not another one
         send(QEvent::MouseMove, at + QPointF(0, -120), Qt::LeftButton);
-        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.anchor.y() > x[3 * std::size_t(top) + 1] + 0.3,
-                                 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.anchor.y() > x[3 * std::size_t(top) + 1] + 0.3, testsupport::kHangGuardMs);
         w.controller()->run();
-        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].diagnostics.time > 0.3, 8000);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].diagnostics.time > 0.3, testsupport::kHangGuardMs);
         // Pulled up: the particle followed the anchor.
         QVERIFY(w.controller()->latest()->lanes[0].positions[3 * std::size_t(top) + 1] > x[3 * std::size_t(top) + 1] + 0.05);
         QVERIFY(w.controller()->latest()->lanes[0].diagnostics.workPointer != 0.0);
         send(QEvent::MouseButtonRelease, at + QPointF(0, -120), Qt::NoButton);
-        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].pointer.active, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].pointer.active, testsupport::kHangGuardMs);
         w.controller()->pause();
     }
 
@@ -240,7 +238,7 @@ private slots:
         QProcess p;
         p.start(ELASTIC_LAB_GUI, {"--scene", "sphere3d", "--set", "subdivisions=1", "--integrator", "verlet",
                                   "--screenshot", path, "--after", "0.5"});
-        QVERIFY(p.waitForFinished(60000));
+        QVERIFY(testsupport::waitForExit(p));
         QCOMPARE(p.exitCode(), 0);
         const QImage image(path);
         QVERIFY(!image.isNull());
@@ -249,7 +247,7 @@ private slots:
         // Bad input is refused with a message, before any window.
         QProcess bad;
         bad.start(ELASTIC_LAB_GUI, {"--scene", "ring2d", "--set", "ks=-3", "--screenshot", path});
-        QVERIFY(bad.waitForFinished(20000));
+        QVERIFY(testsupport::waitForExit(bad));
         QCOMPARE(bad.exitCode(), 2);
         QVERIFY(bad.readAllStandardError().contains("ks"));
     }
@@ -264,7 +262,7 @@ private slots:
                  QString());
         QProcess p;
         p.start(ELASTIC_LAB_GUI, {"--scene", scene, "--set", "kd=20", "--screenshot", shot, "--after", "0.5"});
-        QVERIFY(p.waitForFinished(60000));
+        QVERIFY(testsupport::waitForExit(p));
         QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
         QVERIFY(census(QImage(shot)).colours > 20);
         // Refused before any window: a bad file (naming the key), a missing one, and a --set
@@ -283,7 +281,7 @@ private slots:
         for (const auto& [args, mentions] : refusals) {
             QProcess refused;
             refused.start(ELASTIC_LAB_GUI, args + QStringList{"--screenshot", shot});
-            QVERIFY(refused.waitForFinished(20000));
+            QVERIFY(testsupport::waitForExit(refused));
             QCOMPARE(refused.exitCode(), 2);
             const QByteArray err = refused.readAllStandardError();
             QVERIFY2(err.contains(mentions.toUtf8()), err.constData());

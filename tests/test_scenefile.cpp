@@ -7,6 +7,7 @@
 
 #include "scenefile.h"
 #include "simulation.h"
+#include "test_support.h"
 
 using namespace simcore;
 
@@ -15,7 +16,7 @@ namespace {
 QString runCli(const QStringList& args, int* code) {
     QProcess p;
     p.start(ELASTIC_LAB_CLI, args);
-    p.waitForFinished(120000);
+    testsupport::waitForExit(p);
     *code = p.exitCode();
     return QString::fromUtf8(p.readAllStandardError());
 }

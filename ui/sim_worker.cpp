@@ -1,6 +1,7 @@
 #include "sim_worker.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -38,19 +39,21 @@ constexpr double kTickBudget = 0.015;
 constexpr double kPublishInterval = 1.0 / 90.0;
 
 Eigen::Vector3d toEigen(const QVector3D& v) { return {v.x(), v.y(), v.z()}; }
-double seconds(const QElapsedTimer& t) { return double(t.nsecsElapsed()) * 1e-9; }
 QString integratorName(const simcore::Simulation& sim) {
     const std::string_view name = sim.integrator().name();
     return QString::fromUtf8(name.data(), qsizetype(name.size()));
 }
 }  // namespace
 
-SimWorker::SimWorker() {
+WallClock steadyWallClock() {
+    return [] { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); };
+}
+
+SimWorker::SimWorker(WallClock clock) : m_now(std::move(clock)) {
     m_timer = new QTimer(this);
     m_timer->setTimerType(Qt::PreciseTimer);
     connect(m_timer, &QTimer::timeout, this, &SimWorker::tick);
-    m_publishClock.start();
-    m_rateClock.start();
+    m_publishStart = m_rateStart = m_now();
 }
 
 SimWorker::~SimWorker() = default;
@@ -231,7 +234,7 @@ void SimWorker::runUntil(double simulatedTime) {
 }
 
 void SimWorker::pause() {
-    if (m_running) m_wallBeforeStart += seconds(m_clock);
+    if (m_running) m_wallBeforeStart += since(m_clockStart);
     m_running = false;
     m_until = -1.0;
     if (m_timer) m_timer->stop();
@@ -308,8 +311,8 @@ void SimWorker::shutdown() {
 
 void SimWorker::restartClock() {
     // The wall time run so far is kept; the clock then counts from here.
-    if (m_running && m_clock.isValid()) m_wallBeforeStart += seconds(m_clock);
-    m_clock.start();
+    if (m_running && m_clockStart >= 0.0) m_wallBeforeStart += since(m_clockStart);
+    m_clockStart = m_now();
     m_clockSimStart = m_commonTime;
     m_fallingBehind = false;
 }
@@ -354,18 +357,17 @@ void SimWorker::recordRow() {
 
 void SimWorker::tick() {
     if (!m_running || m_lanes.empty()) return;
-    QElapsedTimer budget;
-    budget.start();
+    const double tickStart = m_now();
     const bool fast = m_speed == Speed::AsFastAsPossible || m_until >= 0.0;
     // Where the honest clock says simulated time should be now.
     const double target =
         fast ? std::numeric_limits<double>::infinity()
-             : m_clockSimStart + seconds(m_clock) * speedFactor(m_speed);
+             : m_clockSimStart + since(m_clockStart) * speedFactor(m_speed);
     bool outOfBudget = false;
     while (m_commonTime < target) {
         if (m_until >= 0.0 && m_commonTime >= m_until - 1e-12) break;
         if (!stepAll()) break;
-        if (seconds(budget) > kTickBudget) {
+        if (since(tickStart) > kTickBudget) {
             outOfBudget = true;
             break;
         }
@@ -375,16 +377,17 @@ void SimWorker::tick() {
         // Could not keep up: say so and restart the clock here instead of piling up debt.
         m_fallingBehind = outOfBudget && m_commonTime < target;
         if (m_fallingBehind) {
-            m_wallBeforeStart += seconds(m_clock);
-            m_clock.start();
+            const double now = m_now();
+            m_wallBeforeStart += now - m_clockStart;
+            m_clockStart = now;
             m_clockSimStart = m_commonTime;
         }
     }
-    const double rateWindow = seconds(m_rateClock);
+    const double now = m_now(), rateWindow = now - m_rateStart;
     if (rateWindow >= 0.5) {
         m_stepsPerSecond = double(m_rateSteps) / rateWindow;
         m_rateSteps = 0;
-        m_rateClock.start();
+        m_rateStart = now;
     }
 
     const bool laneZeroFailed = m_lanes.front()->failed();
@@ -407,8 +410,9 @@ void SimWorker::tick() {
 }
 
 void SimWorker::publish(bool force) {
-    if (!force && seconds(m_publishClock) < kPublishInterval) return;
-    m_publishClock.start();
+    const double now = m_now();
+    if (!force && now - m_publishStart < kPublishInterval) return;
+    m_publishStart = now;
     if (m_lanes.empty()) return;
 
     auto frame = std::make_shared<Frame>();
@@ -416,7 +420,7 @@ void SimWorker::publish(bool force) {
     frame->parameters = m_params;
     frame->running = m_running;
     frame->speed = m_speed;
-    frame->wallSeconds = m_wallBeforeStart + (m_running ? seconds(m_clock) : 0.0);
+    frame->wallSeconds = m_wallBeforeStart + (m_running ? now - m_clockStart : 0.0);
     frame->stepsPerSecond = m_running ? m_stepsPerSecond : 0.0;
     frame->fallingBehind = m_fallingBehind;
     frame->explicitDtLimit = m_dtLimit;
@@ -451,6 +455,7 @@ void SimWorker::publish(bool force) {
     }
     m_slot.rows.insert(m_slot.rows.end(), m_rows.begin(), m_rows.end());
     m_rows.clear();
+    m_published.store(m_slot.frame->serial);
     if (!m_slotPending) {
         m_slotPending = true;
         emit frameReady();

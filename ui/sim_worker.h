@@ -12,11 +12,12 @@
 // same simulated time after every step of the common DT.
 
 #include <algorithm>
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
 
-#include <QElapsedTimer>
 #include <QObject>
 #include <QStringList>
 #include <QVector3D>
@@ -27,14 +28,22 @@ class QTimer;
 
 namespace elui {
 
+// Monotonic wall time in seconds. The worker reads the wall only through this: its pacing
+// (real time, a fraction of it), the tick budget, the frame rate and the steps-per-second
+// meter. The default is std::chrono::steady_clock; a test passes a clock it moves itself.
+using WallClock = std::function<double()>;
+WallClock steadyWallClock();
+
 class SimWorker : public QObject {
     Q_OBJECT
 public:
-    SimWorker();
+    explicit SimWorker(WallClock clock = steadyWallClock());
     ~SimWorker() override;
 
     // Thread-safe: the newest frame and the rows recorded since the last take.
     FrameBatch takeBatch();
+    // Thread-safe: the serial number of the newest frame published (0: none yet).
+    quint64 publishedSerial() const { return m_published.load(); }
     // Lane 0 as a scene file with its exact state. Worker thread only (between two steps).
     SceneCapture captureScene() const;
 
@@ -114,21 +123,24 @@ private:
     double m_dtLimit = 0.0;               // estimated explicit stability limit on DT [s]
     double m_commonTime = 0.0;            // the time every live lane has reached [s]
 
-    // Clock: simulated time at the last (re)start, and wall time since then.
-    QElapsedTimer m_clock;
+    // Clock: simulated time at the last (re)start, and wall time since then [s].
+    double since(double wallStart) const { return m_now() - wallStart; }
+    WallClock m_now;
+    double m_clockStart = -1.0;           // wall time of the last (re)start, < 0: never started
     double m_clockSimStart = 0.0;
     double m_wallBeforeStart = 0.0;       // wall time run before the last start [s]
     bool m_fallingBehind = false;
-    QElapsedTimer m_rateClock;
+    double m_rateStart = 0.0;
     long m_rateSteps = 0;
     double m_stepsPerSecond = 0.0;
-    QElapsedTimer m_publishClock;
+    double m_publishStart = 0.0;
     double m_lastRowTime = -1.0;
     bool m_failureReported = false;
 
     std::vector<simcore::Diagnostics> m_rows;  // recorded since the last publish (worker only)
     bool m_historyReset = true;
     quint64 m_serial = 0;
+    std::atomic<quint64> m_published{0};
 
     std::mutex m_slotMutex;               // guards the three fields below
     FrameBatch m_slot;

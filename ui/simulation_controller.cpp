@@ -19,8 +19,10 @@ void SimulationController::fromWorker(Signal signal, Slot slot) {
         Qt::DirectConnection);
 }
 
-SimulationController::SimulationController(QObject* parent)
-    : QObject(parent), m_worker(new SimWorker), m_inbox(new Mailbox(m_worker)), m_outbox(new Mailbox(this)) {
+SimulationController::SimulationController(QObject* parent) : SimulationController(steadyWallClock(), parent) {}
+
+SimulationController::SimulationController(WallClock clock, QObject* parent)
+    : QObject(parent), m_worker(new SimWorker(std::move(clock))), m_inbox(new Mailbox(m_worker)), m_outbox(new Mailbox(this)) {
     qRegisterMetaType<elui::FramePtr>();
     m_thread.setObjectName(QStringLiteral("simulation"));
     m_worker->moveToThread(&m_thread);
@@ -33,8 +35,9 @@ SimulationController::SimulationController(QObject* parent)
     fromWorker(&SimWorker::reachedTime, &SimulationController::reachedTime);
 
     // Nothing is posted to the worker before its thread has started and made its event
-    // dispatcher (QThread emits started() after that, on the new thread): the first wake-up
-    // writes to the dispatcher's eventfd, and this wait orders its creation before that write.
+    // dispatcher (QThread emits started() after that, on the new thread), where the inbox's
+    // wake-up notifier registers as it moves in: this wait orders all of that before the
+    // first command.
     Latch started;
     const auto connection =
         connect(&m_thread, &QThread::started, &m_thread, [&started] { started.open(); }, Qt::DirectConnection);

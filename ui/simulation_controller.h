@@ -6,9 +6,9 @@
 //        public signals ◀── outbox: takeFrame, grabbed, ── worker signals (connected
 //        (emitted here)      rejections, runFailed, ...     directly, posted as closures)
 //
-// Both mailboxes (mailbox.h) hand their messages over under a std::mutex and let Qt carry
-// only argument-less wake-ups, so ThreadSanitizer sees every hand-over even though Qt itself
-// is not instrumented. Commands are applied between steps, in the order they were sent;
+// Both mailboxes (mailbox.h) hand their messages over under a std::mutex and wake the
+// receiving thread through an eventfd, so nothing crosses the threads through Qt and
+// ThreadSanitizer sees every hand-over even though Qt itself is not instrumented. Commands are applied between steps, in the order they were sent;
 // frames come back through a one-frame slot — the newest wins, and while the GUI is busy the
 // worker simply overwrites the slot, so frames are skipped instead of queued. The time-series
 // rows of every recorded step are kept (history) for the plots and CSV export.
@@ -20,6 +20,7 @@
 
 #include "frame.h"
 #include "mailbox.h"
+#include "sim_worker.h"
 
 namespace elui {
 
@@ -29,6 +30,8 @@ class SimulationController : public QObject {
     Q_OBJECT
 public:
     explicit SimulationController(QObject* parent = nullptr);
+    // With the worker's wall clock given (a test moves its own; see sim_worker.h).
+    SimulationController(WallClock clock, QObject* parent = nullptr);
     ~SimulationController() override;  // shuts the worker down, joins its thread, deletes it
 
     // The newest frame taken (nullptr before the first).
