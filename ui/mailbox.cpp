@@ -42,10 +42,7 @@ void Mailbox::post(Message message) {
     m_queue.push_back(std::move(message));
     if (m_wakePending) return;  // the wake-up already written will find this message too
     m_wakePending = true;
-    const std::uint64_t one = 1;
-    // Cannot fail short of a counter at 2^64 - 2 (one write per delivery here) or a closed
-    // descriptor (the mailbox outlives every sender by design).
-    [[maybe_unused]] const ssize_t written = ::write(m_wakeFd, &one, sizeof one);
+    wakeUp();
 }
 
 void Mailbox::wake() {
@@ -86,10 +83,20 @@ void Mailbox::deliver() {
             message = std::move(m_queue.front());
             m_queue.pop_front();
             more = !m_queue.empty();
-            if (!more) m_wakePending = false;  // from here a new post sends a new wake-up
+            if (!more) m_wakePending = false;  // from here a new post writes a new wake-up
+            // Messages wait behind this one: keep the eventfd readable while it runs, so that an
+            // event loop it opens (a modal dialog) delivers them, in order, instead of stalling.
+            else wakeUp();
         }
         message();
     }
+}
+
+void Mailbox::wakeUp() {
+    const std::uint64_t one = 1;
+    // Cannot fail short of a counter at 2^64 - 2 or a closed descriptor (the mailbox outlives
+    // every sender by design).
+    [[maybe_unused]] const ssize_t written = ::write(m_wakeFd, &one, sizeof one);
 }
 
 }  // namespace elui

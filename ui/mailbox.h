@@ -74,11 +74,13 @@ public:
 
 private:
     // Receiver's thread: runs the queued messages one by one, oldest first (a nested event
-    // loop inside a message delivers the next ones, still in order). After the last message
+    // loop inside a message delivers the next ones, still in order, tested). After the last message
     // it no longer touches the mailbox, so a call() may end the receiver's use of it.
     void deliver();
     // Receiver's thread, when the eventfd is readable: resets it, then delivers.
     void wake();
+    // Makes the eventfd readable (any thread).
+    void wakeUp();
 
     int m_wakeFd = -1;           // eventfd: written by post(), read by wake()
     QSocketNotifier* m_notifier = nullptr;
