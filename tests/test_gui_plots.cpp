@@ -181,9 +181,11 @@ private slots:
     }
 
     void stabilityScanCancels() {
-        // A long scan (the default sphere for 3 s per trial: minutes in Release) stops within
-        // one step of Cancel, keeps only whole rows, and can run again.
-        StabilityDialog dialog(simcore::ParameterSet(SceneKind::Sphere3d));
+        // A long scan (a sphere for 3 s per trial, seconds in Release) stops within one step of
+        // Cancel, keeps only whole rows, and can run again.
+        simcore::ParameterSet sphere(SceneKind::Sphere3d);
+        sphere.set("subdivisions", 1);
+        StabilityDialog dialog(sphere);
         dialog.setDuration(3.0);
         QSignalSpy finished(&dialog, &StudyDialogBase::finished);
         dialog.start();

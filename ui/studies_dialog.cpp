@@ -17,10 +17,10 @@
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include "export.h"
 #include "integrators.h"
+#include "mailbox.h"
 #include "output.h"
 #include "parameter_dock.h"
 #include "plot_series.h"
@@ -116,25 +116,29 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
     connect(m_run, &QPushButton::clicked, this, &StudyDialogBase::start);
     connect(m_cancel, &QPushButton::clicked, this, &StudyDialogBase::cancel);
     connect(m_export, &QPushButton::clicked, this, &StudyDialogBase::exportResults);
-    connect(&m_watcher, &QFutureWatcher<void>::finished, this, [this] {
-        m_busy = false;
-        m_run->setEnabled(true);
-        m_cancel->setEnabled(false);
-        const bool cancelled = m_cancelFlag && m_cancelFlag->load();
-        m_status->setText(cancelled ? tr("Cancelled: partial results") : tr("Done"));
-        present();
-        m_export->setEnabled(true);
-        emit finished();
-    });
+    m_fromWorker = new Mailbox(this);
 }
 
 StudyDialogBase::~StudyDialogBase() { stopAndWait(); }
 
+void StudyDialogBase::computationEnded() {
+    // The worker's last message: it has returned from compute() and touches nothing more.
+    if (m_worker.joinable()) m_worker.join();
+    m_busy = false;
+    m_run->setEnabled(true);
+    m_cancel->setEnabled(false);
+    const bool cancelled = m_cancelFlag && m_cancelFlag->load();
+    m_status->setText(cancelled ? tr("Cancelled: partial results") : tr("Done"));
+    present();
+    m_export->setEnabled(true);
+    emit finished();
+}
+
 void StudyDialogBase::stopAndWait() {
-    // Never leave a computation running against a destroyed dialog.
+    // Never leave a computation running against a destroyed dialog. Its last messages stay
+    // in the mailbox, which is deleted with the dialog without running them.
     if (m_cancelFlag) m_cancelFlag->store(true);
-    m_watcher.disconnect(this);
-    m_watcher.waitForFinished();
+    if (m_worker.joinable()) m_worker.join();
 }
 
 QStringList StudyDialogBase::chosenIntegrators() const {
@@ -145,14 +149,11 @@ QStringList StudyDialogBase::chosenIntegrators() const {
 }
 
 void StudyDialogBase::setProgress(int done, int total, const QString& what) {
-    QMetaObject::invokeMethod(
-        this,
-        [this, done, total, what] {
-            m_progress->setMaximum(std::max(1, total));
-            m_progress->setValue(done);
-            m_status->setText(what);
-        },
-        Qt::QueuedConnection);
+    m_fromWorker->post([this, done, total, what] {
+        m_progress->setMaximum(std::max(1, total));
+        m_progress->setValue(done);
+        m_status->setText(what);
+    });
 }
 
 void StudyDialogBase::start() {
@@ -173,7 +174,11 @@ void StudyDialogBase::start() {
     m_cancelFlag = std::make_shared<std::atomic<bool>>(false);
     auto flag = m_cancelFlag;
     prepare();
-    m_watcher.setFuture(QtConcurrent::run([this, flag] { compute(flag.get()); }));
+    if (m_worker.joinable()) m_worker.join();  // the last run ended (its end was delivered)
+    m_worker = std::thread([this, flag] {
+        compute(flag.get());
+        m_fromWorker->post([this] { computationEnded(); });
+    });
 }
 
 void StudyDialogBase::cancel() {
@@ -347,6 +352,8 @@ void StabilityDialog::prepare() {
 
 void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));
+    m_rows.clear();
+    if (cancel->load()) return;
     m_modes = simcore::linearModes(m_params);
     m_rows = simcore::runStability(
         m_spec, m_modes,

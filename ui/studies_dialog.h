@@ -2,12 +2,16 @@
 // Study dialogs: the work-precision study and the stability scan of simcore (study.h,
 // stability.h — the same code as `elastic-lab-cli study` / `stability`), run on a worker
 // thread with a progress bar and Cancel, their results plotted and exportable.
+//
+// The worker is a std::thread; its progress and its end come back through a Mailbox
+// (mailbox.h), so ThreadSanitizer sees every hand-over (no QtConcurrent, QFutureWatcher or
+// queued call: those cross the threads through Qt's uninstrumented post-event list).
 
 #include <atomic>
 #include <memory>
+#include <thread>
 
 #include <QDialog>
-#include <QFutureWatcher>
 
 #include "params.h"
 #include "stability.h"
@@ -23,6 +27,8 @@ class QTableWidget;
 class QComboBox;
 
 namespace elui {
+
+class Mailbox;
 
 // Common frame: integrator choice, run/cancel, progress, table, plot, export.
 class StudyDialogBase : public QDialog {
@@ -66,6 +72,7 @@ protected:
 
 private:
     void exportResults();
+    void computationEnded();  // GUI thread, posted by the worker as its last act
     std::vector<QCheckBox*> m_integrators;
     QPushButton* m_run = nullptr;
     QPushButton* m_cancel = nullptr;
@@ -73,7 +80,8 @@ private:
     QProgressBar* m_progress = nullptr;
     QLabel* m_status = nullptr;
     std::shared_ptr<std::atomic<bool>> m_cancelFlag;
-    QFutureWatcher<void> m_watcher;
+    Mailbox* m_fromWorker = nullptr;  // progress and the end, run on the GUI thread
+    std::thread m_worker;
     bool m_busy = false;
 };
 
