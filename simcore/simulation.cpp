@@ -902,25 +902,27 @@ Simulation::ContactDesign Simulation::contactDesign() const {
     const bool held = std::find(m_body.fixed.begin(), m_body.fixed.end(), true) != m_body.fixed.end();
     if (m_contactProjection || !m_forces.contactWalls() || !(g > 0.0) || !(c.stiffness > 0.0) || held) return design;
     const auto x = positions();
-    const auto v = velocities();
     double lowest = std::numeric_limits<double>::infinity(), weight = 0.0;
     for (int i = 0; i < particleCount(); ++i) {
         if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
         lowest = std::min(lowest, x(1, i));
         weight += m_body.mass[i] * g;
     }
-    const double tolerance = 1e-6 * m_box;
+    // The contact patch: the free particles within a tenth of the body's height of its lowest
+    // point (measured on the default scenes, the particles touching at rest carry their
+    // weight with these depths to within 10 %: docs/numerics.md).
+    double highest = -std::numeric_limits<double>::infinity();
     for (int i = 0; i < particleCount(); ++i)
-        if (!m_body.fixed[static_cast<std::size_t>(i)] && x(1, i) <= lowest + tolerance) design.particles.push_back(i);
+        if (!m_body.fixed[static_cast<std::size_t>(i)]) highest = std::max(highest, x(1, i));
+    const double band = 0.1 * (highest - lowest);
+    for (int i = 0; i < particleCount(); ++i)
+        if (!m_body.fixed[static_cast<std::size_t>(i)] && x(1, i) <= lowest + band) design.particles.push_back(i);
     if (design.particles.empty()) return design;
-    const double floor = c.low[1];
-    // Impact: the particle's kinetic energy at the floor taken by the contact alone.
-    for (int i : design.particles) {
-        const double speed2 = v.col(i).squaredNorm() + 2.0 * g * std::max(0.0, x(1, i) - floor);
-        design.depth = std::max(design.depth, std::pow(2.0 * m_body.mass[i] * speed2 / c.stiffness, 0.25));
-    }
-    // Rest: the whole weight on those particles.
-    design.depth = std::max(design.depth, std::cbrt(weight / (static_cast<double>(design.particles.size()) * c.stiffness)));
+    // Rest: the weight shared by the patch (k d^3 = W / count). An impact goes deeper, but
+    // only for a few steps: a step beyond the stable one there amplifies by a bounded factor,
+    // while the resting contact lasts (measured: the impact depth as design point predicts
+    // half the measured limits; docs/numerics.md).
+    design.depth = std::cbrt(weight / (static_cast<double>(design.particles.size()) * c.stiffness));
     const double d = design.depth;
     design.stiffness = 3.0 * c.stiffness * d * d;
     design.damping = c.stiffness * d * d * d * c.alpha;

@@ -173,12 +173,13 @@ public:
     bool contactProjection() const { return m_contactProjection; }
     // The contact's linearisation point for the stability estimates (a body at its start has
     // no contact, and U'' = 3 k d^2 vanishes at d = 0): the particles nearest the floor (the
-    // wall gravity pulls towards), each at the deeper of two design depths: a particle that
-    // falls from its height onto the floor and stops in the contact alone
-    // (k d^4/4 = m v^2/2), and the body's weight shared by those particles at rest
-    // (k d^3 = W / count). Empty when contact is not a force or nothing falls.
+    // wall gravity pulls towards: those within a tenth of the body's height of its lowest
+    // point), each at the deeper of two design depths: a particle that falls from its height
+    // onto the floor and stops in the contact alone (k d^4/4 = m v^2/2), and the body's weight
+    // shared by those particles at rest (k d^3 = W / count). Empty when contact is not a
+    // force, when nothing falls (no gravity) or when the body hangs from a fixed particle.
     struct ContactDesign {
-        std::vector<int> particles;  // the lowest free particles
+        std::vector<int> particles;  // the free particles nearest the floor
         int axis = 1;                // the floor's normal axis
         double depth = 0.0;          // d* [m]
         double stiffness = 0.0;      // -dF/dx = 3 k d*^2 [N/m]
