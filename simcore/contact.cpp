@@ -181,8 +181,8 @@ double layerBarrierDepth(const LayerBarrierSet& set, std::size_t k, const double
     const double along =
         (x[3 * i] - x[3 * o]) * g[0] + (x[3 * i + 1] - x[3 * o + 1]) * g[1] + (x[3 * i + 2] - x[3 * o + 2]) * g[2];
     if (!(along > 0.0)) return along * set.invRestNorm[k];  // inside: the sign is all that matters
-    const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    return norm * set.invRestNorm[k] > kDegenerateFan ? along / norm : 0.0;
+    const double g02 = 1.0 / (set.invRestNorm[k] * set.invRestNorm[k]);
+    return kSqrt2 * along / std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g02);
 }
 
 double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, const double* x, const double* g4,
@@ -195,15 +195,17 @@ double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, c
         // The sign first: no root for the pairs that are inside (nearly all, nearly always).
         const double along = w[0] * g[0] + w[1] * g[1] + w[2] * g[2];
         if (!(along > 0.0)) continue;
-        const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        if (!(norm * set.invRestNorm[p] > kDegenerateFan)) continue;  // a collapsed fan has no plane
-        const double inv = 1.0 / norm;
+        const double g02 = 1.0 / (set.invRestNorm[p] * set.invRestNorm[p]);
+        const double norm2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g02;  // N^2 = |g|^2 + g0^2
+        const double inv = kSqrt2 / std::sqrt(norm2);
         const double q = along * inv, q2 = q * q;
         energy += 0.25 * k * q2 * q2;
-        // q = w.g / |g|:  dq = dw.n + dg.(w - q n) / |g|  (n = g / |g|), and F = -k q^3 dq/dx.
+        // q = sqrt2 w.g / N:  dq = dw.n + dg.t  with n = sqrt2 g / N, t = sqrt2 (w - (w.g) g / N^2) / N;
+        // F = -k q^3 dq/dx.
         const double s = k * q2 * q;
         const double n[3] = {g[0] * inv, g[1] * inv, g[2] * inv};
-        const double t[3] = {(w[0] - q * n[0]) * inv, (w[1] - q * n[1]) * inv, (w[2] - q * n[2]) * inv};
+        const double r = along / norm2;
+        const double t[3] = {(w[0] - r * g[0]) * inv, (w[1] - r * g[1]) * inv, (w[2] - r * g[2]) * inv};
         double* fi = f4 + 4 * i;
         double* fo = f4 + 4 * o;
         for (int a = 0; a < 3; ++a) {

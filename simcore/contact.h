@@ -33,11 +33,14 @@
 //
 // Layer barrier. Inner particle i must stay behind the tangent plane of its outer partner o.
 // With g = dV_outer/dx_o (the outer layer's volume gradient at o: the area-weighted normal,
-// a polynomial in o's neighbours),
-//     q = (x_i - x_o).g / |g|   [m] (> 0: i is outside the plane),   U = k q^4 / 4 for q > 0,
+// a polynomial in o's neighbours) and g0 = |g| in the rest shape,
+//     q = sqrt2 (x_i - x_o).g / sqrt(|g|^2 + g0^2)   [m] (> 0: i is outside the plane),
+//     U = k q^4 / 4 for q > 0,
 // and the force is exactly -dU/dx on i, o and o's neighbours (g depends on them), so the
-// barrier is conservative and in the ledger. q is C^inf where |g| > 0 and U is C^2 at q = 0.
-// The projection it replaces was a jump.
+// barrier is conservative and in the ledger. At rest q is the distance to the tangent plane;
+// where the outer layer stretches (|g| >> g0) it stays that distance, and where a fan folds
+// (|g| -> 0, the plane's direction turning fast) q fades instead of growing stiff: dq/dx is
+// bounded by |x_i - x_o| / g0, q is C^inf and U is C^2 at q = 0. The projection it replaces was a jump.
 
 #include <array>
 #include <limits>
@@ -105,8 +108,7 @@ struct LayerBarrierSet {
 // reading g from g4 (the outer layer's dV/dx, padded). Returns the barrier energy [J].
 double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, const double* x,
                           const double* g4, double* f4);
-// A fan whose |g| fell below this fraction of its rest value has no tangent plane: no barrier.
-inline constexpr double kDegenerateFan = 1e-6;
+inline constexpr double kSqrt2 = 1.4142135623730951;
 // The penetration q [m] of pair k (> 0: inner particle outside), from g in g4 (when inside,
 // only its sign is meaningful).
 double layerBarrierDepth(const LayerBarrierSet& set, std::size_t k, const double* x, const double* g4);

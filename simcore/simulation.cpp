@@ -137,7 +137,7 @@ public:
     }
     // Contact at the linearisation point: the walls' diagonal Jacobians (addWallContactJacobian)
     // and the layer barrier's active pairs. The barrier enters by its Gauss-Newton part
-    // K = -3 k q^2 n n^T on the pair (n = g / g0, +n on the inner particle, -n on the outer);
+    // K = -3 k q^2 n n^T on the pair (n = dq/dx_i = sqrt2 g / sqrt(|g|^2 + g0^2), +n on the inner particle, -n on the outer);
     // the curvature of q and the coupling to the fan are left out (the barrier is rarely
     // active; implicit-euler's linearisation only has to be close, not exact).
     // Extra contact stiffness may be added at a chosen design point (stability estimates).
@@ -176,11 +176,12 @@ public:
                 const int in = pairs.inner[k], out = pairs.outer[k];
                 const double along = (x[3 * in] - x[3 * out]) * g[0] + (x[3 * in + 1] - x[3 * out + 1]) * g[1] +
                                      (x[3 * in + 2] - x[3 * out + 2]) * g[2];
-                const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-                if (!(along > 0.0) || !(norm * pairs.invRestNorm[k] > kDegenerateFan)) continue;
-                const double q = along / norm;
+                if (!(along > 0.0)) continue;
+                const double g02 = 1.0 / (pairs.invRestNorm[k] * pairs.invRestNorm[k]);
+                const double inv = kSqrt2 / std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g02);
+                const double q = along * inv;
                 ActiveBarrier b{in, out, 3.0 * forces.contact.stiffness * q * q, {}};
-                for (int a = 0; a < 3; ++a) b.normal[static_cast<std::size_t>(a)] = g[static_cast<std::size_t>(a)] / norm;
+                for (int a = 0; a < 3; ++a) b.normal[static_cast<std::size_t>(a)] = g[static_cast<std::size_t>(a)] * inv;
                 m_barrierActive.push_back(b);
             }
         }
