@@ -1,10 +1,44 @@
 #include "contact.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <mutex>
 
+#include <Eigen/Core>
+
+// The wall test runs over every particle in every evaluation: compiled for AVX2 and baseline
+// x86-64 and picked at load time, as the force kernels are (force_kernels.cpp).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(ELASTIC_LAB_MULTIVERSION)
+#define SIMCORE_VECTOR_KERNEL __attribute__((target_clones("avx2", "default")))
+#else
+#define SIMCORE_VECTOR_KERNEL
+#endif
+
 namespace simcore {
+
+SIMCORE_VECTOR_KERNEL bool anyOutsideWalls(const ContactParams& c, const double* x, int begin, int end) {
+    const double* p = x + 3 * static_cast<std::ptrdiff_t>(begin);
+    const Eigen::Index n = 3 * static_cast<Eigen::Index>(end - begin), columns = n / 12;
+    Eigen::Array<double, 12, 1> low, high;
+    low.setConstant(std::numeric_limits<double>::infinity());
+    high.setConstant(-std::numeric_limits<double>::infinity());
+    if (columns > 0) {
+        const Eigen::Map<const Eigen::Array<double, 12, Eigen::Dynamic>> block(p, 12, columns);
+        low = block.rowwise().minCoeff();
+        high = block.rowwise().maxCoeff();
+    }
+    for (Eigen::Index k = 12 * columns; k < n; ++k) {
+        low[k - 12 * columns] = std::min(low[k - 12 * columns], p[k]);
+        high[k - 12 * columns] = std::max(high[k - 12 * columns], p[k]);
+    }
+    bool any = false;
+    for (int j = 0; j < 12; ++j)
+        any = any || low[j] < c.low[static_cast<std::size_t>(j % 3)] || high[j] > c.high[static_cast<std::size_t>(j % 3)];
+    return any;
+}
+
 
 double contactPhi(double u) {
     const double root = std::sqrt(1.0 + u * u);
@@ -187,8 +221,32 @@ double layerBarrierDepth(const LayerBarrierSet& set, std::size_t k, const double
 
 double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, const double* x, const double* g4,
                           double* f4) {
+    // A branch-free pass first: is any inner particle beyond its partner's tangent plane
+    // (w.g > 0)? Nearly never; then the pairs are gone through again.
+    const int* inner = set.inner.data();
+    const int* outer = set.outer.data();
+    const std::size_t count = set.size();
+    int any = 0;
+    if (count > 0 && inner[count - 1] - inner[0] == static_cast<int>(count - 1) &&
+        outer[count - 1] - outer[0] == static_cast<int>(count - 1)) {
+        // A run (pairs k, k + n in order, as a layered body numbers them; checked at its ends,
+        // the set being sorted): consecutive rows, no index loads.
+        const double* xi = x + 3 * inner[0];
+        const double* xo = x + 3 * outer[0];
+        const double* g = g4 + 4 * outer[0];
+        for (std::size_t p = 0; p < count; ++p, xi += 3, xo += 3, g += 4)
+            any |= (xi[0] - xo[0]) * g[0] + (xi[1] - xo[1]) * g[1] + (xi[2] - xo[2]) * g[2] > 0.0;
+    } else {
+        for (std::size_t p = 0; p < count; ++p) {
+            const double* xi = x + 3 * inner[p];
+            const double* xo = x + 3 * outer[p];
+            const double* g = g4 + 4 * outer[p];
+            any |= (xi[0] - xo[0]) * g[0] + (xi[1] - xo[1]) * g[1] + (xi[2] - xo[2]) * g[2] > 0.0;
+        }
+    }
+    if (!any) return 0.0;
     double energy = 0.0;
-    for (std::size_t p = 0; p < set.size(); ++p) {
+    for (std::size_t p = 0; p < count; ++p) {
         const int i = set.inner[p], o = set.outer[p];
         const double* g = g4 + 4 * o;
         const double w[3] = {x[3 * i] - x[3 * o], x[3 * i + 1] - x[3 * o + 1], x[3 * i + 2] - x[3 * o + 2]};

@@ -75,6 +75,12 @@ inline bool outsideWalls(const ContactParams& c, const double* x) {
            x[2] > c.high[2];
 }
 
+// Whether any of particles [begin, end) is beyond a wall. Four particles (twelve coordinates,
+// the period of the x y z pattern in a vector of four) per iteration, as a running minimum and
+// maximum per coordinate slot, compared with the planes once at the end: a loop the compiler
+// vectorises, a few operations per particle (nothing touches a wall nearly always).
+bool anyOutsideWalls(const ContactParams& c, const double* x, int begin, int end);
+
 // The wall force on one particle at x, v added into f (3 doubles); returns its contact
 // energy sum U [J] and adds the power removed by dissipation and friction [W] into power.
 double wallContact(const ContactParams& c, const double* x, const double* v, double* f, double& power);
@@ -95,7 +101,7 @@ inline constexpr double kMaxZeta = 1000.0;
 
 // The layer barrier's pairs, with the outer vertex's neighbourhood (its fan) that g depends on.
 struct LayerBarrierSet {
-    std::vector<int> inner, outer;
+    std::vector<int> inner, outer;     // strictly increasing (pairs in layerPairs order)
     std::vector<double> invRestNorm;   // 1 / |g| in the rest shape [1/m^2 in 3D, 1/m in 2D]
     std::vector<int> fanStart;         // pair k's fan is fan[fanStart[k] .. fanStart[k + 1])
     // 3D: (b, c) of each outer triangle (o, b, c), oriented; 2D: one (previous, next) entry.

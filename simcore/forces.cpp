@@ -548,10 +548,13 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
                 double* fi = f4 + 4 * i;
                 fi[0] = fi[2] = fi[3] = 0.0;
                 fi[1] = 0.0 - mass[i] * g;
-                // Wall contact: per particle, and only beyond a wall (a compare per axis).
-                if (walls && outsideWalls(contact, x + 3 * i) && (!contactFree || contactFree[i]))
-                    mine.contactEnergy += wallContact(contact, x + 3 * i, v + 3 * i, fi, mine.contactPower);
             }
+            // Wall contact: a branch-free pass says whether any particle of the range is
+            // beyond a wall (nearly always none); only then the contact pass.
+            if (walls && anyOutsideWalls(contact, x, begin, end))
+                for (int i = begin; i < end; ++i)
+                    if (outsideWalls(contact, x + 3 * i) && (!contactFree || contactFree[i]))
+                        mine.contactEnergy += wallContact(contact, x + 3 * i, v + 3 * i, f4 + 4 * i, mine.contactPower);
         }
         if (gas) clearGradient(c);
         accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, mine);
