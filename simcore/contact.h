@@ -55,7 +55,7 @@ struct ContactParams {
     double stiffness = 0.0;      // k in U = k d^4 / 4 [N/m^3]
     double alpha = 0.0;          // Hunt-Crossley coefficient alpha [s/m]; 0: no dissipation
     double friction = 0.0;       // Coulomb coefficient mu
-    double frictionSpeed = 0.1;  // slip speed eps below which friction is regularised [m/s]
+    double frictionSpeed = 0.5;  // slip speed eps below which friction is regularised [m/s]
     // Wall planes per axis [m]: particles stay in [low, high]; infinite on axes the body does
     // not move along.
     std::array<double, 3> low{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),

@@ -50,7 +50,7 @@ constexpr std::array kTable = {
               "impact speed at which the contact damping gives exactly the restitution e"},
     ParamSpec{"friction",     "",      0.0,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, "",
               "wall friction: Coulomb coefficient mu (force); tangential velocity fraction removed (projection)"},
-    ParamSpec{"friction_speed","m/s",  0.1,     0.0,   1e3,    true,  false, kBitsAll,      ParamGroup::Contact, "",
+    ParamSpec{"friction_speed","m/s",  0.5,     0.0,   1e3,    true,  false, kBitsAll,      ParamGroup::Contact, "",
               "slip speed below which Coulomb friction is smoothed (regularised) [force contact]"},
     ParamSpec{"mks",          "N/m",   150.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Pointer, "",
               "mouse spring stiffness (MKS)"},
