@@ -147,6 +147,8 @@ public:
         m_contactOn = forces.contactWalls() || forces.contactBarrier() || m_design;
         m_barrierActive.clear();
         if (!m_contactOn) return;
+        // Sized once (the first linearisation), not per step.
+        if (m_barrierActive.capacity() < forces.barrierPairs().size()) m_barrierActive.reserve(forces.barrierPairs().size());
         m_contactK.setZero(n);
         m_contactD.setZero(n);
         const double* x = y.data();
@@ -550,9 +552,10 @@ bool Simulation::step(double until) {
     double h = m_dt;
     bool clamped = false;
     if (m_integrator->adaptive()) {
-        // Walls act between steps: no particle may cross more than a tenth of the box in
-        // one adaptive step (a smooth free fall would otherwise let the step grow without
-        // bound, since its error estimate is zero).
+        // No particle may cross more than a tenth of the box in one adaptive step: a smooth
+        // free fall has a zero error estimate and would let the step grow without bound, past
+        // the onset of a contact (a force that is 0 until it is touched, so the estimate
+        // cannot see it coming) or, with contact = projection, through a wall between steps.
         const double fastest = velocities().colwise().norm().maxCoeff();
         h = fastest > 0.0 ? std::min(m_hNext, 0.1 * m_box / fastest) : m_hNext;
         if (until - t0 > 1e-12 * std::max(1.0, std::abs(until)) && t0 + h > until) {
