@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "contact.h"
+#include "impact.h"
 #include "scenefile.h"
 #include "simulation.h"
 #include "stability.h"
@@ -274,6 +275,20 @@ private slots:
         const double fast = rebound(10.0 * speed, nullptr);
         if (e < 1.0) QVERIFY2(fast < e - 0.05, qPrintable(QString::number(fast)));
         else QVERIFY(std::abs(fast - 1.0) < 1e-4);
+    }
+
+    void impactMeasurement() {
+        // `elastic-lab-cli restitution`'s engine: the particle matches e at contact_speed, the
+        // ring rebounds but less than an ideal elastic body, and the projection reflects every
+        // particle at exactly e whatever the speed.
+        const ParameterSet ring(SceneKind::Ring2d);
+        const ImpactRow atReference = measureImpact(ring, "rk4", ring.get("contact_speed"));
+        QVERIFY(std::abs(atReference.particle - ring.get("restitution")) < 1e-3);
+        QVERIFY2(atReference.body > 0.2 && atReference.body < 0.9, qPrintable(QString::number(atReference.body)));
+        QVERIFY(atReference.depth > 0.0 && atReference.depth < 0.1);
+        ParameterSet projection = ring;
+        projection.set("contact", 1.0);
+        QCOMPARE(measureImpact(projection, "rk4", 10.0).particle, ring.get("restitution"));
     }
 
     void threadsAndEndOfStepReuseChangeNoBit() {
