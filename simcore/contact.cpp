@@ -219,16 +219,41 @@ double layerBarrierDepth(const LayerBarrierSet& set, std::size_t k, const double
     return kSqrt2 * along / std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g02);
 }
 
+SIMCORE_VECTOR_KERNEL PairScan scanPairedRanges(const ContactParams& c, const double* x, const double* g4, int begin,
+                                                int end, int offset) {
+    const double l0 = c.low[0], l1 = c.low[1], l2 = c.low[2], h0 = c.high[0], h1 = c.high[1], h2 = c.high[2];
+    double lo0 = l0, lo1 = l1, lo2 = l2, hi0 = h0, hi1 = h1, hi2 = h2;  // extent, clamped to the walls
+    int beyond = 0;
+    for (int i = begin; i < end; ++i) {
+        const double* xi = x + 3 * i;
+        const double* xo = x + 3 * (i + offset);
+        const double* g = g4 + 4 * (i + offset);
+        lo0 = std::min(lo0, std::min(xi[0], xo[0]));
+        lo1 = std::min(lo1, std::min(xi[1], xo[1]));
+        lo2 = std::min(lo2, std::min(xi[2], xo[2]));
+        hi0 = std::max(hi0, std::max(xi[0], xo[0]));
+        hi1 = std::max(hi1, std::max(xi[1], xo[1]));
+        hi2 = std::max(hi2, std::max(xi[2], xo[2]));
+        beyond |= (xi[0] - xo[0]) * g[0] + (xi[1] - xo[1]) * g[1] + (xi[2] - xo[2]) * g[2] > 0.0;
+    }
+    PairScan scan;
+    // NaN coordinates compare false everywhere: they are the failure check's, not contact's.
+    scan.outsideWalls = lo0 < l0 || lo1 < l1 || lo2 < l2 || hi0 > h0 || hi1 > h1 || hi2 > h2;
+    scan.beyondPlane = beyond != 0;
+    return scan;
+}
+
 double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, const double* x, const double* g4,
-                          double* f4) {
+                          double* f4, bool screen) {
     // A branch-free pass first: is any inner particle beyond its partner's tangent plane
     // (w.g > 0)? Nearly never; then the pairs are gone through again.
     const int* inner = set.inner.data();
     const int* outer = set.outer.data();
     const std::size_t count = set.size();
-    int any = 0;
-    if (count > 0 && inner[count - 1] - inner[0] == static_cast<int>(count - 1) &&
-        outer[count - 1] - outer[0] == static_cast<int>(count - 1)) {
+    int any = screen ? 0 : 1;
+    const bool run = count > 0 && inner[count - 1] - inner[0] == static_cast<int>(count - 1) &&
+                     outer[count - 1] - outer[0] == static_cast<int>(count - 1);
+    if (screen && run) {
         // A run (pairs k, k + n in order, as a layered body numbers them; checked at its ends,
         // the set being sorted): consecutive rows, no index loads.
         const double* xi = x + 3 * inner[0];
@@ -236,7 +261,7 @@ double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, c
         const double* g = g4 + 4 * outer[0];
         for (std::size_t p = 0; p < count; ++p, xi += 3, xo += 3, g += 4)
             any |= (xi[0] - xo[0]) * g[0] + (xi[1] - xo[1]) * g[1] + (xi[2] - xo[2]) * g[2] > 0.0;
-    } else {
+    } else if (screen) {
         for (std::size_t p = 0; p < count; ++p) {
             const double* xi = x + 3 * inner[p];
             const double* xo = x + 3 * outer[p];

@@ -540,10 +540,21 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
     std::array<Sums, kChunks + 1> sums{};  // per chunk, then the shared part
     const bool walls = contactWalls(), barrier = contactBarrier();
     const std::uint8_t* contactFree = m_contactFree.empty() ? nullptr : m_contactFree.data();
+    // Layered bodies own their particles in pairs of ranges, inner [b, e) and outer [b + n, e + n):
+    // with the barrier on, one pass over each pair of ranges after the chunk's own faces finds
+    // both whether any particle is beyond a wall and whether any pair may be beyond its plane
+    // (one read of x and g instead of two). Otherwise the walls get their own pass.
+    const auto& ranges = m_ownedRanges;
+    const bool paired = barrier && topo.layerPairs.size() * 2 == static_cast<std::size_t>(topo.particleCount());
+    auto wallForces = [&](Sums& mine, int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            if (outsideWalls(contact, x + 3 * i) && (!contactFree || contactFree[i]))
+                mine.contactEnergy += wallContact(contact, x + 3 * i, v + 3 * i, f4 + 4 * i, mine.contactPower);
+    };
     runChunks([&](int c) {
         const auto k = static_cast<std::size_t>(c);
         Sums& mine = sums[k];
-        for (auto [begin, end] : m_ownedRanges[k]) {
+        for (auto [begin, end] : ranges[k]) {
             for (int i = begin; i < end; ++i) {
                 double* fi = f4 + 4 * i;
                 fi[0] = fi[2] = fi[3] = 0.0;
@@ -551,15 +562,28 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
             }
             // Wall contact: a branch-free pass says whether any particle of the range is
             // beyond a wall (nearly always none); only then the contact pass.
-            if (walls && anyOutsideWalls(contact, x, begin, end))
-                for (int i = begin; i < end; ++i)
-                    if (outsideWalls(contact, x + 3 * i) && (!contactFree || contactFree[i]))
-                        mine.contactEnergy += wallContact(contact, x + 3 * i, v + 3 * i, f4 + 4 * i, mine.contactPower);
+            if (walls && !paired && anyOutsideWalls(contact, x, begin, end)) wallForces(mine, begin, end);
         }
         if (gas) clearGradient(c);
         accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, mine);
-        if (barrier)
+        if (paired) {
+            const int perLayer = topo.particleCount() / 2;
+            bool beyond = false;
+            for (auto [begin, end] : ranges[k]) {
+                if (begin >= perLayer) continue;  // the outer ranges, scanned with their inner ones
+                const PairScan scan = scanPairedRanges(contact, x, g4, begin, end, perLayer);
+                beyond = beyond || scan.beyondPlane;
+                if (walls && scan.outsideWalls) {
+                    wallForces(mine, begin, end);
+                    wallForces(mine, begin + perLayer, end + perLayer);
+                }
+            }
+            if (beyond)
+                mine.contactEnergy +=
+                    layerBarrierForces(m_parts[k].barrier, topo.dimension, contact.stiffness, x, g4, f4, false);
+        } else if (barrier) {
             mine.contactEnergy += layerBarrierForces(m_parts[k].barrier, topo.dimension, contact.stiffness, x, g4, f4);
+        }
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
     accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f4, g4, sums[kChunks]);
