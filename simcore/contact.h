@@ -110,23 +110,23 @@ struct LayerBarrierSet {
     void clear();
 };
 
-// Adds the barrier forces of every pair of the set into f4 (padded, 4 doubles per particle),
-// reading g from g4 (the outer layer's dV/dx, padded). Returns the barrier energy [J]. With
-// screen, a branch-free pass first finds whether any pair is beyond its plane at all (without,
-// the caller has found that some may be).
-//
 // Layered bodies: one pass over paired particle ranges (inner [begin, end), outer the same +
-// offset) gives both the walls' extent and whether any pair of them is beyond its tangent
-// plane (g4 of outer particles whose faces are not all summed yet may give a false "maybe",
-// never a false "no" for a pair whose faces are).
+// offset) gives both whether any of them is beyond a wall and whether any pair may be beyond
+// its tangent plane (g4 of outer particles whose faces are not all summed yet may give a false
+// "maybe", never a false "no" for a pair whose faces are).
 struct PairScan {
     bool outsideWalls = false;
     bool beyondPlane = false;
 };
 PairScan scanPairedRanges(const ContactParams& c, const double* x, const double* g4, int begin, int end, int offset);
-double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, const double* x,
-                          const double* g4, double* f4,
-                          bool screen = true);
+
+// Adds the barrier forces of every pair of the set into f4 (padded, 4 doubles per particle),
+// reading g from g4 (the outer layer's dV/dx, padded). Returns the barrier energy [J]. With
+// screen, a branch-free pass first finds whether any pair is beyond its plane at all (without,
+// the caller has found that some may be).
+double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, const double* x, const double* g4,
+                          double* f4, bool screen = true);
+
 inline constexpr double kSqrt2 = 1.4142135623730951;
 // The penetration q [m] of pair k (> 0: inner particle outside), from g in g4 (when inside,
 // only its sign is meaningful).
