@@ -184,7 +184,7 @@ void ForceModel::partition() {
     const bool layered = !topo.layerPairs.empty();
     const int perLayer = layered ? n / 2 : n;
     const int half = perLayer / 2;
-    auto owner = [&](int p) { return m_chunks == 1 ? 0 : ((p % perLayer) < half ? 0 : 1); };
+    auto owner = [&](int p) { return ownerOf(p); };
     m_ownedRanges = {};
     if (m_chunks == 1) {
         // One range per layer: the gas scaling reads one pressure per range.
@@ -264,6 +264,87 @@ void ForceModel::partition() {
             m_parts[static_cast<std::size_t>(owner(edge[1]) == o ? o : kChunks)].surfaces.back().edges.push_back(edge);
         }
     }
+}
+
+int ForceModel::ownerOf(int particle) const {
+    if (m_chunks == 1) return 0;
+    const int n = m_topology->particleCount();
+    const int perLayer = m_topology->layerPairs.empty() ? n : n / 2;
+    return (particle % perLayer) < perLayer / 2 ? 0 : 1;
+}
+
+void ForceModel::prepareContact(const double* restPositions, const std::vector<bool>& fixed) {
+    const Topology& topo = *m_topology;
+    m_contactFree.assign(static_cast<std::size_t>(topo.particleCount()), 1);
+    for (std::size_t i = 0; i < fixed.size() && i < m_contactFree.size(); ++i) m_contactFree[i] = fixed[i] ? 0 : 1;
+    m_barrierAll.clear();
+    for (Part& part : m_parts) part.barrier.clear();
+    const Surface* outer = topo.surface(Layer::Outer);
+    if (!outer || topo.layerPairs.empty()) return;
+    // Each outer vertex's fan: the oriented triangles (o, b, c) around it (3D), or its
+    // (previous, next) neighbours along the ring (2D).
+    const auto n = static_cast<std::size_t>(topo.particleCount());
+    std::vector<std::vector<std::array<int, 2>>> fans(n);
+    if (topo.dimension == 2) {
+        std::vector<int> previous(n, -1), next(n, -1);
+        for (auto [a, b] : outer->edges) {
+            next[static_cast<std::size_t>(a)] = b;
+            previous[static_cast<std::size_t>(b)] = a;
+        }
+        for (std::size_t o = 0; o < n; ++o)
+            if (previous[o] >= 0 && next[o] >= 0) fans[o].push_back({previous[o], next[o]});
+    } else {
+        for (auto [a, b, c] : outer->triangles) {
+            fans[static_cast<std::size_t>(a)].push_back({b, c});
+            fans[static_cast<std::size_t>(b)].push_back({c, a});
+            fans[static_cast<std::size_t>(c)].push_back({a, b});
+        }
+    }
+    auto add = [&](LayerBarrierSet& set, int in, int out, double invNorm) {
+        set.inner.push_back(in);
+        set.outer.push_back(out);
+        set.invRestNorm.push_back(invNorm);
+        for (const auto& f : fans[static_cast<std::size_t>(out)]) set.fan.push_back(f);
+        set.fanStart.push_back(static_cast<int>(set.fan.size()));
+    };
+    for (auto [in, out] : topo.layerPairs) {
+        if (fans[static_cast<std::size_t>(out)].empty()) continue;
+        add(m_barrierAll, in, out, 1.0);
+        const std::size_t k = m_barrierAll.size() - 1;
+        const auto g = layerBarrierNormal(m_barrierAll, k, topo.dimension, restPositions);
+        const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        if (!(norm > 0.0)) {  // a degenerate rest fan: no barrier for this pair
+            m_barrierAll.inner.pop_back();
+            m_barrierAll.outer.pop_back();
+            m_barrierAll.invRestNorm.pop_back();
+            m_barrierAll.fan.resize(static_cast<std::size_t>(m_barrierAll.fanStart[k]));
+            m_barrierAll.fanStart.pop_back();
+            continue;
+        }
+        m_barrierAll.invRestNorm[k] = 1.0 / norm;
+        // A chunk evaluates the pair when it owns every particle the pair touches: then its
+        // outer vertex's gradient is complete after the chunk's own faces, and the forces land
+        // on its own particles only. The shared part takes the rest.
+        const int o = ownerOf(out);
+        bool own = ownerOf(in) == o;
+        for (const auto& [b, c] : fans[static_cast<std::size_t>(out)]) own = own && ownerOf(b) == o && ownerOf(c) == o;
+        add(m_parts[static_cast<std::size_t>(own ? o : kChunks)].barrier, in, out, 1.0 / norm);
+    }
+}
+
+double ForceModel::contactEnergy(const double* x) {
+    double energy = 0.0;
+    if (contactWalls())
+        for (int i = 0; i < m_topology->particleCount(); ++i)
+            if (m_contactFree.empty() || m_contactFree[static_cast<std::size_t>(i)]) energy += wallContactEnergy(contact, x + 3 * i);
+    if (contactBarrier()) {
+        const double* g4 = computeVolumeGradient(x);
+        for (std::size_t k = 0; k < m_barrierAll.size(); ++k) {
+            const double q = layerBarrierDepth(m_barrierAll, k, x, g4);
+            if (q > 0.0) energy += 0.25 * contact.stiffness * q * q * q * q;
+        }
+    }
+    return energy;
 }
 
 std::size_t ForceModel::quadCount() const {
@@ -376,6 +457,8 @@ void ForceModel::countTerms() {
     for (Term t : {Term::Gravity, Term::Springs, Term::Gas})
         if (m_terms.has(t)) ++m_evaluations[static_cast<std::size_t>(t)];
     if (m_terms.has(Term::Pointer) && pointer.active) ++m_evaluations[static_cast<std::size_t>(Term::Pointer)];
+    if (contactWalls()) ++m_evaluations[static_cast<std::size_t>(Term::Collisions)];
+    if (contactBarrier()) ++m_evaluations[static_cast<std::size_t>(Term::LayerConstraint)];
 }
 
 std::array<double, 2> ForceModel::volumes(const double* x) {
@@ -455,26 +538,66 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
     double* f4 = m_force4.data();
     double* g4 = m_gradient4.data();
     std::array<Sums, kChunks + 1> sums{};  // per chunk, then the shared part
+    const bool walls = contactWalls(), barrier = contactBarrier();
+    const std::uint8_t* contactFree = m_contactFree.empty() ? nullptr : m_contactFree.data();
+    // Layered bodies own their particles in pairs of ranges, inner [b, e) and outer [b + n, e + n):
+    // with the barrier on, one pass over each pair of ranges after the chunk's own faces finds
+    // both whether any particle is beyond a wall and whether any pair may be beyond its plane
+    // (one read of x and g instead of two). Otherwise the walls get their own pass.
+    const auto& ranges = m_ownedRanges;
+    const bool paired = barrier && topo.layerPairs.size() * 2 == static_cast<std::size_t>(topo.particleCount());
+    auto wallForces = [&](Sums& mine, int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            if (outsideWalls(contact, x + 3 * i) && (!contactFree || contactFree[i]))
+                mine.contactEnergy += wallContact(contact, x + 3 * i, v + 3 * i, f4 + 4 * i, mine.contactPower);
+    };
     runChunks([&](int c) {
         const auto k = static_cast<std::size_t>(c);
-        for (auto [begin, end] : m_ownedRanges[k]) {
+        Sums& mine = sums[k];
+        for (auto [begin, end] : ranges[k]) {
             for (int i = begin; i < end; ++i) {
                 double* fi = f4 + 4 * i;
                 fi[0] = fi[2] = fi[3] = 0.0;
                 fi[1] = 0.0 - mass[i] * g;
             }
+            // Wall contact: a branch-free pass says whether any particle of the range is
+            // beyond a wall (nearly always none); only then the contact pass.
+            if (walls && !paired && anyOutsideWalls(contact, x, begin, end)) wallForces(mine, begin, end);
         }
         if (gas) clearGradient(c);
-        accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, sums[k]);
+        accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, mine);
+        if (paired) {
+            const int perLayer = topo.particleCount() / 2;
+            bool beyond = false;
+            for (auto [begin, end] : ranges[k]) {
+                if (begin >= perLayer) continue;  // the outer ranges, scanned with their inner ones
+                const PairScan scan = scanPairedRanges(contact, x, g4, begin, end, perLayer);
+                beyond = beyond || scan.beyondPlane;
+                if (walls && scan.outsideWalls) {
+                    wallForces(mine, begin, end);
+                    wallForces(mine, begin + perLayer, end + perLayer);
+                }
+            }
+            if (beyond)
+                mine.contactEnergy +=
+                    layerBarrierForces(m_parts[k].barrier, topo.dimension, contact.stiffness, x, g4, f4, false);
+        } else if (barrier) {
+            mine.contactEnergy += layerBarrierForces(m_parts[k].barrier, topo.dimension, contact.stiffness, x, g4, f4);
+        }
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
     accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f4, g4, sums[kChunks]);
+    if (barrier)
+        sums[kChunks].contactEnergy +=
+            layerBarrierForces(m_parts[kChunks].barrier, topo.dimension, contact.stiffness, x, g4, f4);
     // Sums in a fixed order (chunk 0, chunk 1, shared), whatever the number of threads.
     std::array<double, 2> volumeSum{};
     std::array<double, kSpringFamilyCount> stretch2{};
     auto add = [&](const Sums& part) {
         extras.dampingPower += part.power;
         extras.degenerateSprings += part.degenerate;
+        extras.contactEnergy += part.contactEnergy;
+        extras.contactPower += part.contactPower;
         for (std::size_t slot = 0; slot < 2; ++slot) volumeSum[slot] += part.volume[slot];
         for (std::size_t fam = 0; fam < stretch2.size(); ++fam) stretch2[fam] += part.stretch2[fam];
     };
@@ -551,6 +674,18 @@ void ForceModel::evaluateReference(const double* x, const double* v, double* f, 
         }
     if (m_terms.has(Term::Pointer) && pointer.active)
         extras.dampingPower += addPointer(pointer, params.mks, params.mkd, params.mouseRest, x, v, f);
+    if (contactWalls())
+        for (int i = 0; i < topo.particleCount(); ++i)
+            if (m_contactFree.empty() || m_contactFree[static_cast<std::size_t>(i)])
+                extras.contactEnergy += wallContact(contact, x + 3 * i, v + 3 * i, f + 3 * i, extras.contactPower);
+    if (contactBarrier()) {
+        // The barrier reads g = dV/dx from a padded buffer and writes padded forces.
+        const double* g4 = computeVolumeGradient(x);
+        std::vector<double> f4(static_cast<std::size_t>(4 * topo.particleCount()), 0.0);
+        extras.contactEnergy += layerBarrierForces(m_barrierAll, topo.dimension, contact.stiffness, x, g4, f4.data());
+        for (int i = 0; i < topo.particleCount(); ++i)
+            for (int a = 0; a < 3; ++a) f[3 * i + a] += f4[static_cast<std::size_t>(4 * i + a)];
+    }
 }
 
 }  // namespace simcore

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 
 #include "body.h"
+#include "contact.h"
 #include "force_kernels.h"
 #include "parallel.h"
 
@@ -52,6 +53,8 @@ struct ForceExtras {
     double dampingPower = 0.0;         // power removed by spring and mouse damping [W], >= 0
     std::array<double, kSpringFamilyCount> springEnergy{};  // elastic energy per family [J]
     int degenerateSprings = 0;         // springs shorter than kDegenerateLength
+    double contactEnergy = 0.0;        // wall contact + layer barrier energy [J] (contact = force)
+    double contactPower = 0.0;         // power removed by contact dissipation and friction [W], >= 0
 };
 
 inline constexpr double kDegenerateLength = 1e-12;  // [m]
@@ -99,7 +102,21 @@ public:
     ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms);
 
     ForceParams params;
+    ContactParams contact;  // read when the walls or the layer barrier are forces
     PointerSpring pointer;
+
+    // The layer barrier's pairs and normals' rest lengths from the rest shape (3N), and which
+    // particles are fixed (no contact force on them). Called once the body is built.
+    void prepareContact(const double* restPositions, const std::vector<bool>& fixed);
+    // Whether contact is part of the force evaluation (contact = force): walls, barrier.
+    bool contactWalls() const { return contact.walls && m_terms.has(Term::Collisions); }
+    bool contactBarrier() const {
+        return contact.layerBarrier && m_terms.has(Term::LayerConstraint) && m_terms.has(Term::Gas);
+    }
+    // Contact energy at x by its own pass (walls and barrier) [J].
+    double contactEnergy(const double* x);
+    // Every layer-barrier pair, with its fan (for the Jacobians and the checks).
+    const LayerBarrierSet& barrierPairs() const { return m_barrierAll; }
 
     const TermSet& terms() const { return m_terms; }
     // The pool that runs the chunks (nullptr: the calling thread runs them all).
@@ -166,6 +183,9 @@ private:
         // Whether the radius springs form a run (kernels::springRunBlock): particle k to k + n.
         bool radiusRun = false;
         std::vector<Surface> surfaces;
+        // Layer-barrier pairs whose inner, outer and fan particles all belong to this part's
+        // chunk (the shared part: the rest), evaluated once g of the outer vertex is complete.
+        LayerBarrierSet barrier;
     };
     void partition();
     // What one part adds up besides forces: enclosed-volume sums (6V in 3D, 2A in 2D) per
@@ -175,7 +195,10 @@ private:
         double power = 0.0;
         std::array<double, kSpringFamilyCount> stretch2{};
         int degenerate = 0;
+        double contactEnergy = 0.0;
+        double contactPower = 0.0;
     };
+    int ownerOf(int particle) const;
     // Adds the part's spring forces to f4 and its gas gradient dV/dx to g4 (padded, 4 doubles
     // per particle); adds its sums to `sums`.
     void accumulatePart(const Part& part, const double* x, const double* v, kernels::Scratch& scratch,
@@ -190,6 +213,8 @@ private:
     std::array<kernels::Scratch, kChunks> m_scratch;  // one block of scratch per chunk
     kernels::AlignedBuffer m_force4;                  // forces, padded (4N)
     kernels::AlignedBuffer m_gradient4;               // dV/dx of each particle's layer, padded (4N)
+    std::vector<std::uint8_t> m_contactFree;          // 1 where a particle feels wall contact
+    LayerBarrierSet m_barrierAll;                     // every pair, in pair order
 };
 
 }  // namespace simcore

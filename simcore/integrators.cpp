@@ -259,7 +259,12 @@ public:
         m_v = y.segment(n, n);
         m_target.setConstant(std::numeric_limits<double>::quiet_NaN());
         const int iterations = std::max(1, m_options.newtonIterations);
-        for (int it = 0; it < iterations; ++it) {
+        for (int it = 0;; ++it) {
+            // Contact forces (k d^3) have no stiffness where a step starts out of contact and a
+            // large one where it ends in contact: linearised once, a large step lands deep in
+            // the wall and the next one throws the body out with energy it never had. While the
+            // end state is in contact, Newton continues (at most kContactNewton iterations).
+            if (it >= iterations && (it >= kContactNewton || !system.stronglyNonlinear(h, y, m_v))) break;
             const Eigen::VectorXd& mass = system.coordinateMass();
             if (it == 0) {
                 // Baraff-Witkin: linearised at (x0, v0); rhs = h (F0 + h K v0), F0 = M a0.
@@ -304,6 +309,7 @@ public:
     }
 
 private:
+    static constexpr int kContactNewton = 12;
     // Solves A dv = rhs for the current iterate m_v, with wall contacts inside the solve: a
     // coordinate that would end beyond a wall gets the velocity that lands it on the wall and
     // the solve is repeated with that velocity prescribed, so the springs feel the stop in the

@@ -95,6 +95,13 @@ public:
                                   const Eigen::VectorXd& /*v1*/, Eigen::VectorXd& /*target*/) {
         return 0;
     }
+    // Whether the force is strongly nonlinear over a step from y0 with end velocities v1 (n):
+    // a smooth contact force that the end state x0 + h v1 engages (its stiffness grows from 0
+    // where the step starts). Implicit methods then iterate Newton to convergence instead of
+    // linearising once.
+    virtual bool stronglyNonlinear(double /*h*/, const Eigen::VectorXd& /*y0*/, const Eigen::VectorXd& /*v1*/) {
+        return false;
+    }
     // Mass of each coordinate [kg] (n), 0 on constrained coordinates.
     virtual const Eigen::VectorXd& coordinateMass() const {
         static const Eigen::VectorXd none;

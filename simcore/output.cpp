@@ -128,9 +128,14 @@ std::vector<CsvColumn> timeSeriesColumns(SceneKind kind) {
     c.push_back({"energy_gravity", [](const D& d) { return d.gravity; }});
     if (layered) c.push_back({"energy_gas", [](const D& d) { return d.gas; }});
     c.push_back({"energy_pointer", [](const D& d) { return d.pointer; }});
+    // Every scene has the box walls: contact energy (walls + layer barrier) and what contact
+    // dissipation and friction removed (both 0 with contact = projection, which books its
+    // changes as energy_removed_collisions).
+    c.push_back({"energy_contact", [](const D& d) { return d.contact; }});
     c.push_back({"energy_total", [](const D& d) { return d.total(); }});
     c.push_back({"energy_removed", [](const D& d) { return d.removed(); }});
     c.push_back({"energy_removed_damping", [](const D& d) { return d.removedDamping; }});
+    c.push_back({"energy_removed_contact", [](const D& d) { return d.removedContact; }});
     c.push_back({"energy_removed_collisions", [](const D& d) { return d.removedCollisions; }});
     c.push_back({"work_pointer", [](const D& d) { return d.workPointer; }});
     c.push_back({"energy_drift", [](const D& d) { return d.energyDrift(); }});

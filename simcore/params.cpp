@@ -35,12 +35,23 @@ constexpr std::array kTable = {
               "mass of each outer-layer particle (defaults to mass)"},
     ParamSpec{"gravity",      "m/s^2", 9.81,    0.0,   1e4,    false, false, kBitsAll,      ParamGroup::Environment, "",
               "gravitational acceleration, pointing along -y"},
-    ParamSpec{"restitution",  "",      0.5,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Environment, "",
-              "coefficient of restitution e at the box walls: normal velocity becomes -e*v_n"},
-    ParamSpec{"friction",     "",      0.0,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Environment, "",
-              "tangential velocity removed at a wall contact (0 = frictionless, 1 = sticks)"},
     ParamSpec{"box",          "m",     2.5,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Environment, "",
               "half-size of the collision box (floor, ceiling, walls), centred on the body's start"},
+    ParamSpec{"contact",      "",      0.0,     0.0,   1.0,    false, true,  kBitsAll,      ParamGroup::Contact, "",
+              "contact model: 0 = force (smooth penalty force inside the ODE, in the energy ledger), "
+              "1 = projection (the thesis program: put back and reflect after the step)",
+              0, 0.0, "force|projection"},
+    ParamSpec{"restitution",  "",      0.5,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, "",
+              "coefficient of restitution e at the box walls: a particle hitting at contact_speed rebounds "
+              "at e times its speed (projection: v_n becomes -e*v_n)"},
+    ParamSpec{"contact_stiffness","N/m^3", 2e7, 0.0,   1e15,   true,  false, kBitsAll,      ParamGroup::Contact, "",
+              "k of the contact potential U = k d^4/4 at a wall (d: penetration) and of the layer barrier"},
+    ParamSpec{"contact_speed","m/s",   3.0,     0.0,   1e4,    true,  false, kBitsAll,      ParamGroup::Contact, "",
+              "impact speed at which the contact damping gives exactly the restitution e"},
+    ParamSpec{"friction",     "",      0.0,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, "",
+              "wall friction: Coulomb coefficient mu (force); tangential velocity fraction removed (projection)"},
+    ParamSpec{"friction_speed","m/s",  0.5,     0.0,   1e3,    true,  false, kBitsAll,      ParamGroup::Contact, "",
+              "slip speed below which Coulomb friction is smoothed (regularised) [force contact]"},
     ParamSpec{"mks",          "N/m",   150.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Pointer, "",
               "mouse spring stiffness (MKS)"},
     ParamSpec{"mkd",          "N*s/m", 25.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Pointer, "",
@@ -100,7 +111,44 @@ std::string ParamSpec::rangeText() const {
     std::string text = minExclusive ? "(" : "[";
     text += formatNumber(minValue) + ", " + formatNumber(maxValue) + "]";
     if (integer) text += " integer";
+    if (!choices.empty()) {
+        text += " (";
+        for (int k = 0; !choiceName(k).empty(); ++k) text += (k ? ", " : "") + std::to_string(k) + " = " + choiceName(k);
+        text += ")";
+    }
     return text;
+}
+
+std::string ParamSpec::choiceName(double value) const {
+    int index = 0;
+    std::string_view rest = choices;
+    while (!rest.empty()) {
+        const auto bar = rest.find('|');
+        const std::string_view name = rest.substr(0, bar);
+        if (index == value) return std::string(name);
+        if (bar == std::string_view::npos) break;
+        rest = rest.substr(bar + 1);
+        ++index;
+    }
+    return {};
+}
+
+int ParamSpec::choiceIndex(std::string_view name) const {
+    int index = 0;
+    std::string_view rest = choices;
+    while (!rest.empty()) {
+        const auto bar = rest.find('|');
+        if (rest.substr(0, bar) == name) return index;
+        if (bar == std::string_view::npos) break;
+        rest = rest.substr(bar + 1);
+        ++index;
+    }
+    return -1;
+}
+
+std::optional<double> parseValue(const ParamSpec& spec, std::string_view text) {
+    if (const int index = spec.choiceIndex(text); index >= 0 && !text.empty()) return index;
+    return parseNumber(text);
 }
 
 std::span<const ParamSpec> parameterTable() { return kTable; }
@@ -158,9 +206,9 @@ std::optional<std::string> ParameterSet::set(std::string_view key, double value)
 }
 
 std::optional<std::string> ParameterSet::setFromText(std::string_view key, std::string_view text) {
-    const auto value = parseNumber(text);
+    const ParamSpec* spec = findParam(key);
+    const auto value = spec ? parseValue(*spec, text) : parseNumber(text);
     if (!value) {
-        const ParamSpec* spec = findParam(key);
         std::string allowed = spec ? "; allowed " + spec->rangeText() : "";
         return std::string(key) + ": '" + std::string(text) + "' is not a finite number" + allowed;
     }

@@ -29,7 +29,7 @@ enum SceneBits : unsigned {
 
 unsigned sceneBit(SceneKind kind);
 
-enum class ParamGroup { Springs, Gas, Mass, Environment, Pointer, Time, Shape, Start };
+enum class ParamGroup { Springs, Gas, Mass, Environment, Contact, Pointer, Time, Shape, Start };
 
 struct ParamSpec {
     std::string_view key;
@@ -46,11 +46,20 @@ struct ParamSpec {
     // Per-scene default overriding defaultValue (0 = none).
     unsigned overrideScenes = 0;
     double overrideValue = 0.0;
+    // A choice among names, "a|b|c": value k means the k-th name; text input may give the
+    // name instead of the number (e.g. contact=projection). Empty for plain numbers.
+    std::string_view choices = {};
 
     bool isShape() const { return group == ParamGroup::Shape; }
     double defaultFor(SceneKind kind) const;
     std::string rangeText() const;  // e.g. "[0, 1]" or "(0, 10]"
+    // The name of choice `value` ("" when there is none), and the index of a name (-1).
+    std::string choiceName(double value) const;
+    int choiceIndex(std::string_view name) const;
 };
+
+// Parses text for a parameter: a number, or for a choice parameter one of its names.
+std::optional<double> parseValue(const ParamSpec& spec, std::string_view text);
 
 std::span<const ParamSpec> parameterTable();
 const ParamSpec* findParam(std::string_view key);

@@ -100,6 +100,13 @@ static SceneFileResult parseSceneJson(const std::string& text) {
         const Json& params = root["parameters"];
         if (!params.is_object()) return failure("parameters: expected an object of key: number");
         for (auto it = params.begin(); it != params.end(); ++it) {
+            // A choice parameter may also be given by name ("contact": "projection").
+            const ParamSpec* spec = findParam(it.key());
+            if (it.value().is_string() && spec && !spec->choices.empty()) {
+                if (auto error = file.params.setFromText(it.key(), it.value().get<std::string>()))
+                    return failure("parameters." + *error);
+                continue;
+            }
             if (!it.value().is_number())
                 return failure("parameters." + it.key() + ": expected a number, got " + std::string(it.value().type_name()));
             if (auto error = file.params.set(it.key(), it.value().get<double>()))

@@ -4,13 +4,15 @@
 // A step is a fixed list of stages, in this order:
 //
 //   integrate   the integrator calls derivative() once per stage:
-//                 springs -> gas -> gravity, pointer -> a = F / m -> its stage sums
+//                 gravity, wall contact -> springs -> gas -> layer barrier -> pointer
+//                 -> a = F / m -> its stage sums   (contact = force: contact.h)
 //   scan        one pass: finiteness, extent, kinetic and gravity energy, fastest speed
-//   collide     box planes: project back, v_n -> -e v_n (energy removed is recorded)
+//   collide     contact = projection only (the thesis program): box planes, project back,
+//               v_n -> -e v_n (energy removed is recorded)
 //   measure     a force evaluation at the end state: energies, volumes, pressures, and
 //               the derivative the next step's first stage takes
-//   constrain   inner layer kept inside the outer one (normals: the outer layer's dV/dx
-//               from the measurement; a corrected state is measured again)
+//   constrain   contact = projection only: inner layer kept inside the outer one (normals:
+//               the outer layer's dV/dx from the measurement; a corrected state is measured again)
 //   check       non-finite, layer inside out, runaway velocity or energy -> failure
 //   diagnose    energies, balance
 //
@@ -23,6 +25,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -48,8 +51,10 @@ struct Diagnostics {
     double gravity = 0.0;                    // sum m g y [J]
     double gas = 0.0;                        // sum -c ln V [J]
     double pointer = 0.0;                    // mouse spring energy [J]
+    double contact = 0.0;                    // contact energy: walls + layer barrier (contact = force) [J]
     double removedDamping = 0.0;             // energy removed by spring and mouse damping [J]
-    double removedCollisions = 0.0;          // energy removed at walls and by the layer constraint [J]
+    double removedContact = 0.0;             // energy removed by contact dissipation and friction [J]
+    double removedCollisions = 0.0;          // energy removed by the projection (contact = projection) [J]
     double workPointer = 0.0;                // work done on the body by moving the pointer [J]
     double workEdits = 0.0;                  // energy changed by parameter edits during the run [J]
     double initialEnergy = 0.0;              // E_0 [J]
@@ -58,9 +63,9 @@ struct Diagnostics {
     std::uint64_t forceEvaluations = 0;
 
     double springTotal() const { return spring[0] + spring[1] + spring[2]; }
-    double potential() const { return springTotal() + gravity + gas + pointer; }
+    double potential() const { return springTotal() + gravity + gas + pointer + contact; }
     double total() const { return kinetic + potential(); }
-    double removed() const { return removedDamping + removedCollisions; }
+    double removed() const { return removedDamping + removedContact + removedCollisions; }
     // E_total + E_removed - W_pointer - W_edits - E_0: zero for exact integration.
     double energyDrift() const { return total() + removed() - workPointer - workEdits - initialEnergy; }
 };
@@ -163,6 +168,29 @@ public:
     // before a run.
     double estimatedFastestRate() const;
 
+    // Whether contact is the thesis program's projection after the step (contact = projection)
+    // rather than a force inside the ODE.
+    bool contactProjection() const { return m_contactProjection; }
+    // The contact's linearisation point for the stability estimates (a body at its start has
+    // no contact, and U'' = 3 k d^2 vanishes at d = 0): the particles nearest the floor (the
+    // wall gravity pulls towards: those within a tenth of the body's height of its lowest
+    // point), each at the deeper of two design depths: a particle that falls from its height
+    // onto the floor and stops in the contact alone (k d^4/4 = m v^2/2), and the body's weight
+    // shared by those particles at rest (k d^3 = W / count). Empty when contact is not a
+    // force, when nothing falls (no gravity) or when the body hangs from a fixed particle.
+    struct ContactDesign {
+        std::vector<int> particles;  // the free particles nearest the floor
+        int axis = 1;                // the floor's normal axis
+        double depth = 0.0;          // d* [m]
+        double stiffness = 0.0;      // -dF/dx = 3 k d*^2 [N/m]
+        double damping = 0.0;        // -dF/dv = k d*^3 alpha at ddot = 0 [N s/m]
+        double friction = 0.0;       // tangential -dF/dv = mu k d*^3 / eps [N s/m]
+    };
+    ContactDesign contactDesign() const;
+    // Whether odeSystem()'s Jacobians add the contact design point's stiffness (the stability
+    // estimates linearise at the start state, where nothing touches yet). Off for integration.
+    void setContactDesignInJacobians(bool on);
+
 private:
     class System;
     void build();
@@ -212,7 +240,7 @@ private:
     // measureByPasses.
     void measureState(Diagnostics& d, const Scan& scan);
     void fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
-                         const std::array<double, 2>& volume, const Scan& scan) const;
+                         const std::array<double, 2>& volume, double contact, const Scan& scan) const;
 
     ParameterSet m_params;
     int m_threads = hardwareThreads();
@@ -221,7 +249,7 @@ private:
     std::unique_ptr<Integrator> m_integrator;
     std::unique_ptr<System> m_system;
     mutable ForceModel m_forces;
-    Eigen::VectorXd m_y;          // [x | v | removed-by-damping]
+    Eigen::VectorXd m_y;          // [x | v | removed-by-damping | removed-by-contact]
     Eigen::VectorXd m_lastGood;   // state before the current step
     Eigen::VectorXd m_invMass3;   // 3N inverse masses, 0 on fixed particles and absent axes
     Diagnostics m_diag;
@@ -231,11 +259,13 @@ private:
     double m_box = 5.0;
     double m_restitution = 0.5;
     double m_friction = 0.0;
+    bool m_contactProjection = false;  // contact = projection (else a force in the ODE)
     double m_dt = 0.003;
     double m_hNext = 0.003;       // adaptive integrators: the step proposed by the last one [s]
     double m_hTaken = 0.003;      // the step being checked [s]
     IntegratorOptions m_integratorOptions;
     Eigen::VectorXd m_doubling;   // step doubling: the full-step result [x | v | aux]
+    static constexpr Eigen::Index kAux = 2;  // integrated: energy removed by damping, by contact
     double m_energyScale = 1.0;   // for runaway detection [J]
     // dy/dt at the end of the last step, evaluated to measure it; valid until anything but
     // the next step changes the state, the parameters or the pointer.

@@ -161,14 +161,14 @@ private slots:
         QCOMPARE(f.evaluations(Term::Pointer), std::uint64_t(0));  // nothing grabbed
         QCOMPARE(f.evaluations(Term::Springs), std::uint64_t(400));  // 4 RK4 stages x 100 steps
         QCOMPARE(f.evaluations(Term::Gravity), std::uint64_t(400));
-        QCOMPARE(f.evaluations(Term::Collisions), std::uint64_t(100));
+        QCOMPARE(f.evaluations(Term::Collisions), std::uint64_t(400));  // contact = force: every stage
         QVERIFY(!sim.diagnostics().hasGas);
 
         ParameterSet ring(SceneKind::Ring2d);
         Simulation sim2(ring, "midpoint");
         for (int i = 0; i < 10; ++i) QVERIFY(sim2.step());
         QCOMPARE(sim2.forces().evaluations(Term::Gas), std::uint64_t(20));
-        QCOMPARE(sim2.forces().evaluations(Term::LayerConstraint), std::uint64_t(10));
+        QCOMPARE(sim2.forces().evaluations(Term::LayerConstraint), std::uint64_t(20));  // the barrier, every stage
         sim2.grab(20, Eigen::Vector3d(3, 3, 0));
         QVERIFY(sim2.step());
         QCOMPARE(sim2.forces().evaluations(Term::Pointer), std::uint64_t(2));

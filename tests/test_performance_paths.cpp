@@ -135,7 +135,9 @@ private slots:
             p.set("stacks", 16);  // and an odd number of quads (checked below)
         }
         if (scene == "ring2d") p.set("particles", 3001);
-        p.set("perturb", 0.02);
+        // Below the fine ring's particle spacing (4 mm): a larger jitter crumples its outer
+        // layer, turning tangent planes around and pushing inner particles through the layer barrier.
+        p.set("perturb", scene == "ring2d" ? 0.002 : 0.02);
         p.set("gravity", 0.0);  // no floor contact: every step exercises only the forces
         p.set("dt", 5e-4);      // within the stability limit of the finest lat/long cells
         bool stepped = true;
@@ -215,7 +217,7 @@ private slots:
             QVERIFY(a == b);  // bit for bit
         }
         QVERIFY(a != sim.state());
-        QVERIFY(a[a.size() - 1] > 0.0);  // the damping account moved too
+        QVERIFY(a[a.size() - 2] > 0.0);  // the damping account moved too ([x | v | damping | contact])
     }
     void threadsGiveBitIdenticalTrajectories_data() {
         QTest::addColumn<QString>("integrator");

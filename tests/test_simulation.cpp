@@ -62,7 +62,8 @@ private slots:
         // A ring dropped on the floor while being dragged: every joule is accounted for. The
         // balance only carries RK4's error (small step) since wall and pointer changes are
         // measured exactly.
-        ParameterSet p = params(SceneKind::Ring2d, {{"dt", 0.0005}, {"restitution", 0.3}, {"friction", 0.2}});
+        // contact = projection (the thesis program); test_contact books the force model.
+        ParameterSet p = params(SceneKind::Ring2d, {{"dt", 0.0005}, {"restitution", 0.3}, {"friction", 0.2}, {"contact", 1.0}});
         Simulation sim(p, "rk4");
         const int grabbed = sim.nearestGrabbable(Eigen::Vector3d(0, 2, 0));
         QCOMPARE(sim.topology().layer[std::size_t(grabbed)], Layer::Outer);
@@ -88,7 +89,7 @@ private slots:
         // contact the normal velocity is -e * v_n.
         QFETCH(double, e);
         ParameterSet p = params(SceneKind::Spring1d, {{"ks", 0.0}, {"kd", 0.0}, {"gravity", 0.0}, {"fixed_end", 0.0},
-                                                      {"box", 1.0}, {"restitution", e}, {"dt", 0.001}});
+                                                      {"box", 1.0}, {"restitution", e}, {"dt", 0.001}, {"contact", 1.0}});
         Simulation sim(p, "euler");
         Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, 2);
         v(1, 1) = -1.0;
@@ -103,7 +104,7 @@ private slots:
         // A free particle at rest on the floor under gravity sinks g h^2 per step and is put
         // back: it must stay at rest (v = 0), not bounce at e g h every step.
         ParameterSet p = params(SceneKind::Spring1d, {{"ks", 0.0}, {"kd", 0.0}, {"fixed_end", 0.0},
-                                                      {"box", 1.0}, {"restitution", 1.0}, {"dt", 0.001}});
+                                                      {"box", 1.0}, {"restitution", 1.0}, {"dt", 0.001}, {"contact", 1.0}});
         Simulation sim(p, "rk4");
         const double floor = sim.boxCentre().y() - sim.boxHalfSize();
         Eigen::Matrix3Xd x = sim.positions();
@@ -116,7 +117,7 @@ private slots:
     void innerLayerStaysInside() {
         // Push every inner particle outward through the outer layer: after one step the layer
         // constraint has put each back on the inner side of its partner's tangent plane.
-        ParameterSet p = params(SceneKind::Ring2d, {{"gravity", 0.0}, {"box", 100.0}});
+        ParameterSet p = params(SceneKind::Ring2d, {{"gravity", 0.0}, {"box", 100.0}, {"contact", 1.0}});
         Simulation sim(p, "rk4");
         Eigen::Matrix3Xd x = sim.positions();
         const int n = sim.particleCount() / 2;
@@ -143,7 +144,7 @@ private slots:
         QFETCH(int, subdivisions);
         QFETCH(int, threads);
         const ParameterSet p = params(SceneKind::Sphere3d, {{"subdivisions", double(subdivisions)}, {"gravity", 0.0},
-                                                            {"box", 100.0}, {"dt", 0.0005}});
+                                                            {"box", 100.0}, {"dt", 0.0005}, {"contact", 1.0}});
         auto pushedOut = [&](Simulation& sim) {
             Eigen::Matrix3Xd x = sim.positions();
             Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, x.cols());

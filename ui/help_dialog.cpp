@@ -55,10 +55,14 @@ QString HelpDialog::html() {
         "<li><b>Gas</b>: each closed layer encloses gas with P = nRT / V, pushing outward on every edge "
         "(2D) or face (3D). V is the exact area or volume.</li>"
         "<li><b>Mouse spring</b> (MKS, MKD) from the pointer to the grabbed particle.</li>"
-        "<li><b>Collisions</b> with the box: a particle outside is put back and its normal speed reversed "
-        "and scaled by the restitution.</li></ul>"
-        "<p>The plots show the energy book: kinetic + spring + gravity + gas is the total; "
-        "what damping and collisions take out is 'removed'. For an exact integrator, total + removed − "
+        "<li><b>Contact</b> is a smooth force inside the equations of motion: a particle that sinks a "
+        "depth d into a wall is pushed back by k d³ (contact energy k d⁴/4), damped so that one hitting "
+        "at contact_speed rebounds with the restitution e, with smooth Coulomb friction, and a barrier of "
+        "the same kind keeps the inner layer inside the outer one. contact = projection restores the "
+        "thesis program instead, which puts a particle back and reverses its normal speed after each "
+        "step.</li></ul>"
+        "<p>The plots show the energy book: kinetic + spring + gravity + gas + contact is the total; "
+        "what damping and contact take out is 'removed'. For an exact integrator, total + removed − "
         "work by the mouse stays constant; the readout's <i>energy drift</i> is how far it is off.</p>");
     h += QObject::tr("<h3>Integrators</h3><table border=1 cellspacing=0 cellpadding=4>"
                      "<tr><th>name</th><th>order</th><th>what it does</th><th>in class</th></tr>");

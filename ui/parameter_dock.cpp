@@ -19,6 +19,7 @@ QString groupName(simcore::ParamGroup group) {
         case G::Gas: return QObject::tr("Gas");
         case G::Mass: return QObject::tr("Mass");
         case G::Environment: return QObject::tr("Environment");
+        case G::Contact: return QObject::tr("Contact");
         case G::Pointer: return QObject::tr("Mouse spring");
         case G::Time: return QObject::tr("Time");
         case G::Shape: return QObject::tr("Shape");
@@ -88,7 +89,7 @@ QLineEdit* ParameterForm::field(const QString& key) const {
 
 QString ParameterForm::validate(const simcore::ParamSpec& spec, const QString& text, double* value) {
     const std::string t = text.trimmed().toStdString();
-    const auto parsed = simcore::parseNumber(t);
+    const auto parsed = simcore::parseValue(spec, t);  // a number, or a choice's name
     if (!parsed)
         return QStringLiteral("%1: '%2' is not a number; allowed %3")
             .arg(toQString(spec.key), text, QString::fromStdString(spec.rangeText()));
@@ -154,8 +155,8 @@ void ParameterDock::showParameters(const simcore::ParameterSet& params) {
     if (!m_form || m_form->kind() != params.kind()) {
         delete m_form;
         using G = simcore::ParamGroup;
-        m_form = new ParameterForm(params.kind(), {G::Springs, G::Gas, G::Mass, G::Environment, G::Pointer,
-                                                   G::Time, G::Start},
+        m_form = new ParameterForm(params.kind(), {G::Springs, G::Gas, G::Mass, G::Environment, G::Contact,
+                                                   G::Pointer, G::Time, G::Start},
                                    m_host);
         m_layout->addWidget(m_form);
         connect(m_form, &ParameterForm::edited, this, &ParameterDock::parameterEdited);

@@ -27,8 +27,13 @@ std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
     energy.series.push_back({"energy", QObject::tr("spring"), QColor(30, 140, 60), [](const D& d) { return d.springTotal(); }});
     energy.series.push_back({"energy", QObject::tr("gravity"), QColor(120, 80, 30), [](const D& d) { return d.gravity; }});
     if (gas) energy.series.push_back({"energy", QObject::tr("gas"), QColor(40, 110, 210), [](const D& d) { return d.gas; }});
+    // Every scene has the box walls: the contact energy (walls + layer barrier, 0 with
+    // contact = projection) and what contact dissipation and friction removed.
+    energy.series.push_back({"energy", QObject::tr("contact"), QColor(0, 150, 150), [](const D& d) { return d.contact; }});
     energy.series.push_back({"energy", QObject::tr("total"), QColor(0, 0, 0), [](const D& d) { return d.total(); }});
     energy.series.push_back({"energy", QObject::tr("removed"), QColor(150, 60, 170), [](const D& d) { return d.removed(); }});
+    energy.series.push_back({"energy", QObject::tr("removed by contact"), QColor(210, 90, 170),
+                             [](const D& d) { return d.removedContact + d.removedCollisions; }});
     plots.push_back(std::move(energy));
     return plots;
 }

@@ -131,6 +131,9 @@ void RunDock::showFrame(const FramePtr& frame) {
     html += row(tr("step taken"), QStringLiteral("%1 s").arg(d.dt, 0, 'g', 3));
     html += row(tr("error estimate"),
                 d.errorEstimate >= 0 ? QStringLiteral("%1 m").arg(d.errorEstimate, 0, 'e', 2) : tr("off"));
+    html += row(tr("contact energy"), QStringLiteral("%1 J").arg(d.contact, 0, 'g', 4));
+    html += row(tr("removed by contact"),
+                QStringLiteral("%1 J").arg(d.removedContact + d.removedCollisions, 0, 'g', 4));
     html += row(tr("energy drift"), QStringLiteral("%1 J").arg(d.energyDrift(), 0, 'e', 2));
     for (std::size_t i = 1; i < frame->lanes.size(); ++i)
         html += row(tr("%1 vs %2").arg(frame->lanes[i].integrator, lane.integrator),

@@ -75,6 +75,7 @@ std::pair<int, int> parseShard(const Options& options);
 int commandRun(const std::vector<std::string>& args);
 int commandStudy(const std::vector<std::string>& args);
 int commandStability(const std::vector<std::string>& args);
+int commandRestitution(const std::vector<std::string>& args);
 int commandGallery(const std::vector<std::string>& args);
 int commandBench(const std::vector<std::string>& args);
 

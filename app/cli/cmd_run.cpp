@@ -21,9 +21,14 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
     std::printf("energy       kinetic %.6g J, spring %.6g J, gravity %.6g J", d.kinetic,
                 d.springTotal(), d.gravity);
     if (d.hasGas) std::printf(", gas %.6g J", d.gas);
+    if (!sim.contactProjection()) std::printf(", contact %.6g J", d.contact);
     std::printf(", total %.6g J\n", d.total());
-    std::printf("removed      damping %.6g J, collisions %.6g J; balance drift %.3g J\n",
-                d.removedDamping, d.removedCollisions, d.energyDrift());
+    if (sim.contactProjection())
+        std::printf("removed      damping %.6g J, collisions (projection) %.6g J; balance drift %.3g J\n",
+                    d.removedDamping, d.removedCollisions, d.energyDrift());
+    else
+        std::printf("removed      damping %.6g J, contact %.6g J; balance drift %.3g J\n", d.removedDamping,
+                    d.removedContact, d.energyDrift());
     if (d.hasGas)
         std::printf("layers       volume inner %.6g, outer %.6g; pressure inner %.6g, outer %.6g\n",
                     d.volume[0], d.volume[1], d.pressure[0], d.pressure[1]);

@@ -39,6 +39,9 @@ commands:
       [--shard K/N] [--perturb A]
                                   largest stable dt per integrator (bisection) beside the
                                   linearised prediction (highest frequency, damping, stability region)
+  restitution --scene S [--set key=value]... [--integrator NAME] [--speeds v1,v2,...] [--csv FILE]
+                                  rebound / impact speed of a free particle and of the body against
+                                  impact speed (weightless), beside the restitution e
   gallery [--run NAME|all] [--list]
                                   stiff and extreme presets with their expected outcome
 
@@ -60,6 +63,7 @@ int main(int argc, char** argv) {
         {"run", cli::commandRun},
         {"study", cli::commandStudy},
         {"stability", cli::commandStability},
+        {"restitution", cli::commandRestitution},
         {"gallery", cli::commandGallery},
         {"bench", cli::commandBench},
     };
