@@ -1,4 +1,5 @@
 #include "body.h"
+#include "scaling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -371,8 +372,8 @@ std::optional<std::string> validateShape(const ParameterSet& params) {
     return os.str();
 }
 
-Body buildBody(const ParameterSet& params) {
-    if (auto error = validateShape(params)) throw std::invalid_argument(*error);
+namespace {
+Body buildUnscaled(const ParameterSet& params) {
     switch (params.kind()) {
         case SceneKind::Spring1d:
             return buildSpring1d({params.get("length"), params.get("initial_length"),
@@ -392,6 +393,15 @@ Body buildBody(const ParameterSet& params) {
                                       params.get("mass_inner"), params.get("mass_outer"));
     }
     throw std::invalid_argument("unknown scene kind");
+}
+}  // namespace
+
+Body buildBody(const ParameterSet& params) {
+    if (auto error = validateShape(params)) throw std::invalid_argument(*error);
+    Body body = buildUnscaled(params);
+    // scaling=physical: each layer keeps its total mass when refined (scaling.h).
+    if (const double factor = bodyScale(params, body).mass; factor != 1.0) body.mass *= factor;
+    return body;
 }
 
 double enclosedVolume(const Surface& surface, const double* positions, int dimension) {

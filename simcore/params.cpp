@@ -14,13 +14,15 @@ namespace {
 constexpr std::array kTable = {
     //        key             unit     default  min    max     >min   int    scenes         group
     ParamSpec{"ks",           "N/m",   800.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Springs, "",
-              "structural spring stiffness (KS): resists stretching along each layer"},
+              "structural spring stiffness KS, per spring (scaling=physical: at the reference resolution; a 2D chain keeps "
+              "k L0, a 3D membrane keeps k)"},
     ParamSpec{"kd",           "N*s/m", 15.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Springs, "",
-              "structural spring damping (KD): damps stretching speed along each layer"},
+              "structural spring damping KD, per spring; scales like KS"},
     ParamSpec{"rks",          "N/m",   700.0,   0.0,   1e9,    false, false, kBitsLayered,  ParamGroup::Springs, "",
-              "radius and shear spring stiffness (RKS): holds the two layers apart and square"},
+              "radius and shear spring stiffness RKS, per spring (scaling=physical: at the reference resolution; "
+              "in parallel, k times count stays fixed)"},
     ParamSpec{"rkd",          "N*s/m", 50.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Springs, "",
-              "radius and shear spring damping (RKD)"},
+              "radius and shear spring damping RKD, per spring; scales like RKS"},
     ParamSpec{"pressure",     "J",     20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "",
               "gas constant nRT of each closed layer (PRESSURE): P = nRT / V"},
     ParamSpec{"pressure_inner","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "pressure",
@@ -28,11 +30,11 @@ constexpr std::array kTable = {
     ParamSpec{"pressure_outer","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "pressure",
               "nRT of the gas enclosed by the outer layer (defaults to pressure)"},
     ParamSpec{"mass",         "kg",    1.0,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Mass, "",
-              "mass of every particle (MASS)"},
+              "particle mass MASS (scaling=physical: at the reference resolution; each layer keeps its total)"},
     ParamSpec{"mass_inner",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, "mass",
-              "mass of each inner-layer particle (defaults to mass): real inertia, not scaled gravity"},
+              "inner-layer particle mass (defaults to mass; scaled like mass): real inertia, not scaled gravity"},
     ParamSpec{"mass_outer",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, "mass",
-              "mass of each outer-layer particle (defaults to mass)"},
+              "outer-layer particle mass (defaults to mass; scaled like mass)"},
     ParamSpec{"gravity",      "m/s^2", 9.81,    0.0,   1e4,    false, false, kBitsAll,      ParamGroup::Environment, "",
               "gravitational acceleration, pointing along -y"},
     ParamSpec{"box",          "m",     2.5,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Environment, "",
@@ -45,7 +47,8 @@ constexpr std::array kTable = {
               "coefficient of restitution e at the box walls: a particle hitting at contact_speed rebounds "
               "at e times its speed (projection: v_n becomes -e*v_n)"},
     ParamSpec{"contact_stiffness","N/m^3", 2e7, 0.0,   1e15,   true,  false, kBitsAll,      ParamGroup::Contact, "",
-              "k of the contact potential U = k d^4/4 at a wall (d: penetration) and of the layer barrier"},
+              "k of the contact potential U = k d^4/4 per particle at a wall (d: penetration) and of the layer "
+              "barrier (scaling=physical: at the reference resolution, scaled like mass)"},
     ParamSpec{"contact_speed","m/s",   3.0,     0.0,   1e4,    true,  false, kBitsAll,      ParamGroup::Contact, "",
               "impact speed at which the contact damping gives exactly the restitution e"},
     ParamSpec{"friction",     "",      0.0,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, "",
@@ -60,6 +63,11 @@ constexpr std::array kTable = {
               "rest length of the mouse spring"},
     ParamSpec{"dt",           "s",     0.003,   0.0,   1.0,    true,  false, kBitsAll,      ParamGroup::Time, "",
               "time step DT of fixed-step integrators (initial step of adaptive ones)"},
+    ParamSpec{"scaling",      "",      0.0,     0.0,   1.0,    false, true,  kBitsLayered,  ParamGroup::Shape, "",
+              "what mass, ks, kd, rks, rkd and contact_stiffness mean when the mesh is refined: 0 = physical (the "
+              "values hold at the scene's default resolution and the body keeps its totals and material constants), "
+              "1 = thesis (per particle and per spring at every resolution)",
+              0, 0.0, "physical|thesis"},
     ParamSpec{"particles",    "",      12.0,    3.0,   100000, false, true,  kBitRing2d,    ParamGroup::Shape, "",
               "particles per layer of the 2D ring"},
     ParamSpec{"subdivisions", "",      2.0,     0.0,   7.0,    false, true,  kBitSphere3d,  ParamGroup::Shape, "",

@@ -113,6 +113,10 @@ static SceneFileResult parseSceneJson(const std::string& text) {
                 return failure("parameters." + *error);
         }
     }
+    // Version 3 added `scaling` (scaling.h). Every earlier file lists per-particle and per-spring
+    // values and ran them as such: it loads as scaling=thesis, so it runs the body it saved.
+    if (version < 3 && !file.params.isExplicit("scaling") && (findParam("scaling")->scenes & sceneBit(file.params.kind())))
+        file.params.set("scaling", 1.0);
     if (auto error = validateShape(file.params)) return failure("parameters: " + *error);
     if (root.contains("state")) {
         const Json& state = root["state"];
@@ -173,7 +177,10 @@ std::string sceneFileText(const Simulation& sim, const std::string& sceneName, b
        << "  \"parameters\": {";
     bool first = true;
     for (const ParamSpec* spec : parametersFor(sim.parameters().kind())) {
-        os << (first ? "\n" : ",\n") << "    \"" << spec->key << "\": " << formatDouble(sim.parameters().get(spec->key));
+        const double value = sim.parameters().get(spec->key);
+        os << (first ? "\n" : ",\n") << "    \"" << spec->key << "\": ";
+        if (spec->choices.empty()) os << formatDouble(value);
+        else os << '"' << spec->choiceName(value) << '"';  // a choice by its name: "scaling": "physical"
         first = false;
     }
     os << "\n  }";

@@ -3,14 +3,16 @@
 // JSON, so that a paused experiment can be saved and resumed exactly.
 //
 //   {
-//     "format": "elastic-lab-scene", "version": 1,
+//     "format": "elastic-lab-scene", "version": 3,
 //     "scene": "ring2d", "integrator": "rk4",
-//     "parameters": { "ks": 800, "kd": 15, ... every key of the scene ... },
+//     "parameters": { "ks": 800, "kd": 15, "scaling": "physical", ... every key of the scene ... },
 //     "state": { "step": 410, "time": 1.23,                       (optional)
 //                "next_step": 0.0021,          (adaptive integrators: the step proposed next)
 //                "positions": [[x, y, z], ...], "velocities": [[vx, vy, vz], ...] }
 //
 // Version 2 added state.next_step (so an rk45 run resumes exactly); version 1 files load.
+// Version 3 added "scaling" (physical | thesis) and writes choices by name; a file of an
+// earlier version loads as scaling=thesis, the per-particle body it was saved with.
 //   }
 //
 // Reading validates everything through the parameter table: unknown keys (at any level),
@@ -28,7 +30,7 @@ namespace simcore {
 
 class Simulation;
 
-inline constexpr int kSceneFormatVersion = 2;
+inline constexpr int kSceneFormatVersion = 3;
 
 struct SceneFile {
     std::string sceneName;

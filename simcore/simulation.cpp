@@ -287,6 +287,7 @@ Eigen::Map<const Eigen::Matrix3Xd> Simulation::velocities() const {
 
 void Simulation::build() {
     m_body = buildBody(m_params);
+    m_scale = bodyScale(m_params, m_body);
     const Topology& topo = m_body.topology;
     const int count = topo.particleCount();
     m_n = 3 * count;
@@ -322,11 +323,16 @@ void Simulation::setThreads(int threads) {
 
 void Simulation::applyForceParams() {
     ForceParams& p = m_forces.params;
-    p.ks = {m_params.get("ks"), 0.0, 0.0};
-    p.kd = {m_params.get("kd"), 0.0, 0.0};
+    // The per-spring values this resolution uses (scaling.h; all factors 1 under scaling=thesis
+    // and at the reference resolution).
+    const auto& f = m_scale.spring;
+    p.ks = {m_params.get("ks") * f[0], 0.0, 0.0};
+    p.kd = {m_params.get("kd") * f[0], 0.0, 0.0};
     if (m_params.kind() != SceneKind::Spring1d) {
-        p.ks[1] = p.ks[2] = m_params.get("rks");
-        p.kd[1] = p.kd[2] = m_params.get("rkd");
+        p.ks[1] = m_params.get("rks") * f[1];
+        p.ks[2] = m_params.get("rks") * f[2];
+        p.kd[1] = m_params.get("rkd") * f[1];
+        p.kd[2] = m_params.get("rkd") * f[2];
         p.gasConstant = {m_params.get("pressure_inner"), m_params.get("pressure_outer")};
     }
     p.gravity = m_params.get("gravity");
@@ -342,7 +348,7 @@ void Simulation::applyForceParams() {
     m_contactProjection = m_params.get("contact") == 1.0;
     ContactParams& c = m_forces.contact;
     c.walls = c.layerBarrier = !m_contactProjection;
-    c.stiffness = m_params.get("contact_stiffness");
+    c.stiffness = m_params.get("contact_stiffness") * m_scale.contact;
     c.alpha = dampingForRestitution(m_restitution) / m_params.get("contact_speed");
     c.friction = m_friction;
     c.frictionSpeed = m_params.get("friction_speed");
@@ -804,9 +810,10 @@ std::optional<std::string> Simulation::setParameter(std::string_view key, double
         const Topology& topo = m_body.topology;
         for (int i = 0; i < topo.particleCount(); ++i) {
             const Layer l = topo.layer[static_cast<std::size_t>(i)];
-            const double m = l == Layer::Inner ? m_params.get("mass_inner")
-                             : l == Layer::Outer ? m_params.get("mass_outer")
-                                                 : m_params.get("mass");
+            const double m = (l == Layer::Inner   ? m_params.get("mass_inner")
+                              : l == Layer::Outer ? m_params.get("mass_outer")
+                                                  : m_params.get("mass")) *
+                             m_scale.mass;
             m_body.mass[i] = m;
             for (int axis = 0; axis < 3; ++axis)
                 if (m_invMass3[3 * i + axis] != 0.0) m_invMass3[3 * i + axis] = 1.0 / m;

@@ -31,6 +31,7 @@
 
 #include "body.h"
 #include "forces.h"
+#include "scaling.h"
 #include "integrators.h"
 #include "parallel.h"
 #include "params.h"
@@ -136,6 +137,8 @@ public:
 
     // --- state and structure ---
     const Body& body() const { return m_body; }
+    // The factors from the table's values to this resolution's (scaling.h; 1 under scaling=thesis).
+    const BodyScale& scale() const { return m_scale; }
     const Topology& topology() const { return m_body.topology; }
     int particleCount() const { return m_body.topology.particleCount(); }
     const Eigen::VectorXd& state() const { return m_y; }
@@ -257,6 +260,7 @@ private:
     std::optional<Failure> m_failure;
     Eigen::Vector3d m_boxCentre = Eigen::Vector3d::Zero();
     double m_box = 5.0;
+    BodyScale m_scale;
     double m_restitution = 0.5;
     double m_friction = 0.0;
     bool m_contactProjection = false;  // contact = projection (else a force in the ODE)

@@ -347,7 +347,19 @@ double convertibleEnergy(const Simulation& sim) {
     return energy;
 }
 
+double roundDownTwoDigits(double x) {
+    if (!(x > 0.0) || !std::isfinite(x)) return x;
+    const double scale = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
+    return std::floor(x / scale * (1.0 + 1e-12)) * scale;
+}
+
 std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {
+    auto advice = stabilityAdvice(sim);
+    if (!advice) return std::nullopt;
+    return std::move(advice->message);
+}
+
+std::optional<StabilityAdvice> stabilityAdvice(const Simulation& sim) {
     const Integrator& method = sim.integrator();
     if (method.implicit() || method.adaptive()) return std::nullopt;
     const std::string name(method.name());
@@ -363,11 +375,13 @@ std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {
             // Euler and Heun grow on undamped modes for every dt; say so only when it matters
             // (the growth rate ~ h w^2 / 2 per second is above 1/s).
             if (sim.dt() * modes.omegaMax * modes.omegaMax / 2.0 < 1.0) return std::nullopt;
+            const double suggested = roundDownTwoDigits(0.9 * 2.0 / (modes.omegaMax * modes.omegaMax));
             std::snprintf(text, sizeof text,
                           "%s has no stable step on this body's undamped modes (highest w = %.3g rad/s): its "
-                          "energy grows for every dt, here by ~%.2g per second; use a smaller dt or another method",
-                          name.c_str(), modes.omegaMax, sim.dt() * modes.omegaMax * modes.omegaMax / 2.0);
-            return std::string(text);
+                          "energy grows for every dt, here by ~%.2g per second; use dt <= %.2g s (growth below 1 "
+                          "per second) or another method",
+                          name.c_str(), modes.omegaMax, sim.dt() * modes.omegaMax * modes.omegaMax / 2.0, suggested);
+            return StabilityAdvice{text, suggested};
         }
         if (sim.dt() <= limit) return std::nullopt;
         std::snprintf(text, sizeof text,
@@ -375,7 +389,7 @@ std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {
                       "(highest mode w = %.3g rad/s with damping c = %.3g 1/s); it will likely blow up "
                       "(implicit-euler or rk45 will not)",
                       sim.dt(), name.c_str(), limit, modes.omegaMax, modes.dampingAtMax);
-        return std::string(text);
+        return StabilityAdvice{text, roundDownTwoDigits(0.9 * limit)};
     }
     // Large bodies: the per-particle rate estimate against the largest explicit reach.
     const double rate = sim.estimatedFastestRate();
@@ -384,7 +398,7 @@ std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {
                   "dt = %g s is above the estimated explicit stability limit ~%.3g s (fastest spring rate ~%.3g "
                   "1/s); an explicit integrator will likely blow up (implicit-euler or rk45 will not)",
                   sim.dt(), kExplicitStabilityLimit / rate, rate);
-    return std::string(text);
+    return StabilityAdvice{text, roundDownTwoDigits(0.9 * kExplicitStabilityLimit / rate)};
 }
 
 std::string stabilityCsvHeader() {

@@ -117,6 +117,16 @@ std::vector<std::string> shardNames(const std::vector<std::string>& names, int s
 inline constexpr int kWarningDenseLimit = 600;
 class Simulation;
 std::optional<std::string> preRunStabilityWarning(const Simulation& sim);
+// The same check with what to do about it: the warning and a step that the same estimate
+// predicts stable (0.9 of the limit, rounded down to two significant digits), for the GUI's
+// one-click offer and the CLI's advice. Nothing when the current dt is fine.
+struct StabilityAdvice {
+    std::string message;
+    double suggestedDt = 0.0;  // [s]
+};
+std::optional<StabilityAdvice> stabilityAdvice(const Simulation& sim);
+// x rounded down to two significant digits (0.000734 -> 0.00073).
+double roundDownTwoDigits(double x);
 
 // The energy a body can plausibly convert from its current state [J]: 1 J + its kinetic and
 // elastic energy + its weight falling the box height + each gas expanding 100-fold (c ln 100).

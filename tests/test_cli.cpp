@@ -208,6 +208,18 @@ private slots:
         QVERIFY(QFileInfo("/dev/full").exists() && !QFileInfo("/dev/full").isFile());
         QVERIFY(QDir("/dev").entryList({"full.tmp-*"}, QDir::AllEntries | QDir::System).isEmpty());
     }
+    void paramsSaysWhatTheBodyUses() {
+        // scaling=physical at subdivisions=4: 1,026 particles per layer carry the 66 kg of the
+        // default layer (66 / 1026 = 0.0643275 kg each); the membrane keeps 800 N/m.
+        const Result r = cli({"params", "--scene", "sphere3d", "--set", "subdivisions=4"});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.out.contains("scaling=physical, subdivisions=4 (1026 particles per layer; reference 66)"), qPrintable(r.out));
+        QVERIFY2(r.out.contains("per particle: inner 0.0643275 kg, outer 0.0643275 kg (layers 66 kg and 66 kg)"), qPrintable(r.out));
+        QVERIFY2(r.out.contains("structural 800 N/m"), qPrintable(r.out));
+        const Result t = cli({"params", "--scene", "sphere3d", "--set", "subdivisions=4", "--set", "scaling=thesis"});
+        QVERIFY2(t.out.contains("per particle: inner 1 kg, outer 1 kg (layers 1026 kg and 1026 kg)"), qPrintable(t.out));
+        QCOMPARE(cli({"params", "--set", "subdivisions=4"}).code, 2);  // --set needs a scene
+    }
     void killedRunLeavesExistingFilesAndNothingElse() {
         // A run killed outright (SIGKILL: no handler, no destructor runs) while it streams its
         // CSV and state: the files that were there keep their bytes and nothing else appears
@@ -220,7 +232,7 @@ private slots:
             f.write("precious " + name.toUtf8() + "\n");
         }
         QProcess p;
-        p.start(ELASTIC_LAB_CLI, {"run", "--scene", "sphere3d", "--set", "subdivisions=4", "--set", "gravity=0",
+        p.start(ELASTIC_LAB_CLI, {"run", "--scene", "sphere3d", "--set", "subdivisions=4", "--set", "scaling=thesis", "--set", "gravity=0",
                                   "--duration", "100000", "--csv", csv, "--state", state});
         QVERIFY(p.waitForStarted(testsupport::kHangGuardMs));
         // Killed while it streams: once its unnamed CSV file in the folder holds rows.

@@ -14,18 +14,13 @@
 #include "stability.h"
 #include "study.h"
 
+#include "sim_test_support.h"
+
 using namespace simcore;
 
 namespace {
 
-ParameterSet params(SceneKind kind, std::initializer_list<std::pair<const char*, double>> values) {
-    ParameterSet p(kind);
-    for (auto [key, value] : values) {
-        const auto error = p.set(key, value);
-        if (error) qFatal("%s", error->c_str());
-    }
-    return p;
-}
+using testsupport::params;
 
 // A state in contact everywhere contact can act: the body moved down so that its lowest
 // particles are `depth` below the floor, and every other inner particle pushed outward past
@@ -295,7 +290,7 @@ private slots:
         // A sphere large enough to be split in two chunks, on the floor and with inner
         // particles pushed through the outer layer (barrier pairs in the chunks and in the
         // shared part): 1 and 2 threads and the end-of-step reuse give the same bits.
-        const ParameterSet p = params(SceneKind::Sphere3d, {{"subdivisions", 5.0}, {"dt", 0.0005}, {"friction", 0.3}});
+        const ParameterSet p = params(SceneKind::Sphere3d, {{"scaling", 1.0}, {"subdivisions", 5.0}, {"dt", 0.0005}, {"friction", 0.3}});
         Simulation a(p, "rk4"), b(p, "rk4"), c(p, "rk4");
         QCOMPARE(a.forces().chunks(), 2);
         const Eigen::Matrix3Xd x = inContact(a, 0.05);

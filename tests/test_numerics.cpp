@@ -12,16 +12,13 @@
 #include "stability.h"
 #include "study.h"
 
+#include "sim_test_support.h"
+
 using namespace simcore;
 
 namespace {
 
-ParameterSet params(SceneKind kind, std::initializer_list<std::pair<const char*, double>> values) {
-    ParameterSet p(kind);
-    for (auto [key, value] : values)
-        if (const auto error = p.set(key, value)) qFatal("%s", error->c_str());
-    return p;
-}
+using testsupport::params;
 
 // Two free 1 kg masses on a 800 N/m spring, no damping, no gravity, walls far away:
 // one mode, w = sqrt(k (1/m1 + 1/m2)) = 40 rad/s (MODEL.md). Stretched by 1% only, so that

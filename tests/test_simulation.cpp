@@ -6,18 +6,13 @@
 
 #include "simulation.h"
 
+#include "sim_test_support.h"
+
 using namespace simcore;
 
 namespace {
 
-ParameterSet params(SceneKind kind, std::initializer_list<std::pair<const char*, double>> values) {
-    ParameterSet p(kind);
-    for (auto [key, value] : values) {
-        const auto error = p.set(key, value);
-        if (error) qFatal("%s", error->c_str());
-    }
-    return p;
-}
+using testsupport::params;
 
 long residentPages() {
     QFile statm("/proc/self/statm");

@@ -6,6 +6,7 @@
 
 #include "cli.h"
 #include "force_kernels.h"
+#include "params.h"
 #include "simulation.h"
 
 namespace cli {
@@ -25,6 +26,10 @@ int commandBench(const std::vector<std::string>& args) {
     names.insert(names.end(), {"steps", "threads", "warmup", "kernels"});
     Options options(args, names, {"header"});
     SceneSetup setup = sceneSetup(options);
+    // The benchmarks time the thesis's per-particle body at every size (docs/performance.md),
+    // so that their figures stay comparable; --set scaling=physical times the physical one.
+    if (simcore::findParam("scaling")->scenes & simcore::sceneBit(setup.params.kind()))
+        if (!setup.params.isExplicit("scaling")) setup.params.set("scaling", 1.0);
     const long steps = options.integer("steps", 200, 1, 100000000L);
     const long warmup = options.integer("warmup", 10, 0, 1000000L);
     const long threads = options.integer("threads", simcore::hardwareThreads(), 1, 256);

@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "integrators.h"
+#include "scaling.h"
 #include "scenes.h"
 
 namespace cli {
@@ -24,7 +25,8 @@ int commandIntegrators(const std::vector<std::string>& args) {
 }
 
 int commandParams(const std::vector<std::string>& args) {
-    Options options(args, {"scene"});
+    Options options(args, {"scene", "set"});
+    if (options.has("set") && !options.has("scene")) throw UsageError("params: --set needs --scene");
     std::vector<const simcore::ParamSpec*> specs;
     std::optional<simcore::SceneKind> kind;
     if (options.has("scene")) {
@@ -56,6 +58,15 @@ int commandParams(const std::vector<std::string>& args) {
         std::printf("%-15s %-7s %-12s %-22s %s\n", std::string(s->key).c_str(),
                     s->unit.empty() ? "-" : std::string(s->unit).c_str(), def.c_str(),
                     s->rangeText().c_str(), meaning.c_str());
+    }
+    if (kind) {
+        // What these values mean for this body: the per-particle and per-spring values it uses
+        // at its resolution under its scaling (scaling.h), after any --set.
+        simcore::ParameterSet params(*kind);
+        for (const std::string& assignment : options.all("set"))
+            if (auto error = params.assign(assignment)) throw UsageError("--set " + *error);
+        if (auto error = simcore::validateShape(params)) throw UsageError(*error);
+        std::printf("\nthis body uses:\n%s\n", simcore::bodyValuesText(params, simcore::bodyValues(params)).c_str());
     }
     return kExitOk;
 }

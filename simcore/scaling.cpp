@@ -1,0 +1,176 @@
+#include "scaling.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace simcore {
+
+namespace {
+
+// The keys that set a scene's resolution (its Shape keys other than the radii).
+constexpr std::array<const char*, 3> kResolutionKeys = {"particles", "subdivisions", "slices"};
+
+bool hasKey(const ParameterSet& params, std::string_view key) {
+    const ParamSpec* spec = findParam(key);
+    return spec && (spec->scenes & sceneBit(params.kind()));
+}
+
+bool isResolutionKey(std::string_view key) {
+    for (const char* k : kResolutionKeys)
+        if (key == k) return true;
+    return key == "stacks";
+}
+
+double meanRest(const SpringSet& springs) {
+    double sum = 0.0;
+    for (double r : springs.rest) sum += r;
+    return springs.size() ? sum / static_cast<double>(springs.size()) : 0.0;
+}
+
+// Sums of cos^2 and sin^2 of the angle between each spring of a family (at rest) and the
+// radial direction at its midpoint (from the body's centre): how much of its stiffness acts
+// across the layers (radial) and along them (tangential, i.e. in shear).
+struct Orientation {
+    double radial = 0.0, tangential = 0.0;
+};
+Orientation orientation(const Body& body, SpringFamily family) {
+    const SpringSet& s = body.topology.family(family);
+    const Eigen::Vector3d centre = body.positions.rowwise().mean();
+    Orientation o;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        const Eigen::Vector3d a = body.positions.col(s.a[k]), b = body.positions.col(s.b[k]);
+        const Eigen::Vector3d d = (b - a).normalized(), r = (0.5 * (a + b) - centre).normalized();
+        const double c = d.dot(r);
+        o.radial += c * c;
+        o.tangential += 1.0 - c * c;
+    }
+    return o;
+}
+
+int particlesPerLayer(const Topology& topology) {
+    return topology.dimension == 1 ? topology.particleCount() : topology.particleCount() / 2;
+}
+
+}  // namespace
+
+Scaling scalingOf(const ParameterSet& params) {
+    if (!hasKey(params, "scaling")) return Scaling::Thesis;
+    return params.get("scaling") == 1.0 ? Scaling::Thesis : Scaling::Physical;
+}
+
+ParameterSet referenceShape(const ParameterSet& params) {
+    ParameterSet reference = params;
+    for (const ParamSpec* spec : parametersFor(params.kind()))
+        if (isResolutionKey(spec->key)) reference.clear(spec->key);
+    return reference;
+}
+
+std::string resolutionText(const ParameterSet& params) {
+    std::string text;
+    for (const ParamSpec* spec : parametersFor(params.kind())) {
+        if (!isResolutionKey(spec->key)) continue;
+        if (!text.empty()) text += ", ";
+        text += std::string(spec->key) + "=" + std::to_string(params.getInt(spec->key));
+    }
+    return text;
+}
+
+BodyScale bodyScale(const ParameterSet& params, const Body& body) {
+    BodyScale scale;
+    if (scalingOf(params) == Scaling::Thesis) return scale;
+    // At the reference resolution every factor is 1 by definition (no arithmetic at all).
+    bool atReference = true;
+    for (const ParamSpec* spec : parametersFor(params.kind()))
+        if (isResolutionKey(spec->key) && params.get(spec->key) != spec->defaultFor(params.kind()))
+            atReference = false;
+    if (atReference) return scale;
+
+    ParameterSet referenceParams = referenceShape(params);
+    referenceParams.set("scaling", 1.0);  // the reference body's own values are unscaled
+    const Body reference = buildBody(referenceParams);
+    const Topology& topology = body.topology;
+
+    const double n = particlesPerLayer(topology), nRef = particlesPerLayer(reference.topology);
+    scale.mass = nRef / n;
+    scale.contact = nRef / n;
+    const auto structural = static_cast<std::size_t>(SpringFamily::Structural);
+    if (topology.dimension == 2) {
+        // A chain: EA = k L0 is the ring's material constant.
+        scale.spring[structural] =
+            meanRest(reference.topology.springs[structural]) / meanRest(topology.springs[structural]);
+    }  // 3D: a membrane's k per spring does not change with uniform refinement.
+    // Between the layers each family keeps the stiffness it is there for: the radius springs
+    // their radial stiffness sum k cos^2 (= k * count: they are radial), the shear springs
+    // their tangential stiffness sum k sin^2, which carries the inner layer's weight on the
+    // body's sides and couples the layers in bending. A shear spring spans one mesh cell
+    // across the fixed thickness t, so it turns radial as the cell shrinks (sin^2 ~ h^2 / t^2):
+    // kept in shear, it stiffens the radial direction (docs/numerics.md, "Resolution").
+    const auto radius = static_cast<std::size_t>(SpringFamily::Radius);
+    const auto shear = static_cast<std::size_t>(SpringFamily::Shear);
+    if (topology.springs[radius].size())
+        scale.spring[radius] = orientation(reference, SpringFamily::Radius).radial /
+                               orientation(body, SpringFamily::Radius).radial;
+    if (topology.springs[shear].size())
+        scale.spring[shear] = orientation(reference, SpringFamily::Shear).tangential /
+                              orientation(body, SpringFamily::Shear).tangential;
+    return scale;
+}
+
+BodyValues bodyValues(const ParameterSet& params, const Body& body) {
+    const Topology& topology = body.topology;
+    BodyValues v;
+    v.scale = bodyScale(params, body);
+    v.particlesPerLayer = particlesPerLayer(topology);
+    if (hasKey(params, "scaling")) {
+        ParameterSet reference = referenceShape(params);
+        const Topology& ref = v.particlesPerLayer && reference == params ? topology
+                                                                          : buildBody(reference).topology;
+        v.referenceParticlesPerLayer = particlesPerLayer(ref);
+    } else {
+        v.referenceParticlesPerLayer = v.particlesPerLayer;
+    }
+    const bool layered = topology.dimension > 1;
+    v.massInner = (layered ? params.get("mass_inner") : params.get("mass")) * v.scale.mass;
+    v.massOuter = (layered ? params.get("mass_outer") : params.get("mass")) * v.scale.mass;
+    v.layerMassInner = layered ? v.massInner * v.particlesPerLayer : 0.0;
+    v.layerMassOuter = v.massOuter * v.particlesPerLayer;
+    for (int f = 0; f < kSpringFamilyCount; ++f) {
+        const auto k = static_cast<std::size_t>(f);
+        const bool structural = f == static_cast<int>(SpringFamily::Structural);
+        v.ks[k] = (structural ? params.get("ks") : layered ? params.get("rks") : 0.0) * v.scale.spring[k];
+        v.kd[k] = (structural ? params.get("kd") : layered ? params.get("rkd") : 0.0) * v.scale.spring[k];
+        v.springs[k] = static_cast<int>(topology.springs[k].size());
+    }
+    v.contactStiffness = params.get("contact_stiffness") * v.scale.contact;
+    return v;
+}
+
+BodyValues bodyValues(const ParameterSet& params) { return bodyValues(params, buildBody(params)); }
+
+std::string bodyValuesText(const ParameterSet& params, const BodyValues& v) {
+    char line[400];
+    std::ostringstream os;
+    const bool layered = params.kind() != SceneKind::Spring1d;
+    if (!layered) {
+        std::snprintf(line, sizeof line, "per particle %.6g kg; spring %.6g N/m, %.6g N*s/m", v.massOuter,
+                      v.ks[0], v.kd[0]);
+        return line;
+    }
+    const bool physical = scalingOf(params) == Scaling::Physical;
+    std::snprintf(line, sizeof line, "scaling=%s, %s (%d particles per layer; reference %d).\n",
+                  physical ? "physical" : "thesis", resolutionText(params).c_str(), v.particlesPerLayer,
+                  v.referenceParticlesPerLayer);
+    os << line;
+    std::snprintf(line, sizeof line,
+                  "per particle: inner %.6g kg, outer %.6g kg (layers %.6g kg and %.6g kg); contact %.6g N/m^3.\n",
+                  v.massInner, v.massOuter, v.layerMassInner, v.layerMassOuter, v.contactStiffness);
+    os << line;
+    std::snprintf(line, sizeof line,
+                  "per spring: structural %.6g N/m, %.6g N*s/m (%d); radius %.6g N/m, %.6g N*s/m (%d); "
+                  "shear %.6g N/m, %.6g N*s/m (%d).",
+                  v.ks[0], v.kd[0], v.springs[0], v.ks[1], v.kd[1], v.springs[1], v.ks[2], v.kd[2], v.springs[2]);
+    os << line;
+    return os.str();
+}
+
+}  // namespace simcore
