@@ -17,6 +17,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
@@ -35,6 +36,8 @@
 #include "main_window.h"
 #include "parameter_dock.h"
 #include "scenefile.h"
+#include "scene_dock.h"
+#include "stability.h"
 #include "plot_dock.h"
 #include "presets.h"
 #include "recent_files.h"
@@ -369,6 +372,33 @@ private slots:
         QVERIFY(window.recentFiles().paths().isEmpty());
     }
 
+    void refinedSceneOffersAStableDtInOneClick() {
+        // A finer mesh has faster modes (issue 12): rebuilt at 96 particles the ring is unstable
+        // at the default DT with rk4. The window says so before anything runs, shows what the
+        // body uses per particle, and one click sets the predicted stable DT, which runs.
+        simcore::ParameterSet p(simcore::SceneKind::Ring2d);
+        p.set("particles", 96);
+        simcore::Simulation probe(p, "rk4");
+        const auto advice = simcore::stabilityAdvice(probe);
+        QVERIFY(advice);
+        MainWindow window(false);
+        SimulationController* c = window.controller();
+        window.startScene(p, {"rk4"});
+        QVERIFY(waitUntil([&] { return !window.stabilityText().isEmpty(); }));
+        QVERIFY(window.stabilityText().contains("dt = 0.003 s is above"));
+        QVERIFY2(window.sceneDock()->bodyValuesText().contains("96 particles per layer; reference 12"),
+                 qPrintable(window.sceneDock()->bodyValuesText()));
+        auto* scaling = window.sceneDock()->findChild<QComboBox*>("param_scaling");
+        QVERIFY(scaling);
+        QCOMPARE(scaling->currentText(), QString("physical"));
+        QVERIFY(window.useSuggestedDtButton()->text().contains(QString::number(advice->suggestedDt)));
+        window.useSuggestedDtButton()->click();
+        QVERIFY(waitUntil([&] { return c->parameters().get("dt") == advice->suggestedDt; }));
+        QVERIFY(window.stabilityText().isEmpty());
+        c->run();
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.lanes.front().diagnostics.time > 0.3; }));
+        QVERIFY(!c->latest()->lanes.front().failure);
+    }
     void openShowsTheFileInTheDocksAndTitle() {
         QTemporaryDir dir;
         const QString path = dir.filePath("squashed.json");

@@ -1,5 +1,6 @@
 // The parameter and scene docks against simcore's parameter table: every key, unit, range and
 // default; edits validated by the same table; values round-trip.
+#include <QComboBox>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
@@ -38,6 +39,16 @@ private slots:
         QCOMPARE(dock.form()->keys(), expected);
         for (const simcore::ParamSpec* spec : simcore::parametersFor(kind)) {
             if (spec->isShape()) continue;
+            if (!spec->choices.empty()) {
+                // A choice is a combo box of the table's names, showing the default.
+                QComboBox* box = dock.form()->choice(toQString(spec->key));
+                QVERIFY(box);
+                QVERIFY(!dock.form()->field(toQString(spec->key)));
+                QCOMPARE(box->currentIndex(), int(simcore::ParameterSet(kind).get(spec->key)));
+                QCOMPARE(box->itemText(1), QString::fromStdString(spec->choiceName(1)));
+                QVERIFY(box->toolTip().contains(toQString(spec->meaning).toHtmlEscaped()));
+                continue;
+            }
             QLineEdit* edit = dock.form()->field(toQString(spec->key));
             QVERIFY(edit);
             QCOMPARE(edit->text().toDouble(), simcore::ParameterSet(kind).get(spec->key));

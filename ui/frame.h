@@ -36,6 +36,13 @@ struct SceneData {
     Eigen::Vector3d boxCentre = Eigen::Vector3d::Zero();
     double boxHalfSize = 2.5;             // [m]
     double bodyRadius = 2.0;              // [m] rough size of the body, for the camera
+    // What the table's values mean for this body: per-particle and per-spring values at its
+    // resolution under its scaling (simcore::bodyValuesText).
+    QString bodyValues;
+    // The pre-run check of lane 0's explicit method at the current DT (simcore::stabilityAdvice):
+    // the warning and a step predicted stable; empty / 0 when DT is fine.
+    QString stabilityWarning;
+    double suggestedDt = 0.0;             // [s]
 };
 
 enum class Speed { RealTime, Quarter, Tenth, AsFastAsPossible };

@@ -222,6 +222,37 @@ void MainWindow::createCentral() {
     m_banner->hide();
     layout->addWidget(m_banner);
 
+    m_stabilityBanner = new QFrame(central);
+    m_stabilityBanner->setObjectName(QStringLiteral("stabilityBanner"));
+    m_stabilityBanner->setStyleSheet(
+        QStringLiteral("#stabilityBanner { background: #fdf0d5; border-bottom: 2px solid #d68910; }"));
+    auto* stabilityLayout = new QHBoxLayout(m_stabilityBanner);
+    m_stabilityText = new QLabel(m_stabilityBanner);
+    m_stabilityText->setWordWrap(true);
+    m_stabilityText->setTextFormat(Qt::RichText);
+    stabilityLayout->addWidget(m_stabilityText, 1);
+    m_useSuggestedDt = new QPushButton(m_stabilityBanner);
+    m_useSuggestedDt->setObjectName(QStringLiteral("useSuggestedDt"));
+    connect(m_useSuggestedDt, &QPushButton::clicked, this, [this] {
+        m_controller->setParameter(QStringLiteral("dt"), m_suggestedDt);
+        m_stabilityBanner->hide();
+        status(tr("DT set to %1 s").arg(m_suggestedDt));
+    });
+    auto* stableImplicit = new QPushButton(tr("Use implicit-euler"), m_stabilityBanner);
+    stableImplicit->setToolTip(tr("Linearised backward Euler: stable at any DT (and damps more)"));
+    connect(stableImplicit, &QPushButton::clicked, this, [this] {
+        m_controller->setIntegrator(QStringLiteral("implicit-euler"));
+        m_stabilityBanner->hide();
+    });
+    auto* dismiss = new QPushButton(tr("Keep DT"), m_stabilityBanner);
+    dismiss->setToolTip(tr("Run with this DT anyway (to watch the method fail, for example)"));
+    connect(dismiss, &QPushButton::clicked, m_stabilityBanner, &QWidget::hide);
+    stabilityLayout->addWidget(m_useSuggestedDt);
+    stabilityLayout->addWidget(stableImplicit);
+    stabilityLayout->addWidget(dismiss);
+    m_stabilityBanner->hide();
+    layout->addWidget(m_stabilityBanner);
+
     m_viewRow = new QHBoxLayout;
     m_viewRow->setSpacing(2);
     layout->addLayout(m_viewRow, 1);
@@ -303,6 +334,11 @@ void MainWindow::connectController() {
         status(tr("Cannot build that body: %1").arg(message));
     });
     connect(c, &SimulationController::sceneChanged, this, &MainWindow::adoptOpenedFile);
+    connect(c, &SimulationController::sceneChanged, this,
+            [this](const std::shared_ptr<const SceneData>& scene) {
+                showStabilityAdvice(*scene);
+                m_sceneDock->showBodyValues(scene->bodyValues);
+            });
 
     connect(m_parameterDock, &ParameterDock::parameterEdited, c, &SimulationController::setParameter);
     connect(m_parameterDock, &ParameterDock::parameterRejected, this,
@@ -444,6 +480,24 @@ void MainWindow::showFailure(const FramePtr& frame) {
 }
 
 QString MainWindow::failureText() const { return m_banner->isVisible() ? m_bannerText->text() : QString(); }
+
+QString MainWindow::stabilityText() const {
+    return m_stabilityBanner->isHidden() ? QString() : m_stabilityText->text();
+}
+
+void MainWindow::showStabilityAdvice(const SceneData& scene) {
+    m_suggestedDt = scene.suggestedDt;
+    if (scene.suggestedDt <= 0.0) {
+        m_stabilityBanner->hide();
+        return;
+    }
+    // Said before the run goes on (the worker has paused it): a finer mesh has faster modes,
+    // so an explicit method needs a smaller DT (docs/numerics.md, "Resolution").
+    m_stabilityText->setText(tr("<b>This body is likely unstable at the current DT.</b> %1. The run is paused.")
+                                 .arg(scene.stabilityWarning.toHtmlEscaped()));
+    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(scene.suggestedDt));
+    m_stabilityBanner->show();
+}
 
 void MainWindow::status(const QString& text) { statusBar()->showMessage(text, 12000); }
 

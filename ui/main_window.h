@@ -15,6 +15,7 @@
 class QAction;
 class QHBoxLayout;
 class QLabel;
+class QPushButton;
 class QFrame;
 class QMenu;
 
@@ -44,6 +45,10 @@ public:
     const ViewOptions& viewOptions() const { return m_options; }
     void setViewOptions(const ViewOptions& options);
     QString failureText() const;
+    // The pre-run stability warning after a rebuild (empty when none is shown), and its
+    // one-click remedy: the button that sets the suggested DT.
+    QString stabilityText() const;
+    QPushButton* useSuggestedDtButton() const { return m_useSuggestedDt; }
     // The scene file the window is about (empty: none yet), and the recent-files list.
     QString currentFile() const { return m_currentFile; }
     const RecentFiles& recentFiles() const { return m_recent; }
@@ -108,6 +113,12 @@ private:
     // Central area: failure banner above a row of one to three viewports.
     QFrame* m_banner = nullptr;
     QLabel* m_bannerText = nullptr;
+    // Stability banner: a rebuild made DT unstable for the chosen explicit method.
+    QFrame* m_stabilityBanner = nullptr;
+    QLabel* m_stabilityText = nullptr;
+    QPushButton* m_useSuggestedDt = nullptr;
+    double m_suggestedDt = 0.0;
+    void showStabilityAdvice(const SceneData& scene);
     QHBoxLayout* m_viewRow = nullptr;
     QWidget* m_noGl = nullptr;
     std::vector<Viewport*> m_viewports;

@@ -1,5 +1,6 @@
 #include "parameter_dock.h"
 
+#include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -47,6 +48,27 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
         }
         const QString key = toQString(spec->key);
         const QString unit = toQString(spec->unit);
+        if (!spec->choices.empty()) {
+            // A choice: its names, in the table's order (index = the parameter's value).
+            auto* box = new QComboBox(this);
+            box->setObjectName(QStringLiteral("param_") + key);
+            for (int k = 0; !spec->choiceName(k).empty(); ++k) box->addItem(QString::fromStdString(spec->choiceName(k)));
+            const QString tip = QStringLiteral("<b>%1</b><br>%2<br>default: %3")
+                                    .arg(key, toQString(spec->meaning).toHtmlEscaped(),
+                                         QString::fromStdString(spec->choiceName(spec->defaultFor(kind))));
+            box->setToolTip(tip);
+            auto* label = new QLabel(key, this);
+            label->setToolTip(tip);
+            form->addRow(label, box);
+            m_choices[key] = box;
+            connect(box, &QComboBox::activated, this, [this, key](int index) {
+                if (m_updating) return;
+                if (m_shown.count(key) && m_shown[key] == index) return;
+                m_shown[key] = index;
+                emit edited(key, index);
+            });
+            continue;
+        }
         auto* edit = new QLineEdit(this);
         edit->setObjectName(QStringLiteral("param_") + key);
         const QString tip = QStringLiteral("<b>%1</b>%2<br>%3<br>allowed: %4<br>default: %5")
@@ -77,9 +99,14 @@ QStringList ParameterForm::keys() const {
     QStringList out;
     for (const simcore::ParamSpec* spec : simcore::parametersFor(m_kind)) {
         const QString key = toQString(spec->key);
-        if (m_fields.count(key)) out << key;
+        if (m_fields.count(key) || m_choices.count(key)) out << key;
     }
     return out;
+}
+
+QComboBox* ParameterForm::choice(const QString& key) const {
+    auto it = m_choices.find(key);
+    return it == m_choices.end() ? nullptr : it->second;
 }
 
 QLineEdit* ParameterForm::field(const QString& key) const {
@@ -105,6 +132,7 @@ simcore::ParameterSet ParameterForm::values() const {
         double v = 0.0;
         if (spec && validate(*spec, edit->text(), &v).isEmpty()) out.set(key.toStdString(), v);
     }
+    for (const auto& [key, box] : m_choices) out.set(key.toStdString(), box->currentIndex());
     return out;
 }
 
@@ -116,6 +144,11 @@ void ParameterForm::setValues(const simcore::ParameterSet& params) {
         if (!edit->hasFocus() || edit->text().isEmpty()) edit->setText(formatValue(v));
         edit->setStyleSheet(QString());
         edit->setToolTip(edit->property("tip").toString());
+    }
+    for (auto& [key, box] : m_choices) {
+        const double v = params.get(key.toStdString());
+        m_shown[key] = v;
+        box->setCurrentIndex(static_cast<int>(v));
     }
     m_updating = false;
 }

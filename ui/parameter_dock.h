@@ -1,7 +1,8 @@
 #pragma once
 // ParameterForm and ParameterDock: fields generated from simcore::parameterTable().
 //
-// One field per key of the current scene: its unit, its range and meaning in the tooltip,
+// One field per key of the current scene (a combo box for a choice such as contact or
+// scaling, whose names come from the table): its unit, its range and meaning in the tooltip,
 // validated by the same table the CLI uses (simcore::validateValue). Widget -> model: a valid
 // edit emits edited(key, value); model -> widget: setValues() refreshes the fields under a
 // guard, so showing a value never echoes back as an edit.
@@ -14,6 +15,7 @@
 
 #include "params.h"
 
+class QComboBox;
 class QLineEdit;
 class QVBoxLayout;
 
@@ -28,7 +30,8 @@ public:
 
     simcore::SceneKind kind() const { return m_kind; }
     QStringList keys() const;
-    QLineEdit* field(const QString& key) const;
+    QLineEdit* field(const QString& key) const;    // a number's field (nullptr for a choice)
+    QComboBox* choice(const QString& key) const;   // a choice's box, e.g. contact, scaling
     // The values shown, as a parameter set of this form's scene (only keys of this form).
     simcore::ParameterSet values() const;
     void setValues(const simcore::ParameterSet& params);
@@ -44,6 +47,7 @@ private:
 
     simcore::SceneKind m_kind;
     std::map<QString, QLineEdit*> m_fields;
+    std::map<QString, QComboBox*> m_choices;
     std::map<QString, double> m_shown;  // value last shown or accepted per key
     bool m_updating = false;
 };

@@ -29,6 +29,14 @@ SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     rebuild->setObjectName(QStringLiteral("rebuildButton"));
     rebuild->setToolTip(tr("Build the chosen scene with this shape and start again from rest"));
     layout->addWidget(rebuild);
+    m_bodyValues = new QLabel(host);
+    m_bodyValues->setObjectName(QStringLiteral("bodyValues"));
+    m_bodyValues->setWordWrap(true);
+    m_bodyValues->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_bodyValues->setToolTip(tr("What the parameters mean for the body that runs: under scaling=physical the "
+                                "values hold at the scene's default resolution and a finer mesh keeps the "
+                                "body's totals; under scaling=thesis they are per particle and per spring"));
+    layout->addWidget(m_bodyValues);
     layout->addStretch(1);
     setWidget(host);
 
@@ -49,6 +57,12 @@ void SceneDock::rebuildForm(simcore::SceneKind kind) {
 }
 
 simcore::ParameterSet SceneDock::requestedShape() const { return m_form->values(); }
+
+QString SceneDock::bodyValuesText() const { return m_bodyValues->text(); }
+
+void SceneDock::showBodyValues(const QString& text) {
+    m_bodyValues->setText(tr("This body uses: %1").arg(text));
+}
 
 void SceneDock::showParameters(const simcore::ParameterSet& params) {
     m_updating = true;

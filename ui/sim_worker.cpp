@@ -8,7 +8,9 @@
 #include <QThread>
 #include <QTimer>
 
+#include "scaling.h"
 #include "scenes.h"
+#include "stability.h"
 
 namespace elui {
 
@@ -137,10 +139,20 @@ void SimWorker::afterRebuild() {
     double radius = 0.0;
     for (Eigen::Index i = 0; i < x.cols(); ++i) radius = std::max(radius, (x.col(i) - centre).norm());
     scene->bodyRadius = std::max(radius, 0.5);
+    scene->bodyValues =
+        QString::fromStdString(simcore::bodyValuesText(m_params, simcore::bodyValues(m_params, sim.body())));
+    // A rebuild can make the current DT unstable for the chosen method (a finer mesh has faster
+    // modes): say so before it runs, with a step the same estimate predicts stable.
+    if (auto advice = simcore::stabilityAdvice(sim)) {
+        scene->stabilityWarning = QString::fromStdString(advice->message);
+        scene->suggestedDt = advice->suggestedDt;
+    }
+    const bool unstable = scene->suggestedDt > 0.0;
     m_scene = std::move(scene);
     updateDtLimit();
     m_until = -1.0;
     startHistory();
+    if (unstable && m_running) pause();
 }
 
 void SimWorker::applyKick() {
