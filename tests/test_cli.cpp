@@ -220,6 +220,19 @@ private slots:
         QVERIFY2(t.out.contains("per particle: inner 1 kg, outer 1 kg (layers 1026 kg and 1026 kg)"), qPrintable(t.out));
         QCOMPARE(cli({"params", "--set", "subdivisions=4"}).code, 2);  // --set needs a scene
     }
+    void refinedRunIsWarnedWithAStableDt() {
+        // A finer physical ring has faster modes: at 96 particles rk4's limit is ~0.7 ms, so
+        // the default DT 0.003 is refused with the step the prediction offers, which runs.
+        const Result r = cli({"run", "--scene", "ring2d", "--set", "particles=96", "--set", "gravity=0", "--duration", "0.05"});
+        const qsizetype at = r.err.indexOf("(predicted stable: --dt ");
+        QVERIFY2(at >= 0, qPrintable(r.err));
+        const QString dt = r.err.mid(at + 24).section(')', 0, 0);
+        QVERIFY2(dt.toDouble() > 0.0 && dt.toDouble() < 0.00072, qPrintable(dt));
+        const Result ok = cli({"run", "--scene", "ring2d", "--set", "particles=96", "--set", "gravity=0", "--dt", dt,
+                               "--duration", "0.5"});
+        QCOMPARE(ok.code, 0);
+        QVERIFY2(!ok.err.contains("warning"), qPrintable(ok.err));
+    }
     void killedRunLeavesExistingFilesAndNothingElse() {
         // A run killed outright (SIGKILL: no handler, no destructor runs) while it streams its
         // CSV and state: the files that were there keep their bytes and nothing else appears

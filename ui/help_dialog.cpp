@@ -60,7 +60,12 @@ QString HelpDialog::html() {
         "at contact_speed rebounds with the restitution e, with smooth Coulomb friction, and a barrier of "
         "the same kind keeps the inner layer inside the outer one. contact = projection restores the "
         "thesis program instead, which puts a particle back and reverses its normal speed after each "
-        "step.</li></ul>"
+        "step.</li>"
+        "<li><b>Resolution</b> (Scene dock): with scaling = physical the masses and spring constants "
+        "hold at the scene's default mesh, and a finer mesh keeps the body's totals (layer mass, "
+        "material stiffness), so it is the same body, only finer; scaling = thesis makes them per "
+        "particle and per spring at every mesh. A finer body has faster modes and needs a smaller DT: "
+        "the window offers one when a rebuild needs it.</li></ul>"
         "<p>The plots show the energy book: kinetic + spring + gravity + gas + contact is the total; "
         "what damping and contact take out is 'removed'. For an exact integrator, total + removed − "
         "work by the mouse stays constant; the readout's <i>energy drift</i> is how far it is off.</p>");

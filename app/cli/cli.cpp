@@ -123,8 +123,11 @@ simcore::IntegratorOptions integratorOptions(const Options& options) {
 
 std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator) {
     simcore::Simulation sim(params, integrator);
-    const auto warning = simcore::preRunStabilityWarning(sim);
-    return warning ? "warning: " + *warning : std::string();
+    const auto advice = simcore::stabilityAdvice(sim);
+    if (!advice) return {};
+    char suggestion[64];
+    std::snprintf(suggestion, sizeof suggestion, " (predicted stable: --dt %g)", advice->suggestedDt);
+    return "warning: " + advice->message + suggestion;
 }
 
 }  // namespace cli
