@@ -195,14 +195,16 @@ private slots:
             const Equilibrium e = settle(p);
             QVERIFY2(e.kinetic < 1e-6, qPrintable(QString("not at rest: %1 J").arg(e.kinetic)));
             physical.push_back(e.volumeInner);
-            p.set("scaling", 1.0);
-            thesis.push_back(settle(p).volumeInner);
+            if (k == SceneKind::Ring2d) {
+                p.set("scaling", 1.0);
+                thesis.push_back(settle(p).volumeInner);
+            }
         }
         for (std::size_t i = 2; i < physical.size(); ++i) {
             const double before = std::abs(physical[i - 1] - physical[i - 2]);
             const double now = std::abs(physical[i] - physical[i - 1]);
-            qInfo("level %d: inner volume %.6f (change %.3g, ratio %.2f); thesis scaling %.6f", levels[qsizetype(i)],
-                  physical[i], now, before / now, thesis[i]);
+            qInfo("level %d: inner volume %.6f (change %.3g, ratio %.2f)", levels[qsizetype(i)], physical[i], now,
+                  before / now);
             QVERIFY2(now < before / 2.5, "the resting volume does not converge under refinement");
         }
         // scaling=thesis: the 2D ring's chain gets softer with every particle and its rest
@@ -273,10 +275,11 @@ private slots:
             return sim.diagnostics().volume[0] / sim.topology().surfaces[0].restVolume;
         };
         std::string physicalFailure, thesisFailure;
-        const double inner = run(0.0, 2.0, &physicalFailure);
+        // Past the impact (t ~ 0.6 s) and the dent (~0.9 s); the thesis body collapses by 1.0 s.
+        const double inner = run(0.0, 1.3, &physicalFailure);
         QVERIFY2(physicalFailure.empty(), physicalFailure.c_str());
         QVERIFY2(inner > 0.5, qPrintable(QString("inner volume / rest %1").arg(inner)));
-        run(1.0, 2.0, &thesisFailure);
+        run(1.0, 1.3, &thesisFailure);
         QVERIFY2(thesisFailure.find("collapsed") != std::string::npos, thesisFailure.c_str());
     }
 
