@@ -85,8 +85,9 @@ std::vector<double> outputGrid(const RefinementSpec& spec) {
     return grid;
 }
 
-std::string shortNumber(double v) {
+std::string shortNumber(double v, int digits = 6) {
     std::ostringstream os;
+    os.precision(digits);
     os << v;
     return os.str();
 }
@@ -358,7 +359,7 @@ std::string refinementSvg(const RefinementSpec& spec, const RefinementResult& re
                        {}};
         // The mesh: every level but the reference, coarse to fine, at the study's step.
         SvgSeries mesh{"mesh: " + spec.key + " (" + spec.integrator + ", " +
-                           (adaptive ? "tol " + shortNumber(spec.tolerance) : "dt " + shortNumber(result.dt) + " s") + ")",
+                           (adaptive ? "tol " + shortNumber(spec.tolerance, 3) : "dt " + shortNumber(result.dt, 3) + " s") + ")",
                        "#1f77b4", "", {}, {}};
         for (const RefinementRow& row : result.rows)
             if (row.ok && !row.reference) {
@@ -372,7 +373,7 @@ std::string refinementSvg(const RefinementSpec& spec, const RefinementResult& re
         for (const TemporalPoint& p : result.temporal)
             if (p.ok) {
                 step.points.emplace_back(p.wallSeconds, volume ? p.errorVolume : p.errorCom);
-                step.labels.push_back(adaptive ? "tol " + shortNumber(p.tolerance) : "dt " + shortNumber(p.dt));
+                step.labels.push_back(adaptive ? "tol " + shortNumber(p.tolerance, 3) : "dt " + shortNumber(p.dt, 3));
             }
         panel.series.push_back(std::move(mesh));
         panel.series.push_back(std::move(step));

@@ -415,7 +415,11 @@ std::string studyColour(const std::string& integrator) { return colourFor(integr
 std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& title) {
     const int panelW = 380, panelH = 320, left = 70, top = 50, gap = 90, bottom = 60;
     const int count = static_cast<int>(panels.size());
-    const int width = left + count * panelW + (count - 1) * gap + 200, height = top + panelH + bottom + 20;
+    std::size_t longest = 0;  // the legend's width follows its longest name (~7 px a character)
+    for (const SvgPanel& panel : panels)
+        for (const SvgSeries& s : panel.series) longest = std::max(longest, s.name.size());
+    const int legendW = std::max(160, 7 * static_cast<int>(longest) + 45);
+    const int width = left + count * panelW + (count - 1) * gap + legendW, height = top + panelH + bottom + 20;
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
         << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
