@@ -214,10 +214,14 @@ private slots:
         QVERIFY(small.plot()->graph(0)->dataCount() == 2 && small.plot()->graph(1)->dataCount() > 0);
         if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
             small.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/refinement.png");
-        // A scene without a mesh to refine is refused before any work.
+        // Refused before any work: a scene without a mesh to refine, a step that is no number.
         RefinementDialog spring(simcore::ParameterSet(SceneKind::Spring1d));
         spring.start();
         QVERIFY(!spring.busy());
+        small.setStep("fast");
+        small.start();
+        QVERIFY(!small.busy());
+        QCOMPARE(smallFinished.count(), 1);
     }
 
     void stabilityScanCancels() {

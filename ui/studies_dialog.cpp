@@ -394,6 +394,13 @@ simcore::RefinementSpec RefinementDialog::spec() const {
 
 QString RefinementDialog::validate() const {
     if (chosenIntegrators().size() != 1) return tr("Choose exactly one integrator");
+    bool ok = true;
+    if (!m_dt->text().trimmed().isEmpty()) m_dt->text().toDouble(&ok);
+    if (!ok) return tr("DT must be a number in seconds, or empty for the automatic step");
+    for (const QString& t : m_levels->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        t.toInt(&ok);
+        if (!ok) return tr("Levels are whole numbers separated by spaces, got '%1'").arg(t);
+    }
     if (auto problem = simcore::validateRefinement(spec())) return QString::fromStdString(*problem);
     return {};
 }
