@@ -133,6 +133,7 @@ private slots:
         QCOMPARE(cli(QStringList(base) << "--refine" << "particles=12,96" << "--dt" << "0.005").code, 2);  // unstable at 96
         QCOMPARE(cli(QStringList(base) << "--dt" << "0.001" << "--dts" << "0.001").code, 2);  // --dt is --refine's
         QCOMPARE(cli(QStringList(base) << "--refine" << "particles=12,24" << "--dts" << "0.001").code, 2);
+        QCOMPARE(cli(QStringList(base) << "--refine" << "particles=12,24" << "--from-csv" << path("refine.csv")).code, 2);
     }
     void stabilityPrintsMeasuredBesidePredicted() {
         const Result r = cli({"stability", "--scene", "spring1d", "--set", "kd=0", "--set", "gravity=0", "--set",

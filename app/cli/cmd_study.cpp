@@ -80,7 +80,7 @@ std::unique_ptr<simcore::AtomicFile> openCsv(const Options& options) {
 
 // --refine KEY=v1,v2,...: the same body at several resolutions against the finest.
 int commandRefinement(const Options& options) {
-    for (const char* temporalOnly : {"dts", "repeat", "reference", "shard", "samples"})
+    for (const char* temporalOnly : {"dts", "repeat", "reference", "shard", "samples", "from-csv"})
         if (options.has(temporalOnly))
             throw UsageError(std::string("--") + temporalOnly + " belongs to the temporal study, not to --refine");
     SceneSetup setup = sceneSetup(options);
