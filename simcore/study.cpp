@@ -100,7 +100,6 @@ SampledRun runSampled(const ParameterSet& base, const std::string& integrator, d
         out.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
         if (sim.failed() || out.cancelled) break;
         sample(sim);
-        ++out.samples;
     }
     if (sim.failed()) {
         out.failed = true;
@@ -409,8 +408,6 @@ const char* colourFor(const std::string& name) {
 }
 
 }  // namespace
-
-std::string studyColour(const std::string& integrator) { return colourFor(integrator); }
 
 std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& title) {
     const int panelW = 380, panelH = 320, left = 70, top = 50, gap = 90, bottom = 60;

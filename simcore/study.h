@@ -144,7 +144,6 @@ struct SampledRun {
     double failedAt = 0.0;       // simulated time of the failure [s]
     std::string failure;         // its reason
     bool cancelled = false;
-    int samples = 0;             // grid times reached (and sampled)
     long steps = 0;
     std::uint64_t evaluations = 0;  // force evaluations
     double wallSeconds = 0.0;    // stepping only [s]
@@ -170,6 +169,5 @@ struct SvgPanel {
     std::vector<SvgSeries> series;
 };
 std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& title);
-std::string studyColour(const std::string& integrator);  // the studies' colour per integrator
 
 }  // namespace simcore
