@@ -19,66 +19,23 @@ bool isAdaptiveItem(const StudySpec& spec, const std::string& integrator) {
     return integrator == "rk45" && !spec.options.fixedStep;
 }
 
-// Whether T is (within round-off) a whole multiple of h.
-bool divides(double T, double h) {
-    const double q = T / h;
-    return std::abs(q - std::round(q)) <= 1e-9 * std::max(1.0, q);
-}
-
 double rmsDistance(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
     return std::sqrt((a - b).squaredNorm() / static_cast<double>(std::max<Eigen::Index>(1, a.cols())));
 }
 
-// One run of a trajectory, sampled on the grid.
-struct Trajectory {
+// One run of a trajectory, its positions sampled on the grid.
+struct Trajectory : SampledRun {
     std::vector<Eigen::Matrix3Xd> positions;
-    bool failed = false;
-    double failedAt = 0.0;
-    std::string failure;
-    long steps = 0;
-    std::uint64_t evaluations = 0;
-    double wallSeconds = 0.0;  // stepping only
-    double maxDrift = 0.0;
-    bool cancelled = false;
 };
 
 Trajectory runTrajectory(const ParameterSet& base, const std::string& integrator, double dt,
                          const IntegratorOptions& options, const std::vector<double>& grid,
                          const std::atomic<bool>* cancel) {
-    ParameterSet p = base;
-    if (auto error = p.set("dt", dt)) throw std::invalid_argument(*error);
-    Simulation sim(p, integrator);
-    sim.setThreads(1);  // timings are single-threaded, whatever the machine
-    sim.setIntegratorOptions(options);
     Trajectory out;
     out.positions.reserve(grid.size());
-    using Clock = std::chrono::steady_clock;
-    const bool adaptive = sim.integrator().adaptive();
-    for (double target : grid) {
-        // Fixed steps: count them (t accumulated as a sum of dt drifts by round-off, and one
-        // step too many at a grid time is an error of v dt). Adaptive: land on the target.
-        const long targetSteps = std::lround(target / dt);
-        auto more = [&] { return adaptive ? sim.time() < target - 1e-12 * std::max(1.0, target) : sim.stepCount() < targetSteps; };
-        const auto start = Clock::now();
-        while (more()) {
-            if (!sim.step(target)) break;
-            out.maxDrift = std::max(out.maxDrift, std::abs(sim.diagnostics().energyDrift()));
-            if (cancel && cancel->load(std::memory_order_relaxed)) {
-                out.cancelled = true;
-                break;
-            }
-        }
-        out.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
-        if (sim.failed() || out.cancelled) break;
-        out.positions.emplace_back(sim.positions());
-    }
-    if (sim.failed()) {
-        out.failed = true;
-        out.failedAt = sim.failure()->time;
-        out.failure = sim.failure()->reason;
-    }
-    out.steps = sim.stepCount();
-    out.evaluations = sim.diagnostics().forceEvaluations;
+    static_cast<SampledRun&>(out) = runSampled(
+        base, integrator, dt, options, grid, [&](const Simulation& sim) { out.positions.emplace_back(sim.positions()); },
+        cancel);
     return out;
 }
 
@@ -115,6 +72,50 @@ std::string formatShort(double v) {
 
 }  // namespace
 
+SampledRun runSampled(const ParameterSet& base, const std::string& integrator, double dt,
+                      const IntegratorOptions& options, const std::vector<double>& grid,
+                      const std::function<void(const Simulation&)>& sample, const std::atomic<bool>* cancel) {
+    ParameterSet p = base;
+    if (auto error = p.set("dt", dt)) throw std::invalid_argument(*error);
+    Simulation sim(p, integrator);
+    sim.setThreads(1);  // timings are single-threaded, whatever the machine
+    sim.setIntegratorOptions(options);
+    SampledRun out;
+    using Clock = std::chrono::steady_clock;
+    const bool adaptive = sim.integrator().adaptive();
+    for (double target : grid) {
+        // Fixed steps: count them (t accumulated as a sum of dt drifts by round-off, and one
+        // step too many at a grid time is an error of v dt). Adaptive: land on the target.
+        const long targetSteps = std::lround(target / dt);
+        auto more = [&] { return adaptive ? sim.time() < target - 1e-12 * std::max(1.0, target) : sim.stepCount() < targetSteps; };
+        const auto start = Clock::now();
+        while (more()) {
+            if (!sim.step(target)) break;
+            out.maxDrift = std::max(out.maxDrift, std::abs(sim.diagnostics().energyDrift()));
+            if (cancel && cancel->load(std::memory_order_relaxed)) {
+                out.cancelled = true;
+                break;
+            }
+        }
+        out.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+        if (sim.failed() || out.cancelled) break;
+        sample(sim);
+    }
+    if (sim.failed()) {
+        out.failed = true;
+        out.failedAt = sim.failure()->time;
+        out.failure = sim.failure()->reason;
+    }
+    out.steps = sim.stepCount();
+    out.evaluations = sim.diagnostics().forceEvaluations;
+    return out;
+}
+
+bool isWholeMultiple(double T, double h) {
+    const double q = T / h;
+    return std::abs(q - std::round(q)) <= 1e-9 * std::max(1.0, q);
+}
+
 std::string StudyRow::status() const { return ok ? std::string("ok") : "failed@" + formatDouble(failedAt); }
 
 std::vector<StudyItem> studyItems(const StudySpec& spec) {
@@ -147,7 +148,7 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
     if (needsSteps && spec.dts.empty()) return "no steps given (--dts)";
     for (double dt : spec.dts) {
         if (!(dt > 0.0) || dt > 1.0) return "every dt must be in (0, 1] s, got " + formatShort(dt);
-        if (needsSteps && !divides(spec.duration, dt))
+        if (needsSteps && !isWholeMultiple(spec.duration, dt))
             return "the duration " + formatShort(spec.duration) + " s is not a whole multiple of dt = " +
                    formatShort(dt) + " s (every run must end exactly at T)";
     }
@@ -173,7 +174,7 @@ std::vector<double> studyGrid(const StudySpec& spec) {
     int g = std::max(1, spec.samples);
     for (; g > 1; --g) {
         const double interval = spec.duration / g;
-        if (std::all_of(fixed.begin(), fixed.end(), [&](double h) { return divides(interval, h); })) break;
+        if (std::all_of(fixed.begin(), fixed.end(), [&](double h) { return isWholeMultiple(interval, h); })) break;
     }
     std::vector<double> grid;
     for (int k = 1; k <= g; ++k) grid.push_back(k == g ? spec.duration : spec.duration * k / g);
@@ -302,18 +303,20 @@ std::vector<OrderFit> fitOrders(const std::vector<StudyRow>& rows, double refere
                 points.emplace_back(r.dt, r.errorMax);
         std::sort(points.begin(), points.end());
         if (points.size() > 3) points.resize(3);
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        int n = 0;
-        for (auto [dt, e] : points) {
-            const double x = std::log(dt), y = std::log(e);
-            sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
-        }
-        OrderFit fit{name, std::nan(""), n};
-        const double den = n * sxx - sx * sx;
-        if (n >= 2 && std::abs(den) > 1e-300) fit.order = (n * sxy - sx * sy) / den;
-        fits.push_back(fit);
+        fits.push_back({name, logLogSlope(points), static_cast<int>(points.size())});
     }
     return fits;
+}
+
+double logLogSlope(const std::vector<std::pair<double, double>>& points) {
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    int n = 0;
+    for (auto [x0, y0] : points) {
+        const double x = std::log(x0), y = std::log(y0);
+        sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+    }
+    const double den = n * sxx - sx * sx;
+    return n >= 2 && std::abs(den) > 1e-300 ? (n * sxy - sx * sy) / den : std::nan("");
 }
 
 std::string studyCsvHeader() {
@@ -406,36 +409,32 @@ const char* colourFor(const std::string& name) {
 
 }  // namespace
 
-std::string studySvg(const std::vector<StudyRow>& rows, const std::string& title) {
+std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& title) {
     const int panelW = 380, panelH = 320, left = 70, top = 50, gap = 90, bottom = 60;
-    const int width = left + 3 * panelW + 2 * gap + 160, height = top + panelH + bottom + 20;
+    const int count = static_cast<int>(panels.size());
+    std::size_t longest = 0;  // the legend's width follows its longest name (~7 px a character)
+    for (const SvgPanel& panel : panels)
+        for (const SvgSeries& s : panel.series) longest = std::max(longest, s.name.size());
+    const int legendW = std::max(160, 7 * static_cast<int>(longest) + 45);
+    const int width = left + count * panelW + (count - 1) * gap + legendW, height = top + panelH + bottom + 20;
     std::ostringstream svg;
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
         << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
         << "<text x=\"" << left << "\" y=\"24\" font-size=\"15\">" << title << "</text>\n";
-    std::vector<std::string> names;
-    for (const StudyRow& r : rows)
-        if (std::find(names.begin(), names.end(), r.item.integrator) == names.end()) names.push_back(r.item.integrator);
-    std::vector<double> errors;
-    for (const StudyRow& r : rows)
-        if (r.ok) errors.push_back(r.errorMax);
-    const Range yr = decades(errors);
-    struct Panel {
-        const char* label;
-        std::function<double(const StudyRow&)> x;
+    auto drawable = [](std::pair<double, double> pt) {
+        return pt.first > 0.0 && pt.second > 0.0 && std::isfinite(pt.first) && std::isfinite(pt.second);
     };
-    const Panel panels[3] = {
-        {"wall time [s] (median, stepping only)", [](const StudyRow& r) { return r.wallSeconds; }},
-        {"force evaluations", [](const StudyRow& r) { return static_cast<double>(r.forceEvaluations); }},
-        {"dt [s] (mean step for adaptive rk45)", [](const StudyRow& r) { return r.dt; }},
-    };
-    for (int p = 0; p < 3; ++p) {
+    // The legend: every series name once, in order of first appearance, with its style.
+    std::vector<const SvgSeries*> legend;
+    for (int p = 0; p < count; ++p) {
+        const SvgPanel& panel = panels[static_cast<std::size_t>(p)];
         const int x0 = left + p * (panelW + gap), y0 = top;
-        std::vector<double> xs;
-        for (const StudyRow& r : rows)
-            if (r.ok) xs.push_back(panels[p].x(r));
-        const Range xr = decades(xs);
+        std::vector<double> xs, ys;
+        for (const SvgSeries& s : panel.series)
+            for (auto pt : s.points)
+                if (drawable(pt)) xs.push_back(pt.first), ys.push_back(pt.second);
+        const Range xr = decades(xs), yr = decades(ys);
         auto px = [&](double v) { return x0 + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * panelW; };
         auto py = [&](double v) { return y0 + panelH - (std::log10(v) - yr.lo) / (yr.hi - yr.lo) * panelH; };
         svg << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << panelW << "\" height=\"" << panelH
@@ -453,35 +452,71 @@ std::string studySvg(const std::vector<StudyRow>& rows, const std::string& title
                 << "\" text-anchor=\"end\">1e" << static_cast<int>(d) << "</text>\n";
         }
         svg << "<text x=\"" << x0 + panelW / 2 << "\" y=\"" << y0 + panelH + 36 << "\" text-anchor=\"middle\">"
-            << panels[p].label << "</text>\n";
+            << panel.xLabel << "</text>\n";
         svg << "<text transform=\"translate(" << x0 - 48 << "," << y0 + panelH / 2
-            << ") rotate(-90)\" text-anchor=\"middle\">error_max: largest RMS position error [m]</text>\n";
+            << ") rotate(-90)\" text-anchor=\"middle\">" << panel.yLabel << "</text>\n";
+        for (const SvgSeries& s : panel.series) {
+            std::vector<std::pair<double, double>> pts;
+            for (auto pt : s.points)
+                if (drawable(pt)) pts.push_back(pt);
+            if (pts.empty()) continue;
+            if (std::none_of(legend.begin(), legend.end(), [&](const SvgSeries* l) { return l->name == s.name; }))
+                legend.push_back(&s);
+            svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.5\"";
+            if (!s.dash.empty()) svg << " stroke-dasharray=\"" << s.dash << "\"";
+            svg << " points=\"";
+            for (auto [x, y] : pts) svg << px(x) << ',' << py(y) << ' ';
+            svg << "\"/>\n";
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                const auto [x, y] = pts[i];
+                svg << "<circle cx=\"" << px(x) << "\" cy=\"" << py(y) << "\" r=\"3\" fill=\"" << s.colour << "\"/>\n";
+                if (i < s.labels.size() && !s.labels[i].empty())
+                    svg << "<text x=\"" << px(x) + 5 << "\" y=\"" << py(y) - 5 << "\" font-size=\"10\" fill=\"" << s.colour
+                        << "\">" << s.labels[i] << "</text>\n";
+            }
+        }
+    }
+    const int lx = left + count * panelW + (count - 1) * gap + 15;
+    for (std::size_t i = 0; i < legend.size(); ++i) {
+        const double y = top + 15 + 20.0 * static_cast<double>(i);
+        svg << "<line x1=\"" << lx << "\" y1=\"" << y << "\" x2=\"" << lx + 20 << "\" y2=\"" << y << "\" stroke=\""
+            << legend[i]->colour << "\" stroke-width=\"2\"";
+        if (!legend[i]->dash.empty()) svg << " stroke-dasharray=\"" << legend[i]->dash << "\"";
+        svg << "/><text x=\"" << lx + 26 << "\" y=\"" << y + 4 << "\">" << legend[i]->name << "</text>\n";
+    }
+    svg << "</svg>\n";
+    return svg.str();
+}
+
+std::string studySvg(const std::vector<StudyRow>& rows, const std::string& title) {
+    std::vector<std::string> names;
+    for (const StudyRow& r : rows)
+        if (std::find(names.begin(), names.end(), r.item.integrator) == names.end()) names.push_back(r.item.integrator);
+    struct Axis {
+        const char* label;
+        std::function<double(const StudyRow&)> x;
+    };
+    const Axis axes[3] = {
+        {"wall time [s] (median, stepping only)", [](const StudyRow& r) { return r.wallSeconds; }},
+        {"force evaluations", [](const StudyRow& r) { return static_cast<double>(r.forceEvaluations); }},
+        {"dt [s] (mean step for adaptive rk45)", [](const StudyRow& r) { return r.dt; }},
+    };
+    std::vector<SvgPanel> panels;
+    for (const Axis& axis : axes) {
+        SvgPanel panel{axis.label, "error_max: largest RMS position error [m]", {}};
         for (const std::string& name : names) {
             // Joined in order of dt (timings are noisy; the line follows the refinement).
             std::vector<std::tuple<double, double, double>> sorted;
             for (const StudyRow& r : rows)
-                if (r.ok && r.item.integrator == name && panels[p].x(r) > 0 && r.errorMax > 0)
-                    sorted.emplace_back(r.dt, panels[p].x(r), r.errorMax);
+                if (r.ok && r.item.integrator == name) sorted.emplace_back(r.dt, axis.x(r), r.errorMax);
             std::sort(sorted.begin(), sorted.end());
-            std::vector<std::pair<double, double>> pts;
-            for (auto [dt, x, e] : sorted) pts.emplace_back(x, e);
-            if (pts.empty()) continue;
-            svg << "<polyline fill=\"none\" stroke=\"" << colourFor(name) << "\" stroke-width=\"1.5\" points=\"";
-            for (auto [x, y] : pts) svg << px(x) << ',' << py(y) << ' ';
-            svg << "\"/>\n";
-            for (auto [x, y] : pts)
-                svg << "<circle cx=\"" << px(x) << "\" cy=\"" << py(y) << "\" r=\"3\" fill=\"" << colourFor(name) << "\"/>\n";
+            SvgSeries series{name, colourFor(name), "", {}, {}};
+            for (auto [dt, x, e] : sorted) series.points.emplace_back(x, e);
+            panel.series.push_back(std::move(series));
         }
+        panels.push_back(std::move(panel));
     }
-    const int lx = left + 3 * panelW + 2 * gap + 15;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        const double y = top + 15 + 20.0 * static_cast<double>(i);
-        svg << "<line x1=\"" << lx << "\" y1=\"" << y << "\" x2=\"" << lx + 20 << "\" y2=\"" << y << "\" stroke=\""
-            << colourFor(names[i]) << "\" stroke-width=\"2\"/><text x=\"" << lx + 26 << "\" y=\"" << y + 4 << "\">"
-            << names[i] << "</text>\n";
-    }
-    svg << "</svg>\n";
-    return svg.str();
+    return logLogSvg(panels, title);
 }
 
 }  // namespace simcore

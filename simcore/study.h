@@ -31,6 +31,8 @@
 
 namespace simcore {
 
+class Simulation;
+
 struct StudySpec {
     ParameterSet params{SceneKind::Spring1d};  // the scene; its dt is ignored
     std::vector<std::string> integrators;
@@ -124,5 +126,48 @@ std::optional<std::vector<StudyRow>> parseStudyCsv(const std::string& text, std:
 // Three log-log panels: error_max against wall time (work-precision), against force
 // evaluations, and against dt. Failed rows are not drawn.
 std::string studySvg(const std::vector<StudyRow>& rows, const std::string& title);
+
+// --- shared with the other studies (refinement.h) ------------------------------------------
+
+// Least-squares slope of log y against log x (the points positive); nan below two points.
+double logLogSlope(const std::vector<std::pair<double, double>>& points);
+
+// Whether T is (within round-off) a whole multiple of h.
+bool isWholeMultiple(double T, double h);
+
+// One run of `params` with `integrator`, single-threaded, from its start state through the
+// grid times (ascending, > 0): a fixed-step method takes exactly round(t / dt) steps to each,
+// an adaptive one lands on each. sample(sim) is called at every grid time reached. Only the
+// stepping is timed (never the sampling). Stops at a failure or when *cancel becomes true.
+struct SampledRun {
+    bool failed = false;
+    double failedAt = 0.0;       // simulated time of the failure [s]
+    std::string failure;         // its reason
+    bool cancelled = false;
+    long steps = 0;
+    std::uint64_t evaluations = 0;  // force evaluations
+    double wallSeconds = 0.0;    // stepping only [s]
+    double maxDrift = 0.0;       // largest |energy balance drift| over the steps [J]
+};
+SampledRun runSampled(const ParameterSet& params, const std::string& integrator, double dt,
+                      const IntegratorOptions& options, const std::vector<double>& grid,
+                      const std::function<void(const Simulation&)>& sample,
+                      const std::atomic<bool>* cancel = nullptr);
+
+// Log-log line plots side by side as SVG (each panel its own decades). A series is a polyline
+// through its points in the given order, with a dot (and an optional label) at each; points
+// that are not positive and finite are left out. The legend lists each name once.
+struct SvgSeries {
+    std::string name;
+    std::string colour;                           // e.g. "#1f77b4"
+    std::string dash;                             // stroke-dasharray, "" = solid
+    std::vector<std::pair<double, double>> points;
+    std::vector<std::string> labels;              // per point, may be shorter or empty
+};
+struct SvgPanel {
+    std::string xLabel, yLabel;
+    std::vector<SvgSeries> series;
+};
+std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& title);
 
 }  // namespace simcore

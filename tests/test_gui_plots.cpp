@@ -180,6 +180,50 @@ private slots:
             dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/study.png");
     }
 
+    void refinementStudyRunsAndCancels() {
+        // simcore's refinement study (the CLI's code) behind the dialog. A long study (a sphere
+        // up to level 4 over 5 s: minutes) cancelled at once keeps nothing: the reference, which
+        // runs first, was cut short. A weightless ring then runs a short study to the end.
+        simcore::ParameterSet sphere(SceneKind::Sphere3d);
+        RefinementDialog dialog(sphere);
+        dialog.setLevels("2 3 4");
+        dialog.setDuration(5.0);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QVERIFY(dialog.busy());
+        dialog.cancel();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, testsupport::kHangGuardMs);
+        QVERIFY(!dialog.busy());
+        QVERIFY(dialog.result().cancelled);
+        QVERIFY(dialog.result().rows.empty());
+
+        simcore::ParameterSet ring(SceneKind::Ring2d);
+        ring.set("gravity", 0.0);
+        RefinementDialog small(ring);
+        small.setLevels("12 24 48");
+        small.setDuration(0.1);
+        QSignalSpy smallFinished(&small, &StudyDialogBase::finished);
+        small.start();
+        QTRY_COMPARE_WITH_TIMEOUT(smallFinished.count(), 1, testsupport::kHangGuardMs);
+        const auto& rows = small.result().rows;
+        QCOMPARE(int(rows.size()), 3);
+        QCOMPARE(small.table()->rowCount(), 3);
+        QVERIFY(rows[2].reference && rows[2].errorVolume == 0.0);
+        QVERIFY(rows[0].errorVolume > rows[1].errorVolume && rows[1].errorVolume > 0.0);
+        QCOMPARE(small.plot()->graphCount(), 2 * 2);  // mesh and step, volume and centre of mass
+        QVERIFY(small.plot()->graph(0)->dataCount() == 2 && small.plot()->graph(1)->dataCount() > 0);
+        if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
+            small.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/refinement.png");
+        // Refused before any work: a scene without a mesh to refine, a step that is no number.
+        RefinementDialog spring(simcore::ParameterSet(SceneKind::Spring1d));
+        spring.start();
+        QVERIFY(!spring.busy());
+        small.setStep("fast");
+        small.start();
+        QVERIFY(!small.busy());
+        QCOMPARE(smallFinished.count(), 1);
+    }
+
     void stabilityScanCancels() {
         // A long scan (a sphere for 3 s per trial, seconds in Release) stops within one step of
         // Cancel, keeps only whole rows, and can run again.

@@ -103,6 +103,38 @@ private slots:
         QCOMPARE(cli({"study", "--scene", "spring1d", "--integrators", "euler", "--dts", "0.01", "--shard", "3/2"}).code, 2);
         QCOMPARE(cli({"study", "--scene", "ring2d", "--integrators", "euler", "--dts", "0.01", "--reference", "exact"}).code, 2);
     }
+    void refinementWritesTheDocumentedCsvAndPlot() {
+        const Result r = cli({"study", "--scene", "ring2d", "--set", "gravity=0", "--refine", "particles=12,24,48",
+                              "--integrators", "rk4", "--duration", "0.1", "--temporal-runs", "2", "--csv",
+                              path("refine.csv"), "--plot", path("refine.svg")});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.out.contains("fitted spatial order") && r.out.contains("  volume ") && r.out.contains("  com "),
+                 qPrintable(r.out));
+        QVERIFY(r.out.contains("time error"));
+        const QStringList lines = readAll(path("refine.csv")).split('\n', Qt::SkipEmptyParts);
+        QVERIFY2(lines.value(0).startsWith("key,value,particles,springs,wall_seconds,error_volume,error_com,status"),
+                 qPrintable(lines.value(0)));
+        QCOMPARE(lines.size(), 1 + 3);
+        const QStringList coarse = lines[1].split(','), finest = lines[3].split(',');
+        QCOMPARE(coarse.mid(0, 4), QStringList({"particles", "12", "24", "60"}));
+        QCOMPARE(coarse[7], QString("ok"));
+        QVERIFY(coarse[5].toDouble() > lines[2].split(',')[5].toDouble());  // the volume error shrinks
+        QCOMPARE(finest[5].toDouble(), 0.0);
+        QCOMPARE(finest.last(), QString("1"));  // the reference
+        const QString svg = readAll(path("refine.svg"));
+        QVERIFY(svg.startsWith("<svg") && svg.contains("mesh: particles") && svg.contains("step: rk4"));
+    }
+    void badRefinementInputIsRefused() {
+        const QStringList base = {"study", "--scene", "ring2d", "--duration", "0.05", "--quiet"};
+        QCOMPARE(cli(QStringList(base) << "--refine" << "ks=1,2").code, 2);
+        QCOMPARE(cli(QStringList(base) << "--refine" << "subdivisions=1,2").code, 2);  // sphere3d's key
+        QCOMPARE(cli(QStringList(base) << "--refine" << "particles=12").code, 2);
+        QCOMPARE(cli(QStringList(base) << "--refine" << "particles=12,24" << "--integrators" << "euler,rk4").code, 2);
+        QCOMPARE(cli(QStringList(base) << "--refine" << "particles=12,96" << "--dt" << "0.005").code, 2);  // unstable at 96
+        QCOMPARE(cli(QStringList(base) << "--dt" << "0.001" << "--dts" << "0.001").code, 2);  // --dt is --refine's
+        QCOMPARE(cli(QStringList(base) << "--refine" << "particles=12,24" << "--dts" << "0.001").code, 2);
+        QCOMPARE(cli(QStringList(base) << "--refine" << "particles=12,24" << "--from-csv" << path("refine.csv")).code, 2);
+    }
     void stabilityPrintsMeasuredBesidePredicted() {
         const Result r = cli({"stability", "--scene", "spring1d", "--set", "kd=0", "--set", "gravity=0", "--set",
                               "fixed_end=0", "--set", "box=100", "--integrators", "rk4,verlet,implicit-euler",

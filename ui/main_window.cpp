@@ -179,6 +179,11 @@ void MainWindow::createMenus() {
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
+    m_studiesMenu->addAction(tr("&Refinement study..."), this, [this] {
+        auto* d = new RefinementDialog(m_controller->parameters(), this);
+        d->setAttribute(Qt::WA_DeleteOnClose);
+        d->show();
+    });
     m_studiesMenu->addAction(tr("&Stability scan..."), this, [this] {
         auto* d = new StabilityDialog(m_controller->parameters(), this);
         d->setAttribute(Qt::WA_DeleteOnClose);

@@ -25,6 +25,7 @@
 #include "parameter_dock.h"
 #include "plot_series.h"
 #include "qcustomplot.h"
+#include "refinement.h"
 #include "scenes.h"
 
 namespace elui {
@@ -50,6 +51,39 @@ void setupLogAxis(QCPAxis* axis, const QString& label) {
     axis->setNumberFormat(QStringLiteral("eb"));
     axis->setNumberPrecision(0);
     axis->setLabel(label);
+}
+
+// Two log-log panels side by side, the legend inside the right one.
+std::pair<QCPAxisRect*, QCPAxisRect*> twoLogPanels(QCustomPlot* plot, const QString& leftX, const QString& leftY,
+                                                   const QString& rightX, const QString& rightY) {
+    plot->plotLayout()->clear();
+    auto* left = new QCPAxisRect(plot);
+    auto* right = new QCPAxisRect(plot);
+    plot->plotLayout()->addElement(0, 0, left);
+    plot->plotLayout()->addElement(0, 1, right);
+    setupLogAxis(left->axis(QCPAxis::atBottom), leftX);
+    setupLogAxis(left->axis(QCPAxis::atLeft), leftY);
+    setupLogAxis(right->axis(QCPAxis::atBottom), rightX);
+    setupLogAxis(right->axis(QCPAxis::atLeft), rightY);
+    plot->legend = new QCPLegend;
+    right->insetLayout()->addElement(plot->legend, Qt::AlignBottom | Qt::AlignRight);
+    plot->legend->setLayer(QStringLiteral("legend"));
+    plot->legend->setVisible(true);
+    return {left, right};
+}
+
+// Each panel's axes fitted to its graphs, with a factor 2 of room on every side.
+void rescaleLogPanels(QCustomPlot* plot) {
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        bool any = false;
+        for (QCPGraph* graph : rect->graphs()) {
+            graph->rescaleAxes(any);
+            any = true;
+        }
+        for (QCPAxis* axis : {rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft)})
+            axis->setRange(axis->range().lower / 2, axis->range().upper * 2);
+    }
+    plot->replot();
 }
 
 }  // namespace
@@ -141,6 +175,20 @@ void StudyDialogBase::stopAndWait() {
     if (m_worker.joinable()) m_worker.join();
 }
 
+void StudyDialogBase::fillTable(const QStringList& headers, const QList<QStringList>& cells) {
+    m_table->clear();
+    m_table->setColumnCount(int(headers.size()));
+    m_table->setHorizontalHeaderLabels(headers);
+    m_table->setRowCount(int(cells.size()));
+    for (int r = 0; r < int(cells.size()); ++r)
+        for (int c = 0; c < int(cells[r].size()); ++c) m_table->setItem(r, c, new QTableWidgetItem(cells[r][c]));
+    m_table->resizeColumnsToContents();
+}
+
+void StudyDialogBase::setChosenIntegrators(const QStringList& names) {
+    for (QCheckBox* box : m_integrators) box->setChecked(names.contains(box->text()));
+}
+
 QStringList StudyDialogBase::chosenIntegrators() const {
     QStringList out;
     for (QCheckBox* box : m_integrators)
@@ -214,19 +262,7 @@ WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QW
     form->addRow(tr("DT values [s]"), m_dts);
     form->addRow(tr("Duration T [s]"), m_duration);
     form->addRow(tr("Reference"), m_reference);
-    m_plot->plotLayout()->clear();
-    auto* left = new QCPAxisRect(m_plot);
-    auto* right = new QCPAxisRect(m_plot);
-    m_plot->plotLayout()->addElement(0, 0, left);
-    m_plot->plotLayout()->addElement(0, 1, right);
-    setupLogAxis(left->axis(QCPAxis::atBottom), tr("run time [s]"));
-    setupLogAxis(left->axis(QCPAxis::atLeft), tr("max position error [m]"));
-    setupLogAxis(right->axis(QCPAxis::atBottom), tr("DT [s]"));
-    setupLogAxis(right->axis(QCPAxis::atLeft), tr("max position error [m]"));
-    m_plot->legend = new QCPLegend;
-    right->insetLayout()->addElement(m_plot->legend, Qt::AlignBottom | Qt::AlignRight);
-    m_plot->legend->setLayer(QStringLiteral("legend"));
-    m_plot->legend->setVisible(true);
+    twoLogPanels(m_plot, tr("run time [s]"), tr("max position error [m]"), tr("DT [s]"), tr("max position error [m]"));
 }
 
 void WorkPrecisionDialog::setSteps(const QString& dts) { m_dts->setText(dts); }
@@ -259,19 +295,13 @@ void WorkPrecisionDialog::present() {
     const auto& rows = m_result.rows;
     const QStringList headers = {tr("integrator"), tr("DT [s]"), tr("steps"), tr("force evals"), tr("run time [s]"),
                                  tr("error at T [m]"), tr("max error [m]"), tr("energy error [J]"), tr("status")};
-    m_table->clear();
-    m_table->setColumnCount(int(headers.size()));
-    m_table->setHorizontalHeaderLabels(headers);
-    m_table->setRowCount(int(rows.size()));
-    for (int r = 0; r < int(rows.size()); ++r) {
-        const simcore::StudyRow& row = rows[std::size_t(r)];
-        const QStringList cells = {QString::fromStdString(row.item.integrator), number(row.dt), QString::number(row.steps),
-                                   QString::number(row.forceEvaluations), number(row.wallSeconds),
-                                   row.ok ? number(row.errorFinal) : QString(), row.ok ? number(row.errorMax) : QString(),
-                                   row.ok ? number(row.errorEnergy) : QString(), QString::fromStdString(row.status())};
-        for (int c = 0; c < cells.size(); ++c) m_table->setItem(r, c, new QTableWidgetItem(cells[c]));
-    }
-    m_table->resizeColumnsToContents();
+    QList<QStringList> cells;
+    for (const simcore::StudyRow& row : rows)
+        cells.append({QString::fromStdString(row.item.integrator), number(row.dt), QString::number(row.steps),
+                      QString::number(row.forceEvaluations), number(row.wallSeconds),
+                      row.ok ? number(row.errorFinal) : QString(), row.ok ? number(row.errorMax) : QString(),
+                      row.ok ? number(row.errorEnergy) : QString(), QString::fromStdString(row.status())});
+    fillTable(headers, cells);
 
     m_plot->clearPlottables();
     QCPAxisRect* left = m_plot->axisRect(0);
@@ -295,16 +325,7 @@ void WorkPrecisionDialog::present() {
         g.first->addData(row.wallSeconds, row.errorMax);
         g.second->addData(row.dt, row.errorMax);
     }
-    for (QCPAxisRect* rect : {left, right}) {
-        bool any = false;
-        for (QCPGraph* graph : rect->graphs()) {
-            graph->rescaleAxes(any);
-            any = true;
-        }
-        for (QCPAxis* axis : {rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft)})
-            axis->setRange(axis->range().lower / 2, axis->range().upper * 2);
-    }
-    m_plot->replot();
+    rescaleLogPanels(m_plot);
 
     QString summary = tr("Reference: %1 (its own error about %2 m).")
                           .arg(QString::fromStdString(m_result.reference.description))
@@ -324,6 +345,146 @@ QString WorkPrecisionDialog::csv() const {
 QString WorkPrecisionDialog::svg() const {
     return QString::fromStdString(simcore::studySvg(m_result.rows, "work-precision: " +
                                                                        std::string(simcore::sceneInfo(m_params.kind()).name)));
+}
+
+// ---------------------------------------------------------------- refinement study
+
+RefinementDialog::RefinementDialog(const simcore::ParameterSet& params, QWidget* parent)
+    : StudyDialogBase(tr("Refinement study"), params, parent) {
+    setChosenIntegrators({QStringLiteral("rk4")});
+    auto* form = static_cast<QFormLayout*>(m_options->layout());
+    const std::string key = simcore::refinementKey(params.kind());
+    // The scene's current resolution and two finer ones (the sphere: one coarser, one finer,
+    // each level 4x the particles).
+    QString levels;
+    if (!key.empty()) {
+        const int v = params.getInt(key);
+        levels = params.kind() == simcore::SceneKind::Sphere3d ? QStringLiteral("%1 %2 %3").arg(std::max(0, v - 1)).arg(v).arg(v + 1)
+                                                               : QStringLiteral("%1 %2 %3").arg(v).arg(2 * v).arg(4 * v);
+    }
+    m_levels = new QLineEdit(levels, m_options);
+    m_levels->setToolTip(tr("Values of the scene's resolution, separated by spaces; the finest is the reference"));
+    m_dt = new QLineEdit(m_options);
+    m_dt->setPlaceholderText(tr("automatic"));
+    m_dt->setToolTip(tr("Fixed step DT [s] for every level; it must divide 0.01 s and be stable at the finest "
+                        "level. Empty: a quarter of the smaller of the scene's DT and the finest level's stable step"));
+    m_duration = new QLineEdit(QStringLiteral("0.5"), m_options);
+    form->addRow(key.empty() ? tr("Levels") : tr("Levels (%1)").arg(QString::fromStdString(key)), m_levels);
+    form->addRow(tr("DT [s]"), m_dt);
+    form->addRow(tr("Duration T [s]"), m_duration);
+    twoLogPanels(m_plot, tr("run time [s]"), tr("max relative volume error"), tr("run time [s]"),
+                 tr("max centre-of-mass error [m]"));
+}
+
+void RefinementDialog::setLevels(const QString& values) { m_levels->setText(values); }
+void RefinementDialog::setStep(const QString& dt) { m_dt->setText(dt); }
+void RefinementDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
+
+simcore::RefinementSpec RefinementDialog::spec() const {
+    simcore::RefinementSpec s;
+    s.params = m_params;
+    s.key = simcore::refinementKey(m_params.kind());
+    for (const QString& t : m_levels->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) s.values.push_back(t.toInt());
+    const QStringList names = chosenIntegrators();
+    if (!names.isEmpty()) s.integrator = names.front().toStdString();
+    s.dt = m_dt->text().trimmed().isEmpty() ? 0.0 : m_dt->text().toDouble();
+    s.duration = m_duration->text().toDouble();
+    return s;
+}
+
+QString RefinementDialog::validate() const {
+    if (chosenIntegrators().size() != 1) return tr("Choose exactly one integrator");
+    bool ok = true;
+    if (!m_dt->text().trimmed().isEmpty()) m_dt->text().toDouble(&ok);
+    if (!ok) return tr("DT must be a number in seconds, or empty for the automatic step");
+    for (const QString& t : m_levels->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        t.toInt(&ok);
+        if (!ok) return tr("Levels are whole numbers separated by spaces, got '%1'").arg(t);
+    }
+    if (auto problem = simcore::validateRefinement(spec())) return QString::fromStdString(*problem);
+    return {};
+}
+
+void RefinementDialog::prepare() {
+    m_spec = spec();
+    m_error.clear();
+}
+
+void RefinementDialog::compute(const std::atomic<bool>* cancel) {
+    try {
+        m_result = simcore::runRefinement(
+            m_spec, [this](const simcore::StudyProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
+            cancel);
+    } catch (const std::exception& e) {
+        m_result = simcore::RefinementResult{};
+        m_error = QString::fromStdString(e.what());
+    }
+}
+
+void RefinementDialog::present() {
+    const auto& rows = m_result.rows;
+    const QString key = QString::fromStdString(m_spec.key);
+    const QStringList headers = {tr("level (%1)").arg(key), tr("particles"), tr("springs"), tr("h [m]"), tr("DT [s]"), tr("steps"),
+                                 tr("run time [s]"), tr("volume error"), tr("centre-of-mass error [m]"), tr("status")};
+    QList<QStringList> cells;
+    for (const simcore::RefinementRow& row : rows)
+        cells.append({QString::number(row.value), QString::number(row.particles), QString::number(row.springs), number(row.h),
+                      number(row.dt), QString::number(row.steps), number(row.wallSeconds),
+                      row.ok ? number(row.errorVolume) : QString(), row.ok ? number(row.errorCom) : QString(),
+                      row.reference ? tr("reference") : QString::fromStdString(row.status())});
+    fillTable(headers, cells);
+
+    // Per panel: the mesh levels at the study's step, and the step curve (one level, coarser steps).
+    m_plot->clearPlottables();
+    for (int panel = 0; panel < 2; ++panel) {
+        QCPAxisRect* rect = m_plot->axisRect(panel);
+        auto value = [panel](double volume, double com) { return panel == 0 ? volume : com; };
+        QCPGraph* mesh = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        mesh->setName(tr("mesh (%1)").arg(key));
+        mesh->setPen(QPen(QColor(30, 120, 200), 1.6));
+        mesh->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 6));
+        for (const simcore::RefinementRow& row : rows)
+            if (row.ok && !row.reference && value(row.errorVolume, row.errorCom) > 0 && row.wallSeconds > 0)
+                mesh->addData(row.wallSeconds, value(row.errorVolume, row.errorCom));
+        QCPGraph* step = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+        step->setName(tr("step (%1=%2, coarser DT)").arg(key).arg(m_result.temporalValue));
+        step->setPen(QPen(QColor(200, 30, 30), 1.6, Qt::DashLine));
+        step->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, 6));
+        for (const simcore::TemporalPoint& p : m_result.temporal)
+            if (p.ok && value(p.errorVolume, p.errorCom) > 0 && p.wallSeconds > 0)
+                step->addData(p.wallSeconds, value(p.errorVolume, p.errorCom));
+        if (panel == 0) {
+            mesh->removeFromLegend();
+            step->removeFromLegend();
+        }
+    }
+    rescaleLogPanels(m_plot);
+
+    if (!m_error.isEmpty()) {
+        m_summary->setText(tr("Failed: %1").arg(m_error));
+        return;
+    }
+    QString summary = QString::fromStdString(m_result.stepRule) + QStringLiteral(". ");
+    if (std::isfinite(m_result.timeErrorVolume))
+        summary += tr("Time error of that step (measured at %1=%2): volume %3, centre of mass %4 m. ")
+                       .arg(key)
+                       .arg(m_result.temporalValue)
+                       .arg(number(m_result.timeErrorVolume), number(m_result.timeErrorCom));
+    for (const simcore::SpatialOrder& fit : simcore::fitSpatialOrders(m_result))
+        summary += fit.points >= 2 ? tr("Spatial order (%1): %2. ").arg(QString::fromStdString(fit.observable)).arg(fit.order, 0, 'f', 2)
+                                   : tr("Spatial order (%1): not resolved. ").arg(QString::fromStdString(fit.observable));
+    m_summary->setText(summary);
+}
+
+QString RefinementDialog::csv() const {
+    std::string text = simcore::refinementCsvHeader();
+    for (const simcore::RefinementRow& row : m_result.rows) text += simcore::refinementCsvRow(m_spec.key, row);
+    return QString::fromStdString(text);
+}
+
+QString RefinementDialog::svg() const {
+    return QString::fromStdString(simcore::refinementSvg(
+        m_spec, m_result, "refinement: " + std::string(simcore::sceneInfo(m_params.kind()).name)));
 }
 
 // ---------------------------------------------------------------- stability scan
@@ -364,23 +525,16 @@ void StabilityDialog::compute(const std::atomic<bool>* cancel) {
 void StabilityDialog::present() {
     const QStringList headers = {tr("integrator"), tr("stable DT [s]"), tr("unstable DT [s]"), tr("predicted DT [s]"),
                                  tr("h·ω at stable"), tr("why it failed above")};
-    m_table->clear();
-    m_table->setColumnCount(int(headers.size()));
-    m_table->setHorizontalHeaderLabels(headers);
-    m_table->setRowCount(int(m_rows.size()));
     auto dt = [](double v) {
         if (std::isinf(v)) return QObject::tr("unlimited");
         if (v <= 0) return QObject::tr("none");
         return number(v);
     };
-    for (int r = 0; r < int(m_rows.size()); ++r) {
-        const simcore::StabilityRow& row = m_rows[std::size_t(r)];
-        const QStringList cells = {QString::fromStdString(row.integrator), dt(row.stable), dt(row.unstable),
-                                   dt(row.predicted), number(row.stable * m_modes.omegaMax),
-                                   QString::fromStdString(row.reasonAbove)};
-        for (int c = 0; c < cells.size(); ++c) m_table->setItem(r, c, new QTableWidgetItem(cells[c]));
-    }
-    m_table->resizeColumnsToContents();
+    QList<QStringList> cells;
+    for (const simcore::StabilityRow& row : m_rows)
+        cells.append({QString::fromStdString(row.integrator), dt(row.stable), dt(row.unstable), dt(row.predicted),
+                      number(row.stable * m_modes.omegaMax), QString::fromStdString(row.reasonAbove)});
+    fillTable(headers, cells);
     m_table->horizontalHeader()->setStretchLastSection(true);
 
     m_plot->clearPlottables();

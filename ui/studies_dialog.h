@@ -1,7 +1,8 @@
 #pragma once
-// Study dialogs: the work-precision study and the stability scan of simcore (study.h,
-// stability.h — the same code as `elastic-lab-cli study` / `stability`), run on a worker
-// thread with a progress bar and Cancel, their results plotted and exportable.
+// Study dialogs: the work-precision study, the refinement study and the stability scan of
+// simcore (study.h, refinement.h, stability.h — the same code as `elastic-lab-cli study`,
+// `study --refine` and `stability`), run on a worker thread with a progress bar and Cancel,
+// their results plotted and exportable.
 //
 // The worker is a std::thread; its progress and its end come back through a Mailbox
 // (mailbox.h), so ThreadSanitizer sees every hand-over (no QtConcurrent, QFutureWatcher or
@@ -14,6 +15,7 @@
 #include <QDialog>
 
 #include "params.h"
+#include "refinement.h"
 #include "stability.h"
 #include "study.h"
 
@@ -53,6 +55,8 @@ protected:
     // destructor: the computation writes the subclass's members, which die before the base.
     void stopAndWait();
     QStringList chosenIntegrators() const;
+    void setChosenIntegrators(const QStringList& names);  // checks exactly these
+    void fillTable(const QStringList& headers, const QList<QStringList>& cells);  // one QStringList per row
     void setProgress(int done, int total, const QString& what);  // thread-safe
     // On the GUI thread, before the run: read the widgets into the spec.
     virtual void prepare() = 0;
@@ -109,6 +113,37 @@ private:
     QComboBox* m_reference = nullptr;
     simcore::StudySpec m_spec;
     simcore::StudyResult m_result;
+};
+
+// The refinement study: one integrator (rk4 checked at first), the levels of the scene's
+// resolution key, an optional fixed step. Plots volume and centre-of-mass error against run
+// time for the mesh levels beside the same level's error at coarser steps.
+class RefinementDialog : public StudyDialogBase {
+    Q_OBJECT
+public:
+    RefinementDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    ~RefinementDialog() override { stopAndWait(); }
+    const simcore::RefinementResult& result() const { return m_result; }
+    void setLevels(const QString& values);  // e.g. "12 24 48"
+    void setStep(const QString& dt);        // "" = chosen automatically
+    void setDuration(double seconds);
+
+protected:
+    void prepare() override;
+    void compute(const std::atomic<bool>* cancel) override;
+    void present() override;
+    QString csv() const override;
+    QString svg() const override;
+    QString validate() const override;
+
+private:
+    simcore::RefinementSpec spec() const;
+    QLineEdit* m_levels = nullptr;
+    QLineEdit* m_dt = nullptr;
+    QLineEdit* m_duration = nullptr;
+    simcore::RefinementSpec m_spec;
+    simcore::RefinementResult m_result;
+    QString m_error;  // the reference failed: why (no rows then)
 };
 
 class StabilityDialog : public StudyDialogBase {

@@ -1,4 +1,5 @@
-// `study`: the work-precision study (simcore/study.h) from the command line.
+// `study`: the work-precision study (simcore/study.h) from the command line, and with
+// --refine the refinement study (simcore/refinement.h).
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -7,6 +8,8 @@
 
 #include "cli.h"
 #include "output.h"
+#include "refinement.h"
+#include "scaling.h"
 #include "study.h"
 
 namespace cli {
@@ -67,12 +70,130 @@ bool writeFile(const std::string& path, const std::string& text) {
     return true;
 }
 
+// Opens --csv before any work: an unwritable path is bad input, found first.
+std::unique_ptr<simcore::AtomicFile> openCsv(const Options& options) {
+    if (!options.has("csv")) return nullptr;
+    auto csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
+    if (!csv->ok()) throw UsageError(csv->error());
+    return csv;
+}
+
+// --refine KEY=v1,v2,...: the same body at several resolutions against the finest.
+int commandRefinement(const Options& options) {
+    for (const char* temporalOnly : {"dts", "repeat", "reference", "shard", "samples", "from-csv"})
+        if (options.has(temporalOnly))
+            throw UsageError(std::string("--") + temporalOnly + " belongs to the temporal study, not to --refine");
+    SceneSetup setup = sceneSetup(options);
+    simcore::RefinementSpec spec;
+    spec.params = setup.params;
+    const std::string refine = options.value("refine");
+    const auto eq = refine.find('=');
+    if (eq == std::string::npos) throw UsageError("--refine: expected KEY=v1,v2,..., got '" + refine + "'");
+    spec.key = refine.substr(0, eq);
+    for (double v : numberList("refine", refine.substr(eq + 1))) {
+        if (v != std::floor(v) || v < 0 || v > 1e6) throw UsageError("--refine: levels are whole numbers, got " + simcore::formatDouble(v));
+        spec.values.push_back(static_cast<int>(v));
+    }
+    const std::vector<std::string> integrators = nameList(options.valueOr("integrators", "rk4"));
+    if (integrators.size() != 1) throw UsageError("--refine takes one integrator (--integrators NAME)");
+    spec.integrator = integrators.front();
+    if (options.has("dt")) spec.dt = setup.params.get("dt");
+    if (options.has("tols")) {
+        const std::vector<double> tols = numberList("tols", options.value("tols"));
+        if (tols.size() != 1) throw UsageError("--refine takes one tolerance (--tols T)");
+        spec.tolerance = tols.front();
+    }
+    spec.duration = options.number("duration", 1.0, 0.0, 1e6, true);
+    spec.interval = options.number("interval", 0.01, 0.0, 1e6, true);
+    spec.temporalRuns = static_cast<int>(options.integer("temporal-runs", 4, 0, 10));
+    spec.options.fixedStep = options.has("fixed-step");
+    if (auto error = simcore::validateRefinement(spec)) throw UsageError(*error);
+    std::unique_ptr<simcore::AtomicFile> csv = openCsv(options);
+
+    const bool quiet = options.has("quiet");
+    auto progress = [&](const simcore::StudyProgress& p) {
+        if (!quiet && p.done < p.total) std::fprintf(stderr, "[%d/%d] %s\n", p.done + 1, p.total, p.what.c_str());
+    };
+    simcore::RefinementResult result;
+    try {
+        result = simcore::runRefinement(spec, progress);
+    } catch (const std::runtime_error& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return kExitFailed;
+    }
+    if (!quiet) {
+        std::printf("refinement   %s, %s at %zu levels against the finest, T = %g s, grid every %g s, scaling = %s\n",
+                    setup.sceneName.c_str(), spec.key.c_str(), result.rows.size(), spec.duration, spec.interval,
+                    simcore::scalingOf(spec.params) == simcore::Scaling::Physical ? "physical" : "thesis");
+        std::printf("step         %s\n", result.stepRule.c_str());
+        if (spec.params.get("perturb") > 0.0)
+            std::printf("note         perturb = %g m is a random displacement per particle: each level starts from a\n"
+                        "             different shape, and that difference does not shrink like the mesh error\n",
+                        spec.params.get("perturb"));
+        std::printf("errors       volume: largest relative error of a layer's enclosed volume; com: largest distance\n"
+                    "             of the mass-weighted centre of mass [m]; both over the grid, against the finest level\n\n");
+        std::printf("%-14s %9s %8s %11s %10s %8s %10s %12s %12s  %s\n", "level", "particles", "springs", "h [m]", "dt [s]",
+                    "steps", "wall_s", "error_volume", "error_com", "status");
+        for (const simcore::RefinementRow& row : result.rows) {
+            const std::string level = spec.key + "=" + std::to_string(row.value);
+            std::printf("%-14s %9d %8d %11.4g %10.4g %8ld %10.4g ", level.c_str(), row.particles, row.springs, row.h, row.dt,
+                        row.steps, row.wallSeconds);
+            if (row.reference)
+                std::printf("%12s %12s  reference\n", "0", "0");
+            else if (row.ok)
+                std::printf("%12.4g %12.4g  ok\n", row.errorVolume, row.errorCom);
+            else
+                std::printf("%12s %12s  %s\n", "-", "-", row.status().c_str());
+        }
+        if (!result.temporal.empty()) {
+            std::printf("\ntemporal     %s=%d at coarser steps against itself at the study's step (the plot's step curve):\n",
+                        spec.key.c_str(), result.temporalValue);
+            for (const simcore::TemporalPoint& p : result.temporal) {
+                std::printf("  %-3s %-10.4g %8ld steps %10.4g s ", p.tolerance > 0 ? "tol" : "dt",
+                            p.tolerance > 0 ? p.tolerance : p.dt, p.steps, p.wallSeconds);
+                if (p.ok) std::printf("%12.4g %12.4g\n", p.errorVolume, p.errorCom);
+                else std::printf("failed (%s)\n", p.failure.c_str());
+            }
+            std::printf("time error   of the study's step, estimated: volume %.3g, com %.3g m (spatial errors below 10x\n"
+                        "             this are not resolved and are left out of the fit)\n",
+                        result.timeErrorVolume, result.timeErrorCom);
+        }
+        std::printf("\nfitted spatial order (slope of log error against log h, h = mean structural rest length,\n"
+                    "over the 3 finest resolved levels; measured against the finest, which steepens it slightly):\n");
+        for (const simcore::SpatialOrder& fit : simcore::fitSpatialOrders(result)) {
+            if (std::isfinite(fit.order))
+                std::printf("  %-8s %5.2f  (%d points)\n", fit.observable.c_str(), fit.order, fit.points);
+            else
+                std::printf("  %-8s   -    (%d usable points)\n", fit.observable.c_str(), fit.points);
+        }
+    }
+    if (csv) {
+        csv->write(simcore::refinementCsvHeader());
+        for (const simcore::RefinementRow& row : result.rows) csv->write(simcore::refinementCsvRow(spec.key, row));
+        if (!csv->commit()) {
+            std::fprintf(stderr, "error: %s\n", csv->error().c_str());
+            return kExitBadInput;
+        }
+    }
+    if (options.has("plot")) {
+        const std::string title = options.valueOr(
+            "title", setup.sceneName + ": mesh error and step error against run time, T = " + simcore::formatDouble(spec.duration) + " s");
+        if (!writeFile(options.value("plot"), simcore::refinementSvg(spec, result, title))) return kExitBadInput;
+    }
+    return kExitOk;
+}
+
 }  // namespace
 
 int commandStudy(const std::vector<std::string>& args) {
     std::vector<std::string> names = {"scene", "set", "integrators", "dts", "tols", "duration", "repeat",
-                                      "reference", "csv", "plot", "shard", "samples", "from-csv", "title"};
+                                      "reference", "csv", "plot", "shard", "samples", "from-csv", "title",
+                                      "refine", "dt", "interval", "temporal-runs"};
     Options options(args, names, {"fixed-step", "quiet"});
+    if (options.has("refine")) return commandRefinement(options);
+    for (const char* refineOnly : {"dt", "interval", "temporal-runs"})
+        if (options.has(refineOnly))
+            throw UsageError(std::string("--") + refineOnly + " belongs to --refine; the temporal study takes --dts");
 
     if (options.has("from-csv")) {
         // Merge mode: fit and plot rows written earlier (e.g. the shards, concatenated).
@@ -104,12 +225,7 @@ int commandStudy(const std::vector<std::string>& args) {
     std::tie(spec.shardIndex, spec.shardCount) = parseShard(options);
     if (auto error = simcore::validateStudy(spec)) throw UsageError(*error);
 
-    // Open outputs first: an unwritable path is bad input, found before any work.
-    std::unique_ptr<simcore::AtomicFile> csv;
-    if (options.has("csv")) {
-        csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
-        if (!csv->ok()) throw UsageError(csv->error());
-    }
+    std::unique_ptr<simcore::AtomicFile> csv = openCsv(options);
     const bool quiet = options.has("quiet");
     const auto items = simcore::shardItems(simcore::studyItems(spec), spec.shardIndex, spec.shardCount);
     if (!quiet)

@@ -35,6 +35,11 @@ commands:
   study --from-csv FILE [--plot FILE.svg]
                                   work-precision study: error against wall time, force evaluations
                                   and dt; fitted orders; shards concatenate into the full CSV
+  study --scene S [--set key=value]... --refine KEY=v1,v2,... [--integrators NAME] [--dt H | --tols T]
+      [--duration T] [--interval I] [--temporal-runs K] [--csv FILE] [--plot FILE.svg] [--quiet]
+                                  refinement study: the same body at each resolution (KEY: particles,
+                                  subdivisions or slices) against the finest; volume and centre-of-mass
+                                  errors, spatial order, and the step's own error beside it
   stability --scene S [--set key=value]... --integrators a,b,... [--duration T] [--csv FILE]
       [--shard K/N] [--perturb A]
                                   largest stable dt per integrator (bisection) beside the

@@ -28,6 +28,19 @@ $CLI study --scene sphere3d --set gravity=0 --set perturb=0.05 --integrators $AL
     --dts 0.002,0.001,0.0005 --tols 1e-3,1e-5,1e-7 --duration 0.5 --repeat 3 \
     --csv "$OUT/study-sphere3d.csv" --plot "$OUT/study-sphere3d.svg" > "$OUT/study-sphere3d.txt"
 
+# Refinement: the same physical body at several resolutions against the finest (rk4, the step
+# chosen automatically; docs/numerics.md "Refinement study"). Weightless, the body inflates from
+# its rest shape to equilibrium; with the floor it falls and hits it (the ring to 0.8 s: at 96
+# particles its inner layer collapses at 0.85 s).
+$CLI study --scene ring2d --set gravity=0 --refine particles=12,24,48,96 --duration 1 \
+    --csv "$OUT/refine-ring2d.csv" --plot "$OUT/refine-ring2d.svg" > "$OUT/refine-ring2d.txt" 2>/dev/null
+$CLI study --scene ring2d --refine particles=12,24,48,96 --duration 0.8 \
+    --csv "$OUT/refine-ring2d-floor.csv" --plot "$OUT/refine-ring2d-floor.svg" > "$OUT/refine-ring2d-floor.txt" 2>/dev/null
+$CLI study --scene sphere3d --set gravity=0 --refine subdivisions=1,2,3,4 --duration 0.5 \
+    --csv "$OUT/refine-sphere3d.csv" --plot "$OUT/refine-sphere3d.svg" > "$OUT/refine-sphere3d.txt" 2>/dev/null
+$CLI study --scene sphere3d --refine subdivisions=1,2,3,4 --duration 1 \
+    --csv "$OUT/refine-sphere3d-floor.csv" --plot "$OUT/refine-sphere3d-floor.svg" > "$OUT/refine-sphere3d-floor.txt" 2>/dev/null
+
 # Stability: measured (bisection) beside the linearised prediction.
 $CLI stability --scene spring1d --integrators $ALL --duration 5 > "$OUT/stability-spring1d.txt"
 $CLI stability --scene spring1d --set kd=0 --set gravity=0 --set fixed_end=0 --set box=100 --set initial_length=1.01 \
