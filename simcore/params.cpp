@@ -3,6 +3,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace simcore {
@@ -189,6 +190,25 @@ std::optional<std::string> validateValue(const ParamSpec& spec, double value) {
     return std::nullopt;
 }
 
+std::string quoteShort(std::string_view text, std::size_t limit) {
+    std::string out = "'";
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (i == limit) {
+            out += "...' (" + std::to_string(text.size()) + " bytes)";
+            return out;
+        }
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x20 && c < 0x7f && c != '\\' && c != '\'') {
+            out += static_cast<char>(c);
+        } else {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+            out += escaped;
+        }
+    }
+    return out + "'";
+}
+
 std::optional<double> parseNumber(std::string_view text) {
     if (text.empty()) return std::nullopt;
     double value = 0.0;
@@ -206,7 +226,7 @@ std::optional<std::string> ParameterSet::set(std::string_view key, double value)
             if (!allowed.empty()) allowed += ' ';
             allowed += s->key;
         }
-        return "unknown parameter '" + std::string(key) + "' for this scene; allowed: " + allowed;
+        return "unknown parameter " + quoteShort(key) + " for this scene; allowed: " + allowed;
     }
     if (auto error = validateValue(*spec, value)) return error;
     m_values[std::string(key)] = value;
@@ -218,7 +238,8 @@ std::optional<std::string> ParameterSet::setFromText(std::string_view key, std::
     const auto value = spec ? parseValue(*spec, text) : parseNumber(text);
     if (!value) {
         std::string allowed = spec ? "; allowed " + spec->rangeText() : "";
-        return std::string(key) + ": '" + std::string(text) + "' is not a finite number" + allowed;
+        const std::string name = spec ? std::string(key) : quoteShort(key);
+        return name + ": " + quoteShort(text) + " is not a finite number" + allowed;
     }
     return set(key, *value);
 }

@@ -68,6 +68,10 @@ std::vector<const ParamSpec*> parametersFor(SceneKind kind);
 // Checks a value against the spec; the message names the key, what was given and what is allowed.
 std::optional<std::string> validateValue(const ParamSpec& spec, double value);
 
+// A value quoted for a message: at most `limit` bytes, non-printable bytes as \xNN, and the
+// full length said when cut (a 5 MB bad value is never echoed whole).
+std::string quoteShort(std::string_view text, std::size_t limit = 40);
+
 // Parses a number the way every input boundary does: the whole text must be a finite number.
 std::optional<double> parseNumber(std::string_view text);
 

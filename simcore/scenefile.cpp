@@ -1,6 +1,13 @@
 #include "scenefile.h"
 
-#include <fstream>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -32,7 +39,7 @@ std::optional<std::string> onlyKeys(const Json& object, const std::string& where
         if (!known) {
             std::string list;
             for (const char* key : allowed) list += (list.empty() ? "" : ", ") + std::string(key);
-            return "unknown key '" + it.key() + "' in " + where + "; allowed: " + list;
+            return "unknown key " + quoteShort(it.key()) + " in " + where + "; allowed: " + list;
         }
     }
     return std::nullopt;
@@ -59,13 +66,46 @@ std::optional<std::string> readVectors(const Json& array, const std::string& key
     return std::nullopt;
 }
 
-}  // namespace
+// A key that appears twice in one object: JSON leaves it to the reader (nlohmann keeps the last),
+// and a scene file with two "ks" is a mistake to point at, not a value to pick.
+struct DuplicateKey {
+    std::string key;
+    int occurrence = 0;  // the how-many-th time this key text appears in the file
+};
+
+// 1-based line of the n-th `"key"` followed by a colon (only keys are followed by one).
+int lineOfKey(const std::string& text, const std::string& key, int occurrence) {
+    const std::string quoted = '"' + key + '"';
+    std::size_t at = 0;
+    for (int seen = 0; (at = text.find(quoted, at)) != std::string::npos; at += quoted.size()) {
+        std::size_t after = at + quoted.size();
+        while (after < text.size() && std::isspace(static_cast<unsigned char>(text[after]))) ++after;
+        if (after < text.size() && text[after] == ':' && ++seen == occurrence) return lineOf(text, at);
+    }
+    return 0;
+}
 
 // Everything but the exception boundary (parseSceneFile).
-static SceneFileResult parseSceneJson(const std::string& text) {
+SceneFileResult parseSceneJson(const std::string& text) {
     Json root;
     try {
-        root = Json::parse(text);
+        std::vector<std::set<std::string>> open;  // the keys of each object being parsed
+        std::map<std::string, int> occurrences;
+        root = Json::parse(text, [&](int, Json::parse_event_t event, Json& parsed) {
+            if (event == Json::parse_event_t::object_start) {
+                open.emplace_back();
+            } else if (event == Json::parse_event_t::object_end) {
+                open.pop_back();
+            } else if (event == Json::parse_event_t::key) {
+                const std::string key = parsed.get<std::string>();
+                const int n = ++occurrences[key];
+                if (!open.back().insert(key).second) throw DuplicateKey{key, n};
+            }
+            return true;
+        });
+    } catch (const DuplicateKey& d) {
+        return failure("duplicate key " + quoteShort(d.key) + " at line " +
+                       std::to_string(lineOfKey(text, d.key, d.occurrence)) + ": a key may appear once per object");
     } catch (const Json::parse_error& e) {
         return failure("not valid JSON at line " + std::to_string(lineOf(text, e.byte == 0 ? 0 : e.byte - 1)) +
                        ": " + e.what());
@@ -108,7 +148,7 @@ static SceneFileResult parseSceneJson(const std::string& text) {
                 continue;
             }
             if (!it.value().is_number())
-                return failure("parameters." + it.key() + ": expected a number, got " + std::string(it.value().type_name()));
+                return failure("parameters." + quoteShort(it.key()) + ": expected a number, got " + std::string(it.value().type_name()));
             if (auto error = file.params.set(it.key(), it.value().get<double>()))
                 return failure("parameters." + *error);
         }
@@ -151,6 +191,8 @@ static SceneFileResult parseSceneJson(const std::string& text) {
     return {std::move(file), {}};
 }
 
+}  // namespace
+
 SceneFileResult parseSceneFile(const std::string& text) {
     try {
         return parseSceneJson(text);
@@ -160,12 +202,54 @@ SceneFileResult parseSceneFile(const std::string& text) {
 }
 
 SceneFileResult readSceneFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return failure("cannot read '" + path + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    SceneFileResult result = parseSceneFile(text.str());
-    if (!result.file) result.error = path + ": " + result.error;
+    // Only a regular file of bounded size is read: a directory, a FIFO (which would wait for a
+    // writer for ever), a device (/dev/zero never ends) or a socket is refused by what it is.
+    // O_NONBLOCK: opening a FIFO must not wait for a writer either.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    // The path is quoted (escaped, shortened): a name may hold any byte, a NUL included.
+    const std::string name = quoteShort(path, 300);
+    if (fd < 0) return failure(name + ": cannot read (" + std::strerror(errno) + ")");
+    struct stat st {};
+    std::string text;
+    std::string error;
+    if (::fstat(fd, &st) != 0) {
+        error = std::string("cannot read (") + std::strerror(errno) + ")";
+    } else if (S_ISDIR(st.st_mode)) {
+        error = "is a directory, not a scene file";
+    } else if (!S_ISREG(st.st_mode)) {
+        error = std::string("is not a regular file (") +
+                (S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISCHR(st.st_mode) ? "a character device"
+                                               : S_ISBLK(st.st_mode) ? "a block device"
+                                               : S_ISSOCK(st.st_mode) ? "a socket" : "a special file") +
+                "); scene files are read from regular files only";
+    } else if (st.st_size > kMaxSceneFileBytes) {
+        error = "is " + std::to_string(st.st_size) + " bytes; a scene file is at most " +
+                std::to_string(kMaxSceneFileBytes) + " bytes (256 MiB)";
+    } else {
+        // Read what is there, never more than the bound (the file may grow while we read).
+        text.resize(static_cast<std::size_t>(st.st_size) + 1);
+        std::size_t got = 0;
+        while (got < text.size()) {
+            const ssize_t n = ::read(fd, text.data() + got, text.size() - got);
+            if (n < 0 && errno == EINTR) continue;
+            if (n < 0) {
+                error = std::string("cannot read (") + std::strerror(errno) + ")";
+                break;
+            }
+            if (n == 0) break;
+            got += static_cast<std::size_t>(n);
+            if (got > static_cast<std::size_t>(kMaxSceneFileBytes)) {
+                error = "grew beyond " + std::to_string(kMaxSceneFileBytes) + " bytes while it was read";
+                break;
+            }
+            if (got == text.size()) text.resize(std::min<std::size_t>(2 * text.size(), kMaxSceneFileBytes + 1));
+        }
+        text.resize(got);
+    }
+    ::close(fd);
+    if (!error.empty()) return failure(name + ": " + error);
+    SceneFileResult result = parseSceneFile(text);
+    if (!result.file) result.error = name + ": " + result.error;
     return result;
 }
 

@@ -21,6 +21,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <Eigen/Core>
 
@@ -52,7 +53,11 @@ struct SceneFileResult {
 };
 
 SceneFileResult parseSceneFile(const std::string& text);
+// Reads a regular file of at most kMaxSceneFileBytes; a directory, FIFO, device or socket is
+// refused by what it is, without waiting on it or reading it to the end.
+inline constexpr long long kMaxSceneFileBytes = 256LL * 1024 * 1024;
 SceneFileResult readSceneFile(const std::string& path);
+
 // The JSON text of a simulation (with its state when withState).
 std::string sceneFileText(const Simulation& sim, const std::string& sceneName, bool withState);
 // Restores a saved state into a simulation built from the same file; error text or nothing.

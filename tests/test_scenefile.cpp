@@ -5,6 +5,8 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include <sys/stat.h>
+
 #include "scenefile.h"
 #include "simulation.h"
 #include "test_support.h"
@@ -100,6 +102,11 @@ private slots:
         QTest::newRow("state of wrong size") << "\"positions\": [[" << "\"positions\": [[0, 0, 0], [" << "positions";
         QTest::newRow("unknown state key") << "\"time\":" << "\"clock\":" << "clock";
         QTest::newRow("crossed radii") << "\"radius_inner\": 1.5" << "\"radius_inner\": 2.5" << "radius_inner (2.5 m) must be below";
+        // Duplicate keys (issue 18): refused with the key and the line of the second one.
+        QTest::newRow("duplicate parameter") << "\"kd\": 15," << "\"kd\": 15,\n    \"kd\": 16," << "duplicate key 'kd' at line 9";
+        QTest::newRow("duplicate top key") << "\"integrator\": \"rk4\"," << "\"integrator\": \"rk4\", \"integrator\": \"euler\","
+                                           << "duplicate key 'integrator' at line 5";
+        QTest::newRow("duplicate state key") << "\"time\":" << "\"step\": 0, \"time\":" << "duplicate key 'step'";
     }
     void refusesBadFiles() {
         QFETCH(QString, from);
@@ -111,6 +118,42 @@ private slots:
         const SceneFileResult read = parseSceneFile(withLine(good, from.toStdString(), to.toStdString()));
         QVERIFY(!read.file);
         QVERIFY2(QString::fromStdString(read.error).contains(mentions), read.error.c_str());
+    }
+    void longBadValuesAreQuotedShort() {
+        // A 5 MB value is quoted by a short, escaped prefix and its length, never whole.
+        const std::string huge(5'000'000, 'x');
+        ParameterSet p(SceneKind::Ring2d);
+        const auto error = p.setFromText("ks", huge + "\x01");
+        QVERIFY(error);
+        QVERIFY2(error->size() < 200, error->c_str());
+        QVERIFY(error->find("(5000001 bytes)") != std::string::npos);
+        const SceneFileResult read = parseSceneFile("{\"" + huge + "\": 1}");
+        QVERIFY(!read.file);
+        QVERIFY2(read.error.size() < 300, read.error.substr(0, 300).c_str());
+        QCOMPARE(quoteShort("a\nb'"), std::string("'a\\x0ab\\x27'"));
+    }
+    void onlyRegularFilesOfBoundedSizeAreRead() {
+        // A directory, a FIFO (no writer: it must not wait), a device that never ends: each is
+        // refused by what it is, at once.
+        QTemporaryDir dir;
+        const std::string folder = dir.path().toStdString();
+        QVERIFY(readSceneFile(folder).error.find("is a directory") != std::string::npos);
+        const std::string fifo = folder + "/scene.fifo";
+        QCOMPARE(::mkfifo(fifo.c_str(), 0600), 0);
+        const SceneFileResult fromFifo = readSceneFile(fifo);
+        QVERIFY2(fromFifo.error.find("is not a regular file (a FIFO)") != std::string::npos, fromFifo.error.c_str());
+        const SceneFileResult zero = readSceneFile("/dev/zero");
+        QVERIFY2(zero.error.find("is not a regular file (a character device)") != std::string::npos, zero.error.c_str());
+        QVERIFY(readSceneFile(folder + "/missing.json").error.find("No such file") != std::string::npos);
+        // Beyond the bound: a sparse file (no disk used) one byte over 256 MiB.
+        const std::string big = folder + "/big.json";
+        {
+            QFile f(QString::fromStdString(big));
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            QVERIFY(f.resize(kMaxSceneFileBytes + 1));
+        }
+        const SceneFileResult tooBig = readSceneFile(big);
+        QVERIFY2(tooBig.error.find("a scene file is at most 268435456 bytes") != std::string::npos, tooBig.error.c_str());
     }
     void olderMinimalFileLoads() {
         // Version 1 with only what is required: every parameter takes its default.
