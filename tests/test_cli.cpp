@@ -1,6 +1,8 @@
 // elastic-lab-cli contract: listings, CSV and state columns, exit codes, no NaN in output.
 #include <QtTest>
 
+#include <unistd.h>
+
 #include "cli_process.h"
 
 #include <QProcess>
@@ -232,6 +234,47 @@ private slots:
                                "--duration", "0.5"});
         QCOMPARE(ok.code, 0);
         QVERIFY2(!ok.err.contains("warning"), qPrintable(ok.err));
+    }
+    void outputsNeverOverwriteInputsOrEachOther() {
+        // Issue 18: compared by file identity, not spelling: the same name, "./" and "..", a
+        // hard link and a symbolic link all count. Refused with exit 2 before anything is written.
+        QDir(m_dir.path()).mkdir("sub");
+        const QString scene = path("exp.json");
+        QCOMPARE(cli({"run", "--scene", "ring2d", "--duration", "0.01", "--save-scene", scene}).code, 0);
+        QFile f(scene);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray saved = f.readAll();
+        f.close();
+        QVERIFY(QFile::link(scene, path("link.csv")));
+        QCOMPARE(::link(scene.toUtf8().constData(), path("hard.csv").toUtf8().constData()), 0);
+        const QString fresh = path("fresh.csv"), freshOtherSpelling = m_dir.path() + "/sub/../fresh.csv";
+        const QList<QStringList> clashes = {
+            {"run", "--duration", "0.01", "--csv", fresh, "--state", fresh},
+            {"run", "--duration", "0.01", "--csv", fresh, "--state", freshOtherSpelling},
+            {"run", "--scene", scene, "--duration", "0.01", "--csv", scene},
+            {"run", "--scene", scene, "--duration", "0.01", "--state", path("link.csv")},
+            {"run", "--scene", scene, "--duration", "0.01", "--csv", path("hard.csv")},
+            {"study", "--scene", "spring1d", "--integrators", "rk4", "--dts", "0.01", "--csv", fresh, "--plot", fresh},
+            {"stability", "--scene", scene, "--integrators", "rk4", "--csv", scene},
+        };
+        for (const QStringList& args : clashes) {
+            const Result r = cli(args);
+            QCOMPARE(r.code, 2);
+            QVERIFY2(r.err.contains("is the same file as --"), qPrintable(r.err));
+            QVERIFY2(!QFileInfo::exists(fresh), qPrintable(args.join(' ')));
+        }
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), saved);
+        // Distinct files are fine.
+        QCOMPARE(cli({"run", "--scene", scene, "--duration", "0.01", "--csv", fresh, "--state", path("state.csv")}).code, 0);
+    }
+    void runawayStepCountsAreRefused() {
+        // --dt 1e-300 for 0.01 s would be 1e298 steps: refused at once, with the limit and the
+        // way around it.
+        const Result r = cli({"run", "--scene", "ring2d", "--dt", "1e-300", "--duration", "0.01"});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("steps; at most 1000000000 per run"), qPrintable(r.err));
+        QCOMPARE(cli({"run", "--scene", "ring2d", "--dt", "1e-5", "--duration", "0.001"}).code, 0);
     }
     void killedRunLeavesExistingFilesAndNothingElse() {
         // A run killed outright (SIGKILL: no handler, no destructor runs) while it streams its

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+
+#include <sys/stat.h>
 
 #include "integrators.h"
 #include "scenefile.h"
@@ -71,6 +74,46 @@ long Options::integer(const std::string& name, long fallback, long min, long max
     if (!v || *v != std::floor(*v) || *v < static_cast<double>(min) || *v > static_cast<double>(max))
         throw UsageError("--" + name + ": '" + value(name) + "' is not allowed; allowed " + range);
     return static_cast<long>(*v);
+}
+
+namespace {
+
+// What a path names: an existing file's (device, inode), or for a file still to be created the
+// (device, inode) of its folder and its name.
+struct FileIdentity {
+    dev_t device = 0;
+    ino_t inode = 0;
+    std::string newName;  // empty: an existing file
+    bool operator==(const FileIdentity&) const = default;
+};
+
+std::optional<FileIdentity> identify(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0) return FileIdentity{st.st_dev, st.st_ino, {}};
+    const std::filesystem::path p(path);
+    const std::filesystem::path folder = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+    if (::stat(folder.c_str(), &st) != 0) return std::nullopt;  // the write reports the missing folder
+    return FileIdentity{st.st_dev, st.st_ino, p.filename().string()};
+}
+
+}  // namespace
+
+void checkDistinctFiles(const Options& options, std::initializer_list<const char*> outputs) {
+    std::vector<std::pair<std::string, FileIdentity>> seen;  // option, identity
+    auto add = [&](const std::string& option, const std::string& path) {
+        const auto id = identify(path);
+        if (!id) return;
+        for (const auto& [other, otherId] : seen)
+            if (otherId == *id)
+                throw UsageError("--" + option + " " + simcore::quoteShort(path, 200) + " is the same file as --" + other +
+                                 "; every output must be a file of its own, apart from the inputs");
+        seen.emplace_back(option, *id);
+    };
+    // Inputs first, so that the message names the output that would have destroyed one.
+    if (options.has("scene") && options.value("scene").ends_with(".json")) add("scene", options.value("scene"));
+    if (options.has("from-csv")) add("from-csv", options.value("from-csv"));
+    for (const char* name : outputs)
+        if (options.has(name)) add(name, options.value(name));
 }
 
 std::vector<std::string> sceneOptionNames() { return {"scene", "set", "dt", "integrator"}; }

@@ -19,6 +19,9 @@ namespace cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitFailed = 3;
+// The most steps one fixed-step run may take (1e9: about 3 days for the default ring on this
+// machine): more is a mistake in --dt or --duration, refused before it runs.
+inline constexpr double kMaxSteps = 1e9;
 
 // Bad input: reported on one line, exit status 2.
 struct UsageError : std::runtime_error {
@@ -61,6 +64,12 @@ std::vector<std::string> integratorOptionNames();  // the ones with a value
 std::vector<std::string> integratorFlagNames();    // the flags
 // The pre-run warning: dt above the explicit stability estimate (empty when none applies).
 std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator);
+// Outputs never overwrite an input or each other (issue 18): the files named by the given output
+// options, by `--scene FILE.json` and by `--from-csv`, compared by identity, not by spelling
+// (device and inode of an existing file, or of the folder a new one goes in and its name, so
+// links, "./" and ".." count). A clash is a UsageError naming both options, before anything is
+// written.
+void checkDistinctFiles(const Options& options, std::initializer_list<const char*> outputs);
 // The option names sceneSetup reads, for a command's allowed list.
 std::vector<std::string> sceneOptionNames();
 

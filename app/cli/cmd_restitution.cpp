@@ -12,6 +12,7 @@ int commandRestitution(const std::vector<std::string>& args) {
     auto names = sceneOptionNames();
     names.insert(names.end(), {"speeds", "csv"});
     Options options(args, names, {});
+    checkDistinctFiles(options, {"csv", "plot"});
     SceneSetup setup = sceneSetup(options);
     const std::vector<double> speeds = numberList("speeds", options.has("speeds") ? options.value("speeds") : "0.3,1,3,10,30");
     std::unique_ptr<simcore::AtomicFile> csv;

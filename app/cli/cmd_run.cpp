@@ -1,5 +1,6 @@
 // `run`: one headless simulation, with a CSV time series and the final state.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -46,9 +47,23 @@ int commandRun(const std::vector<std::string>& args) {
     std::vector<std::string> flags = {"quiet"};
     for (const auto& n : integratorFlagNames()) flags.push_back(n);
     Options options(args, names, flags);
+    checkDistinctFiles(options, {"csv", "state", "save-scene"});
     SceneSetup setup = sceneSetup(options);
     const double duration = options.number("duration", 5.0, 0.0, 1e7, true);
     const long every = options.integer("every", 1, 1, 1000000000L);
+    // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
+    // refused at once instead of running for ever.
+    if (!simcore::makeIntegrator(setup.integrator)->adaptive() || options.has("fixed-step")) {
+        const double steps = std::ceil(duration / setup.params.get("dt") - 1e-9);
+        if (steps > kMaxSteps) {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "--duration %g s at dt %g s would take %.3g steps; at most %.0f per run (use a larger --dt, "
+                          "a shorter --duration, or an adaptive integrator)",
+                          duration, setup.params.get("dt"), steps, kMaxSteps);
+            throw UsageError(text);
+        }
+    }
 
     // Open every output before running: an unwritable path is bad input, found at once.
     std::unique_ptr<simcore::AtomicFile> csv, state, sceneOut;

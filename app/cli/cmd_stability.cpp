@@ -24,6 +24,7 @@ std::string stepText(double h) {
 int commandStability(const std::vector<std::string>& args) {
     Options options(args, {"scene", "set", "integrators", "duration", "csv", "shard", "perturb", "hmin", "hmax"},
                     {"quiet"});
+    checkDistinctFiles(options, {"csv"});
     SceneSetup setup = sceneSetup(options);
     simcore::StabilitySpec spec;
     spec.params = setup.params;

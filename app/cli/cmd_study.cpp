@@ -190,6 +190,7 @@ int commandStudy(const std::vector<std::string>& args) {
                                       "reference", "csv", "plot", "shard", "samples", "from-csv", "title",
                                       "refine", "dt", "interval", "temporal-runs"};
     Options options(args, names, {"fixed-step", "quiet"});
+    checkDistinctFiles(options, {"csv", "plot"});
     if (options.has("refine")) return commandRefinement(options);
     for (const char* refineOnly : {"dt", "interval", "temporal-runs"})
         if (options.has(refineOnly))
