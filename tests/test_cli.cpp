@@ -276,6 +276,31 @@ private slots:
         QVERIFY2(r.err.contains("steps; at most 1000000000 per run"), qPrintable(r.err));
         QCOMPARE(cli({"run", "--scene", "ring2d", "--dt", "1e-5", "--duration", "0.001"}).code, 0);
     }
+    void nonsenseIsRefusedAndNothingIsSilent() {
+        // Issue 18: lists without empty or repeated items, bounded study work, a checked
+        // standard output, and a run that ends past --duration says so.
+        const QList<QPair<QStringList, QString>> refused = {
+            {{"stability", "--integrators", ""}, "needs a comma-separated list"},
+            {{"stability", "--integrators", "rk4,,euler"}, "item 2 is empty"},
+            {{"study", "--scene", "spring1d", "--integrators", "rk4,rk4", "--dts", "0.01"}, "'rk4' is listed twice"},
+            {{"study", "--scene", "spring1d", "--integrators", "rk4", "--dts", "0.01,0.010"}, "listed twice"},
+            {{"study", "--scene", "spring1d", "--integrators", "rk4", "--dts", "1e-300"}, "at most 1000000000"},
+        };
+        for (const auto& [args, message] : refused) {
+            const Result r = cli(args);
+            QCOMPARE(r.code, 2);
+            QVERIFY2(r.err.contains(message), qPrintable(args.join(' ') + ": " + r.err));
+        }
+        QProcess full;
+        full.setStandardOutputFile("/dev/full");
+        full.start(ELASTIC_LAB_CLI, {"study", "--scene", "spring1d", "--integrators", "rk4", "--dts", "0.01", "--duration", "0.1"});
+        QVERIFY(testsupport::waitForExit(full));
+        QCOMPARE(full.exitCode(), 2);
+        QVERIFY(full.readAllStandardError().contains("writing standard output failed"));
+        const Result overshoot = cli({"run", "--integrator", "implicit-euler", "--dt", "0.5", "--duration", "0.1", "--quiet"});
+        QCOMPARE(overshoot.code, 0);
+        QVERIFY2(overshoot.err.contains("ended at t = 0.5 s"), qPrintable(overshoot.err));
+    }
     void killedRunLeavesExistingFilesAndNothingElse() {
         // A run killed outright (SIGKILL: no handler, no destructor runs) while it streams its
         // CSV and state: the files that were there keep their bytes and nothing else appears

@@ -250,6 +250,14 @@ private slots:
         QVERIFY(testsupport::waitForExit(bad));
         QCOMPARE(bad.exitCode(), 2);
         QVERIFY(bad.readAllStandardError().contains("ks"));
+        // --after must be finite (inf was never reached, nan compared false with everything).
+        for (const char* after : {"nan", "inf", "-1"}) {
+            QProcess refused;
+            refused.start(ELASTIC_LAB_GUI, {"--screenshot", path, "--after", after});
+            QVERIFY(testsupport::waitForExit(refused));
+            QCOMPARE(refused.exitCode(), 2);
+            QVERIFY(refused.readAllStandardError().contains("--after needs a finite time"));
+        }
     }
 
     void sceneFileOnTheCommandLine() {

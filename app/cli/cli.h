@@ -78,7 +78,8 @@ int commandParams(const std::vector<std::string>& args);
 int commandIntegrators(const std::vector<std::string>& args);
 // Comma-separated lists and --shard K/N (returned 0-based: {K-1, N}).
 std::vector<double> numberList(const std::string& option, const std::string& text);
-std::vector<std::string> nameList(const std::string& text);
+std::vector<std::string> nameList(const std::string& option, const std::string& text);
+// Both refuse an empty list, an empty item and an item listed twice.
 std::pair<int, int> parseShard(const Options& options);
 
 int commandRun(const std::vector<std::string>& args);

@@ -110,6 +110,13 @@ int commandRun(const std::vector<std::string>& args) {
             return kExitBadInput;
         }
     if (!options.has("quiet")) printSummary(sim, setup, wall);
+    // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a
+    // duration that is not a multiple of dt ends past it; it is said, never silent.
+    if (!sim.failed() && sim.time() > tEnd + 1e-9 * sim.dt())
+        std::fprintf(stderr,
+                     "note: --duration %g s is not a multiple of dt %g s: the run took whole steps and ended at "
+                     "t = %g s, %g s past the end asked for\n",
+                     duration, sim.dt(), sim.time(), sim.time() - tEnd);
     if (sim.failed()) {
         const simcore::Failure& f = *sim.failure();
         std::fprintf(stderr, "simulation failed at step %ld, t = %g s: %s\n", f.step, f.time,

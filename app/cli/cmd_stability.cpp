@@ -28,7 +28,7 @@ int commandStability(const std::vector<std::string>& args) {
     SceneSetup setup = sceneSetup(options);
     simcore::StabilitySpec spec;
     spec.params = setup.params;
-    spec.integrators = nameList(options.valueOr("integrators", "euler,midpoint,rk4,symplectic-euler,verlet,rk45,implicit-euler"));
+    spec.integrators = nameList("integrators", options.valueOr("integrators", "euler,midpoint,rk4,symplectic-euler,verlet,rk45,implicit-euler"));
     for (const auto& name : spec.integrators)
         if (!simcore::makeIntegrator(name))
             throw UsageError("unknown integrator '" + name + "'; allowed: " + simcore::integratorNames());

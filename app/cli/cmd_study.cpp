@@ -1,5 +1,6 @@
 // `study`: the work-precision study (simcore/study.h) from the command line, and with
 // --refine the refinement study (simcore/refinement.h).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -14,27 +15,38 @@
 
 namespace cli {
 
+// Comma-separated lists: every item present (no "a,,b", no trailing comma), no item twice.
+std::vector<std::string> listItems(const std::string& option, const std::string& text) {
+    std::vector<std::string> items;
+    std::string item;
+    std::stringstream ss(text);
+    while (std::getline(ss, item, ',')) items.push_back(item);
+    if (!text.empty() && text.back() == ',') items.emplace_back();
+    if (items.empty()) throw UsageError("--" + option + " needs a comma-separated list, got nothing");
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (items[i].empty())
+            throw UsageError("--" + option + " " + simcore::quoteShort(text) + ": item " + std::to_string(i + 1) +
+                             " is empty");
+        for (std::size_t j = 0; j < i; ++j)
+            if (items[j] == items[i])
+                throw UsageError("--" + option + ": " + simcore::quoteShort(items[i]) + " is listed twice");
+    }
+    return items;
+}
+
 std::vector<double> numberList(const std::string& option, const std::string& text) {
     std::vector<double> values;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
+    for (const std::string& item : listItems(option, text)) {
         const auto v = simcore::parseNumber(item);
-        if (!v) throw UsageError("--" + option + ": '" + item + "' is not a finite number");
+        if (!v) throw UsageError("--" + option + ": " + simcore::quoteShort(item) + " is not a finite number");
+        for (double earlier : values)
+            if (earlier == *v) throw UsageError("--" + option + ": " + simcore::quoteShort(item) + " is listed twice");
         values.push_back(*v);
     }
-    if (values.empty()) throw UsageError("--" + option + " needs a comma-separated list");
     return values;
 }
 
-std::vector<std::string> nameList(const std::string& text) {
-    std::vector<std::string> names;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ','))
-        if (!item.empty()) names.push_back(item);
-    return names;
-}
+std::vector<std::string> nameList(const std::string& option, const std::string& text) { return listItems(option, text); }
 
 std::pair<int, int> parseShard(const Options& options) {
     if (!options.has("shard")) return {0, 1};
@@ -94,7 +106,7 @@ int commandRefinement(const Options& options) {
         if (v != std::floor(v) || v < 0 || v > 1e6) throw UsageError("--refine: levels are whole numbers, got " + simcore::formatDouble(v));
         spec.values.push_back(static_cast<int>(v));
     }
-    const std::vector<std::string> integrators = nameList(options.valueOr("integrators", "rk4"));
+    const std::vector<std::string> integrators = nameList("integrators", options.valueOr("integrators", "rk4"));
     if (integrators.size() != 1) throw UsageError("--refine takes one integrator (--integrators NAME)");
     spec.integrator = integrators.front();
     if (options.has("dt")) spec.dt = setup.params.get("dt");
@@ -215,7 +227,7 @@ int commandStudy(const std::vector<std::string>& args) {
     SceneSetup setup = sceneSetup(options);
     simcore::StudySpec spec;
     spec.params = setup.params;
-    spec.integrators = nameList(options.valueOr("integrators", "euler,midpoint,rk4"));
+    spec.integrators = nameList("integrators", options.valueOr("integrators", "euler,midpoint,rk4"));
     if (options.has("dts")) spec.dts = numberList("dts", options.value("dts"));
     if (options.has("tols")) spec.tolerances = numberList("tols", options.value("tols"));
     spec.duration = options.number("duration", 2.0, 0.0, 1e6, true);
@@ -225,6 +237,20 @@ int commandStudy(const std::vector<std::string>& args) {
     spec.options.fixedStep = options.has("fixed-step");
     std::tie(spec.shardIndex, spec.shardCount) = parseShard(options);
     if (auto error = simcore::validateStudy(spec)) throw UsageError(*error);
+    // Bounded work: the smallest step, and the RK4 reference 16x below it, take at most
+    // kMaxSteps steps each (--dts 1e-300 is refused, not run for ever or counted as 0 steps).
+    if (!spec.dts.empty()) {
+        const double smallest = *std::min_element(spec.dts.begin(), spec.dts.end());
+        const double steps = spec.duration / smallest * 16.0;
+        if (steps > kMaxSteps) {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "--dts %g over --duration %g s: its reference (16x smaller steps) would take %.3g steps; "
+                          "at most %.0f (use larger steps or a shorter --duration)",
+                          smallest, spec.duration, steps, kMaxSteps);
+            throw UsageError(text);
+        }
+    }
 
     std::unique_ptr<simcore::AtomicFile> csv = openCsv(options);
     const bool quiet = options.has("quiet");

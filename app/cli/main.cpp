@@ -1,5 +1,7 @@
 // elastic-lab-cli: the headless tool. Scripts depend on its options, columns and exit codes.
 #include <cstdio>
+#include <cstring>
+#include <cerrno>
 #include <exception>
 #include <functional>
 #include <map>
@@ -80,7 +82,14 @@ int main(int argc, char** argv) {
         return cli::kExitBadInput;
     }
     try {
-        return it->second({args.begin() + 1, args.end()});
+        const int status = it->second({args.begin() + 1, args.end()});
+        // Standard output is a result like any file: a full disk or a closed pipe that lost
+        // part of it is an error (exit 2), never a success with the table gone.
+        if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+            std::fprintf(stderr, "error: writing standard output failed: %s\n", std::strerror(errno));
+            return cli::kExitBadInput;
+        }
+        return status;
     } catch (const cli::UsageError& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return cli::kExitBadInput;

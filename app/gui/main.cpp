@@ -9,6 +9,8 @@
 #include <cstdio>
 #include <optional>
 
+#include <cmath>
+
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
@@ -115,7 +117,9 @@ int main(int argc, char** argv) {
     if (integrators.isEmpty() || integrators.size() > 3) return fail(QStringLiteral("give one to three integrators"));
     bool afterOk = false;
     const double after = parser.value(afterOpt).toDouble(&afterOk);
-    if (!afterOk || after < 0) return fail(QStringLiteral("--after needs a time >= 0 in seconds"));
+    // Finite: --after inf would never be reached and nan compares false with everything.
+    if (!afterOk || !std::isfinite(after) || after < 0 || after > 1e6)
+        return fail(QStringLiteral("--after needs a finite time in seconds, 0 to 1e6"));
 
     const bool screenshot = parser.isSet(shotOpt);
     // Interactive on a CPU renderer (Mesa llvmpipe): no multisampling, it costs more than half
