@@ -1,5 +1,7 @@
 #include "output.h"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -84,6 +86,18 @@ bool AtomicFile::commit() {
             return false;
         }
         m_unnamed = false;  // from here on a failure removes the named file
+    }
+    if (!m_tempPath.empty()) {
+        // A replaced file keeps its permissions (a 600 file stays 600) and, where the process
+        // may set them (root, or the file's own group), its owner and group.
+        struct stat old {};
+        if (::stat(m_target.c_str(), &old) == 0 && S_ISREG(old.st_mode)) {
+            if (::fchmod(::fileno(m_file), old.st_mode & 07777) != 0) {
+                fail(std::strerror(errno));
+                return false;
+            }
+            [[maybe_unused]] const int owned = ::fchown(::fileno(m_file), old.st_uid, old.st_gid);  // EPERM: keep ours
+        }
     }
     const int closed = std::fclose(m_file);
     m_file = nullptr;

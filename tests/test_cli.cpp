@@ -1,6 +1,7 @@
 // elastic-lab-cli contract: listings, CSV and state columns, exit codes, no NaN in output.
 #include <QtTest>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli_process.h"
@@ -300,6 +301,21 @@ private slots:
         const Result overshoot = cli({"run", "--integrator", "implicit-euler", "--dt", "0.5", "--duration", "0.1", "--quiet"});
         QCOMPARE(overshoot.code, 0);
         QVERIFY2(overshoot.err.contains("ended at t = 0.5 s"), qPrintable(overshoot.err));
+    }
+    void replacedFilesKeepTheirPermissions() {
+        // A 600 file replaced by a run stays 600 (the temporary file used to give it 644).
+        const QString csv = path("private.csv");
+        {
+            QFile f(csv);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("old\n");
+        }
+        QVERIFY(QFile::setPermissions(csv, QFile::ReadOwner | QFile::WriteOwner));
+        QCOMPARE(cli({"run", "--duration", "0.01", "--csv", csv, "--quiet"}).code, 0);
+        struct stat st {};
+        QCOMPARE(::stat(csv.toUtf8().constData(), &st), 0);
+        QCOMPARE(st.st_mode & 0777, mode_t(0600));
+        QVERIFY(readCsv(csv).size() > 1);  // and it was replaced
     }
     void killedRunLeavesExistingFilesAndNothingElse() {
         // A run killed outright (SIGKILL: no handler, no destructor runs) while it streams its
