@@ -121,14 +121,10 @@ BodyValues bodyValues(const ParameterSet& params, const Body& body) {
     BodyValues v;
     v.scale = bodyScale(params, body);
     v.particlesPerLayer = particlesPerLayer(topology);
-    if (hasKey(params, "scaling")) {
-        ParameterSet reference = referenceShape(params);
-        const Topology& ref = v.particlesPerLayer && reference == params ? topology
-                                                                          : buildBody(reference).topology;
-        v.referenceParticlesPerLayer = particlesPerLayer(ref);
-    } else {
-        v.referenceParticlesPerLayer = v.particlesPerLayer;
-    }
+    // Counted from the reference shape's parameters, without building it (bodySize).
+    v.referenceParticlesPerLayer = hasKey(params, "scaling")
+                                       ? static_cast<int>(bodySize(referenceShape(params)).particles / 2)
+                                       : v.particlesPerLayer;
     const bool layered = topology.dimension > 1;
     v.massInner = (layered ? params.get("mass_inner") : params.get("mass")) * v.scale.mass;
     v.massOuter = (layered ? params.get("mass_outer") : params.get("mass")) * v.scale.mass;
