@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
+#include <string_view>
 
 #include <cmath>
 
@@ -18,6 +19,7 @@
 #include <QTimer>
 
 #include "body.h"
+#include "elastic_lab_version.h"
 #include "export.h"
 #include "main_window.h"
 #include "parameter_dock.h"
@@ -47,13 +49,23 @@ int main(int argc, char** argv) {
     format.setSamples(qEnvironmentVariableIsSet("ELASTIC_LAB_MSAA") ? qEnvironmentVariableIntValue("ELASTIC_LAB_MSAA") : 4);
     QSurfaceFormat::setDefaultFormat(format);
 
+    // --help and --version print and exit: they need no display (a headless build machine runs
+    // them to make the man page), so they get the offscreen platform unless one is chosen.
+    for (int i = 1; i < argc; ++i) {
+        const std::string_view arg(argv[i]);
+        if ((arg == "--help" || arg == "-h" || arg == "--version" || arg == "-v" || arg == "--help-all") &&
+            !qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("ElasticLab"));
     QApplication::setApplicationName(QStringLiteral("elastic-lab"));
+    QApplication::setApplicationVersion(QString::fromLatin1(elastic_lab::kVersion));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Elastic Lab: two-layer elastic bodies, for teaching."));
     parser.addHelpOption();
+    parser.addVersionOption();
     const QCommandLineOption sceneOpt(QStringLiteral("scene"), QStringLiteral("Scene: %1, or a scene file (.json).").arg(elui::toQString(simcore::sceneNames())),
                                       QStringLiteral("S"), QStringLiteral("ring2d"));
     const QCommandLineOption setOpt(QStringLiteral("set"), QStringLiteral("Set a parameter (repeatable)."),
