@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Elastic Lab needs to build, test and run (skips when present).
+# help2man makes the man pages; dpkg-dev (dpkg-shlibdeps), desktop-file-utils and appstream are
+# for the .deb and its test (packaging/).
 set -euo pipefail
 packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev libqcustomplot-dev
-          xvfb xauth libbenchmark-dev nlohmann-json3-dev stress-ng ccache)
+          xvfb xauth libbenchmark-dev nlohmann-json3-dev stress-ng ccache
+          help2man dpkg-dev desktop-file-utils appstream)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
