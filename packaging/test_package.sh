@@ -1,0 +1,130 @@
+#!/usr/bin/env bash
+# test_package: builds the .deb from the build tree with CPack, unpacks it into a scratch root
+# and runs the installed binaries from there (elastic-lab --version, a short elastic-lab-cli
+# run); checks the package's fields, its Depends (from dpkg-shlibdeps), the installed layout,
+# the desktop entry, icon, metainfo, man pages and docs.
+# Everything happens in a temporary directory removed on exit; nothing is written to the source
+# tree. Registered by packaging/CMakeLists.txt (Release builds only, see there).
+#
+# test_package.sh CPACK BUILD_DIR VERSION APP_ID GUI(ON|OFF) MAN_PAGES(ON|OFF) \
+#                 DESKTOP_FILE_VALIDATE|"" APPSTREAMCLI|""
+set -euo pipefail
+[ $# -eq 8 ] || { echo "usage: $0 CPACK BUILD_DIR VERSION APP_ID GUI MAN_PAGES DESKTOP_FILE_VALIDATE APPSTREAMCLI" >&2; exit 2; }
+cpack=$1 build=$2 version=$3 app_id=$4 gui=$5 man=$6 desktop_validate=$7 appstreamcli=$8
+
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/elastic-lab-package.XXXXXX")
+trap 'rm -rf "$scratch"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# --- build the package ---
+if ! "$cpack" --config "$build/CPackConfig.cmake" -G DEB -B "$scratch/out" >"$scratch/cpack.log" 2>&1; then
+  cat "$scratch/cpack.log" >&2
+  fail "cpack failed"
+fi
+deb=$scratch/out/elastic-lab_${version}_$(dpkg --print-architecture).deb
+[ -f "$deb" ] || { ls -l "$scratch/out" >&2; fail "no $(basename "$deb")"; }
+echo "package: $(basename "$deb"), $(stat -c %s "$deb") bytes"
+
+field() { dpkg-deb --field "$deb" "$1"; }
+[ "$(field Package)" = elastic-lab ] || fail "Package is '$(field Package)'"
+[ "$(field Version)" = "$version" ] || fail "Version is '$(field Version)', the project is $version"
+[ "$(field Section)" = science ] || fail "Section is '$(field Section)'"
+[ -n "$(field Maintainer)" ] || fail "no Maintainer"
+depends=$(field Depends)
+echo "Depends: $depends"
+# dpkg-shlibdeps found the libraries the binaries link: the C and C++ runtimes always, Qt with the GUI.
+expected=(libc6 libstdc++6 libgcc-s1)
+[ "$gui" = ON ] && expected+=(libqt6core6 libqt6gui6 libqt6widgets6 libqt6opengl6 libqt6openglwidgets6)
+for dep in "${expected[@]}"; do
+  [[ ", $depends," == *", $dep "* || ", $depends," == *", $dep,"* ]] || fail "Depends lacks $dep"
+done
+# ... and no development, debug or sanitizer runtime package.
+[[ "$depends" =~ -dev|-dbg|libasan|libtsan|libubsan ]] && fail "Depends names a build-only package"
+
+# --- install into a scratch root and look at it ---
+root=$scratch/root
+dpkg-deb --extract "$deb" "$root"
+usr=$root/usr
+bins=$(cd "$usr/bin" && ls | tr '\n' ' ')
+expected_bins="elastic-lab-cli "
+[ "$gui" = ON ] && expected_bins="elastic-lab elastic-lab-cli "
+[ "$bins" = "$expected_bins" ] || fail "usr/bin holds '$bins', expected '$expected_bins'"
+stray=$(cd "$root" && find . \( -name '*.a' -o -name '*.h' -o -name 'test_*' -o -name 'CMakeFiles' \) -print)
+[ -z "$stray" ] || fail "build files in the package: $stray"
+
+# The installed CLI, from the scratch root, with a clean environment and its own working directory.
+mkdir -m 700 "$scratch/runtime"
+run_installed() { (cd "$scratch" && env -i PATH=/usr/bin:/bin HOME="$scratch" XDG_RUNTIME_DIR="$scratch/runtime" "$@"); }
+run_installed "$usr/bin/elastic-lab-cli" run --scene ring2d --duration 0.05 --csv "$scratch/run.csv" >"$scratch/run.log" 2>&1 ||
+  { cat "$scratch/run.log" >&2; fail "the installed elastic-lab-cli run failed"; }
+# The CSV: a header with the documented columns, rows up to t = 0.05 s, finite energies.
+header=$(head -n 1 "$scratch/run.csv")
+[[ "$header" == step,t,dt,* ]] || fail "CSV header is '$header'"
+awk -F, -v duration=0.05 '
+  NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i
+            if (!("energy_total" in col) || !("volume_inner" in col)) { print "missing columns"; exit 1 }
+            next }
+  { rows++; t = $2 + 0; dt = $3 + 0; e = $(col["energy_total"]); v = $(col["volume_inner"])
+    if (e !~ /^-?[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?$/ || !(v + 0 > 0)) { print "bad row " NR ": " $0; exit 1 } }
+  END { if (rows < 2) { print "only " rows " rows"; exit 1 }
+        if (t < duration - 1e-12 || t > duration + dt) { print "last row at t = " t ", not " duration; exit 1 } }
+' "$scratch/run.csv" || fail "the CSV of the installed run"
+echo "run: $(($(wc -l <"$scratch/run.csv") - 1)) rows up to t = $(tail -n 1 "$scratch/run.csv" | cut -d, -f2)"
+
+if [ "$gui" = ON ]; then
+  # --version needs no display (the GUI picks the offscreen platform for it).
+  out=$(run_installed "$usr/bin/elastic-lab" --version) || fail "elastic-lab --version failed"
+  [ "$out" = "elastic-lab $version" ] || fail "elastic-lab --version says '$out'"
+
+  # Desktop entry, icon and metainfo: present, valid, and naming each other and the binary.
+  desktop=$usr/share/applications/$app_id.desktop
+  icon=$usr/share/icons/hicolor/scalable/apps/$app_id.svg
+  metainfo=$usr/share/metainfo/$app_id.metainfo.xml
+  for f in "$desktop" "$icon" "$metainfo"; do [ -s "$f" ] || fail "missing ${f#"$root"}"; done
+  exec_bin=$(sed -n 's/^Exec=\([^ ]*\).*/\1/p' "$desktop")
+  [ -x "$usr/bin/$exec_bin" ] || fail "the desktop entry runs '$exec_bin', which is not installed"
+  [ "$(sed -n 's/^Icon=//p' "$desktop")" = "$app_id" ] || fail "the desktop entry's Icon is not $app_id"
+  grep -q '<svg' "$icon" || fail "the icon is not an SVG"
+  grep -q "<launchable type=\"desktop-id\">$app_id.desktop</launchable>" "$metainfo" ||
+    fail "the metainfo does not launch $app_id.desktop"
+  grep -q "<release version=\"$version\"" "$metainfo" || fail "the metainfo has no release $version"
+  if [ -n "$desktop_validate" ]; then
+    "$desktop_validate" "$desktop" || fail "desktop-file-validate"
+  else
+    echo "not validated: desktop-file-validate not found (Debian: desktop-file-utils)"
+  fi
+  if [ -n "$appstreamcli" ]; then
+    "$appstreamcli" validate --no-net --strict "$metainfo" >"$scratch/appstream.log" 2>&1 ||
+      { cat "$scratch/appstream.log" >&2; fail "appstreamcli validate"; }
+  else
+    echo "not validated: appstreamcli not found (Debian: appstream)"
+  fi
+fi
+
+# Man pages: made from the binaries' own --help (an option only the help text names is there).
+if [ "$man" = ON ]; then
+  check_man() { # check_man NAME OPTION
+    local page=$usr/share/man/man1/$1.1.gz
+    [ -s "$page" ] || fail "missing ${page#"$root"}"
+    gzip -t "$page" || fail "$1.1.gz is not gzip"
+    zcat "$page" | grep -q "^\.TH \"\?${1^^}\"\? \"\?1\"\?" || fail "$1.1 has no .TH ${1^^} 1 line"
+    zcat "$page" | grep -q -- "$2" || fail "$1.1 does not mention $2 (from --help)"
+  }
+  check_man elastic-lab-cli 'stability'
+  [ "$gui" = ON ] && check_man elastic-lab 'screenshot'
+fi
+
+# Docs in the repository's layout: every relative link to a file in them resolves.
+doc=$usr/share/doc/elastic-lab
+[ -s "$doc/README.md" ] || fail "missing README.md in share/doc/elastic-lab"
+[ -s "$doc/docs/architecture.md" ] || fail "missing docs/architecture.md in share/doc/elastic-lab"
+links=0
+while IFS= read -r page; do
+  while IFS= read -r target; do
+    links=$((links + 1))
+    [ -e "$(dirname "$page")/$target" ] || fail "${page#"$doc/"} links $target, which is not installed"
+  done < <(grep -o '](\([A-Za-z0-9._/-]*\.\(md\|png\|svg\|csv\|txt\)\)[)#]' "$page" | sed 's/^](//; s/[)#]$//')
+done < <(find "$doc" -name '*.md')
+[ "$links" -gt 0 ] || fail "no relative link found in the installed docs"
+echo "docs: $links relative links resolve"
+echo "test_package: passed"
