@@ -15,6 +15,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QElapsedTimer>
+#include <QIcon>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -61,6 +62,11 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName(QStringLiteral("ElasticLab"));
     QApplication::setApplicationName(QStringLiteral("elastic-lab"));
     QApplication::setApplicationVersion(QString::fromLatin1(elastic_lab::kVersion));
+    // Desktop integration: the installed desktop entry is named by the application id (Wayland
+    // matches the window to it by this name; X11 by StartupWMClass there); the window icon is
+    // the installed SVG drawn to PNG (Qt draws PNG without the SVG module).
+    QGuiApplication::setDesktopFileName(QString::fromLatin1(elastic_lab::kAppId));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/elastic-lab.png")));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Elastic Lab: two-layer elastic bodies, for teaching."));
