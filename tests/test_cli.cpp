@@ -363,6 +363,84 @@ private slots:
             QCOMPARE(f.readAll(), "precious " + name.toUtf8() + "\n");
         }
     }
+    // Issue 17: a conventional command line. --help (the tool's and each command's) goes to
+    // standard output with exit 0 and names every option with its default; --version says the
+    // CMake project's version; `help COMMAND` is `COMMAND --help`.
+    void helpAndVersion() {
+        const Result version = cli({"--version"});
+        QCOMPARE(version.code, 0);
+        QCOMPARE(version.out.trimmed(), QString("elastic-lab-cli " ELASTIC_LAB_VERSION));
+        const Result top = cli({"--help"});
+        QCOMPARE(top.code, 0);
+        for (const char* command : {"scenes", "params", "integrators", "run", "study", "stability", "restitution", "gallery",
+                                    "bench", "completion"})
+            QVERIFY2(top.out.contains(QString("\n  %1 ").arg(command)), command);
+        const Result run = cli({"run", "--help"});
+        QCOMPARE(run.code, 0);
+        QVERIFY(run.err.isEmpty());
+        // Every option with its unit and default where it has one.
+        for (const char* option : {"--scene S|FILE.json=ring2d", "--set KEY=VALUE", "--dt H", "--integrator NAME",
+                                   "--duration T:in (0, 1e+07]=5", "--csv FILE", "--every N", "--state FILE",
+                                   "--save-scene FILE.json", "--quiet", "--atol A", "--rtol R", "--newton N",
+                                   "--fixed-step", "--error-estimate", "[s]"})
+            QVERIFY2(run.out.contains(option), option);
+        QCOMPARE(cli({"help", "run"}).out, run.out);
+        const Result study = cli({"study", "--help"});
+        for (const char* option : {"--integrators", "--dts", "--tols", "--refine", "--from-csv", "--shard K/N", "--samples G",
+                                   "--reference NAME", "--temporal-runs", "--interval"})
+            QVERIFY2(study.out.contains(option), option);
+    }
+    // Mistakes the parser catches: a value given twice, options that contradict each other.
+    void contradictionsAreRefused_data() {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("mentions");
+        QTest::newRow("twice") << QStringList{"run", "--dt", "0.01", "--dt", "0.02"} << "--dt";
+        QTest::newRow("merge runs nothing") << QStringList{"study", "--from-csv", "x.csv", "--dts", "0.1"} << "--from-csv excludes --dts";
+        QTest::newRow("dt belongs to --refine") << QStringList{"study", "--dt", "0.1"} << "--dt requires --refine";
+        QTest::newRow("refine has no --dts") << QStringList{"study", "--refine", "particles=12,24", "--dts", "0.1"} << "--refine excludes --dts";
+        QTest::newRow("set needs scene") << QStringList{"params", "--set", "ks=1"} << "--set requires --scene";
+        QTest::newRow("crossed scan bounds") << QStringList{"stability", "--hmin", "0.1", "--hmax", "0.01"} << "below --hmin";
+        QTest::newRow("unknown option before a command") << QStringList{"--bogus"} << "unknown option '--bogus'";
+        QTest::newRow("stray word") << QStringList{"run", "x"} << "run takes --help, --scene";
+        QTest::newRow("unknown gallery case") << QStringList{"gallery", "--run", "nope"} << "nope";
+        QTest::newRow("runaway speed") << QStringList{"restitution", "--speeds", "1,1e9"} << "(0, 10000]";
+    }
+    void contradictionsAreRefused() {
+        QFETCH(QStringList, args);
+        QFETCH(QString, mentions);
+        const Result r = cli(args);
+        QCOMPARE(r.code, 2);
+        QCOMPARE(r.err.trimmed().count('\n'), 0);
+        QVERIFY2(r.err.contains(mentions), qPrintable(r.err));
+        QVERIFY(r.out.isEmpty());
+    }
+    // The bash completion, written by the tool from its own commands, completes in bash.
+    void bashCompletionCompletes() {
+        const Result script = cli({"completion"});
+        QCOMPARE(script.code, 0);
+        const QString file = path("completion.bash");
+        {
+            QFile f(file);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(script.out.toUtf8());
+        }
+        auto complete = [&](const QStringList& words) {
+            QProcess bash;
+            const QString quoted = "(" + words.join(' ') + ")";
+            bash.start("bash", {"-c", QString("source '%1'; COMP_WORDS=%2; COMP_CWORD=%3; _elastic_lab_cli; "
+                                              "printf '%s\\n' \"${COMPREPLY[@]}\"")
+                                      .arg(file, quoted)
+                                      .arg(words.size() - 1)});
+            if (!testsupport::waitForExit(bash)) return QStringList{"(hung)"};
+            return QString::fromUtf8(bash.readAllStandardOutput()).split('\n', Qt::SkipEmptyParts);
+        };
+        QCOMPARE(complete({"elastic-lab-cli", "st"}), QStringList({"study", "stability"}));
+        QCOMPARE(complete({"elastic-lab-cli", "run", "--du"}), QStringList({"--duration"}));
+        QCOMPARE(complete({"elastic-lab-cli", "run", "--integrator", "rk"}), QStringList({"rk4", "rk45"}));
+        QCOMPARE(complete({"elastic-lab-cli", "bench", "--kernels", "a"}), QStringList({"avx2", "avx512"}));
+        QVERIFY(complete({"elastic-lab-cli", "study", "--"}).contains("--temporal-runs"));
+        QCOMPARE(complete({"elastic-lab-cli", "run", "--scene", "sphere3d-"}), QStringList({"sphere3d-latlong"}));
+    }
     void existingFileSurvivesAFailedRunStart() {
         const QString csv = path("keep.csv");
         QFile f(csv);

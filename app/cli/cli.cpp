@@ -1,13 +1,19 @@
 #include "cli.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 
 #include <sys/stat.h>
 
+#include "elastic_lab_version.h"
 #include "integrators.h"
+#include "output.h"
 #include "scenefile.h"
 #include "scenes.h"
 #include "simulation.h"
@@ -15,66 +21,126 @@
 
 namespace cli {
 
-Options::Options(const std::vector<std::string>& args, const std::vector<std::string>& withValue,
-                 const std::vector<std::string>& flags) {
-    auto listed = [](const std::vector<std::string>& list, const std::string& name) {
-        return std::find(list.begin(), list.end(), name) != list.end();
-    };
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        if (arg.rfind("--", 0) != 0) throw UsageError("unexpected argument '" + arg + "'");
-        std::string name = arg.substr(2), inlineValue;
-        bool hasInline = false;
-        if (auto eq = name.find('='); eq != std::string::npos) {
-            inlineValue = name.substr(eq + 1);
-            name = name.substr(0, eq);
-            hasInline = true;
-        }
-        if (listed(flags, name)) {
-            if (hasInline) throw UsageError("--" + name + " takes no value");
-            m_values[name].push_back("1");
-        } else if (listed(withValue, name)) {
-            if (hasInline) {
-                m_values[name].push_back(inlineValue);
-            } else {
-                if (i + 1 >= args.size()) throw UsageError("--" + name + " needs a value");
-                m_values[name].push_back(args[++i]);
-            }
-        } else {
-            std::string allowed;
-            for (const auto& list : {withValue, flags})
-                for (const auto& n : list) allowed += (allowed.empty() ? "--" : ", --") + n;
-            throw UsageError("unknown option '" + arg + "'; allowed: " + allowed);
-        }
+// --- Validators --------------------------------------------------------------------------------
+
+CLI::Validator finiteIn(double min, double max, bool minExclusive) {
+    const std::string range = std::string(minExclusive ? "(" : "[") + simcore::formatDouble(min) + ", " +
+                              simcore::formatDouble(max) + "]";
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            const auto v = simcore::parseNumber(text);
+            if (!v) return simcore::quoteShort(text) + " is not a finite number; allowed " + range;
+            if ((minExclusive ? *v <= min : *v < min) || *v > max)
+                return simcore::quoteShort(text) + " is out of range; allowed " + range;
+            return {};
+        },
+        "in " + range);
+}
+
+CLI::Validator wholeIn(long min, long max) {
+    const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            const auto v = simcore::parseNumber(text);
+            if (!v || *v != std::floor(*v) || *v < static_cast<double>(min) || *v > static_cast<double>(max))
+                return simcore::quoteShort(text) + " is not allowed; allowed whole numbers in " + range;
+            text = std::to_string(static_cast<long>(*v));  // "1e3" is 1000 for the conversion that follows
+            return {};
+        },
+        "whole, in " + range);
+}
+
+// --- Shared option groups ----------------------------------------------------------------------
+
+namespace {
+
+std::vector<std::string> integratorNameList() {
+    std::vector<std::string> names;
+    for (const simcore::IntegratorInfo& i : simcore::integratorTable()) names.emplace_back(i.name);
+    return names;
+}
+
+}  // namespace
+
+void addSceneOptions(CLI::App& app, SceneArgs& args, bool withDt, bool withIntegrator) {
+    app.add_option("--scene", args.scene, "built-in scene (" + simcore::sceneNames() +
+                                              ") or a scene file (.json), which may carry a saved state")
+        ->type_name("S|FILE.json")
+        ->capture_default_str();
+    app.add_option("--set", args.set, "set a parameter (repeatable); `elastic-lab-cli params --scene S` lists them "
+                                      "with units, defaults and ranges")
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false);
+    if (withDt)
+        app.add_option("--dt", args.dt, "time step [s] (same as --set dt=H; default: the scene's)")->type_name("H");
+    if (withIntegrator)
+        app.add_option("--integrator", args.integrator, "integration method (default: the scene file's, else rk4)")
+            ->type_name("NAME")
+            ->check(CLI::IsMember(integratorNameList()));
+}
+
+std::string sceneFileOf(const SceneArgs& args) {
+    return !simcore::findScene(args.scene) && args.scene.size() > 5 && args.scene.ends_with(".json") ? args.scene
+                                                                                                      : std::string();
+}
+
+SceneSetup sceneSetup(const SceneArgs& args) {
+    SceneSetup setup;
+    setup.sceneName = args.scene;
+    const simcore::SceneInfo* scene = simcore::findScene(setup.sceneName);
+    std::string fileIntegrator;
+    if (!sceneFileOf(args).empty()) {
+        // A scene file wherever a scene name is taken; --set, --dt, --integrator override it.
+        simcore::SceneFileResult read = simcore::readSceneFile(setup.sceneName);
+        if (!read.file) throw UsageError(read.error);
+        setup.sceneName = read.file->sceneName;
+        scene = simcore::findScene(setup.sceneName);
+        setup.params = read.file->params;
+        fileIntegrator = read.file->integrator;
+        setup.state = read.file->state;
+    } else if (!scene) {
+        throw UsageError("unknown scene " + simcore::quoteShort(setup.sceneName) + "; allowed: " + simcore::sceneNames() +
+                         ", or a scene file (.json)");
+    } else {
+        setup.params = simcore::ParameterSet(scene->kind);
     }
+    for (const std::string& assignment : args.set)
+        if (auto error = setup.params.assign(assignment)) throw UsageError("--set " + *error);
+    if (args.dt)
+        if (auto error = setup.params.setFromText("dt", *args.dt)) throw UsageError("--" + *error);
+    setup.integrator = args.integrator.value_or(fileIntegrator.empty() ? "rk4" : fileIntegrator);
+    if (!simcore::makeIntegrator(setup.integrator))
+        throw UsageError("unknown integrator " + simcore::quoteShort(setup.integrator) +
+                         "; allowed: " + simcore::integratorNames());
+    if (auto error = simcore::validateShape(setup.params)) throw UsageError(*error);
+    return setup;
 }
 
-const std::vector<std::string>& Options::all(const std::string& name) const {
-    static const std::vector<std::string> none;
-    auto it = m_values.find(name);
-    return it == m_values.end() ? none : it->second;
+void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& o) {
+    app.add_option("--atol", o.atol, "absolute error tolerance of rk45 [m, m/s]")
+        ->type_name("A")
+        ->check(finiteIn(0.0, 1.0, true))
+        ->capture_default_str();
+    app.add_option("--rtol", o.rtol, "relative error tolerance of rk45")->type_name("R")->check(finiteIn(0.0, 1.0, false))->capture_default_str();
+    app.add_option("--newton", o.newtonIterations, "Newton iterations per step of implicit-euler")
+        ->type_name("N")
+        ->check(wholeIn(1, 50))
+        ->capture_default_str();
+    app.add_flag("--fixed-step", o.fixedStep, "run the adaptive method (rk45) at the fixed step dt");
+    app.add_flag("--error-estimate", o.stepDoubling,
+                 "step doubling for fixed-step methods: the error_estimate column (costs about 3x)");
 }
 
-double Options::number(const std::string& name, double fallback, double min, double max,
-                       bool minExclusive) const {
-    if (!has(name)) return fallback;
-    const auto v = simcore::parseNumber(value(name));
-    const std::string range = std::string(minExclusive ? "(" : "[") + std::to_string(min) + ", " +
-                              std::to_string(max) + "]";
-    if (!v) throw UsageError("--" + name + ": '" + value(name) + "' is not a finite number; allowed " + range);
-    if ((minExclusive ? *v <= min : *v < min) || *v > max)
-        throw UsageError("--" + name + " = " + value(name) + " is out of range; allowed " + range);
-    return *v;
+std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator) {
+    simcore::Simulation sim(params, integrator);
+    const auto advice = simcore::stabilityAdvice(sim);
+    if (!advice) return {};
+    char suggestion[64];
+    std::snprintf(suggestion, sizeof suggestion, " (predicted stable: --dt %g)", advice->suggestedDt);
+    return "warning: " + advice->message + suggestion;
 }
 
-long Options::integer(const std::string& name, long fallback, long min, long max) const {
-    if (!has(name)) return fallback;
-    const auto v = simcore::parseNumber(value(name));
-    const std::string range = "whole numbers in [" + std::to_string(min) + ", " + std::to_string(max) + "]";
-    if (!v || *v != std::floor(*v) || *v < static_cast<double>(min) || *v > static_cast<double>(max))
-        throw UsageError("--" + name + ": '" + value(name) + "' is not allowed; allowed " + range);
-    return static_cast<long>(*v);
-}
+// --- Files -------------------------------------------------------------------------------------
 
 namespace {
 
@@ -98,79 +164,171 @@ std::optional<FileIdentity> identify(const std::string& path) {
 
 }  // namespace
 
-void checkDistinctFiles(const Options& options, std::initializer_list<const char*> outputs) {
+void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs) {
     std::vector<std::pair<std::string, FileIdentity>> seen;  // option, identity
-    auto add = [&](const std::string& option, const std::string& path) {
+    for (const auto& [option, path] : inputsThenOutputs) {
+        if (path.empty()) continue;
         const auto id = identify(path);
-        if (!id) return;
+        if (!id) continue;
         for (const auto& [other, otherId] : seen)
             if (otherId == *id)
                 throw UsageError("--" + option + " " + simcore::quoteShort(path, 200) + " is the same file as --" + other +
                                  "; every output must be a file of its own, apart from the inputs");
         seen.emplace_back(option, *id);
-    };
-    // Inputs first, so that the message names the output that would have destroyed one.
-    if (options.has("scene") && options.value("scene").ends_with(".json")) add("scene", options.value("scene"));
-    if (options.has("from-csv")) add("from-csv", options.value("from-csv"));
-    for (const char* name : outputs)
-        if (options.has(name)) add(name, options.value(name));
-}
-
-std::vector<std::string> sceneOptionNames() { return {"scene", "set", "dt", "integrator"}; }
-
-SceneSetup sceneSetup(const Options& options) {
-    SceneSetup setup;
-    setup.sceneName = options.valueOr("scene", "ring2d");
-    const simcore::SceneInfo* scene = simcore::findScene(setup.sceneName);
-    std::string fileIntegrator;
-    if (!scene && setup.sceneName.size() > 5 && setup.sceneName.ends_with(".json")) {
-        // A scene file wherever a scene name is taken; --set, --dt, --integrator override it.
-        simcore::SceneFileResult read = simcore::readSceneFile(setup.sceneName);
-        if (!read.file) throw UsageError(read.error);
-        setup.sceneName = read.file->sceneName;
-        scene = simcore::findScene(setup.sceneName);
-        setup.params = read.file->params;
-        fileIntegrator = read.file->integrator;
-        setup.state = read.file->state;
-    } else if (!scene) {
-        throw UsageError("unknown scene '" + setup.sceneName + "'; allowed: " + simcore::sceneNames() +
-                         ", or a scene file (.json)");
-    } else {
-        setup.params = simcore::ParameterSet(scene->kind);
     }
-    for (const std::string& assignment : options.all("set"))
-        if (auto error = setup.params.assign(assignment)) throw UsageError("--set " + *error);
-    if (options.has("dt"))
-        if (auto error = setup.params.setFromText("dt", options.value("dt")))
-            throw UsageError("--" + *error);
-    setup.integrator = options.valueOr("integrator", fileIntegrator.empty() ? "rk4" : fileIntegrator);
-    if (!simcore::makeIntegrator(setup.integrator))
-        throw UsageError("unknown integrator '" + setup.integrator +
-                         "'; allowed: " + simcore::integratorNames());
-    if (auto error = simcore::validateShape(setup.params)) throw UsageError(*error);
-    return setup;
 }
 
-std::vector<std::string> integratorOptionNames() { return {"atol", "rtol", "newton"}; }
-std::vector<std::string> integratorFlagNames() { return {"fixed-step", "error-estimate"}; }
+// --- Lists -------------------------------------------------------------------------------------
 
-simcore::IntegratorOptions integratorOptions(const Options& options) {
-    simcore::IntegratorOptions o;
-    o.atol = options.number("atol", o.atol, 0.0, 1.0, true);
-    o.rtol = options.number("rtol", o.rtol, 0.0, 1.0, false);
-    o.newtonIterations = static_cast<int>(options.integer("newton", o.newtonIterations, 1, 50));
-    o.fixedStep = options.has("fixed-step");
-    o.stepDoubling = options.has("error-estimate");
-    return o;
+namespace {
+
+// Comma-separated lists: every item present (no "a,,b", no trailing comma), no item twice.
+std::vector<std::string> listItems(const std::string& option, const std::string& text) {
+    std::vector<std::string> items;
+    std::string item;
+    std::stringstream ss(text);
+    while (std::getline(ss, item, ',')) items.push_back(item);
+    if (!text.empty() && text.back() == ',') items.emplace_back();
+    if (items.empty()) throw UsageError("--" + option + " needs a comma-separated list, got nothing");
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (items[i].empty())
+            throw UsageError("--" + option + " " + simcore::quoteShort(text) + ": item " + std::to_string(i + 1) +
+                             " is empty");
+        for (std::size_t j = 0; j < i; ++j)
+            if (items[j] == items[i])
+                throw UsageError("--" + option + ": " + simcore::quoteShort(items[i]) + " is listed twice");
+    }
+    return items;
 }
 
-std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator) {
-    simcore::Simulation sim(params, integrator);
-    const auto advice = simcore::stabilityAdvice(sim);
-    if (!advice) return {};
-    char suggestion[64];
-    std::snprintf(suggestion, sizeof suggestion, " (predicted stable: --dt %g)", advice->suggestedDt);
-    return "warning: " + advice->message + suggestion;
+}  // namespace
+
+std::vector<double> numberList(const std::string& option, const std::string& text) {
+    std::vector<double> values;
+    for (const std::string& item : listItems(option, text)) {
+        const auto v = simcore::parseNumber(item);
+        if (!v) throw UsageError("--" + option + ": " + simcore::quoteShort(item) + " is not a finite number");
+        for (double earlier : values)
+            if (earlier == *v) throw UsageError("--" + option + ": " + simcore::quoteShort(item) + " is listed twice");
+        values.push_back(*v);
+    }
+    return values;
+}
+
+std::vector<std::string> nameList(const std::string& option, const std::string& text) { return listItems(option, text); }
+
+std::pair<int, int> parseShard(const std::string& text) {
+    if (text.empty()) return {0, 1};
+    const auto slash = text.find('/');
+    const auto k = simcore::parseNumber(text.substr(0, slash == std::string::npos ? 0 : slash));
+    const auto n = slash == std::string::npos ? std::nullopt : simcore::parseNumber(text.substr(slash + 1));
+    if (!k || !n || *k != std::floor(*k) || *n != std::floor(*n) || *n < 1 || *k < 1 || *k > *n || *n > 100000)
+        throw UsageError("--shard: " + simcore::quoteShort(text) + " is not allowed; allowed K/N with 1 <= K <= N, e.g. 2/4");
+    return {static_cast<int>(*k) - 1, static_cast<int>(*n)};
+}
+
+// --- The tool ----------------------------------------------------------------------------------
+
+std::unique_ptr<CLI::App> makeApp(std::vector<Command>& commands) {
+    auto app = std::make_unique<CLI::App>(
+        "Elastic Lab, headless: run the two-layer elastic bodies, measure integrators' error against cost and "
+        "their stability limits, and write CSV, SVG and scene files.",
+        "elastic-lab-cli");
+    app->set_version_flag("--version", std::string("elastic-lab-cli ") + elastic_lab::kVersion);
+    app->require_subcommand(1, 1);
+    app->get_formatter()->column_width(34);
+    app->footer("`elastic-lab-cli COMMAND --help` lists a command's options with units and defaults.\n"
+                "Exit status: 0 success, 2 bad input (one line naming the problem), 3 the simulation failed.");
+    for (auto add : {addScenesCommand, addParamsCommand, addIntegratorsCommand, addRunCommand, addStudyCommand,
+                     addStabilityCommand, addRestitutionCommand, addGalleryCommand, addBenchCommand,
+                     addCompletionCommand})
+        commands.push_back(add(*app));
+    return app;
+}
+
+namespace {
+
+std::string optionNames(const CLI::App& app) {
+    std::string names;
+    for (const CLI::Option* o : app.get_options())
+        if (!o->get_lnames().empty()) names += (names.empty() ? "--" : ", --") + o->get_lnames().front();
+    return names;
+}
+
+std::string commandNames(const CLI::App& app) {
+    std::string names;
+    for (const CLI::App* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
+    return names;
+}
+
+// CLI11's message, on one line, with what is allowed where it does not say so itself.
+std::string parseErrorText(const CLI::ParseError& e, const CLI::App& app, const std::vector<std::string>& args) {
+    std::string text = e.what();
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    const std::vector<CLI::App*> chosen = app.get_subcommands();
+    if (chosen.empty() && !args.empty())
+        return (args.front().starts_with("-") ? "unknown option " : "unknown command ") + simcore::quoteShort(args.front()) +
+               "; allowed: --help, --version, or a command: " + commandNames(app);
+    if (chosen.empty() && dynamic_cast<const CLI::RequiredError*>(&e))
+        return "a command is needed; allowed: " + commandNames(app) + " (elastic-lab-cli --help says more)";
+    if (dynamic_cast<const CLI::ExtrasError*>(&e))
+        text += chosen.empty() ? "; allowed: --help, --version, or a command: " + commandNames(app)
+                               : "; " + chosen.front()->get_name() + " takes " + optionNames(*chosen.front());
+    return text;
+}
+
+bool stdoutWritten() {
+    // Standard output is a result like any file: a full disk or a closed pipe that lost part of
+    // it is an error (exit 2), never a success with the table gone.
+    std::cout.flush();
+    if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fprintf(stderr, "error: writing standard output failed: %s\n", std::strerror(errno));
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+int runCommandLine(const std::vector<std::string>& argsIn, Mode mode) {
+    std::vector<std::string> args = argsIn;
+    // `help` and `help COMMAND`, as people type them.
+    if (!args.empty() && args.front() == "help") {
+        args.erase(args.begin());
+        args.emplace_back("--help");
+    }
+    std::vector<Command> commands;
+    const std::unique_ptr<CLI::App> app = makeApp(commands);
+    try {
+        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+        app->parse(reversed);
+    } catch (const CLI::CallForHelp& e) {
+        if (mode == Mode::Execute) std::cout << app->help();
+        return stdoutWritten() ? kExitOk : kExitBadInput;
+    } catch (const CLI::CallForVersion& e) {
+        if (mode == Mode::Execute) std::cout << e.what() << '\n';
+        return stdoutWritten() ? kExitOk : kExitBadInput;
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "error: %s\n", parseErrorText(e, *app, args).c_str());
+        return kExitBadInput;
+    }
+    for (const Command& command : commands) {
+        if (!command.app->parsed()) continue;
+        try {
+            command.check();
+            if (mode == Mode::CheckOnly) return kExitOk;
+            const int status = command.run();
+            return stdoutWritten() ? status : kExitBadInput;
+        } catch (const UsageError& e) {
+            std::fprintf(stderr, "error: %s\n", e.what());
+            return kExitBadInput;
+        } catch (const std::invalid_argument& e) {
+            std::fprintf(stderr, "error: %s\n", e.what());
+            return kExitBadInput;
+        }
+    }
+    std::fprintf(stderr, "error: a command is needed; allowed: %s\n", commandNames(*app).c_str());
+    return kExitBadInput;
 }
 
 }  // namespace cli

@@ -1,14 +1,20 @@
 #pragma once
-// Shared pieces of the elastic-lab-cli commands: option parsing and scene setup.
+// The elastic-lab-cli commands on CLI11: each command binds its options to a struct of its own
+// (with text, unit and default for --help), checks everything that can be known before any work
+// begins, then runs.
 //
-// Exit status contract: 0 success, 2 bad input (one line on stderr naming the problem and
-// what is allowed), 3 the simulation failed (reason, step and time on stderr).
+// Exit status contract: 0 success, 2 bad input (one line on stderr naming the problem and what
+// is allowed), 3 the simulation failed (reason, step and time on stderr).
 
-#include <map>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "integrators.h"
 #include "params.h"
@@ -28,25 +34,35 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// Options of one command: "--name value" pairs (repeatable ones keep their order) and flags.
-class Options {
-public:
-    Options(const std::vector<std::string>& args, const std::vector<std::string>& withValue,
-            const std::vector<std::string>& flags = {});
-    bool has(const std::string& name) const { return m_values.count(name) != 0; }
-    const std::string& value(const std::string& name) const { return m_values.at(name).back(); }
-    std::string valueOr(const std::string& name, const std::string& fallback) const {
-        return has(name) ? value(name) : fallback;
-    }
-    const std::vector<std::string>& all(const std::string& name) const;
-
-    double number(const std::string& name, double fallback, double min, double max,
-                  bool minExclusive) const;
-    long integer(const std::string& name, long fallback, long min, long max) const;
-
-private:
-    std::map<std::string, std::vector<std::string>> m_values;
+// One command of the tool. `check` is the validation layer: it decides, before anything is
+// written or run, that the work is well formed and finite (throws UsageError); `run` does it.
+struct Command {
+    CLI::App* app = nullptr;
+    std::function<void()> check;
+    std::function<int()> run;
 };
+
+// What the command line does after parsing and checking: everything, or nothing more (used by
+// the fuzz target, which must never write files or run simulations).
+enum class Mode { Execute, CheckOnly };
+
+// The whole tool: parses `args` (without the program name), checks, runs. Returns the exit status;
+// reports errors on stderr, help and version on stdout.
+int runCommandLine(const std::vector<std::string>& args, Mode mode = Mode::Execute);
+
+// The tool's command tree (for the completion script and the tests).
+std::unique_ptr<CLI::App> makeApp(std::vector<Command>& commands);
+
+// --- Option groups shared by several commands --------------------------------------------------
+
+// --scene S|FILE.json, --set key=value..., and optionally --dt H and --integrator NAME.
+struct SceneArgs {
+    std::string scene = "ring2d";
+    std::vector<std::string> set;
+    std::optional<std::string> dt;          // validated by the parameter table
+    std::optional<std::string> integrator;  // default: the scene file's, else rk4
+};
+void addSceneOptions(CLI::App& app, SceneArgs& args, bool withDt = true, bool withIntegrator = true);
 
 struct SceneSetup {
     simcore::ParameterSet params;
@@ -54,39 +70,44 @@ struct SceneSetup {
     std::string integrator = "rk4";
     std::optional<simcore::SceneFile::State> state;  // from a scene file that saved one
 };
+SceneSetup sceneSetup(const SceneArgs& args);
+// The scene file named by --scene, or empty when it names a built-in scene.
+std::string sceneFileOf(const SceneArgs& args);
 
-// --scene S|FILE.json (default ring2d), --set key=value..., --dt H, --integrator NAME.
-SceneSetup sceneSetup(const Options& options);
+// Integrator tunables: --atol, --rtol, --newton, --fixed-step, --error-estimate.
+void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& options);
 
-// Integrator tunables: --atol, --rtol, --fixed-step, --error-estimate, --newton.
-simcore::IntegratorOptions integratorOptions(const Options& options);
-std::vector<std::string> integratorOptionNames();  // the ones with a value
-std::vector<std::string> integratorFlagNames();    // the flags
+// Number validators for CLI11 options: finite numbers in a range, whole numbers in a range.
+CLI::Validator finiteIn(double min, double max, bool minExclusive);
+CLI::Validator wholeIn(long min, long max);
+
 // The pre-run warning: dt above the explicit stability estimate (empty when none applies).
 std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator);
-// Outputs never overwrite an input or each other (issue 18): the files named by the given output
-// options, by `--scene FILE.json` and by `--from-csv`, compared by identity, not by spelling
+
+// Outputs never overwrite an input or each other (issue 18): the files named, as (option, path)
+// pairs with inputs first and empty paths skipped, are compared by identity, not by spelling
 // (device and inode of an existing file, or of the folder a new one goes in and its name, so
 // links, "./" and ".." count). A clash is a UsageError naming both options, before anything is
 // written.
-void checkDistinctFiles(const Options& options, std::initializer_list<const char*> outputs);
-// The option names sceneSetup reads, for a command's allowed list.
-std::vector<std::string> sceneOptionNames();
+using NamedPath = std::pair<std::string, std::string>;
+void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs);
 
-int commandScenes(const std::vector<std::string>& args);
-int commandParams(const std::vector<std::string>& args);
-int commandIntegrators(const std::vector<std::string>& args);
-// Comma-separated lists and --shard K/N (returned 0-based: {K-1, N}).
+// Comma-separated lists: both refuse an empty list, an empty item and an item listed twice.
 std::vector<double> numberList(const std::string& option, const std::string& text);
 std::vector<std::string> nameList(const std::string& option, const std::string& text);
-// Both refuse an empty list, an empty item and an item listed twice.
-std::pair<int, int> parseShard(const Options& options);
+// --shard K/N, returned 0-based: {K-1, N}; {0, 1} when empty.
+std::pair<int, int> parseShard(const std::string& text);
 
-int commandRun(const std::vector<std::string>& args);
-int commandStudy(const std::vector<std::string>& args);
-int commandStability(const std::vector<std::string>& args);
-int commandRestitution(const std::vector<std::string>& args);
-int commandGallery(const std::vector<std::string>& args);
-int commandBench(const std::vector<std::string>& args);
+// The commands, each registered on the tool's app.
+Command addScenesCommand(CLI::App& app);
+Command addParamsCommand(CLI::App& app);
+Command addIntegratorsCommand(CLI::App& app);
+Command addRunCommand(CLI::App& app);
+Command addStudyCommand(CLI::App& app);
+Command addStabilityCommand(CLI::App& app);
+Command addRestitutionCommand(CLI::App& app);
+Command addGalleryCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
+Command addCompletionCommand(CLI::App& app);
 
 }  // namespace cli

@@ -19,33 +19,31 @@ long peakResidentKiB() {
     return usage.ru_maxrss;  // KiB on Linux
 }
 
-}  // namespace
+struct BenchArgs {
+    SceneArgs scene;
+    long steps = 200, warmup = 10, threads = simcore::hardwareThreads();
+    std::string kernels;
+    bool header = false;
+    SceneSetup setup;  // after check()
+};
 
-int commandBench(const std::vector<std::string>& args) {
-    auto names = sceneOptionNames();
-    names.insert(names.end(), {"steps", "threads", "warmup", "kernels"});
-    Options options(args, names, {"header"});
-    SceneSetup setup = sceneSetup(options);
+void checkBench(BenchArgs& args) {
+    args.setup = sceneSetup(args.scene);
     // The benchmarks time the thesis's per-particle body at every size (docs/performance.md),
     // so that their figures stay comparable; --set scaling=physical times the physical one.
-    if (simcore::findParam("scaling")->scenes & simcore::sceneBit(setup.params.kind()))
-        if (!setup.params.isExplicit("scaling")) setup.params.set("scaling", 1.0);
-    const long steps = options.integer("steps", 200, 1, 100000000L);
-    const long warmup = options.integer("warmup", 10, 0, 1000000L);
-    const long threads = options.integer("threads", simcore::hardwareThreads(), 1, 256);
+    simcore::ParameterSet& params = args.setup.params;
+    if (simcore::findParam("scaling")->scenes & simcore::sceneBit(params.kind()))
+        if (!params.isExplicit("scaling")) params.set("scaling", 1.0);
+}
+
+int runBench(const BenchArgs& args) {
+    const SceneSetup& setup = args.setup;
+    const long steps = args.steps, warmup = args.warmup, threads = args.threads;
     // The force kernels to time (default: the widest this CPU runs); the row names the set
     // actually used, which is narrower when the CPU lacks the one asked for.
     namespace kernels = simcore::kernels;
-    if (options.has("kernels")) {
-        const std::string wanted = options.value("kernels");
-        bool known = false;
-        for (auto set : {kernels::KernelSet::Portable, kernels::KernelSet::Avx2, kernels::KernelSet::Avx512})
-            if (wanted == kernels::kernelSetName(set)) {
-                kernels::useKernels(set);
-                known = true;
-            }
-        if (!known) throw UsageError("--kernels: '" + wanted + "' is not one of portable, avx2, avx512");
-    }
+    for (auto set : {kernels::KernelSet::Portable, kernels::KernelSet::Avx2, kernels::KernelSet::Avx512})
+        if (args.kernels == kernels::kernelSetName(set)) kernels::useKernels(set);
 
     const auto buildStart = std::chrono::steady_clock::now();
     simcore::Simulation sim(setup.params, setup.integrator);
@@ -68,7 +66,7 @@ int commandBench(const std::vector<std::string>& args) {
     const double usPerStep = 1e6 * seconds / static_cast<double>(steps);
     const double nsPerSpring = 1e9 * seconds / (evals * static_cast<double>(topo.springCount()));
     const double realTime = sim.dt() / (seconds / static_cast<double>(steps));
-    if (options.has("header"))
+    if (args.header)
         std::printf("scene,integrator,threads,particles,springs,faces,steps,us_per_step,ns_per_spring_eval,"
                     "steps_per_second,real_time_factor,build_seconds,peak_rss_mib,kernels\n");
     std::printf("%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%s\n", setup.sceneName.c_str(),
@@ -76,6 +74,27 @@ int commandBench(const std::vector<std::string>& args) {
                 steps, usPerStep, nsPerSpring, 1e6 / usPerStep, realTime, buildSeconds,
                 static_cast<double>(peakResidentKiB()) / 1024.0, kernels::kernelSetName(kernels::kernelsInUse()));
     return kExitOk;
+}
+
+}  // namespace
+
+Command addBenchCommand(CLI::App& app) {
+    auto args = std::make_shared<BenchArgs>();
+    CLI::App* sub = app.add_subcommand("bench", "time N steps: us/step, ns per spring evaluation, real-time factor, "
+                                                "memory, and the force kernels used");
+    addSceneOptions(*sub, args->scene);
+    sub->add_option("--steps", args->steps, "steps timed")->type_name("N")->check(wholeIn(1, 100000000L))->capture_default_str();
+    sub->add_option("--warmup", args->warmup, "steps run before timing")->type_name("N")->check(wholeIn(0, 1000000L))->capture_default_str();
+    sub->add_option("--threads", args->threads, "worker threads (default: the hardware's)")
+        ->type_name("K")
+        ->check(wholeIn(1, 256))
+        ->capture_default_str();
+    sub->add_option("--kernels", args->kernels, "force kernels (default: the widest this CPU runs; a narrower set is "
+                                                "used and named when the CPU lacks the one asked for)")
+        ->type_name("SET")
+        ->check(CLI::IsMember({"portable", "avx2", "avx512"}));
+    sub->add_flag("--header", args->header, "print the CSV header line first");
+    return {sub, [args] { checkBench(*args); }, [args] { return runBench(*args); }};
 }
 
 }  // namespace cli

@@ -6,25 +6,46 @@
 
 namespace cli {
 
-int commandGallery(const std::vector<std::string>& args) {
-    Options options(args, {"run"}, {"list"});
-    const std::string which = options.valueOr("run", "");
-    if (which.empty() || options.has("list")) {
+namespace {
+
+int runGallery(const std::string& which, bool list) {
+    if (which.empty() || list) {
         for (const simcore::GalleryCase& c : simcore::galleryCases())
             std::printf("%-34s %-8s %s\n", c.name.c_str(), c.expectStable ? "stable" : "fails", c.description.c_str());
         return kExitOk;
     }
-    int bad = 0, count = 0;
+    int bad = 0;
     for (const simcore::GalleryCase& c : simcore::galleryCases()) {
         if (which != "all" && which != c.name) continue;
-        ++count;
         const simcore::GalleryOutcome o = simcore::runGalleryCase(c);
         std::printf("%-34s %-4s %s\n", c.name.c_str(), o.asExpected ? "ok" : "FAIL", o.summary.c_str());
         std::fflush(stdout);
         bad += o.asExpected ? 0 : 1;
     }
-    if (count == 0) throw UsageError("unknown gallery case '" + which + "'; see elastic-lab-cli gallery --list");
     return bad == 0 ? kExitOk : kExitFailed;
+}
+
+}  // namespace
+
+Command addGalleryCommand(CLI::App& app) {
+    struct Args {
+        std::string run;
+        bool list = false;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* sub = app.add_subcommand("gallery", "stiff and extreme presets with their expected outcome; exit 3 when "
+                                                  "one does not end as expected");
+    sub->add_option("--run", args->run, "run one case by name, or all")->type_name("NAME|all");
+    sub->add_flag("--list", args->list, "list the cases (the default)");
+    return {sub,
+            [args] {
+                if (args->run.empty() || args->run == "all") return;
+                for (const simcore::GalleryCase& c : simcore::galleryCases())
+                    if (c.name == args->run) return;
+                throw UsageError("unknown gallery case " + simcore::quoteShort(args->run) +
+                                 "; see elastic-lab-cli gallery --list");
+            },
+            [args] { return runGallery(args->run, args->list); }};
 }
 
 }  // namespace cli

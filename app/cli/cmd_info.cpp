@@ -1,6 +1,7 @@
 // `scenes`, `params` and `integrators`: listings generated from simcore's tables.
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
 #include "cli.h"
 #include "integrators.h"
@@ -9,32 +10,39 @@
 
 namespace cli {
 
-int commandScenes(const std::vector<std::string>& args) {
-    Options options(args, {});
-    for (const simcore::SceneInfo& s : simcore::sceneTable())
-        std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
-    return kExitOk;
+Command addScenesCommand(CLI::App& app) {
+    CLI::App* sub = app.add_subcommand("scenes", "list the built-in scenes");
+    return {sub, [] {}, [] {
+                for (const simcore::SceneInfo& s : simcore::sceneTable())
+                    std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
+                return kExitOk;
+            }};
 }
 
-int commandIntegrators(const std::vector<std::string>& args) {
-    Options options(args, {});
-    for (const simcore::IntegratorInfo& i : simcore::integratorTable())
-        std::printf("%-18s order %d  %s\n", std::string(i.name).c_str(), i.order,
-                    std::string(i.description).c_str());
-    return kExitOk;
+Command addIntegratorsCommand(CLI::App& app) {
+    CLI::App* sub = app.add_subcommand("integrators", "list the integrators with their order");
+    return {sub, [] {}, [] {
+                for (const simcore::IntegratorInfo& i : simcore::integratorTable())
+                    std::printf("%-18s order %d  %s\n", std::string(i.name).c_str(), i.order,
+                                std::string(i.description).c_str());
+                return kExitOk;
+            }};
 }
 
-int commandParams(const std::vector<std::string>& args) {
-    Options options(args, {"scene", "set"});
-    if (options.has("set") && !options.has("scene")) throw UsageError("params: --set needs --scene");
-    std::vector<const simcore::ParamSpec*> specs;
+namespace {
+
+struct ParamsArgs {
+    std::optional<std::string> scene;
+    std::vector<std::string> set;
     std::optional<simcore::SceneKind> kind;
-    if (options.has("scene")) {
-        const simcore::SceneInfo* scene = simcore::findScene(options.value("scene"));
-        if (!scene)
-            throw UsageError("unknown scene '" + options.value("scene") + "'; allowed: " + simcore::sceneNames());
-        kind = scene->kind;
-        specs = simcore::parametersFor(scene->kind);
+    std::optional<simcore::ParameterSet> params;  // the scene's, after --set
+};
+
+int listParams(const ParamsArgs& args) {
+    std::vector<const simcore::ParamSpec*> specs;
+    const std::optional<simcore::SceneKind> kind = args.kind;
+    if (kind) {
+        specs = simcore::parametersFor(*kind);
     } else {
         for (const simcore::ParamSpec& s : simcore::parameterTable()) specs.push_back(&s);
     }
@@ -62,13 +70,38 @@ int commandParams(const std::vector<std::string>& args) {
     if (kind) {
         // What these values mean for this body: the per-particle and per-spring values it uses
         // at its resolution under its scaling (scaling.h), after any --set.
-        simcore::ParameterSet params(*kind);
-        for (const std::string& assignment : options.all("set"))
-            if (auto error = params.assign(assignment)) throw UsageError("--set " + *error);
-        if (auto error = simcore::validateShape(params)) throw UsageError(*error);
+        const simcore::ParameterSet& params = *args.params;
         std::printf("\nthis body uses:\n%s\n", simcore::bodyValuesText(params, simcore::bodyValues(params)).c_str());
     }
     return kExitOk;
+}
+
+}  // namespace
+
+Command addParamsCommand(CLI::App& app) {
+    auto args = std::make_shared<ParamsArgs>();
+    CLI::App* sub = app.add_subcommand("params", "list every parameter: key, unit, default, range, meaning; with "
+                                                 "--scene, the scene's, and the values its body uses");
+    CLI::Option* scene = sub->add_option("--scene", args->scene, "a built-in scene (" + simcore::sceneNames() + ")")
+                             ->type_name("S");
+    sub->add_option("--set", args->set, "set a parameter first (repeatable), to see the values the body then uses")
+        ->type_name("KEY=VALUE")
+        ->allow_extra_args(false)
+        ->needs(scene);
+    return {sub,
+            [args] {
+                if (!args->scene) return;
+                const simcore::SceneInfo* info = simcore::findScene(*args->scene);
+                if (!info)
+                    throw UsageError("unknown scene " + simcore::quoteShort(*args->scene) + "; allowed: " + simcore::sceneNames());
+                args->kind = info->kind;
+                simcore::ParameterSet params(info->kind);
+                for (const std::string& assignment : args->set)
+                    if (auto error = params.assign(assignment)) throw UsageError("--set " + *error);
+                if (auto error = simcore::validateShape(params)) throw UsageError(*error);
+                args->params = std::move(params);
+            },
+            [args] { return listParams(*args); }};
 }
 
 }  // namespace cli

@@ -8,16 +8,28 @@
 
 namespace cli {
 
-int commandRestitution(const std::vector<std::string>& args) {
-    auto names = sceneOptionNames();
-    names.insert(names.end(), {"speeds", "csv"});
-    Options options(args, names, {});
-    checkDistinctFiles(options, {"csv", "plot"});
-    SceneSetup setup = sceneSetup(options);
-    const std::vector<double> speeds = numberList("speeds", options.has("speeds") ? options.value("speeds") : "0.3,1,3,10,30");
+namespace {
+
+struct RestitutionArgs {
+    SceneArgs scene;
+    std::string speeds = "0.3,1,3,10,30", csv;
+    std::vector<double> speedList;  // after check()
+    SceneSetup setup;
+};
+
+void checkRestitution(RestitutionArgs& args) {
+    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}});
+    args.setup = sceneSetup(args.scene);
+    args.speedList = numberList("speeds", args.speeds);
+    for (double speed : args.speedList)
+        if (!(speed > 0.0 && speed <= 1e4)) throw UsageError("--speeds: every speed must be in (0, 10000] m/s, got " + simcore::formatDouble(speed));
+}
+
+int runRestitution(const RestitutionArgs& args) {
+    const SceneSetup& setup = args.setup;
     std::unique_ptr<simcore::AtomicFile> csv;
-    if (options.has("csv")) {
-        csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
+    if (!args.csv.empty()) {
+        csv = std::make_unique<simcore::AtomicFile>(args.csv);
         if (!csv->ok()) throw UsageError(csv->error());
     }
     const simcore::ParameterSet& p = setup.params;
@@ -27,8 +39,7 @@ int commandRestitution(const std::vector<std::string>& args) {
     std::printf("             weightless; rebound / impact speed of a free particle and of the body's centre of mass\n\n");
     std::printf("%-12s %-12s %-12s %-14s %-10s\n", "speed_m/s", "particle", "body", "body_depth_m", "dt_s");
     std::string text = "speed,e_set,particle,body,body_depth,dt\n";  // -1: no rebound
-    for (double speed : speeds) {
-        if (!(speed > 0.0)) throw UsageError("--speeds: every speed must be > 0");
+    for (double speed : args.speedList) {
         const simcore::ImpactRow row = simcore::measureImpact(p, setup.integrator, speed);
         std::printf("%-12g %-12.4f %-12.4f %-14.4g %-10.3g %s\n", row.speed, row.particle, row.body, row.depth, row.dt,
                     row.note.c_str());
@@ -41,6 +52,18 @@ int commandRestitution(const std::vector<std::string>& args) {
         if (!csv->commit()) throw UsageError(csv->error());
     }
     return kExitOk;
+}
+
+}  // namespace
+
+Command addRestitutionCommand(CLI::App& app) {
+    auto args = std::make_shared<RestitutionArgs>();
+    CLI::App* sub = app.add_subcommand("restitution", "rebound / impact speed of a free particle and of the body against "
+                                                      "impact speed (weightless), beside the restitution e");
+    addSceneOptions(*sub, args->scene);
+    sub->add_option("--speeds", args->speeds, "comma-separated impact speeds [m/s]")->type_name("v1,v2,...")->capture_default_str();
+    sub->add_option("--csv", args->csv, "write one row per speed")->type_name("FILE");
+    return {sub, [args] { checkRestitution(*args); }, [args] { return runRestitution(*args); }};
 }
 
 }  // namespace cli

@@ -38,50 +38,50 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
                 wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0);
 }
 
-}  // namespace
+struct RunArgs {
+    SceneArgs scene;
+    double duration = 5.0;
+    long every = 1;
+    std::string csv, state, saveScene;
+    bool quiet = false;
+    simcore::IntegratorOptions integrator;
+    SceneSetup setup;  // after check()
+};
 
-int commandRun(const std::vector<std::string>& args) {
-    auto names = sceneOptionNames();
-    names.insert(names.end(), {"duration", "csv", "every", "state", "save-scene"});
-    for (const auto& n : integratorOptionNames()) names.push_back(n);
-    std::vector<std::string> flags = {"quiet"};
-    for (const auto& n : integratorFlagNames()) flags.push_back(n);
-    Options options(args, names, flags);
-    checkDistinctFiles(options, {"csv", "state", "save-scene"});
-    SceneSetup setup = sceneSetup(options);
-    const double duration = options.number("duration", 5.0, 0.0, 1e7, true);
-    const long every = options.integer("every", 1, 1, 1000000000L);
+void checkRun(RunArgs& args) {
+    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"state", args.state},
+                        {"save-scene", args.saveScene}});
+    args.setup = sceneSetup(args.scene);
     // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
     // refused at once instead of running for ever.
-    if (!simcore::makeIntegrator(setup.integrator)->adaptive() || options.has("fixed-step")) {
-        const double steps = std::ceil(duration / setup.params.get("dt") - 1e-9);
+    if (!simcore::makeIntegrator(args.setup.integrator)->adaptive() || args.integrator.fixedStep) {
+        const double dt = args.setup.params.get("dt");
+        const double steps = std::ceil(args.duration / dt - 1e-9);
         if (steps > kMaxSteps) {
             char text[300];
             std::snprintf(text, sizeof text,
                           "--duration %g s at dt %g s would take %.3g steps; at most %.0f per run (use a larger --dt, "
                           "a shorter --duration, or an adaptive integrator)",
-                          duration, setup.params.get("dt"), steps, kMaxSteps);
+                          args.duration, dt, steps, kMaxSteps);
             throw UsageError(text);
         }
     }
+}
 
+int run(const RunArgs& args) {
+    const SceneSetup& setup = args.setup;
+    const double duration = args.duration;
+    const long every = args.every;
     // Open every output before running: an unwritable path is bad input, found at once.
     std::unique_ptr<simcore::AtomicFile> csv, state, sceneOut;
-    if (options.has("csv")) {
-        csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
-        if (!csv->ok()) throw UsageError(csv->error());
-    }
-    if (options.has("state")) {
-        state = std::make_unique<simcore::AtomicFile>(options.value("state"));
-        if (!state->ok()) throw UsageError(state->error());
-    }
-    if (options.has("save-scene")) {
-        sceneOut = std::make_unique<simcore::AtomicFile>(options.value("save-scene"));
-        if (!sceneOut->ok()) throw UsageError(sceneOut->error());
+    for (auto [path, file] : {std::pair{&args.csv, &csv}, {&args.state, &state}, {&args.saveScene, &sceneOut}}) {
+        if (path->empty()) continue;
+        *file = std::make_unique<simcore::AtomicFile>(*path);
+        if (!(*file)->ok()) throw UsageError((*file)->error());
     }
 
     simcore::Simulation sim(setup.params, setup.integrator);
-    sim.setIntegratorOptions(integratorOptions(options));
+    sim.setIntegratorOptions(args.integrator);
     if (setup.state)  // resume a saved experiment
         if (auto error = simcore::applyState(sim, *setup.state)) throw UsageError(*error);
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
@@ -109,7 +109,7 @@ int commandRun(const std::vector<std::string>& args) {
             std::fprintf(stderr, "error: %s\n", file->error().c_str());
             return kExitBadInput;
         }
-    if (!options.has("quiet")) printSummary(sim, setup, wall);
+    if (!args.quiet) printSummary(sim, setup, wall);
     // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a
     // duration that is not a multiple of dt ends past it; it is said, never silent.
     if (!sim.failed() && sim.time() > tEnd + 1e-9 * sim.dt())
@@ -124,6 +124,27 @@ int commandRun(const std::vector<std::string>& args) {
         return kExitFailed;
     }
     return kExitOk;
+}
+
+}  // namespace
+
+Command addRunCommand(CLI::App& app) {
+    auto args = std::make_shared<RunArgs>();
+    CLI::App* sub = app.add_subcommand("run", "run one scene headless: a CSV row every N steps, the final state table, "
+                                              "a summary of energy, volume and cost");
+    addSceneOptions(*sub, args->scene);
+    sub->add_option("--duration", args->duration, "simulated time to run [s] (a resumed scene file runs on from its time)")
+        ->type_name("T")
+        ->check(finiteIn(0.0, 1e7, true))
+        ->capture_default_str();
+    sub->add_option("--csv", args->csv, "write the time series (one row per --every steps and the last)")->type_name("FILE");
+    sub->add_option("--every", args->every, "CSV row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
+    sub->add_option("--state", args->state, "write the final state: index, layer, position, velocity")->type_name("FILE");
+    sub->add_option("--save-scene", args->saveScene, "save the experiment with its final state as a scene file")
+        ->type_name("FILE.json");
+    sub->add_flag("--quiet", args->quiet, "no summary on standard output");
+    addIntegratorOptions(*sub, args->integrator);
+    return {sub, [args] { checkRun(*args); }, [args] { return run(*args); }};
 }
 
 }  // namespace cli

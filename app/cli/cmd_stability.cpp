@@ -19,34 +19,46 @@ std::string stepText(double h) {
     return b;
 }
 
-}  // namespace
+struct StabilityArgs {
+    SceneArgs scene;
+    std::string integrators = "euler,midpoint,rk4,symplectic-euler,verlet,rk45,implicit-euler";
+    double duration = 2.0, perturb = 0.01, hMin = 1e-5, hMax = 1.0;
+    std::string csv, shard;
+    bool quiet = false;
+    simcore::StabilitySpec spec;  // after check()
+    SceneSetup setup;
+};
 
-int commandStability(const std::vector<std::string>& args) {
-    Options options(args, {"scene", "set", "integrators", "duration", "csv", "shard", "perturb", "hmin", "hmax"},
-                    {"quiet"});
-    checkDistinctFiles(options, {"csv"});
-    SceneSetup setup = sceneSetup(options);
-    simcore::StabilitySpec spec;
-    spec.params = setup.params;
-    spec.integrators = nameList("integrators", options.valueOr("integrators", "euler,midpoint,rk4,symplectic-euler,verlet,rk45,implicit-euler"));
+void checkStability(StabilityArgs& args) {
+    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}});
+    args.setup = sceneSetup(args.scene);
+    simcore::StabilitySpec& spec = args.spec;
+    spec.params = args.setup.params;
+    spec.integrators = nameList("integrators", args.integrators);
     for (const auto& name : spec.integrators)
         if (!simcore::makeIntegrator(name))
-            throw UsageError("unknown integrator '" + name + "'; allowed: " + simcore::integratorNames());
-    spec.duration = options.number("duration", 2.0, 0.0, 1e5, true);
-    spec.perturb = options.number("perturb", 0.01, 0.0, 1e3, false);
-    spec.hMin = options.number("hmin", 1e-5, 0.0, 1.0, true);
-    spec.hMax = options.number("hmax", 1.0, spec.hMin, 1.0, false);
-    std::tie(spec.shardIndex, spec.shardCount) = parseShard(options);
+            throw UsageError("unknown integrator " + simcore::quoteShort(name) + "; allowed: " + simcore::integratorNames());
+    spec.duration = args.duration;
+    spec.perturb = args.perturb;
+    spec.hMin = args.hMin;
+    spec.hMax = args.hMax;
+    if (spec.hMax < spec.hMin)
+        throw UsageError("--hmax " + simcore::formatDouble(spec.hMax) + " is below --hmin " + simcore::formatDouble(spec.hMin));
+    std::tie(spec.shardIndex, spec.shardCount) = parseShard(args.shard);
+}
 
+int runStability(const StabilityArgs& args) {
+    const simcore::StabilitySpec& spec = args.spec;
+    const SceneSetup& setup = args.setup;
     std::unique_ptr<simcore::AtomicFile> csv;
-    if (options.has("csv")) {
-        csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
+    if (!args.csv.empty()) {
+        csv = std::make_unique<simcore::AtomicFile>(args.csv);
         if (!csv->ok()) throw UsageError(csv->error());
     }
     simcore::ParameterSet linearised = spec.params;
     if (!linearised.isExplicit("perturb")) linearised.set("perturb", spec.perturb);
     const simcore::LinearModes modes = simcore::linearModes(linearised);
-    const bool quiet = options.has("quiet");
+    const bool quiet = args.quiet;
     if (!quiet) {
         std::printf("scene        %s, T = %g s, start perturbed by %g m (seed %g)\n", setup.sceneName.c_str(),
                     spec.duration, linearised.get("perturb"), linearised.get("seed"));
@@ -105,6 +117,30 @@ int commandStability(const std::vector<std::string>& args) {
         }
     }
     return kExitOk;
+}
+
+}  // namespace
+
+Command addStabilityCommand(CLI::App& app) {
+    auto args = std::make_shared<StabilityArgs>();
+    CLI::App* sub = app.add_subcommand("stability", "largest stable dt per integrator (bisection) beside the linearised "
+                                                    "prediction (highest frequency, damping, stability region)");
+    addSceneOptions(*sub, args->scene, false, false);
+    sub->add_option("--integrators", args->integrators, "comma-separated integrators")->type_name("a,b,...")->capture_default_str();
+    sub->add_option("--duration", args->duration, "simulated time a step must survive [s]")
+        ->type_name("T")
+        ->check(finiteIn(0.0, 1e5, true))
+        ->capture_default_str();
+    sub->add_option("--perturb", args->perturb, "random start displacement per particle [m] (unless --set perturb=)")
+        ->type_name("A")
+        ->check(finiteIn(0.0, 1e3, false))
+        ->capture_default_str();
+    sub->add_option("--hmin", args->hMin, "smallest dt scanned [s]")->type_name("H")->check(finiteIn(0.0, 1.0, true))->capture_default_str();
+    sub->add_option("--hmax", args->hMax, "largest dt scanned [s]")->type_name("H")->check(finiteIn(0.0, 1.0, true))->capture_default_str();
+    sub->add_option("--shard", args->shard, "scan the K-th of N equal parts of the integrators (1-based)")->type_name("K/N");
+    sub->add_option("--csv", args->csv, "write one row per integrator")->type_name("FILE");
+    sub->add_flag("--quiet", args->quiet, "no table on standard output");
+    return {sub, [args] { checkStability(*args); }, [args] { return runStability(*args); }};
 }
 
 }  // namespace cli

@@ -15,51 +15,21 @@
 
 namespace cli {
 
-// Comma-separated lists: every item present (no "a,,b", no trailing comma), no item twice.
-std::vector<std::string> listItems(const std::string& option, const std::string& text) {
-    std::vector<std::string> items;
-    std::string item;
-    std::stringstream ss(text);
-    while (std::getline(ss, item, ',')) items.push_back(item);
-    if (!text.empty() && text.back() == ',') items.emplace_back();
-    if (items.empty()) throw UsageError("--" + option + " needs a comma-separated list, got nothing");
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (items[i].empty())
-            throw UsageError("--" + option + " " + simcore::quoteShort(text) + ": item " + std::to_string(i + 1) +
-                             " is empty");
-        for (std::size_t j = 0; j < i; ++j)
-            if (items[j] == items[i])
-                throw UsageError("--" + option + ": " + simcore::quoteShort(items[i]) + " is listed twice");
-    }
-    return items;
-}
-
-std::vector<double> numberList(const std::string& option, const std::string& text) {
-    std::vector<double> values;
-    for (const std::string& item : listItems(option, text)) {
-        const auto v = simcore::parseNumber(item);
-        if (!v) throw UsageError("--" + option + ": " + simcore::quoteShort(item) + " is not a finite number");
-        for (double earlier : values)
-            if (earlier == *v) throw UsageError("--" + option + ": " + simcore::quoteShort(item) + " is listed twice");
-        values.push_back(*v);
-    }
-    return values;
-}
-
-std::vector<std::string> nameList(const std::string& option, const std::string& text) { return listItems(option, text); }
-
-std::pair<int, int> parseShard(const Options& options) {
-    if (!options.has("shard")) return {0, 1};
-    const std::string text = options.value("shard");
-    const auto slash = text.find('/');
-    const auto k = simcore::parseNumber(text.substr(0, slash == std::string::npos ? 0 : slash));
-    const auto n = slash == std::string::npos ? std::nullopt : simcore::parseNumber(text.substr(slash + 1));
-    if (!k || !n || *k != std::floor(*k) || *n != std::floor(*n) || *n < 1 || *k < 1 || *k > *n || *n > 100000)
-        throw UsageError("--shard: '" + text + "' is not allowed; allowed K/N with 1 <= K <= N, e.g. 2/4");
-    return {static_cast<int>(*k) - 1, static_cast<int>(*n)};
-}
-
 namespace {
+
+struct StudyArgs {
+    SceneArgs scene;
+    std::optional<std::string> integrators, dts, tols, reference, shard, refine, title;
+    std::optional<double> duration;
+    int repeat = 1, samples = 20, temporalRuns = 4;
+    double interval = 0.01;
+    std::string csv, plot, fromCsv;
+    bool fixedStep = false, quiet = false;
+    // After check():
+    SceneSetup setup;
+    simcore::StudySpec study;
+    simcore::RefinementSpec refinement;
+};
 
 void printOrders(const std::vector<simcore::StudyRow>& rows, double referenceError) {
     std::printf("fitted convergence order (slope of log error_max against log dt over the 3 smallest resolved steps):\n");
@@ -83,46 +53,48 @@ bool writeFile(const std::string& path, const std::string& text) {
 }
 
 // Opens --csv before any work: an unwritable path is bad input, found first.
-std::unique_ptr<simcore::AtomicFile> openCsv(const Options& options) {
-    if (!options.has("csv")) return nullptr;
-    auto csv = std::make_unique<simcore::AtomicFile>(options.value("csv"));
+std::unique_ptr<simcore::AtomicFile> openCsv(const std::string& path) {
+    if (path.empty()) return nullptr;
+    auto csv = std::make_unique<simcore::AtomicFile>(path);
     if (!csv->ok()) throw UsageError(csv->error());
     return csv;
 }
 
 // --refine KEY=v1,v2,...: the same body at several resolutions against the finest.
-int commandRefinement(const Options& options) {
-    for (const char* temporalOnly : {"dts", "repeat", "reference", "shard", "samples", "from-csv"})
-        if (options.has(temporalOnly))
-            throw UsageError(std::string("--") + temporalOnly + " belongs to the temporal study, not to --refine");
-    SceneSetup setup = sceneSetup(options);
-    simcore::RefinementSpec spec;
-    spec.params = setup.params;
-    const std::string refine = options.value("refine");
+void checkRefinement(StudyArgs& args) {
+    args.setup = sceneSetup(args.scene);
+    simcore::RefinementSpec& spec = args.refinement;
+    spec.params = args.setup.params;
+    const std::string& refine = *args.refine;
     const auto eq = refine.find('=');
-    if (eq == std::string::npos) throw UsageError("--refine: expected KEY=v1,v2,..., got '" + refine + "'");
+    if (eq == std::string::npos) throw UsageError("--refine: expected KEY=v1,v2,..., got " + simcore::quoteShort(refine));
     spec.key = refine.substr(0, eq);
     for (double v : numberList("refine", refine.substr(eq + 1))) {
         if (v != std::floor(v) || v < 0 || v > 1e6) throw UsageError("--refine: levels are whole numbers, got " + simcore::formatDouble(v));
         spec.values.push_back(static_cast<int>(v));
     }
-    const std::vector<std::string> integrators = nameList("integrators", options.valueOr("integrators", "rk4"));
+    const std::vector<std::string> integrators = nameList("integrators", args.integrators.value_or("rk4"));
     if (integrators.size() != 1) throw UsageError("--refine takes one integrator (--integrators NAME)");
     spec.integrator = integrators.front();
-    if (options.has("dt")) spec.dt = setup.params.get("dt");
-    if (options.has("tols")) {
-        const std::vector<double> tols = numberList("tols", options.value("tols"));
+    if (args.scene.dt) spec.dt = args.setup.params.get("dt");
+    if (args.tols) {
+        const std::vector<double> tols = numberList("tols", *args.tols);
         if (tols.size() != 1) throw UsageError("--refine takes one tolerance (--tols T)");
         spec.tolerance = tols.front();
     }
-    spec.duration = options.number("duration", 1.0, 0.0, 1e6, true);
-    spec.interval = options.number("interval", 0.01, 0.0, 1e6, true);
-    spec.temporalRuns = static_cast<int>(options.integer("temporal-runs", 4, 0, 10));
-    spec.options.fixedStep = options.has("fixed-step");
+    spec.duration = args.duration.value_or(1.0);
+    spec.interval = args.interval;
+    spec.temporalRuns = args.temporalRuns;
+    spec.options.fixedStep = args.fixedStep;
     if (auto error = simcore::validateRefinement(spec)) throw UsageError(*error);
-    std::unique_ptr<simcore::AtomicFile> csv = openCsv(options);
+}
 
-    const bool quiet = options.has("quiet");
+int runRefinement(const StudyArgs& args) {
+    const simcore::RefinementSpec& spec = args.refinement;
+    const SceneSetup& setup = args.setup;
+    std::unique_ptr<simcore::AtomicFile> csv = openCsv(args.csv);
+
+    const bool quiet = args.quiet;
     auto progress = [&](const simcore::StudyProgress& p) {
         if (!quiet && p.done < p.total) std::fprintf(stderr, "[%d/%d] %s\n", p.done + 1, p.total, p.what.c_str());
     };
@@ -187,55 +159,45 @@ int commandRefinement(const Options& options) {
             return kExitBadInput;
         }
     }
-    if (options.has("plot")) {
-        const std::string title = options.valueOr(
-            "title", setup.sceneName + ": mesh error and step error against run time, T = " + simcore::formatDouble(spec.duration) + " s");
-        if (!writeFile(options.value("plot"), simcore::refinementSvg(spec, result, title))) return kExitBadInput;
+    if (!args.plot.empty()) {
+        const std::string title = args.title.value_or(
+            setup.sceneName + ": mesh error and step error against run time, T = " + simcore::formatDouble(spec.duration) + " s");
+        if (!writeFile(args.plot, simcore::refinementSvg(spec, result, title))) return kExitBadInput;
     }
     return kExitOk;
 }
 
-}  // namespace
+// Merge mode: fit and plot rows written earlier (e.g. the shards, concatenated).
+int runFromCsv(const StudyArgs& args) {
+    std::ifstream in(args.fromCsv);
+    if (!in) throw UsageError("cannot read " + simcore::quoteShort(args.fromCsv, 200));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string error;
+    const auto rows = simcore::parseStudyCsv(text.str(), &error);
+    if (!rows) throw UsageError(simcore::quoteShort(args.fromCsv, 200) + ": " + error);
+    printOrders(*rows, 0.0);
+    if (!args.plot.empty() && !writeFile(args.plot, simcore::studySvg(*rows, args.title.value_or("work-precision"))))
+        return kExitBadInput;
+    return kExitOk;
+}
 
-int commandStudy(const std::vector<std::string>& args) {
-    std::vector<std::string> names = {"scene", "set", "integrators", "dts", "tols", "duration", "repeat",
-                                      "reference", "csv", "plot", "shard", "samples", "from-csv", "title",
-                                      "refine", "dt", "interval", "temporal-runs"};
-    Options options(args, names, {"fixed-step", "quiet"});
-    checkDistinctFiles(options, {"csv", "plot"});
-    if (options.has("refine")) return commandRefinement(options);
-    for (const char* refineOnly : {"dt", "interval", "temporal-runs"})
-        if (options.has(refineOnly))
-            throw UsageError(std::string("--") + refineOnly + " belongs to --refine; the temporal study takes --dts");
-
-    if (options.has("from-csv")) {
-        // Merge mode: fit and plot rows written earlier (e.g. the shards, concatenated).
-        std::ifstream in(options.value("from-csv"));
-        if (!in) throw UsageError("cannot read '" + options.value("from-csv") + "'");
-        std::stringstream text;
-        text << in.rdbuf();
-        std::string error;
-        const auto rows = simcore::parseStudyCsv(text.str(), &error);
-        if (!rows) throw UsageError(options.value("from-csv") + ": " + error);
-        printOrders(*rows, 0.0);
-        if (options.has("plot") &&
-            !writeFile(options.value("plot"), simcore::studySvg(*rows, options.valueOr("title", "work-precision"))))
-            return kExitBadInput;
-        return kExitOk;
-    }
-
-    SceneSetup setup = sceneSetup(options);
-    simcore::StudySpec spec;
-    spec.params = setup.params;
-    spec.integrators = nameList("integrators", options.valueOr("integrators", "euler,midpoint,rk4"));
-    if (options.has("dts")) spec.dts = numberList("dts", options.value("dts"));
-    if (options.has("tols")) spec.tolerances = numberList("tols", options.value("tols"));
-    spec.duration = options.number("duration", 2.0, 0.0, 1e6, true);
-    spec.repeat = static_cast<int>(options.integer("repeat", 1, 1, 1000));
-    spec.samples = static_cast<int>(options.integer("samples", 20, 1, 100000));
-    spec.reference = options.valueOr("reference", "auto");
-    spec.options.fixedStep = options.has("fixed-step");
-    std::tie(spec.shardIndex, spec.shardCount) = parseShard(options);
+void checkStudy(StudyArgs& args) {
+    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"from-csv", args.fromCsv}, {"csv", args.csv}, {"plot", args.plot}});
+    if (args.refine) return checkRefinement(args);
+    if (!args.fromCsv.empty()) return;
+    args.setup = sceneSetup(args.scene);
+    simcore::StudySpec& spec = args.study;
+    spec.params = args.setup.params;
+    spec.integrators = nameList("integrators", args.integrators.value_or("euler,midpoint,rk4"));
+    if (args.dts) spec.dts = numberList("dts", *args.dts);
+    if (args.tols) spec.tolerances = numberList("tols", *args.tols);
+    spec.duration = args.duration.value_or(2.0);
+    spec.repeat = args.repeat;
+    spec.samples = args.samples;
+    spec.reference = args.reference.value_or("auto");
+    spec.options.fixedStep = args.fixedStep;
+    std::tie(spec.shardIndex, spec.shardCount) = parseShard(args.shard.value_or(""));
     if (auto error = simcore::validateStudy(spec)) throw UsageError(*error);
     // Bounded work: the smallest step, and the RK4 reference 16x below it, take at most
     // kMaxSteps steps each (--dts 1e-300 is refused, not run for ever or counted as 0 steps).
@@ -251,9 +213,15 @@ int commandStudy(const std::vector<std::string>& args) {
             throw UsageError(text);
         }
     }
+}
 
-    std::unique_ptr<simcore::AtomicFile> csv = openCsv(options);
-    const bool quiet = options.has("quiet");
+int runStudy(const StudyArgs& args) {
+    if (args.refine) return runRefinement(args);
+    if (!args.fromCsv.empty()) return runFromCsv(args);
+    const simcore::StudySpec& spec = args.study;
+    const SceneSetup& setup = args.setup;
+    std::unique_ptr<simcore::AtomicFile> csv = openCsv(args.csv);
+    const bool quiet = args.quiet;
     const auto items = simcore::shardItems(simcore::studyItems(spec), spec.shardIndex, spec.shardCount);
     if (!quiet)
         std::printf("study        %s, T = %g s, %zu runs%s, timing: median of %d\n", setup.sceneName.c_str(),
@@ -304,12 +272,81 @@ int commandStudy(const std::vector<std::string>& args) {
             return kExitBadInput;
         }
     }
-    if (options.has("plot")) {
-        const std::string title = options.valueOr("title", setup.sceneName + ": error against cost, T = " +
-                                                              simcore::formatDouble(spec.duration) + " s");
-        if (!writeFile(options.value("plot"), simcore::studySvg(rows, title))) return kExitBadInput;
+    if (!args.plot.empty()) {
+        const std::string title =
+            args.title.value_or(setup.sceneName + ": error against cost, T = " + simcore::formatDouble(spec.duration) + " s");
+        if (!writeFile(args.plot, simcore::studySvg(rows, title))) return kExitBadInput;
     }
     return kExitOk;
+}
+
+}  // namespace
+
+Command addStudyCommand(CLI::App& app) {
+    auto args = std::make_shared<StudyArgs>();
+    CLI::App* sub = app.add_subcommand(
+        "study", "work-precision study: error against wall time, force evaluations and dt for each integrator and "
+                 "step (or tolerance), fitted orders; with --refine, the refinement study (the same body at each "
+                 "resolution against the finest); with --from-csv, fit and plot rows written before (shards)");
+    addSceneOptions(*sub, args->scene, true, false);
+    CLI::Option* refine = sub->add_option("--refine", args->refine,
+                                          "refinement study over KEY (particles, subdivisions or slices) at these levels")
+                              ->type_name("KEY=v1,v2,...");
+    CLI::Option* fromCsv = sub->add_option("--from-csv", args->fromCsv, "fit and plot the rows of an earlier study's CSV "
+                                                                        "(e.g. the shards, concatenated)")
+                               ->type_name("FILE")
+                               ->excludes(refine);
+    CLI::Option* integrators =
+        sub->add_option("--integrators", args->integrators, "comma-separated integrators (one with --refine)")
+            ->type_name("a,b,...")
+            ->default_str("euler,midpoint,rk4; rk4 with --refine");
+    CLI::Option* dts = sub->add_option("--dts", args->dts, "comma-separated fixed steps [s]")->type_name("h1,h2,...");
+    CLI::Option* tols = sub->add_option("--tols", args->tols, "comma-separated tolerances of the adaptive methods "
+                                                              "(one with --refine)")
+                            ->type_name("t1,t2,...");
+    CLI::Option* duration = sub->add_option("--duration", args->duration, "simulated time of every run [s]")
+                                ->type_name("T")
+                                ->check(finiteIn(0.0, 1e6, true))
+                                ->default_str("2; 1 with --refine");
+    CLI::Option* repeat = sub->add_option("--repeat", args->repeat, "time each run R times and keep the median wall time")
+                              ->type_name("R")
+                              ->check(wholeIn(1, 1000))
+                              ->capture_default_str();
+    CLI::Option* reference = sub->add_option("--reference", args->reference, "what the error is measured against: auto "
+                                                                              "(closed form where one exists), exact, rk4, rk45")
+                                  ->type_name("NAME")
+                                  ->default_str("auto");
+    CLI::Option* samples = sub->add_option("--samples", args->samples, "output times on which error_max is taken")
+                               ->type_name("G")
+                               ->check(wholeIn(1, 100000))
+                               ->capture_default_str();
+    CLI::Option* shard = sub->add_option("--shard", args->shard, "run the K-th of N equal parts of the sweep (1-based); "
+                                                                 "the parts' CSVs concatenate into the whole")
+                             ->type_name("K/N");
+    CLI::Option* csv = sub->add_option("--csv", args->csv, "write one row per run")->type_name("FILE");
+    sub->add_option("--plot", args->plot, "draw the diagram as SVG")->type_name("FILE.svg");
+    sub->add_option("--title", args->title, "the plot's title")->type_name("TEXT");
+    sub->add_option("--interval", args->interval, "with --refine: compare the levels every I s [s]")
+                                ->type_name("I")
+                                ->check(finiteIn(0.0, 1e6, true))
+                                ->capture_default_str()
+                                ->needs(refine);
+    sub->add_option("--temporal-runs", args->temporalRuns,
+                                            "with --refine: coarser steps run on the finest level, to set its step error beside the mesh error")
+                                ->type_name("K")
+                                ->check(wholeIn(0, 10))
+                                ->capture_default_str()
+                                ->needs(refine);
+    CLI::Option* fixed = sub->add_flag("--fixed-step", args->fixedStep, "run the adaptive methods at the fixed steps --dts");
+    sub->add_flag("--quiet", args->quiet, "no table on standard output (the CSV and plot are still written)");
+    sub->get_option("--dt")->description("with --refine: the time step of every level [s] (default: the stable "
+                                         "step each level needs)")->needs(refine);
+    for (CLI::Option* temporalOnly : {dts, repeat, reference, samples, shard}) temporalOnly->excludes(refine);
+    // Merge mode runs nothing: an option that would change a run is a mistake, not ignored.
+    for (CLI::Option* notMerged : {integrators, dts, tols, duration, repeat, reference, samples, shard, csv, fixed,
+                                   sub->get_option("--scene"), sub->get_option("--set")})
+        notMerged->excludes(fromCsv);
+    return {sub, [args] { checkStudy(*args); }, [args] { return runStudy(*args); }};
 }
 
 }  // namespace cli
