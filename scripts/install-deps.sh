@@ -3,11 +3,11 @@
 # help2man makes the man pages; dpkg-dev (dpkg-shlibdeps), desktop-file-utils and appstream are
 # for the .deb and its test (packaging/).
 set -euo pipefail
+packaging=(help2man dpkg-dev desktop-file-utils appstream)
 packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev libqcustomplot-dev
-          xvfb xauth libbenchmark-dev nlohmann-json3-dev stress-ng ccache
-          help2man dpkg-dev desktop-file-utils appstream)
+          xvfb xauth libbenchmark-dev nlohmann-json3-dev stress-ng ccache)
 missing=()
-for p in "${packages[@]}"; do
+for p in "${packages[@]}" "${packaging[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
