@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # test_package: builds the .deb from the build tree with CPack, unpacks it into a scratch root
-# and runs the installed binaries from there (elastic-lab --version, a short elastic-lab-cli
+# and runs the installed binaries from there (both binaries' --version, a short elastic-lab-cli
 # run); checks the package's fields, its Depends (from dpkg-shlibdeps), the installed layout,
-# the desktop entry, icon, metainfo, man pages and docs.
+# the desktop entry, icon, metainfo, man pages, bash completion and docs.
 # Everything happens in a temporary directory removed on exit; nothing is written to the source
 # tree. Registered by packaging/CMakeLists.txt (Release builds only, see there).
 #
@@ -55,6 +55,8 @@ stray=$(cd "$root" && find . \( -name '*.a' -o -name '*.h' -o -name 'test_*' -o 
 # The installed CLI, from the scratch root, with a clean environment and its own working directory.
 mkdir -m 700 "$scratch/runtime"
 run_installed() { (cd "$scratch" && env -i PATH=/usr/bin:/bin HOME="$scratch" XDG_RUNTIME_DIR="$scratch/runtime" "$@"); }
+out=$(run_installed "$usr/bin/elastic-lab-cli" --version) || fail "elastic-lab-cli --version failed"
+[ "$out" = "elastic-lab-cli $version" ] || fail "elastic-lab-cli --version says '$out'"
 run_installed "$usr/bin/elastic-lab-cli" run --scene ring2d --duration 0.05 --csv "$scratch/run.csv" >"$scratch/run.log" 2>&1 ||
   { cat "$scratch/run.log" >&2; fail "the installed elastic-lab-cli run failed"; }
 # The CSV: a header with the documented columns, rows up to t = 0.05 s, finite energies.
@@ -111,8 +113,17 @@ if [ "$man" = ON ]; then
     zcat "$page" | grep -q -- "$2" || fail "$1.1 does not mention $2 (from --help)"
   }
   check_man elastic-lab-cli 'stability'
+  # ... and the CLI's, each command's options (run's --duration, with its unit).
+  zcat "$usr/share/man/man1/elastic-lab-cli.1.gz" | grep -q '^\.SS "run"' || fail "elastic-lab-cli.1 has no run command"
+  zcat "$usr/share/man/man1/elastic-lab-cli.1.gz" | grep -q 'simulated time to run \[s\]' ||
+    fail "elastic-lab-cli.1 lacks the description of run --duration"
   [ "$gui" = ON ] && check_man elastic-lab 'screenshot'
 fi
+
+# The bash completion (app/cli), written by the tool from its command tree.
+completion=$usr/share/bash-completion/completions/elastic-lab-cli
+[ -s "$completion" ] || fail "missing ${completion#"$root"}"
+grep -q 'complete .*elastic-lab-cli' "$completion" || fail "the completion does not complete elastic-lab-cli"
 
 # Docs in the repository's layout: every relative link to a file in them resolves.
 doc=$usr/share/doc/elastic-lab
