@@ -129,6 +129,13 @@ grep -q 'complete .*elastic-lab-cli' "$completion" || fail "the completion does 
 doc=$usr/share/doc/elastic-lab
 [ -s "$doc/README.md" ] || fail "missing README.md in share/doc/elastic-lab"
 [ -s "$doc/docs/architecture.md" ] || fail "missing docs/architecture.md in share/doc/elastic-lab"
+grep -q "^License: GPL-3.0-or-later" "$doc/copyright" || fail "share/doc/elastic-lab/copyright has no licence"
+changelog=$(zcat "$doc/changelog.gz" | head -n 1)
+[ "$changelog" = "elastic-lab ($version) unstable; urgency=medium" ] || fail "changelog.gz begins '$changelog'"
+if [ "$gui" = ON ]; then
+  grep -q "<project_license>GPL-3.0-or-later</project_license>" "$usr/share/metainfo/$app_id.metainfo.xml" ||
+    fail "the metainfo's licence is not the copyright file's"
+fi
 links=0
 while IFS= read -r page; do
   while IFS= read -r target; do
