@@ -33,6 +33,7 @@
 #include "integrators.h"
 #include "output.h"
 #include "params.h"
+#include "refinement.h"
 #include "scenefile.h"
 #include "scenes.h"
 #include "simulation.h"
@@ -413,6 +414,8 @@ std::vector<std::string> integratorList(const std::vector<std::string>& names) {
 }
 
 double nanIfFailed(bool ok, double v) { return ok ? v : std::nan(""); }
+// An adaptive run's tolerance, None for a fixed-step run (simcore: < 0).
+py::object toleranceOrNone(double tolerance) { return tolerance > 0 ? py::object(py::float_(tolerance)) : py::none(); }
 
 py::dict study(const py::object& scene, const std::vector<std::string>& integrators,
                const std::optional<std::vector<double>>& dts, const std::optional<std::vector<double>>& tolerances,
@@ -440,7 +443,7 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
     py::list rows;
     for (const simcore::StudyRow& r : result.rows)
         rows.append(py::dict(py::arg("integrator") = r.item.integrator, py::arg("dt") = r.dt,
-                             py::arg("tolerance") = r.item.tolerance > 0 ? py::object(py::float_(r.item.tolerance)) : py::none(),
+                             py::arg("tolerance") = toleranceOrNone(r.item.tolerance),
                              py::arg("steps") = r.steps, py::arg("force_evals") = r.forceEvaluations,
                              py::arg("wall_seconds") = r.wallSeconds, py::arg("error_final") = nanIfFailed(r.ok, r.errorFinal),
                              py::arg("error_max") = nanIfFailed(r.ok, r.errorMax),
@@ -506,6 +509,66 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
     return py::dict(py::arg("rows") = rows, py::arg("omega_max") = out.modes.omegaMax,
                     py::arg("free_coordinates") = out.modes.freeCoordinates,
                     py::arg("unstable_modes") = out.modes.unstableModes);
+}
+
+py::dict refinement(const py::object& scene, const std::vector<int>& levels, const py::object& keyArg,
+                    const std::string& integrator, const py::object& tolerance, const py::handle& duration,
+                    const py::handle& interval, const py::handle& temporalRuns, bool fixedStep,
+                    const py::object& csvPath, const py::object& plotPath, const py::object& title,
+                    const py::kwargs& parameters) {
+    const Scene s = sceneFrom(scene, parameters);
+    simcore::RefinementSpec spec;
+    spec.params = s.params;
+    spec.key = keyArg.is_none() ? simcore::refinementKey(s.params.kind()) : keyArg.cast<std::string>();
+    spec.values = levels;
+    checkIntegrator(integrator);
+    spec.integrator = integrator;
+    if (parameters.contains("dt")) spec.dt = s.params.get("dt");  // as the CLI's --dt: the study's step
+    if (!tolerance.is_none()) spec.tolerance = checkedNumber(tolerance, "tolerance", 0.0, 1.0, true);
+    spec.duration = checkedNumber(duration, "duration", 0.0, 1e6, true, false, "s");
+    spec.interval = checkedNumber(interval, "interval", 0.0, 1e6, true, false, "s");
+    spec.temporalRuns = static_cast<int>(checkedNumber(temporalRuns, "temporal_runs", 0, 10, false, true));
+    spec.options.fixedStep = fixedStep;
+    if (auto error = simcore::validateRefinement(spec)) throw py::value_error(*error);
+    auto csv = openOutput(csvPath);
+    auto plot = openOutput(plotPath);
+
+    const simcore::RefinementResult result =
+        cancellable([&](const std::atomic<bool>* cancel) { return simcore::runRefinement(spec, {}, cancel); });
+
+    py::list rows;
+    for (const simcore::RefinementRow& r : result.rows)
+        rows.append(py::dict(py::arg("key") = spec.key, py::arg("value") = r.value, py::arg("particles") = r.particles,
+                             py::arg("springs") = r.springs, py::arg("h") = r.h, py::arg("dt") = r.dt,
+                             py::arg("steps") = r.steps, py::arg("wall_seconds") = r.wallSeconds,
+                             py::arg("error_volume") = nanIfFailed(r.ok, r.errorVolume),
+                             py::arg("error_com") = nanIfFailed(r.ok, r.errorCom), py::arg("reference") = r.reference,
+                             py::arg("status") = r.status()));
+    py::list temporal;
+    for (const simcore::TemporalPoint& p : result.temporal)
+        temporal.append(py::dict(py::arg("dt") = p.dt,
+                                 py::arg("tolerance") = toleranceOrNone(p.tolerance),
+                                 py::arg("steps") = p.steps, py::arg("wall_seconds") = p.wallSeconds,
+                                 py::arg("error_volume") = nanIfFailed(p.ok, p.errorVolume),
+                                 py::arg("error_com") = nanIfFailed(p.ok, p.errorCom), py::arg("failure") = p.failure));
+    py::dict orders;
+    for (const simcore::SpatialOrder& fit : simcore::fitSpatialOrders(result)) orders[py::str(fit.observable)] = fit.order;
+    if (csv) {
+        csv->write(simcore::refinementCsvHeader());
+        for (const simcore::RefinementRow& r : result.rows) csv->write(simcore::refinementCsvRow(spec.key, r));
+        commit(*csv);
+    }
+    if (plot) {
+        const std::string t = title.is_none() ? s.name + ": mesh error and step error against run time, T = " +
+                                                    simcore::formatDouble(spec.duration) + " s"
+                                              : title.cast<std::string>();
+        plot->write(simcore::refinementSvg(spec, result, t));
+        commit(*plot);
+    }
+    return py::dict(py::arg("rows") = rows, py::arg("orders") = orders, py::arg("temporal") = temporal,
+                    py::arg("dt") = result.dt, py::arg("step_rule") = result.stepRule,
+                    py::arg("time_error_volume") = result.timeErrorVolume,
+                    py::arg("time_error_com") = result.timeErrorCom);
 }
 
 }  // namespace
@@ -583,6 +646,14 @@ PYBIND11_MODULE(elasticlab, m) {
           py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("title") = py::none(),
           "Work-precision study (the CLI's `study`): {'rows': [dict per run], 'orders': {integrator: fitted "
           "order}, 'reference', 'reference_error'}; csv= and plot= write the CLI's CSV and SVG.");
+    m.def("refinement", &refinement, py::arg("scene"), py::kw_only(), py::arg("levels"),
+          py::arg("key") = py::none(), py::arg("integrator") = "rk4", py::arg("tolerance") = py::none(),
+          py::arg("duration") = 1.0, py::arg("interval") = 0.01, py::arg("temporal_runs") = 4,
+          py::arg("fixed_step") = false, py::arg("csv") = py::none(), py::arg("plot") = py::none(),
+          py::arg("title") = py::none(),
+          "Refinement study (the CLI's `study --refine`): the same body at several resolutions (levels of "
+          "key, the scene's own by default) against the finest: {'rows', 'orders': {'volume', 'com'}, "
+          "'temporal', 'dt', 'step_rule', ...}; dt= (a parameter) fixes the step; csv= and plot= as the CLI.");
     m.def("stability", &stability, py::arg("scene"), py::kw_only(),
           py::arg("integrators") = std::vector<std::string>{"euler", "midpoint", "rk4", "symplectic-euler", "verlet",
                                                             "rk45", "implicit-euler"},

@@ -302,7 +302,7 @@ def threads_of_this_process():
     return len(os.listdir("/proc/self/task"))
 
 
-@pytest.mark.parametrize("what", ["study", "stability"])
+@pytest.mark.parametrize("what", ["study", "refinement", "stability"])
 def test_ctrl_c_cancels_a_study(tmp_path, what):
     import gc
     gc.collect()  # no thread of an earlier test's Simulation ends while we count
@@ -314,8 +314,30 @@ def test_ctrl_c_cancels_a_study(tmp_path, what):
     with pytest.raises(KeyboardInterrupt):
         if what == "study":  # a reference of 1.6e9 steps: hours, unless cancelled
             el.study("spring1d", integrators=["rk4"], dts=[1e-5], duration=1000.0, csv=target)
+        elif what == "refinement":  # 10^4 s of the ring at two resolutions
+            el.refinement("ring2d", levels=[12, 24], duration=1e4, csv=target)
         else:  # bisections over runs of 1e5 s
             el.stability("ring2d", integrators=["euler"], duration=1e5, csv=target)
     t.join()
     assert not target.exists()  # nothing written, not even in part
     assert os.listdir(tmp_path) == []
+
+
+def test_refinement_measures_second_order_in_space(tmp_path):
+    # The weightless ring (tests/test_refinement.cpp): its area error against the finest level
+    # falls like h^2 as the mesh spacing h halves.
+    out = el.refinement("ring2d", levels=[48, 12, 24], duration=0.2, gravity=0.0,
+                        csv=tmp_path / "ref.csv", plot=tmp_path / "ref.svg")
+    rows = out["rows"]
+    assert [r["value"] for r in rows] == [12, 24, 48] and [r["reference"] for r in rows] == [False, False, True]
+    assert all(r["status"] == "ok" and r["particles"] == 2 * r["value"] and r["key"] == "particles" for r in rows)
+    assert 1.8 < out["orders"]["volume"] < 2.8
+    assert math.isnan(out["orders"]["com"])  # the symmetric body's centre stays put: nothing to fit
+    assert out["time_error_volume"] < 1e-4 * rows[1]["error_volume"]  # the step's error is not the mesh's
+    assert len(out["temporal"]) == 4
+    with open(tmp_path / "ref.csv") as f:
+        table = list(csv.DictReader(f))
+    assert [int(r["value"]) for r in table] == [12, 24, 48]
+    assert "<svg" in (tmp_path / "ref.svg").read_text()
+    with pytest.raises(ValueError):
+        el.refinement("ring2d", levels=[12], duration=0.2)  # one level is not a study
