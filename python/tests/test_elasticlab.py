@@ -123,6 +123,47 @@ def test_a_view_keeps_its_simulation_alive():
     assert np.isfinite(p).all() and np.linalg.norm(p, axis=1).max() > 0.5
 
 
+def test_two_simulations_step_in_parallel_threads():
+    """Stepping releases the GIL and two Simulations share nothing: each thread's result is the
+    one it gets alone, bit for bit."""
+    def make(scene):
+        return el.Simulation(scene, integrator="rk4", dt=0.002, threads=1)
+    alone = {scene: make(scene) for scene in ("ring2d", "sphere3d")}
+    for sim in alone.values():
+        sim.run(0.3)
+    together = {scene: make(scene) for scene in alone}
+    workers = [threading.Thread(target=sim.run, args=(0.3,)) for sim in together.values()]
+    for w in workers:
+        w.start()
+    for w in workers:
+        w.join()
+    for scene in alone:
+        assert together[scene].step_count == alone[scene].step_count == 150
+        assert np.array_equal(together[scene].positions, alone[scene].positions)
+
+
+def test_a_second_thread_cannot_step_a_busy_simulation():
+    sim = el.Simulation("ring2d", dt=0.001)
+    errors = []
+
+    def meddle():
+        while not stepping(sim):
+            time.sleep(0.001)
+        for call in (lambda: sim.step(), lambda: sim.run(1.0), lambda: sim.positions):
+            try:
+                call()
+            except RuntimeError as e:
+                errors.append(str(e))
+        _thread.interrupt_main()
+
+    t = threading.Thread(target=meddle, daemon=True)
+    t.start()
+    with pytest.raises(KeyboardInterrupt):
+        sim.run(1e6)
+    t.join()
+    assert errors == ["this Simulation is being stepped by another thread"] * 3
+
+
 # --- errors: the table's messages, as the CLI prints them --------------------------------------
 
 def cli_error(*args):
