@@ -372,6 +372,14 @@ public:
 
     const std::string& scene() const { return m_scene; }
 
+    std::string repr() const {
+        if (m_busy.load(std::memory_order_acquire)) return "<elasticlab.Simulation '" + m_scene + "', stepping>";
+        char text[160];
+        std::snprintf(text, sizeof text, ", %d particles, step %ld, t = %g s%s>", m_sim->particleCount(),
+                      m_sim->stepCount(), m_sim->time(), m_sim->failed() ? ", failed" : "");
+        return "<elasticlab.Simulation '" + m_scene + "', " + std::string(m_sim->integrator().name()) + text;
+    }
+
 private:
     // SimulationFailed("simulation failed at step S, t = T s: reason") with .reason, .step,
     // .time and, from run(every=...), .rows up to the last good step.
@@ -611,6 +619,7 @@ PYBIND11_MODULE(elasticlab, m) {
              "Simulation(scene='ring2d', *, integrator=None, options=None, threads=None, **parameters): a built-in "
              "scene or a scene file (.json, resumed with its state), parameters as keywords (ks=900, "
              "contact='projection'), integrator options as a dict (atol, rtol, newton, fixed_step, ...).")
+        .def("__repr__", &PySimulation::repr)
         .def("step", &PySimulation::step, py::arg("n") = 1, "Takes n steps (SimulationFailed when one fails).")
         .def("run", &PySimulation::run, py::arg("duration"), py::arg("every") = py::none(),
              "Runs for duration seconds; with every=N returns the diagnostics rows (start, every N steps, end) "

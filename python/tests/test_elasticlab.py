@@ -51,6 +51,7 @@ def test_spring1d_follows_the_closed_form():
         x_exact, v_exact = sim.exact()  # simcore's own closed form agrees with ours
         assert abs(x_exact[1, 1] - y) < 1e-12 and abs(v_exact[1, 1] - v) < 1e-10
     assert sim.step_count == 1000 and sim.time == pytest.approx(1.0, abs=1e-12)
+    assert repr(sim) == "<elasticlab.Simulation 'spring1d', rk4, 2 particles, step 1000, t = 1 s>"
     assert np.all(sim.positions[:, [0, 2]] == 0.0)  # 1D moves along y only
     assert sim.positions[0, 1] == 0.0  # the fixed end
 
