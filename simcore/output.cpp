@@ -199,4 +199,41 @@ std::string stateTable(const Simulation& sim) {
     return text;
 }
 
+namespace {
+
+// What a path names: an existing file's (device, inode), or for a file still to be created the
+// (device, inode) of its folder and its name.
+struct FileIdentity {
+    dev_t device = 0;
+    ino_t inode = 0;
+    std::string newName;  // empty: an existing file
+    bool operator==(const FileIdentity&) const = default;
+};
+
+std::optional<FileIdentity> identify(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0) return FileIdentity{st.st_dev, st.st_ino, {}};
+    const std::filesystem::path p(path);
+    const std::filesystem::path folder = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
+    if (::stat(folder.c_str(), &st) != 0) return std::nullopt;  // the write reports the missing folder
+    return FileIdentity{st.st_dev, st.st_ino, p.filename().string()};
+}
+
+}  // namespace
+
+std::optional<std::string> fileClash(const std::vector<std::pair<std::string, std::string>>& inputsThenOutputs) {
+    std::vector<std::pair<std::string, FileIdentity>> seen;  // option, identity
+    for (const auto& [option, path] : inputsThenOutputs) {
+        if (path.empty()) continue;
+        const auto id = identify(path);
+        if (!id) continue;
+        for (const auto& [other, otherId] : seen)
+            if (otherId == *id)
+                return "--" + option + " " + quoteShort(path, 200) + " is the same file as --" + other +
+                       "; every output must be a file of its own, apart from the inputs";
+        seen.emplace_back(option, *id);
+    }
+    return std::nullopt;
+}
+
 }  // namespace simcore

@@ -9,6 +9,8 @@
 
 #include <cstdio>
 #include <functional>
+#include <optional>
+#include <utility>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,6 +43,12 @@ private:
     std::string m_error;
     bool m_committed = false;
 };
+
+// Outputs never overwrite an input or each other (issue 18): the files named, as (option, path)
+// pairs with inputs first and empty paths skipped, compared by identity, not by spelling (device
+// and inode of an existing file, or of the folder a new one goes in and its name, so links, "./"
+// and ".." count). Returns the message naming both options for the first clash.
+std::optional<std::string> fileClash(const std::vector<std::pair<std::string, std::string>>& inputsThenOutputs);
 
 // One CSV column: its header name and how to read it from the diagnostics.
 struct CsvColumn {

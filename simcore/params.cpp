@@ -1,5 +1,6 @@
 #include "params.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -257,6 +258,56 @@ double ParameterSet::get(std::string_view key) const {
     if (!spec) return 0.0;
     if (!spec->inherits.empty()) return get(spec->inherits);
     return spec->defaultFor(m_kind);
+}
+
+NameList parseNameList(std::string_view option, std::string_view text) {
+    NameList list;
+    const std::string flag = "--" + std::string(option);
+    std::vector<std::string> items;
+    std::string item;
+    std::stringstream ss{std::string(text)};
+    while (std::getline(ss, item, ',')) items.push_back(item);
+    if (!text.empty() && text.back() == ',') items.emplace_back();
+    if (items.empty()) {
+        list.error = flag + " needs a comma-separated list, got nothing";
+        return list;
+    }
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (items[i].empty()) {
+            list.error = flag + " " + quoteShort(text) + ": item " + std::to_string(i + 1) + " is empty";
+            return list;
+        }
+        for (std::size_t j = 0; j < i; ++j)
+            if (items[j] == items[i]) {
+                list.error = flag + ": " + quoteShort(items[i]) + " is listed twice";
+                return list;
+            }
+    }
+    list.items = std::move(items);
+    return list;
+}
+
+NumberList parseNumberList(std::string_view option, std::string_view text) {
+    NumberList list;
+    const NameList names = parseNameList(option, text);
+    if (!names.error.empty()) {
+        list.error = names.error;
+        return list;
+    }
+    const std::string flag = "--" + std::string(option);
+    for (const std::string& item : names.items) {
+        const auto v = parseNumber(item);
+        if (!v) {
+            list.error = flag + ": " + quoteShort(item) + " is not a finite number";
+            return list;
+        }
+        if (std::find(list.items.begin(), list.items.end(), *v) != list.items.end()) {
+            list.error = flag + ": " + quoteShort(item) + " is listed twice";
+            return list;
+        }
+        list.items.push_back(*v);
+    }
+    return list;
 }
 
 }  // namespace simcore

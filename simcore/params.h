@@ -75,6 +75,20 @@ std::string quoteShort(std::string_view text, std::size_t limit = 40);
 // Parses a number the way every input boundary does: the whole text must be a finite number.
 std::optional<double> parseNumber(std::string_view text);
 
+// A comma-separated list given for `option` (CLI and GUI alike): every item present (no "a,,b",
+// no trailing comma), none listed twice, numbers finite; otherwise the message naming the
+// option and the item.
+struct NameList {
+    std::vector<std::string> items;
+    std::string error;  // empty when the list is good
+};
+NameList parseNameList(std::string_view option, std::string_view text);
+struct NumberList {
+    std::vector<double> items;
+    std::string error;
+};
+NumberList parseNumberList(std::string_view option, std::string_view text);
+
 // The values of one scene: the explicitly set ones, the rest resolved from the table.
 class ParameterSet {
 public:

@@ -276,6 +276,19 @@ private slots:
         QCOMPARE(r.code, 2);
         QVERIFY2(r.err.contains("steps; at most 1000000000 per run"), qPrintable(r.err));
         QCOMPARE(cli({"run", "--scene", "ring2d", "--dt", "1e-5", "--duration", "0.001"}).code, 0);
+        // The same limit, lowered, refuses a fixed-step run and stops an adaptive one (exit 3,
+        // its files holding the run so far); a stability scan's smallest step is bounded too.
+        const Result fixed = cli({"run", "--dt", "0.001", "--duration", "1", "--max-steps", "999"});
+        QCOMPARE(fixed.code, 2);
+        QVERIFY2(fixed.err.contains("at most 999 per run"), qPrintable(fixed.err));
+        const QString csv = path("adaptive.csv");
+        const Result adaptive = cli({"run", "--integrator", "rk45", "--duration", "1", "--max-steps", "50", "--csv", csv, "--quiet"});
+        QCOMPARE(adaptive.code, 3);
+        QVERIFY2(adaptive.err.contains("50 steps taken, the most one run may take"), qPrintable(adaptive.err));
+        QCOMPARE(readCsv(csv).size(), 1 + 1 + 50);  // header, the start, 50 steps
+        const Result scan = cli({"stability", "--integrators", "rk4", "--hmin", "1e-300"});
+        QCOMPARE(scan.code, 2);
+        QVERIFY2(scan.err.contains("steps per trial"), qPrintable(scan.err));
     }
     void nonsenseIsRefusedAndNothingIsSilent() {
         // Issue 18: lists without empty or repeated items, bounded study work, a checked

@@ -7,6 +7,7 @@
 #include <QImage>
 #include <QMouseEvent>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 #include <QTest>
@@ -258,6 +259,52 @@ private slots:
             QCOMPARE(refused.exitCode(), 2);
             QVERIFY(refused.readAllStandardError().contains("--after needs a finite time"));
         }
+    }
+
+    void commandLineFollowsTheCliRules() {
+        // Issue 18: the GUI's command line refuses what elastic-lab-cli refuses, with exit 2 and
+        // one line, before any window: unknown options, values given twice, lists with empty or
+        // repeated items, unknown integrators, --after without a screenshot, a screenshot that
+        // would replace the scene file or cannot be written, and a runaway --measure-fps.
+        QTemporaryDir dir;
+        const QString scene = dir.filePath("exp.json"), shot = dir.filePath("shot.png");
+        simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Ring2d), "rk4");
+        QCOMPARE(elui::writeFile(scene, QByteArray::fromStdString(simcore::sceneFileText(sim, "ring2d", true))), QString());
+        QVERIFY(QFile::link(scene, dir.filePath("link.png")));
+        const QList<QPair<QStringList, QString>> refusals = {
+            {{"--bogus"}, "bogus"},
+            {{"stray"}, "unexpected argument 'stray'"},
+            {{"--after", "1"}, "--after needs --screenshot"},
+            {{"--screenshot", shot, "--after", "1", "--after", "2"}, "--after is given 2 times"},
+            {{"--compare", "rk4,,euler"}, "item 2 is empty"},
+            {{"--compare", "rk4,rk4"}, "'rk4' is listed twice"},
+            {{"--compare", "rk4,euler,midpoint,verlet"}, "one to three integrators"},
+            {{"--integrator", "leapfrog"}, "unknown integrator 'leapfrog'"},
+            {{"--set", "ks=-3"}, "--set ks"},
+            {{"--show", "strain,strain"}, "listed twice"},
+            {{"--measure-fps", "inf"}, "--measure-fps needs"},
+            {{"--scene", scene, "--screenshot", dir.filePath("link.png")}, "is the same file as --scene"},
+            {{"--screenshot", dir.filePath("shot.xyz")}, "cannot write .xyz"},
+            {{"--screenshot", dir.filePath("missing/shot.png")}, "missing/shot.png"},
+            {{"--scene", QString(5000, 'x') + ".json"}, "(5005 bytes)"},
+        };
+        for (const auto& [args, mentions] : refusals) {
+            QProcess refused;
+            refused.start(ELASTIC_LAB_GUI, args);
+            QVERIFY(testsupport::waitForExit(refused));
+            QCOMPARE(refused.exitCode(), 2);
+            QString err = QString::fromUtf8(refused.readAllStandardError());
+            err.remove(QRegularExpression("QStandardPaths: [^\\n]*\\n"));  // Qt's own note when XDG_RUNTIME_DIR is unset
+            QVERIFY2(err.contains(mentions), qPrintable(args.join(' ').left(200) + ": " + err));
+            QCOMPARE(err.trimmed().count('\n'), 0);
+        }
+        QVERIFY(!QFileInfo::exists(shot));
+        QCOMPARE(QFileInfo(dir.filePath("link.png")).symLinkTarget(), scene);  // the scene file untouched
+        QProcess version;
+        version.start(ELASTIC_LAB_GUI, {"--version"});
+        QVERIFY(testsupport::waitForExit(version));
+        QCOMPARE(version.exitCode(), 0);
+        QVERIFY(version.readAllStandardOutput().startsWith("elastic-lab "));
     }
 
     void sceneFileOnTheCommandLine() {

@@ -5,11 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <iostream>
-#include <sstream>
-
-#include <sys/stat.h>
 
 #include "elastic_lab_version.h"
 #include "integrators.h"
@@ -142,80 +138,23 @@ std::string stabilityWarning(const simcore::ParameterSet& params, std::string_vi
 
 // --- Files -------------------------------------------------------------------------------------
 
-namespace {
-
-// What a path names: an existing file's (device, inode), or for a file still to be created the
-// (device, inode) of its folder and its name.
-struct FileIdentity {
-    dev_t device = 0;
-    ino_t inode = 0;
-    std::string newName;  // empty: an existing file
-    bool operator==(const FileIdentity&) const = default;
-};
-
-std::optional<FileIdentity> identify(const std::string& path) {
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0) return FileIdentity{st.st_dev, st.st_ino, {}};
-    const std::filesystem::path p(path);
-    const std::filesystem::path folder = p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
-    if (::stat(folder.c_str(), &st) != 0) return std::nullopt;  // the write reports the missing folder
-    return FileIdentity{st.st_dev, st.st_ino, p.filename().string()};
-}
-
-}  // namespace
-
 void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs) {
-    std::vector<std::pair<std::string, FileIdentity>> seen;  // option, identity
-    for (const auto& [option, path] : inputsThenOutputs) {
-        if (path.empty()) continue;
-        const auto id = identify(path);
-        if (!id) continue;
-        for (const auto& [other, otherId] : seen)
-            if (otherId == *id)
-                throw UsageError("--" + option + " " + simcore::quoteShort(path, 200) + " is the same file as --" + other +
-                                 "; every output must be a file of its own, apart from the inputs");
-        seen.emplace_back(option, *id);
-    }
+    if (auto clash = simcore::fileClash(inputsThenOutputs)) throw UsageError(*clash);
 }
 
 // --- Lists -------------------------------------------------------------------------------------
 
-namespace {
-
-// Comma-separated lists: every item present (no "a,,b", no trailing comma), no item twice.
-std::vector<std::string> listItems(const std::string& option, const std::string& text) {
-    std::vector<std::string> items;
-    std::string item;
-    std::stringstream ss(text);
-    while (std::getline(ss, item, ',')) items.push_back(item);
-    if (!text.empty() && text.back() == ',') items.emplace_back();
-    if (items.empty()) throw UsageError("--" + option + " needs a comma-separated list, got nothing");
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (items[i].empty())
-            throw UsageError("--" + option + " " + simcore::quoteShort(text) + ": item " + std::to_string(i + 1) +
-                             " is empty");
-        for (std::size_t j = 0; j < i; ++j)
-            if (items[j] == items[i])
-                throw UsageError("--" + option + ": " + simcore::quoteShort(items[i]) + " is listed twice");
-    }
-    return items;
-}
-
-}  // namespace
-
 std::vector<double> numberList(const std::string& option, const std::string& text) {
-    std::vector<double> values;
-    for (const std::string& item : listItems(option, text)) {
-        const auto v = simcore::parseNumber(item);
-        if (!v) throw UsageError("--" + option + ": " + simcore::quoteShort(item) + " is not a finite number");
-        for (double earlier : values)
-            if (earlier == *v) throw UsageError("--" + option + ": " + simcore::quoteShort(item) + " is listed twice");
-        values.push_back(*v);
-    }
-    return values;
+    simcore::NumberList list = simcore::parseNumberList(option, text);
+    if (!list.error.empty()) throw UsageError(list.error);
+    return std::move(list.items);
 }
 
-std::vector<std::string> nameList(const std::string& option, const std::string& text) { return listItems(option, text); }
+std::vector<std::string> nameList(const std::string& option, const std::string& text) {
+    simcore::NameList list = simcore::parseNameList(option, text);
+    if (!list.error.empty()) throw UsageError(list.error);
+    return std::move(list.items);
+}
 
 std::pair<int, int> parseShard(const std::string& text) {
     if (text.empty()) return {0, 1};

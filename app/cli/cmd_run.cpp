@@ -42,6 +42,7 @@ struct RunArgs {
     SceneArgs scene;
     double duration = 5.0;
     long every = 1;
+    double maxSteps = kMaxSteps;
     std::string csv, state, saveScene;
     bool quiet = false;
     simcore::IntegratorOptions integrator;
@@ -57,12 +58,12 @@ void checkRun(RunArgs& args) {
     if (!simcore::makeIntegrator(args.setup.integrator)->adaptive() || args.integrator.fixedStep) {
         const double dt = args.setup.params.get("dt");
         const double steps = std::ceil(args.duration / dt - 1e-9);
-        if (steps > kMaxSteps) {
+        if (steps > args.maxSteps) {
             char text[300];
             std::snprintf(text, sizeof text,
                           "--duration %g s at dt %g s would take %.3g steps; at most %.0f per run (use a larger --dt, "
-                          "a shorter --duration, or an adaptive integrator)",
-                          args.duration, dt, steps, kMaxSteps);
+                          "a shorter --duration, or an adaptive integrator; --max-steps raises the limit)",
+                          args.duration, dt, steps, args.maxSteps);
             throw UsageError(text);
         }
     }
@@ -94,11 +95,19 @@ int run(const RunArgs& args) {
     }
     const auto start = std::chrono::steady_clock::now();
     const double tEnd = sim.time() + duration;  // a resumed run continues from its saved time
+    // An adaptive method chooses its own steps: the same bound holds while it runs (a
+    // tolerance it cannot meet ends the run, exit 3, instead of creeping on for ever).
+    const long firstStep = sim.stepCount();
+    bool tooManySteps = false;
     while (sim.time() < tEnd - 1e-9 * sim.dt()) {
         if (!sim.step(tEnd)) break;
         const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
         if (csv && (sim.stepCount() % every == 0 || last))
             csv->write(simcore::csvRow(columns, sim.diagnostics()));
+        if (static_cast<double>(sim.stepCount() - firstStep) >= args.maxSteps && !last) {
+            tooManySteps = true;
+            break;
+        }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (state) state->write(simcore::stateTable(sim));
@@ -117,6 +126,12 @@ int run(const RunArgs& args) {
                      "note: --duration %g s is not a multiple of dt %g s: the run took whole steps and ended at "
                      "t = %g s, %g s past the end asked for\n",
                      duration, sim.dt(), sim.time(), sim.time() - tEnd);
+    if (tooManySteps) {
+        std::fprintf(stderr, "run stopped at step %ld, t = %g s: %.0f steps taken, the most one run may take (--max-steps; "
+                             "loosen --rtol/--atol or shorten --duration); the files hold the run so far\n",
+                     sim.stepCount(), sim.time(), args.maxSteps);
+        return kExitFailed;
+    }
     if (sim.failed()) {
         const simcore::Failure& f = *sim.failure();
         std::fprintf(stderr, "simulation failed at step %ld, t = %g s: %s\n", f.step, f.time,
@@ -142,6 +157,11 @@ Command addRunCommand(CLI::App& app) {
     sub->add_option("--state", args->state, "write the final state: index, layer, position, velocity")->type_name("FILE");
     sub->add_option("--save-scene", args->saveScene, "save the experiment with its final state as a scene file")
         ->type_name("FILE.json");
+    sub->add_option("--max-steps", args->maxSteps, "the most steps the run may take: a fixed-step run that needs more is "
+                                                   "refused before it starts, an adaptive one stops there (exit 3)")
+        ->type_name("N")
+        ->check(finiteIn(1.0, 1e12, false))
+        ->default_str("1e9");
     sub->add_flag("--quiet", args->quiet, "no summary on standard output");
     addIntegratorOptions(*sub, args->integrator);
     return {sub, [args] { checkRun(*args); }, [args] { return run(*args); }};

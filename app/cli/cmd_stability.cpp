@@ -45,6 +45,11 @@ void checkStability(StabilityArgs& args) {
     if (spec.hMax < spec.hMin)
         throw UsageError("--hmax " + simcore::formatDouble(spec.hMax) + " is below --hmin " + simcore::formatDouble(spec.hMin));
     std::tie(spec.shardIndex, spec.shardCount) = parseShard(args.shard);
+    // Bounded work: a trial at the smallest step takes duration / hmin steps.
+    if (spec.duration / spec.hMin > kMaxSteps)
+        throw UsageError("--duration " + simcore::formatDouble(spec.duration) + " s at --hmin " + simcore::formatDouble(spec.hMin) +
+                         " s would take " + simcore::formatDouble(spec.duration / spec.hMin) + " steps per trial; at most " +
+                         simcore::formatDouble(kMaxSteps) + " (raise --hmin or shorten --duration)");
 }
 
 int runStability(const StabilityArgs& args) {

@@ -14,6 +14,8 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFileInfo>
+#include <QImageWriter>
 #include <QElapsedTimer>
 #include <QIcon>
 #include <QSurfaceFormat>
@@ -22,6 +24,9 @@
 #include "body.h"
 #include "elastic_lab_version.h"
 #include "export.h"
+#include "integrators.h"
+#include "output.h"
+#include "params.h"
 #include "main_window.h"
 #include "parameter_dock.h"
 #include "presets.h"
@@ -35,6 +40,11 @@ namespace {
 int fail(const QString& message) {
     std::fprintf(stderr, "elastic-lab: %s\n", qPrintable(message));
     return 2;
+}
+
+// A value in a message: short and escaped (simcore::quoteShort), never a 5 MB line.
+QString quoted(const QString& value, std::size_t limit = 40) {
+    return QString::fromStdString(simcore::quoteShort(value.toStdString(), limit));
 }
 
 }  // namespace
@@ -97,13 +107,26 @@ int main(int argc, char** argv) {
                                                    "step rate and GUI latency, exit."),
                                     QStringLiteral("SECONDS"));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, shotOpt, afterOpt, optionsOpt, fpsOpt});
-    parser.process(app);
+    // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
+    if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
+    if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
+    if (parser.isSet(QStringLiteral("version"))) parser.showVersion();
+    if (!parser.positionalArguments().isEmpty())
+        return fail(QStringLiteral("unexpected argument %1; elastic-lab --help lists the options")
+                        .arg(quoted(parser.positionalArguments().front())));
+    // A value-taking option given twice would silently lose one of the values.
+    for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &shotOpt, &afterOpt,
+                                           &optionsOpt, &fpsOpt})
+        if (parser.values(*once).size() > 1)
+            return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
+    if (parser.isSet(afterOpt) && !parser.isSet(shotOpt))
+        return fail(QStringLiteral("--after needs --screenshot (it is the simulated time of the screenshot)"));
 
     // Scene and parameters, validated by simcore's table.
     const elui::Preset* preset = nullptr;
     if (parser.isSet(presetOpt)) {
         preset = elui::findPreset(parser.value(presetOpt));
-        if (!preset) return fail(QStringLiteral("unknown preset '%1'").arg(parser.value(presetOpt)));
+        if (!preset) return fail(QStringLiteral("unknown preset %1").arg(quoted(parser.value(presetOpt))));
     }
     // --scene takes a scene name or a scene file (.json), as the CLI does; --set, --integrator
     // and --compare override what the file holds.
@@ -117,22 +140,33 @@ int main(int argc, char** argv) {
         scene = &simcore::sceneInfo(file->params.kind());
     }
     if (!scene)
-        return fail(QStringLiteral("unknown scene '%1'; allowed: %2, or a scene file (.json)")
-                        .arg(sceneArg, elui::toQString(simcore::sceneNames())));
+        return fail(QStringLiteral("unknown scene %1; allowed: %2, or a scene file (.json)")
+                        .arg(quoted(sceneArg), elui::toQString(simcore::sceneNames())));
     simcore::ParameterSet params = file                                 ? file->params
                                    : preset && !parser.isSet(sceneOpt) ? preset->parameters()
                                                                        : simcore::ParameterSet(scene->kind);
     for (const QString& assignment : parser.values(setOpt))
-        if (auto error = params.assign(assignment.toStdString())) return fail(QString::fromStdString(*error));
+        if (auto error = params.assign(assignment.toStdString())) return fail(QStringLiteral("--set ") + QString::fromStdString(*error));
     if (auto error = simcore::validateShape(params)) return fail(QString::fromStdString(*error));
     if (file && file->state && simcore::buildBody(params).topology.particleCount() != file->state->positions.cols())
         return fail(QStringLiteral("--set changes the shape of the body in %1, so its saved state no longer fits")
-                        .arg(sceneArg));
+                        .arg(quoted(sceneArg, 200)));
     QStringList integrators{parser.value(integratorOpt)};
     if (preset && !parser.isSet(integratorOpt)) integrators = preset->integrators;
     if (file && !parser.isSet(integratorOpt)) integrators = {QString::fromStdString(file->integrator)};
-    if (parser.isSet(compareOpt)) integrators = parser.value(compareOpt).split(QLatin1Char(','), Qt::SkipEmptyParts);
-    if (integrators.isEmpty() || integrators.size() > 3) return fail(QStringLiteral("give one to three integrators"));
+    if (parser.isSet(compareOpt)) {
+        // The CLI's list rules: no empty item, none twice.
+        const simcore::NameList list = simcore::parseNameList("compare", parser.value(compareOpt).toStdString());
+        if (!list.error.empty()) return fail(QString::fromStdString(list.error));
+        integrators.clear();
+        for (const std::string& name : list.items) integrators << QString::fromStdString(name);
+    }
+    if (integrators.size() > 3)
+        return fail(QStringLiteral("--compare takes one to three integrators, got %1").arg(integrators.size()));
+    for (const QString& name : integrators)
+        if (!simcore::makeIntegrator(name.toStdString()))
+            return fail(QStringLiteral("unknown integrator %1; allowed: %2")
+                            .arg(quoted(name), elui::toQString(simcore::integratorNames())));
     bool afterOk = false;
     const double after = parser.value(afterOpt).toDouble(&afterOk);
     // Finite: --after inf would never be reached and nan compares false with everything.
@@ -140,6 +174,26 @@ int main(int argc, char** argv) {
         return fail(QStringLiteral("--after needs a finite time in seconds, 0 to 1e6"));
 
     const bool screenshot = parser.isSet(shotOpt);
+    if (screenshot) {
+        // The screenshot is an output like the CLI's: never the scene file it was given, in a
+        // format this build writes, and a place that can be written, all known before it runs.
+        const QString shotPath = parser.value(shotOpt);
+        if (auto clash = simcore::fileClash({{"scene", file ? sceneArg.toStdString() : std::string()},
+                                             {"screenshot", shotPath.toStdString()}}))
+            return fail(QString::fromStdString(*clash));
+        const QByteArray suffix = QFileInfo(shotPath).suffix().toLower().toLatin1();
+        if (!suffix.isEmpty() && !QImageWriter::supportedImageFormats().contains(suffix))
+            return fail(QStringLiteral("--screenshot %1: this build cannot write .%2 images; use .png")
+                            .arg(quoted(shotPath, 200), QString::fromLatin1(suffix)));
+        const simcore::AtomicFile probe(shotPath.toStdString());  // discarded: nothing is written
+        if (!probe.ok()) return fail(QStringLiteral("--screenshot ") + QString::fromStdString(probe.error()));
+    }
+    double fpsSeconds = 0.0;
+    if (parser.isSet(fpsOpt)) {
+        const auto v = simcore::parseNumber(parser.value(fpsOpt).toStdString());
+        if (!v || *v < 1.0 || *v > 3600.0) return fail(QStringLiteral("--measure-fps needs a wall time in seconds, 1 to 3600"));
+        fpsSeconds = *v;
+    }
     // Interactive on a CPU renderer (Mesa llvmpipe): no multisampling, it costs more than half
     // the frame rate. Screenshots keep it (quality over speed); ELASTIC_LAB_MSAA decides if set.
     if (!screenshot && !qEnvironmentVariableIsSet("ELASTIC_LAB_MSAA") && elui::Viewport::openGLAvailable() &&
@@ -148,7 +202,10 @@ int main(int argc, char** argv) {
     elui::MainWindow window(!screenshot);
     if (parser.isSet(optionsOpt)) {
         elui::ViewOptions o = window.viewOptions();
-        for (const QString& s : parser.value(optionsOpt).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const simcore::NameList list = simcore::parseNameList("show", parser.value(optionsOpt).toStdString());
+        if (!list.error.empty()) return fail(QString::fromStdString(list.error));
+        for (const std::string& item : list.items) {
+            const QString s = QString::fromStdString(item);
             if (s == QLatin1String("strain")) o.strain = true;
             else if (s == QLatin1String("forces")) o.forces = true;
             else if (s == QLatin1String("normals")) o.normals = true;
@@ -158,7 +215,7 @@ int main(int argc, char** argv) {
             else if (s == QLatin1String("noradius")) o.springs[1] = false;
             else if (s == QLatin1String("noshear")) o.springs[2] = false;
             else if (s == QLatin1String("nobox")) o.box = false;
-            else return fail(QStringLiteral("unknown --show switch '%1'").arg(s));
+            else return fail(QStringLiteral("unknown --show switch %1").arg(quoted(s)));
         }
         window.setViewOptions(o);
     }
@@ -177,7 +234,7 @@ int main(int argc, char** argv) {
     if (parser.isSet(fpsOpt)) {
         // Frames painted per wall second while the simulation runs in real time, and how late
         // a 10 ms GUI timer fires (the UI's responsiveness).
-        const double seconds = std::max(1.0, parser.value(fpsOpt).toDouble());
+        const double seconds = fpsSeconds;
         auto* wall = new QElapsedTimer;
         auto* probe = new QTimer(&window);
         auto* worstLate = new double(0.0);

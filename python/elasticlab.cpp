@@ -1,0 +1,673 @@
+// elasticlab: simcore as a Python module (pybind11). The API and the decisions behind it are in
+// docs/python.md; in short:
+//
+//   input     a scene name or a scene file and the parameters as keyword arguments, checked by
+//             the parameter table (ParameterSet): ValueError with the table's own message, the
+//             text the CLI prints after "error: --set "
+//   state     positions and velocities are read-only numpy views onto the simulation's state
+//             vector (no copy); the array's base is the Simulation, which they keep alive
+//   stepping  in slices of at most kSlice wall time with the GIL released; between slices the
+//             GIL is taken back and pending signals run, so Ctrl+C raises KeyboardInterrupt
+//             with the simulation at the end of its last full step
+//   studies   on a worker thread with simcore's cancel flag; the calling thread waits in
+//             slices too and sets the flag on Ctrl+C. CSV and SVG come from simcore's writers.
+//
+// One thread steps a Simulation at a time: a second one gets RuntimeError, never a race.
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <future>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "analytic.h"
+#include "body.h"
+#include "elastic_lab_version.h"
+#include "integrators.h"
+#include "output.h"
+#include "params.h"
+#include "refinement.h"
+#include "scenefile.h"
+#include "scenes.h"
+#include "simulation.h"
+#include "stability.h"
+#include "study.h"
+
+namespace py = pybind11;
+
+namespace {
+
+// The longest stretch of work between two looks at Python's pending signals (Ctrl+C): short
+// enough to feel immediate, long enough that taking the GIL back costs nothing measurable.
+// It only decides where a run may be interrupted, never what it computes.
+constexpr std::chrono::milliseconds kSlice{50};
+
+// elasticlab.SimulationFailed (a RuntimeError); the module holds the reference.
+py::handle g_simulationFailed;
+struct SimulationFailedTag {};
+
+std::string pathText(const py::object& path) {
+    return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
+}
+
+// --- input ------------------------------------------------------------------------------------
+
+// A Python number (int, float, numpy scalar; not bool, not text) as a double, else TypeError.
+double numberOf(const py::handle& value, const std::string& key, const char* expected = "a number") {
+    if (py::isinstance<py::bool_>(value) || py::isinstance<py::str>(value) || !py::hasattr(value, "__float__"))
+        throw py::type_error(key + ": expected " + expected + ", got " +
+                             py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>());
+    return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
+}
+
+// A scene as the CLI's sceneSetup builds it: a built-in name or a scene file (.json), then the
+// keyword parameters in the order given, each through the table (ValueError: its message).
+struct Scene {
+    std::string name;
+    simcore::ParameterSet params;
+    std::string integrator = "rk4";
+    std::optional<simcore::SceneFile::State> state;  // a scene file's saved state
+};
+
+void assignParameter(simcore::ParameterSet& params, const std::string& key, const py::handle& value) {
+    std::optional<std::string> error;
+    if (py::isinstance<py::str>(value))
+        error = params.setFromText(key, value.cast<std::string>());  // a number or a choice's name
+    else  // as its shortest text, as `--set key=value` would give it (nan, inf included)
+        error = params.setFromText(key, py::repr(py::float_(numberOf(value, key, "a number or a name"))).cast<std::string>());
+    if (error) throw py::value_error(*error);
+}
+
+Scene sceneFrom(const py::object& scene, const py::kwargs& parameters) {
+    Scene s;
+    s.name = pathText(scene);
+    const simcore::SceneInfo* info = simcore::findScene(s.name);
+    if (!info && s.name.size() > 5 && s.name.ends_with(".json")) {
+        simcore::SceneFileResult read = simcore::readSceneFile(s.name);
+        if (!read.file) throw py::value_error(read.error);
+        s.name = read.file->sceneName;
+        s.params = read.file->params;
+        s.integrator = read.file->integrator;
+        s.state = read.file->state;
+    } else if (!info) {
+        throw py::value_error("unknown scene '" + s.name + "'; allowed: " + simcore::sceneNames() +
+                              ", or a scene file (.json)");
+    } else {
+        s.params = simcore::ParameterSet(info->kind);
+    }
+    for (const auto& [key, value] : parameters) assignParameter(s.params, py::str(key).cast<std::string>(), value);
+    if (auto error = simcore::validateShape(s.params)) throw py::value_error(*error);
+    return s;
+}
+
+void checkIntegrator(const std::string& name) {
+    if (!simcore::makeIntegrator(name))
+        throw py::value_error("unknown integrator '" + name + "'; allowed: " + simcore::integratorNames());
+}
+
+// A number that is not a table parameter (a duration, an integrator option), checked and worded
+// as the table checks its own: "atol = 2 is out of range; allowed (0, 1]".
+double checkedNumber(const py::handle& value, std::string_view key, double min, double max, bool minExclusive,
+                     bool integer = false, std::string_view unit = {}) {
+    const double v = numberOf(value, std::string(key));
+    simcore::ParamSpec spec{};
+    spec.key = key;
+    spec.unit = unit;
+    spec.minValue = min;
+    spec.maxValue = max;
+    spec.minExclusive = minExclusive;
+    spec.integer = integer;
+    if (auto error = simcore::validateValue(spec, v)) throw py::value_error(*error);
+    return v;
+}
+
+// Integrator options from a dict; the names are the CLI's (--atol, --rtol, --newton,
+// --fixed-step, --error-estimate) and IntegratorOptions' other fields.
+simcore::IntegratorOptions integratorOptions(const py::object& options, simcore::IntegratorOptions o = {}) {
+    if (options.is_none()) return o;
+    const auto flag = [](const py::handle& v, const std::string& key) {
+        if (!py::isinstance<py::bool_>(v)) throw py::type_error(key + ": expected True or False");
+        return v.cast<bool>();
+    };
+    for (const auto& [k, v] : options.cast<py::dict>()) {
+        const std::string key = py::str(k).cast<std::string>();
+        if (key == "atol") o.atol = checkedNumber(v, key, 0.0, 1.0, true);
+        else if (key == "rtol") o.rtol = checkedNumber(v, key, 0.0, 1.0, false);
+        else if (key == "newton") o.newtonIterations = static_cast<int>(checkedNumber(v, key, 1, 50, false, true));
+        else if (key == "fixed_step") o.fixedStep = flag(v, key);
+        else if (key == "error_estimate") o.stepDoubling = flag(v, key);
+        else if (key == "min_step") o.minStep = checkedNumber(v, key, 0.0, 1.0, true, false, "s");
+        else if (key == "max_step") o.maxStep = checkedNumber(v, key, 0.0, 1e6, false, false, "s");
+        else if (key == "cg_tolerance") o.cgTolerance = checkedNumber(v, key, 0.0, 1.0, true);
+        else if (key == "cg_max_iterations") o.cgMaxIterations = static_cast<int>(checkedNumber(v, key, 1, 1e6, false, true));
+        else
+            throw py::value_error("unknown integrator option '" + key +
+                                  "'; allowed: atol, rtol, newton, fixed_step, error_estimate, min_step, max_step, "
+                                  "cg_tolerance, cg_max_iterations");
+    }
+    return o;
+}
+
+// --- running ---------------------------------------------------------------------------------
+
+// Calls stepOnce() (which returns whether to go on) until it says stop, with the GIL released,
+// taking the GIL back every kSlice to run pending signal handlers: a KeyboardInterrupt (or
+// any exception a handler raises) propagates from between two calls.
+template <class StepOnce>
+void inSlices(StepOnce&& stepOnce) {
+    for (bool more = true; more;) {
+        {
+            py::gil_scoped_release release;
+            const auto start = std::chrono::steady_clock::now();
+            do more = stepOnce();
+            while (more && std::chrono::steady_clock::now() - start < kSlice);
+        }
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    }
+}
+
+// Runs work(cancel) on a worker thread and waits for it in slices, GIL released; on a pending
+// signal's exception it sets the cancel flag simcore's studies poll, waits for the worker to
+// stop, and raises that exception.
+template <class Work>
+auto cancellable(Work&& work) {
+    std::atomic<bool> cancel{false};
+    auto result = std::async(std::launch::async, [&] { return work(&cancel); });
+    for (;;) {
+        {
+            py::gil_scoped_release release;
+            if (result.wait_for(kSlice) == std::future_status::ready) break;
+        }
+        if (PyErr_CheckSignals() != 0) {
+            py::error_already_set interrupted;  // takes the pending exception
+            cancel = true;
+            {
+                py::gil_scoped_release release;
+                result.wait();
+            }
+            throw interrupted;
+        }
+    }
+    py::gil_scoped_release release;  // get() may rethrow a C++ exception: pybind11 translates it
+    return result.get();
+}
+
+// One thread at a time steps a Simulation: a second thread that calls in while one steps gets
+// RuntimeError instead of a data race (the stepping thread does not hold the GIL).
+class Busy {
+public:
+    explicit Busy(std::atomic<bool>& flag) : m_flag(flag) {
+        if (m_flag.exchange(true, std::memory_order_acquire))
+            throw std::runtime_error("this Simulation is being stepped by another thread");
+    }
+    ~Busy() { m_flag.store(false, std::memory_order_release); }
+    Busy(const Busy&) = delete;
+    Busy& operator=(const Busy&) = delete;
+
+private:
+    std::atomic<bool>& m_flag;
+};
+
+class PySimulation {
+public:
+    PySimulation(const py::object& scene, const py::object& integrator, const py::object& options,
+                 const py::object& threads, const py::kwargs& parameters) {
+        Scene s = sceneFrom(scene, parameters);
+        if (!integrator.is_none()) s.integrator = integrator.cast<std::string>();
+        checkIntegrator(s.integrator);
+        m_scene = s.name;
+        m_sim = std::make_unique<simcore::Simulation>(s.params, s.integrator);
+        m_sim->setIntegratorOptions(integratorOptions(options));
+        if (!threads.is_none()) m_sim->setThreads(static_cast<int>(checkedNumber(threads, "threads", 1, 256, false, true)));
+        if (s.state)
+            if (auto error = simcore::applyState(*m_sim, *s.state)) throw py::value_error(*error);
+        m_columns = simcore::timeSeriesColumns(s.params.kind());
+    }
+
+    // For reading: refused while another thread steps (a look, not a claim: a reader never
+    // makes a stepping thread fail).
+    const simcore::Simulation& sim() const {
+        if (m_busy.load(std::memory_order_acquire))
+            throw std::runtime_error("this Simulation is being stepped by another thread");
+        return *m_sim;
+    }
+
+    // Steps n times; SimulationFailed when a step fails.
+    void step(const py::handle& count) {
+        const long n = static_cast<long>(checkedNumber(count, "n", 1, 1e12, false, true));
+        Busy busy(m_busy);
+        long done = 0;
+        inSlices([&] { return m_sim->step() && ++done < n; });
+        raiseIfFailed(py::none());
+    }
+
+    // Runs for `duration` seconds of simulated time (whole steps; a fixed-step run ends at the
+    // first step at or past the end, as the CLI's run). With `every`, returns the diagnostics
+    // rows of the start, every `every` steps and the end (the CLI's --csv --every), one row per
+    // line, columns as diagnostics_columns.
+    py::object run(const py::handle& durationArg, const py::object& everyArg) {
+        const double duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
+        const long every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
+        Busy busy(m_busy);
+        std::vector<double> rows;
+        auto record = [&] {
+            for (const simcore::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
+        };
+        if (every) record();
+        const double tEnd = m_sim->time() + duration;
+        auto reached = [&] { return m_sim->time() >= tEnd - 1e-9 * m_sim->dt(); };
+        if (!reached())
+            inSlices([&] {
+                if (!m_sim->step(tEnd)) return false;
+                const bool last = reached();
+                if (every && (m_sim->stepCount() % every == 0 || last)) record();
+                return !last;
+            });
+        py::object table = py::none();
+        if (every) {
+            const auto width = static_cast<py::ssize_t>(m_columns.size());
+            py::array_t<double> a({static_cast<py::ssize_t>(rows.size()) / width, width});
+            std::copy(rows.begin(), rows.end(), a.mutable_data());
+            table = a;
+        }
+        raiseIfFailed(table);
+        return table;
+    }
+
+    void reset() {
+        Busy busy(m_busy);
+        m_sim->reset();
+    }
+
+    // A read-only view of 3 x N doubles of the state (positions or velocities) as N x 3.
+    py::array stateView(const py::object& self, bool velocities) {
+        const simcore::Simulation& s = sim();
+        const double* data = velocities ? s.velocities().data() : s.positions().data();
+        py::array view(py::dtype::of<double>(), {static_cast<py::ssize_t>(s.particleCount()), py::ssize_t{3}},
+                       {static_cast<py::ssize_t>(3 * sizeof(double)), static_cast<py::ssize_t>(sizeof(double))}, data,
+                       self);
+        view.attr("setflags")(py::arg("write") = false);
+        return view;
+    }
+
+    py::dict diagnostics() {
+        const simcore::Diagnostics& d = sim().diagnostics();
+        py::dict out;
+        for (const simcore::CsvColumn& c : m_columns) out[py::str(c.name)] = c.value(d);
+        return out;
+    }
+    py::array_t<double> diagnosticsRow() {
+        const simcore::Diagnostics& d = sim().diagnostics();
+        py::array_t<double> row(static_cast<py::ssize_t>(m_columns.size()));
+        for (std::size_t i = 0; i < m_columns.size(); ++i) row.mutable_at(i) = m_columns[i].value(d);
+        return row;
+    }
+    std::vector<std::string> columns() const {
+        std::vector<std::string> names;
+        for (const simcore::CsvColumn& c : m_columns) names.push_back(c.name);
+        return names;
+    }
+
+    py::object failure() {
+        const auto& f = sim().failure();
+        if (!f) return py::none();
+        return py::dict(py::arg("reason") = f->reason, py::arg("step") = f->step, py::arg("time") = f->time);
+    }
+
+    // Every parameter of the scene, resolved (explicit or from the table).
+    py::dict parameters() {
+        const simcore::ParameterSet& p = sim().parameters();
+        py::dict out;
+        for (const simcore::ParamSpec* spec : simcore::parametersFor(p.kind())) {
+            const double v = p.get(spec->key);
+            const std::string name = spec->choiceName(v);
+            if (name.empty()) out[py::str(std::string(spec->key))] = v;
+            else out[py::str(std::string(spec->key))] = name;
+        }
+        return out;
+    }
+
+    py::dict integratorOptionsDict() {
+        const simcore::IntegratorOptions& o = sim().integratorOptions();
+        return py::dict(py::arg("atol") = o.atol, py::arg("rtol") = o.rtol, py::arg("newton") = o.newtonIterations,
+                        py::arg("fixed_step") = o.fixedStep, py::arg("error_estimate") = o.stepDoubling,
+                        py::arg("min_step") = o.minStep, py::arg("max_step") = o.maxStep,
+                        py::arg("cg_tolerance") = o.cgTolerance, py::arg("cg_max_iterations") = o.cgMaxIterations);
+    }
+    void setIntegrator(const std::string& name, const py::object& options) {
+        checkIntegrator(name);
+        const simcore::IntegratorOptions o = integratorOptions(options, m_sim->integratorOptions());
+        Busy busy(m_busy);
+        if (auto error = m_sim->setIntegrator(name)) throw py::value_error(*error);
+        m_sim->setIntegratorOptions(o);
+    }
+
+    // The closed-form positions and velocities at the current time (spring1d only).
+    py::tuple exact() {
+        const simcore::Simulation& s = sim();
+        if (!simcore::hasClosedForm(s.parameters()))
+            throw py::value_error("no closed form for scene '" + m_scene + "'; spring1d has one");
+        Eigen::Matrix3Xd x, v;
+        simcore::spring1dExact(s.parameters(), s.time(), x, v);
+        auto table = [](const Eigen::Matrix3Xd& m) {
+            py::array_t<double> a({static_cast<py::ssize_t>(m.cols()), py::ssize_t{3}});
+            std::copy(m.data(), m.data() + m.size(), a.mutable_data());
+            return a;
+        };
+        return py::make_tuple(table(x), table(v));
+    }
+
+    void saveScene(const py::object& path) {
+        const std::string text = simcore::sceneFileText(sim(), m_scene, true);
+        simcore::AtomicFile file(pathText(path));
+        if (!file.ok() || !file.write(text) || !file.commit()) throw py::value_error(file.error());
+    }
+
+    const std::string& scene() const { return m_scene; }
+
+    std::string repr() const {
+        if (m_busy.load(std::memory_order_acquire)) return "<elasticlab.Simulation '" + m_scene + "', stepping>";
+        char text[160];
+        std::snprintf(text, sizeof text, ", %d particles, step %ld, t = %g s%s>", m_sim->particleCount(),
+                      m_sim->stepCount(), m_sim->time(), m_sim->failed() ? ", failed" : "");
+        return "<elasticlab.Simulation '" + m_scene + "', " + std::string(m_sim->integrator().name()) + text;
+    }
+
+private:
+    // SimulationFailed("simulation failed at step S, t = T s: reason") with .reason, .step,
+    // .time and, from run(every=...), .rows up to the last good step.
+    void raiseIfFailed(const py::object& rows) {
+        const auto& f = m_sim->failure();
+        if (!f) return;
+        char where[96];
+        std::snprintf(where, sizeof where, "simulation failed at step %ld, t = %g s: ", f->step, f->time);
+        py::object e = g_simulationFailed(where + f->reason);
+        e.attr("reason") = f->reason;
+        e.attr("step") = f->step;
+        e.attr("time") = f->time;
+        e.attr("rows") = rows;
+        PyErr_SetObject(g_simulationFailed.ptr(), e.ptr());
+        throw py::error_already_set();
+    }
+
+    std::string m_scene;
+    std::unique_ptr<simcore::Simulation> m_sim;
+    std::vector<simcore::CsvColumn> m_columns;
+    std::atomic<bool> m_busy{false};
+};
+
+// --- studies -----------------------------------------------------------------------------------
+
+// Output files are opened before any work, as the CLI does: an unwritable path costs nothing.
+std::unique_ptr<simcore::AtomicFile> openOutput(const py::object& path) {
+    if (path.is_none()) return nullptr;
+    auto file = std::make_unique<simcore::AtomicFile>(pathText(path));
+    if (!file->ok()) throw py::value_error(file->error());
+    return file;
+}
+void commit(simcore::AtomicFile& file) {
+    if (!file.commit()) throw py::value_error(file.error());
+}
+
+std::vector<std::string> integratorList(const std::vector<std::string>& names) {
+    for (const std::string& name : names) checkIntegrator(name);
+    return names;
+}
+
+double nanIfFailed(bool ok, double v) { return ok ? v : std::nan(""); }
+// An adaptive run's tolerance, None for a fixed-step run (simcore: < 0).
+py::object toleranceOrNone(double tolerance) { return tolerance > 0 ? py::object(py::float_(tolerance)) : py::none(); }
+
+py::dict study(const py::object& scene, const std::vector<std::string>& integrators,
+               const std::optional<std::vector<double>>& dts, const std::optional<std::vector<double>>& tolerances,
+               const py::handle& duration, const py::handle& repeat, const std::string& reference,
+               const py::handle& samples, bool fixedStep, const py::object& csvPath, const py::object& plotPath,
+               const py::object& title, const py::kwargs& parameters) {
+    const Scene s = sceneFrom(scene, parameters);
+    simcore::StudySpec spec;
+    spec.params = s.params;
+    spec.integrators = integratorList(integrators);
+    if (dts) spec.dts = *dts;
+    if (tolerances) spec.tolerances = *tolerances;
+    spec.duration = checkedNumber(duration, "duration", 0.0, 1e6, true, false, "s");
+    spec.repeat = static_cast<int>(checkedNumber(repeat, "repeat", 1, 1000, false, true));
+    spec.samples = static_cast<int>(checkedNumber(samples, "samples", 1, 100000, false, true));
+    spec.reference = reference;
+    spec.options.fixedStep = fixedStep;
+    if (auto error = simcore::validateStudy(spec)) throw py::value_error(*error);
+    auto csv = openOutput(csvPath);
+    auto plot = openOutput(plotPath);
+
+    const simcore::StudyResult result =
+        cancellable([&](const std::atomic<bool>* cancel) { return simcore::runStudy(spec, {}, cancel); });
+
+    py::list rows;
+    for (const simcore::StudyRow& r : result.rows)
+        rows.append(py::dict(py::arg("integrator") = r.item.integrator, py::arg("dt") = r.dt,
+                             py::arg("tolerance") = toleranceOrNone(r.item.tolerance),
+                             py::arg("steps") = r.steps, py::arg("force_evals") = r.forceEvaluations,
+                             py::arg("wall_seconds") = r.wallSeconds, py::arg("error_final") = nanIfFailed(r.ok, r.errorFinal),
+                             py::arg("error_max") = nanIfFailed(r.ok, r.errorMax),
+                             py::arg("error_energy") = nanIfFailed(r.ok, r.errorEnergy), py::arg("status") = r.status(),
+                             py::arg("failure") = r.failure));
+    py::dict orders;
+    for (const simcore::OrderFit& fit : simcore::fitOrders(result.rows, result.reference.estimatedError))
+        orders[py::str(fit.integrator)] = fit.order;
+    if (csv) {
+        csv->write(simcore::studyCsvHeader());
+        for (const simcore::StudyRow& r : result.rows) csv->write(simcore::studyCsvRow(r));
+        commit(*csv);
+    }
+    if (plot) {
+        const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simcore::formatDouble(spec.duration) + " s"
+                                              : title.cast<std::string>();
+        plot->write(simcore::studySvg(result.rows, t));
+        commit(*plot);
+    }
+    return py::dict(py::arg("rows") = rows, py::arg("orders") = orders,
+                    py::arg("reference") = result.reference.description,
+                    py::arg("reference_error") = result.reference.estimatedError);
+}
+
+py::dict stability(const py::object& scene, const std::vector<std::string>& integrators, const py::handle& duration,
+                   const py::handle& perturb, const py::handle& hmin, const py::handle& hmax, const py::object& csvPath,
+                   const py::kwargs& parameters) {
+    const Scene s = sceneFrom(scene, parameters);
+    simcore::StabilitySpec spec;
+    spec.params = s.params;
+    spec.integrators = integratorList(integrators);
+    spec.duration = checkedNumber(duration, "duration", 0.0, 1e5, true, false, "s");
+    spec.perturb = checkedNumber(perturb, "perturb", 0.0, 1e3, false, false, "m");
+    spec.hMin = checkedNumber(hmin, "hmin", 0.0, 1.0, true, false, "s");
+    spec.hMax = checkedNumber(hmax, "hmax", spec.hMin, 1.0, false, false, "s");
+    auto csv = openOutput(csvPath);
+
+    // Linearised at the perturbed start the measured runs begin from (as the CLI's stability).
+    simcore::ParameterSet linearised = spec.params;
+    if (!linearised.isExplicit("perturb")) linearised.set("perturb", spec.perturb);
+    struct Outcome {
+        simcore::LinearModes modes;
+        std::vector<simcore::StabilityRow> rows;
+    };
+    const Outcome out = cancellable([&](const std::atomic<bool>* cancel) {
+        Outcome o{simcore::linearModes(linearised), {}};
+        if (!*cancel) o.rows = simcore::runStability(spec, o.modes, {}, cancel);
+        return o;
+    });
+
+    py::list rows;
+    for (const simcore::StabilityRow& r : out.rows)
+        rows.append(py::dict(py::arg("integrator") = r.integrator, py::arg("dt_stable") = r.stable,
+                             py::arg("dt_unstable") = r.unstable, py::arg("dt_predicted") = r.predicted,
+                             py::arg("h_omega_stable") = r.stable * out.modes.omegaMax,
+                             py::arg("h_omega_predicted") = r.predicted * out.modes.omegaMax,
+                             py::arg("reason") = r.reasonAbove, py::arg("runs") = r.runs));
+    if (csv) {
+        csv->write(simcore::stabilityCsvHeader());
+        for (const simcore::StabilityRow& r : out.rows) csv->write(simcore::stabilityCsvRow(r, out.modes));
+        commit(*csv);
+    }
+    return py::dict(py::arg("rows") = rows, py::arg("omega_max") = out.modes.omegaMax,
+                    py::arg("free_coordinates") = out.modes.freeCoordinates,
+                    py::arg("unstable_modes") = out.modes.unstableModes);
+}
+
+py::dict refinement(const py::object& scene, const std::vector<int>& levels, const py::object& keyArg,
+                    const std::string& integrator, const py::object& tolerance, const py::handle& duration,
+                    const py::handle& interval, const py::handle& temporalRuns, bool fixedStep,
+                    const py::object& csvPath, const py::object& plotPath, const py::object& title,
+                    const py::kwargs& parameters) {
+    const Scene s = sceneFrom(scene, parameters);
+    simcore::RefinementSpec spec;
+    spec.params = s.params;
+    spec.key = keyArg.is_none() ? simcore::refinementKey(s.params.kind()) : keyArg.cast<std::string>();
+    spec.values = levels;
+    checkIntegrator(integrator);
+    spec.integrator = integrator;
+    if (parameters.contains("dt")) spec.dt = s.params.get("dt");  // as the CLI's --dt: the study's step
+    if (!tolerance.is_none()) spec.tolerance = checkedNumber(tolerance, "tolerance", 0.0, 1.0, true);
+    spec.duration = checkedNumber(duration, "duration", 0.0, 1e6, true, false, "s");
+    spec.interval = checkedNumber(interval, "interval", 0.0, 1e6, true, false, "s");
+    spec.temporalRuns = static_cast<int>(checkedNumber(temporalRuns, "temporal_runs", 0, 10, false, true));
+    spec.options.fixedStep = fixedStep;
+    if (auto error = simcore::validateRefinement(spec)) throw py::value_error(*error);
+    auto csv = openOutput(csvPath);
+    auto plot = openOutput(plotPath);
+
+    const simcore::RefinementResult result =
+        cancellable([&](const std::atomic<bool>* cancel) { return simcore::runRefinement(spec, {}, cancel); });
+
+    py::list rows;
+    for (const simcore::RefinementRow& r : result.rows)
+        rows.append(py::dict(py::arg("key") = spec.key, py::arg("value") = r.value, py::arg("particles") = r.particles,
+                             py::arg("springs") = r.springs, py::arg("h") = r.h, py::arg("dt") = r.dt,
+                             py::arg("steps") = r.steps, py::arg("wall_seconds") = r.wallSeconds,
+                             py::arg("error_volume") = nanIfFailed(r.ok, r.errorVolume),
+                             py::arg("error_com") = nanIfFailed(r.ok, r.errorCom), py::arg("reference") = r.reference,
+                             py::arg("status") = r.status()));
+    py::list temporal;
+    for (const simcore::TemporalPoint& p : result.temporal)
+        temporal.append(py::dict(py::arg("dt") = p.dt,
+                                 py::arg("tolerance") = toleranceOrNone(p.tolerance),
+                                 py::arg("steps") = p.steps, py::arg("wall_seconds") = p.wallSeconds,
+                                 py::arg("error_volume") = nanIfFailed(p.ok, p.errorVolume),
+                                 py::arg("error_com") = nanIfFailed(p.ok, p.errorCom), py::arg("failure") = p.failure));
+    py::dict orders;
+    for (const simcore::SpatialOrder& fit : simcore::fitSpatialOrders(result)) orders[py::str(fit.observable)] = fit.order;
+    if (csv) {
+        csv->write(simcore::refinementCsvHeader());
+        for (const simcore::RefinementRow& r : result.rows) csv->write(simcore::refinementCsvRow(spec.key, r));
+        commit(*csv);
+    }
+    if (plot) {
+        const std::string t = title.is_none() ? s.name + ": mesh error and step error against run time, T = " +
+                                                    simcore::formatDouble(spec.duration) + " s"
+                                              : title.cast<std::string>();
+        plot->write(simcore::refinementSvg(spec, result, t));
+        commit(*plot);
+    }
+    return py::dict(py::arg("rows") = rows, py::arg("orders") = orders, py::arg("temporal") = temporal,
+                    py::arg("dt") = result.dt, py::arg("step_rule") = result.stepRule,
+                    py::arg("time_error_volume") = result.timeErrorVolume,
+                    py::arg("time_error_com") = result.timeErrorCom);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(elasticlab, m) {
+    m.doc() = "Elastic Lab: two-layer elastic bodies (particles, springs, gas pressure) from Python. "
+              "See docs/python.md.";
+    m.attr("__version__") = elastic_lab::kVersion;
+    g_simulationFailed = py::exception<SimulationFailedTag>(m, "SimulationFailed", PyExc_RuntimeError);
+
+    m.def("scenes", [] {
+        std::vector<std::string> names;
+        for (const simcore::SceneInfo& s : simcore::sceneTable()) names.emplace_back(s.name);
+        return names;
+    }, "The built-in scene names.");
+    m.def("integrators", [] {
+        py::list out;
+        for (const simcore::IntegratorInfo& i : simcore::integratorTable())
+            out.append(py::dict(py::arg("name") = std::string(i.name), py::arg("order") = i.order,
+                                py::arg("description") = std::string(i.description)));
+        return out;
+    }, "The integrators: name, order, description.");
+    m.def("parameters", [](const std::string& scene) {
+        const simcore::SceneInfo* info = simcore::findScene(scene);
+        if (!info)
+            throw py::value_error("unknown scene '" + scene + "'; allowed: " + simcore::sceneNames());
+        py::list out;
+        for (const simcore::ParamSpec* p : simcore::parametersFor(info->kind))
+            out.append(py::dict(py::arg("key") = std::string(p->key), py::arg("unit") = std::string(p->unit),
+                                py::arg("default") = p->defaultFor(info->kind), py::arg("range") = p->rangeText(),
+                                py::arg("choices") = std::string(p->choices), py::arg("meaning") = std::string(p->meaning)));
+        return out;
+    }, py::arg("scene"), "The parameter table of a scene: key, unit, default, range, choices, meaning.");
+
+    py::class_<PySimulation>(m, "Simulation",
+                             "One body, its parameters, its integrator and its diagnostics (simcore::Simulation).")
+        .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&, const py::kwargs&>(),
+             py::arg("scene") = "ring2d", py::kw_only(), py::arg("integrator") = py::none(),
+             py::arg("options") = py::none(), py::arg("threads") = py::none(),
+             "Simulation(scene='ring2d', *, integrator=None, options=None, threads=None, **parameters): a built-in "
+             "scene or a scene file (.json, resumed with its state), parameters as keywords (ks=900, "
+             "contact='projection'), integrator options as a dict (atol, rtol, newton, fixed_step, ...).")
+        .def("__repr__", &PySimulation::repr)
+        .def("step", &PySimulation::step, py::arg("n") = 1, "Takes n steps (SimulationFailed when one fails).")
+        .def("run", &PySimulation::run, py::arg("duration"), py::arg("every") = py::none(),
+             "Runs for duration seconds; with every=N returns the diagnostics rows (start, every N steps, end) "
+             "as an array, columns as diagnostics_columns.")
+        .def("reset", &PySimulation::reset, "Back to the start state, same parameters.")
+        .def("set_integrator", &PySimulation::setIntegrator, py::arg("name"), py::arg("options") = py::none(),
+             "Changes the integrator between steps (options as in the constructor, added to the current ones).")
+        .def("exact", &PySimulation::exact, "spring1d: the closed-form (positions, velocities) at the current time.")
+        .def("save_scene", &PySimulation::saveScene, py::arg("path"),
+             "Writes the scene, its parameters, integrator and state as a scene file (atomically).")
+        .def_property_readonly("positions", [](const py::object& self) { return self.cast<PySimulation&>().stateView(self, false); },
+                               "N x 3 positions [m]: a read-only view of the state, updated as the simulation steps.")
+        .def_property_readonly("velocities", [](const py::object& self) { return self.cast<PySimulation&>().stateView(self, true); },
+                               "N x 3 velocities [m/s]: a read-only view of the state, updated as the simulation steps.")
+        .def_property_readonly("diagnostics", &PySimulation::diagnostics, "The diagnostics row as a dict (CSV names).")
+        .def_property_readonly("diagnostics_row", &PySimulation::diagnosticsRow, "The diagnostics row as an array.")
+        .def_property_readonly("diagnostics_columns", &PySimulation::columns, "The names of the diagnostics row.")
+        .def_property_readonly("failure", &PySimulation::failure, "None, or reason, step and time of the failure.")
+        .def_property_readonly("parameters", &PySimulation::parameters, "Every parameter of the scene, resolved.")
+        .def_property_readonly("integrator_options", &PySimulation::integratorOptionsDict)
+        .def_property_readonly("scene", &PySimulation::scene)
+        .def_property_readonly("integrator", [](PySimulation& s) { return std::string(s.sim().integrator().name()); })
+        .def_property_readonly("time", [](PySimulation& s) { return s.sim().time(); }, "Simulated time [s].")
+        .def_property_readonly("step_count", [](PySimulation& s) { return s.sim().stepCount(); })
+        .def_property_readonly("dt", [](PySimulation& s) { return s.sim().dt(); }, "The step [s].")
+        .def_property_readonly("particle_count", [](PySimulation& s) { return s.sim().particleCount(); })
+        .def_property_readonly("spring_count", [](PySimulation& s) { return s.sim().topology().springCount(); });
+
+    m.def("study", &study, py::arg("scene"), py::kw_only(),
+          py::arg("integrators") = std::vector<std::string>{"euler", "midpoint", "rk4"},
+          py::arg("dts") = py::none(), py::arg("tolerances") = py::none(), py::arg("duration") = 2.0,
+          py::arg("repeat") = 1, py::arg("reference") = "auto", py::arg("samples") = 20, py::arg("fixed_step") = false,
+          py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("title") = py::none(),
+          "Work-precision study (the CLI's `study`): {'rows': [dict per run], 'orders': {integrator: fitted "
+          "order}, 'reference', 'reference_error'}; csv= and plot= write the CLI's CSV and SVG.");
+    m.def("refinement", &refinement, py::arg("scene"), py::kw_only(), py::arg("levels"),
+          py::arg("key") = py::none(), py::arg("integrator") = "rk4", py::arg("tolerance") = py::none(),
+          py::arg("duration") = 1.0, py::arg("interval") = 0.01, py::arg("temporal_runs") = 4,
+          py::arg("fixed_step") = false, py::arg("csv") = py::none(), py::arg("plot") = py::none(),
+          py::arg("title") = py::none(),
+          "Refinement study (the CLI's `study --refine`): the same body at several resolutions (levels of "
+          "key, the scene's own by default) against the finest: {'rows', 'orders': {'volume', 'com'}, "
+          "'temporal', 'dt', 'step_rule', ...}; dt= (a parameter) fixes the step; csv= and plot= as the CLI.");
+    m.def("stability", &stability, py::arg("scene"), py::kw_only(),
+          py::arg("integrators") = std::vector<std::string>{"euler", "midpoint", "rk4", "symplectic-euler", "verlet",
+                                                            "rk45", "implicit-euler"},
+          py::arg("duration") = 2.0, py::arg("perturb") = 0.01, py::arg("hmin") = 1e-5, py::arg("hmax") = 1.0,
+          py::arg("csv") = py::none(),
+          "Stability scan (the CLI's `stability`): {'rows': [dict per integrator], 'omega_max', ...}; csv= writes "
+          "the CLI's CSV.");
+}
