@@ -97,8 +97,7 @@ Scene sceneFrom(const py::object& scene, const py::kwargs& parameters) {
         s.integrator = read.file->integrator;
         s.state = read.file->state;
     } else if (!info) {
-        throw py::value_error("unknown scene '" + s.name + "'; allowed: " + simcore::sceneNames() +
-                              ", or a scene file (.json)");
+        throw py::value_error(simcore::unknownSceneMessage(s.name) + ", or a scene file (.json)");
     } else {
         s.params = simcore::ParameterSet(info->kind);
     }
@@ -108,8 +107,7 @@ Scene sceneFrom(const py::object& scene, const py::kwargs& parameters) {
 }
 
 void checkIntegrator(const std::string& name) {
-    if (!simcore::makeIntegrator(name))
-        throw py::value_error("unknown integrator '" + name + "'; allowed: " + simcore::integratorNames());
+    if (auto error = simcore::unknownIntegrator(name)) throw py::value_error(*error);
 }
 
 // A number that is not a table parameter (a duration, an integrator option), checked and worded
@@ -602,7 +600,7 @@ PYBIND11_MODULE(elasticlab, m) {
     m.def("parameters", [](const std::string& scene) {
         const simcore::SceneInfo* info = simcore::findScene(scene);
         if (!info)
-            throw py::value_error("unknown scene '" + scene + "'; allowed: " + simcore::sceneNames());
+            throw py::value_error(simcore::unknownSceneMessage(scene));
         py::list out;
         for (const simcore::ParamSpec* p : simcore::parametersFor(info->kind))
             out.append(py::dict(py::arg("key") = std::string(p->key), py::arg("unit") = std::string(p->unit),

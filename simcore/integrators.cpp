@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "implicit_operator.h"
+#include "params.h"
 
 namespace simcore {
 
@@ -379,6 +380,12 @@ std::complex<double> stabilityFunction(std::string_view name, std::complex<doubl
                std::pow(z, 6) / 600.0;
     if (name == "implicit-euler") return one / (one - z);
     return {std::nan(""), 0.0};
+}
+
+std::optional<std::string> unknownIntegrator(std::string_view name) {
+    for (const auto& info : integratorTable())
+        if (info.name == name) return std::nullopt;
+    return "unknown integrator " + quoteShort(name) + "; allowed: " + integratorNames();
 }
 
 std::string integratorNames() {

@@ -22,6 +22,7 @@
 
 #include <complex>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -164,6 +165,8 @@ std::span<const IntegratorInfo> integratorTable();
 // nullptr when the name is unknown.
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
 std::string integratorNames();  // "euler, midpoint, ..." for messages
+// The one message for a name that is not an integrator (CLI, GUI, Python); nothing when it is one.
+std::optional<std::string> unknownIntegrator(std::string_view name);
 
 // Stability function of a linear one-step method applied to y' = lambda y with z = h lambda:
 // y_{n+1} = R(z) y_n. Defined for euler, midpoint, rk4, rk45 (fixed step, 5th-order

@@ -3,6 +3,8 @@
 #include <array>
 #include <stdexcept>
 
+#include "params.h"
+
 namespace simcore {
 
 namespace {
@@ -32,6 +34,10 @@ const SceneInfo& sceneInfo(SceneKind kind) {
     for (const SceneInfo& s : kScenes)
         if (s.kind == kind) return s;
     throw std::invalid_argument("unknown scene kind");
+}
+
+std::string unknownSceneMessage(std::string_view name) {
+    return "unknown scene " + quoteShort(name) + "; allowed: " + sceneNames();
 }
 
 std::string sceneNames() {

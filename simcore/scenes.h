@@ -19,6 +19,8 @@ std::span<const SceneInfo> sceneTable();
 const SceneInfo* findScene(std::string_view name);
 const SceneInfo& sceneInfo(SceneKind kind);
 std::string sceneNames();  // "spring1d, ring2d, ..." for messages
+// The one message for a name that is not a built-in scene (CLI, GUI, Python).
+std::string unknownSceneMessage(std::string_view name);
 
 // Whether a scene has layers with gas (volume, pressure) at all.
 bool hasGas(SceneKind kind);

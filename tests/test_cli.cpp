@@ -29,6 +29,14 @@ QList<QStringList> readCsv(const QString& path) {
     return rows;
 }
 
+// Whether process pid holds a file open under folder (an unnamed O_TMPFILE output shows there
+// as "folder/#inode (deleted)").
+bool holdsFileIn(qint64 pid, const QString& folder) {
+    for (const QFileInfo& fd : QDir(QString("/proc/%1/fd").arg(pid)).entryInfoList(QDir::Files | QDir::System | QDir::NoDotAndDotDot))
+        if (QFile::symLinkTarget(fd.filePath()).startsWith(folder + "/")) return true;
+    return false;
+}
+
 // Bytes in the files process pid holds open under folder (its unnamed O_TMPFILE outputs show
 // there as "folder/#inode (deleted)").
 qint64 streamedBytes(qint64 pid, const QString& folder) {
@@ -453,6 +461,31 @@ private slots:
         QCOMPARE(complete({"elastic-lab-cli", "bench", "--kernels", "a"}), QStringList({"avx2", "avx512"}));
         QVERIFY(complete({"elastic-lab-cli", "study", "--"}).contains("--temporal-runs"));
         QCOMPARE(complete({"elastic-lab-cli", "run", "--scene", "sphere3d-"}), QStringList({"sphere3d-latlong"}));
+    }
+    void interruptedStudyLeavesExistingFilesAndNothingElse() {
+        // The same outcome for a study (issue 18): SIGTERM while it computes its reference
+        // leaves the CSV that was there byte for byte and adds nothing to the folder.
+        QTemporaryDir dir;
+        const QString csv = dir.filePath("study.csv");
+        {
+            QFile f(csv);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("precious\n");
+        }
+        QProcess p;
+        p.setChildProcessModifier([] { ::signal(SIGTERM, SIG_DFL); });
+        p.start(ELASTIC_LAB_CLI, {"study", "--scene", "ring2d", "--integrators", "rk4", "--dts", "0.001", "--duration", "50000",
+                                  "--csv", csv, "--plot", dir.filePath("study.svg")});
+        QVERIFY(p.waitForStarted(testsupport::kHangGuardMs));
+        // Interrupted once it holds its unnamed output open in the folder (it opens it first).
+        QVERIFY(testsupport::waitUntil([&] { return holdsFileIn(p.processId(), dir.path()); }));
+        ::kill(static_cast<pid_t>(p.processId()), SIGTERM);
+        QVERIFY(testsupport::waitForExit(p));
+        QCOMPARE(p.exitStatus(), QProcess::CrashExit);
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden | QDir::System), QStringList({"study.csv"}));
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("precious\n"));
     }
     void existingFileSurvivesAFailedRunStart() {
         const QString csv = path("keep.csv");

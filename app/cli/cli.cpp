@@ -48,16 +48,6 @@ CLI::Validator wholeIn(long min, long max) {
 
 // --- Shared option groups ----------------------------------------------------------------------
 
-namespace {
-
-std::vector<std::string> integratorNameList() {
-    std::vector<std::string> names;
-    for (const simcore::IntegratorInfo& i : simcore::integratorTable()) names.emplace_back(i.name);
-    return names;
-}
-
-}  // namespace
-
 void addSceneOptions(CLI::App& app, SceneArgs& args, bool withDt, bool withIntegrator) {
     app.add_option("--scene", args.scene, "built-in scene (" + simcore::sceneNames() +
                                               ") or a scene file (.json), which may carry a saved state")
@@ -72,7 +62,9 @@ void addSceneOptions(CLI::App& app, SceneArgs& args, bool withDt, bool withInteg
     if (withIntegrator)
         app.add_option("--integrator", args.integrator, "integration method (default: the scene file's, else rk4)")
             ->type_name("NAME")
-            ->check(CLI::IsMember(integratorNameList()));
+            ->check(CLI::Validator(
+                [](std::string& name) { return simcore::unknownIntegrator(name).value_or(std::string()); },
+                "{" + simcore::integratorNames() + "}"));
 }
 
 std::string sceneFileOf(const SceneArgs& args) {
@@ -95,8 +87,7 @@ SceneSetup sceneSetup(const SceneArgs& args) {
         fileIntegrator = read.file->integrator;
         setup.state = read.file->state;
     } else if (!scene) {
-        throw UsageError("unknown scene " + simcore::quoteShort(setup.sceneName) + "; allowed: " + simcore::sceneNames() +
-                         ", or a scene file (.json)");
+        throw UsageError(simcore::unknownSceneMessage(setup.sceneName) + ", or a scene file (.json)");
     } else {
         setup.params = simcore::ParameterSet(scene->kind);
     }
@@ -105,9 +96,7 @@ SceneSetup sceneSetup(const SceneArgs& args) {
     if (args.dt)
         if (auto error = setup.params.setFromText("dt", *args.dt)) throw UsageError("--" + *error);
     setup.integrator = args.integrator.value_or(fileIntegrator.empty() ? "rk4" : fileIntegrator);
-    if (!simcore::makeIntegrator(setup.integrator))
-        throw UsageError("unknown integrator " + simcore::quoteShort(setup.integrator) +
-                         "; allowed: " + simcore::integratorNames());
+    if (auto error = simcore::unknownIntegrator(setup.integrator)) throw UsageError(*error);
     if (auto error = simcore::validateShape(setup.params)) throw UsageError(*error);
     return setup;
 }

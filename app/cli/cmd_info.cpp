@@ -93,7 +93,7 @@ Command addParamsCommand(CLI::App& app) {
                 if (!args->scene) return;
                 const simcore::SceneInfo* info = simcore::findScene(*args->scene);
                 if (!info)
-                    throw UsageError("unknown scene " + simcore::quoteShort(*args->scene) + "; allowed: " + simcore::sceneNames());
+                    throw UsageError(simcore::unknownSceneMessage(*args->scene));
                 args->kind = info->kind;
                 simcore::ParameterSet params(info->kind);
                 for (const std::string& assignment : args->set)

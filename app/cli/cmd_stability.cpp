@@ -36,8 +36,7 @@ void checkStability(StabilityArgs& args) {
     spec.params = args.setup.params;
     spec.integrators = nameList("integrators", args.integrators);
     for (const auto& name : spec.integrators)
-        if (!simcore::makeIntegrator(name))
-            throw UsageError("unknown integrator " + simcore::quoteShort(name) + "; allowed: " + simcore::integratorNames());
+        if (auto error = simcore::unknownIntegrator(name)) throw UsageError(*error);
     spec.duration = args.duration;
     spec.perturb = args.perturb;
     spec.hMin = args.hMin;

@@ -140,8 +140,8 @@ int main(int argc, char** argv) {
         scene = &simcore::sceneInfo(file->params.kind());
     }
     if (!scene)
-        return fail(QStringLiteral("unknown scene %1; allowed: %2, or a scene file (.json)")
-                        .arg(quoted(sceneArg), elui::toQString(simcore::sceneNames())));
+        return fail(QString::fromStdString(simcore::unknownSceneMessage(sceneArg.toStdString())) +
+                    QStringLiteral(", or a scene file (.json)"));
     simcore::ParameterSet params = file                                 ? file->params
                                    : preset && !parser.isSet(sceneOpt) ? preset->parameters()
                                                                        : simcore::ParameterSet(scene->kind);
@@ -164,9 +164,7 @@ int main(int argc, char** argv) {
     if (integrators.size() > 3)
         return fail(QStringLiteral("--compare takes one to three integrators, got %1").arg(integrators.size()));
     for (const QString& name : integrators)
-        if (!simcore::makeIntegrator(name.toStdString()))
-            return fail(QStringLiteral("unknown integrator %1; allowed: %2")
-                            .arg(quoted(name), elui::toQString(simcore::integratorNames())));
+        if (auto error = simcore::unknownIntegrator(name.toStdString())) return fail(QString::fromStdString(*error));
     bool afterOk = false;
     const double after = parser.value(afterOpt).toDouble(&afterOk);
     // Finite: --after inf would never be reached and nan compares false with everything.
