@@ -6,11 +6,11 @@
 # Everything happens in a temporary directory removed on exit; nothing is written to the source
 # tree. Registered by packaging/CMakeLists.txt (Release builds only, see there).
 #
-# test_package.sh CPACK BUILD_DIR VERSION APP_ID GUI(ON|OFF) MAN_PAGES(ON|OFF) \
+# test_package.sh CPACK BUILD_DIR VERSION APP_ID GUI(ON|OFF) MAN_PAGES(ON|OFF) PYTHON(ON|OFF) \
 #                 DESKTOP_FILE_VALIDATE|"" APPSTREAMCLI|""
 set -euo pipefail
-[ $# -eq 8 ] || { echo "usage: $0 CPACK BUILD_DIR VERSION APP_ID GUI MAN_PAGES DESKTOP_FILE_VALIDATE APPSTREAMCLI" >&2; exit 2; }
-cpack=$1 build=$2 version=$3 app_id=$4 gui=$5 man=$6 desktop_validate=$7 appstreamcli=$8
+[ $# -eq 9 ] || { echo "usage: $0 CPACK BUILD_DIR VERSION APP_ID GUI MAN_PAGES PYTHON DESKTOP_FILE_VALIDATE APPSTREAMCLI" >&2; exit 2; }
+cpack=$1 build=$2 version=$3 app_id=$4 gui=$5 man=$6 python=$7 desktop_validate=$8 appstreamcli=$9
 
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/elastic-lab-package.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT
@@ -40,6 +40,12 @@ for dep in "${expected[@]}"; do
 done
 # ... and no development, debug or sanitizer runtime package.
 [[ "$depends" =~ -dev|-dbg|libasan|libtsan|libubsan ]] && fail "Depends names a build-only package"
+
+if [ "$python" = ON ]; then
+  recommends=$(field Recommends)
+  echo "Recommends: $recommends"
+  [[ "$recommends" == *python3-numpy* ]] || fail "Recommends lacks python3-numpy (the Python module imports it)"
+fi
 
 # --- install into a scratch root and look at it ---
 root=$scratch/root
@@ -72,6 +78,22 @@ awk -F, -v duration=0.05 '
         if (t < duration - 1e-12 || t > duration + dt) { print "last row at t = " t ", not " duration; exit 1 } }
 ' "$scratch/run.csv" || fail "the CSV of the installed run"
 echo "run: $(($(wc -l <"$scratch/run.csv") - 1)) rows up to t = $(tail -n 1 "$scratch/run.csv" | cut -d, -f2)"
+
+if [ "$python" = ON ]; then
+  # The Python module from the unpacked tree (not the build tree's): a 1D spring for 0.05 s.
+  # The package's python3 version is the Recommends' lower bound.
+  python3_version=$(sed -n 's/.*python3 (>= \([0-9.]*\)).*/\1/p' <<<"$recommends")
+  out=$(run_installed env PYTHONPATH="$usr/lib/python3/dist-packages" PYTHONDONTWRITEBYTECODE=1 \
+        "python$python3_version" -c '
+import elasticlab, sys
+assert elasticlab.__file__.startswith(sys.argv[1]), elasticlab.__file__
+sim = elasticlab.Simulation("spring1d", integrator="rk4")
+sim.run(0.05)
+energy = sim.diagnostics["energy_total"]
+assert sim.time >= 0.05 - 1e-12 and sim.step_count > 0 and energy == energy, (sim.time, sim.step_count, energy)
+print(sim.step_count)' "$usr/") || fail "the installed Python module"
+  echo "python: elasticlab from the package ran $out steps"
+fi
 
 if [ "$gui" = ON ]; then
   # --version needs no display (the GUI picks the offscreen platform for it).
@@ -141,7 +163,7 @@ while IFS= read -r page; do
   while IFS= read -r target; do
     links=$((links + 1))
     [ -e "$(dirname "$page")/$target" ] || fail "${page#"$doc/"} links $target, which is not installed"
-  done < <(grep -o '](\([A-Za-z0-9._/-]*\.\(md\|png\|svg\|csv\|txt\)\)[)#]' "$page" | sed 's/^](//; s/[)#]$//')
+  done < <(grep -o '](\([A-Za-z0-9._/-]*\.\(md\|png\|svg\|csv\|txt\|py\)\)[)#]' "$page" | sed 's/^](//; s/[)#]$//')
 done < <(find "$doc" -name '*.md')
 [ "$links" -gt 0 ] || fail "no relative link found in the installed docs"
 echo "docs: $links relative links resolve"
