@@ -201,30 +201,34 @@ SceneFileResult parseSceneFile(const std::string& text) {
     }
 }
 
-SceneFileResult readSceneFile(const std::string& path) {
+InputFile readInputFile(const std::string& path, const std::string& what) {
     // Only a regular file of bounded size is read: a directory, a FIFO (which would wait for a
     // writer for ever), a device (/dev/zero never ends) or a socket is refused by what it is.
     // O_NONBLOCK: opening a FIFO must not wait for a writer either.
+    InputFile input;
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     // The path is quoted (escaped, shortened): a name may hold any byte, a NUL included.
     const std::string name = quoteShort(path, 300);
-    if (fd < 0) return failure(name + ": cannot read (" + std::strerror(errno) + ")");
+    if (fd < 0) {
+        input.error = name + ": cannot read (" + std::strerror(errno) + ")";
+        return input;
+    }
     struct stat st {};
-    std::string text;
+    std::string& text = input.text;
     std::string error;
     if (::fstat(fd, &st) != 0) {
         error = std::string("cannot read (") + std::strerror(errno) + ")";
     } else if (S_ISDIR(st.st_mode)) {
-        error = "is a directory, not a scene file";
+        error = "is a directory, not " + what;
     } else if (!S_ISREG(st.st_mode)) {
         error = std::string("is not a regular file (") +
                 (S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISCHR(st.st_mode) ? "a character device"
                                                : S_ISBLK(st.st_mode) ? "a block device"
                                                : S_ISSOCK(st.st_mode) ? "a socket" : "a special file") +
-                "); scene files are read from regular files only";
-    } else if (st.st_size > kMaxSceneFileBytes) {
-        error = "is " + std::to_string(st.st_size) + " bytes; a scene file is at most " +
-                std::to_string(kMaxSceneFileBytes) + " bytes (256 MiB)";
+                "); " + what + " is read from a regular file only";
+    } else if (st.st_size > kMaxInputFileBytes) {
+        error = "is " + std::to_string(st.st_size) + " bytes; " + what + " is at most " +
+                std::to_string(kMaxInputFileBytes) + " bytes (256 MiB)";
     } else {
         // Read what is there, never more than the bound (the file may grow while we read).
         text.resize(static_cast<std::size_t>(st.st_size) + 1);
@@ -238,18 +242,27 @@ SceneFileResult readSceneFile(const std::string& path) {
             }
             if (n == 0) break;
             got += static_cast<std::size_t>(n);
-            if (got > static_cast<std::size_t>(kMaxSceneFileBytes)) {
-                error = "grew beyond " + std::to_string(kMaxSceneFileBytes) + " bytes while it was read";
+            if (got > static_cast<std::size_t>(kMaxInputFileBytes)) {
+                error = "grew beyond " + std::to_string(kMaxInputFileBytes) + " bytes while it was read";
                 break;
             }
-            if (got == text.size()) text.resize(std::min<std::size_t>(2 * text.size(), kMaxSceneFileBytes + 1));
+            if (got == text.size()) text.resize(std::min<std::size_t>(2 * text.size(), kMaxInputFileBytes + 1));
         }
         text.resize(got);
     }
     ::close(fd);
-    if (!error.empty()) return failure(name + ": " + error);
-    SceneFileResult result = parseSceneFile(text);
-    if (!result.file) result.error = name + ": " + result.error;
+    if (!error.empty()) {
+        input.error = name + ": " + error;
+        text.clear();
+    }
+    return input;
+}
+
+SceneFileResult readSceneFile(const std::string& path) {
+    const InputFile input = readInputFile(path, "a scene file");
+    if (!input.error.empty()) return failure(input.error);
+    SceneFileResult result = parseSceneFile(input.text);
+    if (!result.file) result.error = quoteShort(path, 300) + ": " + result.error;
     return result;
 }
 

@@ -53,9 +53,16 @@ struct SceneFileResult {
 };
 
 SceneFileResult parseSceneFile(const std::string& text);
-// Reads a regular file of at most kMaxSceneFileBytes; a directory, FIFO, device or socket is
-// refused by what it is, without waiting on it or reading it to the end.
-inline constexpr long long kMaxSceneFileBytes = 256LL * 1024 * 1024;
+// Every file read as input (scene files, a study's --from-csv): a regular file of at most
+// kMaxInputFileBytes; a directory, FIFO, device or socket is refused by what it is, without
+// waiting on it or reading it to the end. `what` names the file in messages ("a scene file").
+inline constexpr long long kMaxInputFileBytes = 256LL * 1024 * 1024;
+inline constexpr long long kMaxSceneFileBytes = kMaxInputFileBytes;
+struct InputFile {
+    std::string text;
+    std::string error;  // set when nothing was read
+};
+InputFile readInputFile(const std::string& path, const std::string& what);
 SceneFileResult readSceneFile(const std::string& path);
 
 // The JSON text of a simulation (with its state when withState).

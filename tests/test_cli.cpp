@@ -313,6 +313,16 @@ private slots:
             QCOMPARE(r.code, 2);
             QVERIFY2(r.err.contains(message), qPrintable(args.join(' ') + ": " + r.err));
         }
+        // --from-csv is an input like a scene file: a FIFO is not waited on, /dev/zero not read.
+        const QString fifo = path("rows.fifo");
+        QCOMPARE(::mkfifo(fifo.toUtf8().constData(), 0600), 0);
+        for (const auto& [input, message] : {std::pair{fifo, QString("is not a regular file (a FIFO)")},
+                                             {QString("/dev/zero"), QString("is not a regular file (a character device)")},
+                                             {m_dir.path(), QString("is a directory")}}) {
+            const Result r = cli({"study", "--from-csv", input});
+            QCOMPARE(r.code, 2);
+            QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        }
         QProcess full;
         full.setStandardOutputFile("/dev/full");
         full.start(ELASTIC_LAB_CLI, {"study", "--scene", "spring1d", "--integrators", "rk4", "--dts", "0.01", "--duration", "0.1"});

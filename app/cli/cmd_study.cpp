@@ -11,6 +11,7 @@
 #include "output.h"
 #include "refinement.h"
 #include "scaling.h"
+#include "scenefile.h"
 #include "study.h"
 
 namespace cli {
@@ -169,12 +170,10 @@ int runRefinement(const StudyArgs& args) {
 
 // Merge mode: fit and plot rows written earlier (e.g. the shards, concatenated).
 int runFromCsv(const StudyArgs& args) {
-    std::ifstream in(args.fromCsv);
-    if (!in) throw UsageError("cannot read " + simcore::quoteShort(args.fromCsv, 200));
-    std::stringstream text;
-    text << in.rdbuf();
+    const simcore::InputFile input = simcore::readInputFile(args.fromCsv, "a study CSV");
+    if (!input.error.empty()) throw UsageError(input.error);
     std::string error;
-    const auto rows = simcore::parseStudyCsv(text.str(), &error);
+    const auto rows = simcore::parseStudyCsv(input.text, &error);
     if (!rows) throw UsageError(simcore::quoteShort(args.fromCsv, 200) + ": " + error);
     printOrders(*rows, 0.0);
     if (!args.plot.empty() && !writeFile(args.plot, simcore::studySvg(*rows, args.title.value_or("work-precision"))))
