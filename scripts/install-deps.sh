@@ -2,7 +2,7 @@
 # Installs the Debian 12 packages Elastic Lab needs to build, test and run (skips when present).
 set -euo pipefail
 packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev libqcustomplot-dev
-          xvfb xauth libbenchmark-dev nlohmann-json3-dev stress-ng ccache)
+          xvfb xauth libbenchmark-dev nlohmann-json3-dev stress-ng ccache libsundials-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

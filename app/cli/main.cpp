@@ -32,7 +32,7 @@ commands:
                                   memory, and the force kernels used (default: the widest the CPU runs)
 
   study --scene S [--set key=value]... --integrators a,b,... --dts h1,h2,... [--tols t1,...]
-      [--duration T] [--repeat R] [--reference auto|exact|rk4|rk45] [--csv FILE] [--plot FILE.svg]
+      [--duration T] [--repeat R] [--reference auto|exact|rk4|rk45|cvode-bdf] [--csv FILE] [--plot FILE.svg]
       [--shard K/N] [--samples G] [--fixed-step] [--quiet]
   study --from-csv FILE [--plot FILE.svg]
                                   work-precision study: error against wall time, force evaluations
