@@ -128,10 +128,10 @@ public:
             }
             if (!check(CVodeReInit(m_mem, t, m_state), report)) return report;
             // At the start of a run CVODE estimates its first step; after a restart it starts
-            // (at order 1) from the step it was taking, which the lab passes as h. With its own
+            // (at order 1) from the step it was taking (at most the lab's h). With its own
             // estimate (a tiny step) every restart would cost dozens of steps, and a body
             // resting on the floor under contact = projection restarts at nearly every step.
-            CVodeSetInitStep(m_mem, m_needInit ? 0.0 : h);
+            CVodeSetInitStep(m_mem, m_needInit ? 0.0 : m_planned > 0.0 ? std::min(h, m_planned) : h);
             m_fresh = true;
             m_tn = t;
             m_needInit = m_restart = false;
@@ -141,11 +141,16 @@ public:
             !check(CVodeSetMaxStep(m_mem, std::max(0.0, m_options.maxStep)), report))
             return report;
         // The lab's time and CVODE's may differ by the round-off of the lab's compensated sum:
-        // CVODE steps from its own time. A stop time only when the lab shortens the step CVODE
-        // planned (to land on a sampling time, or the speed cap): a stop time at every step,
-        // however close to the planned step, counts as a step change and keeps CVODE from
-        // ever raising its order or its step (measured: the step stalled near 1e-9 s).
-        const bool shortened = m_fresh || h < m_planned * (1.0 - 1e-12);
+        // CVODE steps from its own time. The lab's step is a hard limit where the lab shortened
+        // it (to land on a sampling time, or the speed cap): then a stop time. Otherwise none:
+        // a stop time one step ahead also clamps the step after it (CVODE checks it after each
+        // step) and counts as a step change at every step, which keeps CVODE from ever raising
+        // its order or its step (measured: stuck at 1e-6 s on spring1d). The step reported as
+        // the next one is kHeadroom times the one CVODE plans, more than CVODE ever grows a
+        // step (10x), so that a lab step not shortened never lets CVODE pass a sampling time
+        // (after a stop time CVODE may take more than the step it reported: measured
+        // 0.55 s -> 0.628 s past a sample at 0.6 s with the plain report).
+        const bool shortened = m_fresh || h < m_reported * (1.0 - 1e-12);
         const double tstop = m_tn + (shortened ? h : 1e20);
         if (!check(CVodeSetStopTime(m_mem, tstop), report)) return report;
         const SolverCounters before = cumulative();
@@ -167,7 +172,7 @@ public:
         m_tn = tret;
         double hcur = 0.0;
         CVodeGetCurrentStep(m_mem, &hcur);
-        report.hNext = hcur;
+        report.hNext = m_reported = kHeadroom * hcur;
         m_planned = hcur;
         // Position error, RMS over particles, from CVODE's local error estimate (as rk45's).
         if (CVodeGetEstLocalErrors(m_mem, m_work) == CV_SUCCESS) {
@@ -418,6 +423,7 @@ private:
         if (code < 0) self(data).m_message = message ? message : "";
     }
 
+    static constexpr double kHeadroom = 11.0;  // reported next step / CVODE's planned step
     const bool m_bdf;
     StateLayout m_layout;
     OdeSystem* m_system = nullptr;
@@ -433,6 +439,7 @@ private:
     bool m_restart = false;
     double m_tn = 0.0;           // CVODE's time [s]
     double m_planned = 0.0;      // the step CVODE plans next [s]
+    double m_reported = 0.0;     // the next step reported to the lab (kHeadroom x planned) [s]
     double m_appliedAtol = -1.0, m_appliedRtol = -1.0;
     double m_gamma = -1.0;       // the gamma the operator's diagonal was computed for
     std::string m_message;
