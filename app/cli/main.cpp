@@ -23,7 +23,9 @@ commands:
       [--atol A] [--rtol R] [--fixed-step] [--error-estimate] [--newton N]
                                   run headless; CSV row every N steps, final state table;
                                   S may be a scene file (.json), which can carry a saved state;
-                                  rk45 tolerances (or --fixed-step), step-doubling error_estimate
+                                  rk45, cvode-bdf and cvode-adams tolerances (or --fixed-step for
+                                  rk45; the CVODE counters are printed and added to the CSV),
+                                  step-doubling error_estimate
                                   for fixed-step methods, Newton iterations of implicit-euler
 
   bench --scene S [--set key=value]... [--integrator NAME] [--steps N] [--threads K] [--header]
