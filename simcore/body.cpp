@@ -339,6 +339,12 @@ double memoryBoundBytes(const BodySize& size) {
            kPerFace * double(size.faces);
 }
 
+double memoryBoundBytes(const BodySize& size, std::string_view integrator) {
+    constexpr double kCvodePerParticle = 1400.0;
+    const bool cvode = integrator.substr(0, 6) == "cvode-";
+    return memoryBoundBytes(size) + (cvode ? kCvodePerParticle * double(size.particles) : 0.0);
+}
+
 std::optional<std::string> validateShape(const ParameterSet& params) {
     if (params.kind() != SceneKind::Spring1d &&
         !(params.get("radius_inner") < params.get("radius_outer"))) {

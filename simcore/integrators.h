@@ -19,7 +19,15 @@
 //   verlet            2 (1)  2                                  step doubling (optional)
 //   rk45              5(4)   7 per attempt (no FSAL, see .cpp)  embedded, every step
 //   implicit-euler    1      2 + CG products of K and D         step doubling (optional)
+//   cvode-bdf         1-5    CVODE: as it needs (+ Jv products)  CVODE's local error estimate
+//   cvode-adams       1-12   CVODE: as it needs                  CVODE's local error estimate
+//   xpbd              1      1 per substep (+ a spring pass)     step doubling (optional)
+//
+// The CVODE methods (cvode_integrators.cpp) keep a history between steps (the Nordsieck
+// array): anything that changes the state or the system outside the integrator between two
+// steps must be announced with restart(), which re-initialises them (CVodeReInit).
 
+#include <array>
 #include <complex>
 #include <memory>
 #include <optional>
@@ -37,6 +45,19 @@ struct StateLayout {
     Eigen::Index positions = 0;   // n: 3 per particle
     Eigen::Index aux = 0;         // m: integrated scalars
     Eigen::Index size() const { return 2 * positions + aux; }
+};
+
+// A spring family as distance constraints, for position-based methods (xpbd).
+struct DistanceFamily {
+    std::span<const int> a, b;        // the end particles of each spring
+    std::span<const double> rest;     // rest lengths L0 [m]
+    double ks = 0.0;                  // stiffness [N/m] (compliance 1/ks); 0 = not a constraint
+    double kd = 0.0;                  // damping [N s/m]
+};
+struct DistanceConstraints {
+    std::array<DistanceFamily, 3> families;        // structural, radius, shear
+    const Eigen::VectorXd* inverseMass = nullptr;  // per coordinate (3N) [1/kg], 0 where fixed or absent
+    int substeps = 1;                              // xpbd substeps per step (parameter `substeps`)
 };
 
 class OdeSystem {
@@ -103,6 +124,9 @@ public:
     virtual bool stronglyNonlinear(double /*h*/, const Eigen::VectorXd& /*y0*/, const Eigen::VectorXd& /*v1*/) {
         return false;
     }
+    // --- springs as distance constraints, for position-based methods (xpbd) ---
+    // Fills `out` and returns true when the system is a mass-spring body.
+    virtual bool distanceConstraints(DistanceConstraints& /*out*/) { return false; }
     // Mass of each coordinate [kg] (n), 0 on constrained coordinates.
     virtual const Eigen::VectorXd& coordinateMass() const {
         static const Eigen::VectorXd none;
@@ -117,23 +141,42 @@ struct StepReport {
     int evaluations = 0;          // force evaluations spent, including rejected attempts
     int rejected = 0;             // adaptive methods: attempts rejected before this step
     int linearIterations = 0;     // implicit methods: CG iterations (each one K and D product)
+    // Products of the force Jacobians with a vector that count as force evaluations (CVODE:
+    // every Jacobian-vector product, of GMRES and of its preconditioner; 0 for the others).
+    int jacobianProducts = 0;
     // Why the step could not be taken (then y is left unchanged); nullptr when it was.
     const char* failure = nullptr;
 };
 
 // Tunables of the integrators (not of the physics), shared by every method.
 struct IntegratorOptions {
-    double atol = 1e-6;             // rk45: absolute tolerance on x [m] and v [m/s]
-    double rtol = 1e-6;             // rk45: relative tolerance
+    double atol = 1e-6;             // rk45, cvode-*: absolute tolerance on x [m] and v [m/s]
+    double rtol = 1e-6;             // rk45, cvode-*: relative tolerance
     bool fixedStep = false;         // rk45: take the given step, no control (order studies)
-    double minStep = 1e-10;         // rk45: below this step [s] the run fails instead of stalling
-    double maxStep = 0.0;           // rk45: largest step [s]; 0 = no cap
+    double minStep = 1e-10;         // rk45, cvode-*: below this step [s] the run fails instead of stalling
+    double maxStep = 0.0;           // rk45, cvode-*: largest step [s]; 0 = no cap
     double cgTolerance = 1e-9;      // implicit-euler: CG relative residual
     int cgMaxIterations = 500;      // implicit-euler: a solve that needs more fails the step
     int newtonIterations = 1;       // implicit-euler: 1 = linearised once (Baraff-Witkin);
                                     // more = Newton iterations towards full backward Euler
     bool stepDoubling = false;      // fixed-step methods: estimate the local error by step
                                     // doubling (Richardson); costs about twice the evaluations
+};
+
+// Cumulative counters of a solver that keeps its own (CVODE), over every re-initialisation
+// since the integrator was prepared.
+struct SolverCounters {
+    long steps = 0;                 // internal steps taken
+    long rhsEvaluations = 0;        // right-hand-side (force) evaluations
+    long jacobianProducts = 0;      // force Jacobian products: GMRES's Jv and the preconditioner's
+    long linearIterations = 0;      // GMRES iterations
+    long preconditionerIterations = 0;  // CG iterations inside the preconditioner
+    long nonlinearIterations = 0;   // Newton (BDF) or fixed-point (Adams) iterations
+    long errorTestFailures = 0;     // steps rejected by the local error test
+    long convergenceFailures = 0;   // nonlinear solver convergence failures
+    long reinitialisations = 0;     // CVodeReInit after a change between steps (restart())
+    int order = 0;                  // the order of the last step
+    double step = 0.0;              // the step size of the last step [s]
 };
 
 class Integrator {
@@ -147,6 +190,11 @@ public:
     virtual bool implicit() const { return false; }
     virtual void prepare(const StateLayout& layout) = 0;
     virtual StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) = 0;
+    // The state or the system (parameters, pointer) changed outside the integrator since its
+    // last step: a method that keeps a history between steps starts afresh from y.
+    virtual void restart() {}
+    // A solver's own counters (CVODE), or nullptr.
+    virtual const SolverCounters* counters() const { return nullptr; }
 
     void setOptions(const IntegratorOptions& options) { m_options = options; }
     const IntegratorOptions& options() const { return m_options; }

@@ -124,7 +124,7 @@ std::string formatDouble(double value) {
     return ec == std::errc() ? std::string(buffer, end) : std::string("0");
 }
 
-std::vector<CsvColumn> timeSeriesColumns(SceneKind kind) {
+std::vector<CsvColumn> timeSeriesColumns(SceneKind kind, bool solverCounters) {
     using D = Diagnostics;
     std::vector<CsvColumn> c = {
         {"step", [](const D& d) { return static_cast<double>(d.step); }},
@@ -161,6 +161,21 @@ std::vector<CsvColumn> timeSeriesColumns(SceneKind kind) {
         c.push_back({"volume_outer", [](const D& d) { return d.volume[1]; }});
         c.push_back({"pressure_inner", [](const D& d) { return d.pressure[0]; }});
         c.push_back({"pressure_outer", [](const D& d) { return d.pressure[1]; }});
+    }
+    if (solverCounters) {
+        auto count = [](auto value) { return [value](const D& d) { return static_cast<double>(value(d)); }; };
+        c.push_back({"force_evals", count([](const D& d) { return d.forceEvaluations; })});
+        c.push_back({"solver_steps", count([](const D& d) { return d.solver.steps; })});
+        c.push_back({"rhs_evals", count([](const D& d) { return d.solver.rhsEvaluations; })});
+        c.push_back({"jac_products", count([](const D& d) { return d.solver.jacobianProducts; })});
+        c.push_back({"linear_iterations", count([](const D& d) { return d.solver.linearIterations; })});
+        c.push_back({"precond_iterations", count([](const D& d) { return d.solver.preconditionerIterations; })});
+        c.push_back({"nonlinear_iterations", count([](const D& d) { return d.solver.nonlinearIterations; })});
+        c.push_back({"error_test_failures", count([](const D& d) { return d.solver.errorTestFailures; })});
+        c.push_back({"convergence_failures", count([](const D& d) { return d.solver.convergenceFailures; })});
+        c.push_back({"reinits", count([](const D& d) { return d.solver.reinitialisations; })});
+        c.push_back({"order", count([](const D& d) { return d.solver.order; })});
+        c.push_back({"step_size", [](const D& d) { return d.solver.step; }});
     }
     return c;
 }

@@ -56,8 +56,12 @@ struct CsvColumn {
     std::function<double(const Diagnostics&)> value;
 };
 
-// The time-series columns of a scene: only what the scene has (no gas columns in 1D).
-std::vector<CsvColumn> timeSeriesColumns(SceneKind kind);
+// The time-series columns of a scene: only what the scene has (no gas columns in 1D). With
+// solverCounters (a CVODE integrator: Diagnostics::hasSolverCounters) the solver's cumulative
+// counters follow: force_evals (every force evaluation and every Jacobian-vector product),
+// solver_steps, rhs_evals, jac_products, linear_iterations, precond_iterations,
+// nonlinear_iterations, error_test_failures, convergence_failures, reinits, order, step_size.
+std::vector<CsvColumn> timeSeriesColumns(SceneKind kind, bool solverCounters = false);
 std::string csvHeader(const std::vector<CsvColumn>& columns);
 std::string csvRow(const std::vector<CsvColumn>& columns, const Diagnostics& d);
 // Shortest text that reads back to the same double.

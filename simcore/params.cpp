@@ -65,6 +65,8 @@ constexpr std::array kTable = {
               "rest length of the mouse spring"},
     ParamSpec{"dt",           "s",     0.003,   0.0,   1.0,    true,  false, kBitsAll,      ParamGroup::Time, "",
               "time step DT of fixed-step integrators (initial step of adaptive ones)"},
+    ParamSpec{"substeps",     "",      8.0,     1.0,   1000.0, false, true,  kBitsAll,      ParamGroup::Time, "",
+              "xpbd: substeps per step DT, one constraint iteration each (Macklin et al. 2019, small steps)"},
     ParamSpec{"scaling",      "",      0.0,     0.0,   1.0,    false, true,  kBitsLayered,  ParamGroup::Shape, "",
               "what mass, ks, kd, rks, rkd and contact_stiffness mean when the mesh is refined: 0 = physical (the "
               "values hold at the scene's default resolution and the body keeps its totals and material constants), "

@@ -201,6 +201,19 @@ public:
     // Adds the design point's contact stiffness at every linearisation (nullopt: none).
     void setContactDesign(std::optional<ContactDesign> design) { m_design = std::move(design); }
     const Eigen::VectorXd& coordinateMass() const override { return m_mass; }
+    bool distanceConstraints(DistanceConstraints& out) override {
+        const Topology& topo = m_sim.m_body.topology;
+        const ForceParams& p = m_sim.m_forces.params;
+        const bool springs = m_sim.m_forces.terms().has(Term::Springs);
+        for (int f = 0; f < kSpringFamilyCount; ++f) {
+            const auto k = static_cast<std::size_t>(f);
+            const SpringSet& set = topo.springs[k];
+            out.families[k] = {set.a, set.b, set.rest, springs ? p.ks[k] : 0.0, springs ? p.kd[k] : 0.0};
+        }
+        out.inverseMass = &m_sim.m_invMass3;
+        out.substeps = static_cast<int>(m_sim.m_params.get("substeps"));
+        return true;
+    }
     bool stronglyNonlinear(double h, const Eigen::VectorXd& y0, const Eigen::VectorXd& v1) override {
         const ForceModel& forces = m_sim.m_forces;
         if (!forces.contactWalls()) return false;
@@ -384,6 +397,8 @@ void Simulation::reset() {
     m_diag = Diagnostics{};
     m_timeCarry = 0.0;
     m_diag.dt = m_dt;
+    m_restartIntegrator = false;
+    m_jacobianProducts = 0;
     startBookkeeping();
 }
 
@@ -403,6 +418,7 @@ void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v) 
     m_y.tail(kAux).setZero();
     m_lastGood = m_y;
     m_failure.reset();
+    m_restartIntegrator = true;
     const long step = m_diag.step;
     const double time = m_diag.time;
     m_diag = Diagnostics{};
@@ -530,7 +546,10 @@ void Simulation::fillDiagnostics(Diagnostics& d, const std::array<double, kSprin
     d.removedDamping = m_y[2 * m_n];
     d.contact = contact;
     d.removedContact = m_y[2 * m_n + 1];
-    d.forceEvaluations = m_forces.forceEvaluations();
+    d.forceEvaluations = m_forces.forceEvaluations() + m_jacobianProducts;
+    const SolverCounters* counters = m_integrator->counters();
+    d.hasSolverCounters = counters != nullptr;
+    d.solver = counters ? *counters : SolverCounters{};
 }
 
 void Simulation::currentForces(double* f) const {
@@ -571,8 +590,13 @@ bool Simulation::step(double until) {
     }
     m_system->offer(m_endValid ? &m_endDerivative : nullptr);
     m_endValid = false;
+    if (m_restartIntegrator) {
+        m_integrator->restart();
+        m_restartIntegrator = false;
+    }
     StepReport report = m_integrator->step(*m_system, t0, h, m_y);
     m_system->offer(nullptr);
+    m_jacobianProducts += static_cast<std::uint64_t>(report.jacobianProducts);
     if (report.failure) {
         m_failure = Failure{report.failure, m_diag.step + 1, t0};
         m_y = m_lastGood;
@@ -614,6 +638,7 @@ bool Simulation::step(double until) {
         if (((scan.low <= wallLow) || (scan.high >= wallHigh)).any() && collide(false)) {
             beforeContacts = totalEnergyNow();
             collide(true);
+            m_restartIntegrator = true;
             scan = scanState();
         }
     }
@@ -627,6 +652,7 @@ bool Simulation::step(double until) {
         if (constrainLayers(false, normals)) {
             if (!beforeContacts) beforeContacts = next.total();
             constrainLayers(true, normals);
+            m_restartIntegrator = true;
             scan = scanState();
             measureState(next, scan);
         }
@@ -806,6 +832,7 @@ std::optional<std::string> Simulation::setParameter(std::string_view key, double
     const double before = totalEnergyNow();
     m_params = next;
     m_endValid = false;
+    m_restartIntegrator = true;
     if (key == "mass" || key == "mass_inner" || key == "mass_outer") {
         const Topology& topo = m_body.topology;
         for (int i = 0; i < topo.particleCount(); ++i) {
@@ -881,6 +908,7 @@ void Simulation::grab(int particle, const Eigen::Vector3d& anchor) {
     // Creating the spring stores energy: that is work done by the pointer.
     const double before = m_diag.pointer;
     m_endValid = false;
+    m_restartIntegrator = true;
     m_forces.pointer = PointerSpring{true, particle, anchor};
     measure(m_diag);
     m_diag.workPointer += m_diag.pointer - before;
@@ -891,6 +919,7 @@ void Simulation::moveAnchor(const Eigen::Vector3d& anchor) {
     // The anchor moves between steps; the change in the spring's energy is the pointer's work.
     const double before = m_diag.pointer;
     m_endValid = false;
+    m_restartIntegrator = true;
     m_forces.pointer.anchor = anchor;
     measure(m_diag);
     m_diag.workPointer += m_diag.pointer - before;
@@ -900,6 +929,7 @@ void Simulation::release() {
     if (!m_forces.pointer.active) return;
     const double before = m_diag.pointer;
     m_endValid = false;
+    m_restartIntegrator = true;
     m_forces.pointer = PointerSpring{};
     measure(m_diag);
     m_diag.workPointer += m_diag.pointer - before;

@@ -61,7 +61,10 @@ struct Diagnostics {
     double initialEnergy = 0.0;              // E_0 [J]
     double errorEstimate = -1.0;             // local error estimate of the last step, < 0: none
     int degenerateSprings = 0;
+    // Force evaluations of the run; with a CVODE integrator also every Jacobian-vector product.
     std::uint64_t forceEvaluations = 0;
+    bool hasSolverCounters = false;          // the integrator is a solver with its own counters (CVODE)
+    SolverCounters solver;                   // ... and these are they
 
     double springTotal() const { return spring[0] + spring[1] + spring[2]; }
     double potential() const { return springTotal() + gravity + gas + pointer + contact; }
@@ -278,6 +281,10 @@ private:
     Eigen::VectorXd m_endDerivative;
     ForceExtras m_endExtras;
     Eigen::Index m_n = 0;         // 3N
+    // The state or the system changed between steps (a projection, the pointer, a live edit,
+    // a new state): the next step tells the integrator (Integrator::restart()).
+    bool m_restartIntegrator = false;
+    std::uint64_t m_jacobianProducts = 0;  // counted as force evaluations (CVODE)
 };
 
 // |h s| beyond which no classical explicit method here is stable (RK4 reaches 2.83 on the

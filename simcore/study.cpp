@@ -15,8 +15,12 @@ namespace simcore {
 
 namespace {
 
+// rk45 unless it takes fixed steps, and the CVODE methods (always adaptive): swept over
+// tolerances.
 bool isAdaptiveItem(const StudySpec& spec, const std::string& integrator) {
-    return integrator == "rk45" && !spec.options.fixedStep;
+    if (integrator == "rk45") return !spec.options.fixedStep;
+    const auto method = makeIntegrator(integrator);
+    return method && method->adaptive();
 }
 
 double rmsDistance(const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
@@ -157,11 +161,12 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
     if (spec.repeat < 1) return "repeat must be at least 1";
     if (spec.shardCount < 1 || spec.shardIndex < 0 || spec.shardIndex >= spec.shardCount)
         return "shard must be K/N with 1 <= K <= N";
-    if (spec.reference != "auto" && spec.reference != "exact" && spec.reference != "rk4" && spec.reference != "rk45")
-        return "unknown reference '" + spec.reference + "'; allowed: auto, exact, rk4, rk45";
+    if (spec.reference != "auto" && spec.reference != "exact" && spec.reference != "rk4" && spec.reference != "rk45" &&
+        spec.reference != "cvode-bdf")
+        return "unknown reference '" + spec.reference + "'; allowed: auto, exact, rk4, rk45, cvode-bdf";
     if (spec.reference == "exact" && !closedFormApplies(spec))
         return "this scene has no closed form (only spring1d without perturbation and without "
-               "reaching a wall has one); use --reference rk4 or rk45";
+               "reaching a wall has one); use --reference rk4, rk45 or cvode-bdf";
     return std::nullopt;
 }
 
@@ -198,15 +203,22 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
     IntegratorOptions options = spec.options;
     options.stepDoubling = false;
     options.fixedStep = false;
-    if (spec.reference == "rk45") {
-        options.atol = options.rtol = 1e-12;
+    // An adaptive reference at a tight tolerance, its error estimated against a run at a
+    // looser one: rk45 at 1e-12 (1e-10), or the stiff-capable cvode-bdf at 1e-11 (1e-9; BDF's
+    // cost grows gently with the tolerance and is not limited by the stiff modes' stability,
+    // as rk4's and rk45's are).
+    if (spec.reference == "rk45" || spec.reference == "cvode-bdf") {
+        const bool bdf = spec.reference == "cvode-bdf";
+        const double tight = bdf ? 1e-11 : 1e-12, loose = bdf ? 1e-9 : 1e-10;
+        options.atol = options.rtol = tight;
         options.minStep = 1e-14;
-        Trajectory fine = runTrajectory(spec.params, "rk45", smallestFixedStep(spec), options, ref.times, cancel);
+        Trajectory fine = runTrajectory(spec.params, spec.reference, smallestFixedStep(spec), options, ref.times, cancel);
         IntegratorOptions coarse = options;
-        coarse.atol = coarse.rtol = 1e-10;
-        Trajectory check = runTrajectory(spec.params, "rk45", smallestFixedStep(spec), coarse, ref.times, cancel);
-        if (fine.failed) throw std::runtime_error("the rk45 reference failed: " + fine.failure);
-        ref.description = "rk45 at atol = rtol = 1e-12 (" + std::to_string(fine.steps) + " steps)";
+        coarse.atol = coarse.rtol = loose;
+        Trajectory check = runTrajectory(spec.params, spec.reference, smallestFixedStep(spec), coarse, ref.times, cancel);
+        if (fine.failed) throw std::runtime_error("the " + spec.reference + " reference failed: " + fine.failure);
+        ref.description = spec.reference + " at atol = rtol = " + formatShort(tight) + " (" + std::to_string(fine.steps) +
+                          " steps)";
         ref.positions = fine.positions;
         ref.estimatedError = check.failed || check.positions.size() != fine.positions.size()
                                  ? std::nan("")

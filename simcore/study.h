@@ -7,14 +7,15 @@
 // sweep order) whose CSV rows concatenate into the unsharded result.
 //
 //   reference     closed form (spring1d, no perturbation, no wall reached), or RK4 at a step
-//                 16x below the smallest studied one, or rk45 at a tight tolerance; its own
+//                 16x below the smallest studied one, or rk45 or cvode-bdf at a tight tolerance; its own
 //                 error is estimated against a second, coarser reference run.
 //   error_final   RMS over particles of |x - x_ref| at T                              [m]
 //   error_max     largest such RMS over a fixed output grid (G samples, every dt divides it)
 //   error_energy  largest |energy balance drift| over all steps                        [J]
 //
-// Adaptive rk45 is swept over tolerances (atol = rtol = tol) instead of steps; its dt is
-// then the mean step T / steps. With IntegratorOptions::fixedStep it takes the steps given.
+// Adaptive rk45, cvode-bdf and cvode-adams are swept over tolerances (atol = rtol = tol)
+// instead of steps; their dt is then the mean step T / steps. With IntegratorOptions::fixedStep
+// rk45 takes the steps given (the CVODE methods are always adaptive).
 // Qt-free: the CLI (`elastic-lab-cli study`) and the GUI call the same code.
 
 #include <atomic>
@@ -40,7 +41,7 @@ struct StudySpec {
     std::vector<double> tolerances{1e-4, 1e-6, 1e-8, 1e-10};  // adaptive rk45 sweep
     double duration = 2.0;                     // T [s]
     int repeat = 1;                            // timing: median of this many runs
-    std::string reference = "auto";            // auto | exact | rk4 | rk45
+    std::string reference = "auto";            // auto | exact | rk4 | rk45 | cvode-bdf
     int samples = 20;                          // output grid size for error_max (at most)
     IntegratorOptions options;                 // base options (tolerances are overridden)
     int shardIndex = 0;                        // 0-based shard of shardCount

@@ -298,6 +298,9 @@ private slots:
             return double(m.uordblks + m.hblkhd);
         };
         for (const IntegratorInfo& info : integratorTable()) {
+            // The CVODE methods have their own, larger bound (issue 13); the base bound is
+            // still the textbook methods' and tight for implicit Euler.
+            const double limit = memoryBoundBytes(bodySize(p), info.name);
             const double before = liveHeap();
             Simulation sim(p, info.name);
             sim.setThreads(2);
@@ -305,7 +308,7 @@ private slots:
             const double held = liveHeap() - before;
             const QByteArray what = QByteArray(info.name.data(), qsizetype(info.name.size())) + ": " +
                                     QByteArray::number(held) + " B held, bound " + QByteArray::number(bound);
-            QVERIFY2(held <= bound, what);
+            QVERIFY2(held <= limit, what + ", limit " + QByteArray::number(limit));
             QVERIFY2(bound <= 2.0 * held || info.name != "implicit-euler", what);
         }
     }

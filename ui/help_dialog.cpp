@@ -37,6 +37,14 @@ QString integratorNote(const QString& name) {
         return QObject::tr("Chooses its own step to meet a tolerance; the readout shows its error estimate.");
     if (name == QLatin1String("implicit-euler"))
         return QObject::tr("Stable at any DT (it damps instead of blowing up): the one to use for DT 0.3.");
+    if (name == QLatin1String("cvode-bdf"))
+        return QObject::tr("A production stiff solver (SUNDIALS): wins where stiffness is damping (overdamped "
+                           "springs), not where it is fast oscillation, which it must still follow.");
+    if (name == QLatin1String("cvode-adams"))
+        return QObject::tr("A production non-stiff solver (SUNDIALS): high order, few force evaluations per step.");
+    if (name == QLatin1String("xpbd"))
+        return QObject::tr("The game-physics way (Jolt, PhysX): stable at DT 1/60 on stiff springs, but it removes "
+                           "energy the body never lost; more substeps, less loss.");
     return {};
 }
 }  // namespace

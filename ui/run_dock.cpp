@@ -135,6 +135,15 @@ void RunDock::showFrame(const FramePtr& frame) {
     html += row(tr("removed by contact"),
                 QStringLiteral("%1 J").arg(d.removedContact + d.removedCollisions, 0, 'g', 4));
     html += row(tr("energy drift"), QStringLiteral("%1 J").arg(d.energyDrift(), 0, 'e', 2));
+    if (d.hasSolverCounters) {  // CVODE's own counters (issue 13)
+        const simcore::SolverCounters& c = d.solver;
+        html += row(tr("force evaluations"), QString::number(d.forceEvaluations));
+        html += row(tr("CVODE steps / RHS"), QStringLiteral("%1 / %2").arg(c.steps).arg(c.rhsEvaluations));
+        html += row(tr("Jv products / linear it."), QStringLiteral("%1 / %2").arg(c.jacobianProducts).arg(c.linearIterations));
+        html += row(tr("error-test / conv. failures"),
+                    QStringLiteral("%1 / %2").arg(c.errorTestFailures).arg(c.convergenceFailures));
+        html += row(tr("order, re-initialisations"), QStringLiteral("%1, %2").arg(c.order).arg(c.reinitialisations));
+    }
     for (std::size_t i = 1; i < frame->lanes.size(); ++i)
         html += row(tr("%1 vs %2").arg(frame->lanes[i].integrator, lane.integrator),
                     frame->lanes[i].failure ? tr("blew up")

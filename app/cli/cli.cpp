@@ -102,11 +102,11 @@ SceneSetup sceneSetup(const SceneArgs& args) {
 }
 
 void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& o) {
-    app.add_option("--atol", o.atol, "absolute error tolerance of rk45 [m, m/s]")
+    app.add_option("--atol", o.atol, "absolute error tolerance of the adaptive methods (rk45, cvode-bdf, cvode-adams) [m, m/s]")
         ->type_name("A")
         ->check(finiteIn(0.0, 1.0, true))
         ->capture_default_str();
-    app.add_option("--rtol", o.rtol, "relative error tolerance of rk45")->type_name("R")->check(finiteIn(0.0, 1.0, false))->capture_default_str();
+    app.add_option("--rtol", o.rtol, "relative error tolerance of the adaptive methods")->type_name("R")->check(finiteIn(0.0, 1.0, false))->capture_default_str();
     app.add_option("--newton", o.newtonIterations, "Newton iterations per step of implicit-euler")
         ->type_name("N")
         ->check(wholeIn(1, 50))

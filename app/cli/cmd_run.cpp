@@ -36,6 +36,16 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
     std::printf("cost         %llu force evaluations, %.3f s wall, %.0f steps/s\n",
                 static_cast<unsigned long long>(d.forceEvaluations), wallSeconds,
                 wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0);
+    if (d.hasSolverCounters) {
+        const simcore::SolverCounters& c = d.solver;
+        std::printf("solver       %ld steps, %ld RHS evaluations, %ld Jacobian-vector products, %ld linear "
+                    "iterations (+%ld CG in the preconditioner), %ld nonlinear iterations\n",
+                    c.steps, c.rhsEvaluations, c.jacobianProducts, c.linearIterations, c.preconditionerIterations,
+                    c.nonlinearIterations);
+        std::printf("             %ld error-test failures, %ld convergence failures, %ld re-initialisations; "
+                    "order %d, step %g s\n",
+                    c.errorTestFailures, c.convergenceFailures, c.reinitialisations, c.order, c.step);
+    }
 }
 
 struct RunArgs {
@@ -88,7 +98,7 @@ int run(const RunArgs& args) {
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
-    const auto columns = simcore::timeSeriesColumns(setup.params.kind());
+    const auto columns = simcore::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters);
     if (csv) {
         csv->write(simcore::csvHeader(columns));
         csv->write(simcore::csvRow(columns, sim.diagnostics()));

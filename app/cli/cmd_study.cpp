@@ -312,7 +312,8 @@ Command addStudyCommand(CLI::App& app) {
                               ->check(wholeIn(1, 1000))
                               ->capture_default_str();
     CLI::Option* reference = sub->add_option("--reference", args->reference, "what the error is measured against: auto "
-                                                                              "(closed form where one exists), exact, rk4, rk45")
+                                                                              "(closed form where one exists), exact, rk4, rk45, "
+                                                                              "cvode-bdf (at a tight tolerance)")
                                   ->type_name("NAME")
                                   ->default_str("auto");
     CLI::Option* samples = sub->add_option("--samples", args->samples, "output times on which error_max is taken")
