@@ -49,7 +49,7 @@ EnergyBarsDock::EnergyBarsDock(QWidget* parent) : QDockWidget(tr("Energy bars"),
     m_plot->yAxis->setTickLength(0, 0);
     m_plot->yAxis->setSubTicks(false);
     m_plot->xAxis->setLabel(tr("energy [J]"));
-    m_plot->xAxis->ticker()->setTickCount(4);  // a narrow dock: few, readable numbers
+    m_plot->xAxis->ticker()->setTickCount(3);  // a narrow dock: few, readable numbers
     // The zero line every bar starts from, negative to the left.
     m_plot->xAxis->grid()->setZeroLinePen(QPen(QColor(60, 60, 60), 1.2));
     setWidget(m_plot);
@@ -184,8 +184,9 @@ void EnergyBarsDock::refreshText() {
         if (m_lanes > 1) {
             QStringList lanes;
             for (int lane = 0; lane < m_lanes && lane < m_laneNames.size(); ++lane)
-                lanes << QStringLiteral("%1 %2").arg(laneBrushName(lane), m_laneNames[lane]);
-            title = tr("Energy at t = %1 s\n%2").arg(m_time, 0, 'f', 2).arg(lanes.join(QStringLiteral(" · ")));
+                lanes << QStringLiteral("%1: %2").arg(laneBrushName(lane), m_laneNames[lane]);
+            // One view a line: a narrow dock would clip them side by side.
+            title = tr("Energy at t = %1 s\n%2").arg(m_time, 0, 'f', 2).arg(lanes.join(QLatin1Char('\n')));
         }
     }
     m_title->setText(title);
