@@ -4,10 +4,12 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "energy_bars_dock.h"
 #include "export.h"
 #include "main_window.h"
 #include "output.h"
 #include "plot_dock.h"
+#include "pv_dock.h"
 #include "scenes.h"
 #include "simulation_controller.h"
 #include "studies_dialog.h"
@@ -30,14 +32,57 @@ using simcore::SceneKind;
 Q_DECLARE_METATYPE(simcore::SceneKind)
 
 namespace {
-std::vector<simcore::Diagnostics> runRows(SceneKind kind, int steps) {
-    simcore::Simulation sim(simcore::ParameterSet(kind), "rk4");
+std::vector<simcore::Diagnostics> runRows(const simcore::ParameterSet& params, int steps, const char* integrator = "rk4") {
+    simcore::Simulation sim(params, integrator);
     std::vector<simcore::Diagnostics> rows{sim.diagnostics()};
     for (int i = 0; i < steps; ++i) {
         sim.step();
         rows.push_back(sim.diagnostics());
     }
     return rows;
+}
+std::vector<simcore::Diagnostics> runRows(SceneKind kind, int steps) { return runRows(simcore::ParameterSet(kind), steps); }
+
+// The spring families a body's topology has.
+std::array<bool, 3> familiesOf(const simcore::ParameterSet& params) {
+    const simcore::Topology t = simcore::buildBody(params).topology;
+    return {t.springs[0].size() > 0, t.springs[1].size() > 0, t.springs[2].size() > 0};
+}
+
+// Each bar's Diagnostics field, written out here independently of plot_series.cpp.
+double fieldOf(const QString& id, const simcore::Diagnostics& d) {
+    if (id == "kinetic") return d.kinetic;
+    if (id == "spring-structural") return d.spring[0];
+    if (id == "spring-radius") return d.spring[1];
+    if (id == "spring-shear") return d.spring[2];
+    if (id == "gravity") return d.gravity;
+    if (id == "gas") return d.gas;
+    if (id == "contact") return d.contact;
+    if (id == "mouse") return d.pointer;
+    if (id == "removed-damping") return d.removedDamping;
+    if (id == "removed-contact") return d.removedContact + d.removedCollisions;
+    if (id == "drift") return d.total() + d.removed() - d.workPointer - d.workEdits - d.initialEnergy;
+    return qQNaN();
+}
+
+// The pen colour of the energy plot's curve `name`.
+QColor curveColor(const PlotDock& plots, const QString& name) {
+    const int e = int(plots.plotIds().indexOf("energy"));
+    const int s = int(plots.seriesNames("energy").indexOf(name));
+    if (e < 0 || s < 0) return {};
+    return plots.plots()[std::size_t(e)]->graph(s)->pen().color();
+}
+
+Frame frameOf(const simcore::ParameterSet& params, const std::vector<std::pair<QString, simcore::Diagnostics>>& lanes) {
+    Frame f;
+    f.parameters = params;
+    for (const auto& [name, d] : lanes) {
+        LaneFrame lane;
+        lane.integrator = name;
+        lane.diagnostics = d;
+        f.lanes.push_back(lane);
+    }
+    return f;
 }
 }  // namespace
 
@@ -265,6 +310,185 @@ private slots:
         QVERIFY2(rk4 > euler, "RK4 is stable at larger steps than explicit Euler");
         if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
             dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/stability.png");
+    }
+
+    void energyBarsAreTheDiagnostics_data() {
+        QTest::addColumn<SceneKind>("kind");
+        QTest::addColumn<QString>("contact");
+        for (const simcore::SceneInfo& s : simcore::sceneTable())
+            QTest::newRow(std::string(s.name).c_str()) << s.kind << QString("force");
+        QTest::newRow("ring2d-projection") << SceneKind::Ring2d << QString("projection");
+    }
+    void energyBarsAreTheDiagnostics() {
+        // Each bar is its Diagnostics field, the parts sum to the total, the set of bars is the
+        // scene's, and every bar with a curve in the energy plot has that curve's colour.
+        QFETCH(SceneKind, kind);
+        QFETCH(QString, contact);
+        simcore::ParameterSet params(kind);
+        QVERIFY(!params.assign("contact=" + contact.toStdString()).has_value());
+        if (kind == SceneKind::Sphere3d) params.set("subdivisions", 1);
+        const std::array<bool, 3> families = familiesOf(params);
+        EnergyBarsDock bars;
+        bars.setScene(kind, families);
+        const QStringList ids = bars.barIds();
+        QCOMPARE(ids.contains("gas"), simcore::hasGas(kind));
+        QCOMPARE(ids.contains("spring-radius"), families[1]);
+        QCOMPARE(ids.contains("spring-shear"), families[2]);
+        for (const char* always : {"kinetic", "spring-structural", "gravity", "contact", "mouse", "removed-damping",
+                                   "removed-contact", "drift"})
+            QVERIFY2(ids.contains(always), always);
+        if (kind == SceneKind::Spring1d) QCOMPARE(ids.size(), 8);  // no gas, no radius or shear springs
+        if (kind == SceneKind::Sphere3d) QCOMPARE(ids.size(), 11);
+
+        // 0.9 s: the body has fallen onto the floor (contact, removed by contact), springs swing.
+        const auto rows = runRows(params, 300);
+        const simcore::Diagnostics& d = rows.back();
+        QVERIFY(d.kinetic > 0.0);
+        bars.showFrame(frameOf(params, {{"rk4", d}}));
+        QCOMPARE(bars.laneCount(), 1);
+        // The set of bars holds after the first frame (it rebuilt for contact = projection).
+        QCOMPARE(bars.barIds(), ids);
+        QCOMPARE(bars.barNames().contains("removed by projection"), contact == "projection");
+        double parts = 0.0, magnitude = 0.0;
+        for (int b = 0; b < ids.size(); ++b) {
+            QCOMPARE(bars.value(b), fieldOf(ids[b], d));
+            if (bars.bars()[std::size_t(b)].part) {
+                parts += bars.value(b);
+                magnitude += std::abs(bars.value(b));
+            }
+        }
+        // Summed in another order than Diagnostics::total(): equal to a few roundings of the terms.
+        QVERIFY2(std::abs(parts - d.total()) <= 1e-13 * magnitude,
+                 qPrintable(QString("parts %1, total %2").arg(parts, 0, 'g', 17).arg(d.total(), 0, 'g', 17)));
+
+        PlotDock plots;
+        plots.setScene(kind);
+        const QList<QPair<QString, QString>> sameColour = {{"kinetic", "kinetic"}, {"spring-structural", "spring"},
+                                                          {"gravity", "gravity"}, {"gas", "gas"},
+                                                          {"contact", "contact"}, {"removed-contact", "removed by contact"}};
+        for (const auto& [bar, curve] : sameColour) {
+            if (!ids.contains(bar)) continue;
+            const QColor c = curveColor(plots, curve);
+            QVERIFY2(c.isValid(), qPrintable(curve));
+            QCOMPARE(bars.color(int(ids.indexOf(bar))), c);
+        }
+        // The other spring families: the spring curve's hue, lighter.
+        for (const char* family : {"spring-radius", "spring-shear"}) {
+            if (!ids.contains(family)) continue;
+            const QColor c = bars.color(int(ids.indexOf(family)));
+            const QColor spring = curveColor(plots, "spring");
+            QVERIFY(std::abs(c.hslHue() - spring.hslHue()) <= 1 && std::abs(c.hslSaturation() - spring.hslSaturation()) <= 2);
+            QVERIFY(c.lightness() > spring.lightness());
+        }
+        // No two bars look alike.
+        for (int a = 0; a < ids.size(); ++a)
+            for (int b = a + 1; b < ids.size(); ++b) QVERIFY(bars.color(a) != bars.color(b));
+    }
+
+    void energyBarsGroupTheLanes() {
+        // Side by side: one bar per lane in every group, each lane its own diagnostics, the
+        // term's colour in every lane (lanes differ by fill pattern), named in the title.
+        simcore::ParameterSet params(SceneKind::Ring2d);
+        params.set("dt", 0.005);
+        std::vector<std::pair<QString, simcore::Diagnostics>> lanes;
+        for (const char* name : {"euler", "midpoint", "rk4"}) lanes.emplace_back(name, runRows(params, 100, name).back());
+        EnergyBarsDock bars;
+        bars.setScene(SceneKind::Ring2d, familiesOf(params));
+        bars.showFrame(frameOf(params, lanes));
+        QCOMPARE(bars.laneCount(), 3);
+        const QStringList ids = bars.barIds();
+        const int drift = int(ids.indexOf("drift"));
+        for (int lane = 0; lane < 3; ++lane)
+            for (int b = 0; b < ids.size(); ++b) {
+                QCOMPARE(bars.value(b, lane), fieldOf(ids[b], lanes[std::size_t(lane)].second));
+                QCOMPARE(bars.color(b, lane), bars.color(b, 0));
+            }
+        // Euler's drift is not RK4's: the grouped bars show a difference.
+        QVERIFY(bars.value(drift, 0) != bars.value(drift, 2));
+        bars.refreshText();
+        for (const char* name : {"euler", "midpoint", "rk4"}) QVERIFY2(bars.title().contains(name), qPrintable(bars.title()));
+        // Back to one lane.
+        bars.showFrame(frameOf(params, {lanes[2]}));
+        QCOMPARE(bars.laneCount(), 1);
+        QCOMPARE(bars.value(drift), fieldOf("drift", lanes[2].second));
+    }
+
+    void pvTrailLiesOnTheIsotherm() {
+        // The trail is (V, P) of every row; the gas is isothermal, P = c/V with c = nRT, so
+        // every point satisfies P V = c. The engine computes P = c / V from the same c and V:
+        // P V differs from c by at most two roundings (the division, the product here),
+        // |P V / c - 1| <= 2u = 2.2e-16; the tolerance 1e-14 leaves room and still fails for
+        // any other c (the two layers' c differ by a factor 2 here) or a V from another row.
+        simcore::ParameterSet params(SceneKind::Sphere3d);
+        params.set("subdivisions", 1);
+        params.set("pressure_inner", 30.0);
+        params.set("pressure_outer", 15.0);
+        PvDock pv;
+        pv.setScene(SceneKind::Sphere3d);
+        pv.setParameters(params);
+        QVERIFY(pv.hasGas());
+        QCOMPARE(pv.isothermConstant(0), 30.0);
+        QCOMPARE(pv.isothermConstant(1), 15.0);
+        const auto rows = runRows(params, 200);
+        pv.appendRows(rows, 0, 50);
+        pv.appendRows(rows, 50, int(rows.size()) - 50);
+        pv.replotNow();
+        for (int layer = 0; layer < 2; ++layer) {
+            QCOMPARE(pv.trailSize(layer), int(rows.size()));
+            double vMin = 1e300, vMax = -1e300;
+            for (int i = 0; i < int(rows.size()); ++i) {
+                const simcore::Diagnostics& d = rows[std::size_t(i)];
+                const QPointF p = pv.trailPoint(layer, i);
+                QCOMPARE(p.x(), d.volume[std::size_t(layer)]);
+                QCOMPARE(p.y(), d.pressure[std::size_t(layer)]);
+                const double c = pv.isothermConstant(layer);
+                QVERIFY2(std::abs(p.x() * p.y() / c - 1.0) <= 1e-14, qPrintable(QString("layer %1 row %2").arg(layer).arg(i)));
+                vMin = std::min(vMin, p.x());
+                vMax = std::max(vMax, p.x());
+            }
+            // The body breathes: the trail is a stretch of the isotherm, not a point.
+            QVERIFY(vMax > vMin * (1 + 1e-4));
+            // The reference drawn is P = c/V over (at least) the trail's volumes.
+            const std::vector<QPointF> iso = pv.isothermPoints(layer);
+            QVERIFY(iso.size() > 10);
+            QVERIFY(iso.front().x() <= vMin && iso.back().x() >= vMax);
+            for (const QPointF& q : iso) QVERIFY(std::abs(q.x() * q.y() / pv.isothermConstant(layer) - 1.0) <= 1e-14);
+        }
+        pv.clear();
+        QCOMPARE(pv.trailSize(0), 0);
+        // No gas, no diagram.
+        pv.setScene(SceneKind::Spring1d);
+        QVERIFY(!pv.hasGas());
+        const auto spring = runRows(SceneKind::Spring1d, 5);
+        pv.appendRows(spring, 0, int(spring.size()));
+        QCOMPARE(pv.trailSize(0), 0);
+    }
+
+    void energyDocksFollowTheRun() {
+        // In the window: the bars show the painted frame, the trail grows with the rows and is
+        // cleared by Reset and by a scene change; the docks open by name, unknown names refused.
+        MainWindow window(false);
+        QVERIFY(window.energyBarsDock()->isHidden() && window.pvDock()->isHidden());
+        QCOMPARE(MainWindow::dockNames(), (QStringList{"energy-bars", "pv"}));
+        window.show();
+        QVERIFY(window.openDock("energy-bars") && window.openDock("pv"));
+        QVERIFY(!window.openDock("timeline") && !window.openDock("stability-map"));
+        QVERIFY(window.energyBarsDock()->isVisible() && window.pvDock()->isVisible());
+        window.startScene(simcore::ParameterSet(SceneKind::Ring2d), {"rk4"});
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, testsupport::kHangGuardMs);
+        for (int i = 0; i < 3; ++i) window.controller()->step();
+        QTRY_COMPARE_WITH_TIMEOUT(window.pvDock()->trailSize(1), 4, testsupport::kHangGuardMs);
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller()->latest()->lanes[0].diagnostics.step, 3L, testsupport::kHangGuardMs);
+        const simcore::Diagnostics d = window.controller()->latest()->lanes[0].diagnostics;
+        QTRY_COMPARE_WITH_TIMEOUT(window.energyBarsDock()->value(0), d.kinetic, testsupport::kHangGuardMs);
+        QCOMPARE(window.pvDock()->trailPoint(1, 3), QPointF(d.volume[1], d.pressure[1]));
+        window.controller()->reset();
+        QTRY_COMPARE_WITH_TIMEOUT(window.pvDock()->trailSize(1), 1, testsupport::kHangGuardMs);
+        window.startScene(simcore::ParameterSet(SceneKind::Spring1d), {"rk4"});
+        QTRY_VERIFY_WITH_TIMEOUT(!window.pvDock()->hasGas(), testsupport::kHangGuardMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!window.energyBarsDock()->barIds().contains("gas") &&
+                                     window.energyBarsDock()->barIds().size() == 8, testsupport::kHangGuardMs);
+        QCOMPARE(window.pvDock()->trailSize(0), 0);
     }
 
     void plotExports() {

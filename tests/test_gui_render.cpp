@@ -245,6 +245,14 @@ private slots:
         QVERIFY(!image.isNull());
         QVERIFY(image.width() >= 800);
         QVERIFY(census(image).colours > 50);
+        // The energy docks open for a screenshot (issue 16).
+        QProcess docks;
+        const QString docksShot = dir.filePath("docks.png");
+        docks.start(ELASTIC_LAB_GUI, {"--scene", "ring2d", "--docks", "energy-bars,pv", "--screenshot", docksShot,
+                                      "--after", "0.3"});
+        QVERIFY(testsupport::waitForExit(docks));
+        QVERIFY2(docks.exitCode() == 0, docks.readAllStandardError().constData());
+        QVERIFY(!QImage(docksShot).isNull());
         // Bad input is refused with a message, before any window.
         QProcess bad;
         bad.start(ELASTIC_LAB_GUI, {"--scene", "ring2d", "--set", "ks=-3", "--screenshot", path});
@@ -282,6 +290,12 @@ private slots:
             {{"--integrator", "leapfrog"}, "unknown integrator 'leapfrog'"},
             {{"--set", "ks=-3"}, "--set ks"},
             {{"--show", "strain,strain"}, "listed twice"},
+            // Docks this build does not have are refused like any unknown name (issue 16).
+            {{"--docks", "timeline"}, "unknown dock 'timeline'; allowed: energy-bars, pv"},
+            {{"--docks", "energy-bars,stability-map"}, "unknown dock 'stability-map'; allowed: energy-bars, pv"},
+            {{"--docks", "pv,pv"}, "listed twice"},
+            {{"--docks", "pv,"}, "is empty"},
+            {{"--docks", "pv", "--docks", "energy-bars"}, "--docks is given 2 times"},
             {{"--measure-fps", "inf"}, "--measure-fps needs"},
             {{"--scene", scene, "--screenshot", dir.filePath("link.png")}, "is the same file as --scene"},
             {{"--screenshot", dir.filePath("shot.xyz")}, "cannot write .xyz"},

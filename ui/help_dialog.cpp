@@ -76,7 +76,10 @@ QString HelpDialog::html() {
         "the window offers one when a rebuild needs it.</li></ul>"
         "<p>The plots show the energy book: kinetic + spring + gravity + gas + contact is the total; "
         "what damping and contact take out is 'removed'. For an exact integrator, total + removed − "
-        "work by the mouse stays constant; the readout's <i>energy drift</i> is how far it is off.</p>");
+        "work by the mouse stays constant; the readout's <i>energy drift</i> is how far it is off.</p>"
+        "<p>View → <b>Energy bars</b> shows the same book as bars, one per term, in the plot's colours, "
+        "with the drift last. View → <b>P–V diagram</b> shows each gas layer's pressure against its "
+        "volume: the trail lies on the isotherm P = nRT / V, drawn dashed.</p>");
     h += QObject::tr("<h3>Integrators</h3><table border=1 cellspacing=0 cellpadding=4>"
                      "<tr><th>name</th><th>order</th><th>what it does</th><th>in class</th></tr>");
     for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {

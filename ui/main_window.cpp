@@ -14,14 +14,17 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include "compare_dialog.h"
+#include "energy_bars_dock.h"
 #include "export.h"
 #include "help_dialog.h"
 #include "parameter_dock.h"
 #include "plot_dock.h"
 #include "presets.h"
+#include "pv_dock.h"
 #include "run_dock.h"
 #include "scene_dock.h"
 #include "scenes.h"
@@ -313,10 +316,39 @@ void MainWindow::createDocks() {
     addDockWidget(Qt::LeftDockWidgetArea, m_parameterDock);
     tabifyDockWidget(m_sceneDock, m_parameterDock);
     addDockWidget(Qt::RightDockWidgetArea, m_plotDock);
+    // Energy at a glance: the bars beside the plots, the P–V diagram under the bars; closed
+    // until asked for (View menu, --docks), so the default window stays as it was.
+    m_energyBarsDock = new EnergyBarsDock(this);
+    m_pvDock = new PvDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, m_energyBarsDock);
+    splitDockWidget(m_plotDock, m_energyBarsDock, Qt::Horizontal);
+    splitDockWidget(m_energyBarsDock, m_pvDock, Qt::Vertical);
+    m_energyBarsDock->hide();
+    m_pvDock->hide();
     for (QDockWidget* d : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_parameterDock),
-                           static_cast<QDockWidget*>(m_runDock), static_cast<QDockWidget*>(m_plotDock)})
+                           static_cast<QDockWidget*>(m_runDock), static_cast<QDockWidget*>(m_plotDock),
+                           static_cast<QDockWidget*>(m_energyBarsDock), static_cast<QDockWidget*>(m_pvDock)})
         m_viewMenu->addAction(d->toggleViewAction());
     resizeDocks({m_runDock, m_plotDock}, {290, 420}, Qt::Horizontal);
+}
+
+QStringList MainWindow::dockNames() { return {QStringLiteral("energy-bars"), QStringLiteral("pv")}; }
+
+bool MainWindow::openDock(const QString& name) {
+    QDockWidget* dock = name == QLatin1String("energy-bars") ? static_cast<QDockWidget*>(m_energyBarsDock)
+                        : name == QLatin1String("pv")        ? static_cast<QDockWidget*>(m_pvDock)
+                                                             : nullptr;
+    if (!dock) return false;
+    dock->show();
+    dock->raise();
+    // The right column: plots, then bars and P–V sharing what is left beside the view.
+    // Sized once the window has laid the dock out (on the next event-loop pass).
+    QTimer::singleShot(0, this, [this, dock] {
+        resizeDocks({m_plotDock, dock}, {380, 350}, Qt::Horizontal);
+        if (!m_energyBarsDock->isHidden() && !m_pvDock->isHidden())
+            resizeDocks({m_energyBarsDock, m_pvDock}, {360, 500}, Qt::Vertical);
+    });
+    return true;
 }
 
 void MainWindow::connectController() {
@@ -324,9 +356,16 @@ void MainWindow::connectController() {
     connect(c, &SimulationController::frameArrived, this, &MainWindow::onFrame);
     connect(c, &SimulationController::sceneChanged, this,
             [this](const std::shared_ptr<const SceneData>& scene) { m_plotDock->setScene(scene->kind); });
+    connect(c, &SimulationController::sceneChanged, this, [this](const std::shared_ptr<const SceneData>& scene) {
+        m_energyBarsDock->setScene(*scene);
+        m_pvDock->setScene(scene->kind);
+    });
     connect(c, &SimulationController::historyReset, m_plotDock, &PlotDock::clear);
-    connect(c, &SimulationController::rowsAppended, this,
-            [this](int first, int count) { m_plotDock->appendRows(m_controller->history(), first, count); });
+    connect(c, &SimulationController::historyReset, m_pvDock, &PvDock::clear);
+    connect(c, &SimulationController::rowsAppended, this, [this](int first, int count) {
+        m_plotDock->appendRows(m_controller->history(), first, count);
+        m_pvDock->appendRows(m_controller->history(), first, count);
+    });
     connect(c, &SimulationController::parameterRejected, this,
             [this](const QString&, const QString& message) { status(message); });
     connect(c, &SimulationController::sceneRejected, this, [this](const QString& message) {
@@ -446,11 +485,13 @@ void MainWindow::onFrame(const FramePtr& frame) {
     }
     m_runDock->showFrame(frame);
     m_plotDock->setLive(frame->running);
+    m_energyBarsDock->showFrame(*frame);
     if (!m_paramsShown || !(m_shownParams == frame->parameters)) {
         m_shownParams = frame->parameters;
         m_paramsShown = true;
         m_parameterDock->showParameters(frame->parameters);
         m_sceneDock->showParameters(frame->parameters);
+        m_pvDock->setParameters(frame->parameters);
     }
     updateTitle(*frame);
     m_runPause->setText(frame->running ? tr("&Pause") : tr("&Run"));

@@ -27,6 +27,8 @@ class SceneDock;
 class ParameterDock;
 class RunDock;
 class PlotDock;
+class EnergyBarsDock;
+class PvDock;
 struct Preset;
 
 class MainWindow : public QMainWindow {
@@ -42,6 +44,12 @@ public:
     ParameterDock* parameterDock() const { return m_parameterDock; }
     RunDock* runDock() const { return m_runDock; }
     PlotDock* plotDock() const { return m_plotDock; }
+    EnergyBarsDock* energyBarsDock() const { return m_energyBarsDock; }
+    PvDock* pvDock() const { return m_pvDock; }
+    // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv".
+    static QStringList dockNames();
+    // Shows the named dock (hidden ones are closed by default); false for an unknown name.
+    bool openDock(const QString& name);
     const ViewOptions& viewOptions() const { return m_options; }
     void setViewOptions(const ViewOptions& options);
     QString failureText() const;
@@ -127,6 +135,8 @@ private:
     ParameterDock* m_parameterDock = nullptr;
     RunDock* m_runDock = nullptr;
     PlotDock* m_plotDock = nullptr;
+    EnergyBarsDock* m_energyBarsDock = nullptr;
+    PvDock* m_pvDock = nullptr;
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;

@@ -13,6 +13,23 @@
 
 namespace elui {
 
+void legendUnderAxes(QCustomPlot* plot, const QFont& base) {
+    plot->legend->setVisible(true);
+    plot->legend->setBrush(QColor(255, 255, 255, 190));
+    QFont legendFont = base;
+    legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
+    plot->legend->setFont(legendFont);
+    plot->axisRect()->insetLayout()->take(plot->legend);
+    plot->plotLayout()->addElement(plot->plotLayout()->rowCount(), 0, plot->legend);
+    plot->plotLayout()->setRowStretchFactor(plot->plotLayout()->rowCount() - 1, 0.001);
+    plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    // At most five entries a row: the energy legend's eight in one row would hold the Plots
+    // dock at ~650 px and leave the view no room when the energy docks open beside it.
+    plot->legend->setWrap(5);
+    plot->legend->setBorderPen(Qt::NoPen);
+    plot->legend->setMargins(QMargins(4, 0, 4, 0));
+}
+
 PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     setObjectName(QStringLiteral("PlotsDock"));
     auto* host = new QWidget(this);
@@ -72,18 +89,7 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         plot->plotLayout()->addElement(0, 0, title);
         plot->xAxis->setLabel(tr("t [s]"));
         plot->yAxis->setLabel(spec.yLabel);
-        plot->legend->setVisible(true);
-        plot->legend->setBrush(QColor(255, 255, 255, 190));
-        QFont legendFont = font();
-        legendFont.setPointSizeF(legendFont.pointSizeF() * 0.85);
-        plot->legend->setFont(legendFont);
-        // The legend in one row under the axes, not over the newest data.
-        plot->axisRect()->insetLayout()->take(plot->legend);
-        plot->plotLayout()->addElement(2, 0, plot->legend);
-        plot->plotLayout()->setRowStretchFactor(2, 0.001);
-        plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-        plot->legend->setBorderPen(Qt::NoPen);
-        plot->legend->setMargins(QMargins(4, 0, 4, 0));
+        legendUnderAxes(plot, font());
         for (const SeriesSpec& s : spec.series) {
             QCPGraph* g = plot->addGraph();
             g->setName(s.name);

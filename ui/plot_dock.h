@@ -19,6 +19,10 @@ class QVBoxLayout;
 
 namespace elui {
 
+// The legend in rows of at most five under the axes (the plot's last layout row), not over
+// the newest data; its font a little smaller than `base`. For the docks' QCustomPlots.
+void legendUnderAxes(QCustomPlot* plot, const QFont& base);
+
 class PlotDock : public QDockWidget {
     Q_OBJECT
 public:

@@ -11,7 +11,7 @@ std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
     std::vector<PlotSpec> plots;
     const bool gas = simcore::hasGas(kind);
     const bool flat = kind == simcore::SceneKind::Ring2d;
-    const QColor inner(40, 90, 220), outer(235, 120, 20);
+    const QColor inner = layerColor(0), outer = layerColor(1);
     if (gas) {
         plots.push_back({QStringLiteral("volume"), flat ? QObject::tr("Area per layer") : QObject::tr("Volume per layer"),
                          flat ? QStringLiteral("area [m²]") : QStringLiteral("volume [m³]"),
@@ -23,19 +23,75 @@ std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
                           {"pressure", QObject::tr("outer"), outer, [](const D& d) { return d.pressure[1]; }}}});
     }
     PlotSpec energy{QStringLiteral("energy"), QObject::tr("Energy"), QStringLiteral("energy [J]"), {}};
-    energy.series.push_back({"energy", QObject::tr("kinetic"), QColor(200, 30, 30), [](const D& d) { return d.kinetic; }});
-    energy.series.push_back({"energy", QObject::tr("spring"), QColor(30, 140, 60), [](const D& d) { return d.springTotal(); }});
-    energy.series.push_back({"energy", QObject::tr("gravity"), QColor(120, 80, 30), [](const D& d) { return d.gravity; }});
-    if (gas) energy.series.push_back({"energy", QObject::tr("gas"), QColor(40, 110, 210), [](const D& d) { return d.gas; }});
+    using T = EnergyTerm;
+    energy.series.push_back({"energy", QObject::tr("kinetic"), energyColor(T::Kinetic), [](const D& d) { return d.kinetic; }});
+    energy.series.push_back({"energy", QObject::tr("spring"), energyColor(T::Spring), [](const D& d) { return d.springTotal(); }});
+    energy.series.push_back({"energy", QObject::tr("gravity"), energyColor(T::Gravity), [](const D& d) { return d.gravity; }});
+    if (gas) energy.series.push_back({"energy", QObject::tr("gas"), energyColor(T::Gas), [](const D& d) { return d.gas; }});
     // Every scene has the box walls: the contact energy (walls + layer barrier, 0 with
     // contact = projection) and what contact dissipation and friction removed.
-    energy.series.push_back({"energy", QObject::tr("contact"), QColor(0, 150, 150), [](const D& d) { return d.contact; }});
-    energy.series.push_back({"energy", QObject::tr("total"), QColor(0, 0, 0), [](const D& d) { return d.total(); }});
-    energy.series.push_back({"energy", QObject::tr("removed"), QColor(150, 60, 170), [](const D& d) { return d.removed(); }});
-    energy.series.push_back({"energy", QObject::tr("removed by contact"), QColor(210, 90, 170),
+    energy.series.push_back({"energy", QObject::tr("contact"), energyColor(T::Contact), [](const D& d) { return d.contact; }});
+    energy.series.push_back({"energy", QObject::tr("total"), energyColor(T::Total), [](const D& d) { return d.total(); }});
+    energy.series.push_back({"energy", QObject::tr("removed"), energyColor(T::Removed), [](const D& d) { return d.removed(); }});
+    energy.series.push_back({"energy", QObject::tr("removed by contact"), energyColor(T::RemovedContact),
                              [](const D& d) { return d.removedContact + d.removedCollisions; }});
     plots.push_back(std::move(energy));
     return plots;
+}
+
+QColor layerColor(int layer) { return layer == 0 ? QColor(40, 90, 220) : QColor(235, 120, 20); }
+
+QColor energyColor(EnergyTerm term) {
+    switch (term) {
+        case EnergyTerm::Kinetic: return {200, 30, 30};
+        case EnergyTerm::Spring:
+        case EnergyTerm::SpringStructural: return {30, 140, 60};
+        // The same hue and saturation, lighter (HSL lightness 85 -> 125, 165 of 255).
+        case EnergyTerm::SpringRadius: return QColor::fromHsl(136, 165, 125);
+        case EnergyTerm::SpringShear: return QColor::fromHsl(136, 165, 165);
+        case EnergyTerm::Gravity: return {120, 80, 30};
+        case EnergyTerm::Gas: return {40, 110, 210};
+        case EnergyTerm::Contact: return {0, 150, 150};
+        case EnergyTerm::Mouse: return {230, 170, 0};
+        case EnergyTerm::Total: return {0, 0, 0};
+        case EnergyTerm::Removed: return {150, 60, 170};
+        case EnergyTerm::RemovedDamping: return {110, 110, 120};
+        case EnergyTerm::RemovedContact: return {210, 90, 170};
+        case EnergyTerm::Drift: return {225, 60, 60};
+    }
+    return {0, 0, 0};
+}
+
+std::vector<EnergyBar> energyBars(simcore::SceneKind kind, const std::array<bool, 3>& families, bool projection) {
+    using D = simcore::Diagnostics;
+    using T = EnergyTerm;
+    std::vector<EnergyBar> bars;
+    // The parts of the total, in the order of Diagnostics::total(): kinetic + springs + gravity
+    // + gas + mouse + contact.
+    bars.push_back({QStringLiteral("kinetic"), QObject::tr("kinetic"), T::Kinetic, true, [](const D& d) { return d.kinetic; }});
+    if (families[0])
+        bars.push_back({QStringLiteral("spring-structural"), QObject::tr("spring: structural"), T::SpringStructural, true,
+                        [](const D& d) { return d.spring[0]; }});
+    if (families[1])
+        bars.push_back({QStringLiteral("spring-radius"), QObject::tr("spring: radius"), T::SpringRadius, true,
+                        [](const D& d) { return d.spring[1]; }});
+    if (families[2])
+        bars.push_back({QStringLiteral("spring-shear"), QObject::tr("spring: shear"), T::SpringShear, true,
+                        [](const D& d) { return d.spring[2]; }});
+    bars.push_back({QStringLiteral("gravity"), QObject::tr("gravity"), T::Gravity, true, [](const D& d) { return d.gravity; }});
+    if (simcore::hasGas(kind))
+        bars.push_back({QStringLiteral("gas"), QObject::tr("gas"), T::Gas, true, [](const D& d) { return d.gas; }});
+    bars.push_back({QStringLiteral("contact"), QObject::tr("contact"), T::Contact, true, [](const D& d) { return d.contact; }});
+    bars.push_back({QStringLiteral("mouse"), QObject::tr("mouse spring"), T::Mouse, true, [](const D& d) { return d.pointer; }});
+    // What left the body, and the balance's error.
+    bars.push_back({QStringLiteral("removed-damping"), QObject::tr("removed by damping"), T::RemovedDamping, false,
+                    [](const D& d) { return d.removedDamping; }});
+    bars.push_back({QStringLiteral("removed-contact"),
+                    projection ? QObject::tr("removed by projection") : QObject::tr("removed by contact"),
+                    T::RemovedContact, false, [](const D& d) { return d.removedContact + d.removedCollisions; }});
+    bars.push_back({QStringLiteral("drift"), QObject::tr("drift (balance error)"), T::Drift, false,
+                    [](const D& d) { return d.energyDrift(); }});
+    return bars;
 }
 
 }  // namespace elui

@@ -1,7 +1,7 @@
 // elastic-lab: the GUI.
 //
 //   elastic-lab [--scene S|FILE.json] [--set key=value]... [--integrator NAME] [--compare A,B,C]
-//               [--preset ID] [--screenshot FILE --after SECONDS]
+//               [--preset ID] [--docks LIST] [--screenshot FILE --after SECONDS]
 //
 // --screenshot runs (as fast as possible) to the given simulated time, renders the main
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
@@ -102,11 +102,15 @@ int main(int argc, char** argv) {
                                         QStringLiteral("Display switches, comma separated: strain, forces, normals, noparticles, "
                                                        "nofaces, nostructural, noradius, noshear, nobox."),
                                         QStringLiteral("LIST"));
+    const QCommandLineOption docksOpt(QStringLiteral("docks"),
+                                      QStringLiteral("Open these docks, comma separated: %1.")
+                                          .arg(elui::MainWindow::dockNames().join(QStringLiteral(", "))),
+                                      QStringLiteral("LIST"));
     const QCommandLineOption fpsOpt(QStringLiteral("measure-fps"),
                                     QStringLiteral("Run in real time for SECONDS of wall time, print frame rate, "
                                                    "step rate and GUI latency, exit."),
                                     QStringLiteral("SECONDS"));
-    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, shotOpt, afterOpt, optionsOpt, fpsOpt});
+    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, shotOpt, afterOpt, optionsOpt, docksOpt, fpsOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -116,7 +120,7 @@ int main(int argc, char** argv) {
                         .arg(quoted(parser.positionalArguments().front())));
     // A value-taking option given twice would silently lose one of the values.
     for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &shotOpt, &afterOpt,
-                                           &optionsOpt, &fpsOpt})
+                                           &optionsOpt, &docksOpt, &fpsOpt})
         if (parser.values(*once).size() > 1)
             return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
     if (parser.isSet(afterOpt) && !parser.isSet(shotOpt))
@@ -165,6 +169,19 @@ int main(int argc, char** argv) {
         return fail(QStringLiteral("--compare takes one to three integrators, got %1").arg(integrators.size()));
     for (const QString& name : integrators)
         if (auto error = simcore::unknownIntegrator(name.toStdString())) return fail(QString::fromStdString(*error));
+    // --docks: the CLI's list rules, and only docks this build has (refused like any unknown name).
+    QStringList docks;
+    if (parser.isSet(docksOpt)) {
+        const simcore::NameList list = simcore::parseNameList("docks", parser.value(docksOpt).toStdString());
+        if (!list.error.empty()) return fail(QString::fromStdString(list.error));
+        const QStringList known = elui::MainWindow::dockNames();
+        for (const std::string& item : list.items) {
+            const QString name = QString::fromStdString(item);
+            if (!known.contains(name))
+                return fail(QStringLiteral("unknown dock %1; allowed: %2").arg(quoted(name), known.join(QStringLiteral(", "))));
+            docks << name;
+        }
+    }
     bool afterOk = false;
     const double after = parser.value(afterOpt).toDouble(&afterOk);
     // Finite: --after inf would never be reached and nan compares false with everything.
@@ -228,6 +245,8 @@ int main(int argc, char** argv) {
         window.startScene(params, integrators);
     }
     window.show();
+    // After show(): the docks take their share of a laid-out window.
+    for (const QString& dock : docks) window.openDock(dock);
 
     if (parser.isSet(fpsOpt)) {
         // Frames painted per wall second while the simulation runs in real time, and how late
