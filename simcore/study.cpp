@@ -207,26 +207,31 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
     // looser one: rk45 at 1e-12 (1e-10), or the stiff-capable cvode-bdf at 1e-11 (1e-9; BDF's
     // cost grows gently with the tolerance and is not limited by the stiff modes' stability,
     // as rk4's and rk45's are).
-    if (spec.reference == "rk45" || spec.reference == "cvode-bdf") {
-        const bool bdf = spec.reference == "cvode-bdf";
+    auto adaptiveReference = [&](const std::string& method, const std::string& why) {
+        const bool bdf = method == "cvode-bdf";
         const double tight = bdf ? 1e-11 : 1e-12, loose = bdf ? 1e-9 : 1e-10;
-        options.atol = options.rtol = tight;
-        options.minStep = 1e-14;
-        Trajectory fine = runTrajectory(spec.params, spec.reference, smallestFixedStep(spec), options, ref.times, cancel);
-        IntegratorOptions coarse = options;
+        IntegratorOptions fineOptions = options;
+        fineOptions.atol = fineOptions.rtol = tight;
+        fineOptions.minStep = 1e-14;
+        Trajectory fine = runTrajectory(spec.params, method, smallestFixedStep(spec), fineOptions, ref.times, cancel);
+        IntegratorOptions coarse = fineOptions;
         coarse.atol = coarse.rtol = loose;
-        Trajectory check = runTrajectory(spec.params, spec.reference, smallestFixedStep(spec), coarse, ref.times, cancel);
-        if (fine.failed) throw std::runtime_error("the " + spec.reference + " reference failed: " + fine.failure);
-        ref.description = spec.reference + " at atol = rtol = " + formatShort(tight) + " (" + std::to_string(fine.steps) +
-                          " steps)";
+        Trajectory check = runTrajectory(spec.params, method, smallestFixedStep(spec), coarse, ref.times, cancel);
+        if (fine.failed) throw std::runtime_error("the " + method + " reference failed: " + fine.failure + why);
+        ref.description = method + " at atol = rtol = " + formatShort(tight) + " (" + std::to_string(fine.steps) + " steps)" + why;
         ref.positions = fine.positions;
         ref.estimatedError = check.failed || check.positions.size() != fine.positions.size()
                                  ? std::nan("")
                                  : rmsDistance(check.positions.back(), fine.positions.back());
         return ref;
-    }
+    };
+    if (spec.reference == "rk45" || spec.reference == "cvode-bdf") return adaptiveReference(spec.reference, "");
     const double h = smallestFixedStep(spec) / 16.0;
     Trajectory fine = runTrajectory(spec.params, "rk4", h, options, ref.times, cancel);
+    if (fine.failed && spec.reference == "auto" && !fine.cancelled)
+        // Stiff: rk4 16x below the smallest studied step is still unstable. The most accurate
+        // reference left is the stiff solver at a tight tolerance.
+        return adaptiveReference("cvode-bdf", ", because rk4 at dt = " + formatShort(h) + " s failed (" + fine.failure + ")");
     if (fine.failed)
         throw std::runtime_error("the rk4 reference at dt = " + formatShort(h) + " s failed: " + fine.failure);
     Trajectory check = runTrajectory(spec.params, "rk4", 2.0 * h, options, ref.times, cancel);

@@ -8,7 +8,8 @@
 //
 //   reference     closed form (spring1d, no perturbation, no wall reached), or RK4 at a step
 //                 16x below the smallest studied one, or rk45 or cvode-bdf at a tight tolerance; its own
-//                 error is estimated against a second, coarser reference run.
+//                 error is estimated against a second, coarser reference run. `auto`: the closed
+//                 form where it applies, else RK4, else (RK4 unstable there: stiff) cvode-bdf.
 //   error_final   RMS over particles of |x - x_ref| at T                              [m]
 //   error_max     largest such RMS over a fixed output grid (G samples, every dt divides it)
 //   error_energy  largest |energy balance drift| over all steps                        [J]

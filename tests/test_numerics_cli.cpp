@@ -97,6 +97,23 @@ private slots:
         QVERIFY2(lines[4].startsWith("rk4,") && lines[4].split(',')[1].toDouble() == 0.0005 && lines[4].endsWith(",ok"),
                  qPrintable(lines[4]));
     }
+    void autoReferenceTurnsToTheStiffSolver() {
+        // Issue 13: on the stiff ring rk4 16x below the smallest step (1.25 ms) is unstable; `auto`
+        // then takes cvode-bdf at a tight tolerance (it used to end the study with exit 3),
+        // says why, and its estimated error is far below the studied errors.
+        const Result r = cli({"study", "--scene", "ring2d", "--set", "ks=1e6", "--set", "rks=1e6", "--set", "gravity=0",
+                              "--set", "perturb=0.05", "--integrators", "implicit-euler", "--dts", "0.04,0.02",
+                              "--duration", "0.08", "--samples", "2"});
+        QCOMPARE(r.code, 0);
+        QVERIFY2(r.out.contains("reference    cvode-bdf at atol = rtol = 1e-11"), qPrintable(r.out));
+        QVERIFY2(r.out.contains("because rk4 at dt = 0.00125 s failed"), qPrintable(r.out));
+        // An explicit --reference rk4 still fails as before: only auto falls back.
+        QCOMPARE(cli({"study", "--scene", "ring2d", "--set", "ks=1e6", "--set", "rks=1e6", "--set", "gravity=0",
+                      "--set", "perturb=0.05", "--integrators", "implicit-euler", "--dts", "0.04,0.02", "--duration",
+                      "0.08", "--samples", "2", "--reference", "rk4"})
+                     .code,
+                 3);
+    }
     void badStudyInputIsRefused() {
         QCOMPARE(cli({"study", "--scene", "spring1d", "--integrators", "euler", "--dts", "0.3", "--duration", "1"}).code, 2);
         QCOMPARE(cli({"study", "--scene", "spring1d", "--integrators", "leapfrog", "--dts", "0.01"}).code, 2);
