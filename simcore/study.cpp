@@ -416,13 +416,7 @@ Range decades(const std::vector<double>& values) {
     return r;
 }
 
-const char* colourFor(const std::string& name) {
-    static const std::map<std::string, const char*> colours = {
-        {"euler", "#d62728"}, {"midpoint", "#ff7f0e"}, {"rk4", "#1f77b4"}, {"symplectic-euler", "#9467bd"},
-        {"verlet", "#8c564b"}, {"rk45", "#2ca02c"}, {"implicit-euler", "#e377c2"}};
-    auto it = colours.find(name);
-    return it == colours.end() ? "#7f7f7f" : it->second;
-}
+const char* colourFor(const std::string& name) { return studyColour(name); }
 
 }  // namespace
 
@@ -534,6 +528,15 @@ std::string studySvg(const std::vector<StudyRow>& rows, const std::string& title
         panels.push_back(std::move(panel));
     }
     return logLogSvg(panels, title);
+}
+
+const char* studyColour(std::string_view integrator) {
+    static const std::map<std::string_view, const char*> colours = {
+        {"euler", "#d62728"},     {"midpoint", "#ff7f0e"},  {"rk4", "#1f77b4"},       {"symplectic-euler", "#9467bd"},
+        {"verlet", "#8c564b"},    {"rk45", "#2ca02c"},      {"implicit-euler", "#e377c2"}, {"cvode-bdf", "#17becf"},
+        {"cvode-adams", "#bcbd22"}, {"xpbd", "#393b79"}};
+    auto it = colours.find(integrator);
+    return it == colours.end() ? "#7f7f7f" : it->second;
 }
 
 }  // namespace simcore

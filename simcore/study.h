@@ -24,6 +24,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
@@ -128,6 +129,9 @@ std::optional<std::vector<StudyRow>> parseStudyCsv(const std::string& text, std:
 // Three log-log panels: error_max against wall time (work-precision), against force
 // evaluations, and against dt. Failed rows are not drawn.
 std::string studySvg(const std::vector<StudyRow>& rows, const std::string& title);
+// The colour of an integrator's curve in the study diagrams: one of its own for every
+// integrator in the table (grey for an unknown name).
+const char* studyColour(std::string_view integrator);
 
 // --- shared with the other studies (refinement.h) ------------------------------------------
 

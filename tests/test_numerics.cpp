@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "analytic.h"
 #include "jacobians.h"
@@ -129,6 +130,16 @@ private slots:
     }
 
     // --- stability facts (MODEL.md, issue 3 notes) ---
+    void everyIntegratorHasItsOwnStudyColour() {
+        // The study diagrams tell the curves apart by colour: a new integrator needs its own
+        // (cvode-bdf, cvode-adams and xpbd were all drawn grey when they arrived).
+        std::set<std::string> colours;
+        for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {
+            const std::string colour = simcore::studyColour(info.name);
+            QVERIFY2(colour != "#7f7f7f", std::string(info.name).c_str());
+            QVERIFY2(colours.insert(colour).second, std::string(info.name).c_str());
+        }
+    }
     void stabilityScanCancelKeepsWholeRows() {
         // Cancel while the second integrator is being scanned: the first row is kept whole, the
         // second (cut short, its limits unknown) is not reported, the third never starts.
