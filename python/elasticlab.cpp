@@ -220,6 +220,8 @@ public:
         Scene s = sceneFrom(scene, parameters);
         if (!integrator.is_none()) s.integrator = integrator.cast<std::string>();
         checkIntegrator(s.integrator);
+        // The chosen integrator's memory too (the CVODE methods hold more), as the CLI checks it.
+        if (auto error = simcore::validateShape(s.params, s.integrator)) throw py::value_error(*error);
         m_scene = s.name;
         m_sim = std::make_unique<simcore::Simulation>(s.params, s.integrator);
         m_sim->setIntegratorOptions(integratorOptions(options));

@@ -345,7 +345,7 @@ double memoryBoundBytes(const BodySize& size, std::string_view integrator) {
     return memoryBoundBytes(size) + (cvode ? kCvodePerParticle * double(size.particles) : 0.0);
 }
 
-std::optional<std::string> validateShape(const ParameterSet& params) {
+std::optional<std::string> validateShape(const ParameterSet& params, std::string_view integrator) {
     if (params.kind() != SceneKind::Spring1d &&
         !(params.get("radius_inner") < params.get("radius_outer"))) {
         std::ostringstream os;
@@ -354,7 +354,7 @@ std::optional<std::string> validateShape(const ParameterSet& params) {
         return os.str();
     }
     const BodySize size = bodySize(params);
-    const double bytes = memoryBoundBytes(size);
+    const double bytes = memoryBoundBytes(size, integrator);
     if (bytes <= kMemoryLimitBytes) return std::nullopt;
     std::string resolution;
     switch (params.kind()) {
@@ -374,7 +374,8 @@ std::optional<std::string> validateShape(const ParameterSet& params) {
        << size.springs << " springs, needing up to " << bytes / (1024.0 * 1024.0 * 1024.0)
        << " GiB; the limit is " << kMemoryLimitBytes / (1024.0 * 1024.0 * 1024.0)
        << " GiB per simulation (about " << static_cast<long long>(kMemoryLimitBytes / perParticle)
-       << " particles for this scene)";
+       << " particles for this scene" << (integrator.starts_with("cvode-") ? " with " + std::string(integrator) : std::string())
+       << ")";
     return os.str();
 }
 

@@ -143,8 +143,9 @@ double memoryBoundBytes(const BodySize& size);
 double memoryBoundBytes(const BodySize& size, std::string_view integrator);
 
 // Checks what no single parameter can: radius_inner below radius_outer, and a resolution whose
-// memory bound stays within kMemoryLimitBytes. The message says what is allowed.
-std::optional<std::string> validateShape(const ParameterSet& params);
+// memory bound stays within kMemoryLimitBytes (with `integrator`'s own needs when one is named:
+// the CVODE methods hold more). The message says what is allowed.
+std::optional<std::string> validateShape(const ParameterSet& params, std::string_view integrator = {});
 
 // The body a scene describes, from its parameters; throws std::invalid_argument with
 // validateShape's message for a shape it refuses.

@@ -497,6 +497,15 @@ private slots:
         QVERIFY(f.open(QIODevice::ReadOnly));
         QCOMPARE(f.readAll(), QByteArray("precious\n"));
     }
+    void memoryLimitCountsTheIntegrator() {
+        // A body within the 1 GiB bound for the textbook methods is refused for CVODE, whose ~40
+        // extra state vectors do not fit (issue 13): refused before the body is built.
+        const QStringList shape{"--scene", "sphere3d-latlong", "--set", "slices=700", "--set", "stacks=350"};
+        QCOMPARE(cli(QStringList{"params"} + shape).code, 0);
+        const Result r = cli(QStringList{"run"} + shape + QStringList{"--integrator", "cvode-bdf", "--quiet"});
+        QCOMPARE(r.code, 2);
+        QVERIFY2(r.err.contains("limit is 1 GiB") && r.err.contains("with cvode-bdf"), qPrintable(r.err));
+    }
     void existingFileSurvivesAFailedRunStart() {
         const QString csv = path("keep.csv");
         QFile f(csv);

@@ -97,7 +97,7 @@ SceneSetup sceneSetup(const SceneArgs& args) {
         if (auto error = setup.params.setFromText("dt", *args.dt)) throw UsageError("--" + *error);
     setup.integrator = args.integrator.value_or(fileIntegrator.empty() ? "rk4" : fileIntegrator);
     if (auto error = simcore::unknownIntegrator(setup.integrator)) throw UsageError(*error);
-    if (auto error = simcore::validateShape(setup.params)) throw UsageError(*error);
+    if (auto error = simcore::validateShape(setup.params, setup.integrator)) throw UsageError(*error);
     return setup;
 }
 

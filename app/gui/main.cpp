@@ -167,8 +167,11 @@ int main(int argc, char** argv) {
     }
     if (integrators.size() > 3)
         return fail(QStringLiteral("--compare takes one to three integrators, got %1").arg(integrators.size()));
-    for (const QString& name : integrators)
+    for (const QString& name : integrators) {
         if (auto error = simcore::unknownIntegrator(name.toStdString())) return fail(QString::fromStdString(*error));
+        // Each lane's memory with its integrator (the CVODE methods hold more).
+        if (auto error = simcore::validateShape(params, name.toStdString())) return fail(QString::fromStdString(*error));
+    }
     // --docks: the CLI's list rules, and only docks this build has (refused like any unknown name).
     QStringList docks;
     if (parser.isSet(docksOpt)) {
