@@ -16,6 +16,7 @@
 #include "test_support.h"
 
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -137,6 +138,30 @@ private slots:
         window.startScene(simcore::ParameterSet(SceneKind::Sphere3d), {"rk4"});
         QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->plotIds(), (QStringList{"volume", "pressure", "energy"}), testsupport::kHangGuardMs);
         QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->pointCount("volume", 0), 1, testsupport::kHangGuardMs);
+    }
+
+    void readoutShowsTheSolverCounters() {
+        // Issue 13: with a CVODE method the run dock's readout carries CVODE's own counters,
+        // the frame's numbers; a textbook method shows none of those rows.
+        MainWindow window(false);
+        window.startScene(simcore::ParameterSet(SceneKind::Ring2d), {"cvode-bdf"});
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, testsupport::kHangGuardMs);
+        window.controller()->run();
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest()->lanes[0].diagnostics.time > 0.05, testsupport::kHangGuardMs);
+        window.controller()->pause();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.controller()->latest()->running, testsupport::kHangGuardMs);
+        const FramePtr paused = window.controller()->latest();  // the last frame: nothing runs after it
+        const simcore::Diagnostics& d = paused->lanes[0].diagnostics;
+        QVERIFY(d.hasSolverCounters && d.solver.steps > 0 && d.solver.rhsEvaluations >= d.solver.steps);
+        const QString counters = QString("%1 / %2").arg(d.solver.steps).arg(d.solver.rhsEvaluations);
+        QTRY_VERIFY_WITH_TIMEOUT(window.runDock()->readout()->text().contains(counters), testsupport::kHangGuardMs);
+        QVERIFY(window.runDock()->readout()->text().contains("CVODE steps / RHS"));
+        QVERIFY(window.runDock()->readout()->text().contains(QString::number(d.forceEvaluations)));
+
+        MainWindow textbook(false);
+        textbook.startScene(simcore::ParameterSet(SceneKind::Ring2d), {"rk4"});
+        QTRY_VERIFY_WITH_TIMEOUT(textbook.runDock()->readout()->text().contains("simulated time"), testsupport::kHangGuardMs);
+        QVERIFY(!textbook.runDock()->readout()->text().contains("CVODE"));
     }
 
     void sceneDockRebuildsKeepingEdits() {
