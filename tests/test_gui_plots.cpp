@@ -492,6 +492,13 @@ private slots:
     void energyDocksFollowTheRun() {
         // In the window: the bars show the painted frame, the trail grows with the rows and is
         // cleared by Reset and by a scene change; the docks open by name, unknown names refused.
+#if defined(__SANITIZE_THREAD__)
+        // A shown window with both energy docks makes Qt Gui convert its large backing image in
+        // segments on Qt's own pool threads, ordered by Qt's futex-based synchronisation that
+        // ThreadSanitizer cannot see in Debian's uninstrumented Qt: six false reports, every frame
+        // in libQt6Gui/libQt6Core (docs/reliability.md). Checked in the Release and ASan suites.
+        QSKIP("Qt's threaded image conversion is invisible to ThreadSanitizer");
+#endif
         MainWindow window(false);
         QVERIFY(window.energyBarsDock()->isHidden() && window.pvDock()->isHidden());
         QCOMPARE(MainWindow::dockNames(), (QStringList{"energy-bars", "pv"}));
