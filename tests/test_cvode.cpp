@@ -6,6 +6,7 @@
 
 #include "analytic.h"
 #include "cli_process.h"
+#include "sim_test_support.h"
 #include "simulation.h"
 
 using namespace simcore;
@@ -15,14 +16,8 @@ namespace {
 // spring1d hanging from a fixed top, no walls in reach: a damped linear oscillator with a
 // closed form (analytic.h), as in test_integrators.
 ParameterSet oscillator() {
-    ParameterSet p(SceneKind::Spring1d);
-    p.set("ks", 100.0);
-    p.set("kd", 1.0);
-    p.set("mass", 1.0);
-    p.set("length", 1.0);
-    p.set("initial_length", 1.5);
-    p.set("box", 1000.0);
-    return p;
+    return testsupport::params(SceneKind::Spring1d, {{"ks", 100.0}, {"kd", 1.0}, {"mass", 1.0}, {"length", 1.0},
+                                                     {"initial_length", 1.5}, {"box", 1000.0}});
 }
 
 // Position error of the moving particle at T = 2 s against the closed form.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "analytic.h"
+#include "sim_test_support.h"
 #include "simulation.h"
 
 using namespace simcore;
@@ -15,25 +16,14 @@ constexpr double kSixtyHz = 1.0 / 60.0;
 
 // The stiff ring: ring2d --set ks=1e6 --set rks=1e6 --set gravity=0 --set perturb=0.05.
 ParameterSet stiffRing() {
-    ParameterSet p(SceneKind::Ring2d);
-    p.set("ks", 1e6);
-    p.set("rks", 1e6);
-    p.set("gravity", 0.0);
-    p.set("perturb", 0.05);
-    p.set("dt", kSixtyHz);
-    return p;
+    return testsupport::params(SceneKind::Ring2d,
+                               {{"ks", 1e6}, {"rks", 1e6}, {"gravity", 0.0}, {"perturb", 0.05}, {"dt", kSixtyHz}});
 }
 
 // The thesis ring, weightless, perturbed and undamped: only the integrator changes its energy.
 ParameterSet undampedRing(double dt, int substeps) {
-    ParameterSet p(SceneKind::Ring2d);
-    p.set("gravity", 0.0);
-    p.set("perturb", 0.1);
-    p.set("kd", 0.0);
-    p.set("rkd", 0.0);
-    p.set("dt", dt);
-    p.set("substeps", substeps);
-    return p;
+    return testsupport::params(SceneKind::Ring2d, {{"gravity", 0.0}, {"perturb", 0.1}, {"kd", 0.0}, {"rkd", 0.0},
+                                                   {"dt", dt}, {"substeps", double(substeps)}});
 }
 
 struct EnergyRun {
@@ -126,15 +116,9 @@ private slots:
         // spring1d against its closed form at a fixed DT: the error halves when the substeps
         // double (first order in hs = DT / substeps).
         auto error = [](int substeps) {
-            ParameterSet p(SceneKind::Spring1d);
-            p.set("ks", 100.0);
-            p.set("kd", 1.0);
-            p.set("mass", 1.0);
-            p.set("length", 1.0);
-            p.set("initial_length", 1.5);
-            p.set("box", 1000.0);
-            p.set("dt", 0.01);
-            p.set("substeps", substeps);
+            const ParameterSet p = testsupport::params(
+                SceneKind::Spring1d, {{"ks", 100.0}, {"kd", 1.0}, {"mass", 1.0}, {"length", 1.0}, {"initial_length", 1.5},
+                                      {"box", 1000.0}, {"dt", 0.01}, {"substeps", double(substeps)}});
             Simulation sim(p, "xpbd");
             if (!sim.advanceTo(2.0)) return std::nan("");
             Eigen::Matrix3Xd x, v;
