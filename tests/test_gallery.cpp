@@ -1,4 +1,4 @@
-// The stiff and extreme gallery: every preset has its expected outcome (simcore/gallery.h).
+// The stiff and extreme gallery: every preset has its expected outcome (simlab/gallery.h).
 // CTest runs each case as its own test (gallery_<name>, see tests/CMakeLists.txt) through
 // Qt Test's function:tag selection; run without arguments this executable runs them all.
 #include <QtTest>

@@ -1,4 +1,4 @@
-// The refinement study (simcore/refinement.h): the same physical body at several resolutions
+// The refinement study (simlab/refinement.h): the same physical body at several resolutions
 // against the finest. A weightless ring inflating from its rest shape to its equilibrium is a
 // smooth motion every level resolves: its volume error shrinks at second order in the spacing,
 // and a symmetric body's centre of mass does not move at all (round-off, never fitted).

@@ -1,4 +1,4 @@
-// `gallery`: the stiff and extreme presets (simcore/gallery.h) and their expected outcomes.
+// `gallery`: the stiff and extreme presets (simlab/gallery.h) and their expected outcomes.
 #include <cstdio>
 
 #include "cli.h"

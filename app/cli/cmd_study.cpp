@@ -1,5 +1,5 @@
-// `study`: the work-precision study (simcore/study.h) from the command line, and with
-// --refine the refinement study (simcore/refinement.h).
+// `study`: the work-precision study (simlab/study.h) from the command line, and with
+// --refine the refinement study (simlab/refinement.h).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A work-precision diagram of the 1D spring from Python (docs/python.md).
 
-The study is the CLI's `study` (simcore/study.h): every integrator at several steps (rk45 at
+The study is the CLI's `study` (simlab/study.h): every integrator at several steps (rk45 at
 several tolerances) against the closed-form solution, its error against the force evaluations
 it cost. The same rows could be written as the CLI's CSV and SVG (csv=, plot=); here matplotlib
 draws them.
