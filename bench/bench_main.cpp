@@ -35,8 +35,8 @@ void stepScene(benchmark::State& state, ParameterSet params, const char* integra
     // As bench/run-benchmarks.sh: gravity off and the start perturbed, so that the body wobbles
     // in place for as many steps as the benchmark takes (with 1 kg per particle, fine spheres
     // are heavy and soft and collapse on the floor in long runs); every term is still evaluated.
-    params.set("gravity", 0.0);
-    params.set("perturb", 0.01);
+    params.set(simcore::Param::Gravity, 0.0);
+    params.set(simcore::Param::Perturb, 0.01);
     Simulation sim(params, integrator);
     sim.setThreads(threads);
     const std::uint64_t before = sim.diagnostics().forceEvaluations;
@@ -51,14 +51,14 @@ void stepScene(benchmark::State& state, ParameterSet params, const char* integra
 
 void BM_Sphere3d(benchmark::State& state) {
     ParameterSet p(SceneKind::Sphere3d);
-    p.set("subdivisions", static_cast<double>(state.range(0)));
+    p.set(simcore::Param::Subdivisions, static_cast<double>(state.range(0)));
     stepScene(state, p, "rk4", static_cast<int>(state.range(1)));
 }
 BENCHMARK(BM_Sphere3d)->ArgsProduct({{1, 2, 3, 4, 5, 6, 7}, {1, 2}})->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 void BM_Ring2d(benchmark::State& state) {
     ParameterSet p(SceneKind::Ring2d);
-    p.set("particles", static_cast<double>(state.range(0)));
+    p.set(simcore::Param::Particles, static_cast<double>(state.range(0)));
     // Large rings need a finer step: their edges are short and stiff in proportion.
     stepScene(state, p, "rk4", 2);
 }
@@ -66,7 +66,7 @@ BENCHMARK(BM_Ring2d)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000)->Uni
 
 void BM_Integrators(benchmark::State& state, const char* integrator) {
     ParameterSet p(SceneKind::Sphere3d);
-    p.set("subdivisions", 4);
+    p.set(simcore::Param::Subdivisions, 4);
     stepScene(state, p, integrator, 2);
 }
 BENCHMARK_CAPTURE(BM_Integrators, euler, "euler")->Unit(benchmark::kMicrosecond)->UseRealTime();
@@ -86,7 +86,7 @@ void BM_Forces(benchmark::State& state) {
     }
     kernels::useKernels(set);
     ParameterSet p(SceneKind::Sphere3d);
-    p.set("subdivisions", static_cast<double>(state.range(0)));
+    p.set(simcore::Param::Subdivisions, static_cast<double>(state.range(0)));
     Body body = buildBody(p);
     ForceModel model(&body.topology, &body.mass, sceneTerms(SceneKind::Sphere3d));
     model.params.ks = {800, 700, 700};
@@ -113,7 +113,7 @@ BENCHMARK(BM_Forces)->ArgsProduct({{4, 6}, {0, 1, 2, 3}})->Unit(benchmark::kMicr
 // The GUI path: copying the positions out for a snapshot, against one step.
 void BM_SnapshotCopy(benchmark::State& state) {
     ParameterSet p(SceneKind::Sphere3d);
-    p.set("subdivisions", static_cast<double>(state.range(0)));
+    p.set(simcore::Param::Subdivisions, static_cast<double>(state.range(0)));
     Simulation sim(p, "rk4");
     std::vector<float> snapshot(static_cast<std::size_t>(3 * sim.particleCount()));
     for (auto _ : state) {

@@ -326,7 +326,7 @@ public:
         const simcore::ParameterSet& p = sim().parameters();
         py::dict out;
         for (const simcore::ParamSpec* spec : simcore::parametersFor(p.kind())) {
-            const double v = p.get(spec->key);
+            const double v = p.get(spec->id);
             const std::string name = spec->choiceName(v);
             if (name.empty()) out[py::str(std::string(spec->key))] = v;
             else out[py::str(std::string(spec->key))] = name;
@@ -491,7 +491,7 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
 
     // Linearised at the perturbed start the measured runs begin from (as the CLI's stability).
     simcore::ParameterSet linearised = spec.params;
-    if (!linearised.isExplicit("perturb")) linearised.set("perturb", spec.perturb);
+    if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
     struct Outcome {
         simcore::LinearModes modes;
         std::vector<simcore::StabilityRow> rows;
@@ -531,7 +531,7 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
     spec.values = levels;
     checkIntegrator(integrator);
     spec.integrator = integrator;
-    if (parameters.contains("dt")) spec.dt = s.params.get("dt");  // as the CLI's --dt: the study's step
+    if (parameters.contains("dt")) spec.dt = s.params.get(simcore::Param::Dt);  // as the CLI's --dt: the study's step
     if (!tolerance.is_none()) spec.tolerance = checkedNumber(tolerance, "tolerance", 0.0, 1.0, true);
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e6, true, false, "s");
     spec.interval = checkedNumber(interval, "interval", 0.0, 1e6, true, false, "s");

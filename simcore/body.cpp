@@ -312,18 +312,18 @@ BodySize bodySize(const ParameterSet& params) {
         case SceneKind::Spring1d: return {2, 1, 0};
         case SceneKind::Ring2d: {
             // per layer n particles and n gas edges; springs: 2n structural, n radius, 2n shear
-            const long long n = params.getInt("particles");
+            const long long n = params.getInt(Param::Particles);
             return {2 * n, 5 * n, 2 * n};
         }
         case SceneKind::Sphere3d: {
             // per layer V = 4*4^L + 2, E = 12*4^L, F = 8*4^L; springs: 2E structural, V radius, 2E shear
-            const long long q = 1LL << (2 * params.getInt("subdivisions"));
+            const long long q = 1LL << (2 * params.getInt(Param::Subdivisions));
             const long long v = 4 * q + 2, e = 12 * q, f = 8 * q;
             return {2 * v, 4 * e + v, 2 * f};
         }
         case SceneKind::Sphere3dLatLong: {
             // per layer V = 2 + slices(stacks-1), E = slices(2 stacks - 1), F = 2 slices(stacks-1)
-            const long long s = params.getInt("slices"), k = params.getInt("stacks");
+            const long long s = params.getInt(Param::Slices), k = params.getInt(Param::Stacks);
             const long long v = 2 + s * (k - 1), e = s * (2 * k - 1), f = 2 * s * (k - 1);
             return {2 * v, 4 * e + v, 2 * f};
         }
@@ -347,10 +347,10 @@ double memoryBoundBytes(const BodySize& size, std::string_view integrator) {
 
 std::optional<std::string> validateShape(const ParameterSet& params, std::string_view integrator) {
     if (params.kind() != SceneKind::Spring1d &&
-        !(params.get("radius_inner") < params.get("radius_outer"))) {
+        !(params.get(Param::RadiusInner) < params.get(Param::RadiusOuter))) {
         std::ostringstream os;
-        os << "radius_inner (" << params.get("radius_inner") << " m) must be below radius_outer ("
-           << params.get("radius_outer") << " m)";
+        os << "radius_inner (" << params.get(Param::RadiusInner) << " m) must be below radius_outer ("
+           << params.get(Param::RadiusOuter) << " m)";
         return os.str();
     }
     const BodySize size = bodySize(params);
@@ -358,11 +358,11 @@ std::optional<std::string> validateShape(const ParameterSet& params, std::string
     if (bytes <= kMemoryLimitBytes) return std::nullopt;
     std::string resolution;
     switch (params.kind()) {
-        case SceneKind::Ring2d: resolution = "particles=" + std::to_string(params.getInt("particles")); break;
-        case SceneKind::Sphere3d: resolution = "subdivisions=" + std::to_string(params.getInt("subdivisions")); break;
+        case SceneKind::Ring2d: resolution = "particles=" + std::to_string(params.getInt(Param::Particles)); break;
+        case SceneKind::Sphere3d: resolution = "subdivisions=" + std::to_string(params.getInt(Param::Subdivisions)); break;
         case SceneKind::Sphere3dLatLong:
-            resolution = "slices=" + std::to_string(params.getInt("slices")) +
-                         ", stacks=" + std::to_string(params.getInt("stacks"));
+            resolution = "slices=" + std::to_string(params.getInt(Param::Slices)) +
+                         ", stacks=" + std::to_string(params.getInt(Param::Stacks));
             break;
         case SceneKind::Spring1d: break;
     }
@@ -381,23 +381,16 @@ std::optional<std::string> validateShape(const ParameterSet& params, std::string
 
 namespace {
 Body buildUnscaled(const ParameterSet& params) {
+    const Params::Shape s = resolve(params).shape;
     switch (params.kind()) {
         case SceneKind::Spring1d:
-            return buildSpring1d({params.get("length"), params.get("initial_length"),
-                                  params.getInt("fixed_end") != 0},
-                                 params.get("mass"));
+            return buildSpring1d({s.length, s.initialLength, s.fixedEnd}, s.mass);
         case SceneKind::Ring2d:
-            return buildRing2d({params.getInt("particles"), params.get("radius_inner"),
-                                params.get("radius_outer")},
-                               params.get("mass_inner"), params.get("mass_outer"));
+            return buildRing2d({s.particles, s.radiusInner, s.radiusOuter}, s.massInner, s.massOuter);
         case SceneKind::Sphere3d:
-            return buildSphere3d({params.getInt("subdivisions"), params.get("radius_inner"),
-                                  params.get("radius_outer")},
-                                 params.get("mass_inner"), params.get("mass_outer"));
+            return buildSphere3d({s.subdivisions, s.radiusInner, s.radiusOuter}, s.massInner, s.massOuter);
         case SceneKind::Sphere3dLatLong:
-            return buildLatLongSphere({params.getInt("slices"), params.getInt("stacks"),
-                                       params.get("radius_inner"), params.get("radius_outer")},
-                                      params.get("mass_inner"), params.get("mass_outer"));
+            return buildLatLongSphere({s.slices, s.stacks, s.radiusInner, s.radiusOuter}, s.massInner, s.massOuter);
     }
     throw std::invalid_argument("unknown scene kind");
 }

@@ -15,87 +15,96 @@ namespace {
 // clang-format off
 constexpr std::array kTable = {
     //        key             unit     default  min    max     >min   int    scenes         group
-    ParamSpec{"ks",           "N/m",   800.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Springs, "",
+    ParamSpec{Param::Ks, "ks",           "N/m",   800.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Springs, Param::Count,
               "structural spring stiffness KS, per spring (scaling=physical: at the reference resolution; a 2D chain keeps "
               "k L0, a 3D membrane keeps k)"},
-    ParamSpec{"kd",           "N*s/m", 15.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Springs, "",
+    ParamSpec{Param::Kd, "kd",           "N*s/m", 15.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Springs, Param::Count,
               "structural spring damping KD, per spring; scales like KS"},
-    ParamSpec{"rks",          "N/m",   700.0,   0.0,   1e9,    false, false, kBitsLayered,  ParamGroup::Springs, "",
+    ParamSpec{Param::Rks, "rks",          "N/m",   700.0,   0.0,   1e9,    false, false, kBitsLayered,  ParamGroup::Springs, Param::Count,
               "radius and shear spring stiffness RKS, per spring (scaling=physical: at the reference resolution; "
               "in parallel, k times count stays fixed)"},
-    ParamSpec{"rkd",          "N*s/m", 50.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Springs, "",
+    ParamSpec{Param::Rkd, "rkd",          "N*s/m", 50.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Springs, Param::Count,
               "radius and shear spring damping RKD, per spring; scales like RKS"},
-    ParamSpec{"pressure",     "J",     20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "",
+    ParamSpec{Param::Pressure, "pressure",     "J",     20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, Param::Count,
               "gas constant nRT of each closed layer (PRESSURE): P = nRT / V"},
-    ParamSpec{"pressure_inner","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "pressure",
+    ParamSpec{Param::PressureInner, "pressure_inner","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, Param::Pressure,
               "nRT of the gas enclosed by the inner layer (defaults to pressure)"},
-    ParamSpec{"pressure_outer","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, "pressure",
+    ParamSpec{Param::PressureOuter, "pressure_outer","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, Param::Pressure,
               "nRT of the gas enclosed by the outer layer (defaults to pressure)"},
-    ParamSpec{"mass",         "kg",    1.0,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Mass, "",
+    ParamSpec{Param::Mass, "mass",         "kg",    1.0,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Mass, Param::Count,
               "particle mass MASS (scaling=physical: at the reference resolution; each layer keeps its total)"},
-    ParamSpec{"mass_inner",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, "mass",
+    ParamSpec{Param::MassInner, "mass_inner",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, Param::Mass,
               "inner-layer particle mass (defaults to mass; scaled like mass): real inertia, not scaled gravity"},
-    ParamSpec{"mass_outer",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, "mass",
+    ParamSpec{Param::MassOuter, "mass_outer",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, Param::Mass,
               "outer-layer particle mass (defaults to mass; scaled like mass)"},
-    ParamSpec{"gravity",      "m/s^2", 9.81,    0.0,   1e4,    false, false, kBitsAll,      ParamGroup::Environment, "",
+    ParamSpec{Param::Gravity, "gravity",      "m/s^2", 9.81,    0.0,   1e4,    false, false, kBitsAll,      ParamGroup::Environment, Param::Count,
               "gravitational acceleration, pointing along -y"},
-    ParamSpec{"box",          "m",     2.5,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Environment, "",
+    ParamSpec{Param::Box, "box",          "m",     2.5,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Environment, Param::Count,
               "half-size of the collision box (floor, ceiling, walls), centred on the body's start"},
-    ParamSpec{"contact",      "",      0.0,     0.0,   1.0,    false, true,  kBitsAll,      ParamGroup::Contact, "",
+    ParamSpec{Param::Contact, "contact",      "",      0.0,     0.0,   1.0,    false, true,  kBitsAll,      ParamGroup::Contact, Param::Count,
               "contact model: 0 = force (smooth penalty force inside the ODE, in the energy ledger), "
               "1 = projection (the thesis program: put back and reflect after the step)",
               0, 0.0, "force|projection"},
-    ParamSpec{"restitution",  "",      0.5,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, "",
+    ParamSpec{Param::Restitution, "restitution",  "",      0.5,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, Param::Count,
               "coefficient of restitution e at the box walls: a particle hitting at contact_speed rebounds "
               "at e times its speed (projection: v_n becomes -e*v_n)"},
-    ParamSpec{"contact_stiffness","N/m^3", 2e7, 0.0,   1e15,   true,  false, kBitsAll,      ParamGroup::Contact, "",
+    ParamSpec{Param::ContactStiffness, "contact_stiffness","N/m^3", 2e7, 0.0,   1e15,   true,  false, kBitsAll,      ParamGroup::Contact, Param::Count,
               "k of the contact potential U = k d^4/4 per particle at a wall (d: penetration) and of the layer "
               "barrier (scaling=physical: at the reference resolution, scaled like mass)"},
-    ParamSpec{"contact_speed","m/s",   3.0,     0.0,   1e4,    true,  false, kBitsAll,      ParamGroup::Contact, "",
+    ParamSpec{Param::ContactSpeed, "contact_speed","m/s",   3.0,     0.0,   1e4,    true,  false, kBitsAll,      ParamGroup::Contact, Param::Count,
               "impact speed at which the contact damping gives exactly the restitution e"},
-    ParamSpec{"friction",     "",      0.0,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, "",
+    ParamSpec{Param::Friction, "friction",     "",      0.0,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, Param::Count,
               "wall friction: Coulomb coefficient mu (force); tangential velocity fraction removed (projection)"},
-    ParamSpec{"friction_speed","m/s",  0.5,     0.0,   1e3,    true,  false, kBitsAll,      ParamGroup::Contact, "",
+    ParamSpec{Param::FrictionSpeed, "friction_speed","m/s",  0.5,     0.0,   1e3,    true,  false, kBitsAll,      ParamGroup::Contact, Param::Count,
               "slip speed below which Coulomb friction is smoothed (regularised) [force contact]"},
-    ParamSpec{"mks",          "N/m",   150.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Pointer, "",
+    ParamSpec{Param::Mks, "mks",          "N/m",   150.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Pointer, Param::Count,
               "mouse spring stiffness (MKS)"},
-    ParamSpec{"mkd",          "N*s/m", 25.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Pointer, "",
+    ParamSpec{Param::Mkd, "mkd",          "N*s/m", 25.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Pointer, Param::Count,
               "mouse spring damping (MKD)"},
-    ParamSpec{"mouse_rest",   "m",     0.0,     0.0,   1e3,    false, false, kBitsAll,      ParamGroup::Pointer, "",
+    ParamSpec{Param::MouseRest, "mouse_rest",   "m",     0.0,     0.0,   1e3,    false, false, kBitsAll,      ParamGroup::Pointer, Param::Count,
               "rest length of the mouse spring"},
-    ParamSpec{"dt",           "s",     0.003,   0.0,   1.0,    true,  false, kBitsAll,      ParamGroup::Time, "",
+    ParamSpec{Param::Dt, "dt",           "s",     0.003,   0.0,   1.0,    true,  false, kBitsAll,      ParamGroup::Time, Param::Count,
               "time step DT of fixed-step integrators (initial step of adaptive ones)"},
-    ParamSpec{"substeps",     "",      8.0,     1.0,   1000.0, false, true,  kBitsAll,      ParamGroup::Time, "",
+    ParamSpec{Param::Substeps, "substeps",     "",      8.0,     1.0,   1000.0, false, true,  kBitsAll,      ParamGroup::Time, Param::Count,
               "xpbd: substeps per step DT, one constraint iteration each (Macklin et al. 2019, small steps)"},
-    ParamSpec{"scaling",      "",      0.0,     0.0,   1.0,    false, true,  kBitsLayered,  ParamGroup::Shape, "",
+    ParamSpec{Param::Scaling, "scaling",      "",      0.0,     0.0,   1.0,    false, true,  kBitsLayered,  ParamGroup::Shape, Param::Count,
               "what mass, ks, kd, rks, rkd and contact_stiffness mean when the mesh is refined: 0 = physical (the "
               "values hold at the scene's default resolution and the body keeps its totals and material constants), "
               "1 = thesis (per particle and per spring at every resolution)",
               0, 0.0, "physical|thesis"},
-    ParamSpec{"particles",    "",      12.0,    3.0,   100000, false, true,  kBitRing2d,    ParamGroup::Shape, "",
+    ParamSpec{Param::Particles, "particles",    "",      12.0,    3.0,   100000, false, true,  kBitRing2d,    ParamGroup::Shape, Param::Count,
               "particles per layer of the 2D ring"},
-    ParamSpec{"subdivisions", "",      2.0,     0.0,   7.0,    false, true,  kBitSphere3d,  ParamGroup::Shape, "",
+    ParamSpec{Param::Subdivisions, "subdivisions", "",      2.0,     0.0,   7.0,    false, true,  kBitSphere3d,  ParamGroup::Shape, Param::Count,
               "subdivision level L of the octahedron sphere: 4*4^L+2 particles per layer"},
-    ParamSpec{"slices",       "",      8.0,    3.0,   1024,   false, true,  kBitLatLong,   ParamGroup::Shape, "",
+    ParamSpec{Param::Slices, "slices",       "",      8.0,    3.0,   1024,   false, true,  kBitLatLong,   ParamGroup::Shape, Param::Count,
               "meridians of the lat/long sphere"},
-    ParamSpec{"stacks",       "",      4.0,     2.0,   512,    false, true,  kBitLatLong,   ParamGroup::Shape, "",
+    ParamSpec{Param::Stacks, "stacks",       "",      4.0,     2.0,   512,    false, true,  kBitLatLong,   ParamGroup::Shape, Param::Count,
               "latitude bands of the lat/long sphere (pole to pole)"},
-    ParamSpec{"radius_inner", "m",     1.5,     0.0,   1e3,    true,  false, kBitsLayered,  ParamGroup::Shape, "",
+    ParamSpec{Param::RadiusInner, "radius_inner", "m",     1.5,     0.0,   1e3,    true,  false, kBitsLayered,  ParamGroup::Shape, Param::Count,
               "rest radius of the inner layer (must be below radius_outer)"},
-    ParamSpec{"radius_outer", "m",     2.0,     0.0,   1e3,    true,  false, kBitsLayered,  ParamGroup::Shape, "",
+    ParamSpec{Param::RadiusOuter, "radius_outer", "m",     2.0,     0.0,   1e3,    true,  false, kBitsLayered,  ParamGroup::Shape, Param::Count,
               "rest radius of the outer layer"},
-    ParamSpec{"length",       "m",     1.0,     0.0,   1e3,    true,  false, kBitSpring1d,  ParamGroup::Shape, "",
+    ParamSpec{Param::Length, "length",       "m",     1.0,     0.0,   1e3,    true,  false, kBitSpring1d,  ParamGroup::Shape, Param::Count,
               "rest length of the 1D spring"},
-    ParamSpec{"initial_length","m",    1.5,     0.0,   1e3,    true,  false, kBitSpring1d,  ParamGroup::Shape, "",
+    ParamSpec{Param::InitialLength, "initial_length","m",    1.5,     0.0,   1e3,    true,  false, kBitSpring1d,  ParamGroup::Shape, Param::Count,
               "distance between the two particles at the start (the spring hangs along -y)"},
-    ParamSpec{"fixed_end",    "",      1.0,     0.0,   1.0,    false, true,  kBitSpring1d,  ParamGroup::Shape, "",
+    ParamSpec{Param::FixedEnd, "fixed_end",    "",      1.0,     0.0,   1.0,    false, true,  kBitSpring1d,  ParamGroup::Shape, Param::Count,
               "1: the top particle is fixed in space (thesis fig. 7); 0: both particles move"},
-    ParamSpec{"perturb",      "m",     0.0,     0.0,   1e3,    false, false, kBitsAll,      ParamGroup::Start, "",
+    ParamSpec{Param::Perturb, "perturb",      "m",     0.0,     0.0,   1e3,    false, false, kBitsAll,      ParamGroup::Start, Param::Count,
               "amplitude of a seeded random displacement of the start positions (breaks symmetry)"},
-    ParamSpec{"seed",         "",      1.0,     0.0,   4294967295.0, false, true, kBitsAll, ParamGroup::Start, "",
+    ParamSpec{Param::Seed, "seed",         "",      1.0,     0.0,   4294967295.0, false, true, kBitsAll, ParamGroup::Start, Param::Count,
               "seed of the start perturbation"},
 };
 // clang-format on
+
+// The enum and the table list the parameters in the same order: Param indexes the table.
+constexpr bool tableMatchesEnum() {
+    if (kTable.size() != kParamCount) return false;
+    for (std::size_t i = 0; i < kTable.size(); ++i)
+        if (static_cast<std::size_t>(kTable[i].id) != i) return false;
+    return true;
+}
+static_assert(tableMatchesEnum(), "params.cpp: kTable and enum Param (params.h) must list the same keys in order");
 
 }  // namespace
 
@@ -165,6 +174,8 @@ std::optional<double> parseValue(const ParamSpec& spec, std::string_view text) {
 
 std::span<const ParamSpec> parameterTable() { return kTable; }
 
+const ParamSpec& paramSpec(Param id) { return kTable[static_cast<std::size_t>(id)]; }
+
 const ParamSpec* findParam(std::string_view key) {
     for (const ParamSpec& spec : kTable)
         if (spec.key == key) return &spec;
@@ -221,9 +232,19 @@ std::optional<double> parseNumber(std::string_view text) {
     return value;
 }
 
+bool ParameterSet::has(Param id) const { return (paramSpec(id).scenes & sceneBit(m_kind)) != 0; }
+
+std::optional<std::string> ParameterSet::set(Param id, double value) {
+    if (!has(id)) return set(paramSpec(id).key, value);  // the boundary's message, with the list
+    if (auto error = validateValue(paramSpec(id), value)) return error;
+    m_values[index(id)] = value;
+    m_explicit[index(id)] = true;
+    return std::nullopt;
+}
+
 std::optional<std::string> ParameterSet::set(std::string_view key, double value) {
     const ParamSpec* spec = findParam(key);
-    if (!spec || !(spec->scenes & sceneBit(m_kind))) {
+    if (!spec || !has(spec->id)) {
         std::string allowed;
         for (const ParamSpec* s : parametersFor(m_kind)) {
             if (!allowed.empty()) allowed += ' ';
@@ -231,9 +252,7 @@ std::optional<std::string> ParameterSet::set(std::string_view key, double value)
         }
         return "unknown parameter " + quoteShort(key) + " for this scene; allowed: " + allowed;
     }
-    if (auto error = validateValue(*spec, value)) return error;
-    m_values[std::string(key)] = value;
-    return std::nullopt;
+    return set(spec->id, value);
 }
 
 std::optional<std::string> ParameterSet::setFromText(std::string_view key, std::string_view text) {
@@ -254,12 +273,62 @@ std::optional<std::string> ParameterSet::assign(std::string_view assignment) {
     return setFromText(assignment.substr(0, eq), assignment.substr(eq + 1));
 }
 
-double ParameterSet::get(std::string_view key) const {
-    if (auto it = m_values.find(std::string(key)); it != m_values.end()) return it->second;
-    const ParamSpec* spec = findParam(key);
-    if (!spec) return 0.0;
-    if (!spec->inherits.empty()) return get(spec->inherits);
-    return spec->defaultFor(m_kind);
+double ParameterSet::get(Param id) const {
+    if (m_explicit[index(id)]) return m_values[index(id)];
+    const ParamSpec& spec = paramSpec(id);
+    if (spec.inherits != Param::Count) return get(spec.inherits);
+    return spec.defaultFor(m_kind);
+}
+
+std::vector<std::pair<Param, double>> ParameterSet::explicitValues() const {
+    std::vector<std::pair<Param, double>> out;
+    for (std::size_t i = 0; i < kParamCount; ++i)
+        if (m_explicit[i]) out.emplace_back(static_cast<Param>(i), m_values[i]);
+    return out;
+}
+
+Params resolve(const ParameterSet& set) {
+    auto v = [&](Param id) { return set.get(id); };
+    auto whole = [&](Param id) { return set.getInt(id); };
+    Params p;
+    p.forces.ks = v(Param::Ks);
+    p.forces.kd = v(Param::Kd);
+    p.forces.rks = v(Param::Rks);
+    p.forces.rkd = v(Param::Rkd);
+    p.forces.gasConstant = {v(Param::PressureInner), v(Param::PressureOuter)};
+    p.forces.mks = v(Param::Mks);
+    p.forces.mkd = v(Param::Mkd);
+    p.forces.mouseRest = v(Param::MouseRest);
+
+    p.world.gravity = v(Param::Gravity);
+    p.world.box = v(Param::Box);
+    p.world.contact = v(Param::Contact) == 1.0 ? ContactModel::Projection : ContactModel::Force;
+    p.world.restitution = v(Param::Restitution);
+    p.world.contactStiffness = v(Param::ContactStiffness);
+    p.world.contactSpeed = v(Param::ContactSpeed);
+    p.world.friction = v(Param::Friction);
+    p.world.frictionSpeed = v(Param::FrictionSpeed);
+
+    p.time.dt = v(Param::Dt);
+    p.time.substeps = whole(Param::Substeps);
+
+    p.shape.scaling = v(Param::Scaling) == 1.0 ? Scaling::Thesis : Scaling::Physical;
+    p.shape.mass = v(Param::Mass);
+    p.shape.massInner = v(Param::MassInner);
+    p.shape.massOuter = v(Param::MassOuter);
+    p.shape.particles = whole(Param::Particles);
+    p.shape.subdivisions = whole(Param::Subdivisions);
+    p.shape.slices = whole(Param::Slices);
+    p.shape.stacks = whole(Param::Stacks);
+    p.shape.radiusInner = v(Param::RadiusInner);
+    p.shape.radiusOuter = v(Param::RadiusOuter);
+    p.shape.length = v(Param::Length);
+    p.shape.initialLength = v(Param::InitialLength);
+    p.shape.fixedEnd = whole(Param::FixedEnd) != 0;
+
+    p.start.perturb = v(Param::Perturb);
+    p.start.seed = static_cast<std::uint64_t>(v(Param::Seed));
+    return p;
 }
 
 NameList parseNameList(std::string_view option, std::string_view text) {

@@ -4,8 +4,14 @@
 // One table feeds validation (CLI --set, scene files, GUI fields), the CLI's `params`
 // listing, the GUI's parameter dock and the docs. A key that a scene does not have is
 // refused for that scene: a 1D spring has no pressure, no radius springs, no layers.
+//
+// Names are text only at the boundaries (command line, scene files, the GUI's fields, Python):
+// there a key is looked up once (findParam) and becomes a Param. Inside, a value is read as
+// `set.get(Param::Dt)`, or, resolved once into typed groups, as `resolve(set).time.dt`; a
+// mistyped name does not compile.
 
-#include <map>
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -31,7 +37,24 @@ unsigned sceneBit(SceneKind kind);
 
 enum class ParamGroup { Springs, Gas, Mass, Environment, Contact, Pointer, Time, Shape, Start };
 
+// Every parameter, in the table's order (params.cpp checks the two agree at compile time).
+enum class Param : std::uint8_t {
+    Ks, Kd, Rks, Rkd,                                   // springs
+    Pressure, PressureInner, PressureOuter,             // gas
+    Mass, MassInner, MassOuter,                         // mass
+    Gravity, Box,                                       // environment
+    Contact, Restitution, ContactStiffness, ContactSpeed, Friction, FrictionSpeed,  // contact
+    Mks, Mkd, MouseRest,                                // pointer
+    Dt, Substeps,                                       // time
+    Scaling, Particles, Subdivisions, Slices, Stacks, RadiusInner, RadiusOuter, Length,
+    InitialLength, FixedEnd,                            // shape
+    Perturb, Seed,                                      // start
+    Count                                               // not a parameter: the number of them
+};
+inline constexpr std::size_t kParamCount = static_cast<std::size_t>(Param::Count);
+
 struct ParamSpec {
+    Param id;
     std::string_view key;
     std::string_view unit;          // SI unit, "" when dimensionless
     double defaultValue;
@@ -41,7 +64,7 @@ struct ParamSpec {
     bool integer;                   // whole numbers only
     unsigned scenes;                // SceneBits where the key exists
     ParamGroup group;
-    std::string_view inherits;      // when not set explicitly, take this key's value
+    Param inherits;                 // when not set explicitly, take this one's value (Count: none)
     std::string_view meaning;       // one line, shown in tooltips and `params`
     // Per-scene default overriding defaultValue (0 = none).
     unsigned overrideScenes = 0;
@@ -62,6 +85,8 @@ struct ParamSpec {
 std::optional<double> parseValue(const ParamSpec& spec, std::string_view text);
 
 std::span<const ParamSpec> parameterTable();
+const ParamSpec& paramSpec(Param id);
+// The boundary's lookup: a key's spec, or nullptr for a name that is not in the table.
 const ParamSpec* findParam(std::string_view key);
 std::vector<const ParamSpec*> parametersFor(SceneKind kind);
 
@@ -95,24 +120,80 @@ public:
     explicit ParameterSet(SceneKind kind = SceneKind::Ring2d) : m_kind(kind) {}
 
     SceneKind kind() const { return m_kind; }
+    // Whether this scene has the parameter (a 1D spring has no pressure).
+    bool has(Param id) const;
 
-    // Returns an error message (key unknown for this scene, bad number, out of range) or nothing.
+    // Returns an error message (not a parameter of this scene, out of range) or nothing.
+    std::optional<std::string> set(Param id, double value);
+    // The boundary's forms: a key given as text (unknown keys are refused with the list).
     std::optional<std::string> set(std::string_view key, double value);
     std::optional<std::string> setFromText(std::string_view key, std::string_view text);
     // "key=value"
     std::optional<std::string> assign(std::string_view assignment);
 
-    double get(std::string_view key) const;
-    int getInt(std::string_view key) const { return static_cast<int>(get(key)); }
-    bool isExplicit(std::string_view key) const { return m_values.count(std::string(key)) != 0; }
-    void clear(std::string_view key) { m_values.erase(std::string(key)); }
-    const std::map<std::string, double>& explicitValues() const { return m_values; }
+    double get(Param id) const;
+    int getInt(Param id) const { return static_cast<int>(get(id)); }
+    bool isExplicit(Param id) const { return m_explicit[index(id)]; }
+    void clear(Param id) {
+        m_explicit[index(id)] = false;
+        m_values[index(id)] = 0.0;
+    }
+    // The explicitly set values, in the table's order.
+    std::vector<std::pair<Param, double>> explicitValues() const;
 
     bool operator==(const ParameterSet&) const = default;
 
 private:
+    static std::size_t index(Param id) { return static_cast<std::size_t>(id); }
     SceneKind m_kind;
-    std::map<std::string, double> m_values;
+    std::array<double, kParamCount> m_values{};  // 0 where not explicit
+    std::array<bool, kParamCount> m_explicit{};
 };
+
+// The values resolved once into typed groups: what the physics reads. Values are the table's
+// (per particle and per spring at the reference resolution; scaling.h turns them into the
+// body's); keys a scene does not have hold their table defaults.
+enum class ContactModel { Force = 0, Projection = 1 };  // the values of `contact`
+enum class Scaling { Physical = 0, Thesis = 1 };  // the values of `scaling`
+
+struct Params {
+    struct Forces {
+        double ks = 0.0, kd = 0.0;             // structural springs [N/m], [N s/m]
+        double rks = 0.0, rkd = 0.0;           // radius and shear springs [N/m], [N s/m]
+        std::array<double, 2> gasConstant{};   // nRT of the [inner, outer] gas [J]
+        double mks = 0.0, mkd = 0.0;           // mouse spring [N/m], [N s/m]
+        double mouseRest = 0.0;                // mouse spring rest length [m]
+    } forces;
+    struct World {
+        double gravity = 0.0;                  // [m/s^2], along -y
+        double box = 0.0;                      // half-size of the box [m]
+        ContactModel contact = ContactModel::Force;
+        double restitution = 0.0;
+        double contactStiffness = 0.0;         // k of U = k d^4/4 [N/m^3]
+        double contactSpeed = 0.0;             // speed at which the damping gives e [m/s]
+        double friction = 0.0;                 // Coulomb mu (force); fraction removed (projection)
+        double frictionSpeed = 0.0;            // regularisation speed [m/s]
+    } world;
+    struct Time {
+        double dt = 0.0;                       // step of fixed-step integrators [s]
+        int substeps = 1;                      // xpbd substeps per step
+    } time;
+    struct Shape {
+        Scaling scaling = Scaling::Physical;
+        double mass = 0.0, massInner = 0.0, massOuter = 0.0;  // particle masses [kg]
+        int particles = 0;                     // ring2d: per layer
+        int subdivisions = 0;                  // sphere3d: level L
+        int slices = 0, stacks = 0;            // sphere3d-latlong
+        double radiusInner = 0.0, radiusOuter = 0.0;  // [m]
+        double length = 0.0, initialLength = 0.0;     // spring1d [m]
+        bool fixedEnd = false;                 // spring1d: the top particle is fixed
+    } shape;
+    struct Start {
+        double perturb = 0.0;                  // amplitude of the seeded displacement [m]
+        std::uint64_t seed = 0;
+    } start;
+};
+
+Params resolve(const ParameterSet& set);
 
 }  // namespace simcore

@@ -7,18 +7,9 @@ namespace simcore {
 
 namespace {
 
-// The keys that set a scene's resolution (its Shape keys other than the radii).
-constexpr std::array<const char*, 3> kResolutionKeys = {"particles", "subdivisions", "slices"};
-
-bool hasKey(const ParameterSet& params, std::string_view key) {
-    const ParamSpec* spec = findParam(key);
-    return spec && (spec->scenes & sceneBit(params.kind()));
-}
-
-bool isResolutionKey(std::string_view key) {
-    for (const char* k : kResolutionKeys)
-        if (key == k) return true;
-    return key == "stacks";
+// The parameters that set a scene's resolution (its Shape keys other than the radii).
+bool isResolution(Param id) {
+    return id == Param::Particles || id == Param::Subdivisions || id == Param::Slices || id == Param::Stacks;
 }
 
 double meanRest(const SpringSet& springs) {
@@ -54,23 +45,23 @@ int particlesPerLayer(const Topology& topology) {
 }  // namespace
 
 Scaling scalingOf(const ParameterSet& params) {
-    if (!hasKey(params, "scaling")) return Scaling::Thesis;
-    return params.get("scaling") == 1.0 ? Scaling::Thesis : Scaling::Physical;
+    if (!params.has(Param::Scaling)) return Scaling::Thesis;
+    return params.get(Param::Scaling) == 1.0 ? Scaling::Thesis : Scaling::Physical;
 }
 
 ParameterSet referenceShape(const ParameterSet& params) {
     ParameterSet reference = params;
     for (const ParamSpec* spec : parametersFor(params.kind()))
-        if (isResolutionKey(spec->key)) reference.clear(spec->key);
+        if (isResolution(spec->id)) reference.clear(spec->id);
     return reference;
 }
 
 std::string resolutionText(const ParameterSet& params) {
     std::string text;
     for (const ParamSpec* spec : parametersFor(params.kind())) {
-        if (!isResolutionKey(spec->key)) continue;
+        if (!isResolution(spec->id)) continue;
         if (!text.empty()) text += ", ";
-        text += std::string(spec->key) + "=" + std::to_string(params.getInt(spec->key));
+        text += std::string(spec->key) + "=" + std::to_string(params.getInt(spec->id));
     }
     return text;
 }
@@ -81,12 +72,12 @@ BodyScale bodyScale(const ParameterSet& params, const Body& body) {
     // At the reference resolution every factor is 1 by definition (no arithmetic at all).
     bool atReference = true;
     for (const ParamSpec* spec : parametersFor(params.kind()))
-        if (isResolutionKey(spec->key) && params.get(spec->key) != spec->defaultFor(params.kind()))
+        if (isResolution(spec->id) && params.get(spec->id) != spec->defaultFor(params.kind()))
             atReference = false;
     if (atReference) return scale;
 
     ParameterSet referenceParams = referenceShape(params);
-    referenceParams.set("scaling", 1.0);  // the reference body's own values are unscaled
+    referenceParams.set(Param::Scaling, 1.0);  // the reference body's own values are unscaled
     const Body reference = buildBody(referenceParams);
     const Topology& topology = body.topology;
 
@@ -122,22 +113,22 @@ BodyValues bodyValues(const ParameterSet& params, const Body& body) {
     v.scale = bodyScale(params, body);
     v.particlesPerLayer = particlesPerLayer(topology);
     // Counted from the reference shape's parameters, without building it (bodySize).
-    v.referenceParticlesPerLayer = hasKey(params, "scaling")
+    v.referenceParticlesPerLayer = params.has(Param::Scaling)
                                        ? static_cast<int>(bodySize(referenceShape(params)).particles / 2)
                                        : v.particlesPerLayer;
     const bool layered = topology.dimension > 1;
-    v.massInner = (layered ? params.get("mass_inner") : params.get("mass")) * v.scale.mass;
-    v.massOuter = (layered ? params.get("mass_outer") : params.get("mass")) * v.scale.mass;
+    v.massInner = (layered ? params.get(Param::MassInner) : params.get(Param::Mass)) * v.scale.mass;
+    v.massOuter = (layered ? params.get(Param::MassOuter) : params.get(Param::Mass)) * v.scale.mass;
     v.layerMassInner = layered ? v.massInner * v.particlesPerLayer : 0.0;
     v.layerMassOuter = v.massOuter * v.particlesPerLayer;
     for (int f = 0; f < kSpringFamilyCount; ++f) {
         const auto k = static_cast<std::size_t>(f);
         const bool structural = f == static_cast<int>(SpringFamily::Structural);
-        v.ks[k] = (structural ? params.get("ks") : layered ? params.get("rks") : 0.0) * v.scale.spring[k];
-        v.kd[k] = (structural ? params.get("kd") : layered ? params.get("rkd") : 0.0) * v.scale.spring[k];
+        v.ks[k] = (structural ? params.get(Param::Ks) : layered ? params.get(Param::Rks) : 0.0) * v.scale.spring[k];
+        v.kd[k] = (structural ? params.get(Param::Kd) : layered ? params.get(Param::Rkd) : 0.0) * v.scale.spring[k];
         v.springs[k] = static_cast<int>(topology.springs[k].size());
     }
-    v.contactStiffness = params.get("contact_stiffness") * v.scale.contact;
+    v.contactStiffness = params.get(Param::ContactStiffness) * v.scale.contact;
     return v;
 }
 

@@ -35,7 +35,6 @@
 
 namespace simcore {
 
-enum class Scaling { Physical = 0, Thesis = 1 };
 
 // The `scaling` parameter of a scene (a scene without layers, the 1D spring, is Thesis).
 Scaling scalingOf(const ParameterSet& params);

@@ -211,7 +211,7 @@ public:
             out.families[k] = {set.a, set.b, set.rest, springs ? p.ks[k] : 0.0, springs ? p.kd[k] : 0.0};
         }
         out.inverseMass = &m_sim.m_invMass3;
-        out.substeps = static_cast<int>(m_sim.m_params.get("substeps"));
+        out.substeps = m_sim.m_p.time.substeps;
         return true;
     }
     bool stronglyNonlinear(double h, const Eigen::VectorXd& y0, const Eigen::VectorXd& v1) override {
@@ -299,6 +299,7 @@ Eigen::Map<const Eigen::Matrix3Xd> Simulation::velocities() const {
 }
 
 void Simulation::build() {
+    m_p = resolve(m_params);
     m_body = buildBody(m_params);
     m_scale = bodyScale(m_params, m_body);
     const Topology& topo = m_body.topology;
@@ -335,36 +336,39 @@ void Simulation::setThreads(int threads) {
 }
 
 void Simulation::applyForceParams() {
+    m_p = resolve(m_params);
     ForceParams& p = m_forces.params;
     // The per-spring values this resolution uses (scaling.h; all factors 1 under scaling=thesis
     // and at the reference resolution).
     const auto& f = m_scale.spring;
-    p.ks = {m_params.get("ks") * f[0], 0.0, 0.0};
-    p.kd = {m_params.get("kd") * f[0], 0.0, 0.0};
+    const Params::Forces& table = m_p.forces;
+    p.ks = {table.ks * f[0], 0.0, 0.0};
+    p.kd = {table.kd * f[0], 0.0, 0.0};
     if (m_params.kind() != SceneKind::Spring1d) {
-        p.ks[1] = m_params.get("rks") * f[1];
-        p.ks[2] = m_params.get("rks") * f[2];
-        p.kd[1] = m_params.get("rkd") * f[1];
-        p.kd[2] = m_params.get("rkd") * f[2];
-        p.gasConstant = {m_params.get("pressure_inner"), m_params.get("pressure_outer")};
+        p.ks[1] = table.rks * f[1];
+        p.ks[2] = table.rks * f[2];
+        p.kd[1] = table.rkd * f[1];
+        p.kd[2] = table.rkd * f[2];
+        p.gasConstant = table.gasConstant;
     }
-    p.gravity = m_params.get("gravity");
-    p.mks = m_params.get("mks");
-    p.mkd = m_params.get("mkd");
-    p.mouseRest = m_params.get("mouse_rest");
-    m_restitution = m_params.get("restitution");
-    m_friction = m_params.get("friction");
-    m_box = m_params.get("box");
-    m_dt = m_params.get("dt");
+    const Params::World& world = m_p.world;
+    p.gravity = world.gravity;
+    p.mks = table.mks;
+    p.mkd = table.mkd;
+    p.mouseRest = table.mouseRest;
+    m_restitution = world.restitution;
+    m_friction = world.friction;
+    m_box = world.box;
+    m_dt = m_p.time.dt;
     // Contact (contact.h): the walls per axis the body moves along, k, and alpha from e at
     // the reference impact speed.
-    m_contactProjection = m_params.get("contact") == 1.0;
+    m_contactProjection = world.contact == ContactModel::Projection;
     ContactParams& c = m_forces.contact;
     c.walls = c.layerBarrier = !m_contactProjection;
-    c.stiffness = m_params.get("contact_stiffness") * m_scale.contact;
-    c.alpha = dampingForRestitution(m_restitution) / m_params.get("contact_speed");
+    c.stiffness = world.contactStiffness * m_scale.contact;
+    c.alpha = dampingForRestitution(m_restitution) / world.contactSpeed;
     c.friction = m_friction;
-    c.frictionSpeed = m_params.get("friction_speed");
+    c.frictionSpeed = world.frictionSpeed;
     const int dims = m_body.topology.dimension;
     for (int axis = 0; axis < 3; ++axis) {
         const bool moves = axis == 1 || (axis == 0 && dims >= 2) || (axis == 2 && dims == 3);
@@ -379,10 +383,10 @@ void Simulation::reset() {
     const Eigen::Index n = m_n;
     m_y.setZero(2 * n + kAux);
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = m_body.positions;
-    const double amplitude = m_params.get("perturb");
+    const double amplitude = m_p.start.perturb;
     if (amplitude > 0.0) {
         // Seeded, so a perturbed run is repeatable; only along the axes the body moves in.
-        std::mt19937_64 rng(static_cast<std::uint64_t>(m_params.get("seed")));
+        std::mt19937_64 rng(m_p.start.seed);
         std::uniform_real_distribution<double> uniform(-amplitude, amplitude);
         for (Eigen::Index k = 0; k < n; ++k)
             if (m_invMass3[k] != 0.0) m_y[k] += uniform(rng);
@@ -812,10 +816,16 @@ std::optional<std::string> Simulation::checkState(const Diagnostics& d, const Sc
 }
 
 std::optional<std::string> Simulation::setParameter(std::string_view key, double value) {
-    ParameterSet next = m_params;
-    if (auto error = next.set(key, value)) return error;
     const ParamSpec* spec = findParam(key);
-    if (spec->isShape() || spec->group == ParamGroup::Start) {
+    if (!spec || !m_params.has(spec->id)) return ParameterSet(m_params.kind()).set(key, value);  // the message
+    return setParameter(spec->id, value);
+}
+
+std::optional<std::string> Simulation::setParameter(Param id, double value) {
+    ParameterSet next = m_params;
+    if (auto error = next.set(id, value)) return error;
+    const ParamSpec& spec = paramSpec(id);
+    if (spec.isShape() || spec.group == ParamGroup::Start) {
         ParameterSet previous = m_params;
         m_params = next;
         try {
@@ -833,13 +843,14 @@ std::optional<std::string> Simulation::setParameter(std::string_view key, double
     m_params = next;
     m_endValid = false;
     m_restartIntegrator = true;
-    if (key == "mass" || key == "mass_inner" || key == "mass_outer") {
+    if (spec.group == ParamGroup::Mass) {
+        const Params::Shape shape = resolve(m_params).shape;
         const Topology& topo = m_body.topology;
         for (int i = 0; i < topo.particleCount(); ++i) {
             const Layer l = topo.layer[static_cast<std::size_t>(i)];
-            const double m = (l == Layer::Inner   ? m_params.get("mass_inner")
-                              : l == Layer::Outer ? m_params.get("mass_outer")
-                                                  : m_params.get("mass")) *
+            const double m = (l == Layer::Inner   ? shape.massInner
+                              : l == Layer::Outer ? shape.massOuter
+                                                  : shape.mass) *
                              m_scale.mass;
             m_body.mass[i] = m;
             for (int axis = 0; axis < 3; ++axis)

@@ -105,7 +105,11 @@ public:
 
     // --- parameters (between steps only) ---
     const ParameterSet& parameters() const { return m_params; }
+    // The same values resolved into typed groups (params.h): what the step reads.
+    const Params& params() const { return m_p; }
     // Validates and applies. A shape or start key rebuilds the body and resets.
+    std::optional<std::string> setParameter(Param id, double value);
+    // The boundary's form (a key given as text): an unknown key is refused with the list.
     std::optional<std::string> setParameter(std::string_view key, double value);
     std::optional<std::string> setIntegrator(std::string_view name);
     // Tolerances of adaptive methods, CG settings of implicit ones, step doubling.
@@ -249,6 +253,7 @@ private:
                          const std::array<double, 2>& volume, double contact, const Scan& scan) const;
 
     ParameterSet m_params;
+    Params m_p;                   // m_params resolved (applyForceParams keeps them together)
     int m_threads = hardwareThreads();
     std::unique_ptr<ThreadPool> m_pool;  // declared before m_forces, which points to it
     Body m_body;

@@ -33,12 +33,12 @@ bool hasClosedForm(const ParameterSet& params) { return params.kind() == SceneKi
 
 void spring1dExact(const ParameterSet& params, double t, Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& v) {
     if (!hasClosedForm(params)) throw std::invalid_argument("no closed form for this scene");
-    const double k = params.get("ks"), c = params.get("kd"), m = params.get("mass");
-    const double g = params.get("gravity"), rest = params.get("length");
-    const double start = params.get("initial_length");
+    const double k = params.get(Param::Ks), c = params.get(Param::Kd), m = params.get(Param::Mass);
+    const double g = params.get(Param::Gravity), rest = params.get(Param::Length);
+    const double start = params.get(Param::InitialLength);
     x.setZero(3, 2);
     v.setZero(3, 2);
-    if (params.getInt("fixed_end") != 0) {
+    if (params.getInt(Param::FixedEnd) != 0) {
         // Equilibrium y_eq = -(L0 + m g / k); z = y - y_eq.
         const double yEq = -(rest + m * g / k);
         const Eigen::Vector2d z = dampedOscillator(std::sqrt(k / m), c / (2.0 * m), -start - yEq, 0.0, t);

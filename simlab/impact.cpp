@@ -40,16 +40,17 @@ double reboundVelocity(Simulation& sim, double maxTime, double* deepest, std::st
 ImpactRow measureImpact(const ParameterSet& params, const std::string& integrator, double speed) {
     ImpactRow row;
     row.speed = speed;
-    row.dt = std::min(params.get("dt"), 3e-4 / speed);
+    row.dt = std::min(params.get(Param::Dt), 3e-4 / speed);
     // A particle alone: the 1D scene with no spring, both particles free, weightless.
     {
         ParameterSet p(SceneKind::Spring1d);
-        for (const char* key : {"contact", "restitution", "contact_stiffness", "contact_speed", "friction", "friction_speed"})
-            p.set(key, params.get(key));
-        const double mass = params.kind() == SceneKind::Spring1d ? params.get("mass") : params.get("mass_outer");
-        for (auto [key, value] : {std::pair{"ks", 0.0}, {"kd", 0.0}, {"gravity", 0.0}, {"fixed_end", 0.0},
-                                  {"box", 1.0}, {"mass", mass}, {"dt", row.dt}})
-            p.set(key, value);
+        for (Param id : {Param::Contact, Param::Restitution, Param::ContactStiffness, Param::ContactSpeed,
+                         Param::Friction, Param::FrictionSpeed})
+            p.set(id, params.get(id));
+        const double mass = params.kind() == SceneKind::Spring1d ? params.get(Param::Mass) : params.get(Param::MassOuter);
+        for (auto [id, value] : {std::pair{Param::Ks, 0.0}, {Param::Kd, 0.0}, {Param::Gravity, 0.0},
+                                 {Param::FixedEnd, 0.0}, {Param::Box, 1.0}, {Param::Mass, mass}, {Param::Dt, row.dt}})
+            p.set(id, value);
         Simulation sim(p, integrator);
         Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, 2);
         v(1, 1) = -speed;
@@ -72,9 +73,9 @@ ImpactRow measureImpact(const ParameterSet& params, const std::string& integrato
     // The body: weightless, lowest point 1 mm above the floor, all of it moving down.
     {
         ParameterSet p = params;
-        p.set("gravity", 0.0);
-        p.set("box", 100.0);  // no other wall within reach while the rebound is measured
-        p.set("dt", row.dt);
+        p.set(Param::Gravity, 0.0);
+        p.set(Param::Box, 100.0);  // no other wall within reach while the rebound is measured
+        p.set(Param::Dt, row.dt);
         Simulation sim(p, integrator);
         Eigen::Matrix3Xd x = sim.positions();
         const double floor = sim.boxCentre().y() - sim.boxHalfSize();

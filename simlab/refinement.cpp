@@ -67,7 +67,7 @@ bool isAdaptive(const RefinementSpec& spec) {
 std::optional<std::string> setLevel(ParameterSet& p, const std::string& key, int value) {
     if (auto error = p.set(key, value)) return error;
     if (key == "slices")
-        if (auto error = p.set("stacks", value / 2)) return "slices=" + std::to_string(value) + " gives " + *error;
+        if (auto error = p.set(Param::Stacks, value / 2)) return "slices=" + std::to_string(value) + " gives " + *error;
     return validateShape(p);
 }
 
@@ -160,7 +160,7 @@ std::optional<std::string> validateRefinement(const RefinementSpec& spec) {
             return "the output interval " + shortNumber(spec.interval) + " s is not a whole multiple of dt = " +
                    shortNumber(spec.dt) + " s";
         ParameterSet finest = refinementLevel(spec, levels.back());
-        finest.set("dt", spec.dt);
+        finest.set(Param::Dt, spec.dt);
         const Simulation sim(finest, spec.integrator);
         if (auto advice = stabilityAdvice(sim))
             return "at the finest level (" + spec.key + "=" + std::to_string(levels.back()) + "): " + advice->message +
@@ -170,14 +170,14 @@ std::optional<std::string> validateRefinement(const RefinementSpec& spec) {
 }
 
 std::pair<double, std::string> refinementStep(const RefinementSpec& spec) {
-    const double tableDt = spec.params.get("dt");
+    const double tableDt = spec.params.get(Param::Dt);
     if (isAdaptive(spec))
         return {tableDt, "rk45 at atol = rtol = " + shortNumber(spec.tolerance) + " (first step " + shortNumber(tableDt) + " s)"};
     if (spec.dt > 0.0) return {spec.dt, "dt = " + shortNumber(spec.dt) + " s as given (stable at the finest level)"};
     // The finest body has the fastest modes: probe its stability check at a step far above any
     // stable one, which returns 0.9 of the predicted limit (nothing for implicit-euler).
     ParameterSet finest = refinementLevel(spec, sortedLevels(spec).back());
-    finest.set("dt", 1.0);
+    finest.set(Param::Dt, 1.0);
     const Simulation probe(finest, spec.integrator);
     const auto advice = stabilityAdvice(probe);
     const double stable = advice ? advice->suggestedDt : std::numeric_limits<double>::infinity();

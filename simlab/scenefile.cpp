@@ -155,8 +155,8 @@ SceneFileResult parseSceneJson(const std::string& text) {
     }
     // Version 3 added `scaling` (scaling.h). Every earlier file lists per-particle and per-spring
     // values and ran them as such: it loads as scaling=thesis, so it runs the body it saved.
-    if (version < 3 && !file.params.isExplicit("scaling") && (findParam("scaling")->scenes & sceneBit(file.params.kind())))
-        file.params.set("scaling", 1.0);
+    if (version < 3 && !file.params.isExplicit(Param::Scaling) && file.params.has(Param::Scaling))
+        file.params.set(Param::Scaling, 1.0);
     if (auto error = validateShape(file.params)) return failure("parameters: " + *error);
     if (root.contains("state")) {
         const Json& state = root["state"];
@@ -274,7 +274,7 @@ std::string sceneFileText(const Simulation& sim, const std::string& sceneName, b
        << "  \"parameters\": {";
     bool first = true;
     for (const ParamSpec* spec : parametersFor(sim.parameters().kind())) {
-        const double value = sim.parameters().get(spec->key);
+        const double value = sim.parameters().get(spec->id);
         os << (first ? "\n" : ",\n") << "    \"" << spec->key << "\": ";
         if (spec->choices.empty()) os << formatDouble(value);
         else os << '"' << spec->choiceName(value) << '"';  // a choice by its name: "scaling": "physical"

@@ -240,8 +240,8 @@ double predictedStableStep(const std::string& integrator, const LinearModes& mod
 std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt,
                                           const std::atomic<bool>* cancel) {
     ParameterSet p = spec.params;
-    if (!p.isExplicit("perturb")) p.set("perturb", spec.perturb);
-    if (auto error = p.set("dt", dt)) return *error;
+    if (!p.isExplicit(Param::Perturb)) p.set(Param::Perturb, spec.perturb);
+    if (auto error = p.set(Param::Dt, dt)) return *error;
     Simulation sim(p, integrator);
     sim.setThreads(1);
     IntegratorOptions options;

@@ -54,7 +54,7 @@ double smallestFixedStep(const StudySpec& spec) {
 
 // The closed form applies: spring1d, unperturbed, and no particle ever reaches a wall.
 bool closedFormApplies(const StudySpec& spec) {
-    if (!hasClosedForm(spec.params) || spec.params.get("perturb") != 0.0) return false;
+    if (!hasClosedForm(spec.params) || spec.params.get(Param::Perturb) != 0.0) return false;
     Simulation sim(spec.params, "euler");
     const Eigen::Vector3d centre = sim.boxCentre();
     const double box = sim.boxHalfSize();
@@ -80,7 +80,7 @@ SampledRun runSampled(const ParameterSet& base, const std::string& integrator, d
                       const IntegratorOptions& options, const std::vector<double>& grid,
                       const std::function<void(const Simulation&)>& sample, const std::atomic<bool>* cancel) {
     ParameterSet p = base;
-    if (auto error = p.set("dt", dt)) throw std::invalid_argument(*error);
+    if (auto error = p.set(Param::Dt, dt)) throw std::invalid_argument(*error);
     Simulation sim(p, integrator);
     sim.setThreads(1);  // timings are single-threaded, whatever the machine
     sim.setIntegratorOptions(options);

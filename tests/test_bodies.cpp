@@ -192,7 +192,7 @@ private slots:
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildRing2d({12, 2.0, 1.5}, 1.0, 1.0));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildSphere3d({1, 2.0, 2.0}, 1.0, 1.0));
         ParameterSet p(SceneKind::Sphere3dLatLong);
-        p.set("radius_inner", 2.5);
+        p.set(simcore::Param::RadiusInner, 2.5);
         const auto error = validateShape(p);
         QVERIFY(error && error->find("radius_inner") != std::string::npos);
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, buildBody(p));
@@ -219,7 +219,7 @@ private slots:
         QFETCH(int, stacks);
         ParameterSet p{SceneKind(kind)};
         if (!key.isEmpty()) QVERIFY(!p.set(key.toStdString(), value));
-        if (stacks) QVERIFY(!p.set("stacks", stacks));
+        if (stacks) QVERIFY(!p.set(simcore::Param::Stacks, stacks));
         const Body body = buildBody(p);
         long long faces = 0;
         for (const Surface& s : body.topology.surfaces)
@@ -233,8 +233,8 @@ private slots:
     // before anything is built; the message names the resolution and says what fits.
     void refusesResolutionsBeyondTheMemoryLimit() {
         ParameterSet latlong(SceneKind::Sphere3dLatLong);
-        latlong.set("slices", 1024);
-        latlong.set("stacks", 512);
+        latlong.set(simcore::Param::Slices, 1024);
+        latlong.set(simcore::Param::Stacks, 512);
         const auto error = validateShape(latlong);
         QVERIFY(error);
         for (const char* word : {"slices=1024", "stacks=512", "GiB", "limit is 1 GiB", "particles for this scene"})
@@ -243,13 +243,13 @@ private slots:
         // What the table allows for the octahedron sphere (L7, 262,152 particles) and the ring
         // (100,000 per layer) fits; so does a lat/long sphere of the same size as L7.
         ParameterSet sphere(SceneKind::Sphere3d);
-        sphere.set("subdivisions", 7);
+        sphere.set(simcore::Param::Subdivisions, 7);
         QVERIFY(!validateShape(sphere));
         ParameterSet ring(SceneKind::Ring2d);
-        ring.set("particles", 100000);
+        ring.set(simcore::Param::Particles, 100000);
         QVERIFY(!validateShape(ring));
-        latlong.set("slices", 512);
-        latlong.set("stacks", 256);
+        latlong.set(simcore::Param::Slices, 512);
+        latlong.set(simcore::Param::Stacks, 256);
         QVERIFY(!validateShape(latlong));
         QVERIFY(memoryBoundBytes(bodySize(latlong)) <= kMemoryLimitBytes);
     }

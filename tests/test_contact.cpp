@@ -40,7 +40,7 @@ Eigen::Matrix3Xd inContact(const Simulation& sim, double depth) {
 // The contact force alone: F(contact = force) - F(contact = projection) at the same state.
 Eigen::VectorXd contactForce(const ParameterSet& p, const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v) {
     ParameterSet off = p;
-    off.set("contact", 1.0);
+    off.set(simcore::Param::Contact, 1.0);
     Simulation a(p, "rk4"), b(off, "rk4");
     a.setState(x, v);
     b.setState(x, v);
@@ -87,7 +87,7 @@ private slots:
         // -dU/dx, checked by central differences of the energy the ledger books.
         QFETCH(int, kind);
         ParameterSet p = params(SceneKind(kind), {{"gravity", 0.0}});
-        if (SceneKind(kind) == SceneKind::Sphere3d) p.set("subdivisions", 1.0);
+        if (SceneKind(kind) == SceneKind::Sphere3d) p.set(simcore::Param::Subdivisions, 1.0);
         Simulation sim(p, "rk4");
         const Eigen::Matrix3Xd x = inContact(sim, 0.04);
         const Eigen::Matrix3Xd v = Eigen::Matrix3Xd::Zero(3, x.cols());
@@ -116,7 +116,7 @@ private slots:
         // against central differences, with the body moving into the floor and sideways.
         ParameterSet p = params(SceneKind::Ring2d, {{"gravity", 0.0}, {"restitution", 0.4}});
         ParameterSet off = p;
-        off.set("contact", 1.0);
+        off.set(simcore::Param::Contact, 1.0);
         Simulation sim(p, "implicit-euler"), plain(off, "implicit-euler");
         Eigen::Matrix3Xd x = sim.positions();
         const double floor = sim.boxCentre().y() - sim.boxHalfSize();
@@ -262,7 +262,7 @@ private slots:
             return sim.velocities()(1, 1) / speed;
         };
         Diagnostics d;
-        const double speed = ParameterSet(SceneKind::Spring1d).get("contact_speed");
+        const double speed = ParameterSet(SceneKind::Spring1d).get(simcore::Param::ContactSpeed);
         const double measured = rebound(speed, &d);
         QVERIFY2(std::abs(measured - e) < 1e-4, qPrintable(QString::number(measured)));
         QVERIFY(std::abs(d.removedContact - 0.5 * speed * speed * (1.0 - measured * measured)) < 1e-6 * speed * speed);
@@ -277,13 +277,13 @@ private slots:
         // ring rebounds but less than an ideal elastic body, and the projection reflects every
         // particle at exactly e whatever the speed.
         const ParameterSet ring(SceneKind::Ring2d);
-        const ImpactRow atReference = measureImpact(ring, "rk4", ring.get("contact_speed"));
-        QVERIFY(std::abs(atReference.particle - ring.get("restitution")) < 1e-3);
+        const ImpactRow atReference = measureImpact(ring, "rk4", ring.get(simcore::Param::ContactSpeed));
+        QVERIFY(std::abs(atReference.particle - ring.get(simcore::Param::Restitution)) < 1e-3);
         QVERIFY2(atReference.body > 0.2 && atReference.body < 0.9, qPrintable(QString::number(atReference.body)));
         QVERIFY(atReference.depth > 0.0 && atReference.depth < 0.1);
         ParameterSet projection = ring;
-        projection.set("contact", 1.0);
-        QCOMPARE(measureImpact(projection, "rk4", 10.0).particle, ring.get("restitution"));
+        projection.set(simcore::Param::Contact, 1.0);
+        QCOMPARE(measureImpact(projection, "rk4", 10.0).particle, ring.get(simcore::Param::Restitution));
     }
 
     void threadsAndEndOfStepReuseChangeNoBit() {
@@ -330,7 +330,7 @@ private slots:
         // rk4 limit lies within 15 % of the measured one on the default ring.
         const ParameterSet force(SceneKind::Ring2d);
         ParameterSet projection = force;
-        projection.set("contact", 1.0);
+        projection.set(simcore::Param::Contact, 1.0);
         const LinearModes with = linearModes(force), without = linearModes(projection);
         QVERIFY(with.omegaMax > 1.2 * without.omegaMax);
         StabilitySpec spec;
@@ -347,7 +347,7 @@ private slots:
         // no contact energy; the post-step projection books what it changes, once per step.
         ParameterSet p(SceneKind::Ring2d);
         QVERIFY(!p.assign("contact=projection"));
-        QCOMPARE(p.get("contact"), 1.0);
+        QCOMPARE(p.get(simcore::Param::Contact), 1.0);
         QVERIFY(p.assign("contact=sideways").has_value());
         Simulation sim(p, "rk4");
         QVERIFY(sim.contactProjection());
@@ -359,7 +359,7 @@ private slots:
         QCOMPARE(sim.forces().evaluations(Term::Collisions), std::uint64_t(d.step));
         const SceneFileResult file = parseSceneFile(R"({"format": "elastic-lab-scene", "version": 2, "scene": "ring2d", "parameters": {"contact": "projection"}})");
         QVERIFY2(file.file.has_value(), file.error.c_str());
-        QCOMPARE(file.file->params.get("contact"), 1.0);
+        QCOMPARE(file.file->params.get(simcore::Param::Contact), 1.0);
     }
 };
 

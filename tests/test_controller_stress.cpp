@@ -22,8 +22,8 @@ simcore::ParameterSet smallScene(std::mt19937& rng) {
     const simcore::SceneKind kinds[] = {simcore::SceneKind::Spring1d, simcore::SceneKind::Ring2d,
                                         simcore::SceneKind::Sphere3d, simcore::SceneKind::Sphere3dLatLong};
     simcore::ParameterSet p(kinds[rng() % 4]);
-    if (p.kind() == simcore::SceneKind::Sphere3d) p.set("subdivisions", double(rng() % 3));
-    if (p.kind() == simcore::SceneKind::Ring2d) p.set("particles", double(3 + rng() % 40));
+    if (p.kind() == simcore::SceneKind::Sphere3d) p.set(simcore::Param::Subdivisions, double(rng() % 3));
+    if (p.kind() == simcore::SceneKind::Ring2d) p.set(simcore::Param::Particles, double(3 + rng() % 40));
     return p;
 }
 

@@ -23,7 +23,7 @@ ParameterSet oscillator() {
 // Position error of the moving particle at T = 2 s against the closed form.
 double errorAt(const std::string& integrator, double tol) {
     ParameterSet p = oscillator();
-    p.set("dt", 0.01);
+    p.set(simcore::Param::Dt, 0.01);
     Simulation sim(p, integrator);
     IntegratorOptions o;
     o.atol = o.rtol = tol;
@@ -178,8 +178,8 @@ private slots:
         // 1.8 mm at that sample against 1e-7 elsewhere), and the samples agree with rk45.
         ParameterSet p(SceneKind::Ring2d);
         for (const char* key : {"ks", "kd", "rks", "rkd"}) p.set(key, 1e4);
-        p.set("gravity", 0.0);
-        p.set("perturb", 0.1);
+        p.set(simcore::Param::Gravity, 0.0);
+        p.set(simcore::Param::Perturb, 0.1);
         Simulation a(p, "cvode-bdf"), r(p, "rk45");
         IntegratorOptions o;
         o.atol = o.rtol = 1e-7;
@@ -233,7 +233,7 @@ private slots:
     void projectionContactReinitialises() {
         // contact = projection moves particles between steps: each such step restarts CVODE.
         ParameterSet p = ring();
-        p.set("contact", 1.0);
+        p.set(simcore::Param::Contact, 1.0);
         Simulation sim(p, "cvode-bdf");
         sim.setThreads(1);
         QVERIFY(sim.advanceTo(1.5));

@@ -131,10 +131,10 @@ private slots:
         // Gravity off, box far away: only internal forces act, so total momentum stays put.
         QFETCH(QString, scene);
         ParameterSet p(findScene(scene == "latlong" ? "sphere3d-latlong" : scene.toStdString())->kind);
-        QVERIFY(!p.set("gravity", 0.0));
-        QVERIFY(!p.set("box", 1000.0));
-        QVERIFY(!p.set("perturb", 0.1));
-        QVERIFY(!p.set("mass_inner", 3.0));
+        QVERIFY(!p.set(simcore::Param::Gravity, 0.0));
+        QVERIFY(!p.set(simcore::Param::Box, 1000.0));
+        QVERIFY(!p.set(simcore::Param::Perturb, 0.1));
+        QVERIFY(!p.set(simcore::Param::MassInner, 3.0));
         Simulation sim(p, "rk4");
         Eigen::Matrix3Xd vel = Eigen::Matrix3Xd::Random(3, sim.particleCount());
         if (sim.topology().dimension == 2) vel.row(2).setZero();

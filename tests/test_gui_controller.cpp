@@ -16,7 +16,7 @@ namespace {
 
 simcore::ParameterSet ring(double dt = 0.003) {
     simcore::ParameterSet p(simcore::SceneKind::Ring2d);
-    p.set("dt", dt);
+    p.set(simcore::Param::Dt, dt);
     return p;
 }
 
@@ -128,17 +128,17 @@ private slots:
         c.setParameter("ks", 1234.0);
         c.setParameter("dt", 0.001);
         QVERIFY(waitFor(c, [](const Frame& f) {
-            return f.parameters.get("ks") == 1234.0 && f.lanes[0].diagnostics.dt == 0.001;
+            return f.parameters.get(simcore::Param::Ks) == 1234.0 && f.lanes[0].diagnostics.dt == 0.001;
         }));
         QVERIFY(c.latest()->running);  // a live edit does not stop the run
-        QCOMPARE(c.latest()->parameters.get("ks"), 1234.0);
+        QCOMPARE(c.latest()->parameters.get(simcore::Param::Ks), 1234.0);
         // The same table validates: out of range and keys the scene lacks are refused.
         c.setParameter("ks", -1.0);
         c.setParameter("length", 2.0);  // a 1D key
         QVERIFY(testsupport::waitUntil([&] { return rejected.count() == 2; }));
         QVERIFY(rejected.at(0).at(1).toString().contains("out of range"));
         QCOMPARE(rejected.at(1).at(0).toString(), QString("length"));
-        QCOMPARE(c.latest()->parameters.get("ks"), 1234.0);
+        QCOMPARE(c.latest()->parameters.get(simcore::Param::Ks), 1234.0);
         c.pause();
     }
 

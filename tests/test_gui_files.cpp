@@ -69,8 +69,8 @@ bool stepBy(SimulationController& c, int count) {
 
 simcore::ParameterSet sceneParams(const QString& scene) {
     simcore::ParameterSet p(simcore::findScene(scene.toStdString())->kind);
-    p.set("ks", 900.5);
-    p.set("perturb", 0.01);  // an asymmetric start: every particle moves differently
+    p.set(simcore::Param::Ks, 900.5);
+    p.set(simcore::Param::Perturb, 0.01);  // an asymmetric start: every particle moves differently
     return p;
 }
 
@@ -377,7 +377,7 @@ private slots:
         // at the default DT with rk4. The window says so before anything runs, shows what the
         // body uses per particle, and one click sets the predicted stable DT, which runs.
         simcore::ParameterSet p(simcore::SceneKind::Ring2d);
-        p.set("particles", 96);
+        p.set(simcore::Param::Particles, 96);
         simcore::Simulation probe(p, "rk4");
         const auto advice = simcore::stabilityAdvice(probe);
         QVERIFY(advice);
@@ -393,7 +393,7 @@ private slots:
         QCOMPARE(scaling->currentText(), QString("physical"));
         QVERIFY(window.useSuggestedDtButton()->text().contains(QString::number(advice->suggestedDt)));
         window.useSuggestedDtButton()->click();
-        QVERIFY(waitUntil([&] { return c->parameters().get("dt") == advice->suggestedDt; }));
+        QVERIFY(waitUntil([&] { return c->parameters().get(simcore::Param::Dt) == advice->suggestedDt; }));
         QVERIFY(window.stabilityText().isEmpty());
         c->run();
         QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.lanes.front().diagnostics.time > 0.3; }));
@@ -403,8 +403,8 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath("squashed.json");
         simcore::ParameterSet p(simcore::SceneKind::Sphere3d);
-        p.set("ks", 950);
-        p.set("dt", 0.002);
+        p.set(simcore::Param::Ks, 950);
+        p.set(simcore::Param::Dt, 0.002);
         simcore::Simulation sim(p, "verlet");
         QVERIFY(sim.advanceTo(0.25));
         QCOMPARE(writeFile(path, QByteArray::fromStdString(simcore::sceneFileText(sim, "sphere3d", true))), QString());
@@ -460,13 +460,13 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath("ring.json");
         simcore::ParameterSet p(simcore::SceneKind::Ring2d);
-        p.set("ks", 950);
+        p.set(simcore::Param::Ks, 950);
         const simcore::Simulation sim(p, "rk4");
         QCOMPARE(writeFile(path, QByteArray::fromStdString(simcore::sceneFileText(sim, "ring2d", true))), QString());
         const QByteArray original = readAll(path);
         auto savedKs = [&] {
             const simcore::SceneFileResult read = simcore::readSceneFile(path.toStdString());
-            return read.file ? read.file->params.get("ks") : -1.0;
+            return read.file ? read.file->params.get(simcore::Param::Ks) : -1.0;
         };
 
         MainWindow window(false);

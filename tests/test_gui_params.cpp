@@ -44,14 +44,14 @@ private slots:
                 QComboBox* box = dock.form()->choice(toQString(spec->key));
                 QVERIFY(box);
                 QVERIFY(!dock.form()->field(toQString(spec->key)));
-                QCOMPARE(box->currentIndex(), int(simcore::ParameterSet(kind).get(spec->key)));
+                QCOMPARE(box->currentIndex(), int(simcore::ParameterSet(kind).get(spec->id)));
                 QCOMPARE(box->itemText(1), QString::fromStdString(spec->choiceName(1)));
                 QVERIFY(box->toolTip().contains(toQString(spec->meaning).toHtmlEscaped()));
                 continue;
             }
             QLineEdit* edit = dock.form()->field(toQString(spec->key));
             QVERIFY(edit);
-            QCOMPARE(edit->text().toDouble(), simcore::ParameterSet(kind).get(spec->key));
+            QCOMPARE(edit->text().toDouble(), simcore::ParameterSet(kind).get(spec->id));
             const QString tip = edit->toolTip();
             QVERIFY2(tip.contains(toQString(spec->meaning).toHtmlEscaped()), qPrintable(tip));
             QVERIFY(tip.contains(QString::fromStdString(spec->rangeText())));
@@ -64,15 +64,15 @@ private slots:
 
     void valuesRoundTrip() {
         simcore::ParameterSet params(SceneKind::Sphere3d);
-        QVERIFY(!params.set("ks", 1234.5));
-        QVERIFY(!params.set("pressure_inner", 7.25));
-        QVERIFY(!params.set("mass_outer", 0.125));
-        QVERIFY(!params.set("seed", 42));
+        QVERIFY(!params.set(simcore::Param::Ks, 1234.5));
+        QVERIFY(!params.set(simcore::Param::PressureInner, 7.25));
+        QVERIFY(!params.set(simcore::Param::MassOuter, 0.125));
+        QVERIFY(!params.set(simcore::Param::Seed, 42));
         ParameterDock dock;
         dock.showParameters(params);
         const simcore::ParameterSet shown = dock.form()->values();
         for (const QString& key : dock.form()->keys())
-            QCOMPARE(shown.get(key.toStdString()), params.get(key.toStdString()));
+            QCOMPARE(shown.get(simcore::findParam(key.toStdString())->id), params.get(simcore::findParam(key.toStdString())->id));
         // pressure_outer still inherits pressure (20), pressure_inner is its own.
         QCOMPARE(dock.form()->field("pressure_outer")->text(), QString("20"));
         QCOMPARE(dock.form()->field("pressure_inner")->text(), QString("7.25"));
@@ -92,7 +92,7 @@ private slots:
         QCOMPARE(edited.count(), 1);
         // Showing new values from the model does not echo back as an edit.
         simcore::ParameterSet p(SceneKind::Ring2d);
-        p.set("ks", 10.0);
+        p.set(simcore::Param::Ks, 10.0);
         dock.showParameters(p);
         QCOMPARE(edited.count(), 1);
         QCOMPARE(ks->text(), QString("10"));
@@ -137,7 +137,7 @@ private slots:
         QCOMPARE(shape.kind(), kind);
         int count = 0;
         for (const simcore::ParamSpec* spec : simcore::parametersFor(kind)) {
-            QCOMPARE(shape.isExplicit(spec->key), spec->isShape());
+            QCOMPARE(shape.isExplicit(spec->id), spec->isShape());
             count += spec->isShape();
         }
         QVERIFY(count >= 1);

@@ -169,7 +169,7 @@ private slots:
         window.startScene(simcore::ParameterSet(SceneKind::Ring2d), {"rk4"});
         QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, testsupport::kHangGuardMs);
         window.controller()->setParameter("ks", 500.0);
-        QTRY_COMPARE_WITH_TIMEOUT(window.controller()->parameters().get("ks"), 500.0, testsupport::kHangGuardMs);
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller()->parameters().get(simcore::Param::Ks), 500.0, testsupport::kHangGuardMs);
         // Choose the sphere, level 1, and rebuild from the dock.
         SceneDock* dock = window.sceneDock();
         dock->sceneCombo()->setCurrentIndex(dock->sceneCombo()->findText("sphere3d"));
@@ -181,7 +181,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest()->scene->kind == SceneKind::Sphere3d, testsupport::kHangGuardMs);
         const FramePtr f = window.controller()->latest();
         QCOMPARE(f->scene->topology.particleCount(), 2 * 18);  // 4 * 4^1 + 2 per layer
-        QCOMPARE(f->parameters.get("ks"), 500.0);            // the edit carried over
+        QCOMPARE(f->parameters.get(simcore::Param::Ks), 500.0);            // the edit carried over
         QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->plotIds(), (QStringList{"volume", "pressure", "energy"}), testsupport::kHangGuardMs);
     }
 
@@ -268,7 +268,7 @@ private slots:
         QVERIFY(dialog.result().rows.empty());
 
         simcore::ParameterSet ring(SceneKind::Ring2d);
-        ring.set("gravity", 0.0);
+        ring.set(simcore::Param::Gravity, 0.0);
         RefinementDialog small(ring);
         small.setLevels("12 24 48");
         small.setDuration(0.1);
@@ -298,7 +298,7 @@ private slots:
         // A long scan (a sphere for 3 s per trial, seconds in Release) stops within one step of
         // Cancel, keeps only whole rows, and can run again.
         simcore::ParameterSet sphere(SceneKind::Sphere3d);
-        sphere.set("subdivisions", 1);
+        sphere.set(simcore::Param::Subdivisions, 1);
         StabilityDialog dialog(sphere);
         dialog.setDuration(3.0);
         QSignalSpy finished(&dialog, &StudyDialogBase::finished);
@@ -351,7 +351,7 @@ private slots:
         QFETCH(QString, contact);
         simcore::ParameterSet params(kind);
         QVERIFY(!params.assign("contact=" + contact.toStdString()).has_value());
-        if (kind == SceneKind::Sphere3d) params.set("subdivisions", 1);
+        if (kind == SceneKind::Sphere3d) params.set(simcore::Param::Subdivisions, 1);
         const std::array<bool, 3> families = familiesOf(params);
         EnergyBarsDock bars;
         bars.setScene(kind, families);
@@ -414,7 +414,7 @@ private slots:
         // Side by side: one bar per lane in every group, each lane its own diagnostics, the
         // term's colour in every lane (lanes differ by fill pattern), named in the title.
         simcore::ParameterSet params(SceneKind::Ring2d);
-        params.set("dt", 0.005);
+        params.set(simcore::Param::Dt, 0.005);
         std::vector<std::pair<QString, simcore::Diagnostics>> lanes;
         for (const char* name : {"euler", "midpoint", "rk4"}) lanes.emplace_back(name, runRows(params, 100, name).back());
         EnergyBarsDock bars;
@@ -445,9 +445,9 @@ private slots:
         // |P V / c - 1| <= 2u = 2.2e-16; the tolerance 1e-14 leaves room and still fails for
         // any other c (the two layers' c differ by a factor 2 here) or a V from another row.
         simcore::ParameterSet params(SceneKind::Sphere3d);
-        params.set("subdivisions", 1);
-        params.set("pressure_inner", 30.0);
-        params.set("pressure_outer", 15.0);
+        params.set(simcore::Param::Subdivisions, 1);
+        params.set(simcore::Param::PressureInner, 30.0);
+        params.set(simcore::Param::PressureOuter, 15.0);
         PvDock pv;
         pv.setScene(SceneKind::Sphere3d);
         pv.setParameters(params);

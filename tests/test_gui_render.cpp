@@ -158,7 +158,7 @@ private slots:
             QTRY_VERIFY_WITH_TIMEOUT(v->isVisible() && v->width() > 100, testsupport::kHangGuardMs);
             QVERIFY(census(v->grabFramebuffer()).changed > 0.03);
         }
-        QCOMPARE(w.controller()->latest()->parameters.get("dt"), 0.03);
+        QCOMPARE(w.controller()->latest()->parameters.get(simcore::Param::Dt), 0.03);
         w.controller()->runUntil(2.0);
         // On the two-layer ring at DT 0.03 every explicit method blows up within a second
         // (measured with elastic-lab-cli); when all lanes have failed the run pauses by itself.
@@ -170,7 +170,7 @@ private slots:
         }
         // At DT 0.003 none fails, all reach the same time and they differ.
         w.applyPreset(stabilityPresets().at(0));
-        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->parameters.get("dt") == 0.003 &&
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->parameters.get(simcore::Param::Dt) == 0.003 &&
                                      !w.controller()->latest()->lanes[0].failure, testsupport::kHangGuardMs);
         w.controller()->runUntil(1.0);
         QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() &&
@@ -197,7 +197,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
         simcore::ParameterSet p(kind);
-        p.set("gravity", 0.0);
+        p.set(simcore::Param::Gravity, 0.0);
         w.startScene(p, {"rk4"});
         QVERIFY(waitForScene(w, kind));
         Viewport* v = w.viewports().front();

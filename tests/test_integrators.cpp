@@ -13,18 +13,18 @@ namespace {
 // spring1d hanging from a fixed top, no walls in reach: a damped linear oscillator.
 ParameterSet oscillator(double kd) {
     ParameterSet p(SceneKind::Spring1d);
-    p.set("ks", 100.0);
-    p.set("kd", kd);
-    p.set("mass", 1.0);
-    p.set("length", 1.0);
-    p.set("initial_length", 1.5);
-    p.set("box", 1000.0);
+    p.set(simcore::Param::Ks, 100.0);
+    p.set(simcore::Param::Kd, kd);
+    p.set(simcore::Param::Mass, 1.0);
+    p.set(simcore::Param::Length, 1.0);
+    p.set(simcore::Param::InitialLength, 1.5);
+    p.set(simcore::Param::Box, 1000.0);
     return p;
 }
 
 // Position error of the moving particle at t = T against the closed form.
 double errorAt(ParameterSet p, const std::string& integrator, double dt, double T) {
-    p.set("dt", dt);
+    p.set(simcore::Param::Dt, dt);
     Simulation sim(p, integrator);
     if (!sim.advanceTo(T)) return std::nan("");
     Eigen::Matrix3Xd x, v;
@@ -100,10 +100,10 @@ private slots:
         QFETCH(QString, integrator);
         QFETCH(bool, exact);
         ParameterSet p(SceneKind::Spring1d);
-        p.set("fixed_end", 0.0);
-        p.set("initial_length", 1.0);
-        p.set("box", 1000.0);
-        p.set("dt", 0.01);
+        p.set(simcore::Param::FixedEnd, 0.0);
+        p.set(simcore::Param::InitialLength, 1.0);
+        p.set(simcore::Param::Box, 1000.0);
+        p.set(simcore::Param::Dt, 0.01);
         Simulation sim(p, integrator.toStdString());
         QVERIFY(sim.advanceTo(1.0));
         const double t = sim.time();
@@ -122,9 +122,9 @@ private slots:
     void freeOscillatorMatchesClosedForm() {
         // Both ends free with gravity: centre of mass falls, separation oscillates.
         ParameterSet p(SceneKind::Spring1d);
-        p.set("fixed_end", 0.0);
-        p.set("box", 1000.0);
-        p.set("dt", 0.001);
+        p.set(simcore::Param::FixedEnd, 0.0);
+        p.set(simcore::Param::Box, 1000.0);
+        p.set(simcore::Param::Dt, 0.001);
         Simulation sim(p, "rk4");
         QVERIFY(sim.advanceTo(1.0));
         Eigen::Matrix3Xd x, v;
@@ -144,7 +144,7 @@ private slots:
     void longRunsLandOnTheirEndTime() {
         // 10^6 steps of 1 ms: the step count is exact (no extra step from summed round-off).
         ParameterSet p = oscillator(1.0);
-        p.set("dt", 0.001);
+        p.set(simcore::Param::Dt, 0.001);
         Simulation sim(p, "euler");
         QVERIFY(sim.advanceTo(1000.0));
         QCOMPARE(sim.stepCount(), 1000000L);

@@ -45,7 +45,7 @@ struct Run {
 
 Run runPair(const std::string& integrator, double h, int steps, double kd = 0.0) {
     ParameterSet p = freePair(kd);
-    p.set("dt", h);
+    p.set(simcore::Param::Dt, h);
     Simulation sim(p, integrator);
     IntegratorOptions o;
     o.fixedStep = true;
@@ -217,7 +217,7 @@ private slots:
         QVERIFY(std::abs(predictedStableStep("euler", linearModes(p)) - limit) < 1e-6 * limit);
         auto amplitudeRatio = [&](double h) {
             ParameterSet q = p;
-            q.set("dt", h);
+            q.set(simcore::Param::Dt, h);
             Simulation sim(q, "euler");
             const double y0 = sim.positions()(1, 1) + 1.0;  // displacement from rest (y = -L0)
             sim.advanceTo(20.0);
@@ -266,7 +266,7 @@ private slots:
         // rank-one and pressure terms included.
         for (SceneKind kind : {SceneKind::Ring2d, SceneKind::Sphere3d}) {
             ParameterSet p(kind);
-            if (kind == SceneKind::Sphere3d) p.set("subdivisions", 1.0);
+            if (kind == SceneKind::Sphere3d) p.set(simcore::Param::Subdivisions, 1.0);
             Simulation sim(p, "implicit-euler");
             Eigen::Matrix3Xd x = sim.positions() * 1.1;
             sim.setState(x, Eigen::Matrix3Xd::Zero(3, sim.particleCount()));

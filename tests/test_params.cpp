@@ -15,16 +15,16 @@ private slots:
     void thesisDefaults() {
         // Thesis §7.2.1: KS 800, KD 15, RKS 700, RKD 50, MKS 150, MKD 25, PRESSURE 20, MASS 1, DT 0.003.
         ParameterSet p(SceneKind::Ring2d);
-        QCOMPARE(p.get("ks"), 800.0);
-        QCOMPARE(p.get("kd"), 15.0);
-        QCOMPARE(p.get("rks"), 700.0);
-        QCOMPARE(p.get("rkd"), 50.0);
-        QCOMPARE(p.get("mks"), 150.0);
-        QCOMPARE(p.get("mkd"), 25.0);
-        QCOMPARE(p.get("pressure"), 20.0);
-        QCOMPARE(p.get("mass"), 1.0);
-        QCOMPARE(p.get("dt"), 0.003);
-        QCOMPARE(p.get("gravity"), 9.81);
+        QCOMPARE(p.get(simcore::Param::Ks), 800.0);
+        QCOMPARE(p.get(simcore::Param::Kd), 15.0);
+        QCOMPARE(p.get(simcore::Param::Rks), 700.0);
+        QCOMPARE(p.get(simcore::Param::Rkd), 50.0);
+        QCOMPARE(p.get(simcore::Param::Mks), 150.0);
+        QCOMPARE(p.get(simcore::Param::Mkd), 25.0);
+        QCOMPARE(p.get(simcore::Param::Pressure), 20.0);
+        QCOMPARE(p.get(simcore::Param::Mass), 1.0);
+        QCOMPARE(p.get(simcore::Param::Dt), 0.003);
+        QCOMPARE(p.get(simcore::Param::Gravity), 9.81);
     }
     void everyRequiredKeyExists() {
         for (const char* key : {"ks", "kd", "rks", "rkd", "mks", "mkd", "pressure", "mass", "mass_inner",
@@ -38,23 +38,23 @@ private slots:
         ParameterSet p(SceneKind::Spring1d);
         for (const char* key : {"pressure", "rks", "rkd", "mass_inner", "particles", "radius_inner"})
             QVERIFY2(p.set(key, 1.0).has_value(), key);
-        QVERIFY(!p.set("ks", 10.0).has_value());
+        QVERIFY(!p.set(simcore::Param::Ks, 10.0).has_value());
         ParameterSet ring(SceneKind::Ring2d);
-        QVERIFY(ring.set("length", 1.0).has_value());
-        QVERIFY(ring.set("subdivisions", 1.0).has_value());
-        QVERIFY(!ring.set("particles", 20.0).has_value());
+        QVERIFY(ring.set(simcore::Param::Length, 1.0).has_value());
+        QVERIFY(ring.set(simcore::Param::Subdivisions, 1.0).has_value());
+        QVERIFY(!ring.set(simcore::Param::Particles, 20.0).has_value());
     }
     void layerValuesInheritUntilSet() {
         ParameterSet p(SceneKind::Sphere3d);
-        QVERIFY(!p.set("mass", 2.0));
-        QCOMPARE(p.get("mass_inner"), 2.0);
-        QCOMPARE(p.get("mass_outer"), 2.0);
-        QVERIFY(!p.set("mass_inner", 100.0));
-        QVERIFY(!p.set("mass", 3.0));
-        QCOMPARE(p.get("mass_inner"), 100.0);  // explicit wins whatever the order
-        QCOMPARE(p.get("mass_outer"), 3.0);
-        QVERIFY(!p.set("pressure", 50.0));
-        QCOMPARE(p.get("pressure_inner"), 50.0);
+        QVERIFY(!p.set(simcore::Param::Mass, 2.0));
+        QCOMPARE(p.get(simcore::Param::MassInner), 2.0);
+        QCOMPARE(p.get(simcore::Param::MassOuter), 2.0);
+        QVERIFY(!p.set(simcore::Param::MassInner, 100.0));
+        QVERIFY(!p.set(simcore::Param::Mass, 3.0));
+        QCOMPARE(p.get(simcore::Param::MassInner), 100.0);  // explicit wins whatever the order
+        QCOMPARE(p.get(simcore::Param::MassOuter), 3.0);
+        QVERIFY(!p.set(simcore::Param::Pressure, 50.0));
+        QCOMPARE(p.get(simcore::Param::PressureInner), 50.0);
     }
     void refusesBadValues_data() {
         QTest::addColumn<QString>("assignment");
@@ -87,7 +87,7 @@ private slots:
     }
     void messagesSayWhatIsAllowed() {
         ParameterSet p(SceneKind::Ring2d);
-        const auto error = p.set("restitution", 2.0);
+        const auto error = p.set(simcore::Param::Restitution, 2.0);
         QVERIFY(error);
         QVERIFY2(QString::fromStdString(*error).contains("[0, 1]"), error->c_str());
     }

@@ -41,9 +41,9 @@ namespace {
 
 ParameterSet largeSphere(int level) {
     ParameterSet p(SceneKind::Sphere3d);
-    p.set("scaling", 1.0);  // the performance paths run the thesis's per-particle body (performance.md)
-    p.set("subdivisions", level);
-    p.set("perturb", 0.02);
+    p.set(simcore::Param::Scaling, 1.0);  // the performance paths run the thesis's per-particle body (performance.md)
+    p.set(simcore::Param::Subdivisions, level);
+    p.set(simcore::Param::Perturb, 0.02);
     return p;
 }
 
@@ -64,12 +64,12 @@ private slots:
         QFETCH(int, kind);
         QFETCH(int, size);
         ParameterSet p{SceneKind(kind)};
-        if (kind == int(SceneKind::Sphere3d)) p.set("subdivisions", size);
+        if (kind == int(SceneKind::Sphere3d)) p.set(simcore::Param::Subdivisions, size);
         if (kind == int(SceneKind::Sphere3dLatLong)) {
-            p.set("slices", size);
-            p.set("stacks", size / 2);
+            p.set(simcore::Param::Slices, size);
+            p.set(simcore::Param::Stacks, size / 2);
         }
-        if (kind == int(SceneKind::Ring2d)) p.set("particles", size);
+        if (kind == int(SceneKind::Ring2d)) p.set(simcore::Param::Particles, size);
         Body body = buildBody(p);
         const Eigen::Index n3 = 3 * body.topology.particleCount();
         std::mt19937 rng(4);
@@ -130,18 +130,18 @@ private slots:
         if (kernels::widestKernels() == kernels::KernelSet::Portable) QSKIP("this CPU has neither AVX2 nor AVX-512");
         QFETCH(QString, scene);
         ParameterSet p(findScene(scene.toStdString())->kind);
-        p.set("scaling", 1.0);  // the thesis's per-particle body, as performance.md measures it
-        if (scene == "sphere3d") p.set("subdivisions", 4);
+        p.set(simcore::Param::Scaling, 1.0);  // the thesis's per-particle body, as performance.md measures it
+        if (scene == "sphere3d") p.set(simcore::Param::Subdivisions, 4);
         if (scene == "sphere3d-latlong") {
-            p.set("slices", 31);  // block remainders: neither springs nor faces a multiple of 8,
-            p.set("stacks", 16);  // and an odd number of quads (checked below)
+            p.set(simcore::Param::Slices, 31);  // block remainders: neither springs nor faces a multiple of 8,
+            p.set(simcore::Param::Stacks, 16);  // and an odd number of quads (checked below)
         }
-        if (scene == "ring2d") p.set("particles", 3001);
+        if (scene == "ring2d") p.set(simcore::Param::Particles, 3001);
         // Below the fine ring's particle spacing (4 mm): a larger jitter crumples its outer
         // layer, turning tangent planes around and pushing inner particles through the layer barrier.
-        p.set("perturb", scene == "ring2d" ? 0.002 : 0.02);
-        p.set("gravity", 0.0);  // no floor contact: every step exercises only the forces
-        p.set("dt", 5e-4);      // within the stability limit of the finest lat/long cells
+        p.set(simcore::Param::Perturb, scene == "ring2d" ? 0.002 : 0.02);
+        p.set(simcore::Param::Gravity, 0.0);  // no floor contact: every step exercises only the forces
+        p.set(simcore::Param::Dt, 5e-4);      // within the stability limit of the finest lat/long cells
         bool stepped = true;
         auto run = [&](kernels::KernelSet set) {
             const kernels::KernelSet inUse = kernels::useKernels(set);
@@ -258,9 +258,9 @@ private slots:
         QFETCH(QString, integrator);
         QFETCH(int, threads);
         ParameterSet p(findScene(scene.toStdString())->kind);
-        p.set("scaling", 1.0);  // the thesis's per-particle body, as performance.md measures it
-        if (scene == "sphere3d") p.set("subdivisions", 4);
-        p.set("perturb", 0.01);
+        p.set(simcore::Param::Scaling, 1.0);  // the thesis's per-particle body, as performance.md measures it
+        if (scene == "sphere3d") p.set(simcore::Param::Subdivisions, 4);
+        p.set(simcore::Param::Perturb, 0.01);
         Simulation sim(p, integrator.toStdString());
         sim.setThreads(threads);
         sim.grab(sim.nearestGrabbable(Eigen::Vector3d(0, 3, 0)), Eigen::Vector3d(0.5, 3, 0));
@@ -287,11 +287,11 @@ private slots:
         QFETCH(QString, key);
         QFETCH(int, value);
         ParameterSet p(findScene(scene.toStdString())->kind);
-        p.set("scaling", 1.0);  // the thesis's per-particle body, as performance.md measures it
+        p.set(simcore::Param::Scaling, 1.0);  // the thesis's per-particle body, as performance.md measures it
         p.set(key.toStdString(), value);
-        if (scene == "sphere3d-latlong") p.set("stacks", value / 2);
-        p.set("gravity", 0.0);  // only the memory matters here: keep every integrator stable
-        p.set("dt", 1e-4);
+        if (scene == "sphere3d-latlong") p.set(simcore::Param::Stacks, value / 2);
+        p.set(simcore::Param::Gravity, 0.0);  // only the memory matters here: keep every integrator stable
+        p.set(simcore::Param::Dt, 1e-4);
         const double bound = memoryBoundBytes(bodySize(p));
         auto liveHeap = [] {
             const struct mallinfo2 m = mallinfo2();

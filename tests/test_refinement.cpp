@@ -73,9 +73,9 @@ private slots:
         const RefinementSpec spec = weightlessRing({12, 48});
         const auto [dt, rule] = refinementStep(spec);
         QVERIFY(isWholeMultiple(spec.interval, dt));
-        QVERIFY(dt <= 0.25 * spec.params.get("dt"));
+        QVERIFY(dt <= 0.25 * spec.params.get(simcore::Param::Dt));
         ParameterSet finest = refinementLevel(spec, 48);
-        finest.set("dt", dt);
+        finest.set(simcore::Param::Dt, dt);
         QVERIFY(!stabilityAdvice(Simulation(finest, "rk4")).has_value());
         QVERIFY(rule.find("quarter") != std::string::npos);
         // A given step is used as given.
@@ -113,7 +113,7 @@ private slots:
         spec.params = ParameterSet(SceneKind::Sphere3dLatLong);
         spec.key = refinementKey(SceneKind::Sphere3dLatLong);
         QCOMPARE(spec.key, std::string("slices"));
-        QCOMPARE(refinementLevel(spec, 16).getInt("stacks"), 8);
+        QCOMPARE(refinementLevel(spec, 16).getInt(simcore::Param::Stacks), 8);
         QCOMPARE(refinementKey(SceneKind::Sphere3d), std::string("subdivisions"));
         QVERIFY(refinementKey(SceneKind::Spring1d).empty());
     }

@@ -31,8 +31,8 @@ struct Equilibrium {
     double volumeInner = 0.0, volumeOuter = 0.0, kinetic = 0.0;
 };
 Equilibrium settle(ParameterSet p) {
-    p.set("gravity", 0.0);
-    p.set("dt", 0.005);
+    p.set(simcore::Param::Gravity, 0.0);
+    p.set(simcore::Param::Dt, 0.005);
     Simulation sim(p, "implicit-euler");
     const bool ok = sim.advanceTo(6.0);
     if (!ok) qFatal("settling failed: %s", sim.failure()->reason.c_str());
@@ -66,7 +66,7 @@ private slots:
         QFETCH(int, kind);
         const auto k = SceneKind(kind);
         ParameterSet physical(k), thesis(k);
-        thesis.set("scaling", 1.0);
+        thesis.set(simcore::Param::Scaling, 1.0);
         physical.set(resolutionKey(k), findParam(resolutionKey(k))->defaultFor(k));
         Simulation a(physical, "rk4"), b(thesis, "rk4");
         QVERIFY(a.scale() == BodyScale{});
@@ -196,7 +196,7 @@ private slots:
             QVERIFY2(e.kinetic < 1e-6, qPrintable(QString("not at rest: %1 J").arg(e.kinetic)));
             physical.push_back(e.volumeInner);
             if (k == SceneKind::Ring2d) {
-                p.set("scaling", 1.0);
+                p.set(simcore::Param::Scaling, 1.0);
                 thesis.push_back(settle(p).volumeInner);
             }
         }
@@ -223,7 +223,7 @@ private slots:
         for (int n : {12, 24, 48, 96}) {
             ParameterSet p = params(SceneKind::Ring2d, {{"particles", double(n)}, {"gravity", 0.0}});
             physical.push_back(lowestElasticOmega(p));
-            p.set("scaling", 1.0);
+            p.set(simcore::Param::Scaling, 1.0);
             thesis.push_back(lowestElasticOmega(p));
             qInfo("n = %d: lowest elastic w = %.5f rad/s (thesis scaling %.5f)", n, physical.back(), thesis.back());
         }
@@ -252,7 +252,7 @@ private slots:
         QVERIFY(advice->suggestedDt > 0.0 && advice->suggestedDt < 0.003);
         // ... and the suggested step runs.
         ParameterSet p = fine.parameters();
-        p.set("dt", advice->suggestedDt);
+        p.set(simcore::Param::Dt, advice->suggestedDt);
         Simulation ok(p, "rk4");
         QVERIFY(!stabilityAdvice(ok));
         QVERIFY(ok.advanceTo(1.0));
@@ -268,7 +268,7 @@ private slots:
             ParameterSet p = params(SceneKind::Sphere3d, {{"subdivisions", 4.0}, {"scaling", scaling}});
             {
                 Simulation probe(p, "rk4");
-                if (const auto advice = stabilityAdvice(probe)) p.set("dt", advice->suggestedDt);
+                if (const auto advice = stabilityAdvice(probe)) p.set(simcore::Param::Dt, advice->suggestedDt);
             }
             Simulation sim(p, "rk4");
             if (!sim.advanceTo(duration)) *failure = sim.failure()->reason;
@@ -290,17 +290,17 @@ private slots:
                                    "parameters": {"subdivisions": 3, "mass": 1}})";
         const auto old = parseSceneFile(v2);
         QVERIFY2(old.file, old.error.c_str());
-        QCOMPARE(old.file->params.get("scaling"), 1.0);
+        QCOMPARE(old.file->params.get(simcore::Param::Scaling), 1.0);
         const auto fresh = parseSceneFile(R"({"format": "elastic-lab-scene", "version": 3, "scene": "sphere3d",
                                              "parameters": {"subdivisions": 3}})");
         QVERIFY2(fresh.file, fresh.error.c_str());
-        QCOMPARE(fresh.file->params.get("scaling"), 0.0);
+        QCOMPARE(fresh.file->params.get(simcore::Param::Scaling), 0.0);
         Simulation sim(params(SceneKind::Sphere3d, {{"subdivisions", 3}}), "rk4");
         const std::string text = sceneFileText(sim, "sphere3d", false);
         QVERIFY(text.find("\"scaling\": \"physical\"") != std::string::npos);
         const auto back = parseSceneFile(text);
         QVERIFY2(back.file, back.error.c_str());
-        QVERIFY(back.file->params.get("scaling") == 0.0);
+        QVERIFY(back.file->params.get(simcore::Param::Scaling) == 0.0);
     }
 };
 

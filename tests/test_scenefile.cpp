@@ -53,9 +53,9 @@ private slots:
         QFETCH(QString, scene);
         QFETCH(QString, integrator);
         ParameterSet p(findScene(scene.toStdString())->kind);
-        p.set("ks", 900.5);
-        p.set("perturb", 0.01);
-        p.set("restitution", 0.3);
+        p.set(simcore::Param::Ks, 900.5);
+        p.set(simcore::Param::Perturb, 0.01);
+        p.set(simcore::Param::Restitution, 0.3);
         Simulation original(p, integrator.toStdString());
         QVERIFY(original.advanceTo(0.5));
         const std::string text = sceneFileText(original, scene.toStdString(), true);
@@ -65,7 +65,7 @@ private slots:
         QCOMPARE(read.file->sceneName, scene.toStdString());
         QCOMPARE(read.file->integrator, integrator.toStdString());
         for (const ParamSpec* spec : parametersFor(p.kind()))
-            QCOMPARE(read.file->params.get(spec->key), p.get(spec->key));
+            QCOMPARE(read.file->params.get(spec->id), p.get(spec->id));
         Simulation resumed(read.file->params, read.file->integrator);
         QVERIFY(!applyState(resumed, *read.file->state));
         QCOMPARE(resumed.state().head(6 * resumed.particleCount()), original.state().head(6 * original.particleCount()));
@@ -159,7 +159,7 @@ private slots:
         // Version 1 with only what is required: every parameter takes its default.
         const SceneFileResult read = parseSceneFile(R"({"format": "elastic-lab-scene", "version": 1, "scene": "sphere3d"})");
         QVERIFY2(read.file, read.error.c_str());
-        QCOMPARE(read.file->params.get("ks"), 800.0);
+        QCOMPARE(read.file->params.get(simcore::Param::Ks), 800.0);
         QCOMPARE(read.file->integrator, std::string("rk4"));
         QVERIFY(!read.file->state);
     }

@@ -44,7 +44,7 @@ private slots:
         QFETCH(int, kind);
         const auto k = SceneKind(kind);
         ParameterSet p = params(k, {{"box", 1000.0}, {"dt", 0.0005}, {"perturb", 0.05}});
-        if (k == SceneKind::Sphere3d) p.set("subdivisions", 1.0);
+        if (k == SceneKind::Sphere3d) p.set(simcore::Param::Subdivisions, 1.0);
         Simulation sim(p, "rk4");
         QVERIFY(sim.advanceTo(1.0));
         const Diagnostics& d = sim.diagnostics();
@@ -282,7 +282,7 @@ private slots:
         QVERIFY(!sim.setParameter("ks", 1600.0));
         QVERIFY(!sim.setParameter("mass_outer", 2.0));
         QVERIFY(sim.setParameter("restitution", 3.0).has_value());  // refused, nothing changes
-        QCOMPARE(sim.parameters().get("restitution"), 0.5);
+        QCOMPARE(sim.parameters().get(simcore::Param::Restitution), 0.5);
         sim.advanceTo(0.5);
         const Diagnostics& d = sim.diagnostics();
         QVERIFY(d.workEdits != 0.0);

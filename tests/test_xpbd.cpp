@@ -50,16 +50,16 @@ private slots:
     void listedWithSubsteps() {
         QVERIFY(makeIntegrator("xpbd"));
         QVERIFY(integratorNames().find("xpbd") != std::string::npos);
-        const ParamSpec* spec = findParam("substeps");
+        const ParamSpec* spec = &simcore::paramSpec(simcore::Param::Substeps);
         QVERIFY(spec);
         QVERIFY(spec->group == ParamGroup::Time);
         QVERIFY(spec->integer);
         ParameterSet p(SceneKind::Ring2d);
-        QVERIFY(p.set("substeps", 0.0).has_value());    // at least one
-        QVERIFY(p.set("substeps", 2.5).has_value());    // whole numbers
-        QVERIFY(!p.set("substeps", 16.0).has_value());
+        QVERIFY(p.set(simcore::Param::Substeps, 0.0).has_value());    // at least one
+        QVERIFY(p.set(simcore::Param::Substeps, 2.5).has_value());    // whole numbers
+        QVERIFY(!p.set(simcore::Param::Substeps, 16.0).has_value());
         // Every substep is one force evaluation.
-        p.set("substeps", 5.0);
+        p.set(simcore::Param::Substeps, 5.0);
         Simulation sim(p, "xpbd");
         sim.setReuseEndForces(false);
         const auto before = sim.diagnostics().forceEvaluations;
@@ -87,7 +87,7 @@ private slots:
         // sweep order grew without bound at 8 to 32 substeps: integrators.cpp, Xpbd::project).
         ParameterSet p = stiffRing();
         QFETCH(int, substeps);
-        p.set("substeps", substeps);
+        p.set(simcore::Param::Substeps, substeps);
         const EnergyRun x = energyRun(p, "xpbd", 2.0);
         QVERIFY(x.ok);
         QVERIFY2(x.highest <= x.initial, qPrintable(QString("highest %1, initial %2").arg(x.highest).arg(x.initial)));

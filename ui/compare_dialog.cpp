@@ -47,7 +47,7 @@ QStringList CompareDialog::integrators() const {
 
 double CompareDialog::dt() const {
     double v = 0.003;
-    if (!ParameterForm::validate(*simcore::findParam("dt"), m_dt->text(), &v).isEmpty()) return 0.003;
+    if (!ParameterForm::validate(simcore::paramSpec(simcore::Param::Dt), m_dt->text(), &v).isEmpty()) return 0.003;
     return v;
 }
 

@@ -124,7 +124,7 @@ void EnergyBarsDock::rebuild() {
 void EnergyBarsDock::showFrame(const Frame& frame) {
     if (frame.lanes.empty()) return;
     const int lanes = std::max<int>(1, int(frame.lanes.size()));
-    const bool projection = frame.parameters.get("contact") == 1.0;
+    const bool projection = frame.parameters.get(simcore::Param::Contact) == 1.0;
     if (lanes != m_lanes || projection != m_projection) {
         m_lanes = lanes;
         m_projection = projection;

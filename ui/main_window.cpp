@@ -214,7 +214,7 @@ void MainWindow::createCentral() {
     bannerLayout->addWidget(m_bannerText, 1);
     auto* smaller = new QPushButton(tr("Halve DT and reset"), m_banner);
     connect(smaller, &QPushButton::clicked, this, [this] {
-        m_controller->setParameter(QStringLiteral("dt"), m_controller->parameters().get("dt") * 0.5);
+        m_controller->setParameter(QStringLiteral("dt"), m_controller->parameters().get(simcore::Param::Dt) * 0.5);
         m_controller->reset();
     });
     auto* implicit = new QPushButton(tr("Use implicit-euler and reset"), m_banner);
@@ -465,10 +465,8 @@ void MainWindow::applyPreset(const Preset& preset) {
 void MainWindow::rebuildFromSceneDock(const simcore::ParameterSet& shape) {
     // Keep the values set so far that the chosen scene also has; the shape comes from the dock.
     simcore::ParameterSet params = shape;
-    for (const auto& [key, value] : m_controller->parameters().explicitValues()) {
-        const simcore::ParamSpec* spec = simcore::findParam(key);
-        if (spec && !spec->isShape() && !params.isExplicit(key)) params.set(key, value);
-    }
+    for (const auto& [id, value] : m_controller->parameters().explicitValues())
+        if (!simcore::paramSpec(id).isShape() && params.has(id) && !params.isExplicit(id)) params.set(id, value);
     if (shape.kind() != m_controller->sceneKind()) m_controller->setStartKick(0.0, 0.0);
     m_controller->setScene(params);
 }
@@ -479,7 +477,7 @@ void MainWindow::onFrame(const FramePtr& frame) {
     const bool multi = frame->lanes.size() > 1;
     for (Viewport* v : m_viewports) {
         const LaneFrame& lane = frame->lanes[std::size_t(std::min<int>(v->lane(), int(frame->lanes.size()) - 1))];
-        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(frame->parameters.get("dt"))
+        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(frame->parameters.get(simcore::Param::Dt))
                           : QString());
         v->showFrame(frame);
     }
@@ -508,7 +506,7 @@ void MainWindow::showFailure(const FramePtr& frame) {
         return;
     }
     const simcore::Failure& f = *lane.failure;
-    const double dt = frame->parameters.get("dt");
+    const double dt = frame->parameters.get(simcore::Param::Dt);
     QString advice;
     if (frame->explicitDtLimit > 0 && dt > 0.5 * frame->explicitDtLimit)
         advice = tr("DT = %1 s is too large for this body with %2: explicit integrators need roughly DT below "
@@ -559,7 +557,7 @@ namespace {
 bool sameValues(const simcore::ParameterSet& a, const simcore::ParameterSet& b) {
     if (a.kind() != b.kind()) return false;
     for (const simcore::ParamSpec* spec : simcore::parametersFor(a.kind()))
-        if (a.get(spec->key) != b.get(spec->key)) return false;
+        if (a.get(spec->id) != b.get(spec->id)) return false;
     return true;
 }
 // Larger than any scene file this program writes (a level-4 sphere with its state: ~0.3 MB).
@@ -759,10 +757,10 @@ void MainWindow::showHelp() {
 void MainWindow::chooseSideBySide() {
     QStringList current = m_controller->integrators();
     if (current.size() < 2) current = {current.value(0, QStringLiteral("euler")), QStringLiteral("midpoint"), QStringLiteral("rk4")};
-    CompareDialog dialog(current, m_controller->parameters().get("dt"), this);
+    CompareDialog dialog(current, m_controller->parameters().get(simcore::Param::Dt), this);
     if (dialog.exec() != QDialog::Accepted) return;
     simcore::ParameterSet params = m_controller->parameters();
-    params.set("dt", dialog.dt());
+    params.set(simcore::Param::Dt, dialog.dt());
     startScene(params, dialog.integrators());
 }
 

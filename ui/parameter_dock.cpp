@@ -139,14 +139,14 @@ simcore::ParameterSet ParameterForm::values() const {
 void ParameterForm::setValues(const simcore::ParameterSet& params) {
     m_updating = true;
     for (auto& [key, edit] : m_fields) {
-        const double v = params.get(key.toStdString());
+        const double v = params.get(simcore::findParam(key.toStdString())->id);
         m_shown[key] = v;
         if (!edit->hasFocus() || edit->text().isEmpty()) edit->setText(formatValue(v));
         edit->setStyleSheet(QString());
         edit->setToolTip(edit->property("tip").toString());
     }
     for (auto& [key, box] : m_choices) {
-        const double v = params.get(key.toStdString());
+        const double v = params.get(simcore::findParam(key.toStdString())->id);
         m_shown[key] = v;
         box->setCurrentIndex(static_cast<int>(v));
     }

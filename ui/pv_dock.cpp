@@ -102,7 +102,7 @@ void PvDock::setScene(simcore::SceneKind kind) {
 void PvDock::setParameters(const simcore::ParameterSet& params) {
     if (!m_gas || !simcore::hasGas(params.kind())) return;
     // c = nRT of each layer, in joules (the gas terms of the force model use exactly these).
-    const std::array<double, 2> c{params.get("pressure_inner"), params.get("pressure_outer")};
+    const std::array<double, 2> c{params.get(simcore::Param::PressureInner), params.get(simcore::Param::PressureOuter)};
     if (c == m_c) return;
     m_c = c;
     for (int layer = 0; layer < 2; ++layer)

@@ -35,7 +35,7 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     form->addRow(tr("Integrator"), m_integrator);
     m_dt = new QLineEdit(host);
     m_dt->setObjectName(QStringLiteral("dtEdit"));
-    const simcore::ParamSpec* dtSpec = simcore::findParam("dt");
+    const simcore::ParamSpec* dtSpec = &simcore::paramSpec(simcore::Param::Dt);
     m_dt->setToolTip(toQString(dtSpec->meaning) + QStringLiteral("; allowed ") +
                      QString::fromStdString(dtSpec->rangeText()) + QStringLiteral(" s"));
     form->addRow(tr("DT [s]"), m_dt);
@@ -77,7 +77,7 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     });
     connect(m_dt, &QLineEdit::editingFinished, this, [this] {
         double v = 0.0;
-        const QString error = ParameterForm::validate(*simcore::findParam("dt"), m_dt->text(), &v);
+        const QString error = ParameterForm::validate(simcore::paramSpec(simcore::Param::Dt), m_dt->text(), &v);
         if (!error.isEmpty()) {
             m_dt->setStyleSheet(QStringLiteral("background: #ffd6d6"));
             emit message(error);
@@ -106,7 +106,7 @@ void RunDock::showFrame(const FramePtr& frame) {
     const bool single = frame->lanes.size() == 1;
     m_integrator->setEnabled(single);
     if (single && m_integrator->currentText() != lane.integrator) m_integrator->setCurrentText(lane.integrator);
-    const double dt = frame->parameters.get("dt");
+    const double dt = frame->parameters.get(simcore::Param::Dt);
     if (dt != m_shownDt && !m_dt->hasFocus()) {
         m_dt->setText(QString::number(dt, 'g', 10));
         m_shownDt = dt;

@@ -347,7 +347,7 @@ bool SimWorker::stepAll() {
         m_commonTime = sim.time();
     } else {
         // Side by side: every live lane reaches the same time after each common DT.
-        double target = m_commonTime + m_params.get("dt");
+        double target = m_commonTime + m_params.get(simcore::Param::Dt);
         if (m_until >= 0.0) target = std::min(target, m_until);
         for (auto& sim : m_lanes)
             if (!sim->failed()) sim->advanceTo(target);

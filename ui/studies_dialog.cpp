@@ -358,7 +358,7 @@ RefinementDialog::RefinementDialog(const simcore::ParameterSet& params, QWidget*
     // each level 4x the particles).
     QString levels;
     if (!key.empty()) {
-        const int v = params.getInt(key);
+        const int v = params.getInt(simcore::findParam(key)->id);
         levels = params.kind() == simcore::SceneKind::Sphere3d ? QStringLiteral("%1 %2 %3").arg(std::max(0, v - 1)).arg(v).arg(v + 1)
                                                                : QStringLiteral("%1 %2 %3").arg(v).arg(2 * v).arg(4 * v);
     }

@@ -32,8 +32,8 @@ void checkBench(BenchArgs& args) {
     // The benchmarks time the thesis's per-particle body at every size (docs/performance.md),
     // so that their figures stay comparable; --set scaling=physical times the physical one.
     simcore::ParameterSet& params = args.setup.params;
-    if (simcore::findParam("scaling")->scenes & simcore::sceneBit(params.kind()))
-        if (!params.isExplicit("scaling")) params.set("scaling", 1.0);
+    if (params.has(simcore::Param::Scaling))
+        if (!params.isExplicit(simcore::Param::Scaling)) params.set(simcore::Param::Scaling, 1.0);
 }
 
 int runBench(const BenchArgs& args) {

@@ -49,8 +49,8 @@ int listParams(const ParamsArgs& args) {
     std::printf("%-15s %-7s %-12s %-22s %s\n", "key", "unit", "default", "range", "meaning");
     for (const simcore::ParamSpec* s : specs) {
         std::string def;
-        if (!s->inherits.empty()) {
-            def = "=" + std::string(s->inherits);
+        if (s->inherits != simcore::Param::Count) {
+            def = "=" + std::string(simcore::paramSpec(s->inherits).key);
         } else {
             char buffer[32];
             std::snprintf(buffer, sizeof buffer, "%g", kind ? s->defaultFor(*kind) : s->defaultValue);

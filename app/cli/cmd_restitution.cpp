@@ -34,8 +34,8 @@ int runRestitution(const RestitutionArgs& args) {
     }
     const simcore::ParameterSet& p = setup.params;
     std::printf("scene        %s, %s, contact = %s, e = %g, contact_speed = %g m/s, contact_stiffness = %g N/m^3\n",
-                setup.sceneName.c_str(), setup.integrator.c_str(), p.get("contact") == 1.0 ? "projection" : "force",
-                p.get("restitution"), p.get("contact_speed"), p.get("contact_stiffness"));
+                setup.sceneName.c_str(), setup.integrator.c_str(), p.get(simcore::Param::Contact) == 1.0 ? "projection" : "force",
+                p.get(simcore::Param::Restitution), p.get(simcore::Param::ContactSpeed), p.get(simcore::Param::ContactStiffness));
     std::printf("             weightless; rebound / impact speed of a free particle and of the body's centre of mass\n\n");
     std::printf("%-12s %-12s %-12s %-14s %-10s\n", "speed_m/s", "particle", "body", "body_depth_m", "dt_s");
     std::string text = "speed,e_set,particle,body,body_depth,dt\n";  // -1: no rebound
@@ -43,7 +43,7 @@ int runRestitution(const RestitutionArgs& args) {
         const simcore::ImpactRow row = simcore::measureImpact(p, setup.integrator, speed);
         std::printf("%-12g %-12.4f %-12.4f %-14.4g %-10.3g %s\n", row.speed, row.particle, row.body, row.depth, row.dt,
                     row.note.c_str());
-        text += simcore::formatDouble(row.speed) + ',' + simcore::formatDouble(p.get("restitution")) + ',' +
+        text += simcore::formatDouble(row.speed) + ',' + simcore::formatDouble(p.get(simcore::Param::Restitution)) + ',' +
                 simcore::formatDouble(row.particle) + ',' + simcore::formatDouble(row.body) + ',' +
                 simcore::formatDouble(row.depth) + ',' + simcore::formatDouble(row.dt) + '\n';
     }

@@ -66,7 +66,7 @@ void checkRun(RunArgs& args) {
     // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
     // refused at once instead of running for ever.
     if (!simcore::makeIntegrator(args.setup.integrator)->adaptive() || args.integrator.fixedStep) {
-        const double dt = args.setup.params.get("dt");
+        const double dt = args.setup.params.get(simcore::Param::Dt);
         const double steps = std::ceil(args.duration / dt - 1e-9);
         if (steps > args.maxSteps) {
             char text[300];

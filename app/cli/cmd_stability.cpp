@@ -60,12 +60,12 @@ int runStability(const StabilityArgs& args) {
         if (!csv->ok()) throw UsageError(csv->error());
     }
     simcore::ParameterSet linearised = spec.params;
-    if (!linearised.isExplicit("perturb")) linearised.set("perturb", spec.perturb);
+    if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
     const simcore::LinearModes modes = simcore::linearModes(linearised);
     const bool quiet = args.quiet;
     if (!quiet) {
         std::printf("scene        %s, T = %g s, start perturbed by %g m (seed %g)\n", setup.sceneName.c_str(),
-                    spec.duration, linearised.get("perturb"), linearised.get("seed"));
+                    spec.duration, linearised.get(simcore::Param::Perturb), linearised.get(simcore::Param::Seed));
         std::printf("linearised   %d free coordinates (%s); highest frequency w_max = %.4g rad/s "
                     "(period %.4g s), its damping c = %.4g 1/s (zeta = %.3g); fastest modal damping %.4g 1/s",
                     modes.freeCoordinates, modes.dense ? "all modes" : "power iteration, highest mode only",

@@ -75,7 +75,7 @@ void checkRefinement(StudyArgs& args) {
     const std::vector<std::string> integrators = nameList("integrators", args.integrators.value_or("rk4"));
     if (integrators.size() != 1) throw UsageError("--refine takes one integrator (--integrators NAME)");
     spec.integrator = integrators.front();
-    if (args.scene.dt) spec.dt = args.setup.params.get("dt");
+    if (args.scene.dt) spec.dt = args.setup.params.get(simcore::Param::Dt);
     if (args.tols) {
         const std::vector<double> tols = numberList("tols", *args.tols);
         if (tols.size() != 1) throw UsageError("--refine takes one tolerance (--tols T)");
@@ -109,10 +109,10 @@ int runRefinement(const StudyArgs& args) {
                     setup.sceneName.c_str(), spec.key.c_str(), result.rows.size(), spec.duration, spec.interval,
                     simcore::scalingOf(spec.params) == simcore::Scaling::Physical ? "physical" : "thesis");
         std::printf("step         %s\n", result.stepRule.c_str());
-        if (spec.params.get("perturb") > 0.0)
+        if (spec.params.get(simcore::Param::Perturb) > 0.0)
             std::printf("note         perturb = %g m is a random displacement per particle: each level starts from a\n"
                         "             different shape, and that difference does not shrink like the mesh error\n",
-                        spec.params.get("perturb"));
+                        spec.params.get(simcore::Param::Perturb));
         std::printf("errors       volume: largest relative error of a layer's enclosed volume; com: largest distance\n"
                     "             of the mass-weighted centre of mass [m]; both over the grid, against the finest level\n\n");
         std::printf("%-14s %9s %8s %11s %10s %8s %10s %12s %12s  %s\n", "level", "particles", "springs", "h [m]", "dt [s]",
