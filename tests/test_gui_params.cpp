@@ -86,7 +86,7 @@ private slots:
         ks->setText("999.5");
         emit ks->editingFinished();
         QCOMPARE(edited.count(), 1);
-        QCOMPARE(edited.at(0).at(0).toString(), QString("ks"));
+        QCOMPARE(edited.at(0).at(0).value<simcore::Param>(), simcore::Param::Ks);
         QCOMPARE(edited.at(0).at(1).toDouble(), 999.5);
         emit ks->editingFinished();  // unchanged: no second edit
         QCOMPARE(edited.count(), 1);

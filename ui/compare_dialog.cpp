@@ -4,7 +4,6 @@
 #include <QDialogButtonBox>
 #include <QFormLayout>
 #include <QLabel>
-#include <QLineEdit>
 #include <QVBoxLayout>
 
 #include "integrators.h"
@@ -29,8 +28,9 @@ CompareDialog::CompareDialog(const QStringList& current, double dt, QWidget* par
         else if (i > 0) m_combo[i]->setCurrentIndex(0);
         form->addRow(tr("View %1").arg(i + 1), m_combo[i]);
     }
-    m_dt = new QLineEdit(QString::number(dt, 'g', 10), this);
-    form->addRow(tr("DT [s]"), m_dt);
+    auto* dtLabel = new QLabel(tr("%1 s, common to every view (set it in the Run dock)").arg(dt, 0, 'g', 10), this);
+    dtLabel->setObjectName(QStringLiteral("dtShown"));
+    form->addRow(tr("DT"), dtLabel);
     layout->addLayout(form);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
@@ -43,12 +43,6 @@ QStringList CompareDialog::integrators() const {
     for (QComboBox* c : m_combo)
         if (c->currentText() != tr("(none)")) out << c->currentText();
     return out;
-}
-
-double CompareDialog::dt() const {
-    double v = 0.003;
-    if (!ParameterForm::validate(simcore::paramSpec(simcore::Param::Dt), m_dt->text(), &v).isEmpty()) return 0.003;
-    return v;
 }
 
 }  // namespace elui

@@ -1,11 +1,11 @@
 #pragma once
 // CompareDialog: choose up to three integrators to run side by side from the same start.
+// It shows the common DT; the Run dock is its one editor.
 
 #include <QDialog>
 #include <QStringList>
 
 class QComboBox;
-class QLineEdit;
 
 namespace elui {
 
@@ -14,11 +14,9 @@ class CompareDialog : public QDialog {
 public:
     CompareDialog(const QStringList& current, double dt, QWidget* parent = nullptr);
     QStringList integrators() const;  // one to three names
-    double dt() const;
 
 private:
     QComboBox* m_combo[3] = {};
-    QLineEdit* m_dt = nullptr;
 };
 
 }  // namespace elui

@@ -214,7 +214,7 @@ void MainWindow::createCentral() {
     bannerLayout->addWidget(m_bannerText, 1);
     auto* smaller = new QPushButton(tr("Halve DT and reset"), m_banner);
     connect(smaller, &QPushButton::clicked, this, [this] {
-        m_controller->setParameter(QStringLiteral("dt"), m_controller->parameters().get(simcore::Param::Dt) * 0.5);
+        m_controller->setParameter(simcore::Param::Dt, m_controller->parameters().get(simcore::Param::Dt) * 0.5);
         m_controller->reset();
     });
     auto* implicit = new QPushButton(tr("Use implicit-euler and reset"), m_banner);
@@ -242,7 +242,7 @@ void MainWindow::createCentral() {
     m_useSuggestedDt = new QPushButton(m_stabilityBanner);
     m_useSuggestedDt->setObjectName(QStringLiteral("useSuggestedDt"));
     connect(m_useSuggestedDt, &QPushButton::clicked, this, [this] {
-        m_controller->setParameter(QStringLiteral("dt"), m_suggestedDt);
+        m_controller->setParameter(simcore::Param::Dt, m_suggestedDt);
         m_stabilityBanner->hide();
         status(tr("DT set to %1 s").arg(m_suggestedDt));
     });
@@ -384,14 +384,15 @@ void MainWindow::connectController() {
                 m_sceneDock->showBodyValues(scene->bodyValues);
             });
 
-    connect(m_parameterDock, &ParameterDock::parameterEdited, c, &SimulationController::setParameter);
+    connect(m_parameterDock, &ParameterDock::parameterEdited, c,
+            qOverload<simcore::Param, double>(&SimulationController::setParameter));
     connect(m_parameterDock, &ParameterDock::parameterRejected, this,
             [this](const QString&, const QString& message) { status(message); });
     connect(m_sceneDock, &SceneDock::rebuildRequested, this, &MainWindow::rebuildFromSceneDock);
     connect(m_sceneDock, &SceneDock::shapeRejected, this, [this](const QString&, const QString& m) { status(m); });
 
     connect(m_runDock, &RunDock::integratorChosen, c, &SimulationController::setIntegrator);
-    connect(m_runDock, &RunDock::dtEdited, this, [c](double dt) { c->setParameter(QStringLiteral("dt"), dt); });
+    connect(m_runDock, &RunDock::dtEdited, this, [c](double dt) { c->setParameter(simcore::Param::Dt, dt); });
     connect(m_runDock, &RunDock::runRequested, c, &SimulationController::run);
     connect(m_runDock, &RunDock::pauseRequested, c, &SimulationController::pause);
     connect(m_runDock, &RunDock::stepRequested, c, &SimulationController::step);
@@ -759,9 +760,7 @@ void MainWindow::chooseSideBySide() {
     if (current.size() < 2) current = {current.value(0, QStringLiteral("euler")), QStringLiteral("midpoint"), QStringLiteral("rk4")};
     CompareDialog dialog(current, m_controller->parameters().get(simcore::Param::Dt), this);
     if (dialog.exec() != QDialog::Accepted) return;
-    simcore::ParameterSet params = m_controller->parameters();
-    params.set(simcore::Param::Dt, dialog.dt());
-    startScene(params, dialog.integrators());
+    startScene(m_controller->parameters(), dialog.integrators());
 }
 
 void MainWindow::singleView() {

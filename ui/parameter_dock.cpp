@@ -61,21 +61,27 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
             label->setToolTip(tip);
             form->addRow(label, box);
             m_choices[key] = box;
-            connect(box, &QComboBox::activated, this, [this, key](int index) {
+            connect(box, &QComboBox::activated, this, [this, key, id = spec->id](int index) {
                 if (m_updating) return;
                 if (m_shown.count(key) && m_shown[key] == index) return;
                 m_shown[key] = index;
-                emit edited(key, index);
+                emit edited(id, index);
             });
             continue;
         }
         auto* edit = new QLineEdit(this);
         edit->setObjectName(QStringLiteral("param_") + key);
-        const QString tip = QStringLiteral("<b>%1</b>%2<br>%3<br>allowed: %4<br>default: %5")
+        QString tip = QStringLiteral("<b>%1</b>%2<br>%3<br>allowed: %4<br>default: %5")
                                 .arg(key, unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit),
                                      toQString(spec->meaning).toHtmlEscaped(),
                                      QString::fromStdString(spec->rangeText()),
                                      formatValue(spec->defaultFor(kind)));
+        if (spec->id == simcore::Param::Dt) {
+            // One editor for DT: the Run dock's (it also offers the stable step). Shown here.
+            edit->setReadOnly(true);
+            edit->setEnabled(false);
+            tip = tr("Set DT in the Run dock.") + QStringLiteral("<br>") + tip;
+        }
         edit->setToolTip(tip);
         edit->setProperty("tip", tip);
         auto* row = new QWidget(this);
@@ -170,7 +176,7 @@ void ParameterForm::commit(const QString& key) {
     edit->setToolTip(edit->property("tip").toString());
     if (m_shown.count(key) && m_shown[key] == v) return;  // nothing changed
     m_shown[key] = v;
-    emit edited(key, v);
+    emit edited(spec->id, v);
 }
 
 ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), parent) {

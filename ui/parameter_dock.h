@@ -4,7 +4,7 @@
 // One field per key of the current scene (a combo box for a choice such as contact or
 // scaling, whose names come from the table): its unit, its range and meaning in the tooltip,
 // validated by the same table the CLI uses (simcore::validateValue). Widget -> model: a valid
-// edit emits edited(key, value); model -> widget: setValues() refreshes the fields under a
+// edit emits edited(Param, value) (the key is text only inside the form); model -> widget: setValues() refreshes the fields under a
 // guard, so showing a value never echoes back as an edit.
 
 #include <map>
@@ -39,7 +39,7 @@ public:
     static QString validate(const simcore::ParamSpec& spec, const QString& text, double* value = nullptr);
 
 signals:
-    void edited(const QString& key, double value);
+    void edited(simcore::Param id, double value);
     void rejected(const QString& key, const QString& message);
 
 private:
@@ -63,7 +63,7 @@ public slots:
     void showParameters(const simcore::ParameterSet& params);
 
 signals:
-    void parameterEdited(const QString& key, double value);
+    void parameterEdited(simcore::Param id, double value);
     void parameterRejected(const QString& key, const QString& message);
 
 private:

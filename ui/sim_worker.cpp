@@ -177,15 +177,15 @@ void SimWorker::setIntegrator(const QString& name) {
     publish(true);
 }
 
-void SimWorker::setParameter(const QString& key, double value) {
+void SimWorker::setParameter(simcore::Param id, double value) {
     if (m_lanes.empty()) return;
-    const std::string k = key.toStdString();
-    const simcore::ParamSpec* spec = simcore::findParam(k);
-    const bool rebuilds = spec && (spec->isShape() || spec->group == simcore::ParamGroup::Start);
+    const simcore::ParamSpec& spec = simcore::paramSpec(id);
+    const bool rebuilds = spec.isShape() || spec.group == simcore::ParamGroup::Start;
     for (std::size_t i = 0; i < m_lanes.size(); ++i) {
-        if (auto error = m_lanes[i]->setParameter(k, value)) {
+        if (auto error = m_lanes[i]->setParameter(id, value)) {
             if (i == 0) {
-                emit parameterRejected(key, QString::fromStdString(*error));
+                emit parameterRejected(QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size())),
+                                       QString::fromStdString(*error));
                 publish(true);
                 return;
             }
@@ -347,7 +347,7 @@ bool SimWorker::stepAll() {
         m_commonTime = sim.time();
     } else {
         // Side by side: every live lane reaches the same time after each common DT.
-        double target = m_commonTime + m_params.get(simcore::Param::Dt);
+        double target = m_commonTime + m_lanes.front()->params().time.dt;
         if (m_until >= 0.0) target = std::min(target, m_until);
         for (auto& sim : m_lanes)
             if (!sim->failed()) sim->advanceTo(target);

@@ -59,7 +59,7 @@ public:
     void openScene(const simcore::SceneFile& file, const QStringList& integrators);
     // Changes lane 0's integrator in place (single mode: the run continues from here).
     void setIntegrator(const QString& name);
-    void setParameter(const QString& key, double value);
+    void setParameter(simcore::Param id, double value);
     void setSpeed(int speed);
     void setStepDoubling(bool on);
     void setForcesWanted(bool on);

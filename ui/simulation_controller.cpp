@@ -117,8 +117,17 @@ void SimulationController::setIntegrator(const QString& name) {
     if (!m_integrators.isEmpty()) m_integrators[0] = name;
     toWorker(&SimWorker::setIntegrator, name);
 }
+void SimulationController::setParameter(simcore::Param id, double value) {
+    toWorker(&SimWorker::setParameter, id, value);
+}
 void SimulationController::setParameter(const QString& key, double value) {
-    toWorker(&SimWorker::setParameter, key, value);
+    const std::string k = key.toStdString();
+    if (const simcore::ParamSpec* spec = simcore::findParam(k)) {
+        setParameter(spec->id, value);
+        return;
+    }
+    const auto error = simcore::ParameterSet(m_params.kind()).set(k, value);  // the table's message
+    emit parameterRejected(key, QString::fromStdString(error.value_or(std::string())));
 }
 void SimulationController::setSpeed(Speed speed) { toWorker(&SimWorker::setSpeed, int(speed)); }
 void SimulationController::setStepDoubling(bool on) { toWorker(&SimWorker::setStepDoubling, on); }

@@ -58,6 +58,11 @@ public:
     // reads the simulation itself.
     SceneCapture captureScene();
     void setIntegrator(const QString& name);             // lane 0 only, keeps the run
+    // A parameter travels as its Param: the worker applies it to every lane, or reports
+    // parameterRejected (out of range, or not a parameter of this scene).
+    void setParameter(simcore::Param id, double value);
+    // The same from a key given as text (a field, a test): looked up once here; a name that is
+    // not in the table is rejected at once.
     void setParameter(const QString& key, double value);
     void setSpeed(Speed speed);
     void setStepDoubling(bool on);
