@@ -396,11 +396,13 @@ private slots:
         dialog->setUpButton()->click();
         QVERIFY(waitForLesson(window, chosen));
         QCOMPARE(window.controller()->integrators(), chosen.preset.integrators);
-        QVERIFY(!window.energyBarsDock()->isHidden());
-        dialog->selectLesson("pv-isotherm");
-        dialog->setUpButton()->click();
-        QVERIFY(waitForLesson(window, lesson("pv-isotherm")));
-        QVERIFY(!window.pvDock()->isHidden());
+        for (const QString& id : {QStringLiteral("energy-drift"), QStringLiteral("pv-isotherm")}) {
+            dialog->selectLesson(id);
+            dialog->setUpButton()->click();
+            QVERIFY(waitForLesson(window, lesson(id)));
+            QVERIFY(!lesson(id).docks.isEmpty());
+            for (const QString& dock : lesson(id).docks) QVERIFY2(!window.dock(dock)->isHidden(), qPrintable(dock));
+        }
     }
 };
 
