@@ -21,6 +21,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTextBrowser>
+#include <QTextDocument>
 
 #include "energy_bars_dock.h"
 #include "impact.h"
@@ -213,6 +214,11 @@ private slots:
             QVERIFY2(!html.isEmpty(), qPrintable(l.id + ": no text in :/lessons/"));
             QVERIFY2(html.contains("<h2>" + l.title.toHtmlEscaped() + "</h2>"), qPrintable(l.id + ": title"));
             QCOMPARE(lessonSections(html), lessonSectionTitles());
+            // Half a page: read in a minute or two in front of the class.
+            QTextDocument doc;
+            doc.setHtml(html);
+            const qsizetype words = doc.toPlainText().split(QRegularExpression("\\s+"), Qt::SkipEmptyParts).size();
+            QVERIFY2(words >= 150 && words <= 400, qPrintable(l.id + ": " + QString::number(words) + " words"));
             QString error;
             const auto answers = lessonAnswers(html, &error);
             QVERIFY2(error.isEmpty(), qPrintable(l.id + ": " + error));
