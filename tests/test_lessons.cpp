@@ -326,8 +326,9 @@ private slots:
         }
     }
 
-    void commandLineRefusesBadLessons() {
-        // `elastic-lab --lesson ID`: the --preset rules (exit 2, one line), naming the lessons.
+    void commandLineLessons() {
+        // `elastic-lab --lesson ID`: a bad id is refused by the --preset rules (exit 2, one
+        // line), naming the lessons.
         auto gui = [](const QStringList& args, QString* err) {
             QProcess p;
             QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
@@ -345,6 +346,20 @@ private slots:
         QVERIFY2(err.contains("--preset"), qPrintable(err));
         QCOMPARE(gui({"--lesson", "a", "--lesson", "b"}, &err), 2);
         QCOMPARE(gui({"--help"}, &err), 0);
+        // A good id starts the lesson's scene: --measure-fps prints the body's particle count.
+        {
+            const Lesson& l = lesson("refine-sphere");
+            QProcess p;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.insert("QT_QPA_PLATFORM", "offscreen");
+            p.setProcessEnvironment(env);
+            p.start(ELASTIC_LAB_GUI, {"--lesson", l.id, "--measure-fps", "1"});
+            QVERIFY(testsupport::waitForExit(p));
+            QCOMPARE(p.exitCode(), 0);
+            const QString out = QString::fromUtf8(p.readAllStandardOutput());
+            const Simulation sim(l.preset.parameters(), "rk4");
+            QVERIFY2(out.startsWith(QStringLiteral("particles %1,").arg(sim.topology().particleCount())), qPrintable(out));
+        }
     }
 
     void presetsReachTheWindow() {
