@@ -43,6 +43,8 @@ LessonsDialog::LessonsDialog(QWidget* parent) : QDialog(parent) {
     m_text = new QTextBrowser(splitter);
     m_text->setObjectName(QStringLiteral("lessonText"));
     m_text->setOpenExternalLinks(true);
+    // Long commands wrap instead of scrolling the page sideways.
+    m_text->document()->setDefaultStyleSheet(QStringLiteral("pre { white-space: pre-wrap; }"));
     splitter->addWidget(m_list);
     splitter->addWidget(m_text);
     splitter->setStretchFactor(0, 0);
