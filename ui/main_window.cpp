@@ -21,6 +21,8 @@
 #include "energy_bars_dock.h"
 #include "export.h"
 #include "help_dialog.h"
+#include "lessons.h"
+#include "lessons_dialog.h"
 #include "parameter_dock.h"
 #include "plot_dock.h"
 #include "presets.h"
@@ -128,6 +130,10 @@ void MainWindow::createActions() {
     m_help = new QAction(tr("Elastic Lab &help"), this);
     m_help->setShortcut(QKeySequence::HelpContents);
     connect(m_help, &QAction::triggered, this, &MainWindow::showHelp);
+    m_lessons = new QAction(tr("&Experiments..."), this);
+    m_lessons->setToolTip(tr("Guided experiments: a scene set up in one click, what to change, what to look at, "
+                             "the measured answer"));
+    connect(m_lessons, &QAction::triggered, this, &MainWindow::showLessons);
     m_about = new QAction(tr("&About"), this);
     connect(m_about, &QAction::triggered, this, [this] {
         QMessageBox::about(this, tr("About Elastic Lab"),
@@ -195,6 +201,7 @@ void MainWindow::createMenus() {
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_help);
+    help->addAction(m_lessons);
     help->addAction(m_about);
 }
 
@@ -334,10 +341,14 @@ void MainWindow::createDocks() {
 
 QStringList MainWindow::dockNames() { return {QStringLiteral("energy-bars"), QStringLiteral("pv")}; }
 
+QDockWidget* MainWindow::dock(const QString& name) const {
+    return name == QLatin1String("energy-bars") ? static_cast<QDockWidget*>(m_energyBarsDock)
+           : name == QLatin1String("pv")        ? static_cast<QDockWidget*>(m_pvDock)
+                                                : nullptr;
+}
+
 bool MainWindow::openDock(const QString& name) {
-    QDockWidget* dock = name == QLatin1String("energy-bars") ? static_cast<QDockWidget*>(m_energyBarsDock)
-                        : name == QLatin1String("pv")        ? static_cast<QDockWidget*>(m_pvDock)
-                                                             : nullptr;
+    QDockWidget* dock = this->dock(name);
     if (!dock) return false;
     dock->show();
     dock->raise();
@@ -461,6 +472,25 @@ void MainWindow::applyPreset(const Preset& preset) {
     m_controller->setStartKick(preset.kickInner, preset.kickOuter);
     startScene(preset.parameters(), preset.integrators);
     status(preset.title + QStringLiteral(": ") + preset.description + tr(" Press Run (Space)."));
+}
+
+void MainWindow::applyLesson(const Lesson& lesson) {
+    applyPreset(lesson.preset);
+    for (const QString& dock : lesson.docks) openDock(dock);
+    status(tr("%1: set up. Help > Experiments says what to change and what to look at. Press Run (Space).")
+               .arg(lesson.title));
+}
+
+LessonsDialog* MainWindow::showLessons() {
+    if (!m_lessonsDialog) {
+        m_lessonsDialog = new LessonsDialog(this);
+        connect(m_lessonsDialog, &LessonsDialog::setUpRequested, this, [this](const QString& id) {
+            if (const Lesson* lesson = findLesson(id)) applyLesson(*lesson);
+        });
+    }
+    m_lessonsDialog->show();
+    m_lessonsDialog->raise();
+    return m_lessonsDialog;
 }
 
 void MainWindow::rebuildFromSceneDock(const simcore::ParameterSet& shape) {

@@ -13,6 +13,7 @@
 #include "view_options.h"
 
 class QAction;
+class QDockWidget;
 class QHBoxLayout;
 class QLabel;
 class QPushButton;
@@ -30,6 +31,8 @@ class PlotDock;
 class EnergyBarsDock;
 class PvDock;
 struct Preset;
+struct Lesson;
+class LessonsDialog;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -50,6 +53,8 @@ public:
     static QStringList dockNames();
     // Shows the named dock (hidden ones are closed by default); false for an unknown name.
     bool openDock(const QString& name);
+    // The dock of a dockNames() name, nullptr for an unknown one.
+    QDockWidget* dock(const QString& name) const;
     const ViewOptions& viewOptions() const { return m_options; }
     void setViewOptions(const ViewOptions& options);
     QString failureText() const;
@@ -82,6 +87,10 @@ public slots:
     void saveScene();  // to the current file, or Save as when there is none
     void saveSceneAs();
     void applyPreset(const elui::Preset& preset);
+    // A guided experiment (Help > Experiments): its preset, then its docks.
+    void applyLesson(const elui::Lesson& lesson);
+    // Help > Experiments: the one lessons dialog of this window, shown and raised.
+    LessonsDialog* showLessons();
     void exportCsv();
     void exportPlots();
     void saveViewportScreenshot();
@@ -173,6 +182,8 @@ private:
     QAction* m_sideBySide = nullptr;
     QAction* m_single = nullptr;
     QAction* m_help = nullptr;
+    QAction* m_lessons = nullptr;
+    LessonsDialog* m_lessonsDialog = nullptr;
     QAction* m_about = nullptr;
     std::vector<QAction*> m_displayToggles;
     QMenu* m_viewMenu = nullptr;

@@ -1,7 +1,8 @@
 // elastic-lab: the GUI.
 //
 //   elastic-lab [--scene S|FILE.json] [--set key=value]... [--integrator NAME] [--compare A,B,C]
-//               [--preset ID] [--docks LIST] [--screenshot FILE --after SECONDS]
+//               [--preset ID | --lesson ID] [--experiments] [--docks LIST]
+//               [--screenshot FILE --after SECONDS]
 //
 // --screenshot runs (as fast as possible) to the given simulated time, renders the main
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
@@ -24,6 +25,8 @@
 #include "body.h"
 #include "elastic_lab_version.h"
 #include "export.h"
+#include "lessons.h"
+#include "lessons_dialog.h"
 #include "integrators.h"
 #include "output.h"
 #include "params.h"
@@ -93,6 +96,12 @@ int main(int argc, char** argv) {
                                         QStringLiteral("A,B,C"));
     const QCommandLineOption presetOpt(QStringLiteral("preset"), QStringLiteral("Start from a preset."),
                                        QStringLiteral("ID"));
+    const QCommandLineOption lessonOpt(QStringLiteral("lesson"),
+                                       QStringLiteral("Set up a guided experiment (Help > Experiments): %1.")
+                                           .arg(elui::lessonIds().join(QStringLiteral(", "))),
+                                       QStringLiteral("ID"));
+    const QCommandLineOption experimentsOpt(QStringLiteral("experiments"),
+                                            QStringLiteral("Open the Experiments dialog (Help > Experiments) at start."));
     const QCommandLineOption shotOpt(QStringLiteral("screenshot"),
                                      QStringLiteral("Render the main window to FILE (PNG) and exit."),
                                      QStringLiteral("FILE"));
@@ -110,7 +119,7 @@ int main(int argc, char** argv) {
                                     QStringLiteral("Run in real time for SECONDS of wall time, print frame rate, "
                                                    "step rate and GUI latency, exit."),
                                     QStringLiteral("SECONDS"));
-    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, shotOpt, afterOpt, optionsOpt, docksOpt, fpsOpt});
+    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt, optionsOpt, docksOpt, fpsOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -119,7 +128,7 @@ int main(int argc, char** argv) {
         return fail(QStringLiteral("unexpected argument %1; elastic-lab --help lists the options")
                         .arg(quoted(parser.positionalArguments().front())));
     // A value-taking option given twice would silently lose one of the values.
-    for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &shotOpt, &afterOpt,
+    for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &lessonOpt, &shotOpt, &afterOpt,
                                            &optionsOpt, &docksOpt, &fpsOpt})
         if (parser.values(*once).size() > 1)
             return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
@@ -131,6 +140,16 @@ int main(int argc, char** argv) {
     if (parser.isSet(presetOpt)) {
         preset = elui::findPreset(parser.value(presetOpt));
         if (!preset) return fail(QStringLiteral("unknown preset %1").arg(quoted(parser.value(presetOpt))));
+    }
+    // --lesson: the lesson's preset (its scene, parameters and integrators) and its docks.
+    const elui::Lesson* lesson = nullptr;
+    if (parser.isSet(lessonOpt)) {
+        if (preset) return fail(QStringLiteral("--lesson and --preset both choose the start; give one"));
+        lesson = elui::findLesson(parser.value(lessonOpt));
+        if (!lesson)
+            return fail(QStringLiteral("unknown lesson %1; allowed: %2")
+                            .arg(quoted(parser.value(lessonOpt)), elui::lessonIds().join(QStringLiteral(", "))));
+        preset = &lesson->preset;
     }
     // --scene takes a scene name or a scene file (.json), as the CLI does; --set, --integrator
     // and --compare override what the file holds.
@@ -249,7 +268,12 @@ int main(int argc, char** argv) {
     }
     window.show();
     // After show(): the docks take their share of a laid-out window.
+    if (lesson) docks = lesson->docks + docks;
     for (const QString& dock : docks) window.openDock(dock);
+    if (parser.isSet(experimentsOpt)) {
+        elui::LessonsDialog* dialog = window.showLessons();
+        if (lesson) dialog->selectLesson(lesson->id);
+    }
 
     if (parser.isSet(fpsOpt)) {
         // Frames painted per wall second while the simulation runs in real time, and how late

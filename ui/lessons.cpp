@@ -1,0 +1,119 @@
+#include "lessons.h"
+
+#include <QFile>
+#include <QObject>
+#include <QRegularExpression>
+
+// The texts are in the UI library's resources; a static library needs them registered by name.
+static void initLessonResources() {
+    static const bool once = [] {
+        Q_INIT_RESOURCE(elastic_lab);
+        return true;
+    }();
+    (void)once;
+}
+
+namespace elui {
+
+namespace {
+Lesson make(const QString& id, const QString& title, const QString& scene, QList<QPair<QString, double>> values,
+            QStringList integrators, QStringList docks) {
+    Lesson l;
+    l.id = id;
+    l.title = title;
+    l.preset.id = QStringLiteral("lesson-") + id;
+    l.preset.title = title;
+    l.preset.description = QObject::tr("Help > Experiments explains what to do.");
+    l.preset.scene = scene;
+    l.preset.values = std::move(values);
+    l.preset.integrators = std::move(integrators);
+    l.docks = std::move(docks);
+    return l;
+}
+}  // namespace
+
+QList<Lesson> lessons() {
+    const QString bars = QStringLiteral("energy-bars");
+    const QString pv = QStringLiteral("pv");
+    return {
+        // The perturbation is the stability scan's (0.01 m, seed 1): the run in the window is
+        // the scan's trial run at the DT the student sets.
+        make(QStringLiteral("euler-limit"), QObject::tr("1. How large may DT be for Euler?"), QStringLiteral("ring2d"),
+             {{"perturb", 0.01}, {"dt", 0.007}}, {QStringLiteral("euler")}, {bars}),
+        make(QStringLiteral("energy-drift"), QObject::tr("2. Energy drift: Euler, midpoint, RK4"),
+             QStringLiteral("ring2d"), {{"dt", 0.003}},
+             {QStringLiteral("euler"), QStringLiteral("midpoint"), QStringLiteral("rk4")}, {bars}),
+        make(QStringLiteral("heavy-inner"), QObject::tr("3. A heavy inner layer: liquid motion"),
+             QStringLiteral("sphere3d"), {{"subdivisions", 2}, {"mass_inner", 5.0}}, {QStringLiteral("rk4")}, {bars}),
+        make(QStringLiteral("refine-sphere"), QObject::tr("4. A finer sphere needs a smaller DT"),
+             QStringLiteral("sphere3d"), {{"subdivisions", 1}, {"perturb", 0.01}, {"dt", 0.01}},
+             {QStringLiteral("rk4")}, {}),
+        make(QStringLiteral("pv-isotherm"), QObject::tr("5. Pressure and volume on the isotherm"),
+             QStringLiteral("ring2d"), {}, {QStringLiteral("rk4")}, {pv}),
+        make(QStringLiteral("restitution"), QObject::tr("6. Restitution: a particle and a body"),
+             QStringLiteral("ring2d"), {{"restitution", 0.9}}, {QStringLiteral("rk4")}, {bars}),
+        make(QStringLiteral("stiff-springs"), QObject::tr("7. Stiff springs: explicit against implicit"),
+             QStringLiteral("ring2d"), {{"ks", 1e6}, {"dt", 0.01}},
+             {QStringLiteral("implicit-euler"), QStringLiteral("rk4")}, {}),
+    };
+}
+
+const Lesson* findLesson(const QString& id) {
+    static const QList<Lesson> all = lessons();
+    for (const Lesson& l : all)
+        if (l.id == id) return &l;
+    return nullptr;
+}
+
+QStringList lessonIds() {
+    QStringList ids;
+    for (const Lesson& l : lessons()) ids << l.id;
+    return ids;
+}
+
+QString Lesson::html() const {
+    initLessonResources();
+    QFile file(QStringLiteral(":/lessons/%1.html").arg(id));
+    if (!file.open(QIODevice::ReadOnly)) return {};
+    return QString::fromUtf8(file.readAll());
+}
+
+QStringList lessonSectionTitles() {
+    return {QObject::tr("Goal"), QObject::tr("What to do"), QObject::tr("What to look at"),
+            QObject::tr("The measured answer"), QObject::tr("Why")};
+}
+
+QStringList lessonSections(const QString& html) {
+    static const QRegularExpression h3(QStringLiteral("<h3[^>]*>(.*?)</h3>"),
+                                       QRegularExpression::DotMatchesEverythingOption);
+    QStringList out;
+    for (auto it = h3.globalMatch(html); it.hasNext();) out << it.next().captured(1).trimmed();
+    return out;
+}
+
+QMap<QString, LessonAnswer> lessonAnswers(const QString& html, QString* error) {
+    // <span class="answer" data-key="K" data-tol="T">V</span>, attributes in this order.
+    static const QRegularExpression span(
+        QStringLiteral("<span class=\"answer\" data-key=\"([^\"]+)\" data-tol=\"([^\"]+)\">([^<]*)</span>"));
+    QMap<QString, LessonAnswer> out;
+    auto fail = [&](const QString& message) {
+        if (error && error->isEmpty()) *error = message;
+    };
+    for (auto it = span.globalMatch(html); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        const QString key = m.captured(1);
+        bool okValue = false, okTol = false;
+        // A minus sign may be written as U+2212 in the text.
+        QString number = m.captured(3).trimmed();
+        number.replace(QChar(0x2212), QLatin1Char('-'));
+        const LessonAnswer answer{number.toDouble(&okValue), m.captured(2).toDouble(&okTol)};
+        if (out.contains(key)) fail(QStringLiteral("answer %1 is marked twice").arg(key));
+        else if (!okValue) fail(QStringLiteral("answer %1 is not a number: %2").arg(key, m.captured(3)));
+        else if (!okTol || answer.relativeTolerance <= 0.0 || answer.relativeTolerance > 0.2)
+            fail(QStringLiteral("answer %1 has no tolerance in (0, 0.2]: %2").arg(key, m.captured(2)));
+        else out.insert(key, answer);
+    }
+    return out;
+}
+
+}  // namespace elui
