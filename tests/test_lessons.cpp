@@ -74,7 +74,7 @@ simcore::StabilityRow scan(const ParameterSet& p, const std::string& integrator)
     spec.params = p;
     spec.integrators = {integrator};
     ParameterSet linearised = p;
-    if (!linearised.isExplicit("perturb")) linearised.set("perturb", spec.perturb);
+    if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
     return simcore::scanIntegrator(spec, integrator, simcore::linearModes(linearised));
 }
 
@@ -369,7 +369,7 @@ private slots:
             for (std::size_t i = 0; i < f->lanes.size(); ++i)
                 QCOMPARE(f->lanes[i].integrator, l.preset.integrators.at(int(i)));
             QCOMPARE(window.controller()->integrators(), l.preset.integrators);
-            for (const auto& [key, value] : l.preset.values) QCOMPARE(f->parameters.get(key.toStdString()), value);
+            for (const auto& [key, value] : l.preset.values) QCOMPARE(f->parameters.get(simcore::findParam(key.toStdString())->id), value);
             for (const QString& dock : l.docks)
                 QVERIFY2(window.dock(dock) && !window.dock(dock)->isHidden(), qPrintable(l.id + ": " + dock));
             QVERIFY(window.currentFile().isEmpty());
