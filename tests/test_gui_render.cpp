@@ -318,8 +318,8 @@ private slots:
             {{"--set", "ks=-3"}, "--set ks"},
             {{"--show", "strain,strain"}, "listed twice"},
             // Docks this build does not have are refused like any unknown name (issue 16).
-            {{"--docks", "timeline"}, "unknown dock 'timeline'; allowed: energy-bars, pv"},
-            {{"--docks", "energy-bars,stability-map"}, "unknown dock 'stability-map'; allowed: energy-bars, pv"},
+            {{"--docks", "no-such-dock"}, "unknown dock 'no-such-dock'; allowed: energy-bars, pv, timeline"},
+            {{"--docks", "energy-bars,stability-map"}, "unknown dock 'stability-map'; allowed: energy-bars, pv, timeline"},
             {{"--docks", "pv,pv"}, "listed twice"},
             {{"--docks", "pv,"}, "is empty"},
             {{"--docks", "pv", "--docks", "energy-bars"}, "--docks is given 2 times"},

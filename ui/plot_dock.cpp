@@ -112,11 +112,14 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         line->setVisible(false);
         auto* label = new QCPItemText(plot);
         label->setObjectName(QStringLiteral("cursorText"));
+        // Beside the line at the top: x in time, y a fraction of the axis rect.
         label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
-        label->position->setType(QCPItemPosition::ptAxisRectRatio);
-        label->position->setCoords(0.01, 0.02);
+        label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+        label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        label->position->setCoords(0.0, 0.02);
         label->setTextAlignment(Qt::AlignLeft);
-        label->setBrush(QColor(255, 255, 255, 210));
+        label->setBrush(QColor(255, 255, 255, 200));
+        label->setPen(QPen(QColor(40, 40, 40, 120)));
         label->setPadding(QMargins(3, 1, 3, 1));
         QFont small = font();
         small.setPointSizeF(small.pointSizeF() * 0.85);
@@ -228,10 +231,12 @@ double PlotDock::valueAt(const QString& plotId, int series, double t) const {
 QString PlotDock::cursorText(const QString& plotId) const {
     const int i = plotIndex(plotId);
     if (i < 0) return {};
+    // Compact: three values a line under the time, so the label hides little of the curves.
     QString text = tr("t = %1 s").arg(m_cursorTime, 0, 'f', 4);
     const auto& series = m_specs[std::size_t(i)].series;
     for (std::size_t s = 0; s < series.size(); ++s)
-        text += QStringLiteral("\n%1: %2").arg(series[s].name).arg(valueAt(plotId, int(s), m_cursorTime), 0, 'g', 6);
+        text += (s % 3 == 0 ? QStringLiteral("\n") : QStringLiteral("   ")) +
+                QStringLiteral("%1 %2").arg(series[s].name).arg(valueAt(plotId, int(s), m_cursorTime), 0, 'g', 6);
     return text;
 }
 
@@ -254,6 +259,7 @@ void PlotDock::updateCursor() {
                 line->setVisible(m_cursorVisible);
             } else if (auto* label = qobject_cast<QCPItemText*>(item)) {
                 label->setText(cursorText(m_specs[i].id));
+                label->position->setCoords(m_cursorTime, 0.02);
                 label->setVisible(m_cursorVisible);
             }
         }
@@ -310,6 +316,12 @@ void PlotDock::replotNow() {
                 plot->yAxis->setRange(y.lower - pad, y.upper + pad);
             }
         }
+        // The cursor's label on the side of the line with more room.
+        const QCPRange x = plot->xAxis->range();
+        const bool right = m_cursorTime > x.lower + 0.55 * (x.upper - x.lower);
+        for (int k = 0; k < plot->itemCount(); ++k)
+            if (auto* label = qobject_cast<QCPItemText*>(plot->item(k)))
+                label->setPositionAlignment((right ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
         plot->replot(QCustomPlot::rpQueuedReplot);
     }
 }

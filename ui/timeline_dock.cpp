@@ -42,15 +42,16 @@ TimelineDock::TimelineDock(QWidget* parent) : QDockWidget(tr("Timeline"), parent
     row->addWidget(m_end);
     row->addWidget(m_clear);
     layout->addLayout(row);
-    auto* text = new QHBoxLayout;
+    // Where the view is, then what is kept: a line each, never widening the window.
     m_where = new QLabel(host);
     m_where->setObjectName(QStringLiteral("timelineWhere"));
+    m_where->setTextFormat(Qt::RichText);
     m_info = new QLabel(host);
     m_info->setObjectName(QStringLiteral("timelineInfo"));
-    m_info->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    text->addWidget(m_where, 1);
-    text->addWidget(m_info);
-    layout->addLayout(text);
+    for (QLabel* l : {m_where, m_info}) {
+        l->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+        layout->addWidget(l);
+    }
     setWidget(host);
 
     connect(m_slider, &QSlider::valueChanged, this, [this](int value) {
@@ -72,13 +73,12 @@ void TimelineDock::showFrame(const FramePtr& frame) {
     m_updating = false;
     const double time = frame->lanes.front().diagnostics.time;
     if (t.scrubbed())
-        m_where->setText(tr("<b>Back in time</b>: t = %1 s, step %2 of %3 &nbsp;·&nbsp; Run, Step or any change "
-                            "branches from here")
+        m_where->setText(tr("<b>Back in time</b>: t = %1 s, step %2 of %3 · a change, Run or Step branches here")
                              .arg(time, 0, 'f', 4).arg(t.moment).arg(t.last));
     else
-        m_where->setText(tr("t = %1 s, step %2 (newest) &nbsp;·&nbsp; recorded from t = %3 s")
+        m_where->setText(tr("t = %1 s, step %2 (newest) · recorded from t = %3 s")
                              .arg(time, 0, 'f', 4).arg(t.moment).arg(t.firstTime, 0, 'f', 3));
-    m_info->setText(tr("%1 checkpoints, every %2 steps: %3 of %4")
+    m_info->setText(tr("%1 checkpoints / %2 steps · %3 of %4")
                         .arg(t.checkpoints).arg(t.interval).arg(byteText(t.bytes), byteText(t.budget)));
     m_back->setEnabled(t.moment > t.first);
     m_start->setEnabled(t.moment > t.first);
