@@ -1,6 +1,8 @@
 // Time travel (issue 16): the recorder's checkpoints and re-simulation, the memory budget,
 // and, through the GUI's controller, scrubbing and branching.
+#include <QAction>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QtTest>
@@ -9,6 +11,7 @@
 #include <map>
 #include <vector>
 
+#include "main_window.h"
 #include "plot_dock.h"
 #include "sim_worker.h"
 #include "simulation.h"
@@ -419,6 +422,56 @@ private slots:
         QVERIFY(sameFrame(*c.latest(), *frames.at(7)));
         QCOMPARE(dock.slider()->value(), 7);
         QVERIFY(dock.info()->text().contains(QStringLiteral("checkpoints")));
+    }
+
+    void windowKeysTravelAndBranch() {
+        // In the window: Shift+S, Home and End travel (opening the dock), the plots' cursor
+        // follows while back in time, a branch leaves the abandoned future in the plots, and
+        // the dock's Clear removes it.
+#if defined(__SANITIZE_THREAD__)
+        // A shown window makes Qt Gui convert its backing image on Qt's own pool threads,
+        // invisible to ThreadSanitizer in Debian's uninstrumented Qt (as in test_gui_plots).
+        QSKIP("Qt's threaded image conversion is invisible to ThreadSanitizer");
+#endif
+        elui::MainWindow window(false);
+        window.startScene(ringParams(), {"rk4"});
+        window.show();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        SimulationController& c = *window.controller();
+        settle(c);
+        std::map<long, FramePtr> frames{{0L, c.latest()}};
+        stepTo(c, 20, frames);
+        QVERIFY(window.timelineDock()->isHidden());
+        QVERIFY(!window.plotDock()->cursorVisible());
+        auto key = [&](QKeyCombination k) {
+            QTest::keyClick(&window, k.key(), k.keyboardModifiers());
+            settle(c);
+        };
+        key(Qt::SHIFT | Qt::Key_S);
+        QVERIFY(window.timelineDock()->isVisible());
+        QCOMPARE(c.latest()->timeline.moment, 19L);
+        QVERIFY(sameFrame(*c.latest(), *frames.at(19)));
+        QTRY_VERIFY_WITH_TIMEOUT(window.plotDock()->cursorVisible(), testsupport::kHangGuardMs);
+        QCOMPARE(window.plotDock()->cursorTime(), frames.at(19)->lanes[0].diagnostics.time);
+        key(Qt::Key_Home);
+        QCOMPARE(c.latest()->timeline.moment, 0L);
+        key(Qt::Key_End);
+        QCOMPARE(c.latest()->timeline.moment, 20L);
+        QTRY_VERIFY_WITH_TIMEOUT(!window.plotDock()->cursorVisible(), testsupport::kHangGuardMs);
+        // Branch at 10 with another DT: the plots keep the old future as the abandoned one.
+        c.scrubTo(10);
+        settle(c);
+        c.setParameter(QStringLiteral("dt"), 0.001);
+        c.step();
+        settle(c);
+        const QString energy = QStringLiteral("energy");
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->abandonedPointCount(energy, 0), 10, testsupport::kHangGuardMs);
+        QCOMPARE(window.plotDock()->pointCount(energy, 0), 12);  // moments 0..10 and the branch's first
+        QVERIFY(window.timelineDock()->clearButton()->isEnabled());
+        window.timelineDock()->clearButton()->click();
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->abandonedPointCount(energy, 0), 0, testsupport::kHangGuardMs);
+        QVERIFY(c.abandoned().empty());
+        QVERIFY(!window.timelineDock()->clearButton()->isEnabled());
     }
 };
 
