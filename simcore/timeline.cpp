@@ -20,7 +20,8 @@ void TimelineRecorder::setBudget(std::size_t bytes) {
     if (m_bytes > m_budget) thin();
 }
 
-bool TimelineRecorder::record(long index, const std::vector<const Simulation*>& lanes, std::vector<double> extra) {
+bool TimelineRecorder::record(long index, const std::vector<const Simulation*>& lanes,
+                              std::vector<double> extra) {
     if (index <= m_last && !m_checkpoints.empty()) truncateAfter(index - 1);
     m_last = index;
     bool exact = true;

@@ -20,10 +20,10 @@
 namespace simcore {
 
 struct TimelineCheckpoint {
-    long index = 0;                          // the moment: steps since the timeline began
-    std::vector<SimulationSnapshot> lanes;   // every lane's state at that moment
-    std::vector<double> extra;               // the caller's own state at that moment
-    bool exact = true;                       // every lane can be re-simulated from here
+    long index = 0;                         // the moment: steps since the timeline began
+    std::vector<SimulationSnapshot> lanes;  // every lane's state at that moment
+    std::vector<double> extra;              // the caller's own state at that moment
+    bool exact = true;                      // every lane can be re-simulated from here
     std::size_t bytes = 0;
 };
 
@@ -32,7 +32,8 @@ public:
     static constexpr std::size_t kDefaultBudget = std::size_t(256) << 20;  // 256 MiB
     static constexpr long kDefaultInterval = 16;
 
-    explicit TimelineRecorder(std::size_t budgetBytes = kDefaultBudget, long interval = kDefaultInterval);
+    explicit TimelineRecorder(std::size_t budgetBytes = kDefaultBudget,
+                              long interval = kDefaultInterval);
 
     // Forgets every moment; the next record() begins the timeline.
     void clear();
@@ -41,7 +42,8 @@ public:
     // The moment `index` has been reached (after its step; 0 at the start). Keeps a checkpoint
     // when index is a multiple of the interval, when it is the first moment, or when a lane
     // cannot be re-simulated exactly. Then thins to the budget. Returns whether it kept one.
-    bool record(long index, const std::vector<const Simulation*>& lanes, std::vector<double> extra = {});
+    bool record(long index, const std::vector<const Simulation*>& lanes,
+                std::vector<double> extra = {});
     // A branch at `index`: forgets every moment after it.
     void truncateAfter(long index);
     // The checkpoint to start from for moment `index`: the latest at or before it (nullptr

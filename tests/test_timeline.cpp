@@ -6,21 +6,19 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QtTest>
-
 #include <cstring>
 #include <map>
 #include <vector>
 
 #include "main_window.h"
 #include "plot_dock.h"
+#include "sim_test_support.h"
 #include "sim_worker.h"
 #include "simulation.h"
 #include "simulation_controller.h"
+#include "test_support.h"
 #include "timeline.h"
 #include "timeline_dock.h"
-
-#include "sim_test_support.h"
-#include "test_support.h"
 
 using namespace simcore;
 using elui::FramePtr;
@@ -31,15 +29,17 @@ namespace {
 using testsupport::params;
 
 bool sameBits(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), sizeof(double) * std::size_t(a.size())) == 0;
+    return a.size() == b.size() &&
+           std::memcmp(a.data(), b.data(), sizeof(double) * std::size_t(a.size())) == 0;
 }
 
 bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
 // The diagnostics a replay must reproduce exactly.
 bool sameDiagnostics(const Diagnostics& a, const Diagnostics& b) {
-    return a.step == b.step && sameBits(a.time, b.time) && sameBits(a.dt, b.dt) && sameBits(a.kinetic, b.kinetic) &&
-           sameBits(a.total(), b.total()) && sameBits(a.energyDrift(), b.energyDrift()) &&
+    return a.step == b.step && sameBits(a.time, b.time) && sameBits(a.dt, b.dt) &&
+           sameBits(a.kinetic, b.kinetic) && sameBits(a.total(), b.total()) &&
+           sameBits(a.energyDrift(), b.energyDrift()) &&
            sameBits(a.removedDamping, b.removedDamping) && sameBits(a.workPointer, b.workPointer) &&
            a.forceEvaluations == b.forceEvaluations;
 }
@@ -51,7 +51,7 @@ ParameterSet ringParams() {
 }
 
 struct Recorded {
-    std::vector<Eigen::VectorXd> states;    // moment i: state after i steps
+    std::vector<Eigen::VectorXd> states;  // moment i: state after i steps
     std::vector<Diagnostics> diagnostics;
 };
 
@@ -86,7 +86,8 @@ bool sameFrame(const elui::Frame& a, const elui::Frame& b) {
     if (a.lanes.size() != b.lanes.size()) return false;
     for (std::size_t i = 0; i < a.lanes.size(); ++i) {
         const elui::LaneFrame &x = a.lanes[i], &y = b.lanes[i];
-        if (x.integrator != y.integrator || x.positions != y.positions || !sameDiagnostics(x.diagnostics, y.diagnostics))
+        if (x.integrator != y.integrator || x.positions != y.positions ||
+            !sameDiagnostics(x.diagnostics, y.diagnostics))
             return false;
     }
     return a.parameters == b.parameters;
@@ -120,7 +121,8 @@ class TestTimeline : public QObject {
 private slots:
     void scrubbedStateEqualsOriginal_data() {
         QTest::addColumn<QString>("integrator");
-        for (const char* name : {"rk4", "rk45", "symplectic-euler", "verlet", "implicit-euler", "xpbd"})
+        for (const char* name :
+             {"rk4", "rk45", "symplectic-euler", "verlet", "implicit-euler", "xpbd"})
             QTest::newRow(name) << QString::fromLatin1(name);
     }
     void scrubbedStateEqualsOriginal() {
@@ -145,7 +147,8 @@ private slots:
                 QVERIFY(replayTo(*target, recorder, index));
                 QVERIFY2(sameBits(target->state(), original.states[std::size_t(index)]),
                          qPrintable(QStringLiteral("state differs at moment %1").arg(index)));
-                QVERIFY2(sameDiagnostics(target->diagnostics(), original.diagnostics[std::size_t(index)]),
+                QVERIFY2(sameDiagnostics(target->diagnostics(),
+                                         original.diagnostics[std::size_t(index)]),
                          qPrintable(QStringLiteral("diagnostics differ at moment %1").arg(index)));
             }
         }
@@ -214,7 +217,8 @@ private slots:
         for (long i = 1; i <= 3000; ++i) {
             QVERIFY(sim.step());
             recorder.record(i, {&sim});
-            QVERIFY2(recorder.bytes() <= budget, qPrintable(QStringLiteral("over budget at moment %1").arg(i)));
+            QVERIFY2(recorder.bytes() <= budget,
+                     qPrintable(QStringLiteral("over budget at moment %1").arg(i)));
             if (i == 1234 || i == 2999) kept.push_back(sim.state());
         }
         QVERIFY(recorder.thinnings() >= 3);
@@ -283,11 +287,13 @@ private slots:
         stepTo(c, 45, frames);
         QCOMPARE(c.latest()->timeline.last, 45L);
         QVERIFY(c.latest()->timeline.interval > 0 && c.latest()->timeline.checkpoints >= 2);
-        for (long m : {44L, 0L, 1L, 15L, 16L, 17L, 19L, 20L, 21L, 26L, 27L, 28L, 33L, 32L, 45L, 3L}) {
+        for (long m :
+             {44L, 0L, 1L, 15L, 16L, 17L, 19L, 20L, 21L, 26L, 27L, 28L, 33L, 32L, 45L, 3L}) {
             const FramePtr f = scrubbed(c, m);
             QCOMPARE(f->timeline.moment, m);
             QVERIFY(!f->running);
-            QVERIFY2(sameFrame(*f, *frames.at(m)), qPrintable(QStringLiteral("moment %1 differs").arg(m)));
+            QVERIFY2(sameFrame(*f, *frames.at(m)),
+                     qPrintable(QStringLiteral("moment %1 differs").arg(m)));
         }
         // One step back at a time, and to the ends.
         scrubbed(c, 30);
@@ -306,7 +312,8 @@ private slots:
         settle(c);
         QCOMPARE(c.latest()->timeline.moment, 33L);
         QVERIFY(sameFrame(*c.latest(), *frames.at(33)));
-        c.scrubToTime(0.5 * (frames.at(9)->lanes[0].diagnostics.time + frames.at(10)->lanes[0].diagnostics.time));
+        c.scrubToTime(0.5 * (frames.at(9)->lanes[0].diagnostics.time +
+                             frames.at(10)->lanes[0].diagnostics.time));
         settle(c);
         QCOMPARE(c.latest()->timeline.moment, 10L);
         // Scrubbing alone branches nothing: the plots' history is untouched.
@@ -365,7 +372,10 @@ private slots:
         const std::size_t budget = 3 * 30 * probe.snapshot().bytes();
         c.setTimelineBudget(budget);
         c.runUntil(2.0);
-        QVERIFY(testsupport::waitUntil([&] { return c.latest() && !c.latest()->running && c.latest()->lanes[0].diagnostics.time >= 2.0 - 1e-9; }));
+        QVERIFY(testsupport::waitUntil([&] {
+            return c.latest() && !c.latest()->running &&
+                   c.latest()->lanes[0].diagnostics.time >= 2.0 - 1e-9;
+        }));
         settle(c);
         const elui::TimelineInfo t = c.latest()->timeline;
         QVERIFY(t.last >= 999);
@@ -395,9 +405,11 @@ private slots:
         const int total = int(dock.seriesNames(energy).indexOf(QStringLiteral("total")));
         QVERIFY(total >= 0);
         QCOMPARE(dock.valueAt(energy, total, rows[20].time), rows[20].total());
-        QCOMPARE(dock.valueAt(energy, total, 0.5 * (rows[20].time + rows[21].time)), rows[20].total());
+        QCOMPARE(dock.valueAt(energy, total, 0.5 * (rows[20].time + rows[21].time)),
+                 rows[20].total());
         QVERIFY(dock.cursorText(energy).contains(QString::number(rows[20].total(), 'g', 6)));
-        QVERIFY(dock.cursorText(energy).contains(QStringLiteral("t = %1 s").arg(rows[20].time, 0, 'f', 4)));
+        QVERIFY(dock.cursorText(energy).contains(
+            QStringLiteral("t = %1 s").arg(rows[20].time, 0, 'f', 4)));
         QCOMPARE(dock.abandonedPointCount(energy, total), 0);
         dock.setAbandoned({rows.begin() + 30, rows.end()});
         QCOMPARE(dock.abandonedPointCount(energy, total), 21);
@@ -411,8 +423,10 @@ private slots:
         // The slider asks for moments; the frame that comes back sets it.
         SimulationController c;
         elui::TimelineDock dock;
-        QObject::connect(&dock, &elui::TimelineDock::scrubRequested, &c, &SimulationController::scrubTo);
-        QObject::connect(&c, &SimulationController::frameArrived, &dock, &elui::TimelineDock::showFrame);
+        QObject::connect(&dock, &elui::TimelineDock::scrubRequested, &c,
+                         &SimulationController::scrubTo);
+        QObject::connect(&c, &SimulationController::frameArrived, &dock,
+                         &elui::TimelineDock::showFrame);
         c.setScene(ringParams(), {"rk4"});
         settle(c);
         std::map<long, FramePtr> frames{{0L, c.latest()}};
@@ -468,11 +482,14 @@ private slots:
         c.step();
         settle(c);
         const QString energy = QStringLiteral("energy");
-        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->abandonedPointCount(energy, 0), 10, testsupport::kHangGuardMs);
-        QCOMPARE(window.plotDock()->pointCount(energy, 0), 12);  // moments 0..10 and the branch's first
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->abandonedPointCount(energy, 0), 10,
+                                  testsupport::kHangGuardMs);
+        QCOMPARE(window.plotDock()->pointCount(energy, 0),
+                 12);  // moments 0..10 and the branch's first
         QVERIFY(window.timelineDock()->clearButton()->isEnabled());
         window.timelineDock()->clearButton()->click();
-        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->abandonedPointCount(energy, 0), 0, testsupport::kHangGuardMs);
+        QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->abandonedPointCount(energy, 0), 0,
+                                  testsupport::kHangGuardMs);
         QVERIFY(c.abandoned().empty());
         QVERIFY(!window.timelineDock()->clearButton()->isEnabled());
     }

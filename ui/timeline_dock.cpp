@@ -10,7 +10,8 @@ namespace elui {
 
 QString byteText(std::size_t bytes) {
     const double b = double(bytes);
-    if (b >= 1024.0 * 1024.0 * 1024.0) return QStringLiteral("%1 GiB").arg(b / (1024.0 * 1024.0 * 1024.0), 0, 'f', 2);
+    if (b >= 1024.0 * 1024.0 * 1024.0)
+        return QStringLiteral("%1 GiB").arg(b / (1024.0 * 1024.0 * 1024.0), 0, 'f', 2);
     if (b >= 1024.0 * 1024.0) return QStringLiteral("%1 MiB").arg(b / (1024.0 * 1024.0), 0, 'f', 1);
     if (b >= 1024.0) return QStringLiteral("%1 KiB").arg(b / 1024.0, 0, 'f', 0);
     return QStringLiteral("%1 B").arg(bytes);
@@ -28,7 +29,8 @@ TimelineDock::TimelineDock(QWidget* parent) : QDockWidget(tr("Timeline"), parent
     m_back->setToolTip(tr("One step back (Shift+S); S steps forward"));
     m_slider = new QSlider(Qt::Horizontal, host);
     m_slider->setObjectName(QStringLiteral("timelineSlider"));
-    m_slider->setToolTip(tr("Every moment of the run: drag to travel back in time (the run pauses)"));
+    m_slider->setToolTip(
+        tr("Every moment of the run: drag to travel back in time (the run pauses)"));
     m_slider->setRange(0, 0);
     m_slider->setFocusPolicy(Qt::ClickFocus);  // Home / End belong to the window's actions
     m_end = new QPushButton(tr("Newest ▶|"), host);
@@ -73,13 +75,20 @@ void TimelineDock::showFrame(const FramePtr& frame) {
     m_updating = false;
     const double time = frame->lanes.front().diagnostics.time;
     if (t.scrubbed())
-        m_where->setText(tr("<b>Back in time</b>: t = %1 s, step %2 of %3 · a change, Run or Step branches here")
-                             .arg(time, 0, 'f', 4).arg(t.moment).arg(t.last));
+        m_where->setText(
+            tr("<b>Back in time</b>: t = %1 s, step %2 of %3 · a change, Run or Step branches here")
+                .arg(time, 0, 'f', 4)
+                .arg(t.moment)
+                .arg(t.last));
     else
         m_where->setText(tr("t = %1 s, step %2 (newest) · recorded from t = %3 s")
-                             .arg(time, 0, 'f', 4).arg(t.moment).arg(t.firstTime, 0, 'f', 3));
+                             .arg(time, 0, 'f', 4)
+                             .arg(t.moment)
+                             .arg(t.firstTime, 0, 'f', 3));
     m_info->setText(tr("%1 checkpoints / %2 steps · %3 of %4")
-                        .arg(t.checkpoints).arg(t.interval).arg(byteText(t.bytes), byteText(t.budget)));
+                        .arg(t.checkpoints)
+                        .arg(t.interval)
+                        .arg(byteText(t.bytes), byteText(t.budget)));
     m_back->setEnabled(t.moment > t.first);
     m_start->setEnabled(t.moment > t.first);
     m_end->setEnabled(t.scrubbed());
