@@ -105,6 +105,8 @@ public:
     }
     void restart() override { m_restart = true; }
     const SolverCounters* counters() const override { return &m_counters; }
+    // The Nordsieck array, the order and step-size controller live inside CVODE's memory.
+    bool restorable() const override { return false; }
 
     StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
         StepReport report;

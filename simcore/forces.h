@@ -156,6 +156,16 @@ public:
     void countPostStep(Term term) { ++m_evaluations[static_cast<std::size_t>(term)]; }
     std::uint64_t evaluations(Term term) const { return m_evaluations[static_cast<std::size_t>(term)]; }
     std::uint64_t forceEvaluations() const { return m_forceEvaluations; }
+    // The counters above, to checkpoint and restore a run (Simulation::snapshot).
+    struct Counters {
+        std::array<std::uint64_t, kTermCount> terms{};
+        std::uint64_t forceEvaluations = 0;
+    };
+    Counters counters() const { return {m_evaluations, m_forceEvaluations}; }
+    void setCounters(const Counters& c) {
+        m_evaluations = c.terms;
+        m_forceEvaluations = c.forceEvaluations;
+    }
 
 private:
     template <class F>

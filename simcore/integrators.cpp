@@ -416,6 +416,13 @@ public:
         report.h = report.hNext = h;
         return report;
     }
+    // The sweep direction alternates with the substeps counted since prepare().
+    std::vector<double> history() const override { return {double(m_substeps), double(m_sweeps)}; }
+    void setHistory(const std::vector<double>& history) override {
+        if (history.size() != 2) return;
+        m_substeps = int(history[0]);
+        m_sweeps = long(history[1]);
+    }
 
 private:
     // The springs' forces at (x, v) into m_springs (MODEL.md: F_i = [ks (L - L0) + kd (v_j - v_i).u] u,

@@ -34,6 +34,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -195,6 +196,13 @@ public:
     virtual void restart() {}
     // A solver's own counters (CVODE), or nullptr.
     virtual const SolverCounters* counters() const { return nullptr; }
+    // What of the integrator carries from one step to the next (besides y), for a checkpoint
+    // of the run (Simulation::snapshot): restoring it and y, the next step is the step the
+    // run took. restorable() is false when that history cannot be restored exactly (CVODE's
+    // Nordsieck array and step-size controller): a restored run then restarts the method.
+    virtual bool restorable() const { return true; }
+    virtual std::vector<double> history() const { return {}; }
+    virtual void setHistory(const std::vector<double>& history) { (void)history; }
 
     void setOptions(const IntegratorOptions& options) { m_options = options; }
     const IntegratorOptions& options() const { return m_options; }

@@ -843,24 +843,92 @@ std::optional<std::string> Simulation::setParameter(Param id, double value) {
     m_params = next;
     m_endValid = false;
     m_restartIntegrator = true;
-    if (spec.group == ParamGroup::Mass) {
-        const Params::Shape shape = resolve(m_params).shape;
-        const Topology& topo = m_body.topology;
-        for (int i = 0; i < topo.particleCount(); ++i) {
-            const Layer l = topo.layer[static_cast<std::size_t>(i)];
-            const double m = (l == Layer::Inner   ? shape.massInner
-                              : l == Layer::Outer ? shape.massOuter
-                                                  : shape.mass) *
-                             m_scale.mass;
-            m_body.mass[i] = m;
-            for (int axis = 0; axis < 3; ++axis)
-                if (m_invMass3[3 * i + axis] != 0.0) m_invMass3[3 * i + axis] = 1.0 / m;
-        }
-    }
+    if (spec.group == ParamGroup::Mass) applyMasses();
     applyForceParams();
     if (!m_failure) m_diag.workEdits += totalEnergyNow() - before;
     measure(m_diag);
     return std::nullopt;
+}
+
+void Simulation::applyMasses() {
+    const Params::Shape shape = resolve(m_params).shape;
+    const Topology& topo = m_body.topology;
+    for (int i = 0; i < topo.particleCount(); ++i) {
+        const Layer l = topo.layer[static_cast<std::size_t>(i)];
+        const double m = (l == Layer::Inner   ? shape.massInner
+                          : l == Layer::Outer ? shape.massOuter
+                                              : shape.mass) *
+                         m_scale.mass;
+        m_body.mass[i] = m;
+        for (int axis = 0; axis < 3; ++axis)
+            if (m_invMass3[3 * i + axis] != 0.0) m_invMass3[3 * i + axis] = 1.0 / m;
+    }
+}
+
+std::size_t SimulationSnapshot::bytes() const {
+    return sizeof(SimulationSnapshot) + sizeof(double) * std::size_t(y.size() + endDerivative.size()) +
+           sizeof(double) * integratorHistory.capacity() + integrator.capacity() +
+           (failure ? failure->reason.capacity() : 0);
+}
+
+SimulationSnapshot Simulation::snapshot() const {
+    SimulationSnapshot s;
+    s.params = m_params;
+    s.integrator = std::string(m_integrator->name());
+    s.options = m_integratorOptions;
+    s.integratorHistory = m_integrator->history();
+    s.integratorRestorable = m_integrator->restorable();
+    s.y = m_y;
+    s.endValid = m_endValid;
+    if (m_endValid) {
+        s.endDerivative = m_endDerivative;
+        s.endExtras = m_endExtras;
+    }
+    s.restartIntegrator = m_restartIntegrator;
+    s.diag = m_diag;
+    s.timeCarry = m_timeCarry;
+    s.failure = m_failure;
+    s.hNext = m_hNext;
+    s.hTaken = m_hTaken;
+    s.energyScale = m_energyScale;
+    s.pointer = m_forces.pointer;
+    s.counters = m_forces.counters();
+    s.jacobianProducts = m_jacobianProducts;
+    return s;
+}
+
+void Simulation::restore(const SimulationSnapshot& s) {
+    if (s.y.size() != m_y.size()) throw std::invalid_argument("the snapshot is of another body");
+    // Parameters (live edits only: a shape edit rebuilds the body, and a new run begins).
+    m_params = s.params;
+    applyMasses();
+    applyForceParams();
+    if (m_integrator->name() != s.integrator) {
+        auto next = makeIntegrator(s.integrator);
+        if (!next) throw std::invalid_argument("unknown integrator '" + s.integrator + "'");
+        m_integrator = std::move(next);
+        m_integrator->prepare(m_system->layout());
+    }
+    setIntegratorOptions(s.options);
+    m_integrator->setHistory(s.integratorHistory);
+    m_y = s.y;
+    m_lastGood = s.y;
+    m_endValid = s.endValid;
+    if (s.endValid) {
+        m_endDerivative = s.endDerivative;
+        m_endExtras = s.endExtras;
+    }
+    // A method whose history cannot be restored starts afresh from this state.
+    m_restartIntegrator = s.restartIntegrator || !s.integratorRestorable || !m_integrator->restorable();
+    m_diag = s.diag;
+    m_timeCarry = s.timeCarry;
+    m_failure = s.failure;
+    m_hNext = s.hNext;
+    m_hTaken = s.hTaken;
+    m_energyScale = s.energyScale;
+    m_forces.pointer = s.pointer;
+    m_forces.setCounters(s.counters);
+    m_jacobianProducts = s.jacobianProducts;
 }
 
 std::optional<std::string> Simulation::setIntegrator(std::string_view name) {

@@ -80,6 +80,34 @@ struct Failure {
     double time = 0.0;   // simulated time at the start of that step [s]
 };
 
+// Everything a step reads that a run changes: with it restored, the steps that follow are
+// the steps the run took, bit for bit (Simulation::snapshot, restore; the GUI's timeline).
+// The body's structure is not in it (a rebuild starts a new run), nor the thread count (results
+// do not depend on it).
+struct SimulationSnapshot {
+    ParameterSet params;                   // masses and force parameters follow from these
+    std::string integrator;
+    IntegratorOptions options;
+    std::vector<double> integratorHistory; // Integrator::history()
+    bool integratorRestorable = true;      // false: a restore restarts the method (CVODE)
+    Eigen::VectorXd y;                     // [x | v | removed-by-damping | removed-by-contact]
+    bool endValid = false;                 // the end-of-step derivative below is current
+    Eigen::VectorXd endDerivative;
+    ForceExtras endExtras;
+    bool restartIntegrator = false;
+    Diagnostics diag;
+    double timeCarry = 0.0;
+    std::optional<Failure> failure;
+    double hNext = 0.0, hTaken = 0.0;
+    double energyScale = 1.0;
+    PointerSpring pointer;
+    ForceModel::Counters counters;
+    std::uint64_t jacobianProducts = 0;
+
+    // Bytes it holds (its vectors and strings included).
+    std::size_t bytes() const;
+};
+
 class Simulation {
 public:
     // Throws std::invalid_argument for an unknown integrator or an impossible shape.
@@ -155,6 +183,13 @@ public:
     void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v);
     // The same, also setting the step counter and the simulated time (a resumed experiment).
     void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step, double time);
+    // The run's whole changing state, and back (parameters, integrator and its history,
+    // diagnostics, pointer, counters): after restore(snapshot()) at step n, the steps that
+    // follow equal the original run's bit for bit, unless the snapshot's integrator is not
+    // restorable (CVODE), which then restarts from the state. Throws std::invalid_argument
+    // for a snapshot of another body (a different particle count).
+    SimulationSnapshot snapshot() const;
+    void restore(const SimulationSnapshot& s);
     const ForceModel& forces() const { return m_forces; }
     // The total force on every particle in the current state (3N) [N], e.g. to draw force
     // vectors. Not counted as a force evaluation of the run.
@@ -205,6 +240,7 @@ private:
     class System;
     void build();
     void applyForceParams();
+    void applyMasses();  // m_body.mass and m_invMass3 from the mass parameters
     void startBookkeeping();
     // With apply = false only report whether anything is in contact.
     bool collide(bool apply);

@@ -269,6 +269,33 @@ private slots:
         }
     }
 
+    void timelineScreenshot() {
+        // Time travel for a picture (issue 16): run, travel back, branch with another DT, run
+        // on and travel back to the branch; the timeline dock is open. Bad combinations refused.
+        QTemporaryDir dir;
+        const QString path = dir.filePath("timeline.png");
+        QProcess p;
+        p.start(ELASTIC_LAB_GUI, {"--scene", "ring2d", "--docks", "timeline", "--after", "0.4", "--travel-back", "0.2",
+                                  "--branch", "dt=0.006", "--screenshot", path});
+        QVERIFY(testsupport::waitForExit(p));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        QVERIFY(!QImage(path).isNull());
+        const std::vector<std::pair<QStringList, QByteArray>> refused = {
+            {{"--scene", "ring2d", "--travel-back", "0.2"}, "--travel-back needs --screenshot"},
+            {{"--screenshot", path, "--after", "0.1", "--travel-back", "0.2"}, "at most --after"},
+            {{"--screenshot", path, "--after", "0.4", "--branch", "dt=0.006"}, "--branch needs --travel-back"},
+            {{"--screenshot", path, "--after", "0.4", "--travel-back", "0.2", "--branch", "particles=30"}, "rebuilds"},
+            {{"--screenshot", path, "--after", "0.4", "--travel-back", "0.2", "--branch", "integrator=rk9"}, "rk9"},
+        };
+        for (const auto& [args, message] : refused) {
+            QProcess bad;
+            bad.start(ELASTIC_LAB_GUI, args);
+            QVERIFY(testsupport::waitForExit(bad));
+            QCOMPARE(bad.exitCode(), 2);
+            QVERIFY2(bad.readAllStandardError().contains(message), message.constData());
+        }
+    }
+
     void commandLineFollowsTheCliRules() {
         // Issue 18: the GUI's command line refuses what elastic-lab-cli refuses, with exit 2 and
         // one line, before any window: unknown options, values given twice, lists with empty or
@@ -291,8 +318,8 @@ private slots:
             {{"--set", "ks=-3"}, "--set ks"},
             {{"--show", "strain,strain"}, "listed twice"},
             // Docks this build does not have are refused like any unknown name (issue 16).
-            {{"--docks", "timeline"}, "unknown dock 'timeline'; allowed: energy-bars, pv"},
-            {{"--docks", "energy-bars,stability-map"}, "unknown dock 'stability-map'; allowed: energy-bars, pv"},
+            {{"--docks", "no-such-dock"}, "unknown dock 'no-such-dock'; allowed: energy-bars, pv, timeline"},
+            {{"--docks", "energy-bars,stability-map"}, "unknown dock 'stability-map'; allowed: energy-bars, pv, timeline"},
             {{"--docks", "pv,pv"}, "listed twice"},
             {{"--docks", "pv,"}, "is empty"},
             {{"--docks", "pv", "--docks", "energy-bars"}, "--docks is given 2 times"},

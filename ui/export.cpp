@@ -142,7 +142,9 @@ QByteArray plotsSvg(const std::vector<QCustomPlot*>& plots, const std::vector<Pl
                    .arg((plotTop + bottom) / 2).arg(specs[p].yLabel.toHtmlEscaped());
         svg += QStringLiteral("<clipPath id='c%1'><rect x='%2' y='%3' width='%4' height='%5'/></clipPath>\n")
                    .arg(p).arg(left).arg(plotTop).arg(right - left).arg(bottom - plotTop);
-        for (int g = 0; g < plot->graphCount(); ++g) {
+        // The series themselves (not the faint abandoned future after them).
+        const int series = std::min(plot->graphCount(), int(specs[p].series.size()));
+        for (int g = 0; g < series; ++g) {
             QCPGraph* graph = plot->graph(g);
             QString points;
             // At most ~2000 points per series: enough for any printed width.

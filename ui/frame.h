@@ -61,6 +61,21 @@ struct LaneFrame {
     double divergence = 0.0;              // RMS distance to lane 0's particles [m]
 };
 
+// Time travel: where the shown state lies on the run's recorded timeline (sim_worker.h).
+// A moment is the state after that many steps of the worker (common DTs side by side) since
+// the timeline began (a new scene, a reset, an opened file), with the edits and pointer
+// moves made at it.
+struct TimelineInfo {
+    long moment = 0;                      // the moment shown
+    long first = 0, last = 0;             // the moments recorded
+    double firstTime = 0.0, lastTime = 0.0;  // lane 0's simulated time at them [s]
+    std::size_t bytes = 0;                // what the checkpoints hold
+    std::size_t budget = 0;               // ... and may hold
+    long interval = 0;                    // a checkpoint every so many moments
+    std::size_t checkpoints = 0;
+    bool scrubbed() const { return moment < last; }
+};
+
 struct Frame {
     std::shared_ptr<const SceneData> scene;
     simcore::ParameterSet parameters;
@@ -72,6 +87,7 @@ struct Frame {
     bool fallingBehind = false;           // real-time mode could not keep up
     double explicitDtLimit = 0.0;         // estimated largest stable DT of explicit methods [s]
     quint64 serial = 0;                   // increases with every published frame
+    TimelineInfo timeline;
 };
 
 using FramePtr = std::shared_ptr<const Frame>;
@@ -81,6 +97,13 @@ struct FrameBatch {
     FramePtr frame;
     std::vector<simcore::Diagnostics> rows;
     bool historyReset = false;            // a reset/rebuild happened: clear plots first
+    // Branches (running on from a scrubbed moment) in the order they happened: the first
+    // `rowsBefore` rows of `rows` precede it; the history after `time` became the abandoned future.
+    struct Branch {
+        std::size_t rowsBefore = 0;
+        double time = 0.0;                // lane 0's simulated time at the branch [s]
+    };
+    std::vector<Branch> branches;
 };
 
 // A scene file captured on the worker thread between two steps (SimulationController::captureScene).

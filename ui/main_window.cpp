@@ -32,6 +32,7 @@
 #include "scenes.h"
 #include "simulation_controller.h"
 #include "studies_dialog.h"
+#include "timeline_dock.h"
 #include "viewport.h"
 
 namespace elui {
@@ -45,6 +46,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     createCentral();
     createDocks();
     connectController();
+    createTimeline();
     readSettings();
 }
 
@@ -90,7 +92,7 @@ void MainWindow::createActions() {
     m_reset->setShortcut(Qt::CTRL | Qt::Key_R);
     connect(m_reset, &QAction::triggered, this, [this] { m_controller->reset(); });
     m_resetView = new QAction(tr("Reset &view"), this);
-    m_resetView->setShortcut(Qt::Key_Home);
+    m_resetView->setShortcut(Qt::CTRL | Qt::Key_0);  // Home / End travel the timeline
     connect(m_resetView, &QAction::triggered, this, [this] {
         for (Viewport* v : m_viewports) v->resetView();
     });
@@ -158,7 +160,7 @@ void MainWindow::createMenus() {
     file->addSeparator();
     file->addAction(m_quit);
 
-    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    QMenu* sim = m_simulationMenu = menuBar()->addMenu(tr("&Simulation"));
     sim->addAction(m_runPause);
     sim->addAction(m_step);
     sim->addAction(m_reset);
@@ -339,15 +341,23 @@ void MainWindow::createDocks() {
     resizeDocks({m_runDock, m_plotDock}, {290, 420}, Qt::Horizontal);
 }
 
-QStringList MainWindow::dockNames() { return {QStringLiteral("energy-bars"), QStringLiteral("pv")}; }
+QStringList MainWindow::dockNames() {
+    return {QStringLiteral("energy-bars"), QStringLiteral("pv"), QStringLiteral("timeline")};
+}
 
 QDockWidget* MainWindow::dock(const QString& name) const {
     return name == QLatin1String("energy-bars") ? static_cast<QDockWidget*>(m_energyBarsDock)
            : name == QLatin1String("pv")        ? static_cast<QDockWidget*>(m_pvDock)
+           : name == QLatin1String("timeline")  ? static_cast<QDockWidget*>(m_timelineDock)
                                                 : nullptr;
 }
 
 bool MainWindow::openDock(const QString& name) {
+    if (name == QLatin1String("timeline")) {  // under the view: no share of the right column
+        m_timelineDock->show();
+        m_timelineDock->raise();
+        return true;
+    }
     QDockWidget* dock = this->dock(name);
     if (!dock) return false;
     dock->show();
@@ -795,6 +805,55 @@ void MainWindow::chooseSideBySide() {
 
 void MainWindow::singleView() {
     startScene(m_controller->parameters(), {m_controller->integrators().value(0, QStringLiteral("rk4"))});
+}
+
+void MainWindow::createTimeline() {
+    // Under the view (the bottom area, between the side columns); closed until asked for (View
+    // menu, --docks timeline) or until a timeline key is pressed.
+    m_timelineDock = new TimelineDock(this);
+    setCorner(Qt::BottomLeftCorner, Qt::LeftDockWidgetArea);
+    setCorner(Qt::BottomRightCorner, Qt::RightDockWidgetArea);
+    addDockWidget(Qt::BottomDockWidgetArea, m_timelineDock);
+    m_timelineDock->hide();
+    m_viewMenu->addAction(m_timelineDock->toggleViewAction());
+
+    SimulationController* c = m_controller;
+    auto travel = [this](const QString& text, const QKeySequence& key, auto command) {
+        auto* a = new QAction(text, this);
+        a->setShortcut(key);
+        connect(a, &QAction::triggered, this, [this, command] {
+            m_timelineDock->show();
+            command();
+        });
+        m_simulationMenu->addAction(a);
+        return a;
+    };
+    m_simulationMenu->addSeparator();
+    travel(tr("Step &back"), QKeySequence(Qt::SHIFT | Qt::Key_S), [c] { c->scrubBy(-1); });
+    travel(tr("Timeline s&tart"), QKeySequence(Qt::Key_Home), [c] { c->scrubToStart(); });
+    travel(tr("Timeline &newest"), QKeySequence(Qt::Key_End), [c] { c->scrubToEnd(); });
+    m_simulationMenu->addAction(tr("&Clear abandoned future"), c, &SimulationController::clearAbandoned);
+
+    connect(m_timelineDock, &TimelineDock::scrubRequested, c, &SimulationController::scrubTo);
+    connect(m_timelineDock, &TimelineDock::stepBackRequested, c, [c] { c->scrubBy(-1); });
+    connect(m_timelineDock, &TimelineDock::startRequested, c, &SimulationController::scrubToStart);
+    connect(m_timelineDock, &TimelineDock::endRequested, c, &SimulationController::scrubToEnd);
+    connect(m_timelineDock, &TimelineDock::clearAbandonedRequested, c, &SimulationController::clearAbandoned);
+    connect(c, &SimulationController::frameArrived, this, [this](const FramePtr& frame) {
+        m_timelineDock->showFrame(frame);
+        // The plots' cursor at the moment shown, while travelling back.
+        if (frame && !frame->lanes.empty())
+            m_plotDock->setCursor(frame->lanes.front().diagnostics.time, !frame->running && frame->timeline.scrubbed());
+    });
+    connect(c, &SimulationController::historyBranched, this, [this] {
+        m_plotDock->setHistory(m_controller->history());
+        m_pvDock->clear();
+        m_pvDock->appendRows(m_controller->history(), 0, int(m_controller->history().size()));
+    });
+    connect(c, &SimulationController::abandonedChanged, this, [this] {
+        m_plotDock->setAbandoned(m_controller->abandoned());
+        m_timelineDock->setAbandoned(!m_controller->abandoned().empty());
+    });
 }
 
 }  // namespace elui

@@ -30,6 +30,7 @@ class RunDock;
 class PlotDock;
 class EnergyBarsDock;
 class PvDock;
+class TimelineDock;
 struct Preset;
 struct Lesson;
 class LessonsDialog;
@@ -49,7 +50,8 @@ public:
     PlotDock* plotDock() const { return m_plotDock; }
     EnergyBarsDock* energyBarsDock() const { return m_energyBarsDock; }
     PvDock* pvDock() const { return m_pvDock; }
-    // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv".
+    TimelineDock* timelineDock() const { return m_timelineDock; }
+    // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv", "timeline".
     static QStringList dockNames();
     // Shows the named dock (hidden ones are closed by default); false for an unknown name.
     bool openDock(const QString& name);
@@ -107,6 +109,8 @@ private:
     void createCentral();
     void createDocks();
     void connectController();
+    // Time travel: the timeline dock under the view, its keys and its wiring.
+    void createTimeline();
     void readSettings();
     void writeSettings();
 
@@ -146,6 +150,7 @@ private:
     PlotDock* m_plotDock = nullptr;
     EnergyBarsDock* m_energyBarsDock = nullptr;
     PvDock* m_pvDock = nullptr;
+    TimelineDock* m_timelineDock = nullptr;
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;
@@ -187,6 +192,7 @@ private:
     QAction* m_about = nullptr;
     std::vector<QAction*> m_displayToggles;
     QMenu* m_viewMenu = nullptr;
+    QMenu* m_simulationMenu = nullptr;
     QMenu* m_studiesMenu = nullptr;
 };
 

@@ -95,6 +95,36 @@ void PlotDock::setScene(simcore::SceneKind kind) {
             g->setName(s.name);
             g->setPen(QPen(s.color, s.name == tr("total") ? 2.0 : 1.4));
         }
+        // The abandoned future: the same colours, faint and dashed, behind the series.
+        for (const SeriesSpec& s : spec.series) {
+            QCPGraph* g = plot->addGraph();
+            g->setName(s.name + tr(" (abandoned)"));
+            QColor faint = s.color;
+            faint.setAlpha(90);
+            g->setPen(QPen(faint, 1.2, Qt::DashLine));
+            g->removeFromLegend();
+            g->setLayer(QStringLiteral("background"));
+        }
+        // The cursor line and its values.
+        auto* line = new QCPItemStraightLine(plot);
+        line->setObjectName(QStringLiteral("cursorLine"));
+        line->setPen(QPen(QColor(40, 40, 40, 200), 1.0));
+        line->setVisible(false);
+        auto* label = new QCPItemText(plot);
+        label->setObjectName(QStringLiteral("cursorText"));
+        // Beside the line at the top: x in time, y a fraction of the axis rect.
+        label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+        label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+        label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        label->position->setCoords(0.0, 0.02);
+        label->setTextAlignment(Qt::AlignLeft);
+        label->setBrush(QColor(255, 255, 255, 200));
+        label->setPen(QPen(QColor(40, 40, 40, 120)));
+        label->setPadding(QMargins(3, 1, 3, 1));
+        QFont small = font();
+        small.setPointSizeF(small.pointSizeF() * 0.85);
+        label->setFont(small);
+        label->setVisible(false);
         // Zooming or dragging by hand means the user wants to look: stop autoscaling.
         connect(plot, &QCustomPlot::mouseWheel, this, [this] { m_autoscale->setChecked(false); });
         connect(plot, &QCustomPlot::mousePress, this, [this] { m_autoscale->setChecked(false); });
@@ -103,6 +133,7 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         m_plots.push_back(plot);
     }
     clear();
+    updateCursor();
 }
 
 QStringList PlotDock::plotIds() const {
@@ -150,10 +181,89 @@ void PlotDock::setLive(bool live) {
 }
 
 void PlotDock::clear() {
-    for (QCustomPlot* p : m_plots)
-        for (int g = 0; g < p->graphCount(); ++g) p->graph(g)->data()->clear();
+    for (std::size_t i = 0; i < m_plots.size(); ++i)
+        for (std::size_t g = 0; g < m_specs[i].series.size(); ++g) m_plots[i]->graph(int(g))->data()->clear();
     m_lastTime = 0.0;
     scheduleReplot();
+}
+
+void PlotDock::setHistory(const std::vector<simcore::Diagnostics>& history) {
+    clear();
+    appendRows(history, 0, int(history.size()));
+}
+
+void PlotDock::setAbandoned(const std::vector<simcore::Diagnostics>& rows) {
+    for (std::size_t i = 0; i < m_specs.size(); ++i) {
+        const auto& series = m_specs[i].series;
+        for (std::size_t s = 0; s < series.size(); ++s) {
+            QVector<QCPGraphData> points;
+            points.reserve(qsizetype(rows.size()));
+            for (const simcore::Diagnostics& d : rows) points.append(QCPGraphData(d.time, series[s].value(d)));
+            m_plots[i]->graph(int(series.size() + s))->data()->set(points, true);
+        }
+    }
+    m_abandonedEnd = rows.empty() ? 0.0 : rows.back().time;
+    scheduleReplot();
+}
+
+int PlotDock::abandonedPointCount(const QString& plotId, int series) const {
+    const int i = plotIndex(plotId);
+    if (i < 0 || series < 0 || series >= int(m_specs[std::size_t(i)].series.size())) return -1;
+    return m_plots[std::size_t(i)]->graph(int(m_specs[std::size_t(i)].series.size()) + series)->data()->size();
+}
+
+int PlotDock::plotIndex(const QString& plotId) const {
+    for (std::size_t i = 0; i < m_specs.size(); ++i)
+        if (m_specs[i].id == plotId) return int(i);
+    return -1;
+}
+
+double PlotDock::valueAt(const QString& plotId, int series, double t) const {
+    const int i = plotIndex(plotId);
+    if (i < 0 || series < 0 || series >= int(m_specs[std::size_t(i)].series.size())) return qQNaN();
+    const auto points = m_plots[std::size_t(i)]->graph(series)->data();
+    // The last point at or before t (a tiny tolerance for the time's printing round trip).
+    auto it = points->findEnd(t + 1e-12 * std::max(1.0, std::abs(t)), false);
+    if (it == points->constBegin()) return qQNaN();
+    return (it - 1)->value;
+}
+
+QString PlotDock::cursorText(const QString& plotId) const {
+    const int i = plotIndex(plotId);
+    if (i < 0) return {};
+    // Compact: three values a line under the time, so the label hides little of the curves.
+    QString text = tr("t = %1 s").arg(m_cursorTime, 0, 'f', 4);
+    const auto& series = m_specs[std::size_t(i)].series;
+    for (std::size_t s = 0; s < series.size(); ++s)
+        text += (s % 3 == 0 ? QStringLiteral("\n") : QStringLiteral("   ")) +
+                QStringLiteral("%1 %2").arg(series[s].name).arg(valueAt(plotId, int(s), m_cursorTime), 0, 'g', 6);
+    return text;
+}
+
+void PlotDock::setCursor(double time, bool visible) {
+    if (time == m_cursorTime && visible == m_cursorVisible) return;
+    m_cursorTime = time;
+    m_cursorVisible = visible;
+    updateCursor();
+    scheduleReplot();
+}
+
+void PlotDock::updateCursor() {
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        QCustomPlot* plot = m_plots[i];
+        for (int k = 0; k < plot->itemCount(); ++k) {
+            QCPAbstractItem* item = plot->item(k);
+            if (auto* line = qobject_cast<QCPItemStraightLine*>(item)) {
+                line->point1->setCoords(m_cursorTime, 0.0);
+                line->point2->setCoords(m_cursorTime, 1.0);
+                line->setVisible(m_cursorVisible);
+            } else if (auto* label = qobject_cast<QCPItemText*>(item)) {
+                label->setText(cursorText(m_specs[i].id));
+                label->position->setCoords(m_cursorTime, 0.02);
+                label->setVisible(m_cursorVisible);
+            }
+        }
+    }
 }
 
 void PlotDock::appendRows(const std::vector<simcore::Diagnostics>& history, int first, int count) {
@@ -171,6 +281,7 @@ void PlotDock::appendRows(const std::vector<simcore::Diagnostics>& history, int 
         }
     }
     if (count > 0) m_lastTime = history[std::size_t(first + count - 1)].time;
+    if (m_cursorVisible) updateCursor();
     scheduleReplot();
 }
 
@@ -185,8 +296,11 @@ void PlotDock::replotNow() {
     const bool autoscale = m_autoscale->isChecked();
     for (QCustomPlot* plot : m_plots) {
         if (autoscale) {
-            const double lo = m_window > 0 ? std::max(0.0, m_lastTime - m_window) : 0.0;
-            const double hi = std::max(m_lastTime, lo + (m_window > 0 ? m_window : 1.0));
+            // The newest data, the abandoned future's end, and the cursor stay in view.
+            const double end = std::max(m_lastTime, m_abandonedEnd);
+            double lo = m_window > 0 ? std::max(0.0, end - m_window) : 0.0;
+            if (m_cursorVisible && m_window > 0 && m_cursorTime < lo) lo = std::max(0.0, m_cursorTime - 0.5 * m_window);
+            const double hi = std::max(end, lo + (m_window > 0 ? m_window : 1.0));
             plot->xAxis->setRange(lo, m_window > 0 ? lo + m_window : hi);
             bool found = false;
             QCPRange y;
@@ -202,6 +316,12 @@ void PlotDock::replotNow() {
                 plot->yAxis->setRange(y.lower - pad, y.upper + pad);
             }
         }
+        // The cursor's label on the side of the line with more room.
+        const QCPRange x = plot->xAxis->range();
+        const bool right = m_cursorTime > x.lower + 0.55 * (x.upper - x.lower);
+        for (int k = 0; k < plot->itemCount(); ++k)
+            if (auto* label = qobject_cast<QCPItemText*>(plot->item(k)))
+                label->setPositionAlignment((right ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
         plot->replot(QCustomPlot::rpQueuedReplot);
     }
 }

@@ -4,6 +4,10 @@
 // Rows arrive as they are recorded; the plots are marked dirty and replotted at most 10
 // times a second (queued replot), whatever the step rate. Rolling window or full history;
 // autoscale, or zoom and pan by mouse (autoscale switches off when the user zooms).
+//
+// Time travel: a cursor line at the moment shown (when paused) with the plotted values there,
+// read from the plot's own data; and the abandoned future of the last branch as faint lines
+// (graphs after the series, not in the legend).
 
 #include <vector>
 
@@ -44,13 +48,27 @@ public:
     void setLive(bool live);
     double window() const { return m_window; }
 
+    // The cursor: its time, and the text beside it (t and every series' value there).
+    bool cursorVisible() const { return m_cursorVisible; }
+    double cursorTime() const { return m_cursorTime; }
+    QString cursorText(const QString& plotId) const;
+    // A series' plotted value at time t: the last point at or before t (NaN: none).
+    double valueAt(const QString& plotId, int series, double t) const;
+    int abandonedPointCount(const QString& plotId, int series) const;
+
 public slots:
-    void clear();
+    void clear();  // the series (the abandoned future stays until setAbandoned)
     void appendRows(const std::vector<simcore::Diagnostics>& history, int first, int count);
+    // Redraws the series from the whole history (after a branch cut it).
+    void setHistory(const std::vector<simcore::Diagnostics>& history);
+    void setAbandoned(const std::vector<simcore::Diagnostics>& rows);
+    void setCursor(double time, bool visible);
     void replotNow();
 
 private:
     void scheduleReplot();
+    void updateCursor();
+    int plotIndex(const QString& plotId) const;
 
     simcore::SceneKind m_kind = simcore::SceneKind::Ring2d;
     std::vector<PlotSpec> m_specs;
@@ -61,6 +79,9 @@ private:
     QTimer* m_replotTimer = nullptr;
     double m_window = 10.0;
     double m_lastTime = 0.0;
+    double m_abandonedEnd = 0.0;          // time of the abandoned future's last row
+    double m_cursorTime = 0.0;
+    bool m_cursorVisible = false;
     bool m_dirty = false;
     bool m_live = false;
     bool m_created = false;

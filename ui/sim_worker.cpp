@@ -172,20 +172,41 @@ void SimWorker::applyKick() {
 
 void SimWorker::setIntegrator(const QString& name) {
     if (m_lanes.empty()) return;
-    if (auto error = m_lanes.front()->setIntegrator(name.toStdString()))
+    if (auto error = simcore::unknownIntegrator(name.toStdString())) {
         emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
+    } else {
+        Input input;
+        input.kind = Input::Integrator;
+        input.key = name.toStdString();
+        logInput(std::move(input));
+    }
     publish(true);
 }
 
 void SimWorker::setParameter(simcore::Param id, double value) {
     if (m_lanes.empty()) return;
     const simcore::ParamSpec& spec = simcore::paramSpec(id);
+    const QString key = QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size()));
     const bool rebuilds = spec.isShape() || spec.group == simcore::ParamGroup::Start;
+    if (!rebuilds) {
+        // A live edit: part of the timeline (validated first, so a refused value changes nothing).
+        simcore::ParameterSet probe = m_lanes.front()->parameters();
+        if (auto error = probe.set(id, value)) {
+            emit parameterRejected(key, QString::fromStdString(*error));
+        } else {
+            Input input;
+            input.kind = Input::Parameter;
+            input.param = id;
+            input.value = value;
+            logInput(std::move(input));
+        }
+        publish(true);
+        return;
+    }
     for (std::size_t i = 0; i < m_lanes.size(); ++i) {
         if (auto error = m_lanes[i]->setParameter(id, value)) {
             if (i == 0) {
-                emit parameterRejected(QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size())),
-                                       QString::fromStdString(*error));
+                emit parameterRejected(key, QString::fromStdString(*error));
                 publish(true);
                 return;
             }
@@ -208,12 +229,14 @@ void SimWorker::setSpeed(int speed) {
 }
 
 void SimWorker::setStepDoubling(bool on) {
-    m_stepDoubling = on;
-    for (auto& sim : m_lanes) {
-        simcore::IntegratorOptions o = sim->integratorOptions();
-        o.stepDoubling = on;
-        sim->setIntegratorOptions(o);
+    if (m_lanes.empty()) {
+        m_stepDoubling = on;
+        return;
     }
+    Input input;
+    input.kind = Input::StepDoubling;
+    input.value = on ? 1.0 : 0.0;
+    logInput(std::move(input));
     publish(true);
 }
 
@@ -231,7 +254,7 @@ void SimWorker::run() {
     if (m_lanes.empty() || allFailed()) return;
     if (!m_running) restartClock();
     m_running = true;
-    m_until = -1.0;
+    setUntil(-1.0);
     m_timer->start(m_speed == Speed::AsFastAsPossible ? 0 : 4);
     publish(true);
 }
@@ -240,7 +263,7 @@ void SimWorker::runUntil(double simulatedTime) {
     if (m_lanes.empty()) return;
     if (!m_running) restartClock();
     m_running = true;
-    m_until = simulatedTime;
+    setUntil(simulatedTime);
     m_timer->start(0);
     publish(true);
 }
@@ -248,7 +271,7 @@ void SimWorker::runUntil(double simulatedTime) {
 void SimWorker::pause() {
     if (m_running) m_wallBeforeStart += since(m_clockStart);
     m_running = false;
-    m_until = -1.0;
+    setUntil(-1.0);
     if (m_timer) m_timer->stop();
     publish(true);
 }
@@ -278,6 +301,7 @@ void SimWorker::startHistory() {
     m_rows.clear();
     m_historyReset = true;
     recordRow();
+    startTimeline();
     publish(true);
 }
 
@@ -287,18 +311,29 @@ void SimWorker::grabAlongRay(const QVector3D& origin, const QVector3D& direction
     const int particle = m_lanes.front()->pickAlongRay(o, d, maxDistance);
     if (particle < 0) return;
     const Eigen::Vector3d at = m_lanes.front()->positions().col(particle);
-    for (auto& sim : m_lanes) sim->grab(particle, at);
+    Input input;
+    input.kind = Input::Grab;
+    input.particle = particle;
+    input.anchor = at;
+    logInput(std::move(input));
     emit grabbed(particle, QVector3D(float(at.x()), float(at.y()), float(at.z())));
     publish(true);
 }
 
 void SimWorker::moveAnchor(const QVector3D& anchor) {
-    for (auto& sim : m_lanes) sim->moveAnchor(toEigen(anchor));
+    if (m_lanes.empty() || !m_lanes.front()->pointer().active) return;
+    Input input;
+    input.kind = Input::Move;
+    input.anchor = toEigen(anchor);
+    logInput(std::move(input));
     if (!m_running) publish(true);
 }
 
 void SimWorker::release() {
-    for (auto& sim : m_lanes) sim->release();
+    if (m_lanes.empty() || !m_lanes.front()->pointer().active) return;
+    Input input;
+    input.kind = Input::Release;
+    logInput(std::move(input));
     publish(true);
 }
 
@@ -311,6 +346,8 @@ void SimWorker::shutdown() {
     m_scene.reset();
     m_params = simcore::ParameterSet{};
     m_rows = {};
+    m_recorder.clear();
+    m_inputs = {};
     {
         std::lock_guard lock(m_slotMutex);
         m_slot = FrameBatch{};
@@ -340,6 +377,8 @@ bool SimWorker::allFailed() const {
 
 bool SimWorker::stepAll() {
     if (allFailed()) return false;
+    // A step from a scrubbed moment runs on from it: a branch.
+    if (!m_replaying && m_moment < m_recorder.last()) branch();
     if (m_lanes.size() == 1) {
         simcore::Simulation& sim = *m_lanes.front();
         const double until = m_until >= 0.0 ? m_until : std::numeric_limits<double>::infinity();
@@ -353,12 +392,14 @@ bool SimWorker::stepAll() {
             if (!sim->failed()) sim->advanceTo(target);
         m_commonTime = target;
     }
-    ++m_rateSteps;
+    if (!m_replaying) ++m_rateSteps;
     recordRow();
+    recordMoment();
     return true;
 }
 
 void SimWorker::recordRow() {
+    if (m_replaying) return;
     const simcore::Simulation& sim = *m_lanes.front();
     if (sim.failed()) return;
     const double t = sim.time();
@@ -437,6 +478,7 @@ void SimWorker::publish(bool force) {
     frame->fallingBehind = m_fallingBehind;
     frame->explicitDtLimit = m_dtLimit;
     frame->serial = ++m_serial;
+    frame->timeline = timelineInfo();
     const auto x0 = m_lanes.front()->positions();
     for (const auto& sim : m_lanes) {
         LaneFrame lane;
@@ -463,8 +505,14 @@ void SimWorker::publish(bool force) {
         // Rows not yet taken from before the reset belong to the old history: drop them.
         m_slot.rows.clear();
         m_slot.historyReset = true;
+        m_slot.branches.clear();
         m_historyReset = false;
     }
+    for (FrameBatch::Branch b : m_branches) {
+        b.rowsBefore += m_slot.rows.size();
+        m_slot.branches.push_back(b);
+    }
+    m_branches.clear();
     m_slot.rows.insert(m_slot.rows.end(), m_rows.begin(), m_rows.end());
     m_rows.clear();
     m_published.store(m_slot.frame->serial);
@@ -472,6 +520,185 @@ void SimWorker::publish(bool force) {
         m_slotPending = true;
         emit frameReady();
     }
+}
+
+// --- time travel ---
+
+void SimWorker::startTimeline() {
+    m_recorder.clear();
+    m_inputs.clear();
+    m_branches.clear();
+    m_moment = 0;
+    std::vector<const simcore::Simulation*> lanes;
+    for (const auto& sim : m_lanes) lanes.push_back(sim.get());
+    m_recorder.record(0, lanes, {m_commonTime, m_until});
+    m_firstTime = m_lastTime = m_lanes.front()->time();
+}
+
+void SimWorker::recordMoment() {
+    ++m_moment;
+    if (m_replaying) return;
+    std::vector<const simcore::Simulation*> lanes;
+    for (const auto& sim : m_lanes) lanes.push_back(sim.get());
+    m_recorder.record(m_moment, lanes, {m_commonTime, m_until});
+    m_lastTime = m_lanes.front()->time();
+}
+
+void SimWorker::logInput(Input input) {
+    if (m_lanes.empty()) return;
+    if (!m_replaying && m_moment < m_recorder.last()) branch();
+    input.moment = m_moment;
+    if (!m_replaying) m_inputs.push_back(input);
+    applyInput(input);
+}
+
+void SimWorker::setUntil(double until) {
+    if (until == m_until) return;
+    if (m_lanes.empty()) {
+        m_until = until;
+        return;
+    }
+    Input input;
+    input.kind = Input::Until;
+    input.value = until;
+    logInput(std::move(input));
+}
+
+void SimWorker::applyInput(const Input& input) {
+    switch (input.kind) {
+        case Input::Parameter:
+            for (auto& sim : m_lanes) sim->setParameter(input.param, input.value);
+            m_params = m_lanes.front()->parameters();
+            updateDtLimit();
+            break;
+        case Input::Integrator:
+            if (auto error = m_lanes.front()->setIntegrator(input.key))
+                emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
+            break;
+        case Input::StepDoubling:
+            m_stepDoubling = input.value != 0.0;
+            for (auto& sim : m_lanes) {
+                simcore::IntegratorOptions o = sim->integratorOptions();
+                o.stepDoubling = m_stepDoubling;
+                sim->setIntegratorOptions(o);
+            }
+            break;
+        case Input::Grab:
+            for (auto& sim : m_lanes) sim->grab(input.particle, input.anchor);
+            break;
+        case Input::Move:
+            for (auto& sim : m_lanes) sim->moveAnchor(input.anchor);
+            break;
+        case Input::Release:
+            for (auto& sim : m_lanes) sim->release();
+            break;
+        case Input::Until:
+            m_until = input.value;
+            break;
+    }
+}
+
+void SimWorker::branch() {
+    // The moment shown becomes the newest: what came after it is forgotten (the GUI keeps its
+    // rows as the abandoned future); what was done at it stays (the lanes have it).
+    const long moment = m_moment;
+    m_recorder.truncateAfter(moment);
+    std::erase_if(m_inputs, [moment](const Input& i) { return i.moment > moment; });
+    m_lastTime = m_lanes.front()->time();
+    m_branches.push_back({m_rows.size(), m_lastTime});
+    m_lastRowTime = -1.0;  // the branch's rows start at once
+}
+
+void SimWorker::replayForward(long target, bool inputsAtStartApplied) {
+    auto next = std::lower_bound(m_inputs.begin(), m_inputs.end(), m_moment,
+                                 [](const Input& i, long moment) { return i.moment < moment; });
+    if (inputsAtStartApplied)
+        while (next != m_inputs.end() && next->moment == m_moment) ++next;
+    for (;;) {
+        for (; next != m_inputs.end() && next->moment == m_moment; ++next) applyInput(*next);
+        if (m_moment >= target) return;
+        // A method whose history a checkpoint cannot hold is recorded at every moment and
+        // never re-simulated: stop at the last moment held exactly.
+        for (const auto& sim : m_lanes)
+            if (!sim->integrator().restorable()) return;
+        const long before = m_moment;
+        stepAll();
+        if (m_moment == before) return;  // every lane failed (the run stopped here too)
+    }
+}
+
+void SimWorker::scrubTo(long target) {
+    if (m_lanes.empty() || m_recorder.empty()) return;
+    if (m_running) pause();
+    goTo(target);
+    publish(true);
+}
+
+void SimWorker::goTo(long target) {
+    target = std::clamp(target, m_recorder.first(), m_recorder.last());
+    if (target == m_moment) return;
+    m_replaying = true;
+    const simcore::TimelineCheckpoint* c = m_recorder.checkpointFor(target);
+    bool fromHere = m_moment < target && c && m_moment >= c->index;
+    for (const auto& sim : m_lanes) fromHere = fromHere && sim->integrator().restorable();
+    if (fromHere) {
+        // Forward from the moment shown, which lies after the checkpoint: fewer steps.
+        replayForward(target, true);
+    } else if (c) {
+        for (std::size_t i = 0; i < m_lanes.size() && i < c->lanes.size(); ++i) m_lanes[i]->restore(c->lanes[i]);
+        m_commonTime = c->extra.at(0);
+        m_until = c->extra.at(1);
+        m_moment = c->index;
+        m_params = m_lanes.front()->parameters();  // side by side, the common DT
+        replayForward(target, false);
+    }
+    m_replaying = false;
+    m_until = -1.0;  // shown paused
+    m_params = m_lanes.front()->parameters();
+    m_stepDoubling = m_lanes.front()->integratorOptions().stepDoubling;
+    m_failureReported = m_lanes.front()->failed();
+    updateDtLimit();
+}
+
+void SimWorker::scrubToTime(double t) {
+    if (m_lanes.empty() || m_recorder.empty()) return;
+    if (m_running) pause();
+    // From the last checkpoint before t, forward one moment at a time until t is reached.
+    const auto& all = m_recorder.checkpoints();
+    auto after = std::upper_bound(all.begin(), all.end(), t, [](double time, const simcore::TimelineCheckpoint& c) {
+        return time <= c.lanes.front().diag.time;
+    });
+    goTo(after == all.begin() ? all.front().index : (after - 1)->index);
+    const double reach = t - 1e-9 * std::max(1e-3, std::abs(t));
+    while (m_moment < m_recorder.last() && m_lanes.front()->time() < reach) {
+        const long before = m_moment;
+        goTo(m_moment + 1);
+        if (m_moment == before) break;  // not re-simulated (CVODE): the nearest kept moment
+    }
+    publish(true);
+}
+
+void SimWorker::scrubBy(long delta) { scrubTo(m_moment + delta); }
+
+void SimWorker::scrubToEnd() { scrubTo(m_recorder.last()); }
+
+void SimWorker::setTimelineBudget(qulonglong bytes) {
+    m_recorder.setBudget(std::size_t(bytes));
+    publish(true);
+}
+
+TimelineInfo SimWorker::timelineInfo() const {
+    TimelineInfo t;
+    t.moment = m_moment;
+    t.first = m_recorder.first();
+    t.last = std::max(m_recorder.last(), 0L);
+    t.firstTime = m_firstTime;
+    t.lastTime = m_lastTime;
+    t.bytes = m_recorder.bytes();
+    t.budget = m_recorder.budget();
+    t.interval = m_recorder.interval();
+    t.checkpoints = m_recorder.checkpointCount();
+    return t;
 }
 
 }  // namespace elui

@@ -10,6 +10,14 @@
 // Lanes: one simulation per integrator. Side by side, every lane starts from the same
 // state, gets the same parameter edits and the same mouse input, and is advanced to the
 // same simulated time after every step of the common DT.
+//
+// Time travel: every moment of the run is recorded (simcore::TimelineRecorder: checkpoints of
+// every lane every K steps within a memory budget, plus the log of what was done between
+// steps: parameter and integrator edits, step doubling, the pointer, run-until targets).
+// scrubTo() pauses and shows a recorded moment, re-simulated from the checkpoint before it and
+// the log, so it is the original frame bit for bit. Anything that changes the run at a
+// scrubbed moment (an edit, a grab, a step, Run) is a branch: the future after it is
+// forgotten here (the GUI keeps its rows as the abandoned future) and the run goes on from it.
 
 #include <algorithm>
 #include <atomic>
@@ -23,6 +31,7 @@
 #include <QVector3D>
 
 #include "frame.h"
+#include "timeline.h"
 
 class QTimer;
 
@@ -72,6 +81,17 @@ public:
     void stepOnce();
     void reset();
 
+    // --- time travel ---
+    // Pauses and shows the recorded moment `moment` (clamped to the recorded ones).
+    void scrubTo(long moment);
+    void scrubBy(long delta);             // relative to the moment shown (-1: one step back)
+    void scrubToEnd();                    // the newest moment recorded
+    // The first recorded moment at which lane 0's simulated time is at least t (the newest
+    // when none is).
+    void scrubToTime(double t);
+    // The checkpoints' memory budget (a smaller one thins them at once) [bytes].
+    void setTimelineBudget(qulonglong bytes);
+
     // Grabs the outer particle nearest the ray (lane 0 picks, every lane grabs the same one).
     void grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
     void moveAnchor(const QVector3D& anchor);
@@ -107,6 +127,31 @@ private:
     bool allFailed() const;
     void updateDtLimit();
 
+    // Time travel. What was done between two steps, replayed when a moment is re-simulated.
+    struct Input {
+        enum Kind { Parameter, Integrator, StepDoubling, Grab, Move, Release, Until };
+        long moment = 0;                  // done at this moment (after its step)
+        Kind kind = Parameter;
+        simcore::Param param = simcore::Param::Count;  // Parameter
+        std::string key;                  // Integrator: the name
+        double value = 0.0;               // Parameter, StepDoubling (0/1), Until
+        int particle = -1;                // Grab
+        Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // Grab, Move
+    };
+    // Logs an input done now (a branch first when the moment shown is not the newest).
+    void logInput(Input input);
+    void applyInput(const Input& input);
+    void setUntil(double until);          // m_until, logged
+    void branch();                        // forgets the future after the moment shown
+    void recordMoment();                  // after a step: the next moment
+    void startTimeline();
+    // Steps from the moment shown to `target` applying the log (the inputs at the moment shown
+    // too unless already applied). Stops early where a lane cannot be re-simulated exactly
+    // (CVODE): the moment shown is then the last exact one.
+    void replayForward(long target, bool inputsAtStartApplied);
+    void goTo(long target);               // scrubTo without the frame
+    TimelineInfo timelineInfo() const;
+
     std::vector<std::unique_ptr<simcore::Simulation>> m_lanes;
     std::shared_ptr<const SceneData> m_scene;
     quint64 m_sceneVersion = 0;
@@ -136,6 +181,13 @@ private:
     double m_publishStart = 0.0;
     double m_lastRowTime = -1.0;
     bool m_failureReported = false;
+
+    simcore::TimelineRecorder m_recorder;
+    std::vector<Input> m_inputs;          // by moment, in the order they were done
+    long m_moment = 0;                    // the moment the lanes are at
+    bool m_replaying = false;             // re-simulating: no rows, no recording, no frames
+    double m_firstTime = 0.0, m_lastTime = 0.0;  // lane 0's time at the first and newest moment
+    std::vector<FrameBatch::Branch> m_branches;  // since the last publish
 
     std::vector<simcore::Diagnostics> m_rows;  // recorded since the last publish (worker only)
     bool m_historyReset = true;

@@ -78,23 +78,59 @@ void SimulationController::takeFrame() {
     if (newScene) emit sceneChanged(m_latest->scene);
     if (batch.historyReset) {
         m_history.clear();
+        const bool hadAbandoned = !m_abandoned.empty();
+        m_abandoned.clear();
         emit historyReset();
+        if (hadAbandoned) emit abandonedChanged();
     }
-    if (!batch.rows.empty()) {
-        if (m_history.size() + batch.rows.size() > kMaxHistoryRows) {
-            // Keep the whole run visible at half the resolution.
-            std::size_t w = 0;
-            for (std::size_t r = 0; r < m_history.size(); r += 2) m_history[w++] = m_history[r];
-            m_history.resize(w);
-            emit historyReset();
-            emit rowsAppended(0, int(m_history.size()));
-        }
-        const int first = int(m_history.size());
-        m_history.insert(m_history.end(), batch.rows.begin(), batch.rows.end());
-        emit rowsAppended(first, int(batch.rows.size()));
+    std::size_t done = 0;
+    for (const FrameBatch::Branch& b : batch.branches) {
+        appendRows(batch.rows, done, b.rowsBefore);
+        done = b.rowsBefore;
+        cutHistory(b.time);
     }
+    appendRows(batch.rows, done, batch.rows.size());
     emit frameArrived(m_latest);
 }
+
+void SimulationController::appendRows(const std::vector<simcore::Diagnostics>& rows, std::size_t begin,
+                                      std::size_t end) {
+    if (begin >= end) return;
+    const std::size_t count = end - begin;
+    if (m_history.size() + count > kMaxHistoryRows) {
+        // Keep the whole run visible at half the resolution.
+        std::size_t w = 0;
+        for (std::size_t r = 0; r < m_history.size(); r += 2) m_history[w++] = m_history[r];
+        m_history.resize(w);
+        emit historyReset();
+        emit rowsAppended(0, int(m_history.size()));
+    }
+    const int first = int(m_history.size());
+    m_history.insert(m_history.end(), rows.begin() + std::ptrdiff_t(begin), rows.begin() + std::ptrdiff_t(end));
+    emit rowsAppended(first, int(count));
+}
+
+void SimulationController::cutHistory(double time) {
+    // Rows after the branch's instant are the abandoned future (replacing an older one).
+    auto cut = std::upper_bound(m_history.begin(), m_history.end(), time,
+                                [](double t, const simcore::Diagnostics& d) { return t < d.time; });
+    m_abandoned.assign(cut, m_history.end());
+    m_history.erase(cut, m_history.end());
+    emit historyBranched(time);
+    emit abandonedChanged();
+}
+
+void SimulationController::clearAbandoned() {
+    if (m_abandoned.empty()) return;
+    m_abandoned.clear();
+    emit abandonedChanged();
+}
+
+void SimulationController::scrubTo(long moment) { toWorker(&SimWorker::scrubTo, moment); }
+void SimulationController::scrubBy(long delta) { toWorker(&SimWorker::scrubBy, delta); }
+void SimulationController::scrubToEnd() { toWorker(&SimWorker::scrubToEnd); }
+void SimulationController::scrubToTime(double t) { toWorker(&SimWorker::scrubToTime, t); }
+void SimulationController::setTimelineBudget(qulonglong bytes) { toWorker(&SimWorker::setTimelineBudget, bytes); }
 
 void SimulationController::setScene(const simcore::ParameterSet& params, const QStringList& integrators) {
     m_params = params;

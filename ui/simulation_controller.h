@@ -38,6 +38,9 @@ public:
     const FramePtr& latest() const { return m_latest; }
     // Lane 0's recorded rows since the last reset (every step, at most one per kRowInterval).
     const std::vector<simcore::Diagnostics>& history() const { return m_history; }
+    // The abandoned future: lane 0's rows after the last branch's instant, as they were
+    // before the branch (one level; empty when none or cleared).
+    const std::vector<simcore::Diagnostics>& abandoned() const { return m_abandoned; }
     simcore::SceneKind sceneKind() const { return m_params.kind(); }
     const simcore::ParameterSet& parameters() const { return m_params; }
     QStringList integrators() const { return m_integrators; }
@@ -76,12 +79,24 @@ public:
     void grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
     void moveAnchor(const QVector3D& anchor);
     void release();
+    // Time travel (sim_worker.h): pause and show a recorded moment, re-simulated.
+    void scrubTo(long moment);
+    void scrubBy(long delta);  // relative to the moment shown: -1 is one step back
+    void scrubToStart() { scrubTo(0); }
+    void scrubToEnd();
+    void scrubToTime(double simulatedTime);  // the first moment at or after it
+    void setTimelineBudget(qulonglong bytes);
+    void clearAbandoned();
 
 signals:
     // To the GUI (emitted on the GUI thread).
     void frameArrived(const elui::FramePtr& frame);
     void historyReset();
     void rowsAppended(int first, int count);
+    // A branch cut the history at `time`: what followed is now abandoned() (the history was
+    // truncated: listeners redraw it whole).
+    void historyBranched(double time);
+    void abandonedChanged();  // abandoned() was cleared or replaced
     void sceneChanged(const std::shared_ptr<const elui::SceneData>& scene);
     void grabbed(int particle, const QVector3D& position);
     void parameterRejected(const QString& key, const QString& message);
@@ -105,6 +120,9 @@ private:
     Mailbox* m_outbox = nullptr;    // to this (GUI) thread (our child)
     FramePtr m_latest;
     std::vector<simcore::Diagnostics> m_history;
+    std::vector<simcore::Diagnostics> m_abandoned;
+    void appendRows(const std::vector<simcore::Diagnostics>& rows, std::size_t begin, std::size_t end);
+    void cutHistory(double time);
     simcore::ParameterSet m_params;
     QStringList m_integrators{QStringLiteral("rk4")};
     quint64 m_sceneVersion = 0;

@@ -2,12 +2,13 @@
 //
 //   elastic-lab [--scene S|FILE.json] [--set key=value]... [--integrator NAME] [--compare A,B,C]
 //               [--preset ID | --lesson ID] [--experiments] [--docks LIST]
-//               [--screenshot FILE --after SECONDS]
+//               [--screenshot FILE --after SECONDS [--travel-back SECONDS [--branch key=value]]]
 //
 // --screenshot runs (as fast as possible) to the given simulated time, renders the main
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string_view>
 
@@ -119,7 +120,16 @@ int main(int argc, char** argv) {
                                     QStringLiteral("Run in real time for SECONDS of wall time, print frame rate, "
                                                    "step rate and GUI latency, exit."),
                                     QStringLiteral("SECONDS"));
-    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt, optionsOpt, docksOpt, fpsOpt});
+    const QCommandLineOption travelOpt(QStringLiteral("travel-back"),
+                                       QStringLiteral("For --screenshot: once --after is reached, travel back this many "
+                                                      "simulated seconds on the timeline before the shot."),
+                                       QStringLiteral("SECONDS"));
+    const QCommandLineOption branchOpt(QStringLiteral("branch"),
+                                       QStringLiteral("With --travel-back: branch there with key=value (a parameter, or "
+                                                      "integrator=NAME), run on to --after and travel back again."),
+                                       QStringLiteral("key=value"));
+    parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt,
+                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -129,7 +139,7 @@ int main(int argc, char** argv) {
                         .arg(quoted(parser.positionalArguments().front())));
     // A value-taking option given twice would silently lose one of the values.
     for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &lessonOpt, &shotOpt, &afterOpt,
-                                           &optionsOpt, &docksOpt, &fpsOpt})
+                                           &optionsOpt, &docksOpt, &fpsOpt, &travelOpt, &branchOpt})
         if (parser.values(*once).size() > 1)
             return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
     if (parser.isSet(afterOpt) && !parser.isSet(shotOpt))
@@ -211,6 +221,34 @@ int main(int argc, char** argv) {
         return fail(QStringLiteral("--after needs a finite time in seconds, 0 to 1e6"));
 
     const bool screenshot = parser.isSet(shotOpt);
+    // --travel-back, --branch: a picture of time travel.
+    double travelBack = 0.0;
+    if (parser.isSet(travelOpt)) {
+        const auto v = simcore::parseNumber(parser.value(travelOpt).toStdString());
+        if (!screenshot) return fail(QStringLiteral("--travel-back needs --screenshot"));
+        if (!v || !(*v > 0.0) || !(*v <= after))
+            return fail(QStringLiteral("--travel-back needs a time in seconds above 0 and at most --after"));
+        travelBack = *v;
+    }
+    QString branchKey;
+    double branchValue = 0.0;
+    if (parser.isSet(branchOpt)) {
+        if (travelBack <= 0.0) return fail(QStringLiteral("--branch needs --travel-back (the instant it branches at)"));
+        const QString text = parser.value(branchOpt);
+        const qsizetype eq = text.indexOf(QLatin1Char('='));
+        branchKey = text.left(eq).trimmed();
+        if (branchKey == QLatin1String("integrator")) {
+            if (auto error = simcore::unknownIntegrator(text.mid(eq + 1).trimmed().toStdString()))
+                return fail(QStringLiteral("--branch ") + QString::fromStdString(*error));
+        } else {
+            simcore::ParameterSet probe = params;
+            if (auto error = probe.assign(text.toStdString())) return fail(QStringLiteral("--branch ") + QString::fromStdString(*error));
+            const simcore::ParamSpec* spec = simcore::findParam(branchKey.toStdString());
+            if (spec && (spec->isShape() || spec->group == simcore::ParamGroup::Start))
+                return fail(QStringLiteral("--branch %1 rebuilds the body (a new run, not a branch)").arg(quoted(branchKey)));
+            branchValue = probe.get(spec->id);
+        }
+    }
     if (screenshot) {
         // The screenshot is an output like the CLI's: never the scene file it was given, in a
         // format this build writes, and a place that can be written, all known before it runs.
@@ -324,7 +362,24 @@ int main(int argc, char** argv) {
                 app.exit(exitCode);
             });
         };
-        QObject::connect(controller, &elui::SimulationController::reachedTime, &window, shoot);
+        // Time travel: back by --travel-back; with --branch, change it there, run on to --after
+        // and travel back to the branch again, so both futures are in the plots.
+        const QString branchIntegrator = parser.value(branchOpt).mid(parser.value(branchOpt).indexOf(QLatin1Char('=')) + 1).trimmed();
+        auto branched = std::make_shared<bool>(branchKey.isEmpty());
+        QObject::connect(controller, &elui::SimulationController::reachedTime, &window,
+                         [=] {
+                             if (travelBack <= 0.0) return shoot();
+                             controller->scrubToTime(after - travelBack);
+                             if (!*branched) {
+                                 *branched = true;
+                                 if (branchKey == QLatin1String("integrator")) controller->setIntegrator(branchIntegrator);
+                                 else controller->setParameter(branchKey, branchValue);
+                                 controller->runUntil(after);
+                                 return;
+                             }
+                             controller->captureScene();  // the worker has shown that moment
+                             shoot();
+                         });
         QObject::connect(controller, &elui::SimulationController::runFailed, &window, shoot);
         QObject::connect(controller, &elui::SimulationController::sceneRejected, &window,
                          [&app](const QString& m) {
