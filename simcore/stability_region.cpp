@@ -221,36 +221,36 @@ double rayExit(const std::string& integrator, Complex z, double sMax) {
 
 std::string regionNote(const std::string& integrator) {
     if (integrator == "euler" || integrator == "midpoint" || integrator == "rk4")
-        return "Region |R(hλ)| ≤ 1 of its stability polynomial R (the Taylor polynomial of e^z); it touches "
+        return "Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches "
                "the imaginary axis " +
                std::string(integrator == "rk4" ? "up to ±2.83i: undamped modes are stable up to hω = 2√2"
                                                 : "only at 0: an undamped mode grows for every DT") +
                ".";
     if (integrator == "rk45")
-        return "Region |R(hλ)| ≤ 1 of Dormand–Prince's 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a "
+        return "Region: |R(hλ)| ≤ 1 for Dormand–Prince's 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a "
                "fixed step. The adaptive run picks its own step from the error tolerance: it does not blow up, it "
                "takes smaller steps.";
     if (integrator == "implicit-euler")
-        return "Region |1/(1 − hλ)| ≤ 1: everything outside the disc |1 − hλ| < 1, the whole left half-plane "
+        return "Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| < 1, the whole left half-plane "
                "(A-stable): no DT limit from stability.";
     if (integrator == "symplectic-euler")
-        return "No scalar R: the region of an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the "
+        return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the "
                "modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin "
                "uses the exact step matrix.";
     if (integrator == "verlet")
-        return "No scalar R: the region of an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the "
+        return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the "
                "half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). "
                "Undamped modes: hω ≤ 2. The margin uses the exact step matrix.";
     if (integrator == "cvode-bdf")
-        return "Adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, "
+        return "No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, "
                "BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT "
                "limit, DT is only the output interval.";
     if (integrator == "cvode-adams")
-        return "Adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions are small "
+        return "No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions are small "
                "(explicit-like); CVODE keeps the internal step inside them by its error test: no DT limit, stiff bodies "
                "only cost steps.";
     if (integrator == "xpbd")
-        return "XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally stable, no "
+        return "No region: XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally stable, no "
                "region in the hλ plane; large DT costs accuracy (the body turns soft), not stability.";
     return "No stability region for " + integrator + ".";
 }
@@ -326,10 +326,12 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
     const double limit = margin.factor * h;
     const bool isFastest = margin.hasLimiting && std::abs(std::abs(margin.limiting) - fastest) <= 1e-9 * fastest;
     char mode[160] = "";
-    if (margin.hasLimiting)
-        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g %c %.3gi)", isFastest ? "the fastest mode" : "the mode",
-                      h * margin.limiting.real(), margin.limiting.imag() < 0 ? '-' : '+',
-                      std::abs(h * margin.limiting.imag()));
+    if (margin.hasLimiting && std::abs(margin.limiting.imag()) <= 1e-9 * std::abs(margin.limiting))
+        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g, a pure decay)", isFastest ? "the fastest mode" : "the mode",
+                      h * margin.limiting.real());
+    else if (margin.hasLimiting)
+        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g ± %.3gi)", isFastest ? "the fastest mode" : "the mode",
+                      h * margin.limiting.real(), std::abs(h * margin.limiting.imag()));
     else
         std::snprintf(mode, sizeof mode, "the fastest mode");
     if (std::isinf(margin.factor)) {

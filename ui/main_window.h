@@ -29,6 +29,7 @@ class RunDock;
 class PlotDock;
 class EnergyBarsDock;
 class PvDock;
+class StabilityMapDock;
 struct Preset;
 
 class MainWindow : public QMainWindow {
@@ -46,7 +47,8 @@ public:
     PlotDock* plotDock() const { return m_plotDock; }
     EnergyBarsDock* energyBarsDock() const { return m_energyBarsDock; }
     PvDock* pvDock() const { return m_pvDock; }
-    // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv".
+    StabilityMapDock* stabilityMapDock() const { return m_stabilityMapDock; }
+    // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv", "stability-map".
     static QStringList dockNames();
     // Shows the named dock (hidden ones are closed by default); false for an unknown name.
     bool openDock(const QString& name);
@@ -137,6 +139,7 @@ private:
     PlotDock* m_plotDock = nullptr;
     EnergyBarsDock* m_energyBarsDock = nullptr;
     PvDock* m_pvDock = nullptr;
+    StabilityMapDock* m_stabilityMapDock = nullptr;
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;
