@@ -240,7 +240,7 @@ std::string regionNote(const std::string& integrator) {
     if (integrator == "verlet")
         return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the "
                "half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). "
-               "Undamped modes: hω ≤ 2. The margin uses the exact step matrix.";
+               "Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.";
     if (integrator == "cvode-bdf")
         return "No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, "
                "BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT "
@@ -300,9 +300,16 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
     for (const Complex& l : points.lambda) scale = std::max(scale, std::abs(l));
     double fastest = 0.0;
     double smallest = std::numeric_limits<double>::infinity();
+    const bool oscillator = regionKind(integrator) == RegionKind::Oscillator;
     for (const Complex& l : points.lambda) {
         if (!(std::abs(l) > 1e-6 * scale) || l.real() > 1e-9 * scale) continue;
-        fastest = std::max(fastest, std::abs(l));
+        if (std::abs(l) > fastest) {
+            fastest = std::abs(l);
+            margin.fastest = l;
+        }
+        // Oscillator methods: the picture is exact only for underdamped modes that decouple;
+        // their margin comes from the step matrix, which names no single point.
+        if (oscillator) continue;
         const double s = rayExit(integrator, h * l);
         if (s < smallest || (s == smallest && std::abs(l) > std::abs(margin.limiting))) {
             smallest = s;
@@ -326,12 +333,18 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
     const double limit = margin.factor * h;
     const bool isFastest = margin.hasLimiting && std::abs(std::abs(margin.limiting) - fastest) <= 1e-9 * fastest;
     char mode[160] = "";
+    // predictedStableStep's basis for the oscillator methods: the exact step matrix up to
+    // kExactStepLimit free coordinates, else each mode with its modal damping.
+    const char* basis = modes.stiffness.rows() > 0 && modes.unstableModes == 0 ? "exact step matrix"
+                                                                               : "per mode, modal damping";
     if (margin.hasLimiting && std::abs(margin.limiting.imag()) <= 1e-9 * std::abs(margin.limiting))
         std::snprintf(mode, sizeof mode, "%s (hλ = %.3g, a pure decay)", isFastest ? "the fastest mode" : "the mode",
                       h * margin.limiting.real());
     else if (margin.hasLimiting)
         std::snprintf(mode, sizeof mode, "%s (hλ = %.3g ± %.3gi)", isFastest ? "the fastest mode" : "the mode",
                       h * margin.limiting.real(), std::abs(h * margin.limiting.imag()));
+    else if (oscillator)
+        std::snprintf(mode, sizeof mode, "a mode pair goes unstable (%s);", basis);
     else
         std::snprintf(mode, sizeof mode, "the fastest mode");
     if (std::isinf(margin.factor)) {
@@ -342,11 +355,19 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
                       "every DT (slowly when DT is small).",
                       mode);
     } else if (margin.factor >= 1.0) {
-        std::snprintf(text, sizeof text, "DT can grow %.2f× (to %.3g s) before %s leaves the region.", margin.factor,
-                      limit, mode);
+        if (oscillator)
+            std::snprintf(text, sizeof text, "DT can grow %.2f× (to %.3g s) before %s the picture is exact for "
+                          "underdamped modes only.", margin.factor, limit, mode);
+        else
+            std::snprintf(text, sizeof text, "DT can grow %.2f× (to %.3g s) before %s leaves the region.",
+                          margin.factor, limit, mode);
     } else {
-        std::snprintf(text, sizeof text, "DT is already outside: %s is out of the region; shrink DT by %.2f× (to %.3g s) "
-                      "to bring it back.", mode, 1.0 / margin.factor, limit);
+        if (oscillator)
+            std::snprintf(text, sizeof text, "DT is already outside the stable range (%s): shrink DT by %.2f× (to %.3g s).",
+                          basis, 1.0 / margin.factor, limit);
+        else
+            std::snprintf(text, sizeof text, "DT is already outside: %s is out of the region; shrink DT by %.2f× (to "
+                          "%.3g s) to bring it back.", mode, 1.0 / margin.factor, limit);
     }
     margin.text = text;
     return margin;

@@ -79,7 +79,8 @@ SpectrumPoints spectrumPoints(const LinearModes& modes);
 struct StepMargin {
     double factor = 0.0;                   // s (inf: unlimited; 0: unstable for every DT)
     std::complex<double> limiting{0, 0};   // lambda of the limiting mode [1/s] (R methods)
-    bool hasLimiting = false;
+    bool hasLimiting = false;              // R methods only (the oscillator methods' step matrix names no point)
+    std::complex<double> fastest{0, 0};    // the fastest counted mode's lambda [1/s]
     std::string text;                      // "DT can grow 2.3× before ..." in words
 };
 // R methods: the first exit of s·h·lambda from the region along each ray (scan, then

@@ -166,6 +166,7 @@ void StabilityMapDock::request() {
 
 void StabilityMapDock::startJob(Job job) {
     m_jobRunning = true;
+    if (m_resultSerial == 0) m_marginLabel->setText(tr("Linearising the body…"));
     if (m_jobThread.joinable()) m_jobThread.join();  // the last job ended (its result was delivered)
     m_jobThread = std::thread([this, job = std::move(job)] {
         Result r;
@@ -205,7 +206,7 @@ void StabilityMapDock::present(const Result& r) {
         for (std::size_t i = 0; i < curve.size(); ++i) points.append(QCPCurveData(double(i), curve[i].real(), curve[i].imag()));
         c->data()->set(points, true);
         c->setPen(QPen(QColor(30, 110, 40), 2.0));
-        if (m_boundary.empty()) c->setName(tr("edge |R| = 1"));
+        if (m_boundary.empty()) c->setName(simcore::regionKind(r.integrator) == simcore::RegionKind::Oscillator ? tr("edge (radius 1)") : tr("edge |R| = 1"));
         else c->removeFromLegend();
         m_boundary.push_back(c);
     }
@@ -224,6 +225,8 @@ void StabilityMapDock::present(const Result& r) {
         m_limiting->addData(z.real(), -z.imag());
     }
     m_limiting->setVisible(m_margin.hasLimiting && hasRegion);
+    if (m_limiting->visible()) m_limiting->addToLegend();
+    else m_limiting->removeFromLegend();
 
     const QString name = QString::fromStdString(r.integrator);
     m_plot->xAxis->setLabel(tr("Re(hλ), h = DT = %1 s").arg(m_shownDt));
@@ -259,12 +262,15 @@ void StabilityMapDock::showMeasured() {
                         .arg(row.runs)
                         .arg(kScanDuration)
                         .arg(std::isinf(row.predicted) ? tr("unlimited") : seconds(row.predicted));
-            if (m_margin.hasLimiting) {
-                Complex l = m_margin.limiting;
+            // The limiting mode (R methods) or the fastest one (oscillator methods) at the
+            // measured DT: on its dot's ray, on the boundary when the prediction holds.
+            Complex l = m_margin.hasLimiting ? m_margin.limiting : m_margin.fastest;
+            if (l != Complex(0.0, 0.0)) {
                 if (l.imag() < 0) l = std::conj(l);
                 m_measuredMark = row.stable * l;
                 m_measured->addData(m_measuredMark->real(), m_measuredMark->imag());
-                text += tr(" ✕ = that mode at the measured DT.");
+                text += m_margin.hasLimiting ? tr(" ✕ = the ringed mode at the measured DT.")
+                                             : tr(" ✕ = the fastest mode at the measured DT.");
             }
         }
         m_measuredText = text;
@@ -288,6 +294,7 @@ void StabilityMapDock::fitView() {
     for (const auto& curve : m_curves)
         for (const Complex& z : curve)
             if (std::abs(z) <= 4.0) take(z);
+            else if (std::abs(z.real()) <= 4.0) take(Complex(z.real(), std::clamp(z.imag(), -3.0, 3.0)));  // Verlet's strip
     const double regionSize = std::max(x1 - x0, y1 - y0);
     // Points far out (DT much too large) widen the view up to 40 region sizes.
     const double cap = 40.0 * regionSize;

@@ -7,6 +7,7 @@
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string_view>
 
@@ -33,6 +34,7 @@
 #include "scenefile.h"
 #include "scenes.h"
 #include "simulation_controller.h"
+#include "stability_map_dock.h"
 #include "viewport.h"
 
 namespace {
@@ -288,17 +290,25 @@ int main(int argc, char** argv) {
     if (screenshot) {
         const QString path = parser.value(shotOpt);
         int exitCode = 0;
-        auto shoot = [&window, &app, path, &exitCode] {
+        // The grab waits for an open stability map to finish its linearisation (worker thread,
+        // up to a few seconds for a large body); the two-minute guard below still holds.
+        std::function<void()> grabWhenReady = [&window, &app, path, &exitCode, &grabWhenReady] {
+            const elui::StabilityMapDock* map = window.stabilityMapDock();
+            if (map->isVisible() && map->computing()) {
+                QTimer::singleShot(50, &window, grabWhenReady);
+                return;
+            }
+            QApplication::processEvents();
+            const QString error = elui::writeImage(path, window.grab().toImage());
+            if (!error.isEmpty()) {
+                std::fprintf(stderr, "elastic-lab: %s\n", qPrintable(error));
+                exitCode = 1;
+            }
+            app.exit(exitCode);
+        };
+        auto shoot = [&window, &grabWhenReady] {
             // Let the last frame reach the viewports and be painted, then grab the window.
-            QTimer::singleShot(400, &window, [&window, &app, path, &exitCode] {
-                QApplication::processEvents();
-                const QString error = elui::writeImage(path, window.grab().toImage());
-                if (!error.isEmpty()) {
-                    std::fprintf(stderr, "elastic-lab: %s\n", qPrintable(error));
-                    exitCode = 1;
-                }
-                app.exit(exitCode);
-            });
+            QTimer::singleShot(400, &window, grabWhenReady);
         };
         QObject::connect(controller, &elui::SimulationController::reachedTime, &window, shoot);
         QObject::connect(controller, &elui::SimulationController::runFailed, &window, shoot);
