@@ -236,7 +236,7 @@ std::string regionNote(const std::string& integrator) {
     if (integrator == "symplectic-euler")
         return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the "
                "modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin "
-               "uses the exact step matrix.";
+               "uses the step matrix, not the picture.";
     if (integrator == "verlet")
         return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the "
                "half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). "
