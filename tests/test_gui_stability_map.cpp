@@ -116,6 +116,28 @@ private slots:
         QVERIFY(!soft.set("ks", 400.0));
         showState(dock, soft, "rk4");
         QVERIFY(!dock.measuredMark().has_value());
+        // Verlet names no limiting mode (its margin is the step matrix's): the cross marks the
+        // fastest mode at the measured DT.
+        showState(dock, spring(0.001), "verlet");
+        QVERIFY(dock.tryButton()->isEnabled());
+        QTest::mouseClick(dock.tryButton(), Qt::LeftButton);
+        QVERIFY(testsupport::waitUntil([&] { return !dock.scanning(); }));
+        QVERIFY(dock.measuredMark().has_value());
+        QVERIFY2(dock.measuredText().contains("fastest mode"), qPrintable(dock.measuredText()));
+    }
+
+    void largeBodiesUseTheIterativeEstimate() {
+        // 700 + 700 particles, 2800 free coordinates: beyond the dense limit (1200), the points
+        // are Arnoldi's Ritz values and the dock says so.
+        StabilityMapDock dock;
+        dock.resize(420, 520);
+        dock.show();
+        ParameterSet p(SceneKind::Ring2d);
+        QVERIFY(!p.set("particles", 700));
+        showState(dock, p, "rk4");
+        QVERIFY2(dock.methodText().contains("Arnoldi"), qPrintable(dock.methodText()));
+        QCOMPARE(dock.pointCount(), 80);
+        QVERIFY(dock.marginText().startsWith("rk4: DT"));
     }
 
     void mainWindowOpensTheDockAndFeedsIt() {
