@@ -47,6 +47,11 @@ struct LinearModes {
     // coordinates). Methods with a stability function R use these (no modal approximation).
     std::vector<std::complex<double>> eigenvalues;
     std::complex<double> fastest{0.0, 0.0};  // the eigenvalue of largest modulus [1/s]
+    // Large bodies (dense = false): Ritz values of the first-order system by Arnoldi
+    // (arnoldiSteps steps on the Jacobian products, fully re-orthogonalised); its extreme
+    // eigenvalues (largest modulus) converge first. Empty for dense bodies.
+    std::vector<std::complex<double>> ritzValues;
+    int arnoldiSteps = 0;
     // Mass-normalised stiffness and damping, a = -A x - C v (kept up to kExactStepLimit free
     // coordinates): the partitioned methods' exact step matrices are built from them.
     Eigen::MatrixXd stiffness, damping2;
@@ -59,9 +64,13 @@ struct LinearModes {
 // Linearised at the start state of the scene (with its perturbation).
 inline constexpr int kExactEigenLimit = 400;
 inline constexpr int kExactStepLimit = 120;
+inline constexpr int kDenseModeLimit = 1200;
 // exactEigenLimit: up to this many free coordinates the first-order eigenvalues are computed
-// (a dense non-symmetric eigen-solve of twice that size: ~1 s at 400).
-LinearModes linearModes(const ParameterSet& params, int exactEigenLimit = kExactEigenLimit);
+// (a dense non-symmetric eigen-solve of twice that size: ~1 s at 400). denseLimit: up to this
+// many, all modes (dense symmetric eigen-solve); above it the highest mode alone, by power
+// iteration on the Jacobian products (dense = false).
+LinearModes linearModes(const ParameterSet& params, int exactEigenLimit = kExactEigenLimit,
+                        int denseLimit = kDenseModeLimit);
 
 // Spectral radius of one step of `integrator` on x'' + c x' + w^2 x = 0.
 double modeAmplification(const std::string& integrator, double h, double omega, double c);

@@ -501,10 +501,10 @@ private slots:
 #endif
         MainWindow window(false);
         QVERIFY(window.energyBarsDock()->isHidden() && window.pvDock()->isHidden());
-        QCOMPARE(MainWindow::dockNames(), (QStringList{"energy-bars", "pv", "timeline"}));
+        QCOMPARE(MainWindow::dockNames(), (QStringList{"energy-bars", "pv", "stability-map", "timeline"}));
         window.show();
         QVERIFY(window.openDock("energy-bars") && window.openDock("pv"));
-        QVERIFY(!window.openDock("no-such-dock") && !window.openDock("stability-map"));
+        QVERIFY(!window.openDock("no-such-dock") && !window.openDock("timeline-map"));
         QVERIFY(window.energyBarsDock()->isVisible() && window.pvDock()->isVisible());
         window.startScene(simcore::ParameterSet(SceneKind::Ring2d), {"rk4"});
         QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, testsupport::kHangGuardMs);

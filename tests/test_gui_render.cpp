@@ -253,6 +253,20 @@ private slots:
         QVERIFY(testsupport::waitForExit(docks));
         QVERIFY2(docks.exitCode() == 0, docks.readAllStandardError().constData());
         QVERIFY(!QImage(docksShot).isNull());
+        // The stability map opens for a screenshot too, which waits for its linearisation.
+        QProcess map;
+        const QString mapShot = dir.filePath("map.png");
+        map.start(ELASTIC_LAB_GUI, {"--scene", "ring2d", "--docks", "stability-map", "--screenshot", mapShot,
+                                    "--after", "0.1"});
+        QVERIFY(testsupport::waitForExit(map));
+        QVERIFY2(map.exitCode() == 0, map.readAllStandardError().constData());
+        const QImage mapImage(mapShot);
+        QVERIFY(!mapImage.isNull());
+        // The region's fill (light green, ui/stability_map_dock.cpp) is in the picture.
+        int fill = 0;
+        for (int y = 0; y < mapImage.height(); ++y)
+            for (int x = 0; x < mapImage.width(); ++x) fill += mapImage.pixelColor(x, y) == QColor(196, 232, 190);
+        QVERIFY2(fill > 2000, qPrintable(QString("%1 pixels of the region's fill").arg(fill)));
         // Bad input is refused with a message, before any window.
         QProcess bad;
         bad.start(ELASTIC_LAB_GUI, {"--scene", "ring2d", "--set", "ks=-3", "--screenshot", path});
@@ -318,8 +332,8 @@ private slots:
             {{"--set", "ks=-3"}, "--set ks"},
             {{"--show", "strain,strain"}, "listed twice"},
             // Docks this build does not have are refused like any unknown name (issue 16).
-            {{"--docks", "no-such-dock"}, "unknown dock 'no-such-dock'; allowed: energy-bars, pv, timeline"},
-            {{"--docks", "energy-bars,stability-map"}, "unknown dock 'stability-map'; allowed: energy-bars, pv, timeline"},
+            {{"--docks", "no-such-dock"}, "unknown dock 'no-such-dock'; allowed: energy-bars, pv, stability-map, timeline"},
+            {{"--docks", "energy-bars,no-such-dock"}, "unknown dock 'no-such-dock'; allowed: energy-bars, pv, stability-map, timeline"},
             {{"--docks", "pv,pv"}, "listed twice"},
             {{"--docks", "pv,"}, "is empty"},
             {{"--docks", "pv", "--docks", "energy-bars"}, "--docks is given 2 times"},

@@ -35,11 +35,12 @@ Lesson make(const QString& id, const QString& title, const QString& scene, QList
 QList<Lesson> lessons() {
     const QString bars = QStringLiteral("energy-bars");
     const QString pv = QStringLiteral("pv");
+    const QString map = QStringLiteral("stability-map");
     return {
         // The perturbation is the stability scan's (0.01 m, seed 1): the run in the window is
         // the scan's trial run at the DT the student sets.
         make(QStringLiteral("euler-limit"), QObject::tr("1. How large may DT be for Euler?"), QStringLiteral("ring2d"),
-             {{"perturb", 0.01}, {"dt", 0.007}}, {QStringLiteral("euler")}, {bars}),
+             {{"perturb", 0.01}, {"dt", 0.007}}, {QStringLiteral("euler")}, {bars, map}),
         make(QStringLiteral("energy-drift"), QObject::tr("2. Energy drift: Euler, midpoint, RK4"),
              QStringLiteral("ring2d"), {{"dt", 0.003}},
              {QStringLiteral("euler"), QStringLiteral("midpoint"), QStringLiteral("rk4")}, {bars}),
@@ -47,14 +48,14 @@ QList<Lesson> lessons() {
              QStringLiteral("sphere3d"), {{"subdivisions", 2}, {"mass_inner", 5.0}}, {QStringLiteral("rk4")}, {bars}),
         make(QStringLiteral("refine-sphere"), QObject::tr("4. A finer sphere needs a smaller DT"),
              QStringLiteral("sphere3d"), {{"subdivisions", 1}, {"perturb", 0.01}, {"dt", 0.01}},
-             {QStringLiteral("rk4")}, {}),
+             {QStringLiteral("rk4")}, {map}),
         make(QStringLiteral("pv-isotherm"), QObject::tr("5. Pressure and volume on the isotherm"),
              QStringLiteral("ring2d"), {}, {QStringLiteral("rk4")}, {pv}),
         make(QStringLiteral("restitution"), QObject::tr("6. Restitution: a particle and a body"),
              QStringLiteral("ring2d"), {{"restitution", 0.9}}, {QStringLiteral("rk4")}, {bars}),
         make(QStringLiteral("stiff-springs"), QObject::tr("7. Stiff springs: explicit against implicit"),
              QStringLiteral("ring2d"), {{"ks", 1e6}, {"dt", 0.01}},
-             {QStringLiteral("implicit-euler"), QStringLiteral("rk4")}, {}),
+             {QStringLiteral("implicit-euler"), QStringLiteral("rk4")}, {map}),
     };
 }
 

@@ -30,6 +30,7 @@
 #include "run_dock.h"
 #include "scene_dock.h"
 #include "scenes.h"
+#include "stability_map_dock.h"
 #include "simulation_controller.h"
 #include "studies_dialog.h"
 #include "timeline_dock.h"
@@ -334,22 +335,29 @@ void MainWindow::createDocks() {
     splitDockWidget(m_energyBarsDock, m_pvDock, Qt::Vertical);
     m_energyBarsDock->hide();
     m_pvDock->hide();
+    // The stability map shares the P–V diagram's place (tabbed when both are open); closed
+    // until asked for, and idle while closed.
+    m_stabilityMapDock = new StabilityMapDock(this);
+    tabifyDockWidget(m_pvDock, m_stabilityMapDock);
+    m_stabilityMapDock->hide();
     for (QDockWidget* d : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_parameterDock),
                            static_cast<QDockWidget*>(m_runDock), static_cast<QDockWidget*>(m_plotDock),
-                           static_cast<QDockWidget*>(m_energyBarsDock), static_cast<QDockWidget*>(m_pvDock)})
+                           static_cast<QDockWidget*>(m_energyBarsDock), static_cast<QDockWidget*>(m_pvDock),
+                           static_cast<QDockWidget*>(m_stabilityMapDock)})
         m_viewMenu->addAction(d->toggleViewAction());
     resizeDocks({m_runDock, m_plotDock}, {290, 420}, Qt::Horizontal);
 }
 
 QStringList MainWindow::dockNames() {
-    return {QStringLiteral("energy-bars"), QStringLiteral("pv"), QStringLiteral("timeline")};
+    return {QStringLiteral("energy-bars"), QStringLiteral("pv"), QStringLiteral("stability-map"), QStringLiteral("timeline")};
 }
 
 QDockWidget* MainWindow::dock(const QString& name) const {
-    return name == QLatin1String("energy-bars") ? static_cast<QDockWidget*>(m_energyBarsDock)
-           : name == QLatin1String("pv")        ? static_cast<QDockWidget*>(m_pvDock)
-           : name == QLatin1String("timeline")  ? static_cast<QDockWidget*>(m_timelineDock)
-                                                : nullptr;
+    return name == QLatin1String("energy-bars")     ? static_cast<QDockWidget*>(m_energyBarsDock)
+           : name == QLatin1String("pv")            ? static_cast<QDockWidget*>(m_pvDock)
+           : name == QLatin1String("stability-map") ? static_cast<QDockWidget*>(m_stabilityMapDock)
+           : name == QLatin1String("timeline")      ? static_cast<QDockWidget*>(m_timelineDock)
+                                                    : nullptr;
 }
 
 bool MainWindow::openDock(const QString& name) {
@@ -368,6 +376,8 @@ bool MainWindow::openDock(const QString& name) {
         resizeDocks({m_plotDock, dock}, {380, 350}, Qt::Horizontal);
         if (!m_energyBarsDock->isHidden() && !m_pvDock->isHidden())
             resizeDocks({m_energyBarsDock, m_pvDock}, {360, 500}, Qt::Vertical);
+        if (!m_energyBarsDock->isHidden() && !m_stabilityMapDock->isHidden())
+            resizeDocks({m_energyBarsDock, m_stabilityMapDock}, {300, 560}, Qt::Vertical);
     });
     return true;
 }
@@ -525,6 +535,7 @@ void MainWindow::onFrame(const FramePtr& frame) {
     m_runDock->showFrame(frame);
     m_plotDock->setLive(frame->running);
     m_energyBarsDock->showFrame(*frame);
+    m_stabilityMapDock->setState(frame->parameters, frame->lanes.front().integrator);
     if (!m_paramsShown || !(m_shownParams == frame->parameters)) {
         m_shownParams = frame->parameters;
         m_paramsShown = true;

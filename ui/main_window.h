@@ -30,6 +30,7 @@ class RunDock;
 class PlotDock;
 class EnergyBarsDock;
 class PvDock;
+class StabilityMapDock;
 class TimelineDock;
 struct Preset;
 struct Lesson;
@@ -51,7 +52,9 @@ public:
     EnergyBarsDock* energyBarsDock() const { return m_energyBarsDock; }
     PvDock* pvDock() const { return m_pvDock; }
     TimelineDock* timelineDock() const { return m_timelineDock; }
-    // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv", "timeline".
+    StabilityMapDock* stabilityMapDock() const { return m_stabilityMapDock; }
+    // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv", "stability-map",
+    // "timeline".
     static QStringList dockNames();
     // Shows the named dock (hidden ones are closed by default); false for an unknown name.
     bool openDock(const QString& name);
@@ -151,6 +154,7 @@ private:
     EnergyBarsDock* m_energyBarsDock = nullptr;
     PvDock* m_pvDock = nullptr;
     TimelineDock* m_timelineDock = nullptr;
+    StabilityMapDock* m_stabilityMapDock = nullptr;
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;

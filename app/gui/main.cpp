@@ -8,6 +8,7 @@
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
 #include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -37,6 +38,7 @@
 #include "scenefile.h"
 #include "scenes.h"
 #include "simulation_controller.h"
+#include "stability_map_dock.h"
 #include "viewport.h"
 
 namespace {
@@ -350,17 +352,25 @@ int main(int argc, char** argv) {
     if (screenshot) {
         const QString path = parser.value(shotOpt);
         int exitCode = 0;
-        auto shoot = [&window, &app, path, &exitCode] {
+        // The grab waits for an open stability map to finish its linearisation (worker thread,
+        // up to a few seconds for a large body); the two-minute guard below still holds.
+        std::function<void()> grabWhenReady = [&window, &app, path, &exitCode, &grabWhenReady] {
+            const elui::StabilityMapDock* map = window.stabilityMapDock();
+            if (map->isVisible() && map->computing()) {
+                QTimer::singleShot(50, &window, grabWhenReady);
+                return;
+            }
+            QApplication::processEvents();
+            const QString error = elui::writeImage(path, window.grab().toImage());
+            if (!error.isEmpty()) {
+                std::fprintf(stderr, "elastic-lab: %s\n", qPrintable(error));
+                exitCode = 1;
+            }
+            app.exit(exitCode);
+        };
+        auto shoot = [&window, &grabWhenReady] {
             // Let the last frame reach the viewports and be painted, then grab the window.
-            QTimer::singleShot(400, &window, [&window, &app, path, &exitCode] {
-                QApplication::processEvents();
-                const QString error = elui::writeImage(path, window.grab().toImage());
-                if (!error.isEmpty()) {
-                    std::fprintf(stderr, "elastic-lab: %s\n", qPrintable(error));
-                    exitCode = 1;
-                }
-                app.exit(exitCode);
-            });
+            QTimer::singleShot(400, &window, grabWhenReady);
         };
         // Time travel: back by --travel-back; with --branch, change it there, run on to --after
         // and travel back to the branch again, so both futures are in the plots.

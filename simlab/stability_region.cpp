@@ -1,0 +1,376 @@
+#include "stability_region.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <numbers>
+
+#include <Eigen/Eigenvalues>
+
+#include "integrators.h"
+
+namespace simcore {
+
+namespace {
+
+using Complex = std::complex<double>;
+using Curve = std::vector<Complex>;
+
+// R = P / Q, coefficients in ascending powers of z: the methods' stability functions
+// (integrators.cpp, stabilityFunction; the test checks that both agree on the traced boundary).
+struct Rational {
+    std::vector<double> p, q;
+};
+
+Rational rationalOf(const std::string& name) {
+    if (name == "euler") return {{1.0, 1.0}, {1.0}};
+    if (name == "midpoint") return {{1.0, 1.0, 0.5}, {1.0}};
+    if (name == "rk4") return {{1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24}, {1.0}};
+    // Dormand-Prince's 5th-order solution: b^T A^(k-1) 1 = 1/k! for k <= 5 and 1/600 for k = 6.
+    if (name == "rk45") return {{1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 600}, {1.0}};
+    if (name == "implicit-euler") return {{1.0}, {1.0, -1.0}};
+    return {};
+}
+
+// All roots of sum c_k z^k (c_d != 0): eigenvalues of the companion matrix, Newton-polished.
+std::vector<Complex> polynomialRoots(const std::vector<Complex>& c) {
+    const int d = int(c.size()) - 1;
+    std::vector<Complex> roots;
+    if (d < 1) return roots;
+    if (d == 1) return {-c[0] / c[1]};
+    Eigen::MatrixXcd companion = Eigen::MatrixXcd::Zero(d, d);
+    for (int i = 1; i < d; ++i) companion(i, i - 1) = 1.0;
+    for (int i = 0; i < d; ++i) companion(i, d - 1) = -c[std::size_t(i)] / c[std::size_t(d)];
+    Eigen::ComplexEigenSolver<Eigen::MatrixXcd> eig(companion, false);
+    for (int i = 0; i < d; ++i) {
+        Complex z = eig.eigenvalues()[i];
+        for (int it = 0; it < 3; ++it) {
+            Complex f = 0.0, df = 0.0;
+            for (int k = d; k >= 0; --k) {
+                df = df * z + f;
+                f = f * z + c[std::size_t(k)];
+            }
+            if (std::abs(df) == 0.0) break;
+            z -= f / df;
+        }
+        roots.push_back(z);
+    }
+    return roots;
+}
+
+// |R(z)| = 1 as closed curves: the roots of P(z) - e^{iθ} Q(z), continued in θ over one turn.
+std::vector<Curve> rationalBoundary(const Rational& r, int samples) {
+    const std::size_t d = std::max(r.p.size(), r.q.size()) - 1;
+    auto rootsAt = [&](double theta) {
+        const Complex e = std::polar(1.0, theta);
+        std::vector<Complex> c(d + 1, 0.0);
+        for (std::size_t k = 0; k <= d; ++k) {
+            if (k < r.p.size()) c[k] += r.p[k];
+            if (k < r.q.size()) c[k] -= e * r.q[k];
+        }
+        while (c.size() > 1 && std::abs(c.back()) < 1e-300) c.pop_back();
+        return polynomialRoots(c);
+    };
+    std::vector<Complex> start = rootsAt(0.0);
+    const std::size_t n = start.size();
+    std::vector<Curve> tracks(n);
+    for (std::size_t k = 0; k < n; ++k) tracks[k].push_back(start[k]);
+    for (int j = 1; j <= samples; ++j) {
+        std::vector<Complex> next = rootsAt(2.0 * std::numbers::pi * j / samples);
+        // Each track takes the nearest root not yet taken (the steps are fine enough that
+        // roots move far less than they are apart, except where two meet: R' = 0 on |R| = 1).
+        std::vector<bool> taken(next.size(), false);
+        for (std::size_t k = 0; k < n; ++k) {
+            std::size_t best = 0;
+            double bestDistance = std::numeric_limits<double>::infinity();
+            for (std::size_t i = 0; i < next.size(); ++i)
+                if (!taken[i] && std::abs(next[i] - tracks[k].back()) < bestDistance) {
+                    bestDistance = std::abs(next[i] - tracks[k].back());
+                    best = i;
+                }
+            taken[best] = true;
+            tracks[k].push_back(next[best]);
+        }
+    }
+    // After one turn the roots are the start's, permuted: follow the cycles into closed curves.
+    std::vector<std::size_t> successor(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        std::size_t best = 0;
+        for (std::size_t i = 1; i < n; ++i)
+            if (std::abs(start[i] - tracks[k].back()) < std::abs(start[best] - tracks[k].back())) best = i;
+        successor[k] = best;
+    }
+    std::vector<bool> used(n, false);
+    std::vector<Curve> curves;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (used[k]) continue;
+        Curve curve;
+        for (std::size_t t = k; !used[t]; t = successor[t]) {
+            used[t] = true;
+            curve.insert(curve.end(), tracks[t].begin() + (curve.empty() ? 0 : 1), tracks[t].end());
+        }
+        curves.push_back(std::move(curve));
+    }
+    return curves;
+}
+
+// A curve y(x) >= 0 of the oscillator methods, mirrored: (x, y(x)) up, then (x, -y(x)) back.
+Curve mirroredCurve(double x0, double x1, int samples, const std::function<double(double)>& y, double extent) {
+    Curve upper;
+    for (int i = 0; i <= samples; ++i) {
+        const double x = x0 + (x1 - x0) * i / samples;
+        const double v = y(x);
+        if (!(v >= 0.0) || v > extent) continue;
+        upper.emplace_back(x, v);
+    }
+    Curve curve = upper;
+    for (auto it = upper.rbegin(); it != upper.rend(); ++it) curve.emplace_back(it->real(), -it->imag());
+    return curve;
+}
+
+}  // namespace
+
+RegionKind regionKind(const std::string& integrator) {
+    if (hasStabilityFunction(integrator)) return RegionKind::StabilityFunction;
+    if (integrator == "symplectic-euler" || integrator == "verlet") return RegionKind::Oscillator;
+    return RegionKind::None;
+}
+
+double regionAmplification(const std::string& integrator, Complex z) {
+    switch (regionKind(integrator)) {
+        case RegionKind::StabilityFunction: return std::abs(stabilityFunction(integrator, z));
+        // The oscillator whose eigenvalue pair is z, conj(z), at h = 1: w = |z|, c = -2 Re z.
+        case RegionKind::Oscillator: return modeAmplification(integrator, 1.0, std::abs(z), -2.0 * z.real());
+        case RegionKind::None: break;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+}
+
+bool regionContains(const std::string& integrator, Complex z) {
+    const double a = regionAmplification(integrator, z);
+    return a <= 1.0 + 1e-9;
+}
+
+std::vector<Curve> regionBoundary(const std::string& integrator, double extent, int samples) {
+    std::vector<Curve> curves;
+    const double sqrt2 = std::numbers::sqrt2;
+    switch (regionKind(integrator)) {
+        case RegionKind::StabilityFunction: return rationalBoundary(rationalOf(integrator), samples);
+        case RegionKind::Oscillator:
+            if (integrator == "symplectic-euler") {
+                // The arc of (x - 2)^2 + y^2 = 8 left of the imaginary axis (eigenvalue -1), closed
+                // by the axis from 2i to -2i (|eigenvalues| = D = 1: undamped, neutral).
+                Curve arc = mirroredCurve(0.0, 2.0 - 2.0 * sqrt2, samples / 2,
+                                          [](double x) { return std::sqrt(std::max(0.0, 8.0 - (x - 2.0) * (x - 2.0))); },
+                                          extent);
+                arc.push_back(arc.front());
+                curves.push_back(std::move(arc));
+            } else {
+                // W = 4 (1 + k^2) / (1 + k) (eigenvalue -1), k = 1 + x, from the axis at 2i to the
+                // line x = -2 (D = k^2 = 1), which the curve approaches from the right.
+                auto y = [](double x) {
+                    const double k = 1.0 + x;
+                    return std::sqrt(std::max(0.0, 4.0 * (1.0 + k * k) / (1.0 + k) - x * x));
+                };
+                // Sampled densely near x = -2, where the curve climbs to the extent.
+                Curve upper;
+                for (int i = 0; i <= samples; ++i) {
+                    const double u = double(i) / samples;
+                    const double x = -2.0 + 2.0 * u * u * u;
+                    if (x <= -2.0) continue;
+                    const double v = y(x);
+                    if (v <= extent) upper.emplace_back(x, v);
+                }
+                std::reverse(upper.begin(), upper.end());  // from (0, 2) leftwards
+                // The neutral pieces: the axis from -2i to 2i and the line x = -2.
+                curves.push_back({Complex(0.0, -2.0), Complex(0.0, 2.0)});
+                Curve top = upper, bottom;
+                for (const Complex& z : upper) bottom.emplace_back(z.real(), -z.imag());
+                curves.push_back(std::move(top));
+                curves.push_back(std::move(bottom));
+                curves.push_back({Complex(-2.0, -extent), Complex(-2.0, extent)});
+            }
+            return curves;
+        case RegionKind::None: break;
+    }
+    return curves;
+}
+
+double realAxisLimit(const std::string& integrator) {
+    if (regionKind(integrator) == RegionKind::None) return std::numeric_limits<double>::quiet_NaN();
+    return rayExit(integrator, Complex(-1.0, 0.0), 1e6);
+}
+
+double rayExit(const std::string& integrator, Complex z, double sMax) {
+    const double r = std::abs(z);
+    if (r == 0.0) return std::numeric_limits<double>::infinity();
+    double s = 1e-6 / r;
+    if (!regionContains(integrator, s * z)) return 0.0;
+    double lo = s;
+    while (s < sMax && regionContains(integrator, s * z)) lo = s, s *= 1.02;
+    if (s >= sMax && regionContains(integrator, sMax * z)) return std::numeric_limits<double>::infinity();
+    double hi = std::min(s, sMax);
+    for (int it = 0; it < 60; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (regionContains(integrator, mid * z) ? lo : hi) = mid;
+    }
+    return lo;
+}
+
+std::string regionNote(const std::string& integrator) {
+    if (integrator == "euler" || integrator == "midpoint" || integrator == "rk4")
+        return "Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches "
+               "the imaginary axis " +
+               std::string(integrator == "rk4" ? "up to ±2.83i: undamped modes are stable up to hω = 2√2"
+                                                : "only at 0: an undamped mode grows for every DT") +
+               ".";
+    if (integrator == "rk45")
+        return "Region: |R(hλ)| ≤ 1 for Dormand–Prince's 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a "
+               "fixed step. The adaptive run picks its own step from the error tolerance: it does not blow up, it "
+               "takes smaller steps.";
+    if (integrator == "implicit-euler")
+        return "Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| < 1, the whole left half-plane "
+               "(A-stable): no DT limit from stability.";
+    if (integrator == "symplectic-euler")
+        return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the "
+               "modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin "
+               "uses the step matrix, not the picture.";
+    if (integrator == "verlet")
+        return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the "
+               "half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). "
+               "Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.";
+    if (integrator == "cvode-bdf")
+        return "No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, "
+               "BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT "
+               "limit, DT is only the output interval.";
+    if (integrator == "cvode-adams")
+        return "No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions are small "
+               "(explicit-like); CVODE keeps the internal step inside them by its error test: no DT limit, stiff bodies "
+               "only cost steps.";
+    if (integrator == "xpbd")
+        return "No region: XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally stable, no "
+               "region in the hλ plane; large DT costs accuracy (the body turns soft), not stability.";
+    return "No stability region for " + integrator + ".";
+}
+
+SpectrumPoints spectrumPoints(const LinearModes& modes) {
+    SpectrumPoints points;
+    if (!modes.eigenvalues.empty()) {
+        points.lambda = modes.eigenvalues;
+        points.method = "exact";
+        points.methodText = "exact spectrum: all " + std::to_string(modes.eigenvalues.size()) +
+                            " eigenvalues of the linearised first-order system (dense eigen-solve)";
+        return points;
+    }
+    for (std::size_t i = 0; i < modes.omega2.size(); ++i) {
+        // lambda^2 + c lambda + w^2 = 0
+        const Complex disc = std::sqrt(Complex(modes.damping[i] * modes.damping[i] / 4.0 - modes.omega2[i], 0.0));
+        points.lambda.push_back(-modes.damping[i] / 2.0 + disc);
+        points.lambda.push_back(-modes.damping[i] / 2.0 - disc);
+    }
+    if (modes.dense) {
+        points.method = "modal";
+        points.methodText = "modal: all " + std::to_string(modes.omega2.size()) +
+                            " modes of M⁻¹K (symmetric eigen-solve), damping c = φᵀ(M⁻¹D)φ per mode; λ = −c/2 ± "
+                            "i√(ω² − c²/4)";
+    } else {
+        points.method = "iterative";
+        points.lambda = modes.ritzValues;
+        points.methodText = "iterative: " + std::to_string(modes.ritzValues.size()) +
+                            " Ritz values of the first-order system, Arnoldi (" + std::to_string(modes.arnoldiSteps) +
+                            " steps) on the Jacobian products, " + std::to_string(modes.freeCoordinates) +
+                            " free coordinates: the extreme eigenvalues (largest |λ|) are accurate, inner ones are not";
+    }
+    return points;
+}
+
+StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, const SpectrumPoints& points, double h) {
+    StepMargin margin;
+    char text[400];
+    if (regionKind(integrator) == RegionKind::None) {
+        margin.factor = std::numeric_limits<double>::infinity();
+        margin.text = integrator == "xpbd" ? "xpbd is stable at every DT: no margin to give."
+                                           : integrator + " chooses its own internal steps: no DT limit from stability.";
+        return margin;
+    }
+    // The limiting point: the first to leave along its ray (rigid and growing modes left out).
+    double scale = 0.0;
+    for (const Complex& l : points.lambda) scale = std::max(scale, std::abs(l));
+    double fastest = 0.0;
+    double smallest = std::numeric_limits<double>::infinity();
+    const bool oscillator = regionKind(integrator) == RegionKind::Oscillator;
+    for (const Complex& l : points.lambda) {
+        if (!(std::abs(l) > 1e-6 * scale) || l.real() > 1e-9 * scale) continue;
+        if (std::abs(l) > fastest) {
+            fastest = std::abs(l);
+            margin.fastest = l;
+        }
+        // Oscillator methods: the picture is exact only for underdamped modes that decouple;
+        // their margin comes from the step matrix, which names no single point.
+        if (oscillator) continue;
+        const double s = rayExit(integrator, h * l);
+        if (s < smallest || (s == smallest && std::abs(l) > std::abs(margin.limiting))) {
+            smallest = s;
+            margin.limiting = l;
+            margin.hasLimiting = true;
+        }
+    }
+    // The factor: for R methods the smallest exit over the plotted points (the same rays as
+    // predictedStableStep on the exact or modal spectrum; on the Ritz values for large
+    // bodies). Euler's and Heun's regions touch the imaginary axis only at 0: an undamped
+    // mode grows for every h (too slowly near 0 to see in double precision, hence explicit).
+    // Oscillator methods: the stability scan's prediction (exact step matrix for small bodies).
+    if (regionKind(integrator) == RegionKind::StabilityFunction) {
+        margin.factor = smallest;
+        if (integrator == "euler" || integrator == "midpoint")
+            for (const Complex& l : points.lambda)
+                if (std::abs(l.real()) <= 1e-9 * scale && std::abs(l.imag()) > 1e-6 * scale) margin.factor = 0.0;
+    } else {
+        margin.factor = predictedStableStep(integrator, modes, std::max(10.0, 1e4 * h)) / h;
+    }
+    const double limit = margin.factor * h;
+    const bool isFastest = margin.hasLimiting && std::abs(std::abs(margin.limiting) - fastest) <= 1e-9 * fastest;
+    char mode[160] = "";
+    // predictedStableStep's basis for the oscillator methods: the exact step matrix up to
+    // kExactStepLimit free coordinates, else each mode with its modal damping.
+    const char* basis = modes.stiffness.rows() > 0 && modes.unstableModes == 0 ? "exact step matrix"
+                                                                               : "per mode, modal damping";
+    if (margin.hasLimiting && std::abs(margin.limiting.imag()) <= 1e-9 * std::abs(margin.limiting))
+        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g, a pure decay)", isFastest ? "the fastest mode" : "the mode",
+                      h * margin.limiting.real());
+    else if (margin.hasLimiting)
+        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g ± %.3gi)", isFastest ? "the fastest mode" : "the mode",
+                      h * margin.limiting.real(), std::abs(h * margin.limiting.imag()));
+    else if (oscillator)
+        std::snprintf(mode, sizeof mode, "a mode pair goes unstable (%s);", basis);
+    else
+        std::snprintf(mode, sizeof mode, "the fastest mode");
+    if (std::isinf(margin.factor)) {
+        std::snprintf(text, sizeof text, "No DT limit: every mode of this body stays in the region for any DT.");
+    } else if (margin.factor <= 0.0) {
+        std::snprintf(text, sizeof text,
+                      "No DT is stable: %s sits where the region only touches the imaginary axis at 0; it grows for "
+                      "every DT (slowly when DT is small).",
+                      mode);
+    } else if (margin.factor >= 1.0) {
+        if (oscillator)
+            std::snprintf(text, sizeof text, "DT can grow %.2f× (to %.3g s) before %s the picture is exact for "
+                          "underdamped modes only.", margin.factor, limit, mode);
+        else
+            std::snprintf(text, sizeof text, "DT can grow %.2f× (to %.3g s) before %s leaves the region.",
+                          margin.factor, limit, mode);
+    } else {
+        if (oscillator)
+            std::snprintf(text, sizeof text, "DT is already outside the stable range (%s): shrink DT by %.2f× (to %.3g s).",
+                          basis, 1.0 / margin.factor, limit);
+        else
+            std::snprintf(text, sizeof text, "DT is already outside: %s is out of the region; shrink DT by %.2f× (to "
+                          "%.3g s) to bring it back.", mode, 1.0 / margin.factor, limit);
+    }
+    margin.text = text;
+    return margin;
+}
+
+}  // namespace simcore

@@ -1,0 +1,390 @@
+#include "stability_map_dock.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "mailbox.h"
+#include "qcustomplot.h"
+
+namespace elui {
+
+namespace {
+
+using Complex = std::complex<double>;
+
+constexpr int kFillCells = 260;          // the region's fill: cells per axis
+constexpr double kScanDuration = 2.0;    // "Try it": each trial runs this long [s]
+
+// The parameters with DT replaced: two bodies are the same linearisation when these agree.
+simcore::ParameterSet withoutDt(const simcore::ParameterSet& p) {
+    simcore::ParameterSet q = p;
+    q.set(simcore::Param::Dt, simcore::ParameterSet(p.kind()).get(simcore::Param::Dt));
+    return q;
+}
+
+QString seconds(double s) { return QString::number(s, 'g', 3); }
+
+QString tryTip() {
+    return StabilityMapDock::tr("Measure this integrator's largest stable DT on this body: the stability scan's "
+                                "bisection (%1 s runs; Studies → Stability scan does all integrators), marked on "
+                                "the picture")
+        .arg(kScanDuration);
+}
+
+}  // namespace
+
+StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability map"), parent) {
+    setObjectName(QStringLiteral("StabilityMapDock"));
+    m_fromWorker = new Mailbox(this);
+    auto* host = new QWidget(this);
+    auto* layout = new QVBoxLayout(host);
+    layout->setContentsMargins(4, 4, 4, 4);
+
+    m_plot = new QCustomPlot(host);
+    m_plot->setObjectName(QStringLiteral("stabilityMapPlot"));
+    m_plot->setMinimumSize(260, 240);
+    m_plot->xAxis->setLabel(tr("Re(hλ)"));
+    m_plot->yAxis->setLabel(tr("Im(hλ)"));
+    const QPen zeroPen(QColor(120, 120, 120), 1.0);
+    m_plot->xAxis->grid()->setZeroLinePen(zeroPen);
+    m_plot->yAxis->grid()->setZeroLinePen(zeroPen);
+    // The region: a 0/1 grid, light green where the method is stable (the exact edge is the
+    // boundary line drawn over it).
+    m_fill = new QCPColorMap(m_plot->xAxis, m_plot->yAxis);
+    QCPColorGradient gradient;
+    gradient.setColorStopAt(0.0, QColor(255, 255, 255, 0));
+    gradient.setColorStopAt(1.0, QColor(196, 232, 190));
+    gradient.setLevelCount(2);
+    m_fill->setGradient(gradient);
+    m_fill->setDataRange(QCPRange(0.0, 1.0));
+    m_fill->setInterpolate(false);
+    m_fill->setName(tr("stable region"));
+    m_fill->removeFromLegend();  // the boundary's entry says it (a colour map has no legend icon)
+    m_points = m_plot->addGraph();
+    m_points->setLineStyle(QCPGraph::lsNone);
+    m_points->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, QColor(30, 80, 200), 5));
+    m_points->setName(tr("DT·λ, every mode"));
+    m_limiting = m_plot->addGraph();
+    m_limiting->setLineStyle(QCPGraph::lsNone);
+    m_limiting->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(QColor(200, 110, 0), 2.0), Qt::NoBrush, 13));
+    m_limiting->setName(tr("leaves first"));
+    m_measured = m_plot->addGraph();
+    m_measured->setLineStyle(QCPGraph::lsNone);
+    m_measured->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QPen(QColor(210, 30, 30), 2.5), Qt::NoBrush, 14));
+    m_measured->setName(tr("measured limit"));
+    m_measured->removeFromLegend();
+    m_plot->legend->setVisible(true);
+    QFont small = font();
+    small.setPointSizeF(std::max(6.0, font().pointSizeF() * 0.85));
+    m_plot->legend->setFont(small);
+    m_plot->legend->setBrush(QColor(255, 255, 255, 210));
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    layout->addWidget(m_plot, 1);
+
+    m_marginLabel = new QLabel(host);
+    m_marginLabel->setObjectName(QStringLiteral("stabilityMargin"));
+    m_marginLabel->setWordWrap(true);
+    QFont bold = font();
+    bold.setBold(true);
+    m_marginLabel->setFont(bold);
+    layout->addWidget(m_marginLabel);
+    m_methodLabel = new QLabel(host);
+    m_methodLabel->setObjectName(QStringLiteral("stabilityMethod"));
+    m_methodLabel->setWordWrap(true);
+    m_methodLabel->setFont(small);
+    layout->addWidget(m_methodLabel);
+    auto* row = new QHBoxLayout;
+    m_try = new QPushButton(tr("Try it"), host);
+    m_try->setObjectName(QStringLiteral("stabilityTryIt"));
+    m_try->setToolTip(tryTip());
+    m_try->setEnabled(false);
+    row->addWidget(m_try, 0, Qt::AlignTop);
+    m_measuredLabel = new QLabel(host);
+    m_measuredLabel->setObjectName(QStringLiteral("stabilityMeasured"));
+    m_measuredLabel->setWordWrap(true);
+    m_measuredLabel->setFont(small);
+    row->addWidget(m_measuredLabel, 1);
+    layout->addLayout(row);
+    setWidget(host);
+    m_marginLabel->setText(tr("Waiting for a body…"));
+
+    connect(m_try, &QPushButton::clicked, this, &StabilityMapDock::tryIt);
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) request();
+    });
+}
+
+StabilityMapDock::~StabilityMapDock() {
+    if (m_scanCancel) m_scanCancel->store(true);
+    if (m_jobThread.joinable()) m_jobThread.join();
+    if (m_scanThread.joinable()) m_scanThread.join();
+}
+
+void StabilityMapDock::setState(const simcore::ParameterSet& params, const QString& integrator) {
+    if (m_hasState && params == m_params && integrator == m_integrator) return;
+    m_params = params;
+    m_integrator = integrator;
+    m_hasState = true;
+    request();
+}
+
+int StabilityMapDock::pointCount() const { return m_points->data()->size(); }
+
+int StabilityMapDock::boundaryPointCount() const {
+    int n = 0;
+    for (const QCPCurve* c : m_boundary) n += c->data()->size();
+    return n;
+}
+
+Complex StabilityMapDock::point(int i) const {
+    const QCPGraphData& d = *(m_points->data()->constBegin() + i);
+    return {d.key, d.value};
+}
+
+QString StabilityMapDock::marginText() const { return m_marginLabel->text(); }
+QString StabilityMapDock::methodText() const { return m_methodLabel->text(); }
+QString StabilityMapDock::measuredText() const { return m_measuredLabel->text(); }
+
+void StabilityMapDock::request() {
+    if (!m_hasState || !isVisible()) return;
+    if (m_jobRunning) {
+        m_jobPending = true;
+        return;
+    }
+    const std::string integrator = m_integrator.toStdString();
+    if (m_resultSerial > 0 && m_params == m_shownParams && integrator == m_shownIntegrator) return;
+    Job job{m_params, integrator, nullptr};
+    if (m_modes && m_resultSerial > 0 && withoutDt(m_params) == withoutDt(m_shownParams)) job.modes = m_modes;
+    startJob(std::move(job));
+}
+
+void StabilityMapDock::startJob(Job job) {
+    m_jobRunning = true;
+    if (m_resultSerial == 0) m_marginLabel->setText(tr("Linearising the body…"));
+    if (m_jobThread.joinable()) m_jobThread.join();  // the last job ended (its result was delivered)
+    m_jobThread = std::thread([this, job = std::move(job)] {
+        Result r;
+        r.params = job.params;
+        r.integrator = job.integrator;
+        r.modes = job.modes ? job.modes : std::make_shared<const simcore::LinearModes>(simcore::linearModes(job.params));
+        r.points = simcore::spectrumPoints(*r.modes);
+        r.margin = simcore::stepMargin(job.integrator, *r.modes, r.points, job.params.get(simcore::Param::Dt));
+        r.boundary = simcore::regionBoundary(job.integrator);
+        m_fromWorker->post([this, r] {
+            m_jobRunning = false;
+            present(r);
+            if (m_jobPending) {
+                m_jobPending = false;
+                request();
+            }
+        });
+    });
+}
+
+void StabilityMapDock::present(const Result& r) {
+    m_shownParams = r.params;
+    m_shownIntegrator = r.integrator;
+    m_shownDt = r.params.get(simcore::Param::Dt);
+    m_modes = r.modes;
+    m_spectrum = r.points;
+    m_margin = r.margin;
+    m_curves = r.boundary;
+    const bool hasRegion = simcore::regionKind(r.integrator) != simcore::RegionKind::None;
+
+    for (QCPCurve* c : m_boundary) m_plot->removePlottable(c);
+    m_boundary.clear();
+    for (const auto& curve : m_curves) {
+        auto* c = new QCPCurve(m_plot->xAxis, m_plot->yAxis);
+        QVector<QCPCurveData> points;
+        points.reserve(int(curve.size()));
+        for (std::size_t i = 0; i < curve.size(); ++i) points.append(QCPCurveData(double(i), curve[i].real(), curve[i].imag()));
+        c->data()->set(points, true);
+        c->setPen(QPen(QColor(30, 110, 40), 2.0));
+        if (m_boundary.empty()) c->setName(simcore::regionKind(r.integrator) == simcore::RegionKind::Oscillator ? tr("edge (radius 1)") : tr("edge |R| = 1"));
+        else c->removeFromLegend();
+        m_boundary.push_back(c);
+    }
+    m_fill->setVisible(hasRegion);
+
+    QVector<double> xs, ys;
+    for (const Complex& l : m_spectrum.lambda) {
+        xs.append(m_shownDt * l.real());
+        ys.append(m_shownDt * l.imag());
+    }
+    m_points->setData(xs, ys);
+    m_limiting->data()->clear();
+    if (m_margin.hasLimiting && hasRegion) {
+        const Complex z = m_shownDt * m_margin.limiting;
+        m_limiting->addData(z.real(), z.imag());
+        m_limiting->addData(z.real(), -z.imag());
+    }
+    m_limiting->setVisible(m_margin.hasLimiting && hasRegion);
+    if (m_limiting->visible()) m_limiting->addToLegend();
+    else m_limiting->removeFromLegend();
+
+    const QString name = QString::fromStdString(r.integrator);
+    m_plot->xAxis->setLabel(tr("Re(hλ), h = DT = %1 s").arg(m_shownDt));
+    m_marginLabel->setText(QStringLiteral("%1: %2").arg(name, QString::fromStdString(m_margin.text)));
+    m_methodLabel->setText(tr("Eigenvalues: %1.\n%2")
+                               .arg(QString::fromStdString(m_spectrum.methodText), QString::fromStdString(simcore::regionNote(r.integrator))));
+    m_try->setEnabled(hasRegion || m_scanRunning);
+    m_try->setToolTip(hasRegion ? tryTip() : tr("%1 has no fixed stability limit to measure").arg(name));
+    // A measured limit holds for the body and the method, whatever DT is now.
+    if (m_scanRow && !(withoutDt(m_scanParams) == withoutDt(m_shownParams) && m_scanIntegrator == m_shownIntegrator)) {
+        m_scanRow.reset();
+        m_measuredText.clear();
+    }
+    showMeasured();
+    fitView();
+    ++m_resultSerial;
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void StabilityMapDock::showMeasured() {
+    m_measured->data()->clear();
+    m_measuredMark.reset();
+    if (m_scanRow) {
+        const simcore::StabilityRow& row = *m_scanRow;
+        QString text;
+        if (row.stable <= 0.0) {
+            text = tr("Measured: no stable DT down to 1e-5 s.");
+        } else {
+            text = std::isinf(row.unstable)
+                       ? tr("Measured: stable up to the largest DT scanned, %1 s").arg(seconds(row.stable))
+                       : tr("Measured: stable at DT = %1 s, blows up at %2 s").arg(seconds(row.stable), seconds(row.unstable));
+            text += tr(" (%1 runs of %2 s; predicted %3 s).")
+                        .arg(row.runs)
+                        .arg(kScanDuration)
+                        .arg(std::isinf(row.predicted) ? tr("unlimited") : seconds(row.predicted));
+            // The limiting mode (R methods) or the fastest one (oscillator methods) at the
+            // measured DT: on its dot's ray, on the boundary when the prediction holds.
+            Complex l = m_margin.hasLimiting ? m_margin.limiting : m_margin.fastest;
+            if (l != Complex(0.0, 0.0)) {
+                if (l.imag() < 0) l = std::conj(l);
+                m_measuredMark = row.stable * l;
+                m_measured->addData(m_measuredMark->real(), m_measuredMark->imag());
+                text += m_margin.hasLimiting ? tr(" ✕ = the ringed mode at the measured DT.")
+                                             : tr(" ✕ = the fastest mode at the measured DT.");
+            }
+        }
+        m_measuredText = text;
+    }
+    m_measured->setVisible(m_measuredMark.has_value());
+    if (m_measuredMark) m_measured->addToLegend();
+    else m_measured->removeFromLegend();
+    m_measuredLabel->setText(m_scanRunning ? tr("Measuring the largest stable DT of %1…").arg(QString::fromStdString(m_scanIntegrator))
+                                           : m_measuredText);
+}
+
+void StabilityMapDock::fitView() {
+    // The region's heart (its boundary within |z| <= 4) and every point, with a margin.
+    double x0 = -1.0, x1 = 0.5, y0 = -1.0, y1 = 1.0;
+    auto take = [&](Complex z) {
+        x0 = std::min(x0, z.real());
+        x1 = std::max(x1, z.real());
+        y0 = std::min(y0, z.imag());
+        y1 = std::max(y1, z.imag());
+    };
+    for (const auto& curve : m_curves)
+        for (const Complex& z : curve)
+            if (std::abs(z) <= 4.0) take(z);
+            else if (std::abs(z.real()) <= 4.0) take(Complex(z.real(), std::clamp(z.imag(), -3.0, 3.0)));  // Verlet's strip
+    const double regionSize = std::max(x1 - x0, y1 - y0);
+    // Points far out (DT much too large) widen the view up to 40 region sizes.
+    const double cap = 40.0 * regionSize;
+    for (const Complex& l : m_spectrum.lambda) {
+        const Complex z = m_shownDt * l;
+        if (std::abs(z) <= cap) take(z);
+    }
+    if (m_measuredMark && std::abs(*m_measuredMark) <= cap) take(*m_measuredMark);
+    double padX = 0.08 * (x1 - x0), padY = 0.08 * (y1 - y0);
+    x0 -= padX, x1 += padX, y0 -= padY, y1 += padY;
+    // Equal scales on both axes: circles stay circles.
+    const QRect rect = m_plot->axisRect()->rect();
+    const double w = rect.width() > 10 ? rect.width() : m_plot->width() * 0.8;
+    const double h = rect.height() > 10 ? rect.height() : m_plot->height() * 0.8;
+    if (w > 0 && h > 0) {
+        const double perPixel = std::max((x1 - x0) / w, (y1 - y0) / h);
+        const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+        x0 = cx - 0.5 * perPixel * w, x1 = cx + 0.5 * perPixel * w;
+        y0 = cy - 0.5 * perPixel * h, y1 = cy + 0.5 * perPixel * h;
+    }
+    m_plot->xAxis->setRange(x0, x1);
+    m_plot->yAxis->setRange(y0, y1);
+    drawRegion();
+}
+
+void StabilityMapDock::drawRegion() {
+    if (!m_fill->visible()) return;
+    const QCPRange xr = m_plot->xAxis->range(), yr = m_plot->yAxis->range();
+    QCPColorMapData* cells = m_fill->data();
+    cells->setSize(kFillCells, kFillCells);
+    cells->setRange(xr, yr);
+    for (int i = 0; i < kFillCells; ++i)
+        for (int j = 0; j < kFillCells; ++j) {
+            double x = 0.0, y = 0.0;
+            cells->cellToCoord(i, j, &x, &y);
+            cells->setCell(i, j, simcore::regionContains(m_shownIntegrator, Complex(x, y)) ? 1.0 : 0.0);
+        }
+}
+
+void StabilityMapDock::resizeEvent(QResizeEvent* event) {
+    QDockWidget::resizeEvent(event);
+    if (m_resultSerial == 0) return;
+    // After the layout has given the plot its new size.
+    QMetaObject::invokeMethod(this, [this] {
+        fitView();
+        m_plot->replot(QCustomPlot::rpQueuedReplot);
+    }, Qt::QueuedConnection);
+}
+
+void StabilityMapDock::tryIt() {
+    if (m_scanRunning) {
+        if (m_scanCancel) m_scanCancel->store(true);
+        m_measuredLabel->setText(tr("Cancelling…"));
+        return;
+    }
+    if (!m_modes || simcore::regionKind(m_shownIntegrator) == simcore::RegionKind::None) return;
+    m_scanRunning = true;
+    m_scanParams = m_shownParams;
+    m_scanIntegrator = m_shownIntegrator;
+    m_scanRow.reset();
+    m_measuredText.clear();
+    m_try->setText(tr("Cancel"));
+    showMeasured();
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+    m_scanCancel = std::make_shared<std::atomic<bool>>(false);
+    simcore::StabilitySpec spec;
+    spec.params = m_scanParams;
+    spec.integrators = {m_scanIntegrator};
+    spec.duration = kScanDuration;
+    if (m_scanThread.joinable()) m_scanThread.join();  // the last scan ended (its end was delivered)
+    m_scanThread = std::thread([this, spec, modes = m_modes, cancel = m_scanCancel, name = m_scanIntegrator] {
+        simcore::StabilityRow row = simcore::scanIntegrator(spec, name, *modes, cancel.get());
+        const bool cancelled = cancel->load();
+        m_fromWorker->post([this, row, cancelled] {
+            m_scanRunning = false;
+            m_try->setText(tr("Try it"));
+            m_try->setEnabled(simcore::regionKind(m_shownIntegrator) != simcore::RegionKind::None);
+            if (cancelled) m_measuredText = tr("Measurement cancelled.");
+            else m_scanRow = row;
+            // The body or the method may have changed meanwhile: the row is kept only for its own.
+            if (m_scanRow && !(withoutDt(m_scanParams) == withoutDt(m_shownParams) && m_scanIntegrator == m_shownIntegrator)) {
+                m_scanRow.reset();
+                m_measuredText = tr("The body or the integrator changed during the measurement: press Try it again.");
+            }
+            showMeasured();
+            fitView();
+            ++m_resultSerial;
+            m_plot->replot(QCustomPlot::rpQueuedReplot);
+        });
+    });
+}
+
+}  // namespace elui
