@@ -142,7 +142,8 @@ QByteArray plotsSvg(const std::vector<QCustomPlot*>& plots, const std::vector<Pl
                    .arg((plotTop + bottom) / 2).arg(specs[p].yLabel.toHtmlEscaped());
         svg += QStringLiteral("<clipPath id='c%1'><rect x='%2' y='%3' width='%4' height='%5'/></clipPath>\n")
                    .arg(p).arg(left).arg(plotTop).arg(right - left).arg(bottom - plotTop);
-        for (int g = 0; g < plot->graphCount(); ++g) {
+        // The series (graph i is series i); the error bands after them are left out.
+        for (int g = 0; g < std::min(plot->graphCount(), int(specs[p].series.size())); ++g) {
             QCPGraph* graph = plot->graph(g);
             QString points;
             // At most ~2000 points per series: enough for any printed width.

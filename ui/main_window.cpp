@@ -295,6 +295,7 @@ void MainWindow::rebuildViewports(int count) {
         connect(v, &Viewport::grabRequested, m_controller, &SimulationController::grabAlongRay);
         connect(v, &Viewport::anchorMoved, m_controller, &SimulationController::moveAnchor);
         connect(v, &Viewport::releaseRequested, m_controller, &SimulationController::release);
+        connect(v, &Viewport::selectRequested, m_controller, &SimulationController::selectAlongRay);
         connect(m_controller, &SimulationController::grabbed, v, &Viewport::onGrabbed);
         m_viewports.push_back(v);
     }

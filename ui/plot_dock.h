@@ -4,6 +4,11 @@
 // Rows arrive as they are recorded; the plots are marked dirty and replotted at most 10
 // times a second (queued replot), whatever the step rate. Rolling window or full history;
 // autoscale, or zoom and pan by mouse (autoscale switches off when the user zooms).
+//
+// Error bands ("Show error band"): around the volumes, the pressures and the total energy,
+// value +- the half-width the row's error estimate implies (simcore::ObservableErrors), a
+// translucent fill in the series' colour between two graphs kept out of the legend. Rows of
+// a step without an estimate (rk4 without step doubling, ...) have no band, and the dock says so.
 
 #include <vector>
 
@@ -12,6 +17,8 @@
 #include "plot_series.h"
 
 class QCustomPlot;
+class QCPGraph;
+class QLabel;
 class QComboBox;
 class QCheckBox;
 class QTimer;
@@ -35,6 +42,12 @@ public:
     QStringList seriesNames(const QString& plotId) const;
     int pointCount(const QString& plotId, int series) const;
     double lastValue(const QString& plotId, int series) const;
+    // The error band of a series: its points with a band, and the last one's half-width
+    // (NaN: none). -1 / NaN for a series without a band.
+    int bandPointCount(const QString& plotId, int series) const;
+    double lastBandHalfWidth(const QString& plotId, int series) const;
+    bool bandsShown() const;
+    void setBandsShown(bool on);
     std::vector<QCustomPlot*> plots() const { return m_plots; }
     const std::vector<PlotSpec>& specs() const { return m_specs; }
 
@@ -51,6 +64,14 @@ public slots:
 
 private:
     void scheduleReplot();
+    void updateBandNote();
+    // The two graphs (value + e, value - e, filled between) of a series with a band.
+    struct Band {
+        int series = -1;
+        QCPGraph* upper = nullptr;
+        QCPGraph* lower = nullptr;
+    };
+    const Band* band(const QString& plotId, int series) const;
 
     simcore::SceneKind m_kind = simcore::SceneKind::Ring2d;
     std::vector<PlotSpec> m_specs;
@@ -58,6 +79,10 @@ private:
     QVBoxLayout* m_plotLayout = nullptr;
     QComboBox* m_windowCombo = nullptr;
     QCheckBox* m_autoscale = nullptr;
+    QCheckBox* m_showBands = nullptr;
+    QLabel* m_bandNote = nullptr;   // says why no band is drawn
+    std::vector<std::vector<Band>> m_bands;  // per plot
+    bool m_lastRowHasBand = false;
     QTimer* m_replotTimer = nullptr;
     double m_window = 10.0;
     double m_lastTime = 0.0;

@@ -136,5 +136,9 @@ void SimulationController::grabAlongRay(const QVector3D& o, const QVector3D& d, 
 }
 void SimulationController::moveAnchor(const QVector3D& anchor) { toWorker(&SimWorker::moveAnchor, anchor); }
 void SimulationController::release() { toWorker(&SimWorker::release); }
+void SimulationController::selectParticle(int particle) { toWorker(&SimWorker::selectParticle, particle); }
+void SimulationController::selectAlongRay(const QVector3D& o, const QVector3D& d, double maxDistance) {
+    toWorker(&SimWorker::selectAlongRay, o, d, maxDistance);
+}
 
 }  // namespace elui

@@ -71,6 +71,8 @@ public:
     void grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
     void moveAnchor(const QVector3D& anchor);
     void release();
+    void selectAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    void selectParticle(int particle);  // its free-body diagram; < 0 clears
 
 signals:
     // To the GUI (emitted on the GUI thread).
