@@ -390,7 +390,9 @@ void Simulation::reset() {
     m_integrator->prepare(m_system->layout());
     m_hNext = m_hTaken = m_dt;
     m_doubling.setZero(m_y.size());
-    m_doublingError.setZero(m_y.size());
+    // Held only while step doubling is on (the memory bound counts what a run holds).
+    if (m_integratorOptions.stepDoubling) m_doublingError.setZero(m_y.size());
+    else m_doublingError.resize(0);
     m_lastError = nullptr;
     m_endDerivative.setZero(m_y.size());
     m_lastGood = m_y;
@@ -721,6 +723,7 @@ bool Simulation::advanceTo(double tEnd) {
 
 void Simulation::setIntegratorOptions(const IntegratorOptions& options) {
     m_integratorOptions = options;
+    if (options.stepDoubling && m_doublingError.size() != m_y.size()) m_doublingError.setZero(m_y.size());
     m_integrator->setOptions(options);
 }
 

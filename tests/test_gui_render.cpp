@@ -374,6 +374,8 @@ private slots:
             {{"--docks", "pv,"}, "is empty"},
             {{"--docks", "pv", "--docks", "energy-bars"}, "--docks is given 2 times"},
             {{"--measure-fps", "inf"}, "--measure-fps needs"},
+            {{"--select", "-1"}, "--select needs a particle index"},
+            {{"--select", "top"}, "--select needs a particle index"},
             {{"--scene", scene, "--screenshot", dir.filePath("link.png")}, "is the same file as --scene"},
             {{"--screenshot", dir.filePath("shot.xyz")}, "cannot write .xyz"},
             {{"--screenshot", dir.filePath("missing/shot.png")}, "missing/shot.png"},

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QImageWriter>
@@ -30,6 +31,7 @@
 #include "main_window.h"
 #include "parameter_dock.h"
 #include "plot_dock.h"
+#include "run_dock.h"
 #include "presets.h"
 #include "scenefile.h"
 #include "scenes.h"
@@ -110,12 +112,15 @@ int main(int argc, char** argv) {
     const QCommandLineOption selectOpt(QStringLiteral("select"),
                                        QStringLiteral("Show the forces on particle INDEX (as a click on it does)."),
                                        QStringLiteral("INDEX"));
+    const QCommandLineOption doublingOpt(QStringLiteral("step-doubling"),
+                                         QStringLiteral("Estimate the error of fixed-step methods by step doubling "
+                                                        "(the Run dock's checkbox)."));
     const QCommandLineOption fpsOpt(QStringLiteral("measure-fps"),
                                     QStringLiteral("Run in real time for SECONDS of wall time, print frame rate, "
                                                    "step rate and GUI latency, exit."),
                                     QStringLiteral("SECONDS"));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, shotOpt, afterOpt, optionsOpt, docksOpt, fpsOpt,
-                       selectOpt});
+                       selectOpt, doublingOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -250,6 +255,7 @@ int main(int argc, char** argv) {
         window.setViewOptions(o);
     }
     elui::SimulationController* controller = window.controller();
+    if (parser.isSet(doublingOpt)) window.runDock()->findChild<QCheckBox*>(QStringLiteral("stepDoubling"))->setChecked(true);
     if (file) {
         simcore::SceneFile changed = *file;
         changed.params = params;
