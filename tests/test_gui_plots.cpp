@@ -194,10 +194,13 @@ private slots:
         dock.setBandsShown(false);
         QVERIFY(dock.findChild<QLabel*>("errorBandNote")->text().isEmpty());
 
-        // Through the worker: rk45's rows carry a band, rk4's none.
-        for (const char* integrator : {"rk45", "rk4"}) {
+        // Through the worker: rk45's rows carry a band, rk4's none; none while not shown (the
+        // worker does not measure it then).
+        for (const char* integrator : {"rk45", "rk4", "rk45 hidden"}) {
             MainWindow window(false);
-            window.startScene(simcore::ParameterSet(SceneKind::Ring2d), {integrator});
+            const bool hidden = QByteArray(integrator).endsWith("hidden");
+            window.plotDock()->setBandsShown(!hidden);
+            window.startScene(simcore::ParameterSet(SceneKind::Ring2d), {QString(integrator).section(' ', 0, 0)});
             QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->plotIds(), (QStringList{"volume", "pressure", "energy"}),
                                       testsupport::kHangGuardMs);
             QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, testsupport::kHangGuardMs);
@@ -208,6 +211,7 @@ private slots:
             QTRY_VERIFY_WITH_TIMEOUT(window.plotDock()->pointCount("volume", 0) >= 6, testsupport::kHangGuardMs);
             const int banded = window.plotDock()->bandPointCount("volume", 0);
             if (QByteArray(integrator) == "rk45") QVERIFY(banded >= 5);
+            else if (hidden) QCOMPARE(banded, 0);
             else QCOMPARE(banded, 0);
         }
     }

@@ -362,6 +362,7 @@ void MainWindow::connectController() {
         m_pvDock->setScene(scene->kind);
     });
     connect(c, &SimulationController::historyReset, m_plotDock, &PlotDock::clear);
+    connect(m_plotDock, &PlotDock::bandsShownChanged, c, &SimulationController::setErrorBandsWanted);
     connect(c, &SimulationController::historyReset, m_pvDock, &PvDock::clear);
     connect(c, &SimulationController::rowsAppended, this, [this](int first, int count) {
         m_plotDock->appendRows(m_controller->history(), first, count);

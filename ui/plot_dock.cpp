@@ -83,6 +83,7 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
             }
         updateBandNote();
         scheduleReplot();
+        emit bandsShownChanged(on);
     });
     setScene(simcore::SceneKind::Ring2d);
 }

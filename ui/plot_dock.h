@@ -57,6 +57,10 @@ public:
     void setLive(bool live);
     double window() const { return m_window; }
 
+signals:
+    // "Show error band" switched: the worker fills the rows' bands only while it is on.
+    void bandsShownChanged(bool on);
+
 public slots:
     void clear();
     void appendRows(const std::vector<simcore::Diagnostics>& history, int first, int count);

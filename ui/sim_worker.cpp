@@ -223,6 +223,8 @@ void SimWorker::setForcesWanted(bool on) {
     publish(true);
 }
 
+void SimWorker::setErrorBandsWanted(bool on) { m_bandsWanted = on; }
+
 void SimWorker::setStartKick(double innerVx, double outerVx) {
     m_kickInner = innerVx;
     m_kickOuter = outerVx;
@@ -377,8 +379,9 @@ void SimWorker::recordRow() {
     if (m_lastRowTime >= 0.0 && t - m_lastRowTime < kRowInterval * (1.0 - 1e-9)) return;
     m_lastRowTime = t;
     m_rows.push_back(sim.diagnostics());
-    // The plots' error bands (two measurements per row, only for steps with an estimate).
-    m_rows.back().errors = sim.observableErrors();
+    // The plots' error bands (two measurements per row, only for steps with an estimate and
+    // while the plots show them).
+    if (m_bandsWanted) m_rows.back().errors = sim.observableErrors();
 }
 
 void SimWorker::tick() {

@@ -63,6 +63,9 @@ public:
     void setSpeed(int speed);
     void setStepDoubling(bool on);
     void setForcesWanted(bool on);
+    // Whether each recorded row gets its error bands (Simulation::observableErrors: two
+    // measurements per row, so only while the plots show them).
+    void setErrorBandsWanted(bool on);
     // Velocity given to every inner (+) and outer (-) particle along x at each start [m/s].
     void setStartKick(double innerVx, double outerVx);
 
@@ -122,6 +125,7 @@ private:
     Speed m_speed = Speed::RealTime;
     double m_until = -1.0;                // runUntil target, < 0: none
     bool m_forcesWanted = false;
+    bool m_bandsWanted = false;
     int m_selected = -1;                  // the particle whose force breakdown frames carry
     bool m_stepDoubling = false;
     int m_threads = std::max(1, simcore::hardwareThreads() - 1);  // force-evaluation threads

@@ -62,6 +62,7 @@ public:
     void setSpeed(Speed speed);
     void setStepDoubling(bool on);
     void setForcesWanted(bool on);
+    void setErrorBandsWanted(bool on);  // fill the rows' error bands (Diagnostics::errors)
     void setStartKick(double innerVx, double outerVx);
     void run();
     void runUntil(double simulatedTime);
