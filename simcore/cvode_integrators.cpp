@@ -86,12 +86,15 @@ public:
     int evaluationsPerStep() const override { return 2; }  // typical; CVODE decides
     bool adaptive() const override { return true; }
     bool implicit() const override { return m_bdf; }
+    const double* localError() const override { return m_hasError ? m_localError.data() : nullptr; }
     void prepare(const StateLayout& layout) override {
         destroy();
         m_layout = layout;
         const Eigen::Index n = layout.positions;
         m_y.setZero(layout.size());
         m_dydt.setZero(layout.size());
+        m_localError.setZero(layout.size());
+        m_hasError = false;
         for (auto* v : {&m_dx, &m_dv, &m_out, &m_rhs, &m_zv, &m_zero, &m_invMass, &m_residual, &m_z, &m_p, &m_ap, &m_invDiagonal})
             v->setZero(n);
         m_operator.resize(n);
@@ -177,10 +180,14 @@ public:
         report.hNext = m_reported = kHeadroom * hcur;
         m_planned = hcur;
         // Position error, RMS over particles, from CVODE's local error estimate (as rk45's).
+        m_hasError = false;
         if (CVodeGetEstLocalErrors(m_mem, m_work) == CV_SUCCESS) {
             const Eigen::Index n = m_layout.positions;
             const Eigen::Map<const Eigen::VectorXd> e(N_VGetArrayPointer(m_work), n);
             report.errorEstimate = std::sqrt(e.squaredNorm() / std::max(1.0, static_cast<double>(n) / 3.0));
+            // Kept apart: m_work also serves the preconditioner (error weights) in the next step.
+            m_localError = Eigen::Map<const Eigen::VectorXd>(N_VGetArrayPointer(m_work), m_layout.size());
+            m_hasError = true;
         }
         return report;
     }
@@ -435,6 +442,8 @@ private:
     N_Vector m_state = nullptr;  // over the caller's state buffer
     N_Vector m_atol = nullptr;   // per-component absolute tolerances
     N_Vector m_work = nullptr;   // local error estimates, error weights
+    Eigen::VectorXd m_localError;  // the last step's local error estimate (localError())
+    bool m_hasError = false;
     SUNLinearSolver m_linear = nullptr;
     SUNNonlinearSolver m_nonlinear = nullptr;
     bool m_needInit = true;

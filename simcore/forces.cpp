@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <unordered_map>
 
 #include "parallel.h"
@@ -18,6 +19,22 @@ std::string_view termName(Term term) {
         case Term::Collisions: return "collisions";
         case Term::LayerConstraint: return "layer-constraint";
         case Term::Count: break;
+    }
+    return "?";
+}
+
+std::string_view forcePartName(ForcePart part) {
+    switch (part) {
+        case ForcePart::Gravity: return "gravity";
+        case ForcePart::Structural: return "structural springs";
+        case ForcePart::Radius: return "radius springs";
+        case ForcePart::Shear: return "shear springs";
+        case ForcePart::GasInner: return "gas (inner)";
+        case ForcePart::GasOuter: return "gas (outer)";
+        case ForcePart::Walls: return "wall contact";
+        case ForcePart::Barrier: return "layer barrier";
+        case ForcePart::Mouse: return "mouse spring";
+        case ForcePart::Count: break;
     }
     return "?";
 }
@@ -651,6 +668,59 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
             }
         }
     });
+}
+
+void ForceModel::breakdown(int particle, const double* x, const double* v, double* f, ForceBreakdown& out) {
+    out = ForceBreakdown{};
+    out.particle = particle;
+    if (particle < 0 || particle >= m_topology->particleCount()) return;
+    const TermSet terms = m_terms;
+    const ForceParams full = params;
+    const bool walls = contactWalls(), barrier = contactBarrier();  // of the full set
+    ForceExtras extras;
+    auto force = [&] { return Eigen::Vector3d(f[3 * particle], f[3 * particle + 1], f[3 * particle + 2]); };
+    evaluate(x, v, f, extras, false);
+    out.total = force();
+    // Each part: the model's own terms narrowed to `keep`, the parameters edited by `edit`.
+    auto only = [&](ForcePart part, std::initializer_list<Term> keep, auto edit) {
+        TermSet narrowed;
+        for (Term t : keep) narrowed.set(t, terms.has(t));
+        m_terms = narrowed;
+        params = full;
+        edit(params);
+        evaluate(x, v, f, extras, false);
+        out[part] = force();
+    };
+    auto none = [](ForceParams&) {};
+    const auto slot = [](ForcePart p) { return static_cast<std::size_t>(p); };
+    out.present[slot(ForcePart::Gravity)] = terms.has(Term::Gravity);
+    if (terms.has(Term::Gravity)) only(ForcePart::Gravity, {Term::Gravity}, none);
+    for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
+        const auto part = static_cast<ForcePart>(static_cast<int>(ForcePart::Structural) + fam);
+        out.present[slot(part)] = terms.has(Term::Springs) && m_topology->springs[static_cast<std::size_t>(fam)].size() > 0;
+        if (!out.has(part)) continue;
+        only(part, {Term::Springs}, [fam](ForceParams& p) {
+            for (int other = 0; other < kSpringFamilyCount; ++other)
+                if (other != fam) p.ks[static_cast<std::size_t>(other)] = p.kd[static_cast<std::size_t>(other)] = 0.0;
+        });
+    }
+    for (const Surface& s : m_topology->surfaces) {
+        const int layer = layerSlot(s.layer);
+        const ForcePart part = layer == 0 ? ForcePart::GasInner : ForcePart::GasOuter;
+        out.present[slot(part)] = terms.has(Term::Gas);
+        if (!out.has(part)) continue;
+        only(part, {Term::Gas}, [layer](ForceParams& p) { p.gasConstant[static_cast<std::size_t>(1 - layer)] = 0.0; });
+    }
+    out.present[slot(ForcePart::Walls)] = walls;
+    if (walls) only(ForcePart::Walls, {Term::Collisions}, none);
+    out.present[slot(ForcePart::Barrier)] = barrier;
+    // The barrier needs the gas term's volume gradient, not its pressure: nRT = 0 in both layers.
+    if (barrier)
+        only(ForcePart::Barrier, {Term::Gas, Term::LayerConstraint}, [](ForceParams& p) { p.gasConstant = {0.0, 0.0}; });
+    out.present[slot(ForcePart::Mouse)] = terms.has(Term::Pointer);
+    if (terms.has(Term::Pointer)) only(ForcePart::Mouse, {Term::Pointer}, none);
+    m_terms = terms;
+    params = full;
 }
 
 void ForceModel::evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras) {

@@ -59,6 +59,33 @@ struct ForceExtras {
 
 inline constexpr double kDegenerateLength = 1e-12;  // [m]
 
+// One particle's force split by where it comes from (a free-body diagram): the force terms,
+// with the springs per family, the gas per layer and contact per kind.
+enum class ForcePart : int {
+    Gravity,
+    Structural,  // springs of each family (SpringFamily order)
+    Radius,
+    Shear,
+    GasInner,    // the gas of the inner layer (acts on inner particles only)
+    GasOuter,    // ... of the outer layer
+    Walls,       // wall contact (contact = force)
+    Barrier,     // the layer barrier (contact = force)
+    Mouse,       // the mouse spring
+    Count
+};
+inline constexpr int kForcePartCount = static_cast<int>(ForcePart::Count);
+std::string_view forcePartName(ForcePart part);  // "gravity", "structural springs", ...
+
+struct ForceBreakdown {
+    int particle = -1;
+    std::array<Eigen::Vector3d, kForcePartCount> part{};  // force of each part on the particle [N]
+    std::array<bool, kForcePartCount> present{};          // the body has this part (else it is 0)
+    Eigen::Vector3d total = Eigen::Vector3d::Zero();      // the force of a full evaluation [N]
+    Eigen::Vector3d& operator[](ForcePart p) { return part[static_cast<std::size_t>(p)]; }
+    const Eigen::Vector3d& operator[](ForcePart p) const { return part[static_cast<std::size_t>(p)]; }
+    bool has(ForcePart p) const { return present[static_cast<std::size_t>(p)]; }
+};
+
 // Kernels. Each adds into f (3N). x, v are 3N.
 void addGravity(const Eigen::VectorXd& mass, double g, double* f);
 // Returns the damping power of the family.
@@ -139,6 +166,12 @@ public:
     // read after its range is handed over, so `then` may overwrite them.
     void evaluateMotion(const double* x, const double* v, const double* invMass3, double* xdot,
                         double* a, ForceExtras& extras, bool count = true, const RangeWork* then = nullptr);
+    // One particle's force split by part (ForcePart), for a free-body diagram. Every part is a
+    // whole evaluation by evaluate() with only that part switched on (the other terms off, the
+    // other spring families' ks and kd and the other layer's nRT set to 0, restored after), so
+    // the parts come from the very code the step runs; total is the evaluation with all of
+    // them. The parts add up to the total up to rounding. f: scratch of 3N. Not counted.
+    void breakdown(int particle, const double* x, const double* v, double* f, ForceBreakdown& out);
     // The same forces by the plain one-pass kernels (the reference the fast path is tested on).
     void evaluateReference(const double* x, const double* v, double* f, ForceExtras& extras);
     // dV/dx of each particle's own layer, unscaled, padded (4 doubles per particle): as left by

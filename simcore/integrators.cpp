@@ -154,7 +154,9 @@ public:
         m_tmp.setZero(n);
         m_y1.setZero(n);
         m_err.setZero(n);
+        m_hasError = false;
     }
+    const double* localError() const override { return m_hasError ? m_err.data() : nullptr; }
     StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
         // clang-format off
         static constexpr double c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
@@ -202,6 +204,7 @@ public:
             if (!std::isfinite(err) || !m_y1.allFinite()) err = std::numeric_limits<double>::infinity();
             if (!control || err <= 1.0) {
                 y = m_y1;
+                m_hasError = true;
                 report.h = h;
                 // Position error, RMS over particles: sqrt(sum |e_x,i|^2 / N), N = n / 3.
                 report.errorEstimate = std::sqrt(m_err.head(n).squaredNorm() / std::max(1.0, static_cast<double>(n) / 3.0));
@@ -222,6 +225,7 @@ private:
     StateLayout m_layout;
     std::array<Eigen::VectorXd, 7> m_k;
     Eigen::VectorXd m_tmp, m_y1, m_err;
+    bool m_hasError = false;  // m_err holds the last accepted step's estimate
 };
 
 // Linearised backward Euler (Baraff & Witkin, "Large steps in cloth simulation", 1998).

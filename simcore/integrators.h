@@ -203,6 +203,11 @@ public:
     virtual bool restorable() const { return true; }
     virtual std::vector<double> history() const { return {}; }
     virtual void setHistory(const std::vector<double>& history) { (void)history; }
+    // The local error estimate of the last step taken, over the whole state (layout().size()
+    // doubles: x, v and aux), as the method's own error control sees it (rk45: the embedded
+    // 5th-minus-4th-order difference; CVODE: CVodeGetEstLocalErrors). Valid until the next
+    // step or prepare(); nullptr when the method has none or has not stepped since prepare().
+    virtual const double* localError() const { return nullptr; }
 
     void setOptions(const IntegratorOptions& options) { m_options = options; }
     const IntegratorOptions& options() const { return m_options; }

@@ -394,6 +394,10 @@ void Simulation::reset() {
     m_integrator->prepare(m_system->layout());
     m_hNext = m_hTaken = m_dt;
     m_doubling.setZero(m_y.size());
+    // Held only while step doubling is on (the memory bound counts what a run holds).
+    if (m_integratorOptions.stepDoubling) m_doublingError.setZero(m_y.size());
+    else m_doublingError.resize(0);
+    m_lastError = nullptr;
     m_endDerivative.setZero(m_y.size());
     m_lastGood = m_y;
     m_failure.reset();
@@ -417,6 +421,7 @@ void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v) 
     if (x.cols() != particleCount() || v.cols() != particleCount())
         throw std::invalid_argument("state has the wrong number of particles");
     m_endValid = false;
+    m_lastError = nullptr;
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = x;
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data() + m_n, 3, particleCount()) = v;
     m_y.tail(kAux).setZero();
@@ -561,6 +566,32 @@ void Simulation::currentForces(double* f) const {
     m_forces.evaluate(m_y.data(), m_y.data() + m_n, f, extras, false);
 }
 
+ForceBreakdown Simulation::forceBreakdown(int particle) const {
+    ForceBreakdown out;
+    if (m_breakdownForces.size() != m_n) m_breakdownForces.setZero(m_n);
+    m_forces.breakdown(particle, m_y.data(), m_y.data() + m_n, m_breakdownForces.data(), out);
+    return out;
+}
+
+ObservableErrors Simulation::observableErrors() {
+    ObservableErrors out;
+    if (!m_lastError || m_failure) return out;
+    Diagnostics at, off;
+    measure(at);
+    m_errorScratch = m_y;
+    m_y += Eigen::Map<const Eigen::VectorXd>(m_lastError, m_y.size());
+    measure(off);
+    m_y = m_errorScratch;  // exactly the state it was (m_y keeps its buffer: CVODE wraps it)
+    for (std::size_t k = 0; k < 2; ++k) {
+        out.volume[k] = std::abs(off.volume[k] - at.volume[k]);
+        out.pressure[k] = std::abs(off.pressure[k] - at.pressure[k]);
+    }
+    out.energy = std::abs(off.total() - at.total());
+    out.valid = std::isfinite(out.energy) && std::isfinite(out.volume[0] + out.volume[1]) &&
+                std::isfinite(out.pressure[0] + out.pressure[1]);
+    return out;
+}
+
 double Simulation::totalEnergyNow() const {
     Diagnostics d;
     measure(d);
@@ -601,6 +632,7 @@ bool Simulation::step(double until) {
     StepReport report = m_integrator->step(*m_system, t0, h, m_y);
     m_system->offer(nullptr);
     m_jacobianProducts += static_cast<std::uint64_t>(report.jacobianProducts);
+    m_lastError = nullptr;
     if (report.failure) {
         m_failure = Failure{report.failure, m_diag.step + 1, t0};
         m_y = m_lastGood;
@@ -624,6 +656,10 @@ bool Simulation::step(double until) {
         const double rms = std::sqrt((m_y.head(n) - m_doubling.head(n)).squaredNorm() /
                                      std::max(1.0, static_cast<double>(particleCount())));
         report.errorEstimate = second.failure || !std::isfinite(rms) ? -1.0 : rms / (1.0 - std::pow(2.0, -p));
+        if (report.errorEstimate >= 0.0) {
+            m_doublingError = (m_y - m_doubling) / (1.0 - std::pow(2.0, -p));
+            m_lastError = m_doublingError.data();
+        }
         m_y = m_doubling;
     }
 
@@ -676,6 +712,7 @@ bool Simulation::step(double until) {
     m_timeCarry = (m_diag.time - t0) - increment;
     m_diag.dt = report.h;
     m_diag.errorEstimate = report.errorEstimate;
+    if (m_integrator->adaptive() && report.errorEstimate >= 0.0) m_lastError = m_integrator->localError();
     m_diag.degenerateSprings = m_system->extras().degenerateSprings;
     m_endValid = m_reuseEndForces;
     return true;
@@ -690,6 +727,7 @@ bool Simulation::advanceTo(double tEnd) {
 
 void Simulation::setIntegratorOptions(const IntegratorOptions& options) {
     m_integratorOptions = options;
+    if (options.stepDoubling && m_doublingError.size() != m_y.size()) m_doublingError.setZero(m_y.size());
     m_integrator->setOptions(options);
 }
 
@@ -936,6 +974,7 @@ std::optional<std::string> Simulation::setIntegrator(std::string_view name) {
     if (!next) return "unknown integrator '" + std::string(name) + "'; allowed: " + integratorNames();
     m_integrator = std::move(next);
     m_endValid = false;
+    m_lastError = nullptr;
     m_integrator->setOptions(m_integratorOptions);
     m_integrator->prepare(m_system->layout());
     m_hNext = m_dt;

@@ -39,6 +39,15 @@
 
 namespace simcore {
 
+// Half-widths of the error bands of the plotted observables implied by a step's local error
+// estimate (Simulation::observableErrors). valid = false: the step had no estimate.
+struct ObservableErrors {
+    bool valid = false;
+    std::array<double, 2> volume{};    // [inner, outer], in the unit of Diagnostics::volume
+    std::array<double, 2> pressure{};  // [inner, outer], in the unit of Diagnostics::pressure
+    double energy = 0.0;               // of the total energy [J]
+};
+
 struct Diagnostics {
     long step = 0;
     double time = 0.0;                       // simulated time [s]
@@ -65,6 +74,9 @@ struct Diagnostics {
     std::uint64_t forceEvaluations = 0;
     bool hasSolverCounters = false;          // the integrator is a solver with its own counters (CVODE)
     SolverCounters solver;                   // ... and these are they
+    // The error bands of this row: filled only by a caller that asks for them
+    // (Simulation::observableErrors; the GUI's plot rows), else not valid.
+    ObservableErrors errors;
 
     double springTotal() const { return spring[0] + spring[1] + spring[2]; }
     double potential() const { return springTotal() + gravity + gas + pointer + contact; }
@@ -194,6 +206,19 @@ public:
     // The total force on every particle in the current state (3N) [N], e.g. to draw force
     // vectors. Not counted as a force evaluation of the run.
     void currentForces(double* f) const;
+    // The force on one particle in the current state split by part (gravity, each spring
+    // family, each layer's gas, wall contact, the layer barrier, the mouse spring) and the
+    // total, for a free-body diagram (ForceModel::breakdown: the parts come from the step's
+    // own force code). Not counted as force evaluations of the run.
+    ForceBreakdown forceBreakdown(int particle) const;
+    // The error bands the last step's local error estimate e implies for the volumes, the
+    // pressures and the total energy: e is the integrator's own estimate over the whole state
+    // (rk45's embedded difference, CVODE's local error estimate, or step doubling's
+    // (y_h/2 - y_h) / (1 - 2^-p)), and each half-width is |O(y + e) - O(y)| with both states
+    // measured by measure(). Not valid when the last step had no estimate (fixed-step methods
+    // without step doubling), after a reset, a new state or a new integrator, or after a
+    // failure. The state is left exactly as it was. Costs two measurements.
+    ObservableErrors observableErrors();
     // The ODE the integrators see, with its force Jacobians (for linear stability analysis).
     OdeSystem& odeSystem();
     Eigen::Vector3d boxCentre() const { return m_boxCentre; }
@@ -313,6 +338,12 @@ private:
     double m_hTaken = 0.003;      // the step being checked [s]
     IntegratorOptions m_integratorOptions;
     Eigen::VectorXd m_doubling;   // step doubling: the full-step result [x | v | aux]
+    Eigen::VectorXd m_doublingError;  // step doubling: the last step's local error estimate
+    // The last step's local error estimate over the whole state (the integrator's, or
+    // m_doublingError), nullptr when it had none; for observableErrors().
+    const double* m_lastError = nullptr;
+    Eigen::VectorXd m_errorScratch;   // observableErrors(): the state while y + e is measured
+    mutable Eigen::VectorXd m_breakdownForces;  // forceBreakdown(): 3N scratch
     static constexpr Eigen::Index kAux = 2;  // integrated: energy removed by damping, by contact
     double m_energyScale = 1.0;   // for runaway detection [J]
     // dy/dt at the end of the last step, evaluated to measure it; valid until anything but

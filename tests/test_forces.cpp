@@ -1,5 +1,6 @@
 // Force terms: forces are minus the gradient of their energies, internal forces sum to zero,
-// momentum is conserved, and a term a scene does not have is never evaluated.
+// momentum is conserved, a term a scene does not have is never evaluated, and one particle's
+// force split by part (the free-body diagram) adds up to its total.
 #include <QtTest>
 
 #include <cmath>
@@ -9,6 +10,8 @@
 #include "simulation.h"
 
 using namespace simcore;
+
+Q_DECLARE_METATYPE(simcore::SceneKind)
 
 namespace {
 
@@ -172,6 +175,83 @@ private slots:
         sim2.grab(20, Eigen::Vector3d(3, 3, 0));
         QVERIFY(sim2.step());
         QCOMPARE(sim2.forces().evaluations(Term::Pointer), std::uint64_t(2));
+    }
+
+    void breakdownSumsToTotal_data() {
+        QTest::addColumn<SceneKind>("kind");
+        QTest::newRow("ring2d") << SceneKind::Ring2d;
+        QTest::newRow("sphere3d") << SceneKind::Sphere3d;
+    }
+    void breakdownSumsToTotal() {
+        // A body dropped onto the floor (contact = force), one outer particle pulled by the
+        // mouse spring and one inner particle pushed beyond its outer partner's tangent plane
+        // (the layer barrier acts): every part of the free-body diagram is exercised, and for
+        // every particle the parts add up to the total force, which is the model's own.
+        QFETCH(SceneKind, kind);
+        Simulation sim(ParameterSet(kind), "rk4");
+        const double floor = sim.boxCentre().y() - sim.boxHalfSize();
+        auto lowest = [&] {
+            Eigen::Index i = 0;
+            sim.positions().row(1).minCoeff(&i);
+            return int(i);
+        };
+        for (int steps = 0; steps < 200000 && sim.positions()(1, lowest()) >= floor; ++steps) QVERIFY(sim.step());
+        QVERIFY2(sim.positions()(1, lowest()) < floor, "the body never reached the floor");
+        const int inContact = lowest();
+        const Topology& topo = sim.topology();
+        const auto [inner, outer] = topo.layerPairs[topo.layerPairs.size() / 3];
+        Eigen::Matrix3Xd x = sim.positions(), v = sim.velocities();
+        const Eigen::Vector3d centre = x.rowwise().mean();
+        x.col(inner) = x.col(outer) + 0.1 * (x.col(outer) - centre).normalized();
+        sim.setState(x, v);
+        int pulled = -1;
+        for (int i = 0; i < topo.particleCount(); ++i)
+            if (topo.layer[std::size_t(i)] == Layer::Outer && i != outer && i != inContact) pulled = i;
+        sim.grab(pulled, sim.positions().col(pulled) + Eigen::Vector3d(0.3, 0.4, 0.0));
+
+        const std::uint64_t evaluations = sim.forces().forceEvaluations();
+        std::vector<double> f(std::size_t(3 * topo.particleCount()));
+        sim.currentForces(f.data());
+        auto part = [](const ForceBreakdown& b, ForcePart p) { return b[p].norm(); };
+        for (int i = 0; i < topo.particleCount(); ++i) {
+            const ForceBreakdown b = sim.forceBreakdown(i);
+            QCOMPARE(b.particle, i);
+            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+            double scale = 0.0;
+            for (int k = 0; k < kForcePartCount; ++k) {
+                sum += b.part[std::size_t(k)];
+                scale += b.part[std::size_t(k)].norm();
+                if (!b.present[std::size_t(k)]) QCOMPARE(b.part[std::size_t(k)].norm(), 0.0);
+            }
+            // The total is the step's force, bit for bit.
+            for (int a = 0; a < 3; ++a) QCOMPARE(b.total[a], f[std::size_t(3 * i + a)]);
+            QVERIFY2((sum - b.total).norm() <= 1e-12 * scale,
+                     qPrintable(QString("particle %1: |sum - total| = %2, sum of |parts| = %3")
+                                    .arg(i).arg((sum - b.total).norm()).arg(scale)));
+            // Gravity is the particle's weight.
+            QCOMPARE(b[ForcePart::Gravity].y(), -sim.body().mass[i] * sim.forces().params.gravity);
+            // A particle feels only its own layer's gas.
+            const bool isInner = topo.layer[std::size_t(i)] == Layer::Inner;
+            QCOMPARE(part(b, isInner ? ForcePart::GasOuter : ForcePart::GasInner), 0.0);
+            QVERIFY(part(b, isInner ? ForcePart::GasInner : ForcePart::GasOuter) > 0.0);
+            QVERIFY(part(b, ForcePart::Structural) > 0.0);
+            QCOMPARE(part(b, ForcePart::Mouse) > 0.0, i == pulled);
+        }
+        QVERIFY(sim.forceBreakdown(inContact)[ForcePart::Walls].y() > 0.0);  // the floor pushes up
+        QVERIFY(part(sim.forceBreakdown(inner), ForcePart::Barrier) > 0.0);
+        QVERIFY(sim.forceBreakdown(inner).has(ForcePart::Barrier));
+        QVERIFY(sim.forceBreakdown(pulled)[ForcePart::Mouse].x() > 0.0);      // towards the anchor
+        QCOMPARE(sim.forces().forceEvaluations(), evaluations);                // not counted
+        QCOMPARE(sim.forceBreakdown(-1).particle, -1);
+        QCOMPARE(sim.forceBreakdown(topo.particleCount()).total.norm(), 0.0);
+
+        // Contact = projection: the walls are no force, so no part.
+        ParameterSet projection(kind);
+        QVERIFY(!projection.set(simcore::Param::Contact, 1.0));
+        Simulation projected(projection, "rk4");
+        const ForceBreakdown b = projected.forceBreakdown(0);
+        QVERIFY(!b.has(ForcePart::Walls) && !b.has(ForcePart::Barrier));
+        QVERIFY(b.has(ForcePart::Gravity) && b.has(ForcePart::Structural));
     }
 };
 

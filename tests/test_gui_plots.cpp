@@ -140,6 +140,82 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->pointCount("volume", 0), 1, testsupport::kHangGuardMs);
     }
 
+    void errorBandFollowsTheEstimate() {
+        // Issue 16: the volume, pressure and energy plots draw the error band the rows carry
+        // (value +- half-width, the half-width the row's own), only for rows with an estimate;
+        // a tighter tolerance narrows it; without an estimate the dock says so.
+        auto rowsOf = [](const char* integrator, double tolerance) {
+            simcore::Simulation sim(simcore::ParameterSet(SceneKind::Ring2d), integrator);
+            simcore::IntegratorOptions o = sim.integratorOptions();
+            o.atol = o.rtol = tolerance;
+            sim.setIntegratorOptions(o);
+            std::vector<simcore::Diagnostics> rows;
+            while (sim.time() < 0.2 && sim.step()) {
+                rows.push_back(sim.diagnostics());
+                rows.back().errors = sim.observableErrors();
+            }
+            return rows;
+        };
+        PlotDock dock;
+        dock.setScene(SceneKind::Ring2d);
+        QVERIFY(!dock.bandsShown());
+        dock.setBandsShown(true);
+        const int total = int(dock.seriesNames("energy").indexOf("total"));
+        QVERIFY(total >= 0);
+        QCOMPARE(dock.bandPointCount("energy", 0), -1);  // kinetic: no band
+        auto meanHalfWidth = [&](const std::vector<simcore::Diagnostics>& rows) {
+            dock.clear();
+            dock.appendRows(rows, 0, int(rows.size()));
+            // (QVERIFY returns from a void function only: the checks by hand here.)
+            auto check = [](bool ok, const char* what) { QTest::qVerify(ok, what, "", __FILE__, __LINE__); };
+            for (const char* id : {"volume", "pressure"})
+                for (int s = 0; s < 2; ++s) check(dock.bandPointCount(id, s) == int(rows.size()), "a band point per row");
+            check(dock.bandPointCount("energy", total) == int(rows.size()), "an energy band point per row");
+            const simcore::ObservableErrors& last = rows.back().errors;
+            check(std::abs(dock.lastBandHalfWidth("volume", 1) - last.volume[1]) <= 1e-9 * rows.back().volume[1],
+                  "the volume band's half-width is the row's");
+            check(std::abs(dock.lastBandHalfWidth("energy", total) - last.energy) <= 1e-9 * std::abs(rows.back().total()) + 1e-15,
+                  "the energy band's half-width is the row's");
+            double sum = 0.0;
+            for (const auto& r : rows) sum += r.errors.volume[1];
+            return sum / double(rows.size());
+        };
+        const double loose = meanHalfWidth(rowsOf("rk45", 1e-4)), tight = meanHalfWidth(rowsOf("rk45", 1e-8));
+        QVERIFY2(loose > 0.0 && tight < 0.1 * loose, qPrintable(QString("%1 -> %2").arg(loose).arg(tight)));
+        QVERIFY(dock.findChild<QLabel*>("errorBandNote")->text().isEmpty());
+        // rk4: no estimate, no band, and a note that says why.
+        const auto plain = rowsOf("rk4", 1e-6);
+        dock.clear();
+        dock.appendRows(plain, 0, int(plain.size()));
+        QCOMPARE(dock.pointCount("volume", 0), int(plain.size()));
+        QCOMPARE(dock.bandPointCount("volume", 0), 0);
+        QCOMPARE(dock.bandPointCount("energy", total), 0);
+        QVERIFY(dock.findChild<QLabel*>("errorBandNote")->text().contains("no error estimate"));
+        dock.setBandsShown(false);
+        QVERIFY(dock.findChild<QLabel*>("errorBandNote")->text().isEmpty());
+
+        // Through the worker: rk45's rows carry a band, rk4's none; none while not shown (the
+        // worker does not measure it then).
+        for (const char* integrator : {"rk45", "rk4", "rk45 hidden"}) {
+            MainWindow window(false);
+            const bool hidden = QByteArray(integrator).endsWith("hidden");
+            window.plotDock()->setBandsShown(!hidden);
+            window.startScene(simcore::ParameterSet(SceneKind::Ring2d), {QString(integrator).section(' ', 0, 0)});
+            QTRY_COMPARE_WITH_TIMEOUT(window.plotDock()->plotIds(), (QStringList{"volume", "pressure", "energy"}),
+                                      testsupport::kHangGuardMs);
+            QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, testsupport::kHangGuardMs);
+            window.controller()->runUntil(0.05);
+            QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest()->lanes[0].diagnostics.time >= 0.05 - 1e-9 &&
+                                         !window.controller()->latest()->running,
+                                     testsupport::kHangGuardMs);
+            QTRY_VERIFY_WITH_TIMEOUT(window.plotDock()->pointCount("volume", 0) >= 6, testsupport::kHangGuardMs);
+            const int banded = window.plotDock()->bandPointCount("volume", 0);
+            if (QByteArray(integrator) == "rk45") QVERIFY(banded >= 5);
+            else if (hidden) QCOMPARE(banded, 0);
+            else QCOMPARE(banded, 0);
+        }
+    }
+
     void readoutShowsTheSolverCounters() {
         // Issue 13: with a CVODE method the run dock's readout carries CVODE's own counters,
         // the frame's numbers; a textbook method shows none of those rows.

@@ -5,6 +5,7 @@
 #include <QApplication>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QLabel>
 #include <QMouseEvent>
 #include <QProcess>
 #include <QRegularExpression>
@@ -233,6 +234,82 @@ private slots:
         w.controller()->pause();
     }
 
+    void clickShowsTheForcesOnAParticle_data() { mouseDragGrabsAndPulls_data(); }
+    void clickShowsTheForcesOnAParticle() {
+        // Issue 16: a click (no drag) on a particle selects it; every frame then carries its
+        // free-body diagram, drawn as arrows and listed in a panel, updating while it runs; a
+        // click away from the body clears it. The grab of the press is let go at the release.
+        QFETCH(SceneKind, kind);
+        MainWindow w(false);
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
+        w.startScene(simcore::ParameterSet(kind), {"rk4"});
+        QVERIFY(waitForScene(w, kind));
+        Viewport* v = w.viewports().front();
+        auto* panel = v->findChild<QLabel*>("forcesPanel");
+        QVERIFY(panel && panel->isHidden());
+        const FramePtr f = w.controller()->latest();
+        int top = -1;
+        const auto& x = f->lanes[0].positions;
+        for (int i = 0; i < f->scene->topology.particleCount(); ++i)
+            if (f->scene->topology.layer[std::size_t(i)] == simcore::Layer::Outer &&
+                (top < 0 || x[3 * std::size_t(i) + 1] > x[3 * std::size_t(top) + 1]))
+                top = i;
+        const QMatrix4x4 mvp = v->camera().projection(v->size()) * v->camera().view();
+        const QVector3D ndc = mvp.map(QVector3D(x[3 * std::size_t(top)], x[3 * std::size_t(top) + 1], x[3 * std::size_t(top) + 2]));
+        const QPointF at((ndc.x() + 1) * 0.5 * v->width(), (1 - ndc.y()) * 0.5 * v->height());
+        auto click = [v](QPointF pos) {
+            QMouseEvent press(QEvent::MouseButtonPress, pos, v->mapToGlobal(pos), Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(v, &press);
+            QMouseEvent release(QEvent::MouseButtonRelease, pos, v->mapToGlobal(pos), Qt::LeftButton, Qt::NoButton, Qt::NoModifier);
+            QApplication::sendEvent(v, &release);
+        };
+        // Paused, the body does not move: what the click changes in the GL image outside the
+        // panel is the arrows and the ring around the particle.
+        const QImage before = v->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+
+        click(at);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].breakdown.has_value(), testsupport::kHangGuardMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].pointer.active, testsupport::kHangGuardMs);
+        const simcore::ForceBreakdown first = *w.controller()->latest()->lanes[0].breakdown;
+        QCOMPARE(first.particle, top);
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        double scale = 0.0;
+        for (const Eigen::Vector3d& p : first.part) {
+            sum += p;
+            scale += p.norm();
+        }
+        QVERIFY(scale > 0.0 && (sum - first.total).norm() <= 1e-12 * scale);
+        QTRY_VERIFY_WITH_TIMEOUT(panel->isVisible(), testsupport::kHangGuardMs);
+        QVERIFY(panel->text().contains(QString("Forces on particle %1").arg(top)));
+        for (const char* term : {"gravity", "structural springs", "gas (outer)", "total"}) QVERIFY2(panel->text().contains(term), term);
+        QVERIFY(panel->text().contains(" N"));
+        QVERIFY(panel->text().contains("arrows: 1 m ="));
+        QVERIFY(viewportShowsLatest(w));
+        const QImage after = v->grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(after.size(), before.size());
+        int changed = 0;
+        for (int py = 0; py < after.height(); ++py)
+            for (int px = 0; px < after.width(); ++px)
+                if (!panel->geometry().contains(px, py) && after.pixel(px, py) != before.pixel(px, py)) ++changed;
+        QVERIFY2(changed > 200, qPrintable(QString("%1 pixels changed").arg(changed)));
+
+        // While it runs the diagram follows the particle.
+        w.controller()->run();
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].diagnostics.time > 0.2, testsupport::kHangGuardMs);
+        w.controller()->pause();
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->running, testsupport::kHangGuardMs);
+        const auto& later = w.controller()->latest()->lanes[0].breakdown;
+        QVERIFY(later && later->particle == top);
+        QVERIFY(later->total != first.total);
+
+        // A click away from the body clears it.
+        click(QPointF(6, v->height() - 6));
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].breakdown.has_value(), testsupport::kHangGuardMs);
+        QTRY_VERIFY_WITH_TIMEOUT(panel->isHidden(), testsupport::kHangGuardMs);
+    }
+
     void screenshotFromTheCommandLine() {
         QTemporaryDir dir;
         const QString path = dir.filePath("shot.png");
@@ -338,6 +415,8 @@ private slots:
             {{"--docks", "pv,"}, "is empty"},
             {{"--docks", "pv", "--docks", "energy-bars"}, "--docks is given 2 times"},
             {{"--measure-fps", "inf"}, "--measure-fps needs"},
+            {{"--select", "-1"}, "--select needs a particle index"},
+            {{"--select", "top"}, "--select needs a particle index"},
             {{"--scene", scene, "--screenshot", dir.filePath("link.png")}, "is the same file as --scene"},
             {{"--screenshot", dir.filePath("shot.xyz")}, "cannot write .xyz"},
             {{"--screenshot", dir.filePath("missing/shot.png")}, "missing/shot.png"},

@@ -343,6 +343,79 @@ private slots:
             QVERIFY(std::abs(a.total() - b.total()) <= 1e-10 * std::max(1.0, std::abs(b.total())));
         }
     }
+
+    void observableErrorsFollowTheEstimate() {
+        // The error bands of volume, pressure and energy (issue 16): there for the methods with
+        // a local error estimate (rk45, CVODE, step doubling), absent for rk4 alone, narrower
+        // at a tighter tolerance; asking for them changes nothing of the run.
+        const ParameterSet p(SceneKind::Ring2d);
+        auto meanBand = [&](const char* integrator, double tolerance, bool doubling) {
+            Simulation sim(p, integrator);
+            IntegratorOptions o = sim.integratorOptions();
+            o.atol = o.rtol = tolerance;
+            o.stepDoubling = doubling;
+            sim.setIntegratorOptions(o);
+            QTest::qVerify(!sim.observableErrors().valid, "valid before a step", "", __FILE__, __LINE__);
+            ObservableErrors sum;
+            int steps = 0;
+            while (sim.time() < 0.3 && sim.step()) {
+                const Eigen::VectorXd before = sim.state();
+                const ObservableErrors e = sim.observableErrors();
+                if (!(sim.state() == before)) return ObservableErrors{};  // the state must be untouched
+                if (!e.valid) return e;
+                for (std::size_t k = 0; k < 2; ++k) {
+                    sum.volume[k] += e.volume[k];
+                    sum.pressure[k] += e.pressure[k];
+                }
+                sum.energy += e.energy;
+                ++steps;
+            }
+            sum.valid = steps > 0 && !sim.failed();
+            for (std::size_t k = 0; k < 2; ++k) {
+                sum.volume[k] /= steps;
+                sum.pressure[k] /= steps;
+            }
+            sum.energy /= steps;
+            return sum;
+        };
+        const ObservableErrors loose = meanBand("rk45", 1e-4, false), tight = meanBand("rk45", 1e-8, false);
+        QVERIFY(loose.valid && tight.valid);
+        for (std::size_t k = 0; k < 2; ++k) {
+            QVERIFY(loose.volume[k] > 0.0 && loose.pressure[k] > 0.0);
+            QVERIFY2(tight.volume[k] < 0.1 * loose.volume[k],
+                     qPrintable(QString("volume band %1 -> %2").arg(loose.volume[k]).arg(tight.volume[k])));
+            QVERIFY(tight.pressure[k] < 0.1 * loose.pressure[k]);
+        }
+        QVERIFY(loose.energy > 0.0 && tight.energy < 0.1 * loose.energy);
+        QVERIFY(meanBand("cvode-bdf", 1e-6, false).valid);
+        QVERIFY(meanBand("rk4", 0.0, true).valid);   // step doubling
+        QVERIFY(!meanBand("rk4", 0.0, false).valid);  // no estimate, no band
+        // The band is about the size the estimate says: a volume error is a position error
+        // times a perimeter, of the order of the RMS position error times the body's size.
+        Simulation sim(p, "rk45");
+        for (int i = 0; i < 20; ++i) QVERIFY(sim.step());
+        const ObservableErrors e = sim.observableErrors();
+        QVERIFY(e.valid);
+        const double position = sim.diagnostics().errorEstimate;
+        QVERIFY(position > 0.0);
+        QVERIFY2(e.volume[1] < 100.0 * position && e.volume[1] > 1e-4 * position,
+                 qPrintable(QString("volume band %1, position error %2").arg(e.volume[1]).arg(position)));
+        // After a reset, a new state or a new integrator there is no last step to estimate.
+        sim.reset();
+        QVERIFY(!sim.observableErrors().valid);
+        QVERIFY(sim.step());
+        QVERIFY(sim.setIntegrator("rk4") == std::nullopt);
+        QVERIFY(!sim.observableErrors().valid);
+
+        // The run with the bands asked for every step is the run without, bit for bit.
+        Simulation asked(p, "rk45"), plain(p, "rk45");
+        for (int i = 0; i < 50; ++i) {
+            QVERIFY(asked.step() && plain.step());
+            QVERIFY(asked.observableErrors().valid);
+        }
+        QVERIFY(asked.state() == plain.state());
+        QCOMPARE(asked.diagnostics().forceEvaluations, plain.diagnostics().forceEvaluations);
+    }
 };
 
 QTEST_GUILESS_MAIN(TestSimulation)

@@ -59,6 +59,9 @@ struct LaneFrame {
     std::optional<simcore::Failure> failure;
     simcore::PointerSpring pointer;
     double divergence = 0.0;              // RMS distance to lane 0's particles [m]
+    // The selected particle's free-body diagram (a click on a particle selects it); none
+    // when nothing is selected.
+    std::optional<simcore::ForceBreakdown> breakdown;
 };
 
 // Time travel: where the shown state lies on the run's recorded timeline (sim_worker.h).

@@ -305,6 +305,7 @@ void MainWindow::rebuildViewports(int count) {
         connect(v, &Viewport::grabRequested, m_controller, &SimulationController::grabAlongRay);
         connect(v, &Viewport::anchorMoved, m_controller, &SimulationController::moveAnchor);
         connect(v, &Viewport::releaseRequested, m_controller, &SimulationController::release);
+        connect(v, &Viewport::selectRequested, m_controller, &SimulationController::selectAlongRay);
         connect(m_controller, &SimulationController::grabbed, v, &Viewport::onGrabbed);
         m_viewports.push_back(v);
     }
@@ -392,6 +393,7 @@ void MainWindow::connectController() {
         m_pvDock->setScene(scene->kind);
     });
     connect(c, &SimulationController::historyReset, m_plotDock, &PlotDock::clear);
+    connect(m_plotDock, &PlotDock::bandsShownChanged, c, &SimulationController::setErrorBandsWanted);
     connect(c, &SimulationController::historyReset, m_pvDock, &PvDock::clear);
     connect(c, &SimulationController::rowsAppended, this, [this](int first, int count) {
         m_plotDock->appendRows(m_controller->history(), first, count);

@@ -1,6 +1,7 @@
 #include "plot_dock.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -46,9 +47,19 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_autoscale = new QCheckBox(tr("Autoscale"), host);
     m_autoscale->setChecked(true);
     m_autoscale->setToolTip(tr("Fit the axes to the data; off while you zoom (wheel) and pan (drag)"));
+    m_showBands = new QCheckBox(tr("Show error band"), host);
+    m_showBands->setObjectName(QStringLiteral("showErrorBand"));
+    m_showBands->setToolTip(tr("A band around volume, pressure and total energy: the integrator's local error estimate "
+                               "of each step carried to them (|O(y + e) - O(y)|). rk45, CVODE and step doubling "
+                               "have an estimate; other methods show no band."));
+    m_bandNote = new QLabel(host);
+    m_bandNote->setObjectName(QStringLiteral("errorBandNote"));
+    m_bandNote->setStyleSheet(QStringLiteral("QLabel { color: #806000; }"));
     bar->addWidget(new QLabel(tr("Show"), host));
     bar->addWidget(m_windowCombo);
     bar->addWidget(m_autoscale);
+    bar->addWidget(m_showBands);
+    bar->addWidget(m_bandNote);
     bar->addStretch(1);
     layout->addLayout(bar);
     m_plotLayout = new QVBoxLayout;
@@ -64,6 +75,16 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     connect(m_autoscale, &QCheckBox::toggled, this, [this](bool on) {
         if (on) scheduleReplot();
     });
+    connect(m_showBands, &QCheckBox::toggled, this, [this](bool on) {
+        for (const auto& bands : m_bands)
+            for (const Band& b : bands) {
+                b.upper->setVisible(on);
+                b.lower->setVisible(on);
+            }
+        updateBandNote();
+        scheduleReplot();
+        emit bandsShownChanged(on);
+    });
     setScene(simcore::SceneKind::Ring2d);
 }
 
@@ -76,6 +97,7 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     m_kind = kind;
     for (QCustomPlot* p : m_plots) delete p;
     m_plots.clear();
+    m_bands.clear();
     m_specs = plotSpecs(kind);
     for (const PlotSpec& spec : m_specs) {
         auto* plot = new QCustomPlot(widget());
@@ -125,6 +147,26 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         small.setPointSizeF(small.pointSizeF() * 0.85);
         label->setFont(small);
         label->setVisible(false);
+        // The bands after every series (graph i stays series i), behind them, out of the legend.
+        std::vector<Band> bands;
+        for (std::size_t s = 0; s < spec.series.size(); ++s) {
+            if (!spec.series[s].error) continue;
+            QColor edge = spec.series[s].color, fill = edge;
+            edge.setAlpha(90);
+            fill.setAlpha(60);
+            Band b{int(s), plot->addGraph(), plot->addGraph()};
+            for (QCPGraph* g : {b.upper, b.lower}) {
+                g->setName(spec.series[s].name + tr(" error band"));
+                g->setPen(QPen(edge, 0.8));
+                g->removeFromLegend();
+                g->setLayer(QStringLiteral("grid"));  // drawn under the curves
+                g->setVisible(m_showBands->isChecked());
+            }
+            b.lower->setBrush(fill);
+            b.lower->setChannelFillGraph(b.upper);
+            bands.push_back(b);
+        }
+        m_bands.push_back(std::move(bands));
         // Zooming or dragging by hand means the user wants to look: stop autoscaling.
         connect(plot, &QCustomPlot::mouseWheel, this, [this] { m_autoscale->setChecked(false); });
         connect(plot, &QCustomPlot::mousePress, this, [this] { m_autoscale->setChecked(false); });
@@ -166,6 +208,37 @@ double PlotDock::lastValue(const QString& plotId, int series) const {
     return qQNaN();
 }
 
+const PlotDock::Band* PlotDock::band(const QString& plotId, int series) const {
+    for (std::size_t i = 0; i < m_specs.size(); ++i)
+        if (m_specs[i].id == plotId)
+            for (const Band& b : m_bands[i])
+                if (b.series == series) return &b;
+    return nullptr;
+}
+
+int PlotDock::bandPointCount(const QString& plotId, int series) const {
+    const Band* b = band(plotId, series);
+    if (!b) return -1;
+    int count = 0;
+    for (auto it = b->upper->data()->constBegin(); it != b->upper->data()->constEnd(); ++it)
+        if (!std::isnan(it->value)) ++count;
+    return count;
+}
+
+double PlotDock::lastBandHalfWidth(const QString& plotId, int series) const {
+    const Band* b = band(plotId, series);
+    if (!b || b->upper->data()->isEmpty()) return qQNaN();
+    return 0.5 * ((b->upper->data()->constEnd() - 1)->value - (b->lower->data()->constEnd() - 1)->value);
+}
+
+bool PlotDock::bandsShown() const { return m_showBands->isChecked(); }
+void PlotDock::setBandsShown(bool on) { m_showBands->setChecked(on); }
+
+void PlotDock::updateBandNote() {
+    const bool missing = m_showBands->isChecked() && !m_lastRowHasBand;
+    m_bandNote->setText(missing ? tr("(no error estimate: use rk45, CVODE or step doubling)") : QString());
+}
+
 void PlotDock::setWindow(double seconds) {
     m_window = seconds;
     const int index = m_windowCombo->findData(seconds);
@@ -181,9 +254,16 @@ void PlotDock::setLive(bool live) {
 }
 
 void PlotDock::clear() {
-    for (std::size_t i = 0; i < m_plots.size(); ++i)
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
         for (std::size_t g = 0; g < m_specs[i].series.size(); ++g) m_plots[i]->graph(int(g))->data()->clear();
+        for (const Band& b : m_bands[i]) {
+            b.upper->data()->clear();
+            b.lower->data()->clear();
+        }
+    }
     m_lastTime = 0.0;
+    m_lastRowHasBand = false;
+    updateBandNote();
     scheduleReplot();
 }
 
@@ -279,8 +359,27 @@ void PlotDock::appendRows(const std::vector<simcore::Diagnostics>& history, int 
             }
             plot->graph(int(s))->data()->add(points, true);
         }
+        for (const Band& b : m_bands[i]) {
+            // value +- e; NaN (a gap) where the row has no estimate.
+            const SeriesSpec& spec = series[std::size_t(b.series)];
+            QVector<QCPGraphData> upper, lower;
+            upper.reserve(count);
+            lower.reserve(count);
+            for (int r = first; r < first + count; ++r) {
+                const simcore::Diagnostics& d = history[std::size_t(r)];
+                const double value = spec.value(d), e = spec.error(d);
+                upper.append(QCPGraphData(d.time, value + e));
+                lower.append(QCPGraphData(d.time, value - e));
+            }
+            b.upper->data()->add(upper, true);
+            b.lower->data()->add(lower, true);
+        }
     }
-    if (count > 0) m_lastTime = history[std::size_t(first + count - 1)].time;
+    if (count > 0) {
+        m_lastTime = history[std::size_t(first + count - 1)].time;
+        m_lastRowHasBand = history[std::size_t(first + count - 1)].errors.valid;
+        updateBandNote();
+    }
     if (m_cursorVisible) updateCursor();
     scheduleReplot();
 }
@@ -305,6 +404,7 @@ void PlotDock::replotNow() {
             bool found = false;
             QCPRange y;
             for (int g = 0; g < plot->graphCount(); ++g) {
+                if (!plot->graph(g)->visible()) continue;  // a hidden error band
                 bool ok = false;
                 const QCPRange r = plot->graph(g)->getValueRange(ok, QCP::sdBoth, QCPRange(lo, hi));
                 if (!ok) continue;

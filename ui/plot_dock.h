@@ -8,6 +8,11 @@
 // Time travel: a cursor line at the moment shown (when paused) with the plotted values there,
 // read from the plot's own data; and the abandoned future of the last branch as faint lines
 // (graphs after the series, not in the legend).
+//
+// Error bands ("Show error band"): around the volumes, the pressures and the total energy,
+// value +- the half-width the row's error estimate implies (simcore::ObservableErrors), a
+// translucent fill in the series' colour between two graphs kept out of the legend. Rows of
+// a step without an estimate (rk4 without step doubling, ...) have no band, and the dock says so.
 
 #include <vector>
 
@@ -16,6 +21,8 @@
 #include "plot_series.h"
 
 class QCustomPlot;
+class QCPGraph;
+class QLabel;
 class QComboBox;
 class QCheckBox;
 class QTimer;
@@ -39,6 +46,12 @@ public:
     QStringList seriesNames(const QString& plotId) const;
     int pointCount(const QString& plotId, int series) const;
     double lastValue(const QString& plotId, int series) const;
+    // The error band of a series: its points with a band, and the last one's half-width
+    // (NaN: none). -1 / NaN for a series without a band.
+    int bandPointCount(const QString& plotId, int series) const;
+    double lastBandHalfWidth(const QString& plotId, int series) const;
+    bool bandsShown() const;
+    void setBandsShown(bool on);
     std::vector<QCustomPlot*> plots() const { return m_plots; }
     const std::vector<PlotSpec>& specs() const { return m_specs; }
 
@@ -55,6 +68,9 @@ public:
     // A series' plotted value at time t: the last point at or before t (NaN: none).
     double valueAt(const QString& plotId, int series, double t) const;
     int abandonedPointCount(const QString& plotId, int series) const;
+signals:
+    // "Show error band" switched: the worker fills the rows' bands only while it is on.
+    void bandsShownChanged(bool on);
 
 public slots:
     void clear();  // the series (the abandoned future stays until setAbandoned)
@@ -69,6 +85,14 @@ private:
     void scheduleReplot();
     void updateCursor();
     int plotIndex(const QString& plotId) const;
+    void updateBandNote();
+    // The two graphs (value + e, value - e, filled between) of a series with a band.
+    struct Band {
+        int series = -1;
+        QCPGraph* upper = nullptr;
+        QCPGraph* lower = nullptr;
+    };
+    const Band* band(const QString& plotId, int series) const;
 
     simcore::SceneKind m_kind = simcore::SceneKind::Ring2d;
     std::vector<PlotSpec> m_specs;
@@ -76,6 +100,10 @@ private:
     QVBoxLayout* m_plotLayout = nullptr;
     QComboBox* m_windowCombo = nullptr;
     QCheckBox* m_autoscale = nullptr;
+    QCheckBox* m_showBands = nullptr;
+    QLabel* m_bandNote = nullptr;   // says why no band is drawn
+    std::vector<std::vector<Band>> m_bands;  // per plot
+    bool m_lastRowHasBand = false;
     QTimer* m_replotTimer = nullptr;
     double m_window = 10.0;
     double m_lastTime = 0.0;

@@ -1,10 +1,16 @@
 #include "plot_series.h"
 
+#include <limits>
+
 #include <QObject>
 
 #include "scenes.h"
 
 namespace elui {
+
+namespace {
+double none() { return std::numeric_limits<double>::quiet_NaN(); }
+}  // namespace
 
 std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
     using D = simcore::Diagnostics;
@@ -15,12 +21,16 @@ std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
     if (gas) {
         plots.push_back({QStringLiteral("volume"), flat ? QObject::tr("Area per layer") : QObject::tr("Volume per layer"),
                          flat ? QStringLiteral("area [m²]") : QStringLiteral("volume [m³]"),
-                         {{"volume", QObject::tr("inner"), inner, [](const D& d) { return d.volume[0]; }},
-                          {"volume", QObject::tr("outer"), outer, [](const D& d) { return d.volume[1]; }}}});
+                         {{"volume", QObject::tr("inner"), inner, [](const D& d) { return d.volume[0]; },
+                           [](const D& d) { return d.errors.valid ? d.errors.volume[0] : none(); }},
+                          {"volume", QObject::tr("outer"), outer, [](const D& d) { return d.volume[1]; },
+                           [](const D& d) { return d.errors.valid ? d.errors.volume[1] : none(); }}}});
         plots.push_back({QStringLiteral("pressure"), QObject::tr("Pressure per layer"),
                          flat ? QStringLiteral("pressure [N/m]") : QStringLiteral("pressure [Pa]"),
-                         {{"pressure", QObject::tr("inner"), inner, [](const D& d) { return d.pressure[0]; }},
-                          {"pressure", QObject::tr("outer"), outer, [](const D& d) { return d.pressure[1]; }}}});
+                         {{"pressure", QObject::tr("inner"), inner, [](const D& d) { return d.pressure[0]; },
+                           [](const D& d) { return d.errors.valid ? d.errors.pressure[0] : none(); }},
+                          {"pressure", QObject::tr("outer"), outer, [](const D& d) { return d.pressure[1]; },
+                           [](const D& d) { return d.errors.valid ? d.errors.pressure[1] : none(); }}}});
     }
     PlotSpec energy{QStringLiteral("energy"), QObject::tr("Energy"), QStringLiteral("energy [J]"), {}};
     using T = EnergyTerm;
@@ -31,7 +41,8 @@ std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
     // Every scene has the box walls: the contact energy (walls + layer barrier, 0 with
     // contact = projection) and what contact dissipation and friction removed.
     energy.series.push_back({"energy", QObject::tr("contact"), energyColor(T::Contact), [](const D& d) { return d.contact; }});
-    energy.series.push_back({"energy", QObject::tr("total"), energyColor(T::Total), [](const D& d) { return d.total(); }});
+    energy.series.push_back({"energy", QObject::tr("total"), energyColor(T::Total), [](const D& d) { return d.total(); },
+                             [](const D& d) { return d.errors.valid ? d.errors.energy : none(); }});
     energy.series.push_back({"energy", QObject::tr("removed"), energyColor(T::Removed), [](const D& d) { return d.removed(); }});
     energy.series.push_back({"energy", QObject::tr("removed by contact"), energyColor(T::RemovedContact),
                              [](const D& d) { return d.removedContact + d.removedCollisions; }});

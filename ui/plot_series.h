@@ -19,6 +19,9 @@ struct SeriesSpec {
     QString name;     // legend text
     QColor color;
     std::function<double(const simcore::Diagnostics&)> value;
+    // Half-width of the series' error band (Diagnostics::errors), NaN where the row has none;
+    // empty for a series without a band.
+    std::function<double(const simcore::Diagnostics&)> error = {};
 };
 
 struct PlotSpec {

@@ -57,6 +57,7 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     buttons->addWidget(m_reset);
     layout->addLayout(buttons);
     m_doubling = new QCheckBox(tr("Estimate error (step doubling)"), host);
+    m_doubling->setObjectName(QStringLiteral("stepDoubling"));
     m_doubling->setToolTip(tr("Fixed-step integrators: estimate the local error by taking each step also as "
                               "two half steps. Costs about twice the work. rk45 always reports its own estimate."));
     layout->addWidget(m_doubling);

@@ -130,6 +130,7 @@ void SimWorker::afterRebuild() {
     auto scene = std::make_shared<SceneData>();
     const simcore::Simulation& sim = *m_lanes.front();
     scene->version = ++m_sceneVersion;
+    m_selected = -1;  // another body: the old index means nothing
     scene->kind = m_params.kind();
     scene->topology = sim.topology();
     scene->boxCentre = sim.boxCentre();
@@ -245,6 +246,8 @@ void SimWorker::setForcesWanted(bool on) {
     publish(true);
 }
 
+void SimWorker::setErrorBandsWanted(bool on) { m_bandsWanted = on; }
+
 void SimWorker::setStartKick(double innerVx, double outerVx) {
     m_kickInner = innerVx;
     m_kickOuter = outerVx;
@@ -329,6 +332,17 @@ void SimWorker::moveAnchor(const QVector3D& anchor) {
     if (!m_running) publish(true);
 }
 
+void SimWorker::selectAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance) {
+    if (m_lanes.empty()) return;
+    m_selected = m_lanes.front()->pickAlongRay(toEigen(origin), toEigen(direction).normalized(), maxDistance);
+    publish(true);
+}
+
+void SimWorker::selectParticle(int particle) {
+    m_selected = !m_lanes.empty() && particle >= 0 && particle < m_lanes.front()->particleCount() ? particle : -1;
+    publish(true);
+}
+
 void SimWorker::release() {
     if (m_lanes.empty() || !m_lanes.front()->pointer().active) return;
     Input input;
@@ -400,12 +414,15 @@ bool SimWorker::stepAll() {
 
 void SimWorker::recordRow() {
     if (m_replaying) return;
-    const simcore::Simulation& sim = *m_lanes.front();
+    simcore::Simulation& sim = *m_lanes.front();
     if (sim.failed()) return;
     const double t = sim.time();
     if (m_lastRowTime >= 0.0 && t - m_lastRowTime < kRowInterval * (1.0 - 1e-9)) return;
     m_lastRowTime = t;
     m_rows.push_back(sim.diagnostics());
+    // The plots' error bands (two measurements per row, only for steps with an estimate and
+    // while the plots show them).
+    if (m_bandsWanted) m_rows.back().errors = sim.observableErrors();
 }
 
 void SimWorker::tick() {
@@ -495,6 +512,8 @@ void SimWorker::publish(bool force) {
         lane.diagnostics = sim->diagnostics();
         lane.failure = sim->failure();
         lane.pointer = sim->pointer();
+        // Nine uncounted force evaluations (ForceModel::breakdown), only while one is selected.
+        if (m_selected >= 0 && m_selected < sim->particleCount()) lane.breakdown = sim->forceBreakdown(m_selected);
         lane.divergence = std::sqrt((x - x0).colwise().squaredNorm().mean());
         frame->lanes.push_back(std::move(lane));
     }

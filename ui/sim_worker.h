@@ -72,6 +72,9 @@ public:
     void setSpeed(int speed);
     void setStepDoubling(bool on);
     void setForcesWanted(bool on);
+    // Whether each recorded row gets its error bands (Simulation::observableErrors: two
+    // measurements per row, so only while the plots show them).
+    void setErrorBandsWanted(bool on);
     // Velocity given to every inner (+) and outer (-) particle along x at each start [m/s].
     void setStartKick(double innerVx, double outerVx);
 
@@ -96,6 +99,11 @@ public:
     void grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
     void moveAnchor(const QVector3D& anchor);
     void release();
+    // Selects the outer particle nearest the ray for its free-body diagram (every frame then
+    // carries its force breakdown); a ray that meets none clears the selection.
+    void selectAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    // Selects a particle by index (< 0 or out of range: clears), as a click on it would.
+    void selectParticle(int particle);
 
     // The last command: stops, and destroys the timer, the simulations and everything else
     // made or touched on this thread, here, then quits the thread's event loop. Nothing of the
@@ -162,6 +170,8 @@ private:
     Speed m_speed = Speed::RealTime;
     double m_until = -1.0;                // runUntil target, < 0: none
     bool m_forcesWanted = false;
+    bool m_bandsWanted = false;
+    int m_selected = -1;                  // the particle whose force breakdown frames carry
     bool m_stepDoubling = false;
     int m_threads = std::max(1, simcore::hardwareThreads() - 1);  // force-evaluation threads
     double m_kickInner = 0.0, m_kickOuter = 0.0;

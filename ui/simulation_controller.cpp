@@ -168,6 +168,7 @@ void SimulationController::setParameter(const QString& key, double value) {
 void SimulationController::setSpeed(Speed speed) { toWorker(&SimWorker::setSpeed, int(speed)); }
 void SimulationController::setStepDoubling(bool on) { toWorker(&SimWorker::setStepDoubling, on); }
 void SimulationController::setForcesWanted(bool on) { toWorker(&SimWorker::setForcesWanted, on); }
+void SimulationController::setErrorBandsWanted(bool on) { toWorker(&SimWorker::setErrorBandsWanted, on); }
 void SimulationController::setStartKick(double innerVx, double outerVx) {
     toWorker(&SimWorker::setStartKick, innerVx, outerVx);
 }
@@ -181,5 +182,9 @@ void SimulationController::grabAlongRay(const QVector3D& o, const QVector3D& d, 
 }
 void SimulationController::moveAnchor(const QVector3D& anchor) { toWorker(&SimWorker::moveAnchor, anchor); }
 void SimulationController::release() { toWorker(&SimWorker::release); }
+void SimulationController::selectParticle(int particle) { toWorker(&SimWorker::selectParticle, particle); }
+void SimulationController::selectAlongRay(const QVector3D& o, const QVector3D& d, double maxDistance) {
+    toWorker(&SimWorker::selectAlongRay, o, d, maxDistance);
+}
 
 }  // namespace elui

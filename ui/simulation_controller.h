@@ -70,6 +70,7 @@ public:
     void setSpeed(Speed speed);
     void setStepDoubling(bool on);
     void setForcesWanted(bool on);
+    void setErrorBandsWanted(bool on);  // fill the rows' error bands (Diagnostics::errors)
     void setStartKick(double innerVx, double outerVx);
     void run();
     void runUntil(double simulatedTime);
@@ -87,6 +88,8 @@ public:
     void scrubToTime(double simulatedTime);  // the first moment at or after it
     void setTimelineBudget(qulonglong bytes);
     void clearAbandoned();
+    void selectAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    void selectParticle(int particle);  // its free-body diagram; < 0 clears
 
 signals:
     // To the GUI (emitted on the GUI thread).

@@ -13,6 +13,8 @@
 #include <QTextDocument>
 #include <QWheelEvent>
 
+#include "plot_series.h"
+
 static void initElasticLabResources() { Q_INIT_RESOURCE(elastic_lab); }
 
 namespace elui {
@@ -36,6 +38,30 @@ const QVector4D kFloorColor{0.80f, 0.82f, 0.86f, 1.0f};
 const QVector4D kForceColor{0.85f, 0.10f, 0.10f, 1.0f};
 const QVector4D kNormalColor{0.10f, 0.55f, 0.60f, 1.0f};
 const QVector4D kMouseColor{0.95f, 0.70f, 0.00f, 1.0f};
+
+// A press released within this many pixels of where it went down is a click [px].
+constexpr double kClickSlop = 4.0;
+
+// The colour of a force part: the energy colour of the matching term (the energy plot, the
+// energy bars), so a term looks the same wherever it is drawn.
+QColor forcePartColor(simcore::ForcePart part) {
+    using P = simcore::ForcePart;
+    switch (part) {
+        case P::Gravity: return energyColor(EnergyTerm::Gravity);
+        case P::Structural: return energyColor(EnergyTerm::SpringStructural);
+        case P::Radius: return energyColor(EnergyTerm::SpringRadius);
+        case P::Shear: return energyColor(EnergyTerm::SpringShear);
+        case P::GasInner:
+        case P::GasOuter: return energyColor(EnergyTerm::Gas);
+        case P::Walls: return energyColor(EnergyTerm::Contact);
+        case P::Barrier: return energyColor(EnergyTerm::Contact).darker(160);
+        case P::Mouse: return energyColor(EnergyTerm::Mouse);
+        case P::Count: break;
+    }
+    return Qt::black;
+}
+
+QVector4D rgba(const QColor& c) { return {float(c.redF()), float(c.greenF()), float(c.blueF()), 1.0f}; }
 
 std::vector<GLuint> loopFan(const simcore::Surface& surface) {
     // The polygon's vertices in edge order, as a triangle fan around the first one.
@@ -104,6 +130,13 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     m_info->move(8, 8);
     m_legend = new StrainLegend(this);
     m_legend->hide();
+    m_forcesPanel = new QLabel(this);
+    m_forcesPanel->setObjectName(QStringLiteral("forcesPanel"));
+    m_forcesPanel->setTextFormat(Qt::RichText);
+    m_forcesPanel->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_forcesPanel->setStyleSheet(
+        QStringLiteral("QLabel { color: #202030; background: rgba(255,255,255,215); border: 1px solid #a0a0aa; padding: 4px; }"));
+    m_forcesPanel->hide();
 }
 
 Viewport::~Viewport() {
@@ -533,6 +566,8 @@ void Viewport::paintGL() {
         }
     }
 
+    drawForceBreakdown(lane);
+
     if (lane.pointer.active && lane.pointer.particle >= 0 && lane.pointer.particle < m_particleCount) {
         const QVector3D p = at(lane.pointer.particle);
         const auto& a = lane.pointer.anchor;
@@ -563,8 +598,100 @@ void Viewport::paintGL() {
     glDisable(GL_DEPTH_TEST);
 }
 
+void Viewport::drawForceBreakdown(const LaneFrame& lane) {
+    if (!lane.breakdown || m_arrowScale <= 0.0) return;
+    const simcore::ForceBreakdown& b = *lane.breakdown;
+    if (b.particle < 0 || b.particle >= m_particleCount) return;
+    const auto i = 3 * std::size_t(b.particle);
+    const QVector3D from(lane.positions[i], lane.positions[i + 1], lane.positions[i + 2]);
+    const float pixel = m_camera.worldPerPixel(size());
+    const QVector3D forward = m_camera.forward();
+    // An arrow: the shaft and a head of two strokes in the plane facing the camera.
+    auto arrow = [&](const Eigen::Vector3d& force, const QColor& color, float width) {
+        const QVector3D d = float(m_arrowScale) * QVector3D(float(force.x()), float(force.y()), float(force.z()));
+        const float length = d.length();
+        if (length < 2.0f * pixel) return;  // shorter than two pixels: nothing to see
+        const QVector3D tip = from + d, dir = d / length;
+        QVector3D side = QVector3D::crossProduct(dir, forward);
+        if (side.lengthSquared() < 1e-8f) side = QVector3D::crossProduct(dir, QVector3D(0, 0, 1));
+        side.normalize();
+        const float head = std::min(0.3f * length, 14.0f * pixel);
+        const QVector3D back = tip - head * dir, left = back + 0.5f * head * side, right = back - 0.5f * head * side;
+        drawSegments({from.x(), from.y(), from.z(), tip.x(), tip.y(), tip.z(), tip.x(), tip.y(), tip.z(), left.x(),
+                      left.y(), left.z(), tip.x(), tip.y(), tip.z(), right.x(), right.y(), right.z()},
+                     rgba(color), width);
+    };
+    glDisable(GL_DEPTH_TEST);
+    for (int k = 0; k < simcore::kForcePartCount; ++k)
+        if (b.present[std::size_t(k)]) arrow(b.part[std::size_t(k)], forcePartColor(simcore::ForcePart(k)), 3.0f);
+    arrow(b.total, energyColor(EnergyTerm::Total), 4.0f);
+    // The selected particle: a ring of eight strokes around it.
+    std::vector<float> ring;
+    const QVector3D up = QVector3D::crossProduct(forward, QVector3D::crossProduct(QVector3D(0, 1, 0), forward)).normalized();
+    QVector3D across = QVector3D::crossProduct(forward, up).normalized();
+    if (!std::isfinite(across.x())) across = QVector3D(1, 0, 0);
+    const QVector3D upward = std::isfinite(up.x()) ? up : QVector3D(0, 1, 0);
+    const float r = 9.0f * pixel;
+    for (int s = 0; s < 16; ++s) {
+        const float a0 = float(s) * 0.3927f, a1 = float(s + 1) * 0.3927f;
+        const QVector3D p0 = from + r * (std::cos(a0) * across + std::sin(a0) * upward);
+        const QVector3D p1 = from + r * (std::cos(a1) * across + std::sin(a1) * upward);
+        ring.insert(ring.end(), {p0.x(), p0.y(), p0.z(), p1.x(), p1.y(), p1.z()});
+    }
+    drawSegments(ring, {0.1f, 0.1f, 0.1f, 1.0f}, 2.0f);
+    if (!m_camera.is2d()) glEnable(GL_DEPTH_TEST);
+}
+
+void Viewport::updateForcesPanel(const LaneFrame& lane) {
+    if (!lane.breakdown || lane.breakdown->particle < 0 || !m_frame) {
+        m_arrowScale = 0.0;
+        m_forcesPanel->hide();
+        return;
+    }
+    const simcore::ForceBreakdown& b = *lane.breakdown;
+    // Scale: the longest arrow (a part or the total) is 0.6 body radii.
+    double largest = b.total.norm();
+    for (int k = 0; k < simcore::kForcePartCount; ++k) largest = std::max(largest, b.part[std::size_t(k)].norm());
+    const double radius = m_frame->scene->bodyRadius;
+    m_arrowScale = largest > 0.0 ? 0.6 * radius / largest : 0.0;
+    const auto& layers = m_frame->scene->topology.layer;
+    const QString layer = std::size_t(b.particle) < layers.size()
+                              ? QString::fromUtf8(simcore::layerName(layers[std::size_t(b.particle)]).data())
+                              : QString();
+    QString html = QStringLiteral("<b>%1</b> %2<table cellspacing='0' cellpadding='1'>")
+                       .arg(tr("Forces on particle %1").arg(b.particle), layer.isEmpty() ? QString() : QStringLiteral("(%1)").arg(layer));
+    auto row = [&](const QColor& c, const QString& name, double newtons, bool bold) {
+        const QString value = QString::number(newtons, 'g', 4);
+        html += QStringLiteral("<tr><td><span style='color:%1; font-size:large'>&#9632;</span></td><td>%2</td>"
+                               "<td align='right'>&nbsp;%3 N</td></tr>")
+                    .arg(c.name(), bold ? QStringLiteral("<b>%1</b>").arg(name) : name,
+                         bold ? QStringLiteral("<b>%1</b>").arg(value) : value);
+    };
+    for (int k = 0; k < simcore::kForcePartCount; ++k) {
+        if (!b.present[std::size_t(k)]) continue;
+        const auto part = simcore::ForcePart(k);
+        // A layer's gas acts only on its own particles: the other layer's row says nothing.
+        const bool inner = layers.size() > std::size_t(b.particle) && layers[std::size_t(b.particle)] == simcore::Layer::Inner;
+        if ((part == simcore::ForcePart::GasInner && !inner) || (part == simcore::ForcePart::GasOuter && inner)) continue;
+        const std::string_view name = simcore::forcePartName(part);
+        row(forcePartColor(part), QString::fromUtf8(name.data(), qsizetype(name.size())), b.part[std::size_t(k)].norm(), false);
+    }
+    row(energyColor(EnergyTerm::Total), tr("total (sum)"), b.total.norm(), true);
+    html += QStringLiteral("</table>");
+    if (m_arrowScale > 0.0)
+        html += QStringLiteral("<small>%1</small>").arg(tr("arrows: 1 m = %1 N").arg(1.0 / m_arrowScale, 0, 'g', 3));
+    html += QStringLiteral("<br><small>%1</small>").arg(tr("click elsewhere to clear"));
+    if (m_forcesPanel->text() != html) {
+        m_forcesPanel->setText(html);
+        m_forcesPanel->adjustSize();
+    }
+    m_forcesPanel->move(width() - m_forcesPanel->width() - 8, 8);
+    m_forcesPanel->show();
+}
+
 void Viewport::resizeEvent(QResizeEvent* event) {
     QOpenGLWidget::resizeEvent(event);
+    if (m_forcesPanel) m_forcesPanel->move(width() - m_forcesPanel->width() - 8, 8);
     if (m_legend) m_legend->move(width() - m_legend->width() - 10, height() - m_legend->height() - 10);
     layoutInfo();
 }
@@ -607,6 +734,7 @@ void Viewport::updateOverlay() {
     }
     m_legend->setRange(m_options.strainRange);
     m_legend->setVisible(m_options.strain);
+    updateForcesPanel(lane);
 }
 
 bool Viewport::nearBody(const QPointF& pixel) const {
@@ -634,6 +762,8 @@ QVector3D Viewport::anchorUnder(const QPointF& pixel) const {
 
 void Viewport::mousePressEvent(QMouseEvent* event) {
     m_lastPixel = event->position();
+    m_pressPixel = event->position();
+    m_clickCandidate = event->button() == Qt::LeftButton;
     // Shift+left always orbits (a large body can cover the whole view).
     const bool orbitOnly = event->modifiers() & Qt::ShiftModifier;
     if (event->button() == Qt::LeftButton && !orbitOnly && nearBody(event->position())) {
@@ -659,6 +789,7 @@ void Viewport::onGrabbed(int, const QVector3D& position) {
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const QPointF d = event->position() - m_lastPixel;
     m_lastPixel = event->position();
+    if (m_clickCandidate && QLineF(m_pressPixel, event->position()).length() > kClickSlop) m_clickCandidate = false;
     switch (m_drag) {
         case Drag::Grab:
             if (m_grabbed) emit anchorMoved(anchorUnder(event->position()));
@@ -677,10 +808,18 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     }
 }
 
-void Viewport::mouseReleaseEvent(QMouseEvent*) {
+void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     if (m_drag == Drag::Grab) emit releaseRequested();
+    const bool click = m_clickCandidate && event->button() == Qt::LeftButton &&
+                       QLineF(m_pressPixel, event->position()).length() <= kClickSlop;
+    m_clickCandidate = false;
     m_drag = Drag::None;
     m_grabbed = false;
+    if (click) {
+        // A click: select what is under the cursor (the worker picks; nothing near: clear).
+        const Ray ray = m_camera.rayAt(m_pressPixel, size());
+        emit selectRequested(ray.origin, ray.direction, 28.0 * m_camera.worldPerPixel(size()));
+    }
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {

@@ -9,6 +9,11 @@
 // worker picks along the ray with simcore's pickAlongRay); dragging moves the anchor in the
 // plane through the particle facing the camera. Left drag elsewhere orbits (3D), right or
 // middle drag pans, the wheel zooms.
+//
+// A left click without a drag (released within kClickSlop pixels, the mouse spring let go at
+// once) selects the particle under the cursor: its free-body diagram, one arrow per force part
+// from the particle and the total, and a panel of their magnitudes (frames carry the
+// breakdown, the worker computes it). A click away from the body clears it.
 
 #include <array>
 #include <memory>
@@ -67,6 +72,8 @@ signals:
     void grabRequested(const QVector3D& origin, const QVector3D& direction, double maxDistance);
     void anchorMoved(const QVector3D& anchor);
     void releaseRequested();
+    // A click without a drag: select the particle nearest the ray (none near it: clear).
+    void selectRequested(const QVector3D& origin, const QVector3D& direction, double maxDistance);
     void cameraChanged(const elui::Camera& camera);
 
 protected:
@@ -95,6 +102,9 @@ private:
     void updateOverlay();
     void layoutInfo();
     bool nearBody(const QPointF& pixel) const;
+    // The selected particle's force arrows, and the panel that names them.
+    void drawForceBreakdown(const LaneFrame& lane);
+    void updateForcesPanel(const LaneFrame& lane);
     QVector3D anchorUnder(const QPointF& pixel) const;
 
     FramePtr m_frame;
@@ -108,6 +118,8 @@ private:
     // Text and legend are child widgets over the GL image (composited by Qt, kept in grab()).
     QLabel* m_info = nullptr;
     StrainLegend* m_legend = nullptr;
+    QLabel* m_forcesPanel = nullptr;  // the selected particle's forces (objectName "forcesPanel")
+    double m_arrowScale = 0.0;        // of the force arrows drawn last [m per N]
 
     // GL objects (made in initializeGL, freed on aboutToBeDestroyed).
     std::unique_ptr<QOpenGLShaderProgram> m_lines, m_normals, m_surface, m_points;
@@ -125,6 +137,8 @@ private:
     enum class Drag { None, Orbit, Pan, Grab };
     Drag m_drag = Drag::None;
     QPointF m_lastPixel;
+    QPointF m_pressPixel;     // where the left button went down
+    bool m_clickCandidate = false;  // left press not (yet) moved beyond the slop: a click
     bool m_grabbed = false;
     QVector3D m_planePoint;   // the drag plane passes through here, facing the camera
     QVector3D m_planeNormal;

@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include <QApplication>
+#include <QCheckBox>
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QImageWriter>
@@ -34,6 +35,8 @@
 #include "params.h"
 #include "main_window.h"
 #include "parameter_dock.h"
+#include "plot_dock.h"
+#include "run_dock.h"
 #include "presets.h"
 #include "scenefile.h"
 #include "scenes.h"
@@ -112,12 +115,18 @@ int main(int argc, char** argv) {
                                       QStringLiteral("SECONDS"), QStringLiteral("0"));
     const QCommandLineOption optionsOpt(QStringLiteral("show"),
                                         QStringLiteral("Display switches, comma separated: strain, forces, normals, noparticles, "
-                                                       "nofaces, nostructural, noradius, noshear, nobox."),
+                                                       "nofaces, nostructural, noradius, noshear, nobox, errorband."),
                                         QStringLiteral("LIST"));
     const QCommandLineOption docksOpt(QStringLiteral("docks"),
                                       QStringLiteral("Open these docks, comma separated: %1.")
                                           .arg(elui::MainWindow::dockNames().join(QStringLiteral(", "))),
                                       QStringLiteral("LIST"));
+    const QCommandLineOption selectOpt(QStringLiteral("select"),
+                                       QStringLiteral("Show the forces on particle INDEX (as a click on it does)."),
+                                       QStringLiteral("INDEX"));
+    const QCommandLineOption doublingOpt(QStringLiteral("step-doubling"),
+                                         QStringLiteral("Estimate the error of fixed-step methods by step doubling "
+                                                        "(the Run dock's checkbox)."));
     const QCommandLineOption fpsOpt(QStringLiteral("measure-fps"),
                                     QStringLiteral("Run in real time for SECONDS of wall time, print frame rate, "
                                                    "step rate and GUI latency, exit."),
@@ -131,7 +140,7 @@ int main(int argc, char** argv) {
                                                       "integrator=NAME), run on to --after and travel back again."),
                                        QStringLiteral("key=value"));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt,
-                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt});
+                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -141,7 +150,8 @@ int main(int argc, char** argv) {
                         .arg(quoted(parser.positionalArguments().front())));
     // A value-taking option given twice would silently lose one of the values.
     for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &lessonOpt, &shotOpt, &afterOpt,
-                                           &optionsOpt, &docksOpt, &fpsOpt, &travelOpt, &branchOpt})
+                                           &optionsOpt, &docksOpt, &fpsOpt, &travelOpt, &branchOpt,
+                                           &selectOpt})
         if (parser.values(*once).size() > 1)
             return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
     if (parser.isSet(afterOpt) && !parser.isSet(shotOpt))
@@ -265,6 +275,12 @@ int main(int argc, char** argv) {
         const simcore::AtomicFile probe(shotPath.toStdString());  // discarded: nothing is written
         if (!probe.ok()) return fail(QStringLiteral("--screenshot ") + QString::fromStdString(probe.error()));
     }
+    int selected = -1;
+    if (parser.isSet(selectOpt)) {
+        bool ok = false;
+        selected = parser.value(selectOpt).toInt(&ok);
+        if (!ok || selected < 0) return fail(QStringLiteral("--select needs a particle index, 0 or more"));
+    }
     double fpsSeconds = 0.0;
     if (parser.isSet(fpsOpt)) {
         const auto v = simcore::parseNumber(parser.value(fpsOpt).toStdString());
@@ -292,11 +308,13 @@ int main(int argc, char** argv) {
             else if (s == QLatin1String("noradius")) o.springs[1] = false;
             else if (s == QLatin1String("noshear")) o.springs[2] = false;
             else if (s == QLatin1String("nobox")) o.box = false;
+            else if (s == QLatin1String("errorband")) window.plotDock()->setBandsShown(true);
             else return fail(QStringLiteral("unknown --show switch %1").arg(quoted(s)));
         }
         window.setViewOptions(o);
     }
     elui::SimulationController* controller = window.controller();
+    if (parser.isSet(doublingOpt)) window.runDock()->findChild<QCheckBox*>(QStringLiteral("stepDoubling"))->setChecked(true);
     if (file) {
         simcore::SceneFile changed = *file;
         changed.params = params;
@@ -306,6 +324,7 @@ int main(int argc, char** argv) {
         if (preset) controller->setStartKick(preset->kickInner, preset->kickOuter);
         window.startScene(params, integrators);
     }
+    if (selected >= 0) controller->selectParticle(selected);  // after the scene: a rebuild clears it
     window.show();
     // After show(): the docks take their share of a laid-out window.
     if (lesson) docks = lesson->docks + docks;
