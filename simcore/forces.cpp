@@ -365,8 +365,8 @@ std::size_t ForceModel::sharedElements() const {
     return count;
 }
 
-void ForceModel::accumulatePart(const Part& part, const double* x, const double* v,
-                                kernels::Scratch& scratch, double* f4, double* g4, Sums& sums) const {
+void ForceModel::accumulatePart(const Part& part, const double* x, const double* v, double* f4, double* g4,
+                                Sums& sums) const {
     using kernels::kBlock;
     if (m_terms.has(Term::Springs)) {
         const int perLayer = m_topology->particleCount() / 2;
@@ -389,18 +389,17 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
                 const std::size_t b1 = std::min(s.size(), b0 + kBlock);
                 const kernels::SpringSums block =
                     run ? kernels::springRunBlock(s, b0, b1, perLayer, params.ks[k], params.kd[k], x, v, f4,
-                                                  sums.degenerate, scratch)
-                        : kernels::springBlock(s, b0, b1, params.ks[k], params.kd[k], x, v, f4, sums.degenerate, scratch);
+                                                  sums.degenerate)
+                        : kernels::springBlock(s, b0, b1, params.ks[k], params.kd[k], x, v, f4, sums.degenerate);
                 sums.power += block.power;
                 sums.stretch2[k] += block.stretch2;
             }
         }
     }
-    if (m_terms.has(Term::Gas)) accumulateGas(part, x, scratch, g4, sums);
+    if (m_terms.has(Term::Gas)) accumulateGas(part, x, g4, sums);
 }
 
-void ForceModel::accumulateGas(const Part& part, const double* x, kernels::Scratch& scratch, double* g4,
-                               Sums& sums) const {
+void ForceModel::accumulateGas(const Part& part, const double* x, double* g4, Sums& sums) const {
     using kernels::kBlock;
     for (const Surface& s : part.surfaces) {
         // The unscaled gradient dV/dx goes to g4; P = c / V is known only once every part's
@@ -416,7 +415,7 @@ void ForceModel::accumulateGas(const Part& part, const double* x, kernels::Scrat
             g4[4 * b + 1] -= 0.5 * dx;
         }
         for (std::size_t b0 = 0; b0 < s.triangles.size(); b0 += kBlock)
-            sum += kernels::triangleBlock(s, b0, std::min(s.triangles.size(), b0 + kBlock), x, g4, scratch);
+            sum += kernels::triangleBlock(s, b0, std::min(s.triangles.size(), b0 + kBlock), x, g4);
     }
 }
 
@@ -431,10 +430,9 @@ const double* ForceModel::computeVolumeGradient(const double* x) {
     double* g4 = m_gradient4.data();
     runChunks([&](int c) {
         clearGradient(c);
-        accumulateGas(m_parts[static_cast<std::size_t>(c)], x, m_scratch[static_cast<std::size_t>(c)], g4,
-                      sums[static_cast<std::size_t>(c)]);
+        accumulateGas(m_parts[static_cast<std::size_t>(c)], x, g4, sums[static_cast<std::size_t>(c)]);
     });
-    accumulateGas(m_parts[kChunks], x, m_scratch[0], g4, sums[kChunks]);
+    accumulateGas(m_parts[kChunks], x, g4, sums[kChunks]);
     return g4;
 }
 
@@ -565,7 +563,7 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
             if (walls && !paired && anyOutsideWalls(contact, x, begin, end)) wallForces(mine, begin, end);
         }
         if (gas) clearGradient(c);
-        accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, mine);
+        accumulatePart(m_parts[k], x, v, f4, g4, mine);
         if (paired) {
             const int perLayer = topo.particleCount() / 2;
             bool beyond = false;
@@ -586,7 +584,7 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
         }
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
-    accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f4, g4, sums[kChunks]);
+    accumulatePart(m_parts[kChunks], x, v, f4, g4, sums[kChunks]);
     if (barrier)
         sums[kChunks].contactEnergy +=
             layerBarrierForces(m_parts[kChunks].barrier, topo.dimension, contact.stiffness, x, g4, f4);
