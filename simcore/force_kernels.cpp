@@ -20,11 +20,11 @@
 //   avx2      four lanes with AVX2 shuffles (x86-64);
 //   avx512    the edge quads and radius runs eight lanes wide, the rest the AVX2 copy's
 //             (eight-wide triangles and indexed springs measured slower).
-// The AVX2 and AVX-512 copies need GCC on x86-64 and ELASTIC_LAB_MULTIVERSION (on by default;
-// off, the build has the portable kernels only). Clang 14 has no `#pragma GCC target`, so a
-// clang build (the fuzz preset) runs the portable kernels; results are bit-identical across
-// sets.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(ELASTIC_LAB_MULTIVERSION)
+// The AVX2 and AVX-512 copies need GCC on x86-64 (no resolvers: the sanitizer builds run them
+// too); ELASTIC_LAB_PORTABLE_KERNELS (a CMake option) builds the portable copy alone. Clang 14
+// has no `#pragma GCC target`, so a clang build (the fuzz preset) runs the portable kernels;
+// results are bit-identical across sets.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(ELASTIC_LAB_PORTABLE_KERNELS)
 #define SIMCORE_AVX2_KERNELS 1
 #define SIMCORE_AVX512_KERNELS 1
 // GCC 12 warns inside its own AVX-512 intrinsics (_mm512_undefined_pd, GCC bug 105593); the

@@ -101,6 +101,23 @@ double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end,
 void unpad(const double* f4, const double* g4, double p, const double* invMass3, int begin, int end,
            double* out);
 
+// Read access by particle to a padded buffer (4 doubles per particle, see above), so that code
+// outside the kernels need not know the layout: rows[i] is particle i's (x, y, z).
+class PaddedRows {
+public:
+    PaddedRows() = default;
+    explicit PaddedRows(const double* data) : m_data(data) {}
+    explicit operator bool() const { return m_data != nullptr; }
+    Eigen::Map<const Eigen::Vector3d> operator[](int particle) const {
+        return Eigen::Map<const Eigen::Vector3d>(m_data + 4 * static_cast<std::ptrdiff_t>(particle));
+    }
+    // The buffer itself, for the passes that work on the padded rows (kernels, contact).
+    const double* data() const { return m_data; }
+
+private:
+    const double* m_data = nullptr;
+};
+
 // A buffer of doubles aligned to 64 bytes (a cache line), zero-filled.
 class AlignedBuffer {
 public:

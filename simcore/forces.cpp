@@ -338,7 +338,7 @@ double ForceModel::contactEnergy(const double* x) {
         for (int i = 0; i < m_topology->particleCount(); ++i)
             if (m_contactFree.empty() || m_contactFree[static_cast<std::size_t>(i)]) energy += wallContactEnergy(contact, x + 3 * i);
     if (contactBarrier()) {
-        const double* g4 = computeVolumeGradient(x);
+        const double* g4 = computeVolumeGradient(x).data();
         for (std::size_t k = 0; k < m_barrierAll.size(); ++k) {
             const double q = layerBarrierDepth(m_barrierAll, k, x, g4);
             if (q > 0.0) energy += 0.25 * contact.stiffness * q * q * q * q;
@@ -424,8 +424,8 @@ void ForceModel::clearGradient(int chunk) {
     for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(chunk)]) std::fill(g4 + 4 * begin, g4 + 4 * end, 0.0);
 }
 
-const double* ForceModel::computeVolumeGradient(const double* x) {
-    if (!m_terms.has(Term::Gas)) return nullptr;
+kernels::PaddedRows ForceModel::computeVolumeGradient(const double* x) {
+    if (!m_terms.has(Term::Gas)) return kernels::PaddedRows();
     std::array<Sums, kChunks + 1> sums{};
     double* g4 = m_gradient4.data();
     runChunks([&](int c) {
@@ -433,7 +433,7 @@ const double* ForceModel::computeVolumeGradient(const double* x) {
         accumulateGas(m_parts[static_cast<std::size_t>(c)], x, g4, sums[static_cast<std::size_t>(c)]);
     });
     accumulateGas(m_parts[kChunks], x, g4, sums[kChunks]);
-    return g4;
+    return kernels::PaddedRows(g4);
 }
 
 std::pair<std::size_t, std::size_t> ForceModel::range(std::size_t count, int chunk, int chunks) {
@@ -678,7 +678,7 @@ void ForceModel::evaluateReference(const double* x, const double* v, double* f, 
                 extras.contactEnergy += wallContact(contact, x + 3 * i, v + 3 * i, f + 3 * i, extras.contactPower);
     if (contactBarrier()) {
         // The barrier reads g = dV/dx from a padded buffer and writes padded forces.
-        const double* g4 = computeVolumeGradient(x);
+        const double* g4 = computeVolumeGradient(x).data();
         std::vector<double> f4(static_cast<std::size_t>(4 * topo.particleCount()), 0.0);
         extras.contactEnergy += layerBarrierForces(m_barrierAll, topo.dimension, contact.stiffness, x, g4, f4.data());
         for (int i = 0; i < topo.particleCount(); ++i)

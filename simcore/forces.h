@@ -144,8 +144,10 @@ public:
     // dV/dx of each particle's own layer, unscaled, padded (4 doubles per particle): as left by
     // the last evaluation (valid until the next one), or computed alone at x by the gas part
     // of an evaluation, in its order (the same bits). nullptr when the body has no gas.
-    const double* volumeGradient() const { return m_terms.has(Term::Gas) ? m_gradient4.data() : nullptr; }
-    const double* computeVolumeGradient(const double* x);
+    kernels::PaddedRows volumeGradient() const {
+        return kernels::PaddedRows(m_terms.has(Term::Gas) ? m_gradient4.data() : nullptr);
+    }
+    kernels::PaddedRows computeVolumeGradient(const double* x);
     // Elastic energy per spring family and enclosed volume per surface, chunked like forces.
     std::array<double, kSpringFamilyCount> springEnergies(const double* x);
     std::array<double, 2> volumes(const double* x);  // [inner, outer]; 0 where absent

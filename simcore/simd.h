@@ -213,9 +213,10 @@ template <class M>
     r[3] = _mm512_shuffle_f64x2(even46, odd57, 0xee);
 }
 
-// Block layout (the edge quads' eight lanes): a register holds two groups of four lanes,
-// group g's lanes j = 0..3 at (0, 1, 0', 1', 2, 3, 2', 3') for g = ', i.e. row registers
-// [row j of group 0 | row j of group 1] transposed with 128-bit pieces kept together.
+// Block layout (the edge quads' eight lanes): a register holds two groups of four lanes, in
+// the order (0, 1, 0', 1', 2, 3, 2', 3') where j is lane j of the first group and j' of the
+// second: row registers [row j of group 0 | row j of group 1] transposed with 128-bit pieces
+// kept together.
 [[gnu::always_inline]] inline void toColumns(Vec8 r0, Vec8 r1, Vec8 r2, Vec8 r3, Vec8& X, Vec8& Y, Vec8& Z) {
     const __m512d t0 = _mm512_unpacklo_pd(r0, r1);  // x0 x1 z0 z1 | x0' x1' z0' z1'
     const __m512d t1 = _mm512_unpackhi_pd(r0, r1);  // y0 y1 w0 w1 | y0' y1' w0' w1'
