@@ -6,16 +6,17 @@
 // force is one aligned 256-bit load and store. Positions and velocities are read in the
 // state's own layout (3 doubles per particle).
 //
-// Up to three implementations of every kernel give bit-identical results (tested):
-//  - portable: a gather pass into structure-of-arrays scratch, arithmetic the compiler
-//    vectorises, a scatter pass;
-//  - AVX2 (x86-64, picked at run time when the CPU has it): four springs or triangles at a
-//    time, loaded as rows and transposed in registers, the same arithmetic in the same order
-//    (no FMA: each operation rounds as in the portable code), transposed back and added;
-//  - AVX-512 (picked when the CPU and the OS have it): the edge quads two at a time, eight
-//    lanes wide (the other kernels are AVX2's: eight-wide triangles measured slower).
-// The sums a block returns (damping power, stretch, volume) are defined lane by lane (see
-// QuadSums, sumLanes) so that every implementation adds the same numbers in the same order.
+// Each kernel is written once (force_kernels_body.h) over the width-generic vectors of simd.h
+// and compiled once per instruction set; the widest one the CPU has is picked at load time:
+//  - portable: no intrinsics, GCC vector extensions only (the baseline target's vectors:
+//    SSE2 on x86-64, NEON on AArch64);
+//  - AVX2 (x86-64): four springs or triangles at a time, loaded as rows and transposed in
+//    registers with AVX2 shuffles, transposed back and added;
+//  - AVX-512: the edge quads two at a time and the radius runs eight at a time, eight lanes
+//    wide (the other kernels are AVX2's: eight-wide triangles measured slower).
+// All do the same operations in the same order (no FMA: each operation rounds alone), and the
+// sums a block returns (damping power, stretch, volume) are defined lane by lane (see QuadSums,
+// sumLanes), so the sets' results are bit-identical (tested).
 
 #include <array>
 #include <cstddef>
@@ -26,18 +27,8 @@
 
 namespace simcore::kernels {
 
-// Springs or triangles per block (the portable path's scratch of 8 x 256 doubles = 16 KiB
-// stays in L1 between its passes).
+// Springs or triangles per block (the unit of ForceModel's loops and of the lane sums).
 inline constexpr std::size_t kBlock = 256;
-
-// Scratch of the portable path, one per thread. A copy gets scratch of its own.
-struct Scratch {
-    Scratch();
-    Scratch(const Scratch&) : Scratch() {}
-    Scratch& operator=(const Scratch&) { return *this; }
-    std::unique_ptr<double[]> storage;
-    double *dx, *dy, *dz, *dvx, *dvy, *dvz, *power, *stretch2;
-};
 
 // Sum of v[0..n) in four interleaved lanes (v[k] into lane k mod 4, the remainder into lane 0,
 // then (l0 + l1) + (l2 + l3)): independent add chains in an order fixed by n alone.
@@ -63,15 +54,13 @@ struct SpringSums {
 // where F = [ks (L - L0) + kd (dv.u)] u. Counts springs shorter than kDegenerateLength into
 // `degenerate` (they get no force, but their stretch still counts).
 SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
-                       double kd, const double* x, const double* v, double* f4, int& degenerate,
-                       Scratch& scratch);
+                       double kd, const double* x, const double* v, double* f4, int& degenerate);
 
 // The same for springs [begin, end) that form a run: spring k joins particle
 // a[begin] + (k - begin) to that particle + n (the radius springs of a two-layer body, in
 // order). The AVX-512 kernel reads and writes such runs as whole rows, eight at a time.
 SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double ks,
-                          double kd, const double* x, const double* v, double* f4, int& degenerate,
-                          Scratch& scratch);
+                          double kd, const double* x, const double* v, double* f4, int& degenerate);
 
 // Edge quads of a two-layer body: for a mesh edge (a, b) of the inner layer and its copy
 // (A, B) = (a + n, b + n) in the outer layer, the four springs over the same four particles,
@@ -105,12 +94,29 @@ QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int
 // corner in g4 and returns the sum of x_a.(x_b x x_c) (six times their share of the volume),
 // summed in lanes like springBlock.
 double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end, const double* x,
-                     double* g4, Scratch& scratch);
+                     double* g4);
 
 // Particles [begin, end) from the padded buffers to the 3-per-particle layout:
 // out = f4 + p g4 (without g4 when it is nullptr), times invMass3 when that is given.
 void unpad(const double* f4, const double* g4, double p, const double* invMass3, int begin, int end,
            double* out);
+
+// Read access by particle to a padded buffer (4 doubles per particle, see above), so that code
+// outside the kernels need not know the layout: rows[i] is particle i's (x, y, z).
+class PaddedRows {
+public:
+    PaddedRows() = default;
+    explicit PaddedRows(const double* data) : m_data(data) {}
+    explicit operator bool() const { return m_data != nullptr; }
+    Eigen::Map<const Eigen::Vector3d> operator[](int particle) const {
+        return Eigen::Map<const Eigen::Vector3d>(m_data + 4 * static_cast<std::ptrdiff_t>(particle));
+    }
+    // The buffer itself, for the passes that work on the padded rows (kernels, contact).
+    const double* data() const { return m_data; }
+
+private:
+    const double* m_data = nullptr;
+};
 
 // A buffer of doubles aligned to 64 bytes (a cache line), zero-filled.
 class AlignedBuffer {

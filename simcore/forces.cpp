@@ -355,7 +355,7 @@ double ForceModel::contactEnergy(const double* x) {
         for (int i = 0; i < m_topology->particleCount(); ++i)
             if (m_contactFree.empty() || m_contactFree[static_cast<std::size_t>(i)]) energy += wallContactEnergy(contact, x + 3 * i);
     if (contactBarrier()) {
-        const double* g4 = computeVolumeGradient(x);
+        const double* g4 = computeVolumeGradient(x).data();
         for (std::size_t k = 0; k < m_barrierAll.size(); ++k) {
             const double q = layerBarrierDepth(m_barrierAll, k, x, g4);
             if (q > 0.0) energy += 0.25 * contact.stiffness * q * q * q * q;
@@ -382,8 +382,8 @@ std::size_t ForceModel::sharedElements() const {
     return count;
 }
 
-void ForceModel::accumulatePart(const Part& part, const double* x, const double* v,
-                                kernels::Scratch& scratch, double* f4, double* g4, Sums& sums) const {
+void ForceModel::accumulatePart(const Part& part, const double* x, const double* v, double* f4, double* g4,
+                                Sums& sums) const {
     using kernels::kBlock;
     if (m_terms.has(Term::Springs)) {
         const int perLayer = m_topology->particleCount() / 2;
@@ -406,18 +406,17 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
                 const std::size_t b1 = std::min(s.size(), b0 + kBlock);
                 const kernels::SpringSums block =
                     run ? kernels::springRunBlock(s, b0, b1, perLayer, params.ks[k], params.kd[k], x, v, f4,
-                                                  sums.degenerate, scratch)
-                        : kernels::springBlock(s, b0, b1, params.ks[k], params.kd[k], x, v, f4, sums.degenerate, scratch);
+                                                  sums.degenerate)
+                        : kernels::springBlock(s, b0, b1, params.ks[k], params.kd[k], x, v, f4, sums.degenerate);
                 sums.power += block.power;
                 sums.stretch2[k] += block.stretch2;
             }
         }
     }
-    if (m_terms.has(Term::Gas)) accumulateGas(part, x, scratch, g4, sums);
+    if (m_terms.has(Term::Gas)) accumulateGas(part, x, g4, sums);
 }
 
-void ForceModel::accumulateGas(const Part& part, const double* x, kernels::Scratch& scratch, double* g4,
-                               Sums& sums) const {
+void ForceModel::accumulateGas(const Part& part, const double* x, double* g4, Sums& sums) const {
     using kernels::kBlock;
     for (const Surface& s : part.surfaces) {
         // The unscaled gradient dV/dx goes to g4; P = c / V is known only once every part's
@@ -433,7 +432,7 @@ void ForceModel::accumulateGas(const Part& part, const double* x, kernels::Scrat
             g4[4 * b + 1] -= 0.5 * dx;
         }
         for (std::size_t b0 = 0; b0 < s.triangles.size(); b0 += kBlock)
-            sum += kernels::triangleBlock(s, b0, std::min(s.triangles.size(), b0 + kBlock), x, g4, scratch);
+            sum += kernels::triangleBlock(s, b0, std::min(s.triangles.size(), b0 + kBlock), x, g4);
     }
 }
 
@@ -442,17 +441,16 @@ void ForceModel::clearGradient(int chunk) {
     for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(chunk)]) std::fill(g4 + 4 * begin, g4 + 4 * end, 0.0);
 }
 
-const double* ForceModel::computeVolumeGradient(const double* x) {
-    if (!m_terms.has(Term::Gas)) return nullptr;
+kernels::PaddedRows ForceModel::computeVolumeGradient(const double* x) {
+    if (!m_terms.has(Term::Gas)) return kernels::PaddedRows();
     std::array<Sums, kChunks + 1> sums{};
     double* g4 = m_gradient4.data();
     runChunks([&](int c) {
         clearGradient(c);
-        accumulateGas(m_parts[static_cast<std::size_t>(c)], x, m_scratch[static_cast<std::size_t>(c)], g4,
-                      sums[static_cast<std::size_t>(c)]);
+        accumulateGas(m_parts[static_cast<std::size_t>(c)], x, g4, sums[static_cast<std::size_t>(c)]);
     });
-    accumulateGas(m_parts[kChunks], x, m_scratch[0], g4, sums[kChunks]);
-    return g4;
+    accumulateGas(m_parts[kChunks], x, g4, sums[kChunks]);
+    return kernels::PaddedRows(g4);
 }
 
 std::pair<std::size_t, std::size_t> ForceModel::range(std::size_t count, int chunk, int chunks) {
@@ -582,7 +580,7 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
             if (walls && !paired && anyOutsideWalls(contact, x, begin, end)) wallForces(mine, begin, end);
         }
         if (gas) clearGradient(c);
-        accumulatePart(m_parts[k], x, v, m_scratch[k], f4, g4, mine);
+        accumulatePart(m_parts[k], x, v, f4, g4, mine);
         if (paired) {
             const int perLayer = topo.particleCount() / 2;
             bool beyond = false;
@@ -603,7 +601,7 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
         }
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
-    accumulatePart(m_parts[kChunks], x, v, m_scratch[0], f4, g4, sums[kChunks]);
+    accumulatePart(m_parts[kChunks], x, v, f4, g4, sums[kChunks]);
     if (barrier)
         sums[kChunks].contactEnergy +=
             layerBarrierForces(m_parts[kChunks].barrier, topo.dimension, contact.stiffness, x, g4, f4);
@@ -750,7 +748,7 @@ void ForceModel::evaluateReference(const double* x, const double* v, double* f, 
                 extras.contactEnergy += wallContact(contact, x + 3 * i, v + 3 * i, f + 3 * i, extras.contactPower);
     if (contactBarrier()) {
         // The barrier reads g = dV/dx from a padded buffer and writes padded forces.
-        const double* g4 = computeVolumeGradient(x);
+        const double* g4 = computeVolumeGradient(x).data();
         std::vector<double> f4(static_cast<std::size_t>(4 * topo.particleCount()), 0.0);
         extras.contactEnergy += layerBarrierForces(m_barrierAll, topo.dimension, contact.stiffness, x, g4, f4.data());
         for (int i = 0; i < topo.particleCount(); ++i)

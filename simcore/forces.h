@@ -177,8 +177,10 @@ public:
     // dV/dx of each particle's own layer, unscaled, padded (4 doubles per particle): as left by
     // the last evaluation (valid until the next one), or computed alone at x by the gas part
     // of an evaluation, in its order (the same bits). nullptr when the body has no gas.
-    const double* volumeGradient() const { return m_terms.has(Term::Gas) ? m_gradient4.data() : nullptr; }
-    const double* computeVolumeGradient(const double* x);
+    kernels::PaddedRows volumeGradient() const {
+        return kernels::PaddedRows(m_terms.has(Term::Gas) ? m_gradient4.data() : nullptr);
+    }
+    kernels::PaddedRows computeVolumeGradient(const double* x);
     // Elastic energy per spring family and enclosed volume per surface, chunked like forces.
     std::array<double, kSpringFamilyCount> springEnergies(const double* x);
     std::array<double, 2> volumes(const double* x);  // [inner, outer]; 0 where absent
@@ -244,16 +246,13 @@ private:
     int ownerOf(int particle) const;
     // Adds the part's spring forces to f4 and its gas gradient dV/dx to g4 (padded, 4 doubles
     // per particle); adds its sums to `sums`.
-    void accumulatePart(const Part& part, const double* x, const double* v, kernels::Scratch& scratch,
-                        double* f4, double* g4, Sums& sums) const;
+    void accumulatePart(const Part& part, const double* x, const double* v, double* f4, double* g4, Sums& sums) const;
     // The gas part of that: the part's faces' volume sums and gradient.
-    void accumulateGas(const Part& part, const double* x, kernels::Scratch& scratch, double* g4,
-                       Sums& sums) const;
+    void accumulateGas(const Part& part, const double* x, double* g4, Sums& sums) const;
     // Chunk c's owned rows of g4 cleared.
     void clearGradient(int chunk);
     std::array<Part, kChunks + 1> m_parts;
     std::array<std::vector<std::pair<int, int>>, kChunks> m_ownedRanges;  // particle ranges per chunk
-    std::array<kernels::Scratch, kChunks> m_scratch;  // one block of scratch per chunk
     kernels::AlignedBuffer m_force4;                  // forces, padded (4N)
     kernels::AlignedBuffer m_gradient4;               // dV/dx of each particle's layer, padded (4N)
     std::vector<std::uint8_t> m_contactFree;          // 1 where a particle feels wall contact

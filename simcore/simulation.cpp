@@ -688,7 +688,8 @@ bool Simulation::step(double until) {
     measureState(next, scan);
     if (scan.finite && m_contactProjection && m_forces.terms().has(Term::LayerConstraint)) {
         m_forces.countPostStep(Term::LayerConstraint);
-        const double* normals = m_reuseEndForces ? m_forces.volumeGradient() : m_forces.computeVolumeGradient(m_y.data());
+        const kernels::PaddedRows normals =
+            m_reuseEndForces ? m_forces.volumeGradient() : m_forces.computeVolumeGradient(m_y.data());
         if (constrainLayers(false, normals)) {
             if (!beforeContacts) beforeContacts = next.total();
             constrainLayers(true, normals);
@@ -778,22 +779,22 @@ bool Simulation::collideRange(bool apply, int begin, int end) {
     return any;
 }
 
-bool Simulation::constrainLayers(bool apply, const double* normals4) {
+bool Simulation::constrainLayers(bool apply, kernels::PaddedRows normals) {
     // Each inner particle must stay on the inner side of the tangent plane of its paired
     // outer particle. The outer vertex normal is the direction of the outer layer's volume
-    // gradient dV/dx there (normals4, padded rows): the area-weighted mean of the adjacent face
+    // gradient dV/dx there (normals): the area-weighted mean of the adjacent face
     // normals (3D) or the perpendicular of the neighbouring chords (2D). A violation is undone
     // symmetrically: positions and relative normal velocity are corrected with mass weights,
     // so momentum is conserved. Pairs are independent: the pieces run in parallel.
     const auto& pairs = m_body.topology.layerPairs;
-    if (pairs.empty() || !normals4) return false;
+    if (pairs.empty() || !normals) return false;
     double* x = m_y.data();
     double* v = m_y.data() + m_n;
     std::array<bool, kPiecesMax> pieceAny{};
     inPiecesOf(static_cast<int>(pairs.size()), [&](int piece, int begin, int end) {
         for (int k = begin; k < end; ++k) {
             const auto [in, out] = pairs[static_cast<std::size_t>(k)];
-            const Eigen::Map<const Eigen::Vector3d> gradient(normals4 + 4 * out);
+            const Eigen::Map<const Eigen::Vector3d> gradient = normals[out];
             Eigen::Map<Eigen::Vector3d> xi(x + 3 * in), xo(x + 3 * out), vi(v + 3 * in), vo(v + 3 * out);
             // The sign first (no root, no division for the pairs that are fine, nearly all).
             if (!((xi - xo).dot(gradient) > 0.0)) continue;

@@ -298,8 +298,8 @@ private:
         else
             for (int k = 0; k < pieces; ++k) task(k);
     }
-    // normals4: the outer layer's dV/dx, padded (ForceModel::volumeGradient()).
-    bool constrainLayers(bool apply, const double* normals4);
+    // normals: the outer layer's dV/dx per particle (ForceModel::volumeGradient()).
+    bool constrainLayers(bool apply, kernels::PaddedRows normals);
     // Why the state (measured into d) is unusable, or nothing.
     // `scan`: the state's scan (finiteness, fastest particle).
     std::optional<std::string> checkState(const Diagnostics& d, const Scan& scan) const;

@@ -1,0 +1,197 @@
+// The force kernels of each instruction set (portable, AVX2, AVX-512: one source over
+// simcore/simd.h, compiled per set) called directly on blocks of every length from 0 to 40 at
+// an offset, so that every remainder of the four- and eight-lane loops and of the quad pairs
+// is run: all sets must write the same force rows and return the same sums, bit for bit, and
+// the one degenerate spring must be counted once.
+#include <QtTest>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "force_kernels.h"
+#include "forces.h"
+
+using namespace simcore;
+namespace kernels = simcore::kernels;
+
+namespace {
+
+constexpr int kPerLayer = 64;  // particles per layer; two layers
+constexpr int kParticles = 2 * kPerLayer;
+constexpr std::size_t kBegin = 3;  // blocks start inside the arrays, not at 0
+constexpr std::size_t kMaxLength = 40;
+
+struct Inputs {
+    std::vector<double> x, v, invMass3, f4Start;
+    SpringSet springs, run;
+    kernels::QuadSet quads;
+    Surface surface;
+};
+
+Inputs makeInputs() {
+    std::mt19937_64 rng(14);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    Inputs in;
+    for (int i = 0; i < 3 * kParticles; ++i) {
+        in.x.push_back(unit(rng));
+        in.v.push_back(unit(rng));
+        in.invMass3.push_back(1.5 + unit(rng));
+    }
+    for (int i = 0; i < 4 * kParticles; ++i) in.f4Start.push_back(i % 4 == 3 ? 0.0 : unit(rng));
+    // Particle 7 sits on particle 8: spring kBegin + 5 (7, 8) is degenerate.
+    for (int axis = 0; axis < 3; ++axis) in.x[3 * 7 + axis] = in.x[3 * 8 + axis];
+    std::uniform_int_distribution<int> any(0, kParticles - 1), inner(0, kPerLayer - 1);
+    for (std::size_t k = 0; k < kBegin + kMaxLength; ++k) {
+        int a = any(rng), b = any(rng);
+        if (k == kBegin + 5) a = 7, b = 8;
+        while (b == a) b = any(rng);
+        in.springs.add(a, b, 0.5 + 0.5 * unit(rng));
+        // A run: spring k joins particle 10 + k to that + kPerLayer.
+        in.run.add(10 + static_cast<int>(k), 10 + static_cast<int>(k) + kPerLayer, 0.5 + 0.5 * unit(rng));
+        int qa = inner(rng), qb = inner(rng);
+        while (qb == qa) qb = inner(rng);
+        in.quads.a.push_back(qa);
+        in.quads.b.push_back(qb);
+        in.quads.rest.push_back({0.4 + 0.1 * unit(rng), 0.4 + 0.1 * unit(rng), 0.6 + 0.1 * unit(rng), 0.6 + 0.1 * unit(rng)});
+        in.surface.triangles.push_back({any(rng), any(rng), any(rng)});
+    }
+    return in;
+}
+
+// What one call of a kernel leaves: the padded rows (or the unpadded output) and its sums.
+struct Outcome {
+    std::vector<double> rows;
+    std::vector<double> sums;
+    int degenerate = 0;
+    bool operator==(const Outcome& o) const {
+        // Bit for bit (memcmp also tells -0.0 from 0.0).
+        return rows.size() == o.rows.size() && sums.size() == o.sums.size() && degenerate == o.degenerate &&
+               std::memcmp(rows.data(), o.rows.data(), rows.size() * sizeof(double)) == 0 &&
+               std::memcmp(sums.data(), o.sums.data(), sums.size() * sizeof(double)) == 0;
+    }
+};
+
+enum class Kernel { Springs, Run, Quads, Triangles, Unpad };
+
+Outcome call(const Inputs& in, Kernel kernel, std::size_t length) {
+    kernels::AlignedBuffer f4(4 * kParticles);
+    std::copy(in.f4Start.begin(), in.f4Start.end(), f4.data());
+    const std::size_t begin = kBegin, end = kBegin + length;
+    const double *x = in.x.data(), *v = in.v.data();
+    Outcome r;
+    switch (kernel) {
+        case Kernel::Springs: {
+            const kernels::SpringSums s = kernels::springBlock(in.springs, begin, end, 30.0, 0.7, x, v, f4.data(), r.degenerate);
+            r.sums = {s.power, s.stretch2};
+            break;
+        }
+        case Kernel::Run: {
+            const kernels::SpringSums s =
+                kernels::springRunBlock(in.run, begin, end, kPerLayer, 30.0, 0.7, x, v, f4.data(), r.degenerate);
+            r.sums = {s.power, s.stretch2};
+            break;
+        }
+        case Kernel::Quads: {
+            const kernels::QuadSums s = kernels::quadBlock(in.quads, begin, end, kPerLayer, {30.0, 20.0}, {0.7, 0.4},
+                                                           x, v, f4.data(), r.degenerate);
+            r.sums = {s.power, s.stretch2[0], s.stretch2[1]};
+            break;
+        }
+        case Kernel::Triangles:
+            r.sums = {kernels::triangleBlock(in.surface, begin, end, x, f4.data())};
+            break;
+        case Kernel::Unpad: {
+            kernels::AlignedBuffer g4(4 * kParticles);
+            for (std::size_t i = 0; i < g4.size(); ++i) g4.data()[i] = in.f4Start[(i * 7) % in.f4Start.size()];
+            std::vector<double> out(3 * kParticles, -1.0);
+            const int b = static_cast<int>(begin), e = static_cast<int>(end);
+            kernels::unpad(f4.data(), g4.data(), 0.3, in.invMass3.data(), b, e, out.data());
+            kernels::unpad(f4.data(), nullptr, 0.0, nullptr, b + e, 2 * e, out.data());  // the other branches
+            r.rows = out;
+            return r;
+        }
+    }
+    r.rows.assign(f4.data(), f4.data() + f4.size());
+    return r;
+}
+
+}  // namespace
+
+class TestForceKernels : public QObject {
+    Q_OBJECT
+
+private slots:
+    void cleanup() { kernels::useKernels(kernels::widestKernels()); }
+
+    void everySetGivesTheSameBitsForEveryBlockLength_data() {
+        QTest::addColumn<int>("kernel");
+        QTest::newRow("indexed springs") << static_cast<int>(Kernel::Springs);
+        QTest::newRow("radius run") << static_cast<int>(Kernel::Run);
+        QTest::newRow("edge quads") << static_cast<int>(Kernel::Quads);
+        QTest::newRow("triangles") << static_cast<int>(Kernel::Triangles);
+        QTest::newRow("unpad") << static_cast<int>(Kernel::Unpad);
+    }
+    void everySetGivesTheSameBitsForEveryBlockLength() {
+        QFETCH(int, kernel);
+        const Kernel which = static_cast<Kernel>(kernel);
+        const Inputs in = makeInputs();
+        int compared = 0;
+        for (std::size_t length = 0; length <= kMaxLength; ++length) {
+            QCOMPARE(kernels::useKernels(kernels::KernelSet::Portable), kernels::KernelSet::Portable);
+            const Outcome portable = call(in, which, length);
+            // The blocks do something: rows change once there is an element, and the
+            // degenerate spring (the block's sixth) is counted once when it is in the block.
+            if (which != Kernel::Unpad) QCOMPARE(portable.rows == in.f4Start, length == 0);
+            if (which == Kernel::Springs) QCOMPARE(portable.degenerate, length > 5 ? 1 : 0);
+            else QCOMPARE(portable.degenerate, 0);
+            for (kernels::KernelSet set : {kernels::KernelSet::Avx2, kernels::KernelSet::Avx512}) {
+                if (set > kernels::widestKernels()) continue;
+                QCOMPARE(kernels::useKernels(set), set);
+                const Outcome vector = call(in, which, length);
+                QVERIFY2(vector == portable, qPrintable(QStringLiteral("%1 kernels, block length %2")
+                                                            .arg(QString::fromUtf8(kernels::kernelSetName(set)))
+                                                            .arg(length)));
+                ++compared;
+            }
+        }
+        if (compared == 0) QSKIP("this build or CPU has only the portable kernels: nothing to compare with");
+    }
+
+    // Portable against a plain per-spring computation: the lane code over double (a block's
+    // last springs) and over vectors give the same forces as F = [ks (L - L0) + kd (dv.u)] u.
+    void portableSpringsMatchThePlainFormula() {
+        const Inputs in = makeInputs();
+        kernels::useKernels(kernels::KernelSet::Portable);
+        for (std::size_t length : {std::size_t{3}, std::size_t{4}, std::size_t{7}}) {
+            const Outcome r = call(in, Kernel::Springs, length);
+            std::vector<double> expected = in.f4Start;
+            double stretch2 = 0.0;
+            for (std::size_t k = kBegin; k < kBegin + length; ++k) {
+                const int a = in.springs.a[k], b = in.springs.b[k];
+                double d[3], dv[3];
+                for (int i = 0; i < 3; ++i) {
+                    d[i] = in.x[3 * b + i] - in.x[3 * a + i];
+                    dv[i] = in.v[3 * b + i] - in.v[3 * a + i];
+                }
+                const double length2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+                const double l = std::sqrt(length2);
+                stretch2 += (l - in.springs.rest[k]) * (l - in.springs.rest[k]);
+                if (l < kDegenerateLength) continue;
+                const double closing = (dv[0] * d[0] + dv[1] * d[1] + dv[2] * d[2]) / l;
+                const double magnitude = 30.0 * (l - in.springs.rest[k]) + 0.7 * closing;
+                for (int i = 0; i < 3; ++i) {
+                    expected[static_cast<std::size_t>(4 * a + i)] += magnitude * d[i] / l;
+                    expected[static_cast<std::size_t>(4 * b + i)] -= magnitude * d[i] / l;
+                }
+            }
+            for (std::size_t i = 0; i < expected.size(); ++i)
+                QVERIFY2(std::abs(r.rows[i] - expected[i]) <= 1e-12 * (1.0 + std::abs(expected[i])),
+                         qPrintable(QStringLiteral("row double %1, block length %2").arg(i).arg(length)));
+            QVERIFY(std::abs(r.sums[1] - stretch2) <= 1e-12 * (1.0 + stretch2));
+        }
+    }
+};
+
+QTEST_APPLESS_MAIN(TestForceKernels)
+#include "test_force_kernels.moc"
