@@ -66,9 +66,11 @@ struct Outcome {
     int degenerate = 0;
     bool operator==(const Outcome& o) const {
         // Bit for bit (memcmp also tells -0.0 from 0.0).
-        return rows.size() == o.rows.size() && sums.size() == o.sums.size() && degenerate == o.degenerate &&
-               std::memcmp(rows.data(), o.rows.data(), rows.size() * sizeof(double)) == 0 &&
-               std::memcmp(sums.data(), o.sums.data(), sums.size() * sizeof(double)) == 0;
+        // (An empty vector's data() may be null, which memcmp must not be given even for 0 bytes.)
+        auto same = [](const std::vector<double>& a, const std::vector<double>& b) {
+            return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+        };
+        return degenerate == o.degenerate && same(rows, o.rows) && same(sums, o.sums);
     }
 };
 

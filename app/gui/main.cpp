@@ -338,10 +338,11 @@ int main(int argc, char** argv) {
         // Frames painted per wall second while the simulation runs in real time, and how late
         // a 10 ms GUI timer fires (the UI's responsiveness).
         const double seconds = fpsSeconds;
-        auto* wall = new QElapsedTimer;
+        // Shared by the lambdas below and freed with the last of them.
+        auto wall = std::make_shared<QElapsedTimer>();
         auto* probe = new QTimer(&window);
-        auto* worstLate = new double(0.0);
-        auto* last = new qint64(0);
+        auto worstLate = std::make_shared<double>(0.0);
+        auto last = std::make_shared<qint64>(0);
         QObject::connect(probe, &QTimer::timeout, &window, [=] {
             const qint64 now = wall->nsecsElapsed();
             if (*last > 0) *worstLate = std::max(*worstLate, double(now - *last) * 1e-6 - 10.0);
