@@ -356,8 +356,6 @@ void Simulation::applyForceParams() {
     p.mks = table.mks;
     p.mkd = table.mkd;
     p.mouseRest = table.mouseRest;
-    m_restitution = world.restitution;
-    m_friction = world.friction;
     m_box = world.box;
     m_dt = m_p.time.dt;
     // Contact (contact.h): the walls per axis the body moves along, k, and alpha from e at
@@ -366,8 +364,8 @@ void Simulation::applyForceParams() {
     ContactParams& c = m_forces.contact;
     c.walls = c.layerBarrier = !m_contactProjection;
     c.stiffness = world.contactStiffness * m_scale.contact;
-    c.alpha = dampingForRestitution(m_restitution) / world.contactSpeed;
-    c.friction = m_friction;
+    c.alpha = dampingForRestitution(world.restitution) / world.contactSpeed;
+    c.friction = world.friction;
     c.frictionSpeed = world.frictionSpeed;
     const int dims = m_body.topology.dimension;
     for (int axis = 0; axis < 3; ++axis) {
@@ -766,12 +764,12 @@ bool Simulation::collideRange(bool apply, int begin, int end) {
             // stopped, not bounced. Bouncing it would make a resting body chatter, each step
             // sinking, being lifted back and bounced, pumping energy that damping then removes.
             if ((below && v < 0.0) || (above && v > 0.0))
-                v = std::abs(v) <= restingSpeed ? 0.0 : -m_restitution * v;
-            if (m_friction > 0.0) {
+                v = std::abs(v) <= restingSpeed ? 0.0 : -m_p.world.restitution * v;
+            if (m_p.world.friction > 0.0) {
                 for (int other = 0; other < dims && other < 3; ++other) {
                     const int tangent = dims == 1 ? 1 : other;
                     if (tangent == axis) continue;
-                    m_y[m_n + 3 * i + tangent] *= 1.0 - m_friction;
+                    m_y[m_n + 3 * i + tangent] *= 1.0 - m_p.world.friction;
                 }
             }
         }

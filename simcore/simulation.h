@@ -330,8 +330,6 @@ private:
     Eigen::Vector3d m_boxCentre = Eigen::Vector3d::Zero();
     double m_box = 5.0;
     BodyScale m_scale;
-    double m_restitution = 0.5;
-    double m_friction = 0.0;
     bool m_contactProjection = false;  // contact = projection (else a force in the ODE)
     double m_dt = 0.003;
     double m_hNext = 0.003;       // adaptive integrators: the step proposed by the last one [s]
