@@ -64,6 +64,19 @@ struct ContactParams {
                                std::numeric_limits<double>::infinity()};
 };
 
+// The contact's linearisation point for the stability estimates (a body at its start has no
+// contact, and U'' = 3 k d^2 vanishes at d = 0): the particles nearest the floor, each at a
+// design depth d* (Simulation::contactDesign says how they are chosen). Empty when contact is
+// not a force, when nothing falls (no gravity) or when the body hangs from a fixed particle.
+struct ContactDesign {
+    std::vector<int> particles;  // the free particles nearest the floor
+    int axis = 1;                // the floor's normal axis
+    double depth = 0.0;          // d* [m]
+    double stiffness = 0.0;      // -dF/dx = 3 k d*^2 [N/m]
+    double damping = 0.0;        // -dF/dv = k d*^3 alpha at ddot = 0 [N s/m]
+    double friction = 0.0;       // tangential -dF/dv = mu k d*^3 / eps [N s/m]
+};
+
 // phi(u) = u + sqrt(1 + u^2), evaluated without cancellation for u < 0.
 double contactPhi(double u);
 // phi(u) - 1 without cancellation near u = 0.

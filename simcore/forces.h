@@ -148,6 +148,7 @@ public:
     const TermSet& terms() const { return m_terms; }
     // The pool that runs the chunks (nullptr: the calling thread runs them all).
     void setPool(ThreadPool* pool) { m_pool = pool; }
+    ThreadPool* pool() const { return m_pool; }
     int chunks() const { return m_chunks; }
     // Springs and faces evaluated after the chunks because they join particles of two chunks.
     std::size_t sharedElements() const;

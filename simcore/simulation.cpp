@@ -1,7 +1,5 @@
 #include "simulation.h"
 
-#include "jacobians.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,287 +7,44 @@
 #include <stdexcept>
 #include <utility>
 
+#include "body_ode.h"
+
 namespace simcore {
-
-// The ODE the integrators see: y = [x | v | E_damp | E_contact],
-// dy/dt = [v | F/m | P_damp | P_contact] (the powers removed by damping and by contact).
-class Simulation::System final : public OdeSystem {
-public:
-    explicit System(Simulation& sim) : m_sim(sim) {}
-    StateLayout layout() const override { return {m_sim.m_n, kAux}; }
-    void derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) override {
-        if (!takeOffered(y, dydt)) compute(y, dydt, m_extras, true);
-    }
-    void derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt, RangeWork then) override {
-        if (takeOffered(y, dydt))
-            inPieces(dydt.size(), then);
-        else
-            compute(y, dydt, m_extras, true, &then);
-    }
-    // The end-of-step measurement already evaluated f at the state this step starts from:
-    // the integrator's first stage takes it (counted as the evaluation it is).
-    bool takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
-        if (!m_offered) return false;
-        Eigen::VectorXd* offered = std::exchange(m_offered, nullptr);
-        if (&y != &m_sim.m_y) return false;
-        dydt.swap(*offered);  // no copy: the two buffers trade places
-        m_extras = m_sim.m_endExtras;
-        m_sim.m_forces.countReusedEvaluation();
-        return true;
-    }
-    // dy/dt at y into dydt, with the force by-products; counted as a force evaluation or not.
-    // With `then`, the chunks run it on their ranges of dydt as they finish them.
-    void compute(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, ForceExtras& extras, bool count,
-                 const RangeWork* then = nullptr) {
-        const Eigen::Index n = m_sim.m_n;
-        m_sim.m_forces.evaluateMotion(y.data(), y.data() + n, m_sim.m_invMass3.data(), dydt.data(),
-                                      dydt.data() + n, extras, count, then);
-        dydt[2 * n] = extras.dampingPower;
-        dydt[2 * n + 1] = extras.contactPower;
-        if (then) (*then)(2 * n, kAux);
-    }
-    int pieces() const override { return m_sim.m_pool ? m_sim.m_pool->threads() : 1; }
-    void runPieces(TaskRef task) override {
-        if (m_sim.m_pool)
-            m_sim.m_pool->run(m_sim.m_pool->threads(), task);
-        else
-            task(0);
-    }
-    // Offers dy/dt at the simulation's current state to the next derivative() call (taken if
-    // that call is at the current state; withdrawn either way); nullptr withdraws it.
-    void offer(Eigen::VectorXd* dydt) { m_offered = dydt; }
-    const ForceExtras& extras() const { return m_extras; }
-
-    // --- Jacobians for implicit integrators (kernels in jacobians.h) ---
-    bool hasForceJacobian() const override { return true; }
-    void linearize(double /*t*/, const Eigen::VectorXd& y) override {
-        const Eigen::Index n = m_sim.m_n;
-        m_x = y.head(n);
-        m_mass.resize(n);
-        for (Eigen::Index k = 0; k < n; ++k)
-            m_mass[k] = m_sim.m_invMass3[k] > 0.0 ? 1.0 / m_sim.m_invMass3[k] : 0.0;
-        const Topology& topo = m_sim.m_body.topology;
-        linearizeContact(y);
-        m_gasOn = m_sim.m_forces.terms().has(Term::Gas);
-        if (!m_gasOn) return;
-        for (const Surface& s : topo.surfaces) {
-            const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
-            m_gradient[slot].setZero(n);
-            addVolumeGradient(s, topo.dimension, m_x.data(), m_gradient[slot].data());
-            m_volume[slot] = enclosedVolume(s, m_x.data(), topo.dimension);
-        }
-    }
-    void forceJacobianProduct(const Eigen::VectorXd& dx, const Eigen::VectorXd& dv,
-                              Eigen::VectorXd& out) override {
-        out.setZero();
-        const Topology& topo = m_sim.m_body.topology;
-        const ForceParams& p = m_sim.m_forces.params;
-        if (m_sim.m_forces.terms().has(Term::Springs))
-            for (int f = 0; f < kSpringFamilyCount; ++f) {
-                const auto k = static_cast<std::size_t>(f);
-                addSpringJacobianProduct(topo.springs[k], p.ks[k], p.kd[k], m_x.data(), dx.data(),
-                                         dv.data(), out.data());
-            }
-        if (m_gasOn)
-            for (const Surface& s : topo.surfaces) {
-                const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
-                addGasJacobianProduct(s, topo.dimension, p.gasConstant[slot], m_volume[slot],
-                                      m_gradient[slot], m_x.data(), dx.data(), out.data());
-            }
-        if (m_sim.m_forces.terms().has(Term::Pointer))
-            addPointerJacobianProduct(m_sim.m_forces.pointer, p.mks, p.mkd, p.mouseRest, m_x.data(),
-                                      dx.data(), dv.data(), out.data());
-        if (m_contactOn) {
-            out += m_contactK.cwiseProduct(dx) + m_contactD.cwiseProduct(dv);
-            addBarrierProduct(dx, out);
-        }
-        for (Eigen::Index k = 0; k < out.size(); ++k)
-            if (m_mass[k] == 0.0) out[k] = 0.0;
-    }
-    void forceJacobianDiagonal(Eigen::VectorXd& kdiag, Eigen::VectorXd& ddiag) override {
-        kdiag.setZero();
-        ddiag.setZero();
-        const Topology& topo = m_sim.m_body.topology;
-        const ForceParams& p = m_sim.m_forces.params;
-        if (m_sim.m_forces.terms().has(Term::Springs))
-            for (int f = 0; f < kSpringFamilyCount; ++f) {
-                const auto k = static_cast<std::size_t>(f);
-                addSpringJacobianDiagonal(topo.springs[k], p.ks[k], p.kd[k], m_x.data(),
-                                          kdiag.data(), ddiag.data());
-            }
-        if (m_gasOn)
-            for (const Surface& s : topo.surfaces) {
-                const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
-                addGasJacobianDiagonal(p.gasConstant[slot], m_volume[slot], m_gradient[slot], kdiag.data());
-            }
-        if (m_sim.m_forces.terms().has(Term::Pointer))
-            addPointerJacobianDiagonal(m_sim.m_forces.pointer, p.mks, p.mkd, p.mouseRest, m_x.data(),
-                                       kdiag.data(), ddiag.data());
-        if (m_contactOn) {
-            kdiag += m_contactK;
-            ddiag += m_contactD;
-            for (const ActiveBarrier& b : m_barrierActive)
-                for (int a = 0; a < 3; ++a) {
-                    kdiag[3 * b.inner + a] -= b.stiffness * b.normal[a] * b.normal[a];
-                    kdiag[3 * b.outer + a] -= b.stiffness * b.normal[a] * b.normal[a];
-                }
-        }
-    }
-    // Contact at the linearisation point: the walls' diagonal Jacobians (addWallContactJacobian)
-    // and the layer barrier's active pairs. The barrier enters by its Gauss-Newton part
-    // K = -3 k q^2 n n^T on the pair (n = dq/dx_i = sqrt2 g / sqrt(|g|^2 + g0^2), +n on the inner particle, -n on the outer);
-    // the curvature of q and the coupling to the fan are left out (the barrier is rarely
-    // active; implicit-euler's linearisation only has to be close, not exact).
-    // Extra contact stiffness may be added at a chosen design point (stability estimates).
-    void linearizeContact(const Eigen::VectorXd& y) {
-        const Eigen::Index n = m_sim.m_n;
-        const ForceModel& forces = m_sim.m_forces;
-        m_contactOn = forces.contactWalls() || forces.contactBarrier() || m_design;
-        m_barrierActive.clear();
-        if (!m_contactOn) return;
-        // Sized once (the first linearisation), not per step.
-        if (m_barrierActive.capacity() < forces.barrierPairs().size()) m_barrierActive.reserve(forces.barrierPairs().size());
-        m_contactK.setZero(n);
-        m_contactD.setZero(n);
-        const double* x = y.data();
-        const double* v = y.data() + n;
-        if (forces.contactWalls())
-            for (int i = 0; i < m_sim.particleCount(); ++i)
-                if (!m_sim.m_body.fixed[static_cast<std::size_t>(i)] && outsideWalls(forces.contact, x + 3 * i))
-                    addWallContactJacobian(forces.contact, x + 3 * i, v + 3 * i, m_contactK.data() + 3 * i,
-                                           m_contactD.data() + 3 * i);
-        if (m_design) {
-            const ContactDesign& design = *m_design;
-            for (int i : design.particles)
-                for (int axis = 0; axis < 3; ++axis) {
-                    if (axis == design.axis) {
-                        m_contactK[3 * i + axis] -= design.stiffness;
-                        m_contactD[3 * i + axis] -= design.damping;
-                    } else {
-                        m_contactD[3 * i + axis] -= design.friction;
-                    }
-                }
-        }
-        if (forces.contactBarrier()) {
-            const LayerBarrierSet& pairs = forces.barrierPairs();
-            const int dim = m_sim.m_body.topology.dimension;
-            for (std::size_t k = 0; k < pairs.size(); ++k) {
-                const auto g = layerBarrierNormal(pairs, k, dim, x);
-                const int in = pairs.inner[k], out = pairs.outer[k];
-                const double along = (x[3 * in] - x[3 * out]) * g[0] + (x[3 * in + 1] - x[3 * out + 1]) * g[1] +
-                                     (x[3 * in + 2] - x[3 * out + 2]) * g[2];
-                if (!(along > 0.0)) continue;
-                const double g02 = 1.0 / (pairs.invRestNorm[k] * pairs.invRestNorm[k]);
-                const double inv = kSqrt2 / std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g02);
-                const double q = along * inv;
-                ActiveBarrier b{in, out, 3.0 * forces.contact.stiffness * q * q, {}};
-                for (int a = 0; a < 3; ++a) b.normal[static_cast<std::size_t>(a)] = g[static_cast<std::size_t>(a)] * inv;
-                m_barrierActive.push_back(b);
-            }
-        }
-    }
-    void addBarrierProduct(const Eigen::VectorXd& dx, Eigen::VectorXd& out) const {
-        for (const ActiveBarrier& b : m_barrierActive) {
-            double along = 0.0;
-            for (int a = 0; a < 3; ++a) along += b.normal[static_cast<std::size_t>(a)] * (dx[3 * b.inner + a] - dx[3 * b.outer + a]);
-            for (int a = 0; a < 3; ++a) {
-                out[3 * b.inner + a] -= b.stiffness * along * b.normal[static_cast<std::size_t>(a)];
-                out[3 * b.outer + a] += b.stiffness * along * b.normal[static_cast<std::size_t>(a)];
-            }
-        }
-    }
-    // Adds the design point's contact stiffness at every linearisation (nullopt: none).
-    void setContactDesign(std::optional<ContactDesign> design) { m_design = std::move(design); }
-    const Eigen::VectorXd& coordinateMass() const override { return m_mass; }
-    bool distanceConstraints(DistanceConstraints& out) override {
-        const Topology& topo = m_sim.m_body.topology;
-        const ForceParams& p = m_sim.m_forces.params;
-        const bool springs = m_sim.m_forces.terms().has(Term::Springs);
-        for (int f = 0; f < kSpringFamilyCount; ++f) {
-            const auto k = static_cast<std::size_t>(f);
-            const SpringSet& set = topo.springs[k];
-            out.families[k] = {set.a, set.b, set.rest, springs ? p.ks[k] : 0.0, springs ? p.kd[k] : 0.0};
-        }
-        out.inverseMass = &m_sim.m_invMass3;
-        out.substeps = m_sim.m_p.time.substeps;
-        return true;
-    }
-    bool stronglyNonlinear(double h, const Eigen::VectorXd& y0, const Eigen::VectorXd& v1) override {
-        const ForceModel& forces = m_sim.m_forces;
-        if (!forces.contactWalls()) return false;
-        const ContactParams& c = forces.contact;
-        for (Eigen::Index k = 0; k < m_sim.m_n; ++k) {
-            if (m_mass[k] == 0.0) continue;
-            const auto axis = static_cast<std::size_t>(k % 3);
-            const double end = y0[k] + h * v1[k];
-            if (end < c.low[axis] || end > c.high[axis]) return true;
-        }
-        return false;
-    }
-    int contactVelocities(double h, const Eigen::VectorXd& y0, const Eigen::VectorXd& v1,
-                          Eigen::VectorXd& target) override {
-        // The same box planes as collide(): a free coordinate that would end outside lands
-        // on its wall. collide() then applies restitution to it after the step. Only with
-        // contact = projection: as a force, contact is in F and its Jacobians.
-        if (!m_sim.m_forces.terms().has(Term::Collisions) || !m_sim.m_contactProjection) return 0;
-        // Deepest first: only coordinates that penetrate at least half as deep as the deepest
-        // are marked in one pass. A particle behind another (an inner-layer particle above
-        // an outer one on the floor) is then held by its springs once the front one is
-        // stopped, instead of being stopped by the wall it would never have reached.
-        auto penetration = [&](Eigen::Index k, double& wall) {
-            const int axis = static_cast<int>(k % 3);
-            const double lo = m_sim.m_boxCentre[axis] - m_sim.m_box, hi = m_sim.m_boxCentre[axis] + m_sim.m_box;
-            const double end = y0[k] + h * v1[k];
-            wall = end < lo ? lo : hi;
-            return end < lo ? lo - end : end > hi ? end - hi : 0.0;
-        };
-        double deepest = 0.0, wall = 0.0;
-        for (Eigen::Index k = 0; k < m_sim.m_n; ++k)
-            if (m_mass[k] != 0.0 && !std::isfinite(target[k])) deepest = std::max(deepest, penetration(k, wall));
-        if (deepest <= 0.0) return 0;
-        int marked = 0;
-        for (Eigen::Index k = 0; k < m_sim.m_n; ++k) {
-            if (m_mass[k] == 0.0 || std::isfinite(target[k])) continue;
-            if (penetration(k, wall) < 0.5 * deepest) continue;
-            target[k] = (wall - y0[k]) / h;
-            ++marked;
-        }
-        return marked;
-    }
-
-private:
-    Simulation& m_sim;
-    ForceExtras m_extras;
-    // Linearisation point and its gas data (sized once, reused every step).
-    Eigen::VectorXd m_x, m_mass;
-    std::array<Eigen::VectorXd, 2> m_gradient;  // dV/dx of [inner, outer], 3N each
-    std::array<double, 2> m_volume{};
-    bool m_gasOn = false;
-    Eigen::VectorXd* m_offered = nullptr;
-    // Contact at the linearisation point.
-    struct ActiveBarrier {
-        int inner, outer;
-        double stiffness;                // 3 k q^2 [N/m]
-        std::array<double, 3> normal;    // g / g0
-    };
-    bool m_contactOn = false;
-    Eigen::VectorXd m_contactK, m_contactD;  // diagonal dF/dx, dF/dv of the walls (3N)
-    std::vector<ActiveBarrier> m_barrierActive;
-    std::optional<ContactDesign> m_design;
-};
 
 Simulation::Simulation(const ParameterSet& params, std::string_view integrator)
     : m_params(params), m_integrator(makeIntegrator(integrator)) {
     if (!m_integrator)
         throw std::invalid_argument("unknown integrator '" + std::string(integrator) +
                                     "'; allowed: " + integratorNames());
-    m_system = std::make_unique<System>(*this);
+    m_ode = std::make_unique<BodyOde>(m_body, m_forces, m_invMass3);
     build();
 }
 
 Simulation::~Simulation() = default;
 
-OdeSystem& Simulation::odeSystem() { return *m_system; }
+OdeSystem& Simulation::odeSystem() { return *m_ode; }
+
+std::string_view stageName(Stage stage) {
+    switch (stage) {
+        case Stage::Save: return "save";
+        case Stage::Size: return "size";
+        case Stage::Integrate: return "integrate";
+        case Stage::Scan: return "scan";
+        case Stage::Collide: return "collide";
+        case Stage::Measure: return "measure";
+        case Stage::Constrain: return "constrain";
+        case Stage::Check: return "check";
+        case Stage::Commit: return "commit";
+        case Stage::Count: break;
+    }
+    return "?";
+}
+
+double StepProfile::total() const {
+    double sum = 0.0;
+    for (double t : seconds) sum += t;
+    return sum;
+}
 
 Eigen::Map<const Eigen::Matrix3Xd> Simulation::positions() const {
     return {m_y.data(), 3, particleCount()};
@@ -356,11 +111,10 @@ void Simulation::applyForceParams() {
     p.mks = table.mks;
     p.mkd = table.mkd;
     p.mouseRest = table.mouseRest;
-    m_box = world.box;
-    m_dt = m_p.time.dt;
     // Contact (contact.h): the walls per axis the body moves along, k, and alpha from e at
     // the reference impact speed.
     m_contactProjection = world.contact == ContactModel::Projection;
+    m_ode->configure(m_contactProjection, m_p.time.substeps);
     ContactParams& c = m_forces.contact;
     c.walls = c.layerBarrier = !m_contactProjection;
     c.stiffness = world.contactStiffness * m_scale.contact;
@@ -371,15 +125,15 @@ void Simulation::applyForceParams() {
     for (int axis = 0; axis < 3; ++axis) {
         const bool moves = axis == 1 || (axis == 0 && dims >= 2) || (axis == 2 && dims == 3);
         const double infinity = std::numeric_limits<double>::infinity();
-        c.low[static_cast<std::size_t>(axis)] = moves ? m_boxCentre[axis] - m_box : -infinity;
-        c.high[static_cast<std::size_t>(axis)] = moves ? m_boxCentre[axis] + m_box : infinity;
+        c.low[static_cast<std::size_t>(axis)] = moves ? m_boxCentre[axis] - world.box : -infinity;
+        c.high[static_cast<std::size_t>(axis)] = moves ? m_boxCentre[axis] + world.box : infinity;
     }
 }
 
 void Simulation::reset() {
-    m_endValid = false;
+    m_ode->dropEnd();
     const Eigen::Index n = m_n;
-    m_y.setZero(2 * n + kAux);
+    m_y.setZero(2 * n + BodyOde::kAux);
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = m_body.positions;
     const double amplitude = m_p.start.perturb;
     if (amplitude > 0.0) {
@@ -389,20 +143,18 @@ void Simulation::reset() {
         for (Eigen::Index k = 0; k < n; ++k)
             if (m_invMass3[k] != 0.0) m_y[k] += uniform(rng);
     }
-    m_integrator->prepare(m_system->layout());
-    m_hNext = m_hTaken = m_dt;
-    m_doubling.setZero(m_y.size());
+    m_integrator->prepare(m_ode->layout());
+    m_hNext = m_hTaken = m_p.time.dt;
     // Held only while step doubling is on (the memory bound counts what a run holds).
-    if (m_integratorOptions.stepDoubling) m_doublingError.setZero(m_y.size());
-    else m_doublingError.resize(0);
+    if (m_integratorOptions.stepDoubling) m_doubling.prepare(m_y.size());
+    else m_doubling.release();
     m_lastError = nullptr;
-    m_endDerivative.setZero(m_y.size());
     m_lastGood = m_y;
     m_failure.reset();
     m_forces.pointer = PointerSpring{};
     m_diag = Diagnostics{};
     m_timeCarry = 0.0;
-    m_diag.dt = m_dt;
+    m_diag.dt = m_p.time.dt;
     m_restartIntegrator = false;
     m_jacobianProducts = 0;
     startBookkeeping();
@@ -418,11 +170,11 @@ void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, 
 void Simulation::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v) {
     if (x.cols() != particleCount() || v.cols() != particleCount())
         throw std::invalid_argument("state has the wrong number of particles");
-    m_endValid = false;
+    m_ode->dropEnd();
     m_lastError = nullptr;
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = x;
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data() + m_n, 3, particleCount()) = v;
-    m_y.tail(kAux).setZero();
+    m_y.tail(BodyOde::kAux).setZero();
     m_lastGood = m_y;
     m_failure.reset();
     m_restartIntegrator = true;
@@ -442,7 +194,7 @@ void Simulation::startBookkeeping() {
     // the box height, every spring stretched by its rest length, the gas expanding 100-fold.
     const Topology& topo = m_body.topology;
     double scale = 1.0 + m_diag.kinetic + m_diag.springTotal();
-    scale += m_body.mass.sum() * m_forces.params.gravity * 2.0 * m_box;
+    scale += m_body.mass.sum() * m_forces.params.gravity * 2.0 * m_p.world.box;
     for (int f = 0; f < kSpringFamilyCount; ++f) {
         const auto k = static_cast<std::size_t>(f);
         for (double rest : topo.springs[k].rest) scale += 0.5 * m_forces.params.ks[k] * rest * rest;
@@ -461,17 +213,24 @@ void Simulation::measureByPasses(Diagnostics& d, const Scan& scan) const {
 }
 
 void Simulation::measureState(Diagnostics& d, const Scan& scan) {
-    if (m_reuseEndForces)
-        measureWithForces(d, scan);
-    else
+    if (!m_reuseEndForces) {
         measureByPasses(d, scan);
-}
-
-void Simulation::measureWithForces(Diagnostics& d, const Scan& scan) {
+        return;
+    }
     // One uncounted force evaluation yields the energies and volumes, and f at this state,
     // which the next step's first stage takes instead of evaluating it again.
-    m_system->compute(m_y, m_endDerivative, m_endExtras, false);
-    fillDiagnostics(d, m_endExtras.springEnergy, m_endExtras.volume, m_endExtras.contactEnergy, scan);
+    const ForceExtras& extras = m_ode->measureEnd(m_y);
+    fillDiagnostics(d, extras.springEnergy, extras.volume, extras.contactEnergy, scan);
+}
+
+void Simulation::setReuseEndForces(bool on) {
+    m_reuseEndForces = on;
+    m_ode->dropEnd();
+}
+
+void Simulation::setProfiling(bool on) {
+    m_profiling = on;
+    m_profile = StepProfile{};
 }
 
 Simulation::Scan Simulation::scanState() const {
@@ -598,223 +357,126 @@ double Simulation::totalEnergyNow() const {
 
 bool Simulation::step(double until) {
     if (m_failure) return false;
+    if (m_profiling) ++m_profile.steps;
+    StepWork w(m_diag, until);
+    // The stages in their order (Stage); each returns false when the step ends there.
+    return inStage(Stage::Save, [&] { return save(); }) &&
+           inStage(Stage::Size, [&] { return size(w); }) &&
+           inStage(Stage::Integrate, [&] { return integrate(w); }) &&
+           inStage(Stage::Scan, [&] { return scan(w); }) &&
+           inStage(Stage::Collide, [&] { return collide(w); }) &&
+           inStage(Stage::Measure, [&] { return measure(w); }) &&
+           inStage(Stage::Constrain, [&] { return constrain(w); }) &&
+           inStage(Stage::Check, [&] { return check(w); }) &&
+           inStage(Stage::Commit, [&] { return commit(w); });
+}
+
+bool Simulation::save() {
     inPieces([&](int, int begin, int end) {
         // x and v of the piece's particles; the last piece also takes the energy accounts.
         const Eigen::Index b = 3 * begin, l = 3 * (end - begin);
         m_lastGood.segment(b, l) = m_y.segment(b, l);
         m_lastGood.segment(m_n + b, l) = m_y.segment(m_n + b, l);
-        if (end == particleCount()) m_lastGood.tail(kAux) = m_y.tail(kAux);
+        if (end == particleCount()) m_lastGood.tail(BodyOde::kAux) = m_y.tail(BodyOde::kAux);
     });
-    const double t0 = m_diag.time;
+    return true;
+}
+
+bool Simulation::size(StepWork& w) {
     // Adaptive methods take the step they proposed, shortened to land on `until`.
-    double h = m_dt;
-    bool clamped = false;
-    if (m_integrator->adaptive()) {
-        // No particle may cross more than a tenth of the box in one adaptive step: a smooth
-        // free fall has a zero error estimate and would let the step grow without bound, past
-        // the onset of a contact (a force that is 0 until it is touched, so the estimate
-        // cannot see it coming) or, with contact = projection, through a wall between steps.
-        const double fastest = velocities().colwise().norm().maxCoeff();
-        h = fastest > 0.0 ? std::min(m_hNext, 0.1 * m_box / fastest) : m_hNext;
-        if (until - t0 > 1e-12 * std::max(1.0, std::abs(until)) && t0 + h > until) {
-            h = until - t0;
-            clamped = true;
-        }
+    w.h = m_p.time.dt;
+    w.clamped = false;
+    if (!m_integrator->adaptive()) return true;
+    // No particle may cross more than a tenth of the box in one adaptive step: a smooth free
+    // fall has a zero error estimate and would let the step grow without bound, past the
+    // onset of a contact (a force that is 0 until it is touched, so the estimate cannot see
+    // it coming) or, with contact = projection, through a wall between steps.
+    const double fastest = velocities().colwise().norm().maxCoeff();
+    w.h = fastest > 0.0 ? std::min(m_hNext, 0.1 * m_p.world.box / fastest) : m_hNext;
+    if (w.until - w.t0 > 1e-12 * std::max(1.0, std::abs(w.until)) && w.t0 + w.h > w.until) {
+        w.h = w.until - w.t0;
+        w.clamped = true;
     }
-    m_system->offer(m_endValid ? &m_endDerivative : nullptr);
-    m_endValid = false;
+    return true;
+}
+
+bool Simulation::integrate(StepWork& w) {
+    m_ode->offerEnd();
     if (m_restartIntegrator) {
         m_integrator->restart();
         m_restartIntegrator = false;
     }
-    StepReport report = m_integrator->step(*m_system, t0, h, m_y);
-    m_system->offer(nullptr);
-    m_jacobianProducts += static_cast<std::uint64_t>(report.jacobianProducts);
-    m_lastError = nullptr;
-    if (report.failure) {
-        m_failure = Failure{report.failure, m_diag.step + 1, t0};
-        m_y = m_lastGood;
+    w.report = usesStepDoubling() ? m_doubling.step(*m_integrator, *m_ode, w.t0, w.h, m_y)
+                                  : m_integrator->step(*m_ode, w.t0, w.h, m_y);
+    m_ode->withdrawEnd();
+    m_jacobianProducts += static_cast<std::uint64_t>(w.report.jacobianProducts);
+    m_lastError = usesStepDoubling() ? m_doubling.localError() : nullptr;
+    if (w.report.failure) {
+        fail(w.report.failure, w);
         return false;
     }
     if (m_integrator->adaptive())
-        m_hNext = clamped && report.rejected == 0 ? std::max(m_hNext, report.hNext) : report.hNext;
-    m_hTaken = report.h;
-    if (m_integratorOptions.stepDoubling && !m_integrator->adaptive() && scanState().finite) {
-        // Step doubling (Richardson): y_h from one step, y_h/2 from two half steps from the
-        // same start; the local error of y_h is about |y_h/2 - y_h| / (1 - 2^-p) and that of
-        // y_h/2 is 2^-p of it. The run keeps y_h, so switching the estimate on changes
-        // nothing but the cost (the extra evaluations are counted).
-        m_doubling = m_y;
-        m_y = m_lastGood;
-        const double half = 0.5 * report.h;
-        const StepReport first = m_integrator->step(*m_system, t0, half, m_y);
-        const StepReport second = first.failure ? first : m_integrator->step(*m_system, t0 + half, half, m_y);
-        const double p = m_integrator->order();
-        const Eigen::Index n = m_n;
-        const double rms = std::sqrt((m_y.head(n) - m_doubling.head(n)).squaredNorm() /
-                                     std::max(1.0, static_cast<double>(particleCount())));
-        report.errorEstimate = second.failure || !std::isfinite(rms) ? -1.0 : rms / (1.0 - std::pow(2.0, -p));
-        if (report.errorEstimate >= 0.0) {
-            m_doublingError = (m_y - m_doubling) / (1.0 - std::pow(2.0, -p));
-            m_lastError = m_doublingError.data();
-        }
-        m_y = m_doubling;
-    }
+        m_hNext = w.clamped && w.report.rejected == 0 ? std::max(m_hNext, w.report.hNext) : w.report.hNext;
+    m_hTaken = w.report.h;
+    return true;
+}
 
-    // Wall contacts and the layer constraint change the state outside the ODE. Whatever
-    // energy they change is measured across them and booked as removed by collisions (in the
-    // new diagnostics only: a step that then fails leaves the books as they were). The layer
-    // constraint's normals are the outer layer's volume gradient, which the measurement of
-    // the state (a force evaluation) leaves behind: it is checked after that measurement, and
-    // a step it corrects is measured again.
-    std::optional<double> beforeContacts;
-    Scan scan = scanState();
-    if (scan.finite && m_contactProjection && m_forces.terms().has(Term::Collisions)) {
-        m_forces.countPostStep(Term::Collisions);
-        // Most steps touch no wall: the scan's extent says so without a second pass.
-        const Eigen::Array3d wallLow = m_boxCentre.array() - m_box, wallHigh = m_boxCentre.array() + m_box;
-        if (((scan.low <= wallLow) || (scan.high >= wallHigh)).any() && collide(false)) {
-            beforeContacts = totalEnergyNow();
-            collide(true);
-            m_restartIntegrator = true;
-            scan = scanState();
-        }
-    }
+bool Simulation::scan(StepWork& w) {
+    w.scan = scanState();
+    return true;
+}
 
+bool Simulation::measure(StepWork& w) {
     // One measurement serves the checks, the diagnostics and the energy after the contacts.
-    Diagnostics next = m_diag;
-    measureState(next, scan);
-    if (scan.finite && m_contactProjection && m_forces.terms().has(Term::LayerConstraint)) {
-        m_forces.countPostStep(Term::LayerConstraint);
-        const kernels::PaddedRows normals =
-            m_reuseEndForces ? m_forces.volumeGradient() : m_forces.computeVolumeGradient(m_y.data());
-        if (constrainLayers(false, normals)) {
-            if (!beforeContacts) beforeContacts = next.total();
-            constrainLayers(true, normals);
-            m_restartIntegrator = true;
-            scan = scanState();
-            measureState(next, scan);
-        }
-    }
-    if (beforeContacts) next.removedCollisions += *beforeContacts - next.total();
-    if (const auto problem = checkState(next, scan)) {
-        m_failure = Failure{*problem, m_diag.step + 1, t0};
-        m_y = m_lastGood;  // keep the last good state: nothing non-finite leaves
+    // (w.next starts as a copy of the run's diagnostics: the accumulated accounts go on.)
+    measureState(w.next, w.scan);
+    return true;
+}
+
+bool Simulation::check(StepWork& w) {
+    // Whatever energy the contact stages changed is measured across them and booked as
+    // removed by collisions (in the new diagnostics only: a step that fails leaves the books
+    // as they were).
+    if (w.beforeContacts) w.next.removedCollisions += *w.beforeContacts - w.next.total();
+    if (auto problem = checkState(w.next, w.scan)) {
+        fail(std::move(*problem), w);
         return false;
     }
-    m_diag = next;
+    return true;
+}
+
+bool Simulation::commit(StepWork& w) {
+    m_diag = w.next;
     m_diag.step += 1;
     // Compensated (Kahan) sum: a million steps of 0.003 s land on the intended time, so
     // advanceTo() never takes an extra step from accumulated round-off.
-    const double increment = report.h - m_timeCarry;
-    m_diag.time = t0 + increment;
-    m_timeCarry = (m_diag.time - t0) - increment;
-    m_diag.dt = report.h;
-    m_diag.errorEstimate = report.errorEstimate;
-    if (m_integrator->adaptive() && report.errorEstimate >= 0.0) m_lastError = m_integrator->localError();
-    m_diag.degenerateSprings = m_system->extras().degenerateSprings;
-    m_endValid = m_reuseEndForces;
+    const double increment = w.report.h - m_timeCarry;
+    m_diag.time = w.t0 + increment;
+    m_timeCarry = (m_diag.time - w.t0) - increment;
+    m_diag.dt = w.report.h;
+    m_diag.errorEstimate = w.report.errorEstimate;
+    if (m_integrator->adaptive() && w.report.errorEstimate >= 0.0) m_lastError = m_integrator->localError();
+    m_diag.degenerateSprings = m_ode->extras().degenerateSprings;
+    if (m_reuseEndForces) m_ode->keepEnd();
     return true;
+}
+
+void Simulation::fail(std::string reason, const StepWork& w) {
+    m_failure = Failure{std::move(reason), m_diag.step + 1, w.t0};
+    m_y = m_lastGood;  // keep the last good state: nothing non-finite leaves
 }
 
 bool Simulation::advanceTo(double tEnd) {
     // Round-off guard: a step that would end within 1e-9 dt of tEnd counts as reaching it.
     // Adaptive integrators land on tEnd exactly.
-    while (!m_failure && m_diag.time < tEnd - 1e-9 * std::min(m_dt, nextStep())) step(tEnd);
+    while (!m_failure && m_diag.time < tEnd - 1e-9 * std::min(m_p.time.dt, nextStep())) step(tEnd);
     return !m_failure;
 }
 
 void Simulation::setIntegratorOptions(const IntegratorOptions& options) {
     m_integratorOptions = options;
-    if (options.stepDoubling && m_doublingError.size() != m_y.size()) m_doublingError.setZero(m_y.size());
+    if (options.stepDoubling && !m_doubling.ready(m_y.size())) m_doubling.prepare(m_y.size());
     m_integrator->setOptions(options);
-}
-
-bool Simulation::collide(bool apply) {
-    // Axis-aligned box planes (thesis 4.6; MODEL.md): a particle outside is projected back
-    // and its normal velocity becomes -e v_n; friction scales the tangential velocity by
-    // (1 - mu). Only the axes the body moves in are bounded. Particles are independent: the
-    // pieces run in parallel.
-    std::array<bool, kPiecesMax> pieceAny{};
-    inPieces([&](int piece, int begin, int end) {
-        pieceAny[static_cast<std::size_t>(piece)] = collideRange(apply, begin, end);
-    });
-    return std::find(pieceAny.begin(), pieceAny.end(), true) != pieceAny.end();
-}
-
-bool Simulation::collideRange(bool apply, int begin, int end) {
-    const int dims = m_body.topology.dimension;
-    const double restingSpeed = 2.0 * m_forces.params.gravity * m_hTaken;
-    bool any = false;
-    for (int i = begin; i < end; ++i) {
-        for (int axis = 0; axis < 3; ++axis) {
-            const Eigen::Index k = 3 * i + axis;
-            if (m_invMass3[k] == 0.0) continue;
-            const double lo = m_boxCentre[axis] - m_box, hi = m_boxCentre[axis] + m_box;
-            double& x = m_y[k];
-            double& v = m_y[m_n + k];
-            // On the wall and moving into it counts too: an implicit step lands particles
-            // exactly on the wall (contacts inside its solve) and leaves restitution to here.
-            const bool below = x < lo || (x == lo && v < 0.0), above = x > hi || (x == hi && v > 0.0);
-            if (!below && !above) continue;
-            any = true;
-            if (!apply) return true;
-            x = below ? lo : hi;
-            // Resting contact: an approach no faster than what gravity adds in two steps is
-            // stopped, not bounced. Bouncing it would make a resting body chatter, each step
-            // sinking, being lifted back and bounced, pumping energy that damping then removes.
-            if ((below && v < 0.0) || (above && v > 0.0))
-                v = std::abs(v) <= restingSpeed ? 0.0 : -m_p.world.restitution * v;
-            if (m_p.world.friction > 0.0) {
-                for (int other = 0; other < dims && other < 3; ++other) {
-                    const int tangent = dims == 1 ? 1 : other;
-                    if (tangent == axis) continue;
-                    m_y[m_n + 3 * i + tangent] *= 1.0 - m_p.world.friction;
-                }
-            }
-        }
-    }
-    return any;
-}
-
-bool Simulation::constrainLayers(bool apply, kernels::PaddedRows normals) {
-    // Each inner particle must stay on the inner side of the tangent plane of its paired
-    // outer particle. The outer vertex normal is the direction of the outer layer's volume
-    // gradient dV/dx there (normals): the area-weighted mean of the adjacent face
-    // normals (3D) or the perpendicular of the neighbouring chords (2D). A violation is undone
-    // symmetrically: positions and relative normal velocity are corrected with mass weights,
-    // so momentum is conserved. Pairs are independent: the pieces run in parallel.
-    const auto& pairs = m_body.topology.layerPairs;
-    if (pairs.empty() || !normals) return false;
-    double* x = m_y.data();
-    double* v = m_y.data() + m_n;
-    std::array<bool, kPiecesMax> pieceAny{};
-    inPiecesOf(static_cast<int>(pairs.size()), [&](int piece, int begin, int end) {
-        for (int k = begin; k < end; ++k) {
-            const auto [in, out] = pairs[static_cast<std::size_t>(k)];
-            const Eigen::Map<const Eigen::Vector3d> gradient = normals[out];
-            Eigen::Map<Eigen::Vector3d> xi(x + 3 * in), xo(x + 3 * out), vi(v + 3 * in), vo(v + 3 * out);
-            // The sign first (no root, no division for the pairs that are fine, nearly all).
-            if (!((xi - xo).dot(gradient) > 0.0)) continue;
-            const double norm = gradient.norm();
-            if (norm <= 0.0) continue;
-            const Eigen::Vector3d n = gradient / norm;
-            const double depth = (xi - xo).dot(n);
-            if (depth <= 0.0) continue;
-            pieceAny[static_cast<std::size_t>(piece)] = true;
-            if (!apply) return;
-            const double mi = m_body.mass[in], mo = m_body.mass[out];
-            const double wi = mo / (mi + mo), wo = mi / (mi + mo);
-            xi -= wi * depth * n;
-            xo += wo * depth * n;
-            const double separating = (vi - vo).dot(n);
-            if (separating > 0.0) {
-                vi -= wi * separating * n;
-                vo += wo * separating * n;
-            }
-        }
-    });
-    return std::find(pieceAny.begin(), pieceAny.end(), true) != pieceAny.end();
 }
 
 std::optional<std::string> Simulation::checkState(const Diagnostics& d, const Scan& scan) const {
@@ -822,7 +484,7 @@ std::optional<std::string> Simulation::checkState(const Diagnostics& d, const Sc
     // stream is built only on failure: nothing is allocated in a good step.)
     if (!scan.finite || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
     const double fastest = scan.fastest;
-    if (fastest * m_hTaken > 2.0 * m_box) {
+    if (fastest * m_hTaken > 2.0 * m_p.world.box) {
         std::ostringstream why;
         why << "runaway velocity: a particle moves " << fastest
             << " m/s, farther than the whole box in one step";
@@ -878,7 +540,7 @@ std::optional<std::string> Simulation::setParameter(Param id, double value) {
     // stretch, a heavier particle more kinetic energy): book the jump as work by the edit.
     const double before = totalEnergyNow();
     m_params = next;
-    m_endValid = false;
+    m_ode->dropEnd();
     m_restartIntegrator = true;
     if (spec.group == ParamGroup::Mass) applyMasses();
     applyForceParams();
@@ -916,10 +578,10 @@ SimulationSnapshot Simulation::snapshot() const {
     s.integratorHistory = m_integrator->history();
     s.integratorRestorable = m_integrator->restorable();
     s.y = m_y;
-    s.endValid = m_endValid;
-    if (m_endValid) {
-        s.endDerivative = m_endDerivative;
-        s.endExtras = m_endExtras;
+    s.endValid = m_ode->endValid();
+    if (s.endValid) {
+        s.endDerivative = m_ode->endDerivative();
+        s.endExtras = m_ode->endExtras();
     }
     s.restartIntegrator = m_restartIntegrator;
     s.diag = m_diag;
@@ -944,17 +606,16 @@ void Simulation::restore(const SimulationSnapshot& s) {
         auto next = makeIntegrator(s.integrator);
         if (!next) throw std::invalid_argument("unknown integrator '" + s.integrator + "'");
         m_integrator = std::move(next);
-        m_integrator->prepare(m_system->layout());
+        m_integrator->prepare(m_ode->layout());
     }
     setIntegratorOptions(s.options);
     m_integrator->setHistory(s.integratorHistory);
     m_y = s.y;
     m_lastGood = s.y;
-    m_endValid = s.endValid;
-    if (s.endValid) {
-        m_endDerivative = s.endDerivative;
-        m_endExtras = s.endExtras;
-    }
+    if (s.endValid)
+        m_ode->restoreEnd(m_y, s.endDerivative, s.endExtras);
+    else
+        m_ode->dropEnd();
     // A method whose history cannot be restored starts afresh from this state.
     m_restartIntegrator = s.restartIntegrator || !s.integratorRestorable || !m_integrator->restorable();
     m_diag = s.diag;
@@ -972,11 +633,11 @@ std::optional<std::string> Simulation::setIntegrator(std::string_view name) {
     auto next = makeIntegrator(name);
     if (!next) return "unknown integrator '" + std::string(name) + "'; allowed: " + integratorNames();
     m_integrator = std::move(next);
-    m_endValid = false;
+    m_ode->dropEnd();
     m_lastError = nullptr;
     m_integrator->setOptions(m_integratorOptions);
-    m_integrator->prepare(m_system->layout());
-    m_hNext = m_dt;
+    m_integrator->prepare(m_ode->layout());
+    m_hNext = m_p.time.dt;
     return std::nullopt;
 }
 
@@ -1024,7 +685,7 @@ void Simulation::grab(int particle, const Eigen::Vector3d& anchor) {
     if (particle < 0 || particle >= particleCount() || m_failure) return;
     // Creating the spring stores energy: that is work done by the pointer.
     const double before = m_diag.pointer;
-    m_endValid = false;
+    m_ode->dropEnd();
     m_restartIntegrator = true;
     m_forces.pointer = PointerSpring{true, particle, anchor};
     measure(m_diag);
@@ -1035,7 +696,7 @@ void Simulation::moveAnchor(const Eigen::Vector3d& anchor) {
     if (!m_forces.pointer.active || m_failure) return;
     // The anchor moves between steps; the change in the spring's energy is the pointer's work.
     const double before = m_diag.pointer;
-    m_endValid = false;
+    m_ode->dropEnd();
     m_restartIntegrator = true;
     m_forces.pointer.anchor = anchor;
     measure(m_diag);
@@ -1045,51 +706,11 @@ void Simulation::moveAnchor(const Eigen::Vector3d& anchor) {
 void Simulation::release() {
     if (!m_forces.pointer.active) return;
     const double before = m_diag.pointer;
-    m_endValid = false;
+    m_ode->dropEnd();
     m_restartIntegrator = true;
     m_forces.pointer = PointerSpring{};
     measure(m_diag);
     m_diag.workPointer += m_diag.pointer - before;
-}
-
-Simulation::ContactDesign Simulation::contactDesign() const {
-    ContactDesign design;
-    const ContactParams& c = m_forces.contact;
-    const double g = m_forces.terms().has(Term::Gravity) ? m_forces.params.gravity : 0.0;
-    // A body held by a fixed particle hangs from it: only free bodies are taken to fall.
-    const bool held = std::find(m_body.fixed.begin(), m_body.fixed.end(), true) != m_body.fixed.end();
-    if (m_contactProjection || !m_forces.contactWalls() || !(g > 0.0) || !(c.stiffness > 0.0) || held) return design;
-    const auto x = positions();
-    double lowest = std::numeric_limits<double>::infinity(), weight = 0.0;
-    for (int i = 0; i < particleCount(); ++i) {
-        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
-        lowest = std::min(lowest, x(1, i));
-        weight += m_body.mass[i] * g;
-    }
-    // The contact patch: the free particles within a tenth of the body's height of its lowest
-    // point (measured on the default scenes, the particles touching at rest carry their
-    // weight with these depths to within 10 %: docs/numerics.md).
-    double highest = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i < particleCount(); ++i)
-        if (!m_body.fixed[static_cast<std::size_t>(i)]) highest = std::max(highest, x(1, i));
-    const double band = 0.1 * (highest - lowest);
-    for (int i = 0; i < particleCount(); ++i)
-        if (!m_body.fixed[static_cast<std::size_t>(i)] && x(1, i) <= lowest + band) design.particles.push_back(i);
-    if (design.particles.empty()) return design;
-    // Rest: the weight shared by the patch (k d^3 = W / count). An impact goes deeper, but
-    // only for a few steps: a step beyond the stable one there amplifies by a bounded factor,
-    // while the resting contact lasts (measured: the impact depth as design point predicts
-    // half the measured limits; docs/numerics.md).
-    design.depth = std::cbrt(weight / (static_cast<double>(design.particles.size()) * c.stiffness));
-    const double d = design.depth;
-    design.stiffness = 3.0 * c.stiffness * d * d;
-    design.damping = c.stiffness * d * d * d * c.alpha;
-    design.friction = c.friction * c.stiffness * d * d * d / c.frictionSpeed;
-    return design;
-}
-
-void Simulation::setContactDesignInJacobians(bool on) {
-    m_system->setContactDesign(on ? std::optional<ContactDesign>(contactDesign()) : std::nullopt);
 }
 
 double Simulation::estimatedFastestRate() const {

@@ -1,24 +1,36 @@
 #pragma once
 // Simulation: one body, its parameters, its integrator and its diagnostics.
 //
-// A step is a fixed list of stages, in this order:
+// A step is a fixed list of named stages (Stage), run in this order by step(); each is one
+// short function, and StepProfile times them when asked (setProfiling; `bench --stages`):
 //
-//   integrate   the integrator calls derivative() once per stage:
+//   save        keep the state the step starts from (put back if the step fails)
+//   size        the step h: dt, or what an adaptive method proposed, so that no particle
+//               crosses a tenth of the box, shortened to land on `until`
+//   integrate   the integrator (inside StepDoubling when its error is estimated) calls
+//               BodyOde::derivative() once per stage (body_ode.h):
 //                 gravity, wall contact -> springs -> gas -> layer barrier -> pointer
 //                 -> a = F / m -> its stage sums   (contact = force: contact.h)
 //   scan        one pass: finiteness, extent, kinetic and gravity energy, fastest speed
 //   collide     contact = projection only (the thesis program): box planes, project back,
-//               v_n -> -e v_n (energy removed is recorded)
-//   measure     a force evaluation at the end state: energies, volumes, pressures, and
-//               the derivative the next step's first stage takes
-//   constrain   contact = projection only: inner layer kept inside the outer one (normals:
-//               the outer layer's dV/dx from the measurement; a corrected state is measured again)
-//   check       non-finite, layer inside out, runaway velocity or energy -> failure
-//   diagnose    energies, balance
+//               v_n -> -e v_n (the energy this changes is booked as removed)
+//   measure     one force evaluation at the end state (BodyOde::measureEnd): energies,
+//               volumes, pressures, the outer layer's normals, and the derivative the next
+//               step's first stage takes
+//   constrain   contact = projection only: inner layer kept inside the outer one (normals
+//               from the measurement; a corrected state is scanned and measured again)
+//   check       non-finite, runaway velocity or energy, a layer collapsed or inside out
+//               -> failure: the saved state is put back and kept
+//   commit      the measured diagnostics become the run's; time (a compensated sum), step
+//               count, error estimate; the measured derivative is kept for the next step
 //
-// On failure the last good state is restored and kept; no non-finite value ever leaves.
-// Parameters change only between steps (the caller owns the thread that steps).
+// On failure no non-finite value ever leaves. Parameters change only between steps (the
+// caller owns the thread that steps). Where the parts live: the force model forces.h, the
+// ODE and its Jacobians body_ode.h, step doubling step_doubling.h, the two contact stages and
+// the contact design point simulation_contacts.cpp.
 
+#include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -36,8 +48,27 @@
 #include "parallel.h"
 #include "params.h"
 #include "scenes.h"
+#include "step_doubling.h"
 
 namespace simcore {
+
+class BodyOde;
+
+// The stages of a step, in the order step() runs them (the header comment says what each
+// does).
+enum class Stage : int { Save, Size, Integrate, Scan, Collide, Measure, Constrain, Check, Commit, Count };
+inline constexpr int kStageCount = static_cast<int>(Stage::Count);
+// "save", "size", ... as in the header comment and `bench --stages`.
+std::string_view stageName(Stage stage);
+
+// Wall time per stage over the steps timed (Simulation::setProfiling).
+struct StepProfile {
+    std::array<double, kStageCount> seconds{};  // [s], by Stage
+    long steps = 0;                              // steps timed (a failed one included)
+    double& operator[](Stage stage) { return seconds[static_cast<std::size_t>(stage)]; }
+    double operator[](Stage stage) const { return seconds[static_cast<std::size_t>(stage)]; }
+    double total() const;                        // [s]
+};
 
 // Half-widths of the error bands of the plotted observables implied by a step's local error
 // estimate (Simulation::observableErrors). valid = false: the step had no estimate.
@@ -156,13 +187,13 @@ public:
     void setIntegratorOptions(const IntegratorOptions& options);
     const IntegratorOptions& integratorOptions() const { return m_integratorOptions; }
     // The step the next step() will try (dt for fixed-step integrators) [s].
-    double nextStep() const { return m_integrator->adaptive() ? m_hNext : m_dt; }
+    double nextStep() const { return m_integrator->adaptive() ? m_hNext : m_p.time.dt; }
     // Sets the step an adaptive integrator tries next (a resumed run); h > 0 and finite.
     void setNextStep(double h) {
         if (std::isfinite(h) && h > 0.0) m_hNext = h;
     }
     const Integrator& integrator() const { return *m_integrator; }
-    double dt() const { return m_dt; }
+    double dt() const { return m_p.time.dt; }
 
     // --- pointer (thesis 4.4) ---
     // Nearest particle that may be grabbed (outer layer, or either 1D particle).
@@ -222,17 +253,20 @@ public:
     // The ODE the integrators see, with its force Jacobians (for linear stability analysis).
     OdeSystem& odeSystem();
     Eigen::Vector3d boxCentre() const { return m_boxCentre; }
-    double boxHalfSize() const { return m_box; }
+    double boxHalfSize() const { return m_p.world.box; }
 
     // Energies and volumes of the current state (fills the non-accumulated fields of d).
     void measure(Diagnostics& d) const;
     // Whether each step measures its end state by a force evaluation whose result the next
     // step's first stage reuses (default), instead of separate energy and volume passes.
     // Trajectories are bit-identical either way; the switch exists to test and measure that.
-    void setReuseEndForces(bool on) {
-        m_reuseEndForces = on;
-        m_endValid = false;
-    }
+    void setReuseEndForces(bool on);
+
+    // --- profiling ---
+    // Whether each step times its stages (two clock reads per stage; off by default). Turning
+    // it on starts a new profile.
+    void setProfiling(bool on);
+    const StepProfile& profile() const { return m_profile; }
     // Cheap upper estimate of the body's fastest rate |s| [1/s] (spring frequency or damping
     // rate); explicit methods need roughly dt * |s| < kExplicitStabilityLimit. Used to warn
     // before a run.
@@ -241,35 +275,25 @@ public:
     // Whether contact is the thesis program's projection after the step (contact = projection)
     // rather than a force inside the ODE.
     bool contactProjection() const { return m_contactProjection; }
-    // The contact's linearisation point for the stability estimates (a body at its start has
-    // no contact, and U'' = 3 k d^2 vanishes at d = 0): the particles nearest the floor (the
-    // wall gravity pulls towards: those within a tenth of the body's height of its lowest
-    // point), each at the deeper of two design depths: a particle that falls from its height
-    // onto the floor and stops in the contact alone (k d^4/4 = m v^2/2), and the body's weight
-    // shared by those particles at rest (k d^3 = W / count). Empty when contact is not a
-    // force, when nothing falls (no gravity) or when the body hangs from a fixed particle.
-    struct ContactDesign {
-        std::vector<int> particles;  // the free particles nearest the floor
-        int axis = 1;                // the floor's normal axis
-        double depth = 0.0;          // d* [m]
-        double stiffness = 0.0;      // -dF/dx = 3 k d*^2 [N/m]
-        double damping = 0.0;        // -dF/dv = k d*^3 alpha at ddot = 0 [N s/m]
-        double friction = 0.0;       // tangential -dF/dv = mu k d*^3 / eps [N s/m]
-    };
+    // The contact's linearisation point for the stability estimates (contact.h): the
+    // particles nearest the floor (the wall gravity pulls towards: those within a tenth of the
+    // body's height of its lowest point), each at the depth at which they carry the body's
+    // weight at rest (k d^3 = W / count; an impact goes deeper, but only for a few steps:
+    // docs/numerics.md). Empty when contact is not a force, when nothing falls (no gravity)
+    // or when the body hangs from a fixed particle.
+    using ContactDesign = simcore::ContactDesign;
     ContactDesign contactDesign() const;
     // Whether odeSystem()'s Jacobians add the contact design point's stiffness (the stability
     // estimates linearise at the start state, where nothing touches yet). Off for integration.
     void setContactDesignInJacobians(bool on);
 
 private:
-    class System;
     void build();
     void applyForceParams();
     void applyMasses();  // m_body.mass and m_invMass3 from the mass parameters
     void startBookkeeping();
-    // With apply = false only report whether anything is in contact.
-    bool collide(bool apply);
-    bool collideRange(bool apply, int begin, int end);
+    bool usesStepDoubling() const { return m_integratorOptions.stepDoubling && !m_integrator->adaptive(); }
+
     // One pass over the particles (in pieces, summed in piece order) for what the checks and
     // the diagnostics need of the state: a step scans once, and again only after contacts.
     struct Scan {
@@ -280,6 +304,49 @@ private:
         double fastest = 0.0;               // largest particle speed [m/s]
     };
     Scan scanState() const;
+
+    // --- the step's stages (simulation.cpp; collide and constrain: simulation_contacts.cpp) ---
+    // What the stages of one step hand on to each other.
+    struct StepWork {
+        StepWork(const Diagnostics& diag, double until) : t0(diag.time), until(until), next(diag) {}
+        double t0 = 0.0;                    // time at the start of the step [s]
+        double until = 0.0;                 // an adaptive step does not pass it [s]
+        double h = 0.0;                     // the step tried [s]
+        bool clamped = false;               // h was shortened to land on `until`
+        StepReport report;                  // the integrator's
+        Scan scan;                          // of the state as it stands
+        Diagnostics next;                   // the step's diagnostics, the run's once it stands
+        std::optional<double> beforeContacts;  // total energy before a contact stage changed the state [J]
+    };
+    // Runs one stage, timed when profiling; its result: whether the step goes on.
+    template <class F>
+    bool inStage(Stage stage, F&& run) {
+        if (!m_profiling) return run();
+        const auto start = std::chrono::steady_clock::now();
+        const bool goOn = run();
+        m_profile[stage] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return goOn;
+    }
+    // The stages (false: the step failed there and ends).
+    bool save();
+    bool size(StepWork& w);
+    bool integrate(StepWork& w);
+    bool scan(StepWork& w);
+    bool collide(StepWork& w);
+    bool measure(StepWork& w);
+    bool constrain(StepWork& w);
+    bool check(StepWork& w);
+    bool commit(StepWork& w);
+    // A failed step: the reason is kept and the saved state put back.
+    void fail(std::string reason, const StepWork& w);
+
+    // The collide stage's box planes. With apply = false only report whether anything is in
+    // contact.
+    bool collideWalls(bool apply);
+    bool collideRange(bool apply, int begin, int end);
+    // The constrain stage's layer pairs; normals: the outer layer's dV/dx per particle
+    // (ForceModel::volumeGradient()).
+    bool constrainLayers(bool apply, kernels::PaddedRows normals);
     // Per-particle work in a fixed number of pieces (the force model's chunks, so sums
     // combined in piece order are the same for any number of threads), on the pool when
     // there is one: body(piece, firstParticle, endParticle).
@@ -298,18 +365,14 @@ private:
         else
             for (int k = 0; k < pieces; ++k) task(k);
     }
-    // normals: the outer layer's dV/dx per particle (ForceModel::volumeGradient()).
-    bool constrainLayers(bool apply, kernels::PaddedRows normals);
     // Why the state (measured into d) is unusable, or nothing.
     // `scan`: the state's scan (finiteness, fastest particle).
     std::optional<std::string> checkState(const Diagnostics& d, const Scan& scan) const;
     double totalEnergyNow() const;
-    void measureWithForces(Diagnostics& d, const Scan& scan);
-    // The energies and volumes by their own passes (no force evaluation).
-    void measureByPasses(Diagnostics& d, const Scan& scan) const;
-    // measureWithForces when the end-of-step forces are kept for the next step, else
-    // measureByPasses.
+    // The energies and volumes by the end-of-step force evaluation (BodyOde::measureEnd) when
+    // its derivative is kept for the next step, else by their own passes (measureByPasses).
     void measureState(Diagnostics& d, const Scan& scan);
+    void measureByPasses(Diagnostics& d, const Scan& scan) const;
     void fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
                          const std::array<double, 2>& volume, double contact, const Scan& scan) const;
 
@@ -319,8 +382,9 @@ private:
     std::unique_ptr<ThreadPool> m_pool;  // declared before m_forces, which points to it
     Body m_body;
     std::unique_ptr<Integrator> m_integrator;
-    std::unique_ptr<System> m_system;
     mutable ForceModel m_forces;
+    std::unique_ptr<BodyOde> m_ode;  // the ODE the integrators see, over m_body, m_forces, m_invMass3
+    StepDoubling m_doubling;      // wraps the integrator's step while step doubling is on
     Eigen::VectorXd m_y;          // [x | v | removed-by-damping | removed-by-contact]
     Eigen::VectorXd m_lastGood;   // state before the current step
     Eigen::VectorXd m_invMass3;   // 3N inverse masses, 0 on fixed particles and absent axes
@@ -328,33 +392,26 @@ private:
     double m_timeCarry = 0.0;     // round-off carried by the compensated time sum [s]
     std::optional<Failure> m_failure;
     Eigen::Vector3d m_boxCentre = Eigen::Vector3d::Zero();
-    double m_box = 5.0;
     BodyScale m_scale;
     bool m_contactProjection = false;  // contact = projection (else a force in the ODE)
-    double m_dt = 0.003;
     double m_hNext = 0.003;       // adaptive integrators: the step proposed by the last one [s]
     double m_hTaken = 0.003;      // the step being checked [s]
     IntegratorOptions m_integratorOptions;
-    Eigen::VectorXd m_doubling;   // step doubling: the full-step result [x | v | aux]
-    Eigen::VectorXd m_doublingError;  // step doubling: the last step's local error estimate
-    // The last step's local error estimate over the whole state (the integrator's, or
-    // m_doublingError), nullptr when it had none; for observableErrors().
+    // The last step's local error estimate over the whole state (the integrator's, or step
+    // doubling's), nullptr when it had none; for observableErrors().
     const double* m_lastError = nullptr;
     Eigen::VectorXd m_errorScratch;   // observableErrors(): the state while y + e is measured
     mutable Eigen::VectorXd m_breakdownForces;  // forceBreakdown(): 3N scratch
-    static constexpr Eigen::Index kAux = 2;  // integrated: energy removed by damping, by contact
     double m_energyScale = 1.0;   // for runaway detection [J]
-    // dy/dt at the end of the last step, evaluated to measure it; valid until anything but
-    // the next step changes the state, the parameters or the pointer.
+    // Whether the measure stage's force evaluation is kept for the next step (BodyOde's cache).
     bool m_reuseEndForces = true;
-    bool m_endValid = false;
-    Eigen::VectorXd m_endDerivative;
-    ForceExtras m_endExtras;
     Eigen::Index m_n = 0;         // 3N
     // The state or the system changed between steps (a projection, the pointer, a live edit,
     // a new state): the next step tells the integrator (Integrator::restart()).
     bool m_restartIntegrator = false;
     std::uint64_t m_jacobianProducts = 0;  // counted as force evaluations (CVODE)
+    bool m_profiling = false;
+    StepProfile m_profile;
 };
 
 // |h s| beyond which no classical explicit method here is stable (RK4 reaches 2.83 on the

@@ -193,6 +193,38 @@ private slots:
         // Asking for more than the CPU has falls back; never wider than asked.
         if (!kernels.isEmpty()) QVERIFY(sets.indexOf(at("kernels")) <= sets.indexOf(kernels));
     }
+    // bench --stages: one column per stage of the step (simulation.h's order) after the
+    // others; each stage's time lies inside its step, so they add up to no more than the step.
+    void benchTimesTheStages() {
+        const Result r = cli({"bench", "--scene", "ring2d", "--set", "contact=projection", "--steps", "300",
+                              "--integrator", "rk4", "--header", "--stages"});
+        QCOMPARE(r.code, 0);
+        const QStringList lines = r.out.trimmed().split('\n');
+        QCOMPARE(lines.size(), 2);
+        const QStringList header = lines[0].split(','), row = lines[1].split(',');
+        QCOMPARE(row.size(), header.size());
+        const QStringList stages{"save", "size", "integrate", "scan", "collide", "measure", "constrain", "check", "commit"};
+        const int first = header.indexOf("kernels") + 1;
+        QCOMPARE(header.mid(first), [&] {
+            QStringList columns;
+            for (const QString& stage : stages) columns << "us_" + stage;
+            return columns;
+        }());
+        double sum = 0.0;
+        for (int k = first; k < row.size(); ++k) {
+            bool ok = false;
+            const double us = row[k].toDouble(&ok);
+            QVERIFY2(ok && us >= 0.0, qPrintable(row[k]));
+            sum += us;
+        }
+        const double step = row[header.indexOf("us_per_step")].toDouble();
+        QVERIFY(row[header.indexOf("us_integrate")].toDouble() > 0.0);
+        // us_per_step is printed to 0.01 us and each stage to 0.001 us.
+        QVERIFY2(sum <= step + 0.005 + 0.0005 * stages.size(), qPrintable(QString("stages %1 us, step %2 us").arg(sum).arg(step)));
+        // Without --stages: no stage columns.
+        const Result plain = cli({"bench", "--scene", "ring2d", "--steps", "3", "--header"});
+        QCOMPARE(plain.out.split('\n').first().split(',').last(), QString("kernels"));
+    }
     void failedRunExitsWithThreeAndKeepsGoodRows() {
         const QString csv = path("fail.csv"), state = path("fail-state.csv");
         const Result r = cli({"run", "--scene", "ring2d", "--integrator", "euler", "--dt", "0.3", "--set", "perturb=0.01",

@@ -5,6 +5,7 @@
 
 #include "analytic.h"
 #include "simulation.h"
+#include "step_doubling.h"
 
 using namespace simcore;
 
@@ -39,6 +40,17 @@ double observedOrder(const ParameterSet& p, const std::string& integrator, doubl
     // Least-squares slope over three halvings.
     return (std::log2(e1) - std::log2(e3)) / 2.0 + 0.0 * e2;
 }
+
+// y' = lambda y on a state of one coordinate and its velocity slot (positions = 1, no aux).
+class Decay final : public OdeSystem {
+public:
+    explicit Decay(double lambda) : m_lambda(lambda) {}
+    StateLayout layout() const override { return {1, 0}; }
+    void derivative(double, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) override { dydt = m_lambda * y; }
+
+private:
+    double m_lambda;
+};
 
 }  // namespace
 
@@ -150,6 +162,53 @@ private slots:
         QCOMPARE(sim.stepCount(), 1000000L);
         QVERIFY(std::abs(sim.time() - 1000.0) < 1e-9);
     }
+    void stepDoublingIsRichardson() {
+        // StepDoubling wraps a method's step: the run keeps the one step of h, and the
+        // estimate is (y_h/2 - y_h) / (1 - 2^-p). For euler on y' = l y from y0:
+        // y_h = (1 + hl) y0, y_h/2 = (1 + hl/2)^2 y0, so e = 2 (hl/2)^2 y0 = (hl)^2 y0 / 2,
+        // the leading term of the true local error e^{hl} - 1 - hl.
+        const double lambda = -3.0, h = 0.01;
+        Decay system(lambda);
+        auto euler = makeIntegrator("euler");
+        euler->prepare(system.layout());
+        Eigen::VectorXd plain(2), wrapped(2);
+        plain << 1.5, -0.5;
+        wrapped = plain;
+        const Eigen::VectorXd y0 = plain;
+        StepDoubling doubling;
+        doubling.prepare(wrapped.size());
+        QVERIFY(doubling.localError() == nullptr);
+        const StepReport unwrapped = euler->step(system, 0.0, h, plain);
+        const StepReport report = doubling.step(*euler, system, 0.0, h, wrapped);
+        QVERIFY(!report.failure && !unwrapped.failure);
+        QVERIFY(wrapped == plain);  // the run keeps y_h, bit for bit
+        QVERIFY(unwrapped.errorEstimate < 0.0);
+        const double* e = doubling.localError();
+        QVERIFY(e != nullptr);
+        for (int k = 0; k < 2; ++k) {
+            const double expected = (h * lambda) * (h * lambda) / 2.0 * y0[k];
+            QVERIFY2(std::abs(e[k] - expected) <= 1e-12 * std::abs(expected),
+                     qPrintable(QString("e[%1] = %2, expected %3").arg(k).arg(e[k]).arg(expected)));
+        }
+        // The report's estimate: the RMS of e over the positions per particle (one here).
+        QVERIFY(std::abs(report.errorEstimate - std::abs(e[0])) <= 1e-15);
+        // Order 2 (midpoint): the estimate is 4/3 of the half steps' difference and shrinks
+        // as h^3.
+        auto midpoint = makeIntegrator("midpoint");
+        midpoint->prepare(system.layout());
+        auto estimate = [&](double step) {
+            Eigen::VectorXd y = y0;
+            return doubling.step(*midpoint, system, 0.0, step, y).errorEstimate;
+        };
+        const double ratio = estimate(0.02) / estimate(0.01);
+        QVERIFY2(std::abs(ratio - 8.0) < 0.2, qPrintable(QString("ratio %1").arg(ratio)));
+        // A non-finite step has no estimate.
+        Eigen::VectorXd bad(2);
+        bad << std::nan(""), 1.0;
+        QVERIFY(doubling.step(*euler, system, 0.0, h, bad).errorEstimate < 0.0);
+        QVERIFY(doubling.localError() == nullptr);
+    }
+
     void unknownIntegratorIsRefused() {
         QVERIFY(!makeIntegrator("rk5"));
         QVERIFY_THROWS_EXCEPTION(std::invalid_argument, Simulation(oscillator(1.0), "leapfrog"));

@@ -344,6 +344,49 @@ private slots:
         }
     }
 
+    void stagesAreNamedAndTimed() {
+        // The step is simulation.h's fixed list of stages, in its order; profiling times each
+        // and changes no bit of the run.
+        QStringList names;
+        for (int s = 0; s < kStageCount; ++s) {
+            const std::string_view name = stageName(static_cast<Stage>(s));
+            names << QString::fromUtf8(name.data(), qsizetype(name.size()));
+        }
+        QCOMPARE(names, QStringList({"save", "size", "integrate", "scan", "collide", "measure", "constrain", "check",
+                                     "commit"}));
+        // contact = projection: the collide and constrain stages have work.
+        const ParameterSet p = params(SceneKind::Ring2d, {{"contact", 1.0}});
+        Simulation timed(p, "rk4"), plain(p, "rk4");
+        timed.setProfiling(true);
+        for (int i = 0; i < 400; ++i) QVERIFY(timed.step() && plain.step());
+        QVERIFY(timed.state() == plain.state());
+        QCOMPARE(timed.diagnostics().forceEvaluations, plain.diagnostics().forceEvaluations);
+        const StepProfile& profile = timed.profile();
+        QCOMPARE(profile.steps, 400L);
+        double sum = 0.0;
+        for (int s = 0; s < kStageCount; ++s) {
+            QVERIFY(profile[static_cast<Stage>(s)] >= 0.0);
+            sum += profile[static_cast<Stage>(s)];
+        }
+        QCOMPARE(profile.total(), sum);
+        QVERIFY(profile[Stage::Integrate] > 0.0);  // 1600 force evaluations take some time
+        // Off (the default): nothing is timed. On again: a new profile.
+        QVERIFY(plain.step());
+        QCOMPARE(plain.profile().steps, 0L);
+        QCOMPARE(plain.profile().total(), 0.0);
+        timed.setProfiling(true);
+        QCOMPARE(timed.profile().steps, 0L);
+        // A step that fails is timed up to the stage that failed it, and counted.
+        ParameterSet wild = p;
+        wild.set(Param::Dt, 0.05);
+        Simulation failing(wild, "euler");
+        failing.setProfiling(true);
+        while (failing.step()) {
+        }
+        QVERIFY(failing.failed());
+        QCOMPARE(failing.profile().steps, failing.stepCount() + 1);
+    }
+
     void observableErrorsFollowTheEstimate() {
         // The error bands of volume, pressure and energy (issue 16): there for the methods with
         // a local error estimate (rk45, CVODE, step doubling), absent for rk4 alone, narrower

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 #include "cli.h"
 #include "force_kernels.h"
@@ -24,6 +25,7 @@ struct BenchArgs {
     long steps = 200, warmup = 10, threads = simcore::hardwareThreads();
     std::string kernels;
     bool header = false;
+    bool stages = false;
     SceneSetup setup;  // after check()
 };
 
@@ -51,6 +53,9 @@ int runBench(const BenchArgs& args) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
     sim.setThreads(static_cast<int>(threads));
     for (long i = 0; i < warmup; ++i) sim.step();
+    // With --stages the timed steps time their stages too (two clock reads per stage, which
+    // us_per_step then includes).
+    sim.setProfiling(args.stages);
     const std::uint64_t evalsBefore = sim.diagnostics().forceEvaluations;
     const auto start = std::chrono::steady_clock::now();
     for (long i = 0; i < steps && !sim.failed(); ++i) sim.step();
@@ -66,13 +71,25 @@ int runBench(const BenchArgs& args) {
     const double usPerStep = 1e6 * seconds / static_cast<double>(steps);
     const double nsPerSpring = 1e9 * seconds / (evals * static_cast<double>(topo.springCount()));
     const double realTime = sim.dt() / (seconds / static_cast<double>(steps));
-    if (args.header)
+    if (args.header) {
         std::printf("scene,integrator,threads,particles,springs,faces,steps,us_per_step,ns_per_spring_eval,"
-                    "steps_per_second,real_time_factor,build_seconds,peak_rss_mib,kernels\n");
-    std::printf("%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%s\n", setup.sceneName.c_str(),
+                    "steps_per_second,real_time_factor,build_seconds,peak_rss_mib,kernels");
+        // One column per stage of the step (simulation.h), in its order: us per step.
+        if (args.stages)
+            for (int s = 0; s < simcore::kStageCount; ++s)
+                std::printf(",us_%s", std::string(simcore::stageName(static_cast<simcore::Stage>(s))).c_str());
+        std::printf("\n");
+    }
+    std::printf("%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%s", setup.sceneName.c_str(),
                 setup.integrator.c_str(), sim.threads(), topo.particleCount(), topo.springCount(), faces,
                 steps, usPerStep, nsPerSpring, 1e6 / usPerStep, realTime, buildSeconds,
                 static_cast<double>(peakResidentKiB()) / 1024.0, kernels::kernelSetName(kernels::kernelsInUse()));
+    if (args.stages) {
+        const simcore::StepProfile& profile = sim.profile();
+        for (int s = 0; s < simcore::kStageCount; ++s)
+            std::printf(",%.3f", 1e6 * profile[static_cast<simcore::Stage>(s)] / static_cast<double>(profile.steps));
+    }
+    std::printf("\n");
     return kExitOk;
 }
 
@@ -94,6 +111,9 @@ Command addBenchCommand(CLI::App& app) {
         ->type_name("SET")
         ->check(CLI::IsMember({"portable", "avx2", "avx512"}));
     sub->add_flag("--header", args->header, "print the CSV header line first");
+    sub->add_flag("--stages", args->stages,
+                  "also time each stage of the step (save, size, integrate, scan, collide, measure, constrain, "
+                  "check, commit): one column of us per step each, after the others");
     return {sub, [args] { checkBench(*args); }, [args] { return runBench(*args); }};
 }
 
