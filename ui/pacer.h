@@ -70,7 +70,8 @@ public:
     void endTick(double simTime, bool outOfBudget);
 
     bool fallingBehind() const { return m_fallingBehind; }
-    // Steps per wall second over the last closed window (0 while paused).
+    // Steps counted per wall second over the last closed window, at least kRateWindow long
+    // (0 while paused).
     double stepsPerSecond() const { return m_running ? m_stepsPerSecond : 0.0; }
 
     // Whether a frame is due now: always when forced, otherwise once kPublishInterval has
