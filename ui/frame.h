@@ -86,7 +86,9 @@ struct Frame {
     bool running = false;
     Speed speed = Speed::RealTime;
     double wallSeconds = 0.0;             // wall time spent running since the last reset [s]
-    double stepsPerSecond = 0.0;          // lane 0, measured over the last second
+    // Worker steps per wall second (a step of the lane alone, a common DT side by side),
+    // measured over the last half second or more.
+    double stepsPerSecond = 0.0;
     bool fallingBehind = false;           // real-time mode could not keep up
     double explicitDtLimit = 0.0;         // estimated largest stable DT of explicit methods [s]
     quint64 serial = 0;                   // increases with every published frame

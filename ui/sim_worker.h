@@ -1,15 +1,19 @@
 #pragma once
 // SimWorker: owns the simulations and steps them on its own thread (see simulation_controller.h).
+// It is the QObject that takes the commands and orchestrates four parts, one job each:
+//
+//   Lanes           (lanes.h)            one simulation per integrator, stepped side by side
+//                                        to a common time; edits and mouse input go to all
+//   Pacer           (pacer.h)            the wall clock: where simulated time should be, the
+//                                        tick budget, falling behind, steps/s, frames due
+//   FramePublisher  (frame_publisher.h)  rows since the last frame, the slot the GUI takes from
+//   the timeline    (here)               recorder, input log, scrubbing and replay
 //
 // Every command runs on the worker thread between two steps (the controller's inbox delivers
 // them as events, never inside a timer tick), so a parameter edit, a grab, a reset ... can
 // never land in the middle of a step. Stepping is driven by a timer:
 // each tick advances simulated time to where the clock says it should be (real time, a
 // fraction of it, or as far as a time budget allows), then publishes one frame.
-//
-// Lanes: one simulation per integrator. Side by side, every lane starts from the same
-// state, gets the same parameter edits and the same mouse input, and is advanced to the
-// same simulated time after every step of the common DT.
 //
 // Time travel: every moment of the run is recorded (simcore::TimelineRecorder: checkpoints of
 // every lane every K steps within a memory budget, plus the log of what was done between
@@ -18,12 +22,12 @@
 // the log, so it is the original frame bit for bit. Anything that changes the run at a
 // scrubbed moment (an edit, a grab, a step, Run) is a branch: the future after it is
 // forgotten here (the GUI keeps its rows as the abandoned future) and the run goes on from it.
+// The timeline stays in SimWorker because a replay is orchestration of the other three: it
+// steps the lanes, applies the logged edits (which can emit a rejection), keeps rows and
+// frames back while it re-simulates, and marks branches in the publisher; as a class of its
+// own it would need a way back into all of them and into this object's signals.
 
-#include <algorithm>
-#include <atomic>
-#include <functional>
-#include <memory>
-#include <mutex>
+#include <string>
 #include <vector>
 
 #include <QObject>
@@ -31,17 +35,14 @@
 #include <QVector3D>
 
 #include "frame.h"
+#include "frame_publisher.h"
+#include "lanes.h"
+#include "pacer.h"
 #include "timeline.h"
 
 class QTimer;
 
 namespace elui {
-
-// Monotonic wall time in seconds. The worker reads the wall only through this: its pacing
-// (real time, a fraction of it), the tick budget, the frame rate and the steps-per-second
-// meter. The default is std::chrono::steady_clock; a test passes a clock it moves itself.
-using WallClock = std::function<double()>;
-WallClock steadyWallClock();
 
 class SimWorker : public QObject {
     Q_OBJECT
@@ -50,14 +51,14 @@ public:
     ~SimWorker() override;
 
     // Thread-safe: the newest frame and the rows recorded since the last take.
-    FrameBatch takeBatch();
+    FrameBatch takeBatch() { return m_publisher.takeBatch(); }
     // Thread-safe: the serial number of the newest frame published (0: none yet).
-    quint64 publishedSerial() const { return m_published.load(); }
+    quint64 publishedSerial() const { return m_publisher.publishedSerial(); }
     // Lane 0 as a scene file with its exact state. Worker thread only (between two steps).
     SceneCapture captureScene() const;
 
     // Smallest simulated interval between two recorded time-series rows [s].
-    static constexpr double kRowInterval = 1e-3;
+    static constexpr double kRowInterval = FramePublisher::kRowInterval;
 
     // --- commands: worker thread only (SimulationController posts them through its inbox) ---
     // Builds the lanes. An impossible scene keeps the old one and reports sceneRejected.
@@ -123,17 +124,12 @@ signals:
 private:
     void tick();
     // The lanes for params, one per integrator; empty (after sceneRejected) when impossible.
-    std::vector<std::unique_ptr<simcore::Simulation>> buildLanes(const simcore::ParameterSet& params,
-                                                                 const QStringList& integrators);
+    Lanes::List buildLanes(const simcore::ParameterSet& params, const QStringList& integrators);
     bool stepAll();                       // one common DT for every lane; false: nothing ran
-    void restartClock();
-    void applyKick();
     void startHistory();
     void afterRebuild();
-    void recordRow();
-    void publish(bool force);
-    bool allFailed() const;
-    void updateDtLimit();
+    void recordRow();                     // lane 0's row, unless re-simulating
+    void publish(bool force);             // a frame, if one is due (always when forced)
 
     // Time travel. What was done between two steps, replayed when a moment is re-simulated.
     struct Input {
@@ -160,36 +156,18 @@ private:
     void goTo(long target);               // scrubTo without the frame
     TimelineInfo timelineInfo() const;
 
-    std::vector<std::unique_ptr<simcore::Simulation>> m_lanes;
+    Lanes m_lanes;
+    Pacer m_pacer;
+    FramePublisher m_publisher;
     std::shared_ptr<const SceneData> m_scene;
     quint64 m_sceneVersion = 0;
     simcore::ParameterSet m_params;
     QTimer* m_timer = nullptr;
 
-    bool m_running = false;
-    Speed m_speed = Speed::RealTime;
     double m_until = -1.0;                // runUntil target, < 0: none
     bool m_forcesWanted = false;
     bool m_bandsWanted = false;
     int m_selected = -1;                  // the particle whose force breakdown frames carry
-    bool m_stepDoubling = false;
-    int m_threads = std::max(1, simcore::hardwareThreads() - 1);  // force-evaluation threads
-    double m_kickInner = 0.0, m_kickOuter = 0.0;
-    double m_dtLimit = 0.0;               // estimated explicit stability limit on DT [s]
-    double m_commonTime = 0.0;            // the time every live lane has reached [s]
-
-    // Clock: simulated time at the last (re)start, and wall time since then [s].
-    double since(double wallStart) const { return m_now() - wallStart; }
-    WallClock m_now;
-    double m_clockStart = -1.0;           // wall time of the last (re)start, < 0: never started
-    double m_clockSimStart = 0.0;
-    double m_wallBeforeStart = 0.0;       // wall time run before the last start [s]
-    bool m_fallingBehind = false;
-    double m_rateStart = 0.0;
-    long m_rateSteps = 0;
-    double m_stepsPerSecond = 0.0;
-    double m_publishStart = 0.0;
-    double m_lastRowTime = -1.0;
     bool m_failureReported = false;
 
     simcore::TimelineRecorder m_recorder;
@@ -197,16 +175,6 @@ private:
     long m_moment = 0;                    // the moment the lanes are at
     bool m_replaying = false;             // re-simulating: no rows, no recording, no frames
     double m_firstTime = 0.0, m_lastTime = 0.0;  // lane 0's time at the first and newest moment
-    std::vector<FrameBatch::Branch> m_branches;  // since the last publish
-
-    std::vector<simcore::Diagnostics> m_rows;  // recorded since the last publish (worker only)
-    bool m_historyReset = true;
-    quint64 m_serial = 0;
-    std::atomic<quint64> m_published{0};
-
-    std::mutex m_slotMutex;               // guards the three fields below
-    FrameBatch m_slot;
-    bool m_slotPending = false;
 };
 
 }  // namespace elui

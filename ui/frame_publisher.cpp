@@ -1,0 +1,67 @@
+#include "frame_publisher.h"
+
+namespace elui {
+
+void FramePublisher::recordRow(simcore::Simulation& lane0, bool errorBands) {
+    if (lane0.failed()) return;
+    const double t = lane0.time();
+    if (m_lastRowTime >= 0.0 && t - m_lastRowTime < kRowInterval * (1.0 - 1e-9)) return;
+    m_lastRowTime = t;
+    m_rows.push_back(lane0.diagnostics());
+    // The plots' error bands (two measurements per row, only for steps with an estimate and
+    // while the plots show them).
+    if (errorBands) m_rows.back().errors = lane0.observableErrors();
+}
+
+void FramePublisher::startHistory() {
+    m_lastRowTime = -1.0;
+    m_rows.clear();
+    m_historyReset = true;
+}
+
+void FramePublisher::branch(double time) {
+    m_branches.push_back({m_rows.size(), time});
+    m_lastRowTime = -1.0;  // the branch's rows start at once
+}
+
+void FramePublisher::publish(std::shared_ptr<Frame> frame) {
+    frame->serial = ++m_serial;
+    std::lock_guard lock(m_slotMutex);
+    m_slot.frame = std::move(frame);
+    if (m_historyReset) {
+        // Rows not yet taken from before the reset belong to the old history: drop them.
+        m_slot.rows.clear();
+        m_slot.historyReset = true;
+        m_slot.branches.clear();
+        m_historyReset = false;
+    }
+    for (FrameBatch::Branch b : m_branches) {
+        b.rowsBefore += m_slot.rows.size();
+        m_slot.branches.push_back(b);
+    }
+    m_branches.clear();
+    m_slot.rows.insert(m_slot.rows.end(), m_rows.begin(), m_rows.end());
+    m_rows.clear();
+    m_published.store(m_slot.frame->serial);
+    if (!m_slotPending) {
+        m_slotPending = true;
+        m_announce();
+    }
+}
+
+void FramePublisher::clear() {
+    m_rows = {};
+    m_branches = {};
+    std::lock_guard lock(m_slotMutex);
+    m_slot = FrameBatch{};
+}
+
+FrameBatch FramePublisher::takeBatch() {
+    std::lock_guard lock(m_slotMutex);
+    FrameBatch out = std::move(m_slot);
+    m_slot = FrameBatch{};
+    m_slotPending = false;
+    return out;
+}
+
+}  // namespace elui

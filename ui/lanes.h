@@ -1,0 +1,106 @@
+#pragma once
+// Lanes: the worker's simulations, one per integrator (see sim_worker.h).
+//
+// In normal mode there is one lane; side by side there are up to three, every one built from
+// the same parameters, given the same start kick, the same edits and the same mouse input, and
+// advanced to the same simulated time (the common time) after every step of the common DT.
+// Lanes owns them and what holds for all of them together: the common time, the estimated
+// explicit stability limit on DT, the start kick, step doubling and the force-evaluation
+// threads. SimWorker calls it, on the worker thread only, between two steps; what a lane
+// looks like in a frame comes from laneFrames().
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <QStringList>
+
+#include "frame.h"
+#include "timeline.h"
+
+namespace elui {
+
+class Lanes {
+public:
+    using List = std::vector<std::unique_ptr<simcore::Simulation>>;
+
+    // One lane per integrator from params, with this set's threads and step doubling; empty, with
+    // the reason in `error`, when the scene is impossible (empty, no error, for no integrator).
+    // The set itself is left as it was.
+    List build(const simcore::ParameterSet& params, const QStringList& integrators,
+               std::optional<std::string>& error) const;
+    // Takes the lanes built (the old ones go).
+    void adopt(List lanes) { m_lanes = std::move(lanes); }
+    void clear() { m_lanes.clear(); }
+
+    bool empty() const { return m_lanes.empty(); }
+    std::size_t size() const { return m_lanes.size(); }
+    simcore::Simulation& front() { return *m_lanes.front(); }
+    const simcore::Simulation& front() const { return *m_lanes.front(); }
+    // Read-only views of every lane, in order (the recorder's argument).
+    std::vector<const simcore::Simulation*> views() const;
+
+    // --- stepping ---
+    // One step of the common DT for every live lane, never past `until` (< 0: no limit). One
+    // lane steps on its own (its own adaptive step, if any); side by side every live lane is
+    // advanced to the same time. The common time then is where they are.
+    void stepAll(double until);
+    double commonTime() const { return m_commonTime; }
+    // The common time as a checkpoint held it [s].
+    void setCommonTime(double t) { m_commonTime = t; }
+    // The common time is lane 0's (after a rebuild, a reset or an opened state).
+    void syncCommonTime() { m_commonTime = m_lanes.front()->time(); }
+    bool allFailed() const;
+    // Whether the run cannot go on: lane 0 failed on its own, or every lane side by side.
+    bool stopped() const { return m_lanes.size() == 1 ? m_lanes.front()->failed() : allFailed(); }
+    // Every lane's integrator can be restored exactly from a checkpoint (CVODE cannot).
+    bool restorable() const;
+    void reset();
+    // Every lane back to checkpoint c (the lanes it holds).
+    void restore(const simcore::TimelineCheckpoint& c);
+
+    // --- what applies to every lane ---
+    // A shape or start parameter: lane 0 first; its refusal is returned and no lane changes.
+    // The others follow (a refusal of theirs is not reported: lane 0 decides).
+    std::optional<std::string> trySetParameter(simcore::Param id, double value);
+    // A live edit already validated: every lane.
+    void setParameter(simcore::Param id, double value);
+    bool stepDoubling() const { return m_stepDoubling; }
+    void setStepDoubling(bool on);
+    // Step doubling as lane 0 has it (after a checkpoint was restored).
+    void readStepDoubling() { m_stepDoubling = m_lanes.front()->integratorOptions().stepDoubling; }
+    void grab(int particle, const Eigen::Vector3d& anchor);
+    void moveAnchor(const Eigen::Vector3d& anchor);
+    void release();
+
+    // The start kick: velocity along x given to every inner (+) and outer (-) particle [m/s].
+    void setKick(double innerVx, double outerVx) {
+        m_kickInner = innerVx;
+        m_kickOuter = outerVx;
+    }
+    // Gives every lane the start kick (replacing its velocities), if there is one.
+    void applyKick();
+
+    // Estimated explicit stability limit on DT from lane 0's fastest rate (0: none) [s].
+    double dtLimit() const { return m_dtLimit; }
+    void updateDtLimit();
+
+    // Every lane as a frame shows it: positions, diagnostics, failure, pointer, divergence from
+    // lane 0, and (when wanted) the force vectors and the selected particle's breakdown.
+    std::vector<LaneFrame> laneFrames(bool forces, int selected) const;
+
+private:
+    List m_lanes;
+    double m_commonTime = 0.0;            // the time every live lane has reached [s]
+    double m_dtLimit = 0.0;               // estimated explicit stability limit on DT [s]
+    double m_kickInner = 0.0, m_kickOuter = 0.0;  // start kick along x [m/s]
+    bool m_stepDoubling = false;
+    int m_threads = std::max(1, simcore::hardwareThreads() - 1);  // force-evaluation threads
+};
+
+// Lane sim's integrator name, as the GUI shows it.
+QString integratorName(const simcore::Simulation& sim);
+
+}  // namespace elui
