@@ -19,7 +19,7 @@ Lanes::List Lanes::build(const simcore::ParameterSet& params, const QStringList&
     try {
         for (const QString& name : integrators) {
             auto sim = std::make_unique<simcore::Simulation>(params, name.toStdString());
-            // One force thread: the GUI thread (and a software GL renderer) needs the other core.
+            // All cores but one for the forces: the GUI thread (and a software GL renderer) needs one.
             sim->setThreads(m_threads);
             sim->setIntegratorOptions([&] {
                 simcore::IntegratorOptions o = sim->integratorOptions();
