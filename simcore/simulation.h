@@ -308,7 +308,7 @@ private:
     // --- the step's stages (simulation.cpp; collide and constrain: simulation_contacts.cpp) ---
     // What the stages of one step hand on to each other.
     struct StepWork {
-        StepWork(const Diagnostics& diag, double until) : t0(diag.time), until(until), next(diag) {}
+        StepWork(const Diagnostics& diag, double end) : t0(diag.time), until(end), next(diag) {}
         double t0 = 0.0;                    // time at the start of the step [s]
         double until = 0.0;                 // an adaptive step does not pass it [s]
         double h = 0.0;                     // the step tried [s]

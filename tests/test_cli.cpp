@@ -204,14 +204,14 @@ private slots:
         const QStringList header = lines[0].split(','), row = lines[1].split(',');
         QCOMPARE(row.size(), header.size());
         const QStringList stages{"save", "size", "integrate", "scan", "collide", "measure", "constrain", "check", "commit"};
-        const int first = header.indexOf("kernels") + 1;
+        const qsizetype first = header.indexOf("kernels") + 1;
         QCOMPARE(header.mid(first), [&] {
             QStringList columns;
             for (const QString& stage : stages) columns << "us_" + stage;
             return columns;
         }());
         double sum = 0.0;
-        for (int k = first; k < row.size(); ++k) {
+        for (qsizetype k = first; k < row.size(); ++k) {
             bool ok = false;
             const double us = row[k].toDouble(&ok);
             QVERIFY2(ok && us >= 0.0, qPrintable(row[k]));
@@ -220,7 +220,7 @@ private slots:
         const double step = row[header.indexOf("us_per_step")].toDouble();
         QVERIFY(row[header.indexOf("us_integrate")].toDouble() > 0.0);
         // us_per_step is printed to 0.01 us and each stage to 0.001 us.
-        QVERIFY2(sum <= step + 0.005 + 0.0005 * stages.size(), qPrintable(QString("stages %1 us, step %2 us").arg(sum).arg(step)));
+        QVERIFY2(sum <= step + 0.005 + 0.0005 * static_cast<double>(stages.size()), qPrintable(QString("stages %1 us, step %2 us").arg(sum).arg(step)));
         // Without --stages: no stage columns.
         const Result plain = cli({"bench", "--scene", "ring2d", "--steps", "3", "--header"});
         QCOMPARE(plain.out.split('\n').first().split(',').last(), QString("kernels"));

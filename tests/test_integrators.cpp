@@ -45,6 +45,7 @@ double observedOrder(const ParameterSet& p, const std::string& integrator, doubl
 class Decay final : public OdeSystem {
 public:
     explicit Decay(double lambda) : m_lambda(lambda) {}
+    using OdeSystem::derivative;
     StateLayout layout() const override { return {1, 0}; }
     void derivative(double, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) override { dydt = m_lambda * y; }
 
