@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QLabel>
@@ -16,6 +17,7 @@
 #include "export.h"
 #include "main_window.h"
 #include "presets.h"
+#include "run_dock.h"
 #include "scenefile.h"
 #include "scenes.h"
 #include "simulation_controller.h"
@@ -160,6 +162,11 @@ private slots:
             QVERIFY(census(v->grabFramebuffer()).changed > 0.03);
         }
         QCOMPARE(w.controller()->latest()->parameters.get(simcore::Param::Dt), 0.03);
+        // The Run dock's integrator is no one lane's: it shows none, and its placeholder says why.
+        QComboBox* integrator = w.runDock()->integratorCombo();
+        QTRY_COMPARE_WITH_TIMEOUT(integrator->currentIndex(), -1, testsupport::kHangGuardMs);
+        QVERIFY(!integrator->isEnabled());
+        QVERIFY(integrator->placeholderText().contains("side by side"));
         w.controller()->runUntil(2.0);
         // On the two-layer ring at DT 0.03 every explicit method blows up within a second
         // (measured with elastic-lab-cli); when all lanes have failed the run pauses by itself.
@@ -184,6 +191,10 @@ private slots:
         QVERIFY(f->lanes[1].divergence > 0.0 && f->lanes[2].divergence > 0.0);
         w.singleView();
         QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 1, testsupport::kHangGuardMs);
+        // One lane again: the combo is its integrator's, and editable.
+        QTRY_COMPARE_WITH_TIMEOUT(integrator->currentText(), w.controller()->integrators().front(),
+                                  testsupport::kHangGuardMs);
+        QVERIFY(integrator->isEnabled());
     }
 
     void mouseDragGrabsAndPulls_data() {

@@ -32,6 +32,7 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
                                   QStringLiteral("order %1: %2").arg(info.order).arg(toQString(info.description)),
                                   Qt::ToolTipRole);
     }
+    m_integrator->setPlaceholderText(tr("side by side (see each view)"));
     form->addRow(tr("Integrator"), m_integrator);
     m_dt = new QLineEdit(host);
     m_dt->setObjectName(QStringLiteral("dtEdit"));
@@ -105,8 +106,14 @@ void RunDock::showFrame(const FramePtr& frame) {
     m_run->setText(m_running ? tr("Pause") : tr("Run"));
     const LaneFrame& lane = frame->lanes.front();
     const bool single = frame->lanes.size() == 1;
+    // Side by side each view names its own integrator: the combo is not one lane's, so it shows
+    // none (its placeholder says why) rather than a stale name.
     m_integrator->setEnabled(single);
-    if (single && m_integrator->currentText() != lane.integrator) m_integrator->setCurrentText(lane.integrator);
+    if (single) {
+        if (m_integrator->currentText() != lane.integrator) m_integrator->setCurrentText(lane.integrator);
+    } else if (m_integrator->currentIndex() != -1) {
+        m_integrator->setCurrentIndex(-1);
+    }
     const double dt = frame->parameters.get(simcore::Param::Dt);
     if (dt != m_shownDt && !m_dt->hasFocus()) {
         m_dt->setText(QString::number(dt, 'g', 10));
