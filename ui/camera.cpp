@@ -74,8 +74,17 @@ QMatrix4x4 Camera::projection(const QSize& viewport) const {
         p.ortho(-hh * aspect, hh * aspect, -hh, hh, 1.0f, 200.0f);
     }
     else
-        p.perspective(m_fovY, aspect, std::max(0.05f, m_distance * 0.02f), m_distance * 20.0f);
+        p.perspective(fovY(viewport), aspect, std::max(0.05f, m_distance * 0.02f), m_distance * 20.0f);
     return p;
+}
+
+float Camera::fovY(const QSize& viewport) const {
+    // A view taller than wide keeps m_fovY across its width (the framing fit() chose holds
+    // on the narrow side: the body is not cut at the sides of a narrow view), so its vertical
+    // angle grows: tan(fovY / 2) = tan(m_fovY / 2) / aspect.
+    const float aspect = float(std::max(1, viewport.width())) / float(std::max(1, viewport.height()));
+    const float halfTan = std::tan(0.5f * m_fovY * float(M_PI) / 180.0f);
+    return aspect >= 1.0f ? m_fovY : 2.0f * std::atan(halfTan / aspect) * 180.0f / float(M_PI);
 }
 
 Ray Camera::rayAt(const QPointF& pixel, const QSize& viewport) const {
@@ -90,7 +99,7 @@ Ray Camera::rayAt(const QPointF& pixel, const QSize& viewport) const {
 float Camera::worldPerPixel(const QSize& viewport) const {
     const float h = float(std::max(1, viewport.height()));
     if (m_flat) return 2.0f * flatHalfHeight(viewport) / h;
-    return 2.0f * m_distance * std::tan(0.5f * m_fovY * float(M_PI) / 180.0f) / h;
+    return 2.0f * m_distance * std::tan(0.5f * fovY(viewport) * float(M_PI) / 180.0f) / h;
 }
 
 }  // namespace elui

@@ -37,6 +37,9 @@ public:
     Ray rayAt(const QPointF& pixel, const QSize& viewport) const;
     // World length of one pixel at the target's depth.
     float worldPerPixel(const QSize& viewport) const;
+    // 3D: the vertical field of view in a viewport of this size [deg]: the camera's 40 degrees,
+    // or more in a view taller than wide, so that 40 degrees fit across its width.
+    float fovY(const QSize& viewport) const;
 
     bool operator==(const Camera&) const = default;
 
