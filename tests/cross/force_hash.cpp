@@ -16,6 +16,7 @@
 // ForceModel::evaluate, evaluateMotion, evaluateReference, the volume gradient, the energies
 // and volumes. Then each kernel of the set in use on blocks of length 0..40 at an offset (the
 // inputs of tests/test_force_kernels.cpp): every remainder of the four- and eight-lane loops.
+// Last, Eigen's reductions over long vectors (see runReductions).
 
 #include <algorithm>
 #include <cmath>
@@ -315,6 +316,33 @@ void runKernels() {
     }
 }
 
+// Eigen's reductions over whole-state vectors (VectorXd), as the integrators use them outside
+// the force evaluation (error norms, convergence tests, the Jacobian-vector product's dot): on
+// random vectors of lengths 1, 8, ..., 2998, one hash per reduction over all lengths. Their
+// order of summation is Eigen's and could depend on the target's vectors, as the row-wise mean
+// did (simcore's centroid).
+void runReductions() {
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::vector<double> squaredNorm, norm, dot, sum;
+    for (int n = 1; n <= 3000; n += 7) {
+        Eigen::VectorXd a(n), b(n);
+        for (int i = 0; i < n; ++i) {
+            a[i] = unit(rng);
+            b[i] = unit(rng);
+        }
+        squaredNorm.push_back(a.squaredNorm());
+        norm.push_back(a.norm());
+        dot.push_back(a.dot(b));
+        sum.push_back(a.sum());
+    }
+    const std::string at = "eigen-vectorxd lengths=" + std::to_string(squaredNorm.size());
+    printHash(at, "squaredNorm", fnv1a(squaredNorm.data(), squaredNorm.size()));
+    printHash(at, "norm", fnv1a(norm.data(), norm.size()));
+    printHash(at, "dot", fnv1a(dot.data(), dot.size()));
+    printHash(at, "sum", fnv1a(sum.data(), sum.size()));
+}
+
 std::vector<Case> cases() {
     std::vector<Case> list;
     auto add = [&](std::string name, SceneKind kind, std::initializer_list<std::pair<Param, double>> values) -> Case& {
@@ -367,5 +395,6 @@ int main(int argc, char** argv) {
     ThreadPool pool(ForceModel::kChunks);
     for (const Case& c : cases()) runCase(c, pool);
     runKernels();
+    runReductions();
     return 0;
 }
