@@ -422,4 +422,10 @@ double enclosedVolume(const Surface& surface, const double* positions, int dimen
     return sum / 6.0;
 }
 
+Eigen::Vector3d centroid(const Eigen::Matrix3Xd& positions) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (Eigen::Index i = 0; i < positions.cols(); ++i) sum += positions.col(i);
+    return sum / static_cast<double>(positions.cols());
+}
+
 }  // namespace simcore

@@ -155,4 +155,10 @@ Body buildBody(const ParameterSet& params);
 // divergence-theorem volume V = sum x_a.(x_b x x_c)/6 (3D).
 double enclosedVolume(const Surface& surface, const double* positions, int dimension);
 
+// The mean of the columns of positions (3 x N): the body's centroid [m]. Summed column by
+// column in order, so every target gives the same bits: Eigen's vectorised rowwise().mean()
+// adds in an order set by the target's vector layout (x86-64 and AArch64 builds differed in
+// the last bits of the x coordinate; scripts/check-aarch64.sh).
+Eigen::Vector3d centroid(const Eigen::Matrix3Xd& positions);
+
 }  // namespace simcore

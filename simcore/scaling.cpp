@@ -26,7 +26,7 @@ struct Orientation {
 };
 Orientation orientation(const Body& body, SpringFamily family) {
     const SpringSet& s = body.topology.family(family);
-    const Eigen::Vector3d centre = body.positions.rowwise().mean();
+    const Eigen::Vector3d centre = centroid(body.positions);
     Orientation o;
     for (std::size_t k = 0; k < s.size(); ++k) {
         const Eigen::Vector3d a = body.positions.col(s.a[k]), b = body.positions.col(s.b[k]);

@@ -62,7 +62,7 @@ void Simulation::build() {
     m_n = 3 * count;
     m_forces = ForceModel(&m_body.topology, &m_body.mass, sceneTerms(m_params.kind()));
     setThreads(m_threads);
-    m_boxCentre = m_body.positions.rowwise().mean();
+    m_boxCentre = centroid(m_body.positions);
     m_forces.prepareContact(m_body.positions.data(), m_body.fixed);
 
     m_invMass3.setZero(m_n);
