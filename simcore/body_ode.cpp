@@ -50,7 +50,6 @@ void BodyOde::runPieces(TaskRef task) {
 }
 
 const ForceExtras& BodyOde::measureEnd(const Eigen::VectorXd& y) {
-    if (m_end.size() != y.size()) m_end.setZero(y.size());
     compute(y, m_end, m_endExtras, false);
     m_endAt = &y;
     return m_endExtras;

@@ -70,6 +70,12 @@ public:
     // outer layer's volume gradient stays in the force model until the next evaluation). Its
     // derivative is kept for the step that starts from y once keepEnd() says the step stands.
     const ForceExtras& measureEnd(const Eigen::VectorXd& y);
+    // Sizes the cache for states of `size` (when the body is built: nothing is allocated in a
+    // step) and drops it.
+    void prepareEnd(Eigen::Index size) {
+        m_end.setZero(size);
+        m_endValid = m_offered = false;
+    }
     void keepEnd() { m_endValid = true; }
     void dropEnd() { m_endValid = false; }
     bool endValid() const { return m_endValid; }

@@ -131,7 +131,6 @@ void Simulation::applyForceParams() {
 }
 
 void Simulation::reset() {
-    m_ode->dropEnd();
     const Eigen::Index n = m_n;
     m_y.setZero(2 * n + BodyOde::kAux);
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = m_body.positions;
@@ -149,6 +148,7 @@ void Simulation::reset() {
     if (m_integratorOptions.stepDoubling) m_doubling.prepare(m_y.size());
     else m_doubling.release();
     m_lastError = nullptr;
+    m_ode->prepareEnd(m_y.size());
     m_lastGood = m_y;
     m_failure.reset();
     m_forces.pointer = PointerSpring{};
