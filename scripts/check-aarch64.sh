@@ -26,7 +26,7 @@ mkdir -p "$out"
 # fused multiply-adds; -Wno-psabi on force_kernels.cpp; the project's warnings.
 flags=(-std=c++20 -O3 -DNDEBUG -fPIC -fno-semantic-interposition
        -fno-math-errno -fno-trapping-math -ffp-contract=off -pthread
-       -Isimcore -isystem /usr/include/eigen3
+       -Isimcore -Itests -isystem /usr/include/eigen3
        -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
        -Woverloaded-virtual -Wconversion -Wno-sign-conversion -Wno-restrict)
 # The simcore sources the force evaluation needs.
