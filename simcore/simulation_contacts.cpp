@@ -17,9 +17,10 @@ bool Simulation::collide(StepWork& w) {
     // across them (the check stage books it as removed by collisions).
     if (!w.scan.finite || !m_contactProjection || !m_forces.terms().has(Term::Collisions)) return true;
     m_forces.countPostStep(Term::Collisions);
-    // Most steps touch no wall: the scan's extent says so without a second pass.
-    const Eigen::Array3d wallLow = m_boxCentre.array() - m_p.world.box;
-    const Eigen::Array3d wallHigh = m_boxCentre.array() + m_p.world.box;
+    // Most steps touch no wall: the scan's extent says so without a second pass. The planes
+    // are the force model's (the box on each axis the body moves along, infinite on the others).
+    const ContactParams& c = m_forces.contact;
+    const Eigen::Array3d wallLow(c.low[0], c.low[1], c.low[2]), wallHigh(c.high[0], c.high[1], c.high[2]);
     if (!((w.scan.low <= wallLow) || (w.scan.high >= wallHigh)).any() || !collideWalls(false)) return true;
     w.beforeContacts = totalEnergyNow();
     collideWalls(true);
@@ -65,7 +66,8 @@ bool Simulation::collideRange(bool apply, int begin, int end) {
         for (int axis = 0; axis < 3; ++axis) {
             const Eigen::Index k = 3 * i + axis;
             if (m_invMass3[k] == 0.0) continue;
-            const double lo = m_boxCentre[axis] - m_p.world.box, hi = m_boxCentre[axis] + m_p.world.box;
+            const double lo = m_forces.contact.low[static_cast<std::size_t>(axis)];
+            const double hi = m_forces.contact.high[static_cast<std::size_t>(axis)];
             double& x = m_y[k];
             double& v = m_y[m_n + k];
             // On the wall and moving into it counts too: an implicit step lands particles
