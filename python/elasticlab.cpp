@@ -39,6 +39,7 @@
 #include "simulation.h"
 #include "stability.h"
 #include "study.h"
+#include "timeseries.h"
 
 namespace py = pybind11;
 
@@ -251,23 +252,38 @@ public:
     // Runs for `duration` seconds of simulated time (whole steps; a fixed-step run ends at the
     // first step at or past the end, as the CLI's run). With `every`, returns the diagnostics
     // rows of the start, every `every` steps and the end (the CLI's --csv --every), one row per
-    // line, columns as diagnostics_columns.
-    py::object run(const py::handle& durationArg, const py::object& everyArg) {
+    // line, columns as diagnostics_columns. csv= and xlsx= write the CLI's files of the same run
+    // (its columns, every `every` steps or every step), the CSV in csv_dialect.
+    py::object run(const py::handle& durationArg, const py::object& everyArg, const py::object& csvPath,
+                   const py::object& xlsxPath, const std::string& dialectName) {
         const double duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
         const long every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
+        const auto dialect = simcore::csvDialectNamed(dialectName);
+        if (!dialect) throw py::value_error(simcore::unknownCsvDialectMessage(dialectName));
+        simcore::TimeSeriesFiles files{csvPath.is_none() ? "" : pathText(csvPath), *dialect,
+                                       xlsxPath.is_none() ? "" : pathText(xlsxPath)};
+        if (auto clash = simcore::fileClash({{"csv", files.csv}, {"xlsx", files.xlsx}})) throw py::value_error(*clash);
+        const simcore::SceneKind kind = m_sim->parameters().kind();
+        simcore::TimeSeriesWriter writer(kind, simcore::timeSeriesColumns(kind, m_sim->diagnostics().hasSolverCounters),
+                                         files);
+        if (!writer.ok()) throw py::value_error(writer.error());
+        const long fileEvery = every ? every : 1;
         Busy busy(m_busy);
         std::vector<double> rows;
-        auto record = [&] {
-            for (const simcore::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
+        auto record = [&](bool toTable) {
+            if (toTable)
+                for (const simcore::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
+            if (files.any()) writer.add(m_sim->diagnostics());
         };
-        if (every) record();
+        if (every || files.any()) record(every != 0);
         const double tEnd = m_sim->time() + duration;
         auto reached = [&] { return m_sim->time() >= tEnd - 1e-9 * m_sim->dt(); };
         if (!reached())
             inSlices([&] {
                 if (!m_sim->step(tEnd)) return false;
                 const bool last = reached();
-                if (every && (m_sim->stepCount() % every == 0 || last)) record();
+                const bool onRow = m_sim->stepCount() % fileEvery == 0 || last;
+                if (onRow && (every || files.any())) record(every != 0);
                 return !last;
             });
         py::object table = py::none();
@@ -277,6 +293,8 @@ public:
             std::copy(rows.begin(), rows.end(), a.mutable_data());
             table = a;
         }
+        // The files hold the run so far also when it failed (as the CLI's).
+        if (files.any() && !writer.commit()) throw py::value_error(writer.error());
         raiseIfFailed(table);
         return table;
     }
@@ -621,9 +639,12 @@ PYBIND11_MODULE(elasticlab, m) {
              "contact='projection'), integrator options as a dict (atol, rtol, newton, fixed_step, ...).")
         .def("__repr__", &PySimulation::repr)
         .def("step", &PySimulation::step, py::arg("n") = 1, "Takes n steps (SimulationFailed when one fails).")
-        .def("run", &PySimulation::run, py::arg("duration"), py::arg("every") = py::none(),
+        .def("run", &PySimulation::run, py::arg("duration"), py::arg("every") = py::none(), py::kw_only(),
+             py::arg("csv") = py::none(), py::arg("xlsx") = py::none(), py::arg("csv_dialect") = "plain",
              "Runs for duration seconds; with every=N returns the diagnostics rows (start, every N steps, end) "
-             "as an array, columns as diagnostics_columns.")
+             "as an array, columns as diagnostics_columns. csv= and xlsx= write the CLI's `run --csv/--xlsx` files "
+             "of the run (a row every N steps, or every step); csv_dialect='excel-semicolon' spells the CSV for "
+             "spreadsheets in decimal-comma locales (semicolon, decimal comma, CRLF, byte-order mark).")
         .def("reset", &PySimulation::reset, "Back to the start state, same parameters.")
         .def("set_integrator", &PySimulation::setIntegrator, py::arg("name"), py::arg("options") = py::none(),
              "Changes the integrator between steps (options as in the constructor, added to the current ones).")

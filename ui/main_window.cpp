@@ -69,7 +69,7 @@ void MainWindow::createActions() {
     m_saveSceneAs = new QAction(tr("Save scene &as..."), this);
     m_saveSceneAs->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
     connect(m_saveSceneAs, &QAction::triggered, this, &MainWindow::saveSceneAs);
-    m_exportCsv = new QAction(tr("Export &CSV..."), this);
+    m_exportCsv = new QAction(tr("Export &Data (CSV, Excel)..."), this);
     m_exportCsv->setToolTip(tr("The time series of this run, with the same columns as elastic-lab-cli run --csv"));
     connect(m_exportCsv, &QAction::triggered, this, &MainWindow::exportCsv);
     m_exportPlots = new QAction(tr("Export &plots (PNG, SVG, PDF)..."), this);
@@ -769,11 +769,26 @@ QString MainWindow::saveSceneFile(const QString& path) {
 }
 
 void MainWindow::exportCsv() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), QStringLiteral("elastic-lab.csv"),
-                                                      tr("CSV files (*.csv)"));
+    // Three spellings of the same table; the one this locale's spreadsheet opens by a
+    // double-click is offered first (the semicolon dialect where the decimal separator is a comma).
+    const QString plain = tr("CSV, comma and decimal point (*.csv)");
+    const QString semicolon = tr("CSV for spreadsheets, semicolon and decimal comma (*.csv)");
+    const QString workbook = tr("Excel workbook with charts (*.xlsx)");
+    QString selected = defaultCsvDialect(locale()) == simcore::CsvDialect::ExcelSemicolon ? semicolon : plain;
+    QString path = QFileDialog::getSaveFileName(this, tr("Export data"), QStringLiteral("elastic-lab.csv"),
+                                                QStringList{plain, semicolon, workbook}.join(QStringLiteral(";;")),
+                                                &selected);
     if (path.isEmpty()) return;
-    const QString error = writeCsv(path, m_controller->sceneKind(), m_controller->history());
-    if (!error.isEmpty()) warn(tr("Export CSV"), error);
+    const bool xlsx = selected == workbook || path.endsWith(QLatin1String(".xlsx"), Qt::CaseInsensitive);
+    if (xlsx && !path.endsWith(QLatin1String(".xlsx"), Qt::CaseInsensitive)) {
+        if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) path.chop(4);
+        path += QLatin1String(".xlsx");
+    }
+    const QString error = xlsx ? writeXlsx(path, m_controller->sceneKind(), m_controller->history())
+                               : writeCsv(path, m_controller->sceneKind(), m_controller->history(),
+                                          selected == semicolon ? simcore::CsvDialect::ExcelSemicolon
+                                                                : simcore::CsvDialect::Plain);
+    if (!error.isEmpty()) warn(tr("Export data"), error);
     else status(tr("Wrote %1 rows to %2").arg(m_controller->history().size()).arg(path));
 }
 

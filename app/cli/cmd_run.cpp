@@ -7,6 +7,7 @@
 #include "cli.h"
 #include "output.h"
 #include "simulation.h"
+#include "timeseries.h"
 
 namespace cli {
 
@@ -53,15 +54,20 @@ struct RunArgs {
     double duration = 5.0;
     long every = 1;
     double maxSteps = kMaxSteps;
-    std::string csv, state, saveScene;
+    std::string csv, state, saveScene, xlsx;
+    std::string dialectName = "plain";
+    simcore::CsvDialect dialect = simcore::CsvDialect::Plain;  // after check()
     bool quiet = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
 };
 
 void checkRun(RunArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"state", args.state},
-                        {"save-scene", args.saveScene}});
+    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"xlsx", args.xlsx},
+                        {"state", args.state}, {"save-scene", args.saveScene}});
+    const auto dialect = simcore::csvDialectNamed(args.dialectName);
+    if (!dialect) throw UsageError("--csv-dialect: " + simcore::unknownCsvDialectMessage(args.dialectName));
+    args.dialect = *dialect;
     args.setup = sceneSetup(args.scene);
     // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
     // refused at once instead of running for ever.
@@ -76,6 +82,19 @@ void checkRun(RunArgs& args) {
                           args.duration, dt, steps, args.maxSteps);
             throw UsageError(text);
         }
+        // A workbook's sheet has room for 1048575 rows of data: the start, every N-th step and
+        // the last must fit, or the run is refused before it starts (an adaptive run that
+        // outgrows the sheet is told at the end, its CSV still written).
+        const double rows = std::floor(steps / static_cast<double>(args.every)) + 2;
+        if (!args.xlsx.empty() && rows > static_cast<double>(simcore::kXlsxMaxDataRows)) {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "--xlsx: %.0f rows (%.0f steps, a row every %ld) do not fit a sheet of %ld rows; use "
+                          "--every %.0f or more",
+                          rows, steps, args.every, simcore::kXlsxMaxDataRows,
+                          std::ceil(steps / static_cast<double>(simcore::kXlsxMaxDataRows - 2)));
+            throw UsageError(text);
+        }
     }
 }
 
@@ -84,8 +103,8 @@ int run(const RunArgs& args) {
     const double duration = args.duration;
     const long every = args.every;
     // Open every output before running: an unwritable path is bad input, found at once.
-    std::unique_ptr<simcore::AtomicFile> csv, state, sceneOut;
-    for (auto [path, file] : {std::pair{&args.csv, &csv}, {&args.state, &state}, {&args.saveScene, &sceneOut}}) {
+    std::unique_ptr<simcore::AtomicFile> state, sceneOut;
+    for (auto [path, file] : {std::pair{&args.state, &state}, {&args.saveScene, &sceneOut}}) {
         if (path->empty()) continue;
         *file = std::make_unique<simcore::AtomicFile>(*path);
         if (!(*file)->ok()) throw UsageError((*file)->error());
@@ -98,11 +117,12 @@ int run(const RunArgs& args) {
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
-    const auto columns = simcore::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters);
-    if (csv) {
-        csv->write(simcore::csvHeader(columns));
-        csv->write(simcore::csvRow(columns, sim.diagnostics()));
-    }
+    simcore::TimeSeriesWriter series(setup.params.kind(),
+                                     simcore::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters),
+                                     {args.csv, args.dialect, args.xlsx});
+    if (!series.ok()) throw UsageError(series.error());
+    const bool recording = !args.csv.empty() || !args.xlsx.empty();
+    if (recording) series.add(sim.diagnostics());
     const auto start = std::chrono::steady_clock::now();
     const double tEnd = sim.time() + duration;  // a resumed run continues from its saved time
     // An adaptive method chooses its own steps: the same bound holds while it runs (a
@@ -112,18 +132,21 @@ int run(const RunArgs& args) {
     while (sim.time() < tEnd - 1e-9 * sim.dt()) {
         if (!sim.step(tEnd)) break;
         const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
-        if (csv && (sim.stepCount() % every == 0 || last))
-            csv->write(simcore::csvRow(columns, sim.diagnostics()));
+        if (recording && (sim.stepCount() % every == 0 || last)) series.add(sim.diagnostics());
         if (static_cast<double>(sim.stepCount() - firstStep) >= args.maxSteps && !last) {
             tooManySteps = true;
             break;
         }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (state) state->write(simcore::stateTable(sim));
+    if (state) state->write(simcore::inDialect(simcore::stateTable(sim), args.dialect, true));
     if (sceneOut) sceneOut->write(simcore::sceneFileText(sim, setup.sceneName, true));
 
-    for (auto* file : {csv.get(), state.get(), sceneOut.get()})
+    if (!series.commit()) {
+        std::fprintf(stderr, "error: %s\n", series.error().c_str());
+        return kExitBadInput;
+    }
+    for (auto* file : {state.get(), sceneOut.get()})
         if (file && !file->commit()) {
             std::fprintf(stderr, "error: %s\n", file->error().c_str());
             return kExitBadInput;
@@ -163,7 +186,15 @@ Command addRunCommand(CLI::App& app) {
         ->check(finiteIn(0.0, 1e7, true))
         ->capture_default_str();
     sub->add_option("--csv", args->csv, "write the time series (one row per --every steps and the last)")->type_name("FILE");
-    sub->add_option("--every", args->every, "CSV row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
+    sub->add_option("--xlsx", args->xlsx, "write the time series as an .xlsx workbook: the table with units on one "
+                                          "sheet, charts of energy, volume and pressure against t on another")
+        ->type_name("FILE.xlsx");
+    sub->add_option("--csv-dialect", args->dialectName, "how --csv and --state are spelled: plain (comma, decimal point) "
+                                                        "or excel-semicolon (semicolon, decimal comma, CRLF, UTF-8 "
+                                                        "byte-order mark, for spreadsheets in decimal-comma locales)")
+        ->type_name("NAME")
+        ->capture_default_str();
+    sub->add_option("--every", args->every, "CSV and .xlsx row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
     sub->add_option("--state", args->state, "write the final state: index, layer, position, velocity")->type_name("FILE");
     sub->add_option("--save-scene", args->saveScene, "save the experiment with its final state as a scene file")
         ->type_name("FILE.json");
