@@ -1,5 +1,7 @@
 #include "parallel.h"
 
+#include <sched.h>
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #define SIMCORE_CPU_RELAX() _mm_pause()
@@ -19,6 +21,11 @@ constexpr int kSpinsBeforeSleep = 20000;
 }  // namespace
 
 int hardwareThreads() {
+    // The CPUs this process may run on (its affinity: taskset, a container's cpuset), not every
+    // CPU of the machine: more threads than that only take turns.
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (::sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
     const unsigned n = std::thread::hardware_concurrency();
     return n == 0 ? 1 : static_cast<int>(n);
 }

@@ -410,7 +410,10 @@ private slots:
         QVERIFY(QFile::link(scene, dir.filePath("link.png")));
         const QList<QPair<QStringList, QString>> refusals = {
             {{"--bogus"}, "bogus"},
-            {{"stray"}, "unexpected argument 'stray'"},
+            // A plain argument is a scene (the desktop entry's %f): one at most, not beside --scene.
+            {{"stray"}, "unknown scene 'stray'"},
+            {{scene, scene}, "one scene file at most"},
+            {{scene, "--scene", "ring2d"}, "both choose the scene"},
             {{"--after", "1"}, "--after needs --screenshot"},
             {{"--screenshot", shot, "--after", "1", "--after", "2"}, "--after is given 2 times"},
             {{"--compare", "rk4,,euler"}, "item 2 is empty"},
@@ -445,6 +448,24 @@ private slots:
         }
         QVERIFY(!QFileInfo::exists(shot));
         QCOMPARE(QFileInfo(dir.filePath("link.png")).symLinkTarget(), scene);  // the scene file untouched
+        // Without a display: one line saying what to do, exit 2 (not Qt's abort advising to
+        // reinstall), both with no display at all and with one that cannot be reached.
+        for (const QString& display : {QString(), QStringLiteral(":9999")}) {
+            QProcess headless;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) env.remove(QString::fromLatin1(name));
+            if (!display.isEmpty()) env.insert(QStringLiteral("DISPLAY"), display);
+            headless.setProcessEnvironment(env);
+            headless.start(ELASTIC_LAB_GUI, {"--scene", "ring2d"});
+            QVERIFY(testsupport::waitForExit(headless));
+            QCOMPARE(headless.exitStatus(), QProcess::NormalExit);
+            QCOMPARE(headless.exitCode(), 2);
+            QString err = QString::fromUtf8(headless.readAllStandardError());
+            err.remove(QRegularExpression("QStandardPaths: [^\\n]*\\n"));
+            QVERIFY2(err.startsWith("elastic-lab: no display") && err.contains("xvfb-run -a elastic-lab"), qPrintable(err));
+            QVERIFY2(err.contains(display.isEmpty() ? QStringLiteral("not set") : display), qPrintable(err));
+            QCOMPARE(err.trimmed().count('\n'), 0);
+        }
         QProcess version;
         version.start(ELASTIC_LAB_GUI, {"--version"});
         QVERIFY(testsupport::waitForExit(version));
@@ -464,6 +485,13 @@ private slots:
         p.start(ELASTIC_LAB_GUI, {"--scene", scene, "--set", "kd=20", "--screenshot", shot, "--after", "0.5"});
         QVERIFY(testsupport::waitForExit(p));
         QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        QVERIFY(census(QImage(shot)).colours > 20);
+        // The same file given alone, as the desktop entry (Exec=elastic-lab %f) passes it.
+        QVERIFY(QFile::remove(shot));
+        QProcess alone;
+        alone.start(ELASTIC_LAB_GUI, {scene, "--screenshot", shot, "--after", "0.4"});
+        QVERIFY(testsupport::waitForExit(alone));
+        QVERIFY2(alone.exitCode() == 0, alone.readAllStandardError().constData());
         QVERIFY(census(QImage(shot)).colours > 20);
         // Refused before any window: a bad file (naming the key), a missing one, and a --set
         // that changes the body's shape under a saved state.
