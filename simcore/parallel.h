@@ -68,7 +68,7 @@ private:
     std::atomic<bool> m_stop{false};
 };
 
-// The number of CPUs this process may run on (its affinity mask), at least 1.
+// The number of hardware threads, at least 1.
 int hardwareThreads();
 
 }  // namespace simcore

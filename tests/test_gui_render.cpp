@@ -245,6 +245,54 @@ private slots:
         w.controller()->pause();
     }
 
+    void keyboardChoosesGrabsAndDrags() {
+        // Issue 30: without a mouse. With focus (a frame shows it) the arrow keys choose a
+        // particle (its forces shown as for a click), Enter grabs it, the arrows drag it, Enter
+        // lets go.
+        MainWindow w(false);
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set(simcore::Param::Gravity, 0.0);
+        w.startScene(p, {"rk4"});
+        QVERIFY(waitForScene(w, SceneKind::Ring2d));
+        Viewport* v = w.viewports().front();
+        v->setFocus(Qt::TabFocusReason);
+        QTRY_VERIFY_WITH_TIMEOUT(v->hasFocus(), testsupport::kHangGuardMs);
+        QVERIFY(v->findChild<QWidget*>(QStringLiteral("focusFrame"))->isVisible());
+        const FramePtr f = w.controller()->latest();
+        int top = -1;
+        const auto& x = f->lanes[0].positions;
+        for (int i = 0; i < f->scene->topology.particleCount(); ++i)
+            if (f->scene->topology.layer[std::size_t(i)] == simcore::Layer::Outer &&
+                (top < 0 || x[3 * std::size_t(i) + 1] > x[3 * std::size_t(top) + 1]))
+                top = i;
+        for (int i = 0; i <= top; ++i) QTest::keyClick(v, Qt::Key_Right);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].breakdown &&
+                                     w.controller()->latest()->lanes[0].breakdown->particle == top,
+                                 testsupport::kHangGuardMs);
+        QTest::keyClick(v, Qt::Key_Left);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].breakdown->particle == top - 1 ||
+                                     (top == 0 && w.controller()->latest()->lanes[0].breakdown->particle ==
+                                                      f->scene->topology.particleCount() - 1),
+                                 testsupport::kHangGuardMs);
+        QTest::keyClick(v, Qt::Key_Right);
+        QTest::keyClick(v, Qt::Key_Return);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.active, testsupport::kHangGuardMs);
+        QCOMPARE(w.controller()->latest()->lanes[0].pointer.particle, top);
+        for (int i = 0; i < 15; ++i) QTest::keyClick(v, Qt::Key_Up);  // 120 pixels up
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.anchor.y() > x[3 * std::size_t(top) + 1] + 0.3,
+                                 testsupport::kHangGuardMs);
+        QTest::keyClick(v, Qt::Key_Return);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].pointer.active, testsupport::kHangGuardMs);
+        QTest::keyClick(v, Qt::Key_Escape);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].breakdown, testsupport::kHangGuardMs);
+        v->clearFocus();
+        QTRY_VERIFY_WITH_TIMEOUT(!v->findChild<QWidget*>(QStringLiteral("focusFrame"))->isVisible(),
+                                 testsupport::kHangGuardMs);
+    }
+
     void clickShowsTheForcesOnAParticle_data() { mouseDragGrabsAndPulls_data(); }
     void clickShowsTheForcesOnAParticle() {
         // Issue 16: a click (no drag) on a particle selects it; every frame then carries its

@@ -38,6 +38,9 @@ EnergyBarsDock::EnergyBarsDock(QWidget* parent) : QDockWidget(tr("Energy bars"),
     setObjectName(QStringLiteral("EnergyBarsDock"));
     m_plot = new QCustomPlot(this);
     m_plot->setObjectName(QStringLiteral("energyBars"));
+    m_plot->setAccessibleName(tr("Energy bars"));
+    m_plot->setAccessibleDescription(tr("Each part of the energy as a bar, named on the axis; the values are in the "
+                                        "Run dock's readout"));
     m_plot->setMinimumSize(260, 220);
     m_plot->setPlottingHints(QCP::phCacheLabels);
     m_plot->plotLayout()->insertRow(0);
@@ -103,7 +106,15 @@ void EnergyBarsDock::rebuild() {
         for (int lane = 0; lane < m_lanes; ++lane) {
             auto* bars = new QCPBars(m_plot->yAxis, m_plot->xAxis);
             bars->setWidth(width);
-            bars->setPen(QPen(c.darker(130), 1.0));
+            // The spring families share a hue (one energy, three parts); their outlines differ in
+            // style as well as in lightness, for colour-blind eyes and grey-scale print:
+            // structural solid, radius dashed, shear dotted (and each bar is named on the axis).
+            const EnergyTerm term = m_bars[b].term;
+            const Qt::PenStyle style = term == EnergyTerm::SpringRadius  ? Qt::DashLine
+                                       : term == EnergyTerm::SpringShear ? Qt::DotLine
+                                                                         : Qt::SolidLine;
+            const bool family = term == EnergyTerm::SpringRadius || term == EnergyTerm::SpringShear;
+            bars->setPen(QPen(family ? QColor(20, 60, 30) : c.darker(130), family ? 2.0 : 1.0, style));
             bars->setBrush(QBrush(c, laneBrush(lane)));
             bars->setAntialiased(false);
             // One data point, written in place by every frame.
@@ -208,6 +219,11 @@ QStringList EnergyBarsDock::barNames() const {
 double EnergyBarsDock::value(int bar, int lane) const {
     if (bar < 0 || bar >= int(m_bars.size()) || lane < 0 || lane >= m_lanes) return std::nan("");
     return barAt(bar, lane)->data()->constBegin()->value;
+}
+
+Qt::PenStyle EnergyBarsDock::outline(int bar, int lane) const {
+    if (bar < 0 || bar >= int(m_bars.size()) || lane < 0 || lane >= m_lanes) return Qt::NoPen;
+    return barAt(bar, lane)->pen().style();
 }
 
 QColor EnergyBarsDock::color(int bar, int lane) const {

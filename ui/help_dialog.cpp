@@ -1,6 +1,7 @@
 #include "help_dialog.h"
 
 #include <QDialogButtonBox>
+#include <QPushButton>
 #include <QDir>
 #include <QTextBrowser>
 #include <QUrl>
@@ -114,9 +115,12 @@ HelpDialog::HelpDialog(QWidget* parent) : QDialog(parent) {
     auto* layout = new QVBoxLayout(this);
     auto* browser = new QTextBrowser(this);
     browser->setOpenExternalLinks(true);
+    browser->setAccessibleName(tr("Help"));
+    browser->setAccessibleDescription(tr("How to use Elastic Lab: the view, the docks, the integrators and the files"));
     browser->setHtml(html());
     layout->addWidget(browser);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    buttons->button(QDialogButtonBox::Close)->setToolTip(tr("Close the help"));
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
 }

@@ -19,6 +19,7 @@
 
 #include "compare_dialog.h"
 #include "energy_bars_dock.h"
+#include "accessibility.h"
 #include "export.h"
 #include "help_dialog.h"
 #include "lessons.h"
@@ -49,6 +50,9 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connectController();
     createTimeline();
     readSettings();
+    // Screen readers get plain-text descriptions of every control (docs/accessibility.md).
+    installToolTipDescriptions();
+    if (m_highContrastWanted) setHighContrast(true);
 }
 
 MainWindow::~MainWindow() {
@@ -169,6 +173,12 @@ void MainWindow::createMenus() {
     m_viewMenu = menuBar()->addMenu(tr("&View"));  // dock toggles are added in createDocks()
     for (QAction* a : m_displayToggles) m_viewMenu->addAction(a);
     m_viewMenu->addAction(m_resetView);
+    // High contrast: black, white and yellow for the whole window (docs/accessibility.md).
+    m_highContrast = m_viewMenu->addAction(tr("&High contrast"));
+    m_highContrast->setObjectName(QStringLiteral("highContrast"));
+    m_highContrast->setCheckable(true);
+    m_highContrast->setToolTip(tr("White text on black, yellow highlight and focus: for low vision and projectors"));
+    connect(m_highContrast, &QAction::toggled, this, &MainWindow::setHighContrast);
     m_viewMenu->addSeparator();
 
     QMenu* compare = menuBar()->addMenu(tr("&Compare"));
@@ -222,17 +232,22 @@ void MainWindow::createCentral() {
     m_bannerText->setWordWrap(true);
     m_bannerText->setTextFormat(Qt::RichText);
     bannerLayout->addWidget(m_bannerText, 1);
+    // An alert to screen readers: announced when it appears (showFailure), read as its text.
+    markAsAlert(m_banner);
     auto* smaller = new QPushButton(tr("Halve DT and reset"), m_banner);
+    smaller->setToolTip(tr("Start again from the beginning with half the time step"));
     connect(smaller, &QPushButton::clicked, this, [this] {
         m_controller->setParameter(simcore::Param::Dt, m_controller->parameters().get(simcore::Param::Dt) * 0.5);
         m_controller->reset();
     });
     auto* implicit = new QPushButton(tr("Use implicit-euler and reset"), m_banner);
+    implicit->setToolTip(tr("Start again with the implicit Euler integrator, which is stable at any time step"));
     connect(implicit, &QPushButton::clicked, this, [this] {
         m_controller->setIntegrator(QStringLiteral("implicit-euler"));
         m_controller->reset();
     });
     auto* reset = new QPushButton(tr("Reset"), m_banner);
+    reset->setToolTip(tr("Start again from the beginning with the same settings"));
     connect(reset, &QPushButton::clicked, this, [this] { m_controller->reset(); });
     bannerLayout->addWidget(smaller);
     bannerLayout->addWidget(implicit);
@@ -306,6 +321,8 @@ void MainWindow::rebuildViewports(int count) {
         connect(v, &Viewport::anchorMoved, m_controller, &SimulationController::moveAnchor);
         connect(v, &Viewport::releaseRequested, m_controller, &SimulationController::release);
         connect(v, &Viewport::selectRequested, m_controller, &SimulationController::selectAlongRay);
+        connect(v, &Viewport::particleSelected, m_controller, &SimulationController::selectParticle);
+        v->setHighContrast(m_highContrast->isChecked());
         connect(m_controller, &SimulationController::grabbed, v, &Viewport::onGrabbed);
         m_viewports.push_back(v);
     }
@@ -441,6 +458,8 @@ void MainWindow::readSettings() {
     QSettings settings;
     if (settings.contains(QStringLiteral("geometry"))) restoreGeometry(settings.value("geometry").toByteArray());
     restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+    // High contrast stays chosen from one start to the next.
+    if (settings.value(QStringLiteral("highContrast"), false).toBool()) m_highContrastWanted = true;
 }
 
 void MainWindow::writeSettings() {
@@ -448,6 +467,7 @@ void MainWindow::writeSettings() {
     QSettings settings;
     settings.setValue(QStringLiteral("geometry"), saveGeometry());
     settings.setValue(QStringLiteral("windowState"), saveState());
+    settings.setValue(QStringLiteral("highContrast"), m_highContrast->isChecked());
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
@@ -574,8 +594,26 @@ void MainWindow::showFailure(const FramePtr& frame) {
                               .arg(f.time, 0, 'f', 3)
                               .arg(f.step)
                               .arg(QString::fromStdString(f.reason).toHtmlEscaped(), advice.toHtmlEscaped()));
+    m_banner->setAccessibleName(plainText(m_bannerText->text()));
     m_banner->show();
+    announceAlert(m_banner);
 }
+
+void MainWindow::setHighContrast(bool on) {
+    if (m_highContrast->isChecked() != on) m_highContrast->setChecked(on);  // toggled() calls back
+    static const QPalette normal = QApplication::palette();
+    QApplication::setPalette(on ? highContrastPalette() : normal);
+    // The banners' own colours: light tints in the normal theme; black with a coloured border
+    // in high contrast (their white text stays readable).
+    m_banner->setStyleSheet(on ? QStringLiteral("#failureBanner { background: black; border: 3px solid #ff5050; }")
+                               : QStringLiteral("#failureBanner { background: #fbe3e1; border-bottom: 2px solid #c0392b; }"));
+    m_stabilityBanner->setStyleSheet(
+        on ? QStringLiteral("#stabilityBanner { background: black; border: 3px solid yellow; }")
+           : QStringLiteral("#stabilityBanner { background: #fdf0d5; border-bottom: 2px solid #d68910; }"));
+    for (Viewport* v : m_viewports) v->setHighContrast(on);
+}
+
+bool MainWindow::highContrast() const { return m_highContrast->isChecked(); }
 
 QString MainWindow::failureText() const { return m_banner->isVisible() ? m_bannerText->text() : QString(); }
 

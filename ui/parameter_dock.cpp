@@ -1,5 +1,7 @@
 #include "parameter_dock.h"
 
+#include "accessibility.h"
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -57,6 +59,7 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
                                     .arg(key, toQString(spec->meaning).toHtmlEscaped(),
                                          QString::fromStdString(spec->choiceName(spec->defaultFor(kind))));
             box->setToolTip(tip);
+            setAccessibleText(box, key + QStringLiteral(": ") + toQString(spec->meaning), tip);
             auto* label = new QLabel(key, this);
             label->setToolTip(tip);
             form->addRow(label, box);
@@ -84,6 +87,10 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
         }
         edit->setToolTip(tip);
         edit->setProperty("tip", tip);
+        // Read as "ks: structural spring stiffness ... , newtons per metre" (the unit as written).
+        setAccessibleText(edit, key + QStringLiteral(": ") + toQString(spec->meaning) +
+                                    (unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit)),
+                          tip);
         auto* row = new QWidget(this);
         auto* h = new QHBoxLayout(row);
         h->setContentsMargins(0, 0, 0, 0);
@@ -169,11 +176,13 @@ void ParameterForm::commit(const QString& key) {
     if (!error.isEmpty()) {
         edit->setStyleSheet(QStringLiteral("background: #ffd6d6"));
         edit->setToolTip(error);
+        edit->setAccessibleDescription(plainText(error));
         emit rejected(key, error);
         return;
     }
     edit->setStyleSheet(QString());
     edit->setToolTip(edit->property("tip").toString());
+    edit->setAccessibleDescription(plainText(edit->toolTip()));
     if (m_shown.count(key) && m_shown[key] == v) return;  // nothing changed
     m_shown[key] = v;
     emit edited(spec->id, v);
@@ -182,6 +191,8 @@ void ParameterForm::commit(const QString& key) {
 ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), parent) {
     setObjectName(QStringLiteral("ParametersDock"));
     auto* scroll = new QScrollArea(this);
+    scroll->setAccessibleName(tr("Parameters"));
+    scroll->setAccessibleDescription(tr("Every parameter of the scene with its unit; a change applies at once"));
     scroll->setWidgetResizable(true);
     m_host = new QWidget(scroll);
     m_layout = new QVBoxLayout(m_host);

@@ -55,6 +55,8 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_bandNote = new QLabel(host);
     m_bandNote->setObjectName(QStringLiteral("errorBandNote"));
     m_bandNote->setStyleSheet(QStringLiteral("QLabel { color: #806000; }"));
+    m_windowCombo->setAccessibleName(tr("Time window of the plots"));
+    m_windowCombo->setToolTip(tr("How much of the run the plots show: the last seconds, or all of it"));
     bar->addWidget(new QLabel(tr("Show"), host));
     bar->addWidget(m_windowCombo);
     bar->addWidget(m_autoscale);
@@ -102,6 +104,9 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     for (const PlotSpec& spec : m_specs) {
         auto* plot = new QCustomPlot(widget());
         plot->setObjectName(QStringLiteral("plot_") + spec.id);
+        plot->setAccessibleName(spec.title);
+        plot->setAccessibleDescription(tr("%1 against simulated time; the numbers are in the Run dock's readout and in "
+                                          "File > Export Data").arg(spec.title));
         plot->setMinimumHeight(140);
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         // Live traces: fast polylines and cached labels keep a replot cheap on a busy machine.

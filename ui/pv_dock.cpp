@@ -44,6 +44,8 @@ PvDock::PvDock(QWidget* parent) : QDockWidget(tr("P–V diagram"), parent) {
     for (int layer = 0; layer < 2; ++layer) {
         auto* plot = new QCustomPlot(m_plotHost);
         plot->setObjectName(layer == 0 ? QStringLiteral("pv_inner") : QStringLiteral("pv_outer"));
+        plot->setAccessibleName(tr("Pressure against volume, %1").arg(layerNames[layer]));
+        plot->setAccessibleDescription(tr("The trail of the layer's gas in the P-V plane and its isotherm"));
         plot->setMinimumSize(240, 170);
         plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
         plot->plotLayout()->insertRow(0);

@@ -1,5 +1,7 @@
 #include "run_dock.h"
 
+#include "accessibility.h"
+
 #include <cmath>
 
 #include <QElapsedTimer>
@@ -34,6 +36,9 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     }
     m_integrator->setPlaceholderText(tr("side by side (see each view)"));
     form->addRow(tr("Integrator"), m_integrator);
+    m_integrator->setToolTip(tr("The method that advances the body in time; each one's order and idea are in its "
+                                "item's tooltip and in Help"));
+    m_integrator->setAccessibleName(tr("Integrator"));
     m_dt = new QLineEdit(host);
     m_dt->setObjectName(QStringLiteral("dtEdit"));
     const simcore::ParamSpec* dtSpec = &simcore::paramSpec(simcore::Param::Dt);
@@ -46,13 +51,17 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
         m_speed->addItem(speedName(s), int(s));
     m_speed->setToolTip(tr("How fast simulated time runs against the wall clock"));
     form->addRow(tr("Speed"), m_speed);
+    m_speed->setAccessibleName(tr("Speed"));
     layout->addLayout(form);
 
     auto* buttons = new QHBoxLayout;
     m_run = new QPushButton(tr("Run"), host);
     m_run->setObjectName(QStringLiteral("runButton"));
+    m_run->setToolTip(tr("Run or pause the simulation (Space)"));
     m_step = new QPushButton(tr("Step"), host);
+    m_step->setToolTip(tr("One step DT forward (S)"));
     m_reset = new QPushButton(tr("Reset"), host);
+    m_reset->setToolTip(tr("Back to the start state with the same parameters (Ctrl+R)"));
     buttons->addWidget(m_run);
     buttons->addWidget(m_step);
     buttons->addWidget(m_reset);
@@ -71,6 +80,10 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     mono.setStyleHint(QFont::Monospace);
     m_readout->setFont(mono);
     layout->addWidget(m_readout);
+    // Tab reaches it; a screen reader reads its text, and again when it changes (at most once a
+    // second: it changes every frame).
+    makeLive(m_readout);
+    m_readout->setAccessibleDescription(tr("Time, steps, energies and the energy balance of the run"));
     layout->addStretch(1);
     setWidget(host);
 

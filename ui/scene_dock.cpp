@@ -1,5 +1,7 @@
 #include "scene_dock.h"
 
+#include "accessibility.h"
+
 #include <QComboBox>
 #include <QLabel>
 #include <QPushButton>
@@ -17,6 +19,7 @@ SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     layout->setContentsMargins(4, 4, 4, 4);
     m_scene = new QComboBox(host);
     m_scene->setObjectName(QStringLiteral("sceneCombo"));
+    setAccessibleText(m_scene, tr("Scene"), tr("The body to build: a spring, a two-layer ring or a two-layer sphere"));
     for (const simcore::SceneInfo& s : simcore::sceneTable())
         m_scene->addItem(toQString(s.name), int(s.kind));
     layout->addWidget(m_scene);

@@ -48,6 +48,9 @@ StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability 
 
     m_plot = new QCustomPlot(host);
     m_plot->setObjectName(QStringLiteral("stabilityMapPlot"));
+    m_plot->setAccessibleName(tr("Stability map"));
+    m_plot->setAccessibleDescription(tr("The integrator's stability region and the body's eigenvalues times DT; the "
+                                        "margin is written below the map"));
     m_plot->setMinimumSize(260, 240);
     m_plot->xAxis->setLabel(tr("Re(hλ)"));
     m_plot->yAxis->setLabel(tr("Im(hλ)"));

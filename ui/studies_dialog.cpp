@@ -106,6 +106,10 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
         auto* box = new QCheckBox(toQString(info.name), integrators);
         const QString name = toQString(info.name);
         box->setChecked(name == "euler" || name == "midpoint" || name == "rk4" || name == "verlet");
+        box->setToolTip(tr("Include %1 (order %2) in the study: %3")
+                            .arg(name)
+                            .arg(info.order)
+                            .arg(toQString(info.description)));
         grid->addWidget(box, i / 4, i % 4);
         m_integrators.push_back(box);
         ++i;
@@ -119,9 +123,12 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
 
     auto* controls = new QHBoxLayout;
     m_run = new QPushButton(tr("Run"), this);
+    m_run->setToolTip(tr("Run the study on a worker thread; the window stays usable"));
     m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setToolTip(tr("Stop the study; the rows finished so far stay"));
     m_cancel->setEnabled(false);
     m_export = new QPushButton(tr("Export..."), this);
+    m_export->setToolTip(tr("Write the table as CSV, or the plot as SVG, PNG or PDF"));
     m_export->setEnabled(false);
     m_progress = new QProgressBar(this);
     m_status = new QLabel(this);
@@ -134,10 +141,14 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
 
     auto* split = new QSplitter(Qt::Vertical, this);
     m_plot = new QCustomPlot(split);
+    m_plot->setAccessibleName(tr("Study plot"));
+    m_plot->setAccessibleDescription(tr("The study's results drawn; the same numbers are in the table"));
     m_plot->setMinimumHeight(260);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     m_table = new QTableWidget(split);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setAccessibleName(tr("Results"));
+    m_table->setAccessibleDescription(tr("One row per run of the study; the arrow keys move between the cells"));
     split->addWidget(m_plot);
     split->addWidget(m_table);
     split->setStretchFactor(0, 3);
@@ -257,8 +268,12 @@ WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QW
     m_dts = new QLineEdit(QStringLiteral("0.01 0.005 0.0025 0.00125"), m_options);
     m_dts->setToolTip(tr("Fixed steps DT [s], separated by spaces; T must be a multiple of each"));
     m_duration = new QLineEdit(QStringLiteral("1"), m_options);
+    m_duration->setToolTip(tr("Simulated time of every run [s]"));
     m_reference = new QComboBox(m_options);
     m_reference->addItems({"auto", "exact", "rk4", "rk45"});
+    m_reference->setToolTip(tr("What the errors are measured against: the closed form where there is one (exact), "
+                               "or a run of rk4 or rk45 with a much smaller step; auto chooses"));
+    m_reference->setAccessibleName(tr("Reference"));
     form->addRow(tr("DT values [s]"), m_dts);
     form->addRow(tr("Duration T [s]"), m_duration);
     form->addRow(tr("Reference"), m_reference);
@@ -369,6 +384,7 @@ RefinementDialog::RefinementDialog(const simcore::ParameterSet& params, QWidget*
     m_dt->setToolTip(tr("Fixed step DT [s] for every level; it must divide 0.01 s and be stable at the finest "
                         "level. Empty: a quarter of the smaller of the scene's DT and the finest level's stable step"));
     m_duration = new QLineEdit(QStringLiteral("0.5"), m_options);
+    m_duration->setToolTip(tr("Simulated time of every run [s]"));
     form->addRow(key.empty() ? tr("Levels") : tr("Levels (%1)").arg(QString::fromStdString(key)), m_levels);
     form->addRow(tr("DT [s]"), m_dt);
     form->addRow(tr("Duration T [s]"), m_duration);

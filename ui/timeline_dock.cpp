@@ -32,6 +32,7 @@ TimelineDock::TimelineDock(QWidget* parent) : QDockWidget(tr("Timeline"), parent
     m_slider->setToolTip(
         tr("Every moment of the run: drag to travel back in time (the run pauses)"));
     m_slider->setRange(0, 0);
+    m_slider->setAccessibleName(tr("Timeline"));
     m_slider->setFocusPolicy(Qt::ClickFocus);  // Home / End belong to the window's actions
     m_end = new QPushButton(tr("Newest ▶|"), host);
     m_end->setToolTip(tr("The newest recorded moment (End)"));

@@ -6,6 +6,8 @@
 #include <QGuiApplication>
 #include <QMouseEvent>
 #include <QOffscreenSurface>
+#include <QFrame>
+#include <QKeyEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QLabel>
@@ -137,6 +139,93 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     m_forcesPanel->setStyleSheet(
         QStringLiteral("QLabel { color: #202030; background: rgba(255,255,255,215); border: 1px solid #a0a0aa; padding: 4px; }"));
     m_forcesPanel->hide();
+    // Keyboard: a visible frame while the view has focus (drawn over the GL image).
+    m_focusFrame = new QFrame(this);
+    m_focusFrame->setObjectName(QStringLiteral("focusFrame"));
+    m_focusFrame->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_focusFrame->hide();
+    setHighContrast(false);
+    setAccessibleName(tr("Simulation view"));
+    setAccessibleDescription(
+        tr("The body. Keyboard: arrow keys or Page Up and Page Down choose a particle and show the forces on it; "
+           "Enter grabs it with the mouse spring, then the arrow keys drag it (Shift: ten times farther) and "
+           "Enter or Escape lets go; Escape clears the choice."));
+}
+
+void Viewport::setHighContrast(bool on) {
+    m_highContrast = on;
+    m_info->setStyleSheet(on ? QStringLiteral("QLabel { color: white; background: black; padding: 3px; }")
+                             : QStringLiteral("QLabel { color: #202030; background: rgba(255,255,255,150); padding: 3px; }"));
+    m_focusFrame->setStyleSheet(on ? QStringLiteral("QFrame { border: 4px solid yellow; background: transparent; }")
+                                   : QStringLiteral("QFrame { border: 3px solid #1a5fd0; background: transparent; }"));
+    update();
+}
+
+void Viewport::focusInEvent(QFocusEvent* event) {
+    QOpenGLWidget::focusInEvent(event);
+    m_focusFrame->setGeometry(rect());
+    m_focusFrame->show();
+    m_focusFrame->raise();
+}
+
+void Viewport::focusOutEvent(QFocusEvent* event) {
+    QOpenGLWidget::focusOutEvent(event);
+    m_focusFrame->hide();
+}
+
+QPointF Viewport::pixelOf(int particle) const {
+    const auto& x = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))].positions;
+    const QVector3D p(x[3 * std::size_t(particle)], x[3 * std::size_t(particle) + 1], x[3 * std::size_t(particle) + 2]);
+    const QVector3D ndc = (m_camera.projection(size()) * m_camera.view()).map(p);
+    return {(ndc.x() + 1.0) * 0.5 * width(), (1.0 - ndc.y()) * 0.5 * height()};
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+    const int count = m_frame && m_frame->scene ? m_frame->scene->topology.particleCount() : 0;
+    if (count == 0) return QOpenGLWidget::keyPressEvent(event);
+    const int key = event->key();
+    const bool enter = key == Qt::Key_Return || key == Qt::Key_Enter;
+    if (m_drag == Drag::Grab) {
+        // Dragging by keyboard: the anchor moves in the plane facing the camera, 8 pixels a
+        // press (Shift: 80); Enter or Escape lets go.
+        const double step = event->modifiers() & Qt::ShiftModifier ? 80.0 : 8.0;
+        QPointF d;
+        if (key == Qt::Key_Left) d = {-step, 0};
+        else if (key == Qt::Key_Right) d = {step, 0};
+        else if (key == Qt::Key_Up) d = {0, -step};
+        else if (key == Qt::Key_Down) d = {0, step};
+        else if (enter || key == Qt::Key_Escape) {
+            emit releaseRequested();
+            m_drag = Drag::None;
+            m_grabbed = false;
+            return;
+        } else {
+            return QOpenGLWidget::keyPressEvent(event);
+        }
+        m_lastPixel += d;
+        if (m_grabbed) emit anchorMoved(anchorUnder(m_lastPixel));
+        return;
+    }
+    int next = m_keyboardParticle;
+    const int jump = event->modifiers() & Qt::ShiftModifier ? 10 : 1;
+    if (key == Qt::Key_Right || key == Qt::Key_Down || key == Qt::Key_PageDown) next = next < 0 ? 0 : (next + jump) % count;
+    else if (key == Qt::Key_Left || key == Qt::Key_Up || key == Qt::Key_PageUp)
+        next = next < 0 ? count - 1 : ((next - jump) % count + count) % count;
+    else if (key == Qt::Key_Escape) next = -1;  // Home and End travel the timeline
+    else if (enter && m_keyboardParticle >= 0) {
+        // Grab the chosen particle as a press on it would (the worker picks along the ray
+        // through it, the nearest outer particle; onGrabbed starts the drag).
+        m_lastPixel = pixelOf(m_keyboardParticle);
+        const Ray ray = m_camera.rayAt(m_lastPixel, size());
+        m_drag = Drag::Grab;
+        m_grabbed = false;
+        emit grabRequested(ray.origin, ray.direction, 28.0 * m_camera.worldPerPixel(size()));
+        return;
+    } else {
+        return QOpenGLWidget::keyPressEvent(event);
+    }
+    m_keyboardParticle = next;
+    emit particleSelected(next);
 }
 
 Viewport::~Viewport() {
@@ -463,7 +552,8 @@ void Viewport::drawBox() {
 
 void Viewport::paintGL() {
     ++m_paints;
-    glClearColor(0.95f, 0.96f, 0.975f, 1.0f);
+    if (m_highContrast) glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    else glClearColor(0.95f, 0.96f, 0.975f, 1.0f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     if (!m_frame || !m_lines || !m_lines->isLinked()) return;
@@ -507,7 +597,9 @@ void Viewport::paintGL() {
     }
     for (int f = 0; f < 3; ++f)
         if (m_options.springs[f])
-            drawElementsLines(m_springs[std::size_t(f)], kFamilyColor[f], f == 0 ? lineWidth * 1.3f : lineWidth, f);
+            drawElementsLines(m_springs[std::size_t(f)],
+                              m_highContrast && f == 0 ? QVector4D(1.0f, 1.0f, 1.0f, 1.0f) : kFamilyColor[f],
+                              f == 0 ? lineWidth * 1.3f : lineWidth, f);
 
     if (m_options.normals) {
         if (flat) {
@@ -689,7 +781,10 @@ void Viewport::updateForcesPanel(const LaneFrame& lane) {
     m_forcesPanel->show();
 }
 
+void Viewport::resizeEventFrame() { if (m_focusFrame) m_focusFrame->setGeometry(rect()); }
+
 void Viewport::resizeEvent(QResizeEvent* event) {
+    resizeEventFrame();
     QOpenGLWidget::resizeEvent(event);
     if (m_forcesPanel) m_forcesPanel->move(width() - m_forcesPanel->width() - 8, 8);
     if (m_legend) m_legend->move(width() - m_legend->width() - 10, height() - m_legend->height() - 10);

@@ -14,6 +14,9 @@
 // once) selects the particle under the cursor: its free-body diagram, one arrow per force part
 // from the particle and the total, and a panel of their magnitudes (frames carry the
 // breakdown, the worker computes it). A click away from the body clears it.
+//
+// Keyboard (with focus, shown by a frame): arrow keys and Page Up/Down choose a particle (its
+// forces as for a click), Enter grabs it and the arrows drag it, Enter or Escape let go.
 
 #include <array>
 #include <memory>
@@ -28,6 +31,7 @@
 #include "frame.h"
 #include "view_options.h"
 
+class QFrame;
 class QLabel;
 
 namespace elui {
@@ -63,6 +67,9 @@ public:
     // Frames drawn since creation (for frame-rate measurements).
     quint64 paintCount() const { return m_paints; }
 
+    // High contrast (View menu): black background, white structural springs, yellow focus frame.
+    void setHighContrast(bool on);
+
 public slots:
     void showFrame(const elui::FramePtr& frame);
     void resetView();
@@ -75,6 +82,8 @@ signals:
     // A click without a drag: select the particle nearest the ray (none near it: clear).
     void selectRequested(const QVector3D& origin, const QVector3D& direction, double maxDistance);
     void cameraChanged(const elui::Camera& camera);
+    // The keyboard chose a particle (arrow keys, Page Up/Down), or none (-1, Escape).
+    void particleSelected(int particle);
 
 protected:
     void initializeGL() override;
@@ -84,6 +93,9 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
 
 private:
@@ -106,6 +118,8 @@ private:
     void drawForceBreakdown(const LaneFrame& lane);
     void updateForcesPanel(const LaneFrame& lane);
     QVector3D anchorUnder(const QPointF& pixel) const;
+    QPointF pixelOf(int particle) const;  // where a particle of the shown lane is drawn
+    void resizeEventFrame();
 
     FramePtr m_frame;
     std::shared_ptr<const SceneData> m_uploadedScene;
@@ -142,6 +156,11 @@ private:
     bool m_grabbed = false;
     QVector3D m_planePoint;   // the drag plane passes through here, facing the camera
     QVector3D m_planeNormal;
+
+    // Keyboard (issue 30): the particle chosen with the arrow keys (-1: none), the focus frame.
+    int m_keyboardParticle = -1;
+    QFrame* m_focusFrame = nullptr;
+    bool m_highContrast = false;
 };
 
 }  // namespace elui

@@ -172,8 +172,11 @@ int main(int argc, char** argv) {
                                        QStringLiteral("With --travel-back: branch there with key=value (a parameter, or "
                                                       "integrator=NAME), run on to --after and travel back again."),
                                        QStringLiteral("key=value"));
+    const QCommandLineOption contrastOpt(QStringLiteral("high-contrast"),
+                                         QStringLiteral("Start in high contrast (View > High contrast): white on black, "
+                                                        "yellow focus."));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt,
-                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt});
+                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, contrastOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -332,6 +335,7 @@ int main(int argc, char** argv) {
         elui::Viewport::softwareRenderer())
         elui::Viewport::setSamples(0);
     elui::MainWindow window(!screenshot);
+    if (parser.isSet(contrastOpt)) window.setHighContrast(true);
     if (parser.isSet(optionsOpt)) {
         elui::ViewOptions o = window.viewOptions();
         const simcore::NameList list = simcore::parseNameList("show", parser.value(optionsOpt).toStdString());
