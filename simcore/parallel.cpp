@@ -1,4 +1,4 @@
-#include "parallel.h"
+#include "simcore/parallel.h"
 
 #include <sched.h>
 

@@ -1,4 +1,4 @@
-#include "timeseries.h"
+#include "simlab/timeseries.h"
 
 #include <cerrno>
 #include <cmath>
@@ -11,14 +11,14 @@
 
 #include <xlsxwriter.h>
 
-namespace simcore {
+namespace simlab {
 
 // The workbook under construction: libxlsxwriter needs a file name, so it writes to a private
 // temporary file (mkstemp in the system's temporary folder); commit() copies the finished bytes
 // through the target's AtomicFile, opened up front so that a bad path is found before the run.
 class TimeSeriesWriter::Xlsx {
 public:
-    Xlsx(const std::string& path, SceneKind kind, const std::vector<CsvColumn>& columns)
+    Xlsx(const std::string& path, simcore::SceneKind kind, const std::vector<CsvColumn>& columns)
         : m_target(path), m_kind(kind), m_columns(columns) {
         if (!m_target.ok()) {
             m_error = m_target.error();
@@ -58,7 +58,7 @@ public:
 
     const std::string& error() const { return m_error; }
 
-    void add(const Diagnostics& d, long row) {
+    void add(const simcore::Diagnostics& d, long row) {
         if (!m_error.empty()) return;
         if (row > kXlsxMaxDataRows) {
             m_error = "cannot write '" + m_target.path() + "': an .xlsx sheet holds at most " +
@@ -136,7 +136,7 @@ private:
     }
 
     AtomicFile m_target;
-    SceneKind m_kind;
+    simcore::SceneKind m_kind;
     const std::vector<CsvColumn>& m_columns;
     std::string m_temp;
     lxw_workbook* m_book = nullptr;
@@ -145,7 +145,7 @@ private:
     std::string m_error;
 };
 
-TimeSeriesWriter::TimeSeriesWriter(SceneKind kind, std::vector<CsvColumn> columns, TimeSeriesFiles files)
+TimeSeriesWriter::TimeSeriesWriter(simcore::SceneKind kind, std::vector<CsvColumn> columns, TimeSeriesFiles files)
     : m_kind(kind), m_columns(std::move(columns)), m_files(std::move(files)) {
     if (!m_files.csv.empty()) {
         m_csv = std::make_unique<AtomicFile>(m_files.csv);
@@ -164,7 +164,7 @@ void TimeSeriesWriter::fail(const std::string& message) {
     if (m_error.empty()) m_error = message;
 }
 
-void TimeSeriesWriter::add(const Diagnostics& d) {
+void TimeSeriesWriter::add(const simcore::Diagnostics& d) {
     ++m_rows;
     if (m_csv) m_csv->write(inDialect(csvRow(m_columns, d), m_files.dialect, false));
     if (m_xlsx) {
@@ -181,4 +181,4 @@ bool TimeSeriesWriter::commit() {
     return ok();
 }
 
-}  // namespace simcore
+}  // namespace simlab

@@ -21,9 +21,9 @@
 #include <string>
 #include <vector>
 
-#include "output.h"
+#include "simlab/output.h"
 
-namespace simcore {
+namespace simlab {
 
 struct TimeSeriesFiles {
     std::string csv;                            // "" = none
@@ -38,7 +38,7 @@ inline constexpr long kXlsxMaxDataRows = 1048575;
 class TimeSeriesWriter {
 public:
     // Opens every file at once: an unwritable path shows in error() before any run.
-    TimeSeriesWriter(SceneKind kind, std::vector<CsvColumn> columns, TimeSeriesFiles files);
+    TimeSeriesWriter(simcore::SceneKind kind, std::vector<CsvColumn> columns, TimeSeriesFiles files);
     ~TimeSeriesWriter();
     TimeSeriesWriter(const TimeSeriesWriter&) = delete;
     TimeSeriesWriter& operator=(const TimeSeriesWriter&) = delete;
@@ -50,7 +50,7 @@ public:
     long rows() const { return m_rows; }
 
     // One record (one CSV line, one sheet row).
-    void add(const Diagnostics& d);
+    void add(const simcore::Diagnostics& d);
     // Finishes and renames every file into place. False (with error()) on any failure, and then
     // no file named is replaced by a partial one.
     bool commit();
@@ -58,7 +58,7 @@ public:
 private:
     class Xlsx;
     void fail(const std::string& message);
-    SceneKind m_kind;
+    simcore::SceneKind m_kind;
     std::vector<CsvColumn> m_columns;
     TimeSeriesFiles m_files;
     std::unique_ptr<AtomicFile> m_csv;
@@ -67,4 +67,4 @@ private:
     std::string m_error;
 };
 
-}  // namespace simcore
+}  // namespace simlab

@@ -15,16 +15,16 @@
 
 #include <QLabel>
 
-#include "accessibility.h"
-#include "compare_dialog.h"
-#include "help_dialog.h"
-#include "lessons_dialog.h"
-#include "main_window.h"
-#include "params.h"
-#include "scenes.h"
-#include "simulation_controller.h"
-#include "studies_dialog.h"
+#include "simcore/params.h"
+#include "simcore/scenes.h"
 #include "test_support.h"
+#include "ui/accessibility.h"
+#include "ui/compare_dialog.h"
+#include "ui/help_dialog.h"
+#include "ui/lessons_dialog.h"
+#include "ui/main_window.h"
+#include "ui/simulation_controller.h"
+#include "ui/studies_dialog.h"
 
 using namespace elui;
 

@@ -1,4 +1,4 @@
-#include "export.h"
+#include "ui/export.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -13,10 +13,10 @@
 #include <QPdfWriter>
 #include <QSaveFile>
 
-#include "output.h"
-#include "plot_series.h"
 #include "qcustomplot.h"
-#include "timeseries.h"
+#include "simlab/output.h"
+#include "ui/plot_series.h"
+#include "simlab/timeseries.h"
 
 namespace elui {
 
@@ -169,22 +169,22 @@ QByteArray plotsSvg(const std::vector<QCustomPlot*>& plots, const std::vector<Pl
 }  // namespace
 
 QString writeCsv(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows,
-                 simcore::CsvDialect dialect) {
+                 simlab::CsvDialect dialect) {
     // Streamed row by row (a long history is hundreds of MB).
     Output file(path);
     if (QString e = file.open(); !e.isEmpty()) return e;
-    const auto columns = simcore::timeSeriesColumns(kind);
-    const std::string header = simcore::inDialect(simcore::csvHeader(columns), dialect, true);
+    const auto columns = simlab::timeSeriesColumns(kind);
+    const std::string header = simlab::inDialect(simlab::csvHeader(columns), dialect, true);
     file.write(header.data(), qint64(header.size()));
     for (const simcore::Diagnostics& d : rows) {
-        const std::string row = simcore::inDialect(simcore::csvRow(columns, d), dialect, false);
+        const std::string row = simlab::inDialect(simlab::csvRow(columns, d), dialect, false);
         file.write(row.data(), qint64(row.size()));
     }
     return file.commit();
 }
 
 QString writeXlsx(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows) {
-    simcore::TimeSeriesWriter writer(kind, simcore::timeSeriesColumns(kind), {{}, {}, path.toStdString()});
+    simlab::TimeSeriesWriter writer(kind, simlab::timeSeriesColumns(kind), {{}, {}, path.toStdString()});
     for (const simcore::Diagnostics& d : rows) {
         if (!writer.ok()) break;
         writer.add(d);
@@ -193,9 +193,9 @@ QString writeXlsx(const QString& path, simcore::SceneKind kind, const std::vecto
     return {};
 }
 
-simcore::CsvDialect defaultCsvDialect(const QLocale& locale) {
-    return locale.decimalPoint() == QLatin1String(",") ? simcore::CsvDialect::ExcelSemicolon
-                                                       : simcore::CsvDialect::Plain;
+simlab::CsvDialect defaultCsvDialect(const QLocale& locale) {
+    return locale.decimalPoint() == QLatin1String(",") ? simlab::CsvDialect::ExcelSemicolon
+                                                       : simlab::CsvDialect::Plain;
 }
 
 QString writeFile(const QString& path, const QByteArray& bytes) { return writeEncoded(path, bytes); }

@@ -10,9 +10,9 @@
 #include <QLocale>
 #include <QString>
 
-#include "output.h"
-#include "params.h"
-#include "simulation.h"
+#include "simcore/params.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
 
 class QCustomPlot;
 
@@ -23,12 +23,12 @@ struct PlotSpec;
 // Each returns an error message naming the file and the system's reason, or empty on success.
 QString writeFile(const QString& path, const QByteArray& bytes);
 QString writeCsv(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows,
-                 simcore::CsvDialect dialect = simcore::CsvDialect::Plain);
+                 simlab::CsvDialect dialect = simlab::CsvDialect::Plain);
 // The run's table and charts as an .xlsx workbook (simlab's TimeSeriesWriter, as the CLI's --xlsx).
 QString writeXlsx(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows);
 // The CSV dialect a spreadsheet of this locale opens by a double-click: excel-semicolon where the
 // decimal separator is a comma (de, fr, es, ...), plain elsewhere.
-simcore::CsvDialect defaultCsvDialect(const QLocale& locale);
+simlab::CsvDialect defaultCsvDialect(const QLocale& locale);
 QString writeImage(const QString& path, const QImage& image);
 // The plots stacked vertically; the format follows the suffix (.png, .svg, .pdf).
 QString writePlots(const QString& path, const std::vector<QCustomPlot*>& plots,

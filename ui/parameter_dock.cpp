@@ -1,6 +1,4 @@
-#include "parameter_dock.h"
-
-#include "accessibility.h"
+#include "ui/parameter_dock.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -10,6 +8,8 @@
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QVBoxLayout>
+
+#include "ui/accessibility.h"
 
 namespace elui {
 

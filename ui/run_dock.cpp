@@ -1,6 +1,4 @@
-#include "run_dock.h"
-
-#include "accessibility.h"
+#include "ui/run_dock.h"
 
 #include <cmath>
 
@@ -15,8 +13,10 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "integrators.h"
-#include "parameter_dock.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "ui/accessibility.h"
+#include "ui/parameter_dock.h"
 
 namespace elui {
 

@@ -3,11 +3,12 @@
 #include <cstdio>
 #include <string>
 
-#include "cli.h"
-#include "integrators.h"
-#include "output.h"
-#include "params.h"
-#include "scenes.h"
+#include "app/cli/cli.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simcore/scenes.h"
+#include "simlab/output.h"
 
 namespace cli {
 
@@ -34,7 +35,7 @@ std::string valueCompletion(const CLI::Option& option) {
         for (const simcore::ParamSpec& p : simcore::parameterTable()) keys += (keys.empty() ? "" : " ") + std::string(p.key) + "=";
         return "compopt -o nospace 2>/dev/null; COMPREPLY=($(compgen -W \"" + keys + "\" -- \"$cur\"))";
     }
-    if (name == "csv-dialect") return "COMPREPLY=($(compgen -W \"" + words(std::string(simcore::kCsvDialectNames)) + "\" -- \"$cur\"))";
+    if (name == "csv-dialect") return "COMPREPLY=($(compgen -W \"" + words(std::string(simlab::kCsvDialectNames)) + "\" -- \"$cur\"))";
     if (type.find(".xlsx") != std::string::npos) return "COMPREPLY=($(compgen -f -X '!*.xlsx' -- \"$cur\") $(compgen -d -- \"$cur\"))";
     if (name == "kernels") return "COMPREPLY=($(compgen -W \"portable avx2 avx512\" -- \"$cur\"))";
     if (type.find("FILE") != std::string::npos) return "COMPREPLY=($(compgen -f -- \"$cur\"))";

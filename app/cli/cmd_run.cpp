@@ -4,10 +4,11 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli.h"
-#include "output.h"
-#include "simulation.h"
-#include "timeseries.h"
+#include "app/cli/cli.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
+#include "simlab/timeseries.h"
 
 namespace cli {
 
@@ -56,7 +57,7 @@ struct RunArgs {
     double maxSteps = kMaxSteps;
     std::string csv, state, saveScene, xlsx;
     std::string dialectName = "plain";
-    simcore::CsvDialect dialect = simcore::CsvDialect::Plain;  // after check()
+    simlab::CsvDialect dialect = simlab::CsvDialect::Plain;  // after check()
     bool quiet = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
@@ -65,8 +66,8 @@ struct RunArgs {
 void checkRun(RunArgs& args) {
     checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"xlsx", args.xlsx},
                         {"state", args.state}, {"save-scene", args.saveScene}});
-    const auto dialect = simcore::csvDialectNamed(args.dialectName);
-    if (!dialect) throw UsageError("--csv-dialect: " + simcore::unknownCsvDialectMessage(args.dialectName));
+    const auto dialect = simlab::csvDialectNamed(args.dialectName);
+    if (!dialect) throw UsageError("--csv-dialect: " + simlab::unknownCsvDialectMessage(args.dialectName));
     args.dialect = *dialect;
     args.setup = sceneSetup(args.scene);
     // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
@@ -86,13 +87,13 @@ void checkRun(RunArgs& args) {
         // the last must fit, or the run is refused before it starts (an adaptive run that
         // outgrows the sheet is told at the end, its CSV still written).
         const double rows = std::floor(steps / static_cast<double>(args.every)) + 2;
-        if (!args.xlsx.empty() && rows > static_cast<double>(simcore::kXlsxMaxDataRows)) {
+        if (!args.xlsx.empty() && rows > static_cast<double>(simlab::kXlsxMaxDataRows)) {
             char text[300];
             std::snprintf(text, sizeof text,
                           "--xlsx: %.0f rows (%.0f steps, a row every %ld) do not fit a sheet of %ld rows; use "
                           "--every %.0f or more",
-                          rows, steps, args.every, simcore::kXlsxMaxDataRows,
-                          std::ceil(steps / static_cast<double>(simcore::kXlsxMaxDataRows - 2)));
+                          rows, steps, args.every, simlab::kXlsxMaxDataRows,
+                          std::ceil(steps / static_cast<double>(simlab::kXlsxMaxDataRows - 2)));
             throw UsageError(text);
         }
     }
@@ -103,22 +104,22 @@ int run(const RunArgs& args) {
     const double duration = args.duration;
     const long every = args.every;
     // Open every output before running: an unwritable path is bad input, found at once.
-    std::unique_ptr<simcore::AtomicFile> state, sceneOut;
+    std::unique_ptr<simlab::AtomicFile> state, sceneOut;
     for (auto [path, file] : {std::pair{&args.state, &state}, {&args.saveScene, &sceneOut}}) {
         if (path->empty()) continue;
-        *file = std::make_unique<simcore::AtomicFile>(*path);
+        *file = std::make_unique<simlab::AtomicFile>(*path);
         if (!(*file)->ok()) throw UsageError((*file)->error());
     }
 
     simcore::Simulation sim(setup.params, setup.integrator);
     sim.setIntegratorOptions(args.integrator);
     if (setup.state)  // resume a saved experiment
-        if (auto error = simcore::applyState(sim, *setup.state)) throw UsageError(*error);
+        if (auto error = simlab::applyState(sim, *setup.state)) throw UsageError(*error);
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
-    simcore::TimeSeriesWriter series(setup.params.kind(),
-                                     simcore::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters),
+    simlab::TimeSeriesWriter series(setup.params.kind(),
+                                     simlab::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters),
                                      {args.csv, args.dialect, args.xlsx});
     if (!series.ok()) throw UsageError(series.error());
     const bool recording = !args.csv.empty() || !args.xlsx.empty();
@@ -139,8 +140,8 @@ int run(const RunArgs& args) {
         }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (state) state->write(simcore::inDialect(simcore::stateTable(sim), args.dialect, true));
-    if (sceneOut) sceneOut->write(simcore::sceneFileText(sim, setup.sceneName, true));
+    if (state) state->write(simlab::inDialect(simlab::stateTable(sim), args.dialect, true));
+    if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
 
     if (!series.commit()) {
         std::fprintf(stderr, "error: %s\n", series.error().c_str());
