@@ -66,14 +66,16 @@ stray=$(cd "$root" && find . \( -name '*.a' -o -name '*.h' -o -name 'test_*' -o 
 for bin in "$usr"/bin/* "$usr"/lib/python3/dist-packages/*.so; do
   [ -e "$bin" ] || continue
   name=${bin#"$root"}
-  readelf -d "$bin" | grep -q 'FLAGS.*BIND_NOW\|FLAGS_1.*NOW' || fail "$name is not linked with -z now (bindnow)"
-  readelf -lW "$bin" | grep -q 'GNU_RELRO' || fail "$name has no RELRO segment"
+  # (Each readelf's output is read whole first: grep -q quitting early would fail the pipe.)
+  dynamic=$(readelf -d "$bin") segments=$(readelf -lW "$bin")
+  grep -q 'FLAGS.*BIND_NOW\|FLAGS_1.*NOW' <<<"$dynamic" || fail "$name is not linked with -z now (bindnow)"
+  grep -q 'GNU_RELRO' <<<"$segments" || fail "$name has no RELRO segment"
   sections=$(readelf -SW "$bin")
   grep -q '\.debug_' <<<"$sections" && fail "$name ships debug sections (not stripped)"
   grep -q ' \.comment ' <<<"$sections" && fail "$name ships a .comment section"
 done
-readelf --dyn-syms -W "$usr/bin/elastic-lab-cli" | grep -q '__[a-z]*_chk' ||
-  fail "elastic-lab-cli calls no fortified function (not built with _FORTIFY_SOURCE)"
+symbols=$(readelf --dyn-syms -W "$usr/bin/elastic-lab-cli")
+grep -q '__[a-z]*_chk@' <<<"$symbols" || fail "elastic-lab-cli calls no fortified function (not built with _FORTIFY_SOURCE)"
 
 # The installed CLI, from the scratch root, with a clean environment and its own working directory.
 mkdir -m 700 "$scratch/runtime"
@@ -152,7 +154,8 @@ if [ "$gui" = ON ]; then
     grep -aq '^\[80:application/x-elastic-lab-scene\]' "$scratch/xdg/mime/magic" || fail "the scene type has no content match"
     run_installed "$usr/bin/elastic-lab-cli" run --scene ring2d --duration 0.01 --quiet --save-scene "$scratch/saved.json" ||
       fail "save a scene file"
-    head -c 64 "$scratch/saved.json" | tr -d '\n' | grep -q '"format": "elastic-lab-scene"' ||
+    start=$(head -c 64 "$scratch/saved.json" | tr -d '\n')
+    grep -q '"format": "elastic-lab-scene"' <<<"$start" ||
       fail "a saved scene does not open with the \"format\" the content match looks for"
   else
     echo "scene MIME type not compiled: update-mime-database not found (Debian: shared-mime-info)"
@@ -186,7 +189,8 @@ if [ "$man" = ON ]; then
     fail "elastic-lab-cli.1 lacks the description of run --duration"
   [ "$gui" = ON ] && check_man elastic-lab 'screenshot'
   # Nothing of the build machine in the pages: bench --threads says its default in words.
-  zcat "$usr/share/man/man1/elastic-lab-cli.1.gz" | grep -A2 'fB\\-\\-threads' | grep -q 'all CPUs this process may use' ||
+  page=$(zcat "$usr/share/man/man1/elastic-lab-cli.1.gz")
+  grep -A2 'fB\\-\\-threads' <<<"$page" | grep -q 'all CPUs this process may use' ||
     fail "elastic-lab-cli.1: bench --threads does not say 'all CPUs this process may use'"
 fi
 

@@ -10,6 +10,7 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QMenuBar>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTest>
 
@@ -46,10 +47,17 @@ QStringList unnamedControls(QWidget* root) {
             if (!child || !child->isValid()) continue;
             const QAccessible::State state = child->state();
             if (state.invisible) continue;
-            if (state.focusable) {
+            // Controls, not the parts of a view's content (cells, list items, headers: named by
+            // their text, and read as such), which have no widget of their own.
+            auto* widget = qobject_cast<QWidget*>(child->object());
+            const bool control = widget && QAccessible::queryAccessibleInterface(widget) == child;
+            if (control && state.focusable) {
                 if (child->text(QAccessible::Name).trimmed().isEmpty())
                     missing << QStringLiteral("no name: ") + describe(child);
-                else if (child->text(QAccessible::Description).trimmed().isEmpty())
+                // Qt 6.4's interface for a tab bar (the docks QMainWindow stacks) reports no
+                // description whatever is set; its tabs are named by their docks.
+                else if (child->role() != QAccessible::PageTabList &&
+                         child->text(QAccessible::Description).trimmed().isEmpty())
                     missing << QStringLiteral("no description: '%1' ").arg(child->text(QAccessible::Name)) + describe(child);
             }
             walk(child);
@@ -87,12 +95,13 @@ private slots:
     void failureAndReadoutAreAnnounced() {
         // What a screen reader hears: the events Qt's bridge turns into AT-SPI events (captured
         // here by an update handler, as Qt's own accessibility tests do).
-        static QList<QPair<QAccessible::Event, QObject*>> events;
-        events.clear();
-        QAccessible::setActive(true);
-        QAccessible::installUpdateHandler([](QAccessibleEvent* e) { events.append({e->type(), e->object()}); });
-        auto seen = [](QAccessible::Event type, QObject* object) {
-            return events.contains(QPair<QAccessible::Event, QObject*>(type, object));
+        // Qt passes events to the bridge only while a reader is active (never on the offscreen
+        // platform): what the code sends is read from elui::announcements().
+        QSignalSpy sent(announcements(), &Announcements::sent);
+        auto seen = [&](QAccessible::Event type, QObject* object) {
+            for (const QList<QVariant>& e : sent)
+                if (e.at(0).value<QObject*>() == object && e.at(1).toInt() == int(type)) return true;
+            return false;
         };
         {
             MainWindow window(false);
@@ -108,20 +117,19 @@ private slots:
             QVERIFY(testsupport::waitUntil([&] { return !readout->text().isEmpty(); }));
             QVERIFY(testsupport::waitUntil([&] { return readout->accessibleName() == plainText(readout->text()); }));
             QVERIFY(!readout->accessibleName().contains('<'));
-            QVERIFY(seen(QAccessible::NameChanged, readout));
+            QVERIFY(testsupport::waitUntil([&] { return seen(QAccessible::NameChanged, readout); }));
             // The failure banner: an alert, announced when it appears, read as its text.
             window.controller()->setSpeed(Speed::AsFastAsPossible);
             window.controller()->run();
             QVERIFY(testsupport::waitUntil([&] { return !window.failureText().isEmpty(); }));
             QWidget* banner = window.findChild<QWidget*>(QStringLiteral("failureBanner"));
-            QVERIFY(seen(QAccessible::Alert, banner));
+            QVERIFY(testsupport::waitUntil([&] { return seen(QAccessible::Alert, banner); }));
             QAccessibleInterface* iface = QAccessible::queryAccessibleInterface(banner);
             QCOMPARE(iface->role(), QAccessible::AlertMessage);
             QVERIFY2(iface->text(QAccessible::Name).startsWith("The simulation blew up at t = "),
                      qPrintable(iface->text(QAccessible::Name)));
             window.controller()->pause();
         }
-        QAccessible::installUpdateHandler(nullptr);
     }
 
     void highContrastIsReadable() {

@@ -258,6 +258,8 @@ private slots:
         w.startScene(p, {"rk4"});
         QVERIFY(waitForScene(w, SceneKind::Ring2d));
         Viewport* v = w.viewports().front();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w, testsupport::kHangGuardMs));
         v->setFocus(Qt::TabFocusReason);
         QTRY_VERIFY_WITH_TIMEOUT(v->hasFocus(), testsupport::kHangGuardMs);
         QVERIFY(v->findChild<QWidget*>(QStringLiteral("focusFrame"))->isVisible());

@@ -10,7 +10,6 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QRegularExpression>
-#include <QTabBar>
 #include <QTextDocumentFragment>
 #include <QTimer>
 
@@ -74,12 +73,7 @@ namespace {
 class ToolTipDescriptions : public QObject {
 protected:
     bool eventFilter(QObject* object, QEvent* event) override {
-        // Every widget gets a show event as it (or its window) appears. The tab bars that
-        // QMainWindow makes for docks placed on one another have no tooltip of their own.
-        if (event->type() == QEvent::Show)
-            if (auto* tabs = qobject_cast<QTabBar*>(object); tabs && tabs->accessibleDescription().isEmpty())
-                tabs->setAccessibleDescription(QCoreApplication::translate(
-                    "elui", "Docks placed on one another: the arrow keys choose which one is shown"));
+        // Every widget gets a show event as it (or its window) appears.
         if (event->type() == QEvent::Show)
             if (auto* w = qobject_cast<QWidget*>(object);
                 w && w->accessibleDescription().isEmpty() && !w->toolTip().isEmpty())
@@ -113,16 +107,25 @@ void markAsAlert(QWidget* widget) {
     widget->setProperty(kAlertProperty, true);
 }
 
-void announceAlert(QWidget* widget) {
-    QAccessibleEvent event(widget, QAccessible::Alert);
-    QAccessible::updateAccessibility(&event);
+Announcements* announcements() {
+    static auto* instance = new Announcements;  // lives as long as the program
+    return instance;
 }
+
+void sendAccessibleEvent(QObject* object, QAccessible::Event type) {
+    QAccessibleEvent event(object, type);
+    QAccessible::updateAccessibility(&event);
+    emit announcements()->sent(object, int(type));
+}
+
+void announceAlert(QWidget* widget) { sendAccessibleEvent(widget, QAccessible::Alert); }
 
 // The readout's name follows its text, throttled: a change within minimumMs of the last one is
 // sent when that time has passed (the newest text then).
 class LiveLabel : public QObject {
 public:
-    LiveLabel(QLabel* label, int minimumMs) : QObject(label), m_label(label), m_minimumMs(minimumMs) {
+    LiveLabel(QLabel* label, const QString& emptyName, int minimumMs)
+        : QObject(label), m_label(label), m_emptyName(emptyName), m_minimumMs(minimumMs) {
         m_timer.setSingleShot(true);
         connect(&m_timer, &QTimer::timeout, this, &LiveLabel::publish);
         label->setFocusPolicy(Qt::TabFocus);
@@ -149,17 +152,20 @@ private:
         if (text == m_published && m_clock.isValid()) return;
         m_published = text;
         m_clock.restart();
-        m_label->setAccessibleName(text);  // sends NameChanged
+        m_label->setAccessibleName(text.isEmpty() ? m_emptyName : text);
+        // Qt 6.4 sends no event for a new accessible name: this is what a reader hears.
+        sendAccessibleEvent(m_label, QAccessible::NameChanged);
     }
 
     QLabel* m_label;
+    QString m_emptyName;
     int m_minimumMs;
     QTimer m_timer;
     QElapsedTimer m_clock;
     QString m_published;
 };
 
-void makeLive(QLabel* label, int minimumMs) { new LiveLabel(label, minimumMs); }
+void makeLive(QLabel* label, const QString& emptyName, int minimumMs) { new LiveLabel(label, emptyName, minimumMs); }
 
 QPalette highContrastPalette() {
     const QColor black(0, 0, 0), white(255, 255, 255), yellow(255, 255, 0), grey(170, 170, 170), cyan(0, 255, 255);

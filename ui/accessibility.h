@@ -11,6 +11,8 @@
 //                           announced with an Alert event when it appears
 //   high contrast           a palette of black, white and yellow (contrast 21:1 and 19.6:1),
 //                           View > High contrast
+#include <QAccessible>
+#include <QObject>
 #include <QPalette>
 #include <QString>
 
@@ -40,10 +42,22 @@ void markAsAlert(QWidget* widget);
 // Tells assistive technology that an alert appeared (QAccessible::Alert on the widget).
 void announceAlert(QWidget* widget);
 
+// Every event sent above (an alert, a live label's new name) is also this object's signal. Qt
+// hands an event to the AT-SPI bridge only while a screen reader is active, so a test listens
+// here for what was sent, and scripts/atspi-tree.py checks the bridge's side by hand.
+class Announcements : public QObject {
+    Q_OBJECT
+signals:
+    void sent(QObject* object, int event);  // event: a QAccessible::Event
+};
+Announcements* announcements();
+void sendAccessibleEvent(QObject* object, QAccessible::Event type);
+
 // A label read out by screen readers as its text changes: focusable (Tab reaches it), its name the
-// plain text, a NameChanged event at most once per `minimumMs` (the newest text wins).
+// plain text (emptyName while it has none), a NameChanged event at most once per `minimumMs` (the
+// newest text wins).
 class LiveLabel;
-void makeLive(QLabel* label, int minimumMs = 1000);
+void makeLive(QLabel* label, const QString& emptyName, int minimumMs = 1000);
 
 // Black background, white text, yellow highlight and focus; links in cyan.
 QPalette highContrastPalette();

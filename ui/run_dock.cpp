@@ -82,7 +82,7 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     layout->addWidget(m_readout);
     // Tab reaches it; a screen reader reads its text, and again when it changes (at most once a
     // second: it changes every frame).
-    makeLive(m_readout);
+    makeLive(m_readout, tr("Readout"));
     m_readout->setAccessibleDescription(tr("Time, steps, energies and the energy balance of the run"));
     layout->addStretch(1);
     setWidget(host);

@@ -35,6 +35,7 @@ SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     m_bodyValues->setObjectName(QStringLiteral("bodyValues"));
     m_bodyValues->setWordWrap(true);
     m_bodyValues->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    makeLive(m_bodyValues, tr("Body values"));
     m_bodyValues->setToolTip(tr("What the parameters mean for the body that runs: under scaling=physical the "
                                 "values hold at the scene's default resolution and a finer mesh keeps the "
                                 "body's totals; under scaling=thesis they are per particle and per spring"));
