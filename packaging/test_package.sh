@@ -190,8 +190,10 @@ if [ "$man" = ON ]; then
   [ "$gui" = ON ] && check_man elastic-lab 'screenshot'
   # Nothing of the build machine in the pages: bench --threads says its default in words.
   page=$(zcat "$usr/share/man/man1/elastic-lab-cli.1.gz")
-  grep -A2 'fB\\-\\-threads' <<<"$page" | grep -q 'all CPUs this process may use' ||
+  threads=$(grep -A3 'fB\\-\\-threads' <<<"$page")
+  grep -q 'all CPUs this process may use' <<<"$threads" ||
     fail "elastic-lab-cli.1: bench --threads does not say 'all CPUs this process may use'"
+  grep -q '\[[0-9][0-9]*\]' <<<"$threads" && fail "elastic-lab-cli.1: bench --threads shows a number as its default: $threads"
 fi
 
 # The bash completion (app/cli), written by the tool from its command tree.
