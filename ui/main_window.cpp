@@ -603,6 +603,13 @@ void MainWindow::setHighContrast(bool on) {
     if (m_highContrast->isChecked() != on) m_highContrast->setChecked(on);  // toggled() calls back
     static const QPalette normal = QApplication::palette();
     QApplication::setPalette(on ? highContrastPalette() : normal);
+    // The Fusion style draws frames and check boxes in shades of the window colour, which on black
+    // vanish: white frames, and a yellow check, say where the controls are.
+    qApp->setStyleSheet(on ? QStringLiteral("QPushButton, QComboBox, QLineEdit { border: 1px solid white; padding: 2px 6px; }"
+                                            "QPushButton:focus, QComboBox:focus, QLineEdit:focus { border: 2px solid yellow; }"
+                                            "QCheckBox::indicator { width: 13px; height: 13px; border: 2px solid white; }"
+                                            "QCheckBox::indicator:checked { background: yellow; }")
+                           : QString());
     // The banners' own colours: light tints in the normal theme; black with a coloured border
     // in high contrast (their white text stays readable).
     m_banner->setStyleSheet(on ? QStringLiteral("#failureBanner { background: black; border: 3px solid #ff5050; }")
