@@ -15,6 +15,7 @@
 #include <QTest>
 
 #include "export.h"
+#include "gl_format.h"
 #include "main_window.h"
 #include "presets.h"
 #include "run_dock.h"
@@ -490,12 +491,7 @@ private slots:
 };
 
 int main(int argc, char** argv) {
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    format.setStencilBufferSize(8);
-    QSurfaceFormat::setDefaultFormat(format);
+    setDefaultGlFormat();
     QApplication app(argc, argv);
     TestGuiRender test;
     return QTest::qExec(&test, argc, argv);

@@ -119,7 +119,7 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
         f.setSamples(g_samples);
         setFormat(f);
     }
-    setMinimumSize(240, 200);
+    setMinimumSize(150, 150);  // three side by side beside the docks on a 1280 px projector
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     m_info = new QLabel(this);
