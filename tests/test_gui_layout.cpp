@@ -20,19 +20,19 @@
 #include <QTest>
 #include <QToolBar>
 
-#include "compare_dialog.h"
-#include "energy_bars_dock.h"
-#include "gl_format.h"
-#include "lessons.h"
-#include "main_window.h"
-#include "plot_ticks.h"
-#include "presets.h"
 #include "qcustomplot.h"
-#include "run_dock.h"
-#include "simulation_controller.h"
 #include "test_support.h"
-#include "ui_scale.h"
-#include "viewport.h"
+#include "ui/compare_dialog.h"
+#include "ui/energy_bars_dock.h"
+#include "ui/gl_format.h"
+#include "ui/lessons.h"
+#include "ui/main_window.h"
+#include "ui/plot_ticks.h"
+#include "ui/presets.h"
+#include "ui/run_dock.h"
+#include "ui/simulation_controller.h"
+#include "ui/ui_scale.h"
+#include "ui/viewport.h"
 
 using namespace elui;
 using simcore::SceneKind;

@@ -1,12 +1,12 @@
-#include "energy_bars_dock.h"
+#include "ui/energy_bars_dock.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <QTimer>
 
-#include "plot_ticks.h"
 #include "qcustomplot.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "field_keys.h"
+#include "ui/field_keys.h"
 
 #include <QKeyEvent>
 #include <QLineEdit>

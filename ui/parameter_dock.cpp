@@ -1,4 +1,4 @@
-#include "parameter_dock.h"
+#include "ui/parameter_dock.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -9,7 +9,7 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
-#include "field_keys.h"
+#include "ui/field_keys.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "plot_dock.h"
+#include "ui/plot_dock.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +11,8 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
-#include "plot_ticks.h"
 #include "qcustomplot.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
 

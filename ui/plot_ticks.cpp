@@ -1,4 +1,4 @@
-#include "plot_ticks.h"
+#include "ui/plot_ticks.h"
 
 #include <cmath>
 

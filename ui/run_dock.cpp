@@ -1,4 +1,4 @@
-#include "run_dock.h"
+#include "ui/run_dock.h"
 
 #include <cmath>
 #include <map>
@@ -14,9 +14,10 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "field_keys.h"
-#include "integrators.h"
-#include "parameter_dock.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "ui/field_keys.h"
+#include "ui/parameter_dock.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "scene_dock.h"
+#include "ui/scene_dock.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -6,8 +6,8 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
-#include "parameter_dock.h"
-#include "scenes.h"
+#include "simcore/scenes.h"
+#include "ui/parameter_dock.h"
 
 namespace elui {
 
