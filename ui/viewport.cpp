@@ -213,7 +213,14 @@ void Viewport::showFrame(const FramePtr& frame) {
         }
     }
     m_frame = frame;
-    updateOverlay();
+    // The text over the view (time, distance, failure) is rich text laid out anew whenever it
+    // changes: while running, ten times a second is readable and spares the GUI thread a
+    // layout per frame; a paused, stepped or failed frame shows at once.
+    const bool failed = std::any_of(frame->lanes.begin(), frame->lanes.end(), [](const LaneFrame& l) { return l.failure.has_value(); });
+    if (!frame->running || failed || newScene || !m_overlayClock.isValid() || m_overlayClock.elapsed() >= 100) {
+        m_overlayClock.start();
+        updateOverlay();
+    }
     update();
 }
 

@@ -296,9 +296,14 @@ int main(int argc, char** argv) {
     }
     // Interactive on a CPU renderer (Mesa llvmpipe): no multisampling, it costs more than half
     // the frame rate. Screenshots keep it (quality over speed); ELASTIC_LAB_MSAA decides if set.
+    // Not only the views: the window composes its widgets and the views' images with OpenGL in
+    // a surface of the default format, which had kept 4x samples (every frame rasterised the
+    // whole window four times over: docs/performance.md, "The GUI on a school PC").
     if (!screenshot && !qEnvironmentVariableIsSet("ELASTIC_LAB_MSAA") && elui::Viewport::openGLAvailable() &&
-        elui::Viewport::softwareRenderer())
+        elui::Viewport::softwareRenderer()) {
+        elui::setDefaultGlFormat(0);
         elui::Viewport::setSamples(0);
+    }
     elui::MainWindow window(!screenshot);
     if (uiScale != 1.0) window.setUiScale(uiScale);
     if (parser.isSet(optionsOpt)) {
