@@ -169,6 +169,10 @@ private slots:
     void initTestCase() {
         QVERIFY2(Viewport::openGLAvailable(), "OpenGL 3.3 core is needed (run under xvfb-run)");
         qInfo("screen: %dx%d", screenArea().width(), screenArea().height());
+#if defined(__SANITIZE_ADDRESS__)
+        // The suite runs three times in CI: the second screen's layouts once, in Release.
+        if (screenArea().width() > 1280) QSKIP("the 1920 x 1080 layouts run in Release only");
+#endif
     }
     void cleanup() { setUiScale(1.0); }
 
