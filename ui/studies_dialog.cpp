@@ -49,8 +49,11 @@ QString number(double v) { return QString::number(v, 'g', 4); }
 void setupLogAxis(QCPAxis* axis, const QString& label) {
     axis->setScaleType(QCPAxis::stLogarithmic);
     axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-    axis->setNumberFormat(QStringLiteral("eb"));
-    axis->setNumberPrecision(0);
+    // Three significant digits: over less than 1.6 decades QCustomPlot's log ticker falls back
+    // to linear steps (0.008, 0.01, 0.012), which a one-digit mantissa printed as "10⁻²" three
+    // times. Powers of ten still read 0.001, 0.01, 1e+05 (beautified to 10⁵).
+    axis->setNumberFormat(QStringLiteral("gb"));
+    axis->setNumberPrecision(3);
     axis->setLabel(label);
 }
 
@@ -263,8 +266,33 @@ WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QW
     form->addRow(tr("DT values [s]"), m_dts);
     form->addRow(tr("Duration T [s]"), m_duration);
     form->addRow(tr("Reference"), m_reference);
-    twoLogPanels(m_plot, tr("run time [s]"), tr("max position error [m]"), tr("DT [s]"), tr("max position error [m]"));
+    m_cost = new QComboBox(m_options);
+    m_cost->setObjectName(QStringLiteral("costAxis"));
+    m_cost->addItem(tr("force evaluations"), int(Cost::ForceEvaluations));
+    m_cost->addItem(tr("median wall time"), int(Cost::WallTime));
+    m_cost->setToolTip(tr("The cost of a run on the left panel: the force evaluations it took (a count: the same on "
+                          "every machine and every run), or its wall time, the median over the repeats (on a busy "
+                          "machine a curve can zigzag backwards)"));
+    form->addRow(tr("Cost axis"), m_cost);
+    m_repeats = new QLineEdit(QStringLiteral("1"), m_options);
+    m_repeats->setToolTip(tr("Each run is timed this many times (1 to 9) and the median kept: more repeats, "
+                             "steadier wall times"));
+    form->addRow(tr("Timing repeats"), m_repeats);
+    twoLogPanels(m_plot, tr("force evaluations"), tr("max position error [m]"), tr("DT [s]"), tr("max position error [m]"));
+    connect(m_cost, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_result.rows.empty()) plotResult();
+        else {
+            m_plot->axisRect(0)->axis(QCPAxis::atBottom)->setLabel(m_cost->currentData().toInt() == int(Cost::WallTime)
+                                                                      ? tr("median wall time [s]")
+                                                                      : tr("force evaluations"));
+            m_plot->replot();
+        }
+    });
 }
+
+void WorkPrecisionDialog::setCost(Cost cost) { m_cost->setCurrentIndex(m_cost->findData(int(cost))); }
+WorkPrecisionDialog::Cost WorkPrecisionDialog::cost() const { return Cost(m_cost->currentData().toInt()); }
+void WorkPrecisionDialog::setRepeats(int repeats) { m_repeats->setText(QString::number(repeats)); }
 
 void WorkPrecisionDialog::setSteps(const QString& dts) { m_dts->setText(dts); }
 void WorkPrecisionDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
@@ -276,10 +304,14 @@ simlab::StudySpec WorkPrecisionDialog::spec() const {
     for (const QString& t : m_dts->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) s.dts.push_back(t.toDouble());
     s.duration = m_duration->text().toDouble();
     s.reference = m_reference->currentText().toStdString();
+    bool ok = false;
+    const int repeats = m_repeats->text().trimmed().toInt(&ok);
+    s.repeat = ok ? repeats : 0;  // refused by validate()
     return s;
 }
 
 QString WorkPrecisionDialog::validate() const {
+    if (spec().repeat < 1 || spec().repeat > 9) return tr("Timing repeats: a whole number from 1 to 9");
     if (auto problem = simlab::validateStudy(spec())) return QString::fromStdString(*problem);
     return {};
 }
@@ -294,7 +326,7 @@ void WorkPrecisionDialog::compute(const std::atomic<bool>* cancel) {
 
 void WorkPrecisionDialog::present() {
     const auto& rows = m_result.rows;
-    const QStringList headers = {tr("integrator"), tr("DT [s]"), tr("steps"), tr("force evals"), tr("run time [s]"),
+    const QStringList headers = {tr("integrator"), tr("DT [s]"), tr("steps"), tr("force evals"), tr("median wall time [s]"),
                                  tr("error at T [m]"), tr("max error [m]"), tr("energy error [J]"), tr("status")};
     QList<QStringList> cells;
     for (const simlab::StudyRow& row : rows)
@@ -303,13 +335,30 @@ void WorkPrecisionDialog::present() {
                       row.ok ? number(row.errorFinal) : QString(), row.ok ? number(row.errorMax) : QString(),
                       row.ok ? number(row.errorEnergy) : QString(), QString::fromStdString(row.status())});
     fillTable(headers, cells);
+    plotResult();
 
+    QString summary = tr("Reference: %1 (its own error about %2 m).")
+                          .arg(QString::fromStdString(m_result.reference.description))
+                          .arg(number(m_result.reference.estimatedError));
+    for (const simlab::OrderFit& fit : simlab::fitOrders(rows, m_result.reference.estimatedError))
+        if (fit.points >= 2)
+            summary += tr(" %1: order %2.").arg(QString::fromStdString(fit.integrator)).arg(fit.order, 0, 'f', 2);
+    m_summary->setText(summary);
+}
+
+void WorkPrecisionDialog::plotResult() {
+    const auto& rows = m_result.rows;
+    const bool wall = cost() == Cost::WallTime;
     m_plot->clearPlottables();
     QCPAxisRect* left = m_plot->axisRect(0);
+    left->axis(QCPAxis::atBottom)->setLabel(!wall ? tr("force evaluations")
+                                            : m_spec.repeat > 1 ? tr("wall time [s], median of %1 runs").arg(m_spec.repeat)
+                                                                : tr("wall time [s], one run"));
     QCPAxisRect* right = m_plot->axisRect(1);
     std::map<QString, std::pair<QCPGraph*, QCPGraph*>> graphs;
     for (const simlab::StudyRow& row : rows) {
-        if (!row.ok || !(row.errorMax > 0) || !(row.wallSeconds > 0)) continue;
+        const double costOfRow = wall ? row.wallSeconds : double(row.forceEvaluations);
+        if (!row.ok || !(row.errorMax > 0) || !(costOfRow > 0)) continue;
         const QString name = QString::fromStdString(row.item.integrator);
         auto& g = graphs[name];
         if (!g.first) {
@@ -323,18 +372,10 @@ void WorkPrecisionDialog::present() {
             }
             g.first->removeFromLegend();
         }
-        g.first->addData(row.wallSeconds, row.errorMax);
+        g.first->addData(costOfRow, row.errorMax);
         g.second->addData(row.dt, row.errorMax);
     }
     rescaleLogPanels(m_plot);
-
-    QString summary = tr("Reference: %1 (its own error about %2 m).")
-                          .arg(QString::fromStdString(m_result.reference.description))
-                          .arg(number(m_result.reference.estimatedError));
-    for (const simlab::OrderFit& fit : simlab::fitOrders(rows, m_result.reference.estimatedError))
-        if (fit.points >= 2)
-            summary += tr(" %1: order %2.").arg(QString::fromStdString(fit.integrator)).arg(fit.order, 0, 'f', 2);
-    m_summary->setText(summary);
 }
 
 QString WorkPrecisionDialog::csv() const {

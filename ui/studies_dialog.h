@@ -97,6 +97,13 @@ public:
     const simlab::StudyResult& result() const { return m_result; }
     void setSteps(const QString& dts);
     void setDuration(double seconds);
+    // The left panel's cost axis: force evaluations (the default: a count, the same on every
+    // machine and every run) or the median wall time over the repeats (noisy on a shared
+    // machine, where one curve can run backwards).
+    enum class Cost { ForceEvaluations, WallTime };
+    void setCost(Cost cost);
+    Cost cost() const;
+    void setRepeats(int repeats);  // timing: the median of this many runs per point
 
 protected:
     void prepare() override;
@@ -108,6 +115,9 @@ protected:
 
 private:
     simlab::StudySpec spec() const;
+    void plotResult();
+    QComboBox* m_cost = nullptr;
+    QLineEdit* m_repeats = nullptr;
     QLineEdit* m_dts = nullptr;
     QLineEdit* m_duration = nullptr;
     QComboBox* m_reference = nullptr;
