@@ -596,9 +596,11 @@ PYBIND11_MODULE(elasticlab, m) {
         py::list out;
         for (const simcore::IntegratorInfo& i : simcore::integratorTable())
             out.append(py::dict(py::arg("name") = std::string(i.name), py::arg("order") = i.order,
-                                py::arg("description") = std::string(i.description)));
+                                py::arg("description") = std::string(i.description),
+                                py::arg("family") = std::string(i.family)));
         return out;
-    }, "The integrators: name, order, description.");
+    }, "The integrators: name, order, description, family (explicit-rk, symplectic, implicit, adaptive, "
+       "production, constraint).");
     m.def("parameters", [](const std::string& scene) {
         const simcore::SceneInfo* info = simcore::findScene(scene);
         if (!info)

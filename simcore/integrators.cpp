@@ -15,16 +15,18 @@ namespace {
 
 // clang-format off
 constexpr std::array kIntegrators = {
-    IntegratorInfo{"euler", 1, "explicit Euler: x and v both from the old state (thesis eq. 22)"},
-    IntegratorInfo{"midpoint", 2, "the thesis's midpoint (eq. 31-33), i.e. Heun's RK2: two force evaluations"},
-    IntegratorInfo{"rk4", 4, "classical Runge-Kutta 4 (eq. 35-40): four force evaluations"},
-    IntegratorInfo{"symplectic-euler", 1, "semi-implicit Euler: v from the old forces, then x from the new v"},
-    IntegratorInfo{"verlet", 2, "velocity Verlet (order 1 when damping is on: damping is taken at the half-step velocity)"},
-    IntegratorInfo{"rk45", 5, "Dormand-Prince 5(4): adaptive step from atol/rtol, embedded error estimate every step"},
-    IntegratorInfo{"implicit-euler", 1, "linearised backward Euler (Baraff-Witkin 1998): spring and gas Jacobians, matrix-free CG"},
-    IntegratorInfo{"cvode-bdf", 5, "SUNDIALS CVODE, variable-order BDF 1-5: Newton, matrix-free GMRES on the analytic Jacobian, implicit-euler's solve as preconditioner; adaptive from atol/rtol"},
-    IntegratorInfo{"xpbd", 1, "extended position-based dynamics (Macklin et al. 2016, small steps 2019): springs as compliant distance constraints, `substeps` substeps of one iteration per step"},
-    IntegratorInfo{"cvode-adams", 12, "SUNDIALS CVODE, variable-order Adams-Moulton 1-12 with fixed-point iteration (non-stiff); adaptive from atol/rtol"},
+    IntegratorInfo{"euler", 1, "explicit Euler: x and v both from the old state (thesis eq. 22)", "explicit-rk"},
+    IntegratorInfo{"midpoint", 2, "the thesis's midpoint (eq. 31-33), i.e. Heun's RK2: two force evaluations", "explicit-rk"},
+    IntegratorInfo{"rk4", 4, "classical Runge-Kutta 4 (eq. 35-40): four force evaluations", "explicit-rk"},
+    IntegratorInfo{"symplectic-euler", 1, "semi-implicit Euler: v from the old forces, then x from the new v", "symplectic"},
+    IntegratorInfo{"verlet", 2, "velocity Verlet (order 1 when damping is on: damping is taken at the half-step velocity)", "symplectic"},
+    IntegratorInfo{"yoshida4", 4, "Yoshida's 4th-order composition of velocity Verlet: 3 substeps (one backwards), 4 force evaluations (order 1 with damping)", "symplectic"},
+    IntegratorInfo{"yoshida8", 8, "Yoshida's 8th-order composition of velocity Verlet (solution D): 15 substeps, 16 force evaluations (order 1 with damping)", "symplectic"},
+    IntegratorInfo{"rk45", 5, "Dormand-Prince 5(4): adaptive step from atol/rtol, embedded error estimate every step", "adaptive"},
+    IntegratorInfo{"implicit-euler", 1, "linearised backward Euler (Baraff-Witkin 1998): spring and gas Jacobians, matrix-free CG", "implicit"},
+    IntegratorInfo{"cvode-bdf", 5, "SUNDIALS CVODE, variable-order BDF 1-5: Newton, matrix-free GMRES on the analytic Jacobian, implicit-euler's solve as preconditioner; adaptive from atol/rtol", "production"},
+    IntegratorInfo{"xpbd", 1, "extended position-based dynamics (Macklin et al. 2016, small steps 2019): springs as compliant distance constraints, `substeps` substeps of one iteration per step", "constraint"},
+    IntegratorInfo{"cvode-adams", 12, "SUNDIALS CVODE, variable-order Adams-Moulton 1-12 with fixed-point iteration (non-stiff); adaptive from atol/rtol", "production"},
 };
 // clang-format on
 
@@ -130,6 +132,67 @@ public:
         return {h, h, -1.0, 2};
     }
 };
+
+// Composition methods (Yoshida, "Construction of higher order symplectic integrators",
+// Phys. Lett. A 150, 1990; Hairer, Lubich & Wanner, "Geometric Numerical Integration", II.4):
+// velocity Verlet taken over substeps w_1 h, ..., w_s h with symmetric weights that sum to 1,
+// some negative, chosen so that the composition's error terms cancel up to order p. Each is
+// symplectic and time-reversible for velocity-independent forces. The kicks between two
+// substeps share one force evaluation (the acceleration at the end of a substep starts the
+// next), so a step costs s + 1 evaluations; for velocity-independent forces this is exactly s
+// Verlet steps. With damping the shared evaluation sees the half-kick velocity (as verlet's
+// second one does): consistent, first order, like verlet.
+class Composition final : public ExplicitBase {
+public:
+    Composition(std::string_view name, int order, std::span<const double> weights)
+        : m_name(name), m_order(order), m_weights(weights) {}
+    std::string_view name() const override { return m_name; }
+    int order() const override { return m_order; }
+    int evaluationsPerStep() const override { return static_cast<int>(m_weights.size()) + 1; }
+    StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
+        const Eigen::Index n = m_layout.positions, m = m_layout.aux;
+        Eigen::VectorXd* a = &m_k1;
+        Eigen::VectorXd* next = &m_k2;
+        system.derivative(t, y, *a);
+        double tau = t;
+        for (double w : m_weights) {
+            const double hw = w * h;
+            // v_half = v + hw/2 a;  x += hw v_half;  v = v_half + hw/2 a(x, v_half)
+            y.segment(n, n + m) += (0.5 * hw) * a->segment(n, n + m);
+            y.head(n) += hw * y.segment(n, n);
+            tau += hw;
+            system.derivative(tau, y, *next);
+            y.segment(n, n + m) += (0.5 * hw) * next->segment(n, n + m);
+            std::swap(a, next);
+        }
+        return {h, h, -1.0, evaluationsPerStep()};
+    }
+
+private:
+    std::string_view m_name;
+    int m_order;
+    std::span<const double> m_weights;
+};
+
+// Yoshida's 4th-order triple jump: w1 = 1 / (2 - 2^(1/3)), w0 = 1 - 2 w1.
+constexpr double kCubeRoot2 = 1.2599210498948731647672106;
+constexpr std::array<double, 3> kYoshida4 = {1.0 / (2.0 - kCubeRoot2), -kCubeRoot2 / (2.0 - kCubeRoot2),
+                                             1.0 / (2.0 - kCubeRoot2)};
+// Yoshida 1990, table 2, solution D (the smallest error of the 8th-order solutions):
+// w7 ... w1 w0 w1 ... w7 with w0 = 1 - 2 (w1 + ... + w7).
+constexpr std::array<double, 7> kYoshida8Half = {0.102799849391985, -0.196061023297549e1, 0.193813913762276e1,
+                                                 -0.158240635368243, -0.144485223686048e1, 0.253693336566229,
+                                                 0.914844246229740};
+constexpr std::array<double, 15> symmetricWeights(const std::array<double, 7>& w) {
+    std::array<double, 15> out{};
+    double sum = 0.0;
+    for (double x : w) sum += x;
+    for (std::size_t i = 0; i < 7; ++i) out[6 - i] = w[i], out[8 + i] = w[i];
+    out[7] = 1.0 - 2.0 * sum;
+    return out;
+}
+constexpr std::array<double, 15> kYoshida8 = symmetricWeights(kYoshida8Half);
+constexpr std::array<double, 1> kVerlet = {1.0};
 
 // Dormand-Prince 5(4) (Dormand & Prince 1980; Hairer, Norsett & Wanner, "Solving ODEs I",
 // table 5.2). The 5th-order solution is propagated (local extrapolation); the difference to
@@ -505,6 +568,8 @@ std::unique_ptr<Integrator> makeIntegrator(std::string_view name) {
     if (name == "rk4") return std::make_unique<Rk4>();
     if (name == "symplectic-euler") return std::make_unique<SymplecticEuler>();
     if (name == "verlet") return std::make_unique<VelocityVerlet>();
+    if (name == "yoshida4") return std::make_unique<Composition>("yoshida4", 4, kYoshida4);
+    if (name == "yoshida8") return std::make_unique<Composition>("yoshida8", 8, kYoshida8);
     if (name == "rk45") return std::make_unique<DormandPrince>();
     if (name == "implicit-euler") return std::make_unique<ImplicitEuler>();
     if (name == "cvode-bdf") return makeCvodeIntegrator(true);
@@ -530,6 +595,25 @@ std::complex<double> stabilityFunction(std::string_view name, std::complex<doubl
                std::pow(z, 6) / 600.0;
     if (name == "implicit-euler") return one / (one - z);
     return {std::nan(""), 0.0};
+}
+
+std::span<const double> compositionWeights(std::string_view name) {
+    if (name == "verlet") return kVerlet;
+    if (name == "yoshida4") return kYoshida4;
+    if (name == "yoshida8") return kYoshida8;
+    return {};
+}
+
+std::string_view integratorFamily(std::string_view name) {
+    for (const auto& info : integratorTable())
+        if (info.name == name) return info.family;
+    return {};
+}
+
+std::span<const std::string_view> integratorFamilies() {
+    static constexpr std::array<std::string_view, 6> families = {"explicit-rk", "symplectic", "implicit",
+                                                                 "adaptive",    "production", "constraint"};
+    return families;
 }
 
 std::optional<std::string> unknownIntegrator(std::string_view name) {

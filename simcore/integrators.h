@@ -17,6 +17,8 @@
 //   rk4               4      4                                  step doubling (optional)
 //   symplectic-euler  1      1                                  step doubling (optional)
 //   verlet            2 (1)  2                                  step doubling (optional)
+//   yoshida4          4 (1)  4 (3 Verlet substeps)              step doubling (optional)
+//   yoshida8          8 (1)  16 (15 Verlet substeps)            step doubling (optional)
 //   rk45              5(4)   7 per attempt (no FSAL, see .cpp)  embedded, every step
 //   implicit-euler    1      2 + CG products of K and D         step doubling (optional)
 //   cvode-bdf         1-5    CVODE: as it needs (+ Jv products)  CVODE's local error estimate
@@ -220,12 +222,23 @@ struct IntegratorInfo {
     std::string_view name;
     int order;
     std::string_view description;
+    // explicit-rk, symplectic, implicit, adaptive, production (SUNDIALS) or constraint (xpbd):
+    // the diagrams colour by it and mark each family's fastest method at each accuracy.
+    std::string_view family;
 };
 
 std::span<const IntegratorInfo> integratorTable();
 // nullptr when the name is unknown.
 std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
 std::string integratorNames();  // "euler, midpoint, ..." for messages
+// The family of an integrator (IntegratorInfo::family), empty for an unknown name, and every
+// family in the order the diagrams list them.
+std::string_view integratorFamily(std::string_view name);
+std::span<const std::string_view> integratorFamilies();
+// The substep weights of a composition of velocity Verlet (verlet itself: {1}; yoshida4,
+// yoshida8), empty for other methods. Step h: Verlet over w_1 h, ..., w_s h, the acceleration
+// at the end of each substep starting the next (see integrators.cpp, Composition).
+std::span<const double> compositionWeights(std::string_view name);
 // The one message for a name that is not an integrator (CLI, GUI, Python); nothing when it is one.
 std::optional<std::string> unknownIntegrator(std::string_view name);
 
