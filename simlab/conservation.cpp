@@ -111,7 +111,8 @@ std::optional<std::string> validateConservation(const ConservationSpec& spec) {
             return name + " chooses its own steps; the conservation study runs fixed steps (--dt)";
         if (std::count(spec.integrators.begin(), spec.integrators.end(), name) > 1) return "'" + name + "' is listed twice";
     }
-    if (!(spec.periods >= 1.0) || spec.periods > 1e7) return "periods must be in [1, 1e7]";
+    if (!(spec.periods >= 20.0) || spec.periods > 1e7)
+        return "periods must be in [20, 1e7] (the growth is fitted from 10 periods on)";
     if (!(spec.dt > 0.0) || spec.dt > 1.0) return "the step --dt must be in (0, 1] s";
     if (spec.samples < 10 || spec.samples > 100000) return "samples must be in [10, 100000]";
     if (spec.precision != "double" && spec.precision != "float")
@@ -134,7 +135,12 @@ ConservationResult runConservation(const ConservationSpec& spec, const Conservat
     result.omegaMax = modes.omegaMax;
     if (!(result.omegaMax > 0.0)) throw std::runtime_error("the scene has no oscillating mode (omega_max = 0)");
     result.period = 2.0 * std::numbers::pi / result.omegaMax;
-    const long total = std::max(1L, static_cast<long>(std::ceil(spec.periods * result.period / spec.dt - 1e-9)));
+    const double wanted = std::ceil(spec.periods * result.period / spec.dt - 1e-9);
+    if (wanted > 1e9)
+        throw std::runtime_error(shortNumber(spec.periods) + " periods of " + shortNumber(result.period) + " s at dt = " +
+                                 shortNumber(spec.dt) + " s would take " + shortNumber(wanted) +
+                                 " steps; at most 1e9 (fewer periods or a larger step)");
+    const long total = std::max(1L, static_cast<long>(wanted));
     result.duration = static_cast<double>(total) * spec.dt;
     const long perPeriod = std::max(1L, std::lround(result.period / spec.dt));
     const std::vector<long> steps = sampleSteps(perPeriod, total, spec.samples);
@@ -183,7 +189,7 @@ ConservationResult runConservation(const ConservationSpec& spec, const Conservat
             if (cancel && cancel->load()) result.cancelled = true;
             if (sim.failed()) row.ok = false, row.failedAt = sim.failure()->time, row.failure = sim.failure()->reason;
         }
-        result.energyScale = std::max(result.energyScale, kineticMax);
+        row.kineticMax = kineticMax;
         if (result.cancelled) break;
         if (row.ok) {
             std::vector<std::pair<double, double>> tail;
@@ -202,6 +208,12 @@ ConservationResult runConservation(const ConservationSpec& spec, const Conservat
         result.rows.push_back(std::move(row));
         ++done;
     }
+    // The energy scale: the largest kinetic energy of the most accurate run (a run that blew up
+    // must not set it).
+    const ConservationRow* best = nullptr;
+    for (const ConservationRow& row : result.rows)
+        if (row.ok && (!best || row.finalError < best->finalError)) best = &row;
+    result.energyScale = best ? best->kineticMax : 0.0;
     for (ConservationRow& row : result.rows)
         row.relativeError = result.energyScale > 0.0 ? row.finalError / result.energyScale : std::nan("");
     if (progress) progress(done, static_cast<int>(spec.integrators.size()), result.cancelled ? "cancelled" : "done");

@@ -48,6 +48,7 @@ struct ConservationRow {
     std::string growth;            // bounded | random-walk | drift ("" when not ok)
     double finalError = 0.0;       // |dE| envelope at the end [J]
     double relativeError = 0.0;    // that over the energy scale (ConservationResult) [-]
+    double kineticMax = 0.0;       // the largest kinetic energy of this run [J]
     long steps = 0;
     double wallSeconds = 0.0;
     int fitPoints = 0;
@@ -62,7 +63,7 @@ struct ConservationResult {
     double omegaMax = 0.0;     // fastest mode [rad/s]
     double period = 0.0;       // 2 pi / omegaMax [s]
     double duration = 0.0;     // P periods rounded up to whole steps [s]
-    double energyScale = 0.0;  // the body's convertible energy at the start [J] (relative errors)
+    double energyScale = 0.0;  // the largest kinetic energy of the most accurate run [J] (relative errors)
     std::string undamped;      // what was switched off, e.g. "kd = 0, restitution = 1"
     std::vector<ConservationRow> rows;
     bool cancelled = false;

@@ -564,7 +564,14 @@ std::optional<std::vector<StudyRow>> parseStudyCsv(const std::string& text, std:
         std::string field;
         while (std::getline(ss, field, ',')) f.push_back(field);
         if (!line.empty() && line.back() == ',') f.emplace_back();
-        if (f.size() != 16) return fail("expected 16 fields, got " + std::to_string(f.size()));
+        const bool legacy = f.size() == 9;
+        if (legacy) {
+            // Written before issue 28: integrator,dt,steps,force_evals,wall_seconds (the median),
+            // error_final,error_max,error_energy,status. Read as one timing, no error_rms.
+            f = {f[0], std::string(integratorFamily(f[0])), "double", f[1], f[2], f[3], "1", f[4], f[4], f[4], f[4],
+                 f[5], f[6], "", f[7], f[8]};
+        }
+        if (f.size() != 16) return fail("expected 16 fields (or the 9 of an older study), got " + std::to_string(f.size()));
         StudyRow r;
         r.item.integrator = f[0];
         if (f[2] != "double" && f[2] != "float") return fail("precision must be double or float");
@@ -587,6 +594,10 @@ std::optional<std::vector<StudyRow>> parseStudyCsv(const std::string& text, std:
         if (status == "ok") {
             double* targets[4] = {&r.errorFinal, &r.errorMax, &r.errorRms, &r.errorEnergy};
             for (int k = 0; k < 4; ++k) {
+                if (legacy && k == 2) {
+                    r.errorRms = std::nan("");  // not measured then
+                    continue;
+                }
                 const auto e = parseNumber(f[11 + static_cast<std::size_t>(k)]);
                 if (!e) return fail("bad error value");
                 *targets[k] = *e;

@@ -12,6 +12,7 @@
 #include "pv_dock.h"
 #include "scenes.h"
 #include "simulation_controller.h"
+#include "qcustomplot.h"
 #include "studies_dialog.h"
 #include "test_support.h"
 
@@ -307,6 +308,7 @@ private slots:
         WorkPrecisionDialog dialog(p);
         dialog.setSteps("0.01 0.005 0.0025");
         dialog.setDuration(0.5);
+        dialog.setRepeats(3);
         QSignalSpy finished(&dialog, &StudyDialogBase::finished);
         dialog.start();
         QVERIFY(dialog.busy());
@@ -314,7 +316,16 @@ private slots:
         const auto& rows = dialog.result().rows;
         QCOMPARE(int(rows.size()), 4 * 3);  // euler, midpoint, rk4, verlet x 3 steps
         QCOMPARE(dialog.table()->rowCount(), 12);
-        QCOMPARE(dialog.plot()->graphCount(), 2 * 4);  // error vs run time and vs DT, per integrator
+        QCOMPARE(dialog.table()->columnCount(), 13);  // with the run time's q1, median, q3 and the RMS error
+        for (const auto& r : rows) QCOMPARE(int(r.walls.size()), r.ok ? 3 : int(r.walls.size()));
+        // Error vs run time and vs DT per integrator, and the rings of the fastest of each family.
+        QCOMPARE(dialog.plot()->graphCount(), 2 * 4 + 1);
+        // Per integrator with a drawn point: the q1-q3 band (a filled curve) and the line through the medians.
+        int bands = 0;
+        for (int i = 0; i < dialog.plot()->plottableCount(); ++i)
+            if (auto* curve = qobject_cast<QCPCurve*>(dialog.plot()->plottable(i)); curve && curve->brush().style() != Qt::NoBrush)
+                ++bands;
+        QCOMPARE(bands, 4);
         // RK4's error falls far faster with DT than Euler's.
         auto err = [&](const char* name, double dt) {
             for (const auto& r : rows)
@@ -324,6 +335,26 @@ private slots:
         QVERIFY(err("rk4", 0.0025) < err("euler", 0.0025) * 1e-3);
         if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
             dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/study.png");
+    }
+
+    void conservationStudyClassifiesTheGrowth() {
+        // simlab's long-time energy (the CLI's `conservation`) behind the dialog.
+        simcore::ParameterSet p(SceneKind::Spring1d);
+        ConservationDialog dialog(p);
+        dialog.setPeriods(100);
+        dialog.setStep(0.01);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, testsupport::kHangGuardMs);
+        const auto& rows = dialog.result().rows;
+        QCOMPARE(int(rows.size()), 3);  // verlet, yoshida4, rk4 checked at first
+        QCOMPARE(rows[0].growth, std::string("bounded"));
+        QCOMPARE(rows[2].growth, std::string("drift"));
+        QCOMPARE(dialog.table()->rowCount(), 3);
+        QCOMPARE(dialog.plot()->graphCount(), 3 + 2);  // a curve per integrator, slopes 1/2 and 1
+        QVERIFY(dialog.plot()->graph(0)->dataCount() > 10);
+        if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
+            dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/conservation.png");
     }
 
     void refinementStudyRunsAndCancels() {

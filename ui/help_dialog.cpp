@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include "integrators.h"
+#include "lessons.h"
 #include "parameter_dock.h"
 #include "presets.h"
 
@@ -100,8 +101,8 @@ QString HelpDialog::html() {
     for (const Preset& p : teachingPresets() + stabilityPresets())
         h += QStringLiteral("<li><b>%1</b>: %2</li>").arg(p.title.toHtmlEscaped(), p.description.toHtmlEscaped());
     h += QStringLiteral("</ul>");
-    h += QObject::tr("<p><b>Help → Experiments</b>: seven guided experiments, each set up in one click, with "
-                     "what to change, what to look at and the answer measured with elastic-lab-cli.</p>");
+    h += QObject::tr("<p><b>Help → Experiments</b>: %1 guided experiments, each set up in one click, with "
+                     "what to change, what to look at and the answer measured with elastic-lab-cli.</p>").arg(lessons().size());
     h += QObject::tr("<h3>Mouse</h3><ul><li>Left-drag on the body: grab the nearest outer particle and pull "
                      "it.</li><li>Left-drag elsewhere, or Shift+left-drag (3D): orbit. Right- or middle-drag: pan. Wheel: zoom. "
                      "View → Reset view.</li></ul>");

@@ -56,6 +56,9 @@ QList<Lesson> lessons() {
         make(QStringLiteral("stiff-springs"), QObject::tr("7. Stiff springs: explicit against implicit"),
              QStringLiteral("ring2d"), {{"ks", 1e6}, {"dt", 0.01}},
              {QStringLiteral("implicit-euler"), QStringLiteral("rk4")}, {map}),
+        make(QStringLiteral("why-symplectic"), QObject::tr("8. Why symplectic? Energy over ten thousand periods"),
+             QStringLiteral("spring1d"), {{"kd", 0.0}, {"dt", 0.01}},
+             {QStringLiteral("verlet"), QStringLiteral("yoshida4"), QStringLiteral("rk4")}, {bars}),
     };
 }
 

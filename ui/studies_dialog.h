@@ -14,6 +14,7 @@
 
 #include <QDialog>
 
+#include "conservation.h"
 #include "params.h"
 #include "refinement.h"
 #include "stability.h"
@@ -27,6 +28,7 @@ class QProgressBar;
 class QPushButton;
 class QTableWidget;
 class QComboBox;
+class QSpinBox;
 
 namespace elui {
 
@@ -97,6 +99,8 @@ public:
     const simcore::StudyResult& result() const { return m_result; }
     void setSteps(const QString& dts);
     void setDuration(double seconds);
+    void setRepeats(int repeats);              // timed runs of each point (the band: q1 to q3)
+    void setTimeBudget(const QString& seconds);  // "" = none
 
 protected:
     void prepare() override;
@@ -111,8 +115,41 @@ private:
     QLineEdit* m_dts = nullptr;
     QLineEdit* m_duration = nullptr;
     QComboBox* m_reference = nullptr;
+    QSpinBox* m_repeats = nullptr;
+    QLineEdit* m_budget = nullptr;
     simcore::StudySpec m_spec;
     simcore::StudyResult m_result;
+};
+
+// Long-time energy (simlab/conservation.h, the CLI's `conservation`): the undamped scene for P
+// periods of its fastest mode at DT, |energy error| against t on log-log axes, the fitted growth
+// exponent and its class per integrator.
+class ConservationDialog : public StudyDialogBase {
+    Q_OBJECT
+public:
+    ConservationDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    ~ConservationDialog() override { stopAndWait(); }
+    const simcore::ConservationResult& result() const { return m_result; }
+    void setPeriods(double periods);
+    void setStep(double dt);
+    void setPrecision(const QString& precision);  // double | float
+
+protected:
+    void prepare() override;
+    void compute(const std::atomic<bool>* cancel) override;
+    void present() override;
+    QString csv() const override;
+    QString svg() const override;
+    QString validate() const override;
+
+private:
+    simcore::ConservationSpec spec() const;
+    QLineEdit* m_periods = nullptr;
+    QLineEdit* m_dt = nullptr;
+    QComboBox* m_precision = nullptr;
+    simcore::ConservationSpec m_spec;
+    simcore::ConservationResult m_result;
+    QString m_error;
 };
 
 // The refinement study: one integrator (rk4 checked at first), the levels of the scene's

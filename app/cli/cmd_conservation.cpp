@@ -114,7 +114,7 @@ Command addConservationCommand(CLI::App& app) {
         ->default_str("verlet,yoshida4,rk4");
     sub->add_option("--periods", args->periods, "run length in periods of the fastest mode")
         ->type_name("P")
-        ->check(finiteIn(1.0, 1e7, false))
+        ->check(finiteIn(20.0, 1e7, false))
         ->capture_default_str();
     sub->add_option("--samples", args->samples, "log-spaced times at which the energy error is recorded")
         ->type_name("N")
