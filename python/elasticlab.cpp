@@ -27,19 +27,20 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "analytic.h"
-#include "body.h"
-#include "conservation.h"
 #include "elastic_lab_version.h"
-#include "integrators.h"
-#include "output.h"
-#include "params.h"
-#include "refinement.h"
-#include "scenefile.h"
-#include "scenes.h"
-#include "simulation.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/body.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simcore/scenes.h"
+#include "simcore/simulation.h"
+#include "simlab/analytic.h"
+#include "simlab/conservation.h"
+#include "simlab/output.h"
+#include "simlab/refinement.h"
+#include "simlab/scenefile.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
 namespace py = pybind11;
 
@@ -74,7 +75,7 @@ struct Scene {
     std::string name;
     simcore::ParameterSet params;
     std::string integrator = "rk4";
-    std::optional<simcore::SceneFile::State> state;  // a scene file's saved state
+    std::optional<simlab::SceneFile::State> state;  // a scene file's saved state
 };
 
 void assignParameter(simcore::ParameterSet& params, const std::string& key, const py::handle& value) {
@@ -91,7 +92,7 @@ Scene sceneFrom(const py::object& scene, const py::kwargs& parameters) {
     s.name = pathText(scene);
     const simcore::SceneInfo* info = simcore::findScene(s.name);
     if (!info && s.name.size() > 5 && s.name.ends_with(".json")) {
-        simcore::SceneFileResult read = simcore::readSceneFile(s.name);
+        simlab::SceneFileResult read = simlab::readSceneFile(s.name);
         if (!read.file) throw py::value_error(read.error);
         s.name = read.file->sceneName;
         s.params = read.file->params;
@@ -228,8 +229,8 @@ public:
         m_sim->setIntegratorOptions(integratorOptions(options));
         if (!threads.is_none()) m_sim->setThreads(static_cast<int>(checkedNumber(threads, "threads", 1, 256, false, true)));
         if (s.state)
-            if (auto error = simcore::applyState(*m_sim, *s.state)) throw py::value_error(*error);
-        m_columns = simcore::timeSeriesColumns(s.params.kind());
+            if (auto error = simlab::applyState(*m_sim, *s.state)) throw py::value_error(*error);
+        m_columns = simlab::timeSeriesColumns(s.params.kind());
     }
 
     // For reading: refused while another thread steps (a look, not a claim: a reader never
@@ -259,7 +260,7 @@ public:
         Busy busy(m_busy);
         std::vector<double> rows;
         auto record = [&] {
-            for (const simcore::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
+            for (const simlab::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
         };
         if (every) record();
         const double tEnd = m_sim->time() + duration;
@@ -301,7 +302,7 @@ public:
     py::dict diagnostics() {
         const simcore::Diagnostics& d = sim().diagnostics();
         py::dict out;
-        for (const simcore::CsvColumn& c : m_columns) out[py::str(c.name)] = c.value(d);
+        for (const simlab::CsvColumn& c : m_columns) out[py::str(c.name)] = c.value(d);
         return out;
     }
     py::array_t<double> diagnosticsRow() {
@@ -312,7 +313,7 @@ public:
     }
     std::vector<std::string> columns() const {
         std::vector<std::string> names;
-        for (const simcore::CsvColumn& c : m_columns) names.push_back(c.name);
+        for (const simlab::CsvColumn& c : m_columns) names.push_back(c.name);
         return names;
     }
 
@@ -353,10 +354,10 @@ public:
     // The closed-form positions and velocities at the current time (spring1d only).
     py::tuple exact() {
         const simcore::Simulation& s = sim();
-        if (!simcore::hasClosedForm(s.parameters()))
+        if (!simlab::hasClosedForm(s.parameters()))
             throw py::value_error("no closed form for scene '" + m_scene + "'; spring1d has one");
         Eigen::Matrix3Xd x, v;
-        simcore::spring1dExact(s.parameters(), s.time(), x, v);
+        simlab::spring1dExact(s.parameters(), s.time(), x, v);
         auto table = [](const Eigen::Matrix3Xd& m) {
             py::array_t<double> a({static_cast<py::ssize_t>(m.cols()), py::ssize_t{3}});
             std::copy(m.data(), m.data() + m.size(), a.mutable_data());
@@ -366,8 +367,8 @@ public:
     }
 
     void saveScene(const py::object& path) {
-        const std::string text = simcore::sceneFileText(sim(), m_scene, true);
-        simcore::AtomicFile file(pathText(path));
+        const std::string text = simlab::sceneFileText(sim(), m_scene, true);
+        simlab::AtomicFile file(pathText(path));
         if (!file.ok() || !file.write(text) || !file.commit()) throw py::value_error(file.error());
     }
 
@@ -400,20 +401,20 @@ private:
 
     std::string m_scene;
     std::unique_ptr<simcore::Simulation> m_sim;
-    std::vector<simcore::CsvColumn> m_columns;
+    std::vector<simlab::CsvColumn> m_columns;
     std::atomic<bool> m_busy{false};
 };
 
 // --- studies -----------------------------------------------------------------------------------
 
 // Output files are opened before any work, as the CLI does: an unwritable path costs nothing.
-std::unique_ptr<simcore::AtomicFile> openOutput(const py::object& path) {
+std::unique_ptr<simlab::AtomicFile> openOutput(const py::object& path) {
     if (path.is_none()) return nullptr;
-    auto file = std::make_unique<simcore::AtomicFile>(pathText(path));
+    auto file = std::make_unique<simlab::AtomicFile>(pathText(path));
     if (!file->ok()) throw py::value_error(file->error());
     return file;
 }
-void commit(simcore::AtomicFile& file) {
+void commit(simlab::AtomicFile& file) {
     if (!file.commit()) throw py::value_error(file.error());
 }
 
@@ -434,7 +435,7 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
                const py::object& timingsPath, const py::object& plotPath, const py::object& title,
                const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
-    simcore::StudySpec spec;
+    simlab::StudySpec spec;
     spec.params = s.params;
     spec.integrators = integratorList(integrators);
     if (dts) spec.dts = *dts;
@@ -447,16 +448,16 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
     spec.compensated = compensated;
     spec.reference = reference;
     spec.options.fixedStep = fixedStep;
-    if (auto error = simcore::validateStudy(spec)) throw py::value_error(*error);
+    if (auto error = simlab::validateStudy(spec)) throw py::value_error(*error);
     auto csv = openOutput(csvPath);
     auto timings = openOutput(timingsPath);
     auto plot = openOutput(plotPath);
 
-    const simcore::StudyResult result =
-        cancellable([&](const std::atomic<bool>* cancel) { return simcore::runStudy(spec, {}, cancel); });
+    const simlab::StudyResult result =
+        cancellable([&](const std::atomic<bool>* cancel) { return simlab::runStudy(spec, {}, cancel); });
 
     py::list rows;
-    for (const simcore::StudyRow& r : result.rows) {
+    for (const simlab::StudyRow& r : result.rows) {
         py::dict row(py::arg("integrator") = r.item.integrator,
                      py::arg("family") = std::string(simcore::integratorFamily(r.item.integrator)),
                      py::arg("precision") = r.item.precision, py::arg("dt") = r.dt,
@@ -477,31 +478,31 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
         rows.append(row);
     }
     py::dict orders, ordersFinal, ordersRms;
-    for (const simcore::OrderFit& fit : simcore::fitOrders(result.rows, result.reference.estimatedError)) {
+    for (const simlab::OrderFit& fit : simlab::fitOrders(result.rows, result.reference.estimatedError)) {
         orders[py::str(fit.integrator)] = fit.order;
         ordersFinal[py::str(fit.integrator)] = fit.orderFinal;
         ordersRms[py::str(fit.integrator)] = fit.orderRms;
     }
     py::list fastest;
-    for (const simcore::FamilyBest& b : simcore::fastestByFamily(result.rows))
+    for (const simlab::FamilyBest& b : simlab::fastestByFamily(result.rows))
         fastest.append(py::dict(py::arg("family") = b.family, py::arg("error") = b.error,
                                 py::arg("integrator") = b.integrator, py::arg("wall_seconds") = b.wallSeconds,
                                 py::arg("force_evals") = b.forceEvaluations));
     if (csv) {
-        csv->write(simcore::studyCsvHeader());
-        for (const simcore::StudyRow& r : result.rows) csv->write(simcore::studyCsvRow(r));
+        csv->write(simlab::studyCsvHeader());
+        for (const simlab::StudyRow& r : result.rows) csv->write(simlab::studyCsvRow(r));
         commit(*csv);
     }
     if (timings) {
-        timings->write(simcore::studyTimingsCsvHeader());
-        for (const simcore::StudyRow& r : result.rows) timings->write(simcore::studyTimingsCsvRows(r));
+        timings->write(simlab::studyTimingsCsvHeader());
+        for (const simlab::StudyRow& r : result.rows) timings->write(simlab::studyTimingsCsvRows(r));
         commit(*timings);
     }
-    const double scale = simcore::referenceScale(result.reference);
+    const double scale = simlab::referenceScale(result.reference);
     if (plot) {
-        const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simcore::formatDouble(spec.duration) + " s"
+        const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simlab::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
-        plot->write(simcore::studySvg(result.rows, t, scale, spec.duration));
+        plot->write(simlab::studySvg(result.rows, t, scale, spec.duration));
         commit(*plot);
     }
     py::dict out(py::arg("rows") = rows, py::arg("orders") = orders, py::arg("orders_final") = ordersFinal,
@@ -517,20 +518,20 @@ py::dict conservation(const py::object& scene, const std::vector<std::string>& i
                       const py::object& csvPath, const py::object& plotPath, const py::object& title,
                       const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
-    simcore::ConservationSpec spec;
+    simlab::ConservationSpec spec;
     spec.params = s.params;
     spec.integrators = integratorList(integrators);
     spec.periods = checkedNumber(periods, "periods", 20.0, 1e7, false, false);
     spec.dt = dt.is_none() ? s.params.get(simcore::Param::Dt) : checkedNumber(dt, "dt", 0.0, 1.0, true, false, "s");
     spec.samples = static_cast<int>(checkedNumber(samples, "samples", 10, 100000, false, true));
     spec.precision = precision;
-    if (auto error = simcore::validateConservation(spec)) throw py::value_error(*error);
+    if (auto error = simlab::validateConservation(spec)) throw py::value_error(*error);
     auto csv = openOutput(csvPath);
     auto plot = openOutput(plotPath);
-    const simcore::ConservationResult result = cancellable(
-        [&](const std::atomic<bool>* cancel) { return simcore::runConservation(spec, {}, cancel); });
+    const simlab::ConservationResult result = cancellable(
+        [&](const std::atomic<bool>* cancel) { return simlab::runConservation(spec, {}, cancel); });
     py::list rows;
-    for (const simcore::ConservationRow& r : result.rows) {
+    for (const simlab::ConservationRow& r : result.rows) {
         py::list t, e;
         for (auto [time, error] : r.curve) t.append(time), e.append(error);
         py::dict row(py::arg("integrator") = r.integrator, py::arg("alpha") = nanIfFailed(r.ok, r.alpha),
@@ -545,14 +546,14 @@ py::dict conservation(const py::object& scene, const std::vector<std::string>& i
         rows.append(row);
     }
     if (csv) {
-        csv->write(simcore::conservationCsvHeader());
-        for (const simcore::ConservationRow& r : result.rows) csv->write(simcore::conservationCsvRow(r));
+        csv->write(simlab::conservationCsvHeader());
+        for (const simlab::ConservationRow& r : result.rows) csv->write(simlab::conservationCsvRow(r));
         commit(*csv);
     }
     if (plot) {
-        const std::string t = title.is_none() ? s.name + ": |energy error| over " + simcore::formatDouble(spec.periods) + " periods"
+        const std::string t = title.is_none() ? s.name + ": |energy error| over " + simlab::formatDouble(spec.periods) + " periods"
                                               : title.cast<std::string>();
-        plot->write(simcore::conservationSvg(result, t));
+        plot->write(simlab::conservationSvg(result, t));
         commit(*plot);
     }
     return py::dict(py::arg("rows") = rows, py::arg("omega_max") = result.omegaMax, py::arg("period") = result.period,
@@ -564,7 +565,7 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
                    const py::handle& perturb, const py::handle& hmin, const py::handle& hmax, const py::object& csvPath,
                    const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
-    simcore::StabilitySpec spec;
+    simlab::StabilitySpec spec;
     spec.params = s.params;
     spec.integrators = integratorList(integrators);
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e5, true, false, "s");
@@ -577,25 +578,25 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
     simcore::ParameterSet linearised = spec.params;
     if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
     struct Outcome {
-        simcore::LinearModes modes;
-        std::vector<simcore::StabilityRow> rows;
+        simlab::LinearModes modes;
+        std::vector<simlab::StabilityRow> rows;
     };
     const Outcome out = cancellable([&](const std::atomic<bool>* cancel) {
-        Outcome o{simcore::linearModes(linearised), {}};
-        if (!*cancel) o.rows = simcore::runStability(spec, o.modes, {}, cancel);
+        Outcome o{simlab::linearModes(linearised), {}};
+        if (!*cancel) o.rows = simlab::runStability(spec, o.modes, {}, cancel);
         return o;
     });
 
     py::list rows;
-    for (const simcore::StabilityRow& r : out.rows)
+    for (const simlab::StabilityRow& r : out.rows)
         rows.append(py::dict(py::arg("integrator") = r.integrator, py::arg("dt_stable") = r.stable,
                              py::arg("dt_unstable") = r.unstable, py::arg("dt_predicted") = r.predicted,
                              py::arg("h_omega_stable") = r.stable * out.modes.omegaMax,
                              py::arg("h_omega_predicted") = r.predicted * out.modes.omegaMax,
                              py::arg("reason") = r.reasonAbove, py::arg("runs") = r.runs));
     if (csv) {
-        csv->write(simcore::stabilityCsvHeader());
-        for (const simcore::StabilityRow& r : out.rows) csv->write(simcore::stabilityCsvRow(r, out.modes));
+        csv->write(simlab::stabilityCsvHeader());
+        for (const simlab::StabilityRow& r : out.rows) csv->write(simlab::stabilityCsvRow(r, out.modes));
         commit(*csv);
     }
     return py::dict(py::arg("rows") = rows, py::arg("omega_max") = out.modes.omegaMax,
@@ -609,9 +610,9 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
                     const py::object& csvPath, const py::object& plotPath, const py::object& title,
                     const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
-    simcore::RefinementSpec spec;
+    simlab::RefinementSpec spec;
     spec.params = s.params;
-    spec.key = keyArg.is_none() ? simcore::refinementKey(s.params.kind()) : keyArg.cast<std::string>();
+    spec.key = keyArg.is_none() ? simlab::refinementKey(s.params.kind()) : keyArg.cast<std::string>();
     spec.values = levels;
     checkIntegrator(integrator);
     spec.integrator = integrator;
@@ -621,15 +622,15 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
     spec.interval = checkedNumber(interval, "interval", 0.0, 1e6, true, false, "s");
     spec.temporalRuns = static_cast<int>(checkedNumber(temporalRuns, "temporal_runs", 0, 10, false, true));
     spec.options.fixedStep = fixedStep;
-    if (auto error = simcore::validateRefinement(spec)) throw py::value_error(*error);
+    if (auto error = simlab::validateRefinement(spec)) throw py::value_error(*error);
     auto csv = openOutput(csvPath);
     auto plot = openOutput(plotPath);
 
-    const simcore::RefinementResult result =
-        cancellable([&](const std::atomic<bool>* cancel) { return simcore::runRefinement(spec, {}, cancel); });
+    const simlab::RefinementResult result =
+        cancellable([&](const std::atomic<bool>* cancel) { return simlab::runRefinement(spec, {}, cancel); });
 
     py::list rows;
-    for (const simcore::RefinementRow& r : result.rows)
+    for (const simlab::RefinementRow& r : result.rows)
         rows.append(py::dict(py::arg("key") = spec.key, py::arg("value") = r.value, py::arg("particles") = r.particles,
                              py::arg("springs") = r.springs, py::arg("h") = r.h, py::arg("dt") = r.dt,
                              py::arg("steps") = r.steps, py::arg("wall_seconds") = r.wallSeconds,
@@ -637,24 +638,24 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
                              py::arg("error_com") = nanIfFailed(r.ok, r.errorCom), py::arg("reference") = r.reference,
                              py::arg("status") = r.status()));
     py::list temporal;
-    for (const simcore::TemporalPoint& p : result.temporal)
+    for (const simlab::TemporalPoint& p : result.temporal)
         temporal.append(py::dict(py::arg("dt") = p.dt,
                                  py::arg("tolerance") = toleranceOrNone(p.tolerance),
                                  py::arg("steps") = p.steps, py::arg("wall_seconds") = p.wallSeconds,
                                  py::arg("error_volume") = nanIfFailed(p.ok, p.errorVolume),
                                  py::arg("error_com") = nanIfFailed(p.ok, p.errorCom), py::arg("failure") = p.failure));
     py::dict orders;
-    for (const simcore::SpatialOrder& fit : simcore::fitSpatialOrders(result)) orders[py::str(fit.observable)] = fit.order;
+    for (const simlab::SpatialOrder& fit : simlab::fitSpatialOrders(result)) orders[py::str(fit.observable)] = fit.order;
     if (csv) {
-        csv->write(simcore::refinementCsvHeader());
-        for (const simcore::RefinementRow& r : result.rows) csv->write(simcore::refinementCsvRow(spec.key, r));
+        csv->write(simlab::refinementCsvHeader());
+        for (const simlab::RefinementRow& r : result.rows) csv->write(simlab::refinementCsvRow(spec.key, r));
         commit(*csv);
     }
     if (plot) {
         const std::string t = title.is_none() ? s.name + ": mesh error and step error against run time, T = " +
-                                                    simcore::formatDouble(spec.duration) + " s"
+                                                    simlab::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
-        plot->write(simcore::refinementSvg(spec, result, t));
+        plot->write(simlab::refinementSvg(spec, result, t));
         commit(*plot);
     }
     return py::dict(py::arg("rows") = rows, py::arg("orders") = orders, py::arg("temporal") = temporal,
@@ -665,6 +666,7 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
 
 }  // namespace
 
+// Kept whole: the module's table of bindings, one definition after another.
 PYBIND11_MODULE(elasticlab, m) {
     m.doc() = "Elastic Lab: two-layer elastic bodies (particles, springs, gas pressure) from Python. "
               "See docs/python.md.";

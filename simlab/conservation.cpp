@@ -1,4 +1,4 @@
-#include "conservation.h"
+#include "simlab/conservation.h"
 
 #include <algorithm>
 #include <chrono>
@@ -6,14 +6,22 @@
 #include <numbers>
 #include <sstream>
 
-#include "integrators.h"
-#include "output.h"
-#include "reference_problem.h"
-#include "simulation.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
+#include "simlab/reference_problem.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Diagnostics;
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::Simulation;
+using simcore::makeIntegrator;
+using simcore::paramSpec;
+using simcore::unknownIntegrator;
 
 namespace {
 
@@ -265,4 +273,4 @@ std::string conservationSvg(const ConservationResult& result, const std::string&
     return logLogSvg({panel}, title);
 }
 
-}  // namespace simcore
+}  // namespace simlab

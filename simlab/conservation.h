@@ -29,12 +29,12 @@
 #include <utility>
 #include <vector>
 
-#include "params.h"
+#include "simcore/params.h"
 
-namespace simcore {
+namespace simlab {
 
 struct ConservationSpec {
-    ParameterSet params{SceneKind::Spring1d};  // the scene (damping is switched off)
+    simcore::ParameterSet params{simcore::SceneKind::Spring1d};  // the scene (damping is switched off)
     std::vector<std::string> integrators{"verlet", "yoshida4", "rk4"};
     double periods = 1000.0;  // P: run length in periods of the fastest mode
     double dt = 0.0;          // H [s]
@@ -70,7 +70,7 @@ struct ConservationResult {
 };
 
 // The scene with every damping off (and what was changed, for the report).
-ParameterSet undampedParameters(const ParameterSet& params, std::string* changed = nullptr);
+simcore::ParameterSet undampedParameters(const simcore::ParameterSet& params, std::string* changed = nullptr);
 std::optional<std::string> validateConservation(const ConservationSpec& spec);
 // The classification of a growth exponent.
 std::string growthClass(double alpha);
@@ -95,4 +95,4 @@ std::string conservationCurvesCsv(const ConservationResult& result);
 // slopes t^0.5 and t^1 drawn dashed from the middle curve's start.
 std::string conservationSvg(const ConservationResult& result, const std::string& title);
 
-}  // namespace simcore
+}  // namespace simlab

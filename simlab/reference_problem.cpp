@@ -1,13 +1,18 @@
-#include "reference_problem.h"
+#include "simlab/reference_problem.h"
 
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <span>
 
-#include "integrators.h"
+#include "simcore/integrators.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::SceneKind;
+using simcore::compositionWeights;
 
 namespace {
 
@@ -201,4 +206,4 @@ ReferenceProblemRun runReferenceProblem(const ParameterSet& params, const std::s
     return run<double>(params, integrator, dt, grid, compensated, cancel, wallBudget, everyStep);
 }
 
-}  // namespace simcore
+}  // namespace simlab

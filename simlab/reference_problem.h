@@ -22,15 +22,15 @@
 
 #include <Eigen/Core>
 
-#include "params.h"
+#include "simcore/params.h"
 
-namespace simcore {
+namespace simlab {
 
 // Whether the reference problem has a build of this method (euler, midpoint, rk4,
 // symplectic-euler, verlet, yoshida4, yoshida8).
 bool referenceProblemSupports(const std::string& integrator);
 // "" when params is spring1d (the caller checks that no wall is reached), else why not.
-std::string referenceProblemRefusal(const ParameterSet& params);
+std::string referenceProblemRefusal(const simcore::ParameterSet& params);
 
 struct ReferenceProblemRun {
     std::vector<Eigen::Matrix3Xd> positions;  // at the grid times (3 x 2, in double)
@@ -49,9 +49,9 @@ struct ReferenceProblemRun {
 
 // One run to each grid time (ascending; every time a whole number of steps dt), in float
 // (precision "float") or double.
-ReferenceProblemRun runReferenceProblem(const ParameterSet& params, const std::string& integrator, double dt,
+ReferenceProblemRun runReferenceProblem(const simcore::ParameterSet& params, const std::string& integrator, double dt,
                                         const std::vector<double>& grid, const std::string& precision,
                                         bool compensated, const std::atomic<bool>* cancel = nullptr,
                                         double wallBudget = 0.0, bool everyStep = false);
 
-}  // namespace simcore
+}  // namespace simlab

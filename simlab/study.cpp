@@ -1,4 +1,4 @@
-#include "study.h"
+#include "simlab/study.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,12 +7,23 @@
 #include <sstream>
 #include <tuple>
 
-#include "analytic.h"
-#include "output.h"
-#include "reference_problem.h"
-#include "simulation.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/analytic.h"
+#include "simlab/output.h"
+#include "simlab/reference_problem.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::IntegratorOptions;
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::Simulation;
+using simcore::integratorFamilies;
+using simcore::integratorFamily;
+using simcore::integratorNames;
+using simcore::makeIntegrator;
+using simcore::parseNumber;
 
 namespace {
 
@@ -841,4 +852,4 @@ const char* familyColour(std::string_view family) {
     return it == colours.end() ? "#7f7f7f" : it->second;
 }
 
-}  // namespace simcore
+}  // namespace simlab

@@ -7,15 +7,17 @@
 
 #include <cmath>
 
-#include "analytic.h"
-#include "conservation.h"
-#include "reference_problem.h"
-#include "simulation.h"
-#include "study.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/analytic.h"
+#include "simlab/conservation.h"
+#include "simlab/reference_problem.h"
+#include "simlab/study.h"
 
 #include "sim_test_support.h"
 
 using namespace simcore;
+using namespace simlab;
 using testsupport::params;
 
 namespace {

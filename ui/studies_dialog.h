@@ -14,11 +14,11 @@
 
 #include <QDialog>
 
-#include "conservation.h"
-#include "params.h"
-#include "refinement.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/params.h"
+#include "simlab/conservation.h"
+#include "simlab/refinement.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
 class QCheckBox;
 class QCustomPlot;
@@ -96,7 +96,7 @@ class WorkPrecisionDialog : public StudyDialogBase {
 public:
     WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
     ~WorkPrecisionDialog() override { stopAndWait(); }
-    const simcore::StudyResult& result() const { return m_result; }
+    const simlab::StudyResult& result() const { return m_result; }
     void setSteps(const QString& dts);
     void setDuration(double seconds);
     void setRepeats(int repeats);              // timed runs of each point (the band: q1 to q3)
@@ -111,14 +111,14 @@ protected:
     QString validate() const override;
 
 private:
-    simcore::StudySpec spec() const;
+    simlab::StudySpec spec() const;
     QLineEdit* m_dts = nullptr;
     QLineEdit* m_duration = nullptr;
     QComboBox* m_reference = nullptr;
     QSpinBox* m_repeats = nullptr;
     QLineEdit* m_budget = nullptr;
-    simcore::StudySpec m_spec;
-    simcore::StudyResult m_result;
+    simlab::StudySpec m_spec;
+    simlab::StudyResult m_result;
 };
 
 // Long-time energy (simlab/conservation.h, the CLI's `conservation`): the undamped scene for P
@@ -129,7 +129,7 @@ class ConservationDialog : public StudyDialogBase {
 public:
     ConservationDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
     ~ConservationDialog() override { stopAndWait(); }
-    const simcore::ConservationResult& result() const { return m_result; }
+    const simlab::ConservationResult& result() const { return m_result; }
     void setPeriods(double periods);
     void setStep(double dt);
     void setPrecision(const QString& precision);  // double | float
@@ -143,12 +143,12 @@ protected:
     QString validate() const override;
 
 private:
-    simcore::ConservationSpec spec() const;
+    simlab::ConservationSpec spec() const;
     QLineEdit* m_periods = nullptr;
     QLineEdit* m_dt = nullptr;
     QComboBox* m_precision = nullptr;
-    simcore::ConservationSpec m_spec;
-    simcore::ConservationResult m_result;
+    simlab::ConservationSpec m_spec;
+    simlab::ConservationResult m_result;
     QString m_error;
 };
 
@@ -160,7 +160,7 @@ class RefinementDialog : public StudyDialogBase {
 public:
     RefinementDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
     ~RefinementDialog() override { stopAndWait(); }
-    const simcore::RefinementResult& result() const { return m_result; }
+    const simlab::RefinementResult& result() const { return m_result; }
     void setLevels(const QString& values);  // e.g. "12 24 48"
     void setStep(const QString& dt);        // "" = chosen automatically
     void setDuration(double seconds);
@@ -174,12 +174,12 @@ protected:
     QString validate() const override;
 
 private:
-    simcore::RefinementSpec spec() const;
+    simlab::RefinementSpec spec() const;
     QLineEdit* m_levels = nullptr;
     QLineEdit* m_dt = nullptr;
     QLineEdit* m_duration = nullptr;
-    simcore::RefinementSpec m_spec;
-    simcore::RefinementResult m_result;
+    simlab::RefinementSpec m_spec;
+    simlab::RefinementResult m_result;
     QString m_error;  // the reference failed: why (no rows then)
 };
 
@@ -188,7 +188,7 @@ class StabilityDialog : public StudyDialogBase {
 public:
     StabilityDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
     ~StabilityDialog() override { stopAndWait(); }
-    const std::vector<simcore::StabilityRow>& rows() const { return m_rows; }
+    const std::vector<simlab::StabilityRow>& rows() const { return m_rows; }
     void setDuration(double seconds);
 
 protected:
@@ -199,9 +199,9 @@ protected:
 
 private:
     QLineEdit* m_duration = nullptr;
-    simcore::StabilitySpec m_spec;
-    simcore::LinearModes m_modes;
-    std::vector<simcore::StabilityRow> m_rows;
+    simlab::StabilitySpec m_spec;
+    simlab::LinearModes m_modes;
+    std::vector<simlab::StabilityRow> m_rows;
 };
 
 }  // namespace elui

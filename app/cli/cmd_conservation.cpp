@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli.h"
-#include "conservation.h"
-#include "output.h"
+#include "app/cli/cli.h"
+#include "simlab/conservation.h"
+#include "simlab/output.h"
 
 namespace cli {
 
@@ -20,24 +20,24 @@ struct ConservationArgs {
     bool quiet = false;
     // After check():
     SceneSetup setup;
-    simcore::ConservationSpec spec;
+    simlab::ConservationSpec spec;
 };
 
 void check(ConservationArgs& args) {
     checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"curves", args.curves}, {"plot", args.plot}});
     args.setup = sceneSetup(args.scene);
-    simcore::ConservationSpec& spec = args.spec;
+    simlab::ConservationSpec& spec = args.spec;
     spec.params = args.setup.params;
     spec.integrators = nameList("integrators", args.integrators.value_or("verlet,yoshida4,rk4"));
     spec.periods = args.periods;
     spec.dt = spec.params.get(simcore::Param::Dt);
     spec.samples = args.samples;
     spec.precision = args.precision;
-    if (auto error = simcore::validateConservation(spec)) throw UsageError(*error);
+    if (auto error = simlab::validateConservation(spec)) throw UsageError(*error);
 }
 
 bool writeOutput(const std::string& path, const std::string& text) {
-    simcore::AtomicFile file(path);
+    simlab::AtomicFile file(path);
     if (!file.ok() || !file.write(text) || !file.commit()) {
         std::fprintf(stderr, "error: %s\n", file.error().c_str());
         return false;
@@ -46,20 +46,20 @@ bool writeOutput(const std::string& path, const std::string& text) {
 }
 
 int run(const ConservationArgs& args) {
-    const simcore::ConservationSpec& spec = args.spec;
+    const simlab::ConservationSpec& spec = args.spec;
     // Outputs opened before any work: an unwritable path is bad input, found first.
     for (const std::string& path : {args.csv, args.curves, args.plot})
         if (!path.empty()) {
-            simcore::AtomicFile probe(path);
+            simlab::AtomicFile probe(path);
             if (!probe.ok()) throw UsageError(probe.error());
         }
     const bool quiet = args.quiet;
     auto progress = [&](int done, int total, const std::string& what) {
         if (!quiet && done < total) std::fprintf(stderr, "[%d/%d] %s\n", done + 1, total, what.c_str());
     };
-    simcore::ConservationResult result;
+    simlab::ConservationResult result;
     try {
-        result = simcore::runConservation(spec, progress);
+        result = simlab::runConservation(spec, progress);
     } catch (const std::runtime_error& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return kExitFailed;
@@ -74,7 +74,7 @@ int run(const ConservationArgs& args) {
                     result.energyScale);
         std::printf("%-17s %7s %17s  %-12s %12s %12s %10s %9s  %s\n", "integrator", "alpha", "95% interval", "class",
                     "final |dE| J", "relative", "steps", "wall_s", "status");
-        for (const simcore::ConservationRow& row : result.rows) {
+        for (const simlab::ConservationRow& row : result.rows) {
             if (row.ok)
                 std::printf("%-17s %7.3f  [%6.3f, %6.3f]  %-12s %12.4g %12.4g %10ld %9.3g  ok\n", row.integrator.c_str(),
                             row.alpha, row.alphaLo, row.alphaHi, row.growth.c_str(), row.finalError, row.relativeError,
@@ -85,17 +85,17 @@ int run(const ConservationArgs& args) {
         }
     }
     if (!args.csv.empty()) {
-        std::string text = simcore::conservationCsvHeader();
-        for (const simcore::ConservationRow& row : result.rows) text += simcore::conservationCsvRow(row);
+        std::string text = simlab::conservationCsvHeader();
+        for (const simlab::ConservationRow& row : result.rows) text += simlab::conservationCsvRow(row);
         if (!writeOutput(args.csv, text)) return kExitBadInput;
     }
-    if (!args.curves.empty() && !writeOutput(args.curves, simcore::conservationCurvesCsv(result))) return kExitBadInput;
+    if (!args.curves.empty() && !writeOutput(args.curves, simlab::conservationCurvesCsv(result))) return kExitBadInput;
     if (!args.plot.empty()) {
         char title[300];
         std::snprintf(title, sizeof title, "%s: |energy error| over %g periods, dt = %g s (h omega = %.3g)%s",
                       args.setup.sceneName.c_str(), spec.periods, spec.dt, spec.dt * result.omegaMax,
                       spec.precision == "float" ? ", float" : "");
-        if (!writeOutput(args.plot, simcore::conservationSvg(result, args.title.value_or(title)))) return kExitBadInput;
+        if (!writeOutput(args.plot, simlab::conservationSvg(result, args.title.value_or(title)))) return kExitBadInput;
     }
     return result.cancelled ? kExitFailed : kExitOk;
 }
