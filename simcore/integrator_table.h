@@ -32,7 +32,7 @@ std::string integratorNames();  // "euler, midpoint, ..." for messages
 // family in the order the diagrams list them.
 std::string_view integratorFamily(std::string_view name);
 std::span<const std::string_view> integratorFamilies();
-// (compositionWeights, the substeps of verlet's compositions: integrators.h.)
+// (compositionWeights, the substeps of verlet's compositions: compositions.h.)
 // The one message for a name that is not an integrator (CLI, GUI, Python); nothing when it is one.
 std::optional<std::string> unknownIntegrator(std::string_view name);
 

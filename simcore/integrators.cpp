@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "simcore/compositions.h"
 #include "simcore/internal/integrator_makers.h"
 #include "simcore/params.h"
 

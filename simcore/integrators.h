@@ -17,8 +17,6 @@
 //   rk4               4      4                                  step doubling (optional)
 //   symplectic-euler  1      1                                  step doubling (optional)
 //   verlet            2 (1)  2                                  step doubling (optional)
-//   yoshida4          4 (1)  4 (3 Verlet substeps)              step doubling (optional)
-//   yoshida8          8 (1)  16 (15 Verlet substeps)            step doubling (optional)
 //   rk45              5(4)   7 per attempt (no FSAL, see .cpp)  embedded, every step
 //   implicit-euler    1      2 + CG products of K and D         step doubling (optional)
 //   cvode-bdf         1-5    CVODE: as it needs (+ Jv products)  CVODE's local error estimate
@@ -216,10 +214,5 @@ public:
 protected:
     IntegratorOptions m_options;
 };
-
-// The substep weights of a composition of velocity Verlet (verlet itself: {1}; yoshida4,
-// yoshida8), empty for other methods. Step h: Verlet over w_1 h, ..., w_s h, the acceleration
-// at the end of each substep starting the next (integrators.cpp, Composition).
-std::span<const double> compositionWeights(std::string_view name);
 
 }  // namespace simcore

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <span>
 
-#include "simcore/integrators.h"
+#include "simcore/compositions.h"
 
 namespace simlab {
 

@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "simcore/compositions.h"
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
 #include "simcore/simulation.h"

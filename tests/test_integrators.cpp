@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "simcore/compositions.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simcore/step_doubling.h"

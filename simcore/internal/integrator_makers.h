@@ -9,8 +9,7 @@ namespace simcore {
 
 class Integrator;  // integrators.h (not included: the step bodies include this file)
 
-// euler, midpoint, rk4, symplectic-euler, verlet, yoshida4, yoshida8, rk45 (integrators.cpp);
-// nullptr for others.
+// euler, midpoint, rk4, symplectic-euler, verlet, rk45 (integrators.cpp); nullptr for others.
 std::unique_ptr<Integrator> makeExplicitIntegrator(std::string_view name);
 std::unique_ptr<Integrator> makeXpbd();          // integrators.cpp
 std::unique_ptr<Integrator> makeImplicitEuler();  // implicit_euler.cpp
