@@ -17,9 +17,9 @@ $CLI study --scene spring1d --set kd=0 --integrators euler,midpoint,rk4,symplect
 # The round-off floor: rk4 and yoshida4 in double (the simulation) and in float (the float
 # build of spring1d), and float with the compensated (Kahan) state update.
 DTS=0.02,0.01,0.005,0.0025,0.00125,0.000625,0.0003125,0.00015625,7.8125e-05,3.90625e-05
-$CLI study --scene spring1d --set kd=0 --integrators rk4,yoshida4 --dts $DTS --duration 2 --precision double,float \
+$CLI study --scene spring1d --set kd=0 --integrators rk4,yoshida4 --dts $DTS --duration 2 --precision double,float --repeat 3 \
     --csv "$OUT/course-roundoff.csv" --plot "$OUT/course-roundoff.svg" > "$OUT/course-roundoff.txt"
-$CLI study --scene spring1d --set kd=0 --integrators rk4,yoshida4 --dts $DTS --duration 2 --precision float \
+$CLI study --scene spring1d --set kd=0 --integrators rk4,yoshida4 --dts $DTS --duration 2 --precision float --repeat 3 \
     --compensated --csv "$OUT/course-roundoff-kahan.csv" --plot "$OUT/course-roundoff-kahan.svg" \
     > "$OUT/course-roundoff-kahan.txt"
 
