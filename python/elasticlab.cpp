@@ -35,6 +35,7 @@
 #include "simcore/scenes.h"
 #include "simcore/simulation.h"
 #include "simlab/analytic.h"
+#include "simlab/conservation.h"
 #include "simlab/output.h"
 #include "simlab/refinement.h"
 #include "simlab/scenefile.h"
@@ -429,8 +430,10 @@ py::object toleranceOrNone(double tolerance) { return tolerance > 0 ? py::object
 py::dict study(const py::object& scene, const std::vector<std::string>& integrators,
                const std::optional<std::vector<double>>& dts, const std::optional<std::vector<double>>& tolerances,
                const py::handle& duration, const py::handle& repeat, const std::string& reference,
-               const py::handle& samples, bool fixedStep, const py::object& csvPath, const py::object& plotPath,
-               const py::object& title, const py::kwargs& parameters) {
+               const py::handle& samples, bool fixedStep, const py::handle& timeBudget,
+               const std::vector<std::string>& precision, bool compensated, const py::object& csvPath,
+               const py::object& timingsPath, const py::object& plotPath, const py::object& title,
+               const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
     simlab::StudySpec spec;
     spec.params = s.params;
@@ -440,41 +443,122 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e6, true, false, "s");
     spec.repeat = static_cast<int>(checkedNumber(repeat, "repeat", 1, 1000, false, true));
     spec.samples = static_cast<int>(checkedNumber(samples, "samples", 1, 100000, false, true));
+    spec.timeBudget = checkedNumber(timeBudget, "time_budget", 0.0, 1e6, false, false, "s");
+    spec.precisions = precision;
+    spec.compensated = compensated;
     spec.reference = reference;
     spec.options.fixedStep = fixedStep;
     if (auto error = simlab::validateStudy(spec)) throw py::value_error(*error);
     auto csv = openOutput(csvPath);
+    auto timings = openOutput(timingsPath);
     auto plot = openOutput(plotPath);
 
     const simlab::StudyResult result =
         cancellable([&](const std::atomic<bool>* cancel) { return simlab::runStudy(spec, {}, cancel); });
 
     py::list rows;
-    for (const simlab::StudyRow& r : result.rows)
-        rows.append(py::dict(py::arg("integrator") = r.item.integrator, py::arg("dt") = r.dt,
-                             py::arg("tolerance") = toleranceOrNone(r.item.tolerance),
-                             py::arg("steps") = r.steps, py::arg("force_evals") = r.forceEvaluations,
-                             py::arg("wall_seconds") = r.wallSeconds, py::arg("error_final") = nanIfFailed(r.ok, r.errorFinal),
-                             py::arg("error_max") = nanIfFailed(r.ok, r.errorMax),
-                             py::arg("error_energy") = nanIfFailed(r.ok, r.errorEnergy), py::arg("status") = r.status(),
-                             py::arg("failure") = r.failure));
-    py::dict orders;
-    for (const simlab::OrderFit& fit : simlab::fitOrders(result.rows, result.reference.estimatedError))
+    for (const simlab::StudyRow& r : result.rows) {
+        py::dict row(py::arg("integrator") = r.item.integrator,
+                     py::arg("family") = std::string(simcore::integratorFamily(r.item.integrator)),
+                     py::arg("precision") = r.item.precision, py::arg("dt") = r.dt,
+                     py::arg("tolerance") = toleranceOrNone(r.item.tolerance), py::arg("steps") = r.steps,
+                     py::arg("force_evals") = r.forceEvaluations, py::arg("walls") = r.walls);
+        const bool timed = !r.walls.empty();
+        row["wall_min"] = nanIfFailed(timed, r.wallMin);
+        row["wall_q1"] = nanIfFailed(timed, r.wallQ1);
+        row["wall_median"] = nanIfFailed(timed, r.wallSeconds);
+        row["wall_q3"] = nanIfFailed(timed, r.wallQ3);
+        row["wall_seconds"] = nanIfFailed(timed, r.wallSeconds);  // the median, as before issue 28
+        row["error_final"] = nanIfFailed(r.ok, r.errorFinal);
+        row["error_max"] = nanIfFailed(r.ok, r.errorMax);
+        row["error_rms"] = nanIfFailed(r.ok, r.errorRms);
+        row["error_energy"] = nanIfFailed(r.ok, r.errorEnergy);
+        row["status"] = r.status();
+        row["failure"] = r.failure;
+        rows.append(row);
+    }
+    py::dict orders, ordersFinal, ordersRms;
+    for (const simlab::OrderFit& fit : simlab::fitOrders(result.rows, result.reference.estimatedError)) {
         orders[py::str(fit.integrator)] = fit.order;
+        ordersFinal[py::str(fit.integrator)] = fit.orderFinal;
+        ordersRms[py::str(fit.integrator)] = fit.orderRms;
+    }
+    py::list fastest;
+    for (const simlab::FamilyBest& b : simlab::fastestByFamily(result.rows))
+        fastest.append(py::dict(py::arg("family") = b.family, py::arg("error") = b.error,
+                                py::arg("integrator") = b.integrator, py::arg("wall_seconds") = b.wallSeconds,
+                                py::arg("force_evals") = b.forceEvaluations));
     if (csv) {
         csv->write(simlab::studyCsvHeader());
         for (const simlab::StudyRow& r : result.rows) csv->write(simlab::studyCsvRow(r));
         commit(*csv);
     }
+    if (timings) {
+        timings->write(simlab::studyTimingsCsvHeader());
+        for (const simlab::StudyRow& r : result.rows) timings->write(simlab::studyTimingsCsvRows(r));
+        commit(*timings);
+    }
+    const double scale = simlab::referenceScale(result.reference);
     if (plot) {
         const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simlab::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
-        plot->write(simlab::studySvg(result.rows, t));
+        plot->write(simlab::studySvg(result.rows, t, scale, spec.duration));
         commit(*plot);
     }
-    return py::dict(py::arg("rows") = rows, py::arg("orders") = orders,
-                    py::arg("reference") = result.reference.description,
-                    py::arg("reference_error") = result.reference.estimatedError);
+    py::dict out(py::arg("rows") = rows, py::arg("orders") = orders, py::arg("orders_final") = ordersFinal,
+                 py::arg("orders_rms") = ordersRms, py::arg("fastest") = fastest,
+                 py::arg("reference") = result.reference.description,
+                 py::arg("reference_error") = result.reference.estimatedError);
+    out["roundoff_scale"] = scale;  // X of the floor eps X sqrt(T / h)
+    return out;
+}
+
+py::dict conservation(const py::object& scene, const std::vector<std::string>& integrators, const py::handle& periods,
+                      const py::handle& dt, const py::handle& samples, const std::string& precision,
+                      const py::object& csvPath, const py::object& plotPath, const py::object& title,
+                      const py::kwargs& parameters) {
+    const Scene s = sceneFrom(scene, parameters);
+    simlab::ConservationSpec spec;
+    spec.params = s.params;
+    spec.integrators = integratorList(integrators);
+    spec.periods = checkedNumber(periods, "periods", 20.0, 1e7, false, false);
+    spec.dt = dt.is_none() ? s.params.get(simcore::Param::Dt) : checkedNumber(dt, "dt", 0.0, 1.0, true, false, "s");
+    spec.samples = static_cast<int>(checkedNumber(samples, "samples", 10, 100000, false, true));
+    spec.precision = precision;
+    if (auto error = simlab::validateConservation(spec)) throw py::value_error(*error);
+    auto csv = openOutput(csvPath);
+    auto plot = openOutput(plotPath);
+    const simlab::ConservationResult result = cancellable(
+        [&](const std::atomic<bool>* cancel) { return simlab::runConservation(spec, {}, cancel); });
+    py::list rows;
+    for (const simlab::ConservationRow& r : result.rows) {
+        py::list t, e;
+        for (auto [time, error] : r.curve) t.append(time), e.append(error);
+        py::dict row(py::arg("integrator") = r.integrator, py::arg("alpha") = nanIfFailed(r.ok, r.alpha),
+                     py::arg("alpha_lo") = nanIfFailed(r.ok, r.alphaLo), py::arg("alpha_hi") = nanIfFailed(r.ok, r.alphaHi),
+                     py::arg("class") = r.growth, py::arg("final_error") = nanIfFailed(r.ok, r.finalError),
+                     py::arg("relative_error") = nanIfFailed(r.ok, r.relativeError), py::arg("steps") = r.steps);
+        row["wall_seconds"] = r.wallSeconds;
+        row["status"] = r.status();
+        row["failure"] = r.failure;
+        row["t"] = t;
+        row["energy_error"] = e;
+        rows.append(row);
+    }
+    if (csv) {
+        csv->write(simlab::conservationCsvHeader());
+        for (const simlab::ConservationRow& r : result.rows) csv->write(simlab::conservationCsvRow(r));
+        commit(*csv);
+    }
+    if (plot) {
+        const std::string t = title.is_none() ? s.name + ": |energy error| over " + simlab::formatDouble(spec.periods) + " periods"
+                                              : title.cast<std::string>();
+        plot->write(simlab::conservationSvg(result, t));
+        commit(*plot);
+    }
+    return py::dict(py::arg("rows") = rows, py::arg("omega_max") = result.omegaMax, py::arg("period") = result.period,
+                    py::arg("duration") = result.duration, py::arg("energy_scale") = result.energyScale,
+                    py::arg("undamped") = result.undamped);
 }
 
 py::dict stability(const py::object& scene, const std::vector<std::string>& integrators, const py::handle& duration,
@@ -598,9 +682,11 @@ PYBIND11_MODULE(elasticlab, m) {
         py::list out;
         for (const simcore::IntegratorInfo& i : simcore::integratorTable())
             out.append(py::dict(py::arg("name") = std::string(i.name), py::arg("order") = i.order,
-                                py::arg("description") = std::string(i.description)));
+                                py::arg("description") = std::string(i.description),
+                                py::arg("family") = std::string(i.family)));
         return out;
-    }, "The integrators: name, order, description.");
+    }, "The integrators: name, order, description, family (explicit-rk, symplectic, implicit, adaptive, "
+       "production, constraint).");
     m.def("parameters", [](const std::string& scene) {
         const simcore::SceneInfo* info = simcore::findScene(scene);
         if (!info)
@@ -654,9 +740,23 @@ PYBIND11_MODULE(elasticlab, m) {
           py::arg("integrators") = std::vector<std::string>{"euler", "midpoint", "rk4"},
           py::arg("dts") = py::none(), py::arg("tolerances") = py::none(), py::arg("duration") = 2.0,
           py::arg("repeat") = 1, py::arg("reference") = "auto", py::arg("samples") = 20, py::arg("fixed_step") = false,
+          py::arg("time_budget") = 0.0, py::arg("precision") = std::vector<std::string>{"double"},
+          py::arg("compensated") = false, py::arg("csv") = py::none(), py::arg("timings") = py::none(),
+          py::arg("plot") = py::none(), py::arg("title") = py::none(),
+          "Work-precision study (the CLI's `study`): {'rows': [dict per point: walls (every repeat), wall_min, "
+          "wall_q1, wall_median, wall_q3, error_final, error_max, error_rms, ...], 'orders', 'orders_final', "
+          "'orders_rms': {curve: fitted order}, 'fastest': [the fastest of each family at each accuracy], "
+          "'reference', 'reference_error', 'roundoff_scale'}; time_budget= (s) records slower points as 'not "
+          "reached'; precision=['double', 'float'] adds the float build of spring1d (compensated= its Kahan "
+          "update); csv=, timings= and plot= write the CLI's CSV, raw timings and SVG.");
+    m.def("conservation", &conservation, py::arg("scene"), py::kw_only(),
+          py::arg("integrators") = std::vector<std::string>{"verlet", "yoshida4", "rk4"}, py::arg("periods") = 1000.0,
+          py::arg("dt") = py::none(), py::arg("samples") = 120, py::arg("precision") = "double",
           py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("title") = py::none(),
-          "Work-precision study (the CLI's `study`): {'rows': [dict per run], 'orders': {integrator: fitted "
-          "order}, 'reference', 'reference_error'}; csv= and plot= write the CLI's CSV and SVG.");
+          "Long-time energy (the CLI's `conservation`): the undamped scene for `periods` periods of its fastest "
+          "mode at dt (default: the scene's); {'rows': [dict per integrator: alpha, alpha_lo, alpha_hi, class "
+          "(bounded, random-walk, drift), final_error, t, energy_error, ...], 'omega_max', 'period', 'duration', "
+          "'energy_scale', 'undamped'}; csv= and plot= as the CLI.");
     m.def("refinement", &refinement, py::arg("scene"), py::kw_only(), py::arg("levels"),
           py::arg("key") = py::none(), py::arg("integrator") = "rk4", py::arg("tolerance") = py::none(),
           py::arg("duration") = 1.0, py::arg("interval") = 0.01, py::arg("temporal_runs") = 4,

@@ -7,6 +7,7 @@
 
 #include "simcore/scenes.h"
 #include "simlab/output.h"
+#include "qcustomplot.h"
 #include "test_support.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/export.h"
@@ -346,6 +347,7 @@ private slots:
         WorkPrecisionDialog dialog(p);
         dialog.setSteps("0.01 0.005 0.0025");
         dialog.setDuration(0.5);
+        dialog.setRepeats(3);
         QSignalSpy finished(&dialog, &StudyDialogBase::finished);
         dialog.start();
         QVERIFY(dialog.busy());
@@ -353,7 +355,18 @@ private slots:
         const auto& rows = dialog.result().rows;
         QCOMPARE(int(rows.size()), 4 * 3);  // euler, midpoint, rk4, verlet x 3 steps
         QCOMPARE(dialog.table()->rowCount(), 12);
-        QCOMPARE(dialog.plot()->graphCount(), 2 * 4);  // error vs run time and vs DT, per integrator
+        QCOMPARE(dialog.table()->columnCount(), 13);  // with the run time's q1, median, q3 and the RMS error
+        for (const auto& r : rows) QCOMPARE(int(r.walls.size()), r.ok ? 3 : int(r.walls.size()));
+        // Error vs cost and vs DT per integrator (force evaluations by default: no band, no rings).
+        auto bands = [&] {
+            int n = 0;
+            for (int i = 0; i < dialog.plot()->plottableCount(); ++i)
+                if (auto* curve = qobject_cast<QCPCurve*>(dialog.plot()->plottable(i)); curve && curve->brush().style() != Qt::NoBrush)
+                    ++n;
+            return n;
+        };
+        QCOMPARE(dialog.plot()->graphCount(), 2 * 4);
+        QCOMPARE(bands(), 0);
         // RK4's error falls far faster with DT than Euler's.
         auto err = [&](const char* name, double dt) {
             for (const auto& r : rows)
@@ -368,7 +381,7 @@ private slots:
             QList<double> keys;
             for (int g = 0; g < dialog.plot()->graphCount(); ++g)
                 if (dialog.plot()->graph(g)->keyAxis()->axisRect() == dialog.plot()->axisRect(0) &&
-                    dialog.plot()->graph(g)->name() == "rk4")
+                    dialog.plot()->graph(g)->name().startsWith("rk4 ["))
                     for (auto it = dialog.plot()->graph(g)->data()->constBegin(); it != dialog.plot()->graph(g)->data()->constEnd(); ++it)
                         keys << it->key;
             std::sort(keys.begin(), keys.end());
@@ -386,13 +399,37 @@ private slots:
             if (r.item.integrator == "rk4") expected << r.wallSeconds;
         std::sort(expected.begin(), expected.end());
         QCOMPARE(leftAxisData(), expected);
-        QVERIFY(dialog.plot()->axisRect(0)->axis(QCPAxis::atBottom)->label().contains("wall time"));
-        // Repeats out of 1..9 are refused before any work.
-        dialog.setRepeats(0);
+        QVERIFY(dialog.plot()->axisRect(0)->axis(QCPAxis::atBottom)->label().contains("run time"));
+        // On the run-time axis, per integrator with a drawn point: the q1-q3 band (a filled curve)
+        // and the line through the medians, and the rings of the fastest of each family.
+        QCOMPARE(dialog.plot()->graphCount(), 2 * 4 + 1);
+        QCOMPARE(bands(), 4);
+        // A request the study refuses (no DT) starts no work.
+        dialog.setSteps("");
         dialog.start();
         QVERIFY(!dialog.busy());
         if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
             dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/study.png");
+    }
+
+    void conservationStudyClassifiesTheGrowth() {
+        // simlab's long-time energy (the CLI's `conservation`) behind the dialog.
+        simcore::ParameterSet p(SceneKind::Spring1d);
+        ConservationDialog dialog(p);
+        dialog.setPeriods(100);
+        dialog.setStep(0.01);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, testsupport::kHangGuardMs);
+        const auto& rows = dialog.result().rows;
+        QCOMPARE(int(rows.size()), 3);  // rk4, verlet, yoshida4 checked at first (in the table's order)
+        for (const auto& row : rows)
+            QCOMPARE(row.growth, std::string(row.integrator == "rk4" ? "drift" : "bounded"));
+        QCOMPARE(dialog.table()->rowCount(), 3);
+        QCOMPARE(dialog.plot()->graphCount(), 3 + 2);  // a curve per integrator, slopes 1/2 and 1
+        QVERIFY(dialog.plot()->graph(0)->dataCount() > 10);
+        if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
+            dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/conservation.png");
     }
 
     void refinementStudyRunsAndCancels() {

@@ -228,6 +228,11 @@ void MainWindow::createMenus() {
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
+    m_studiesMenu->addAction(tr("&Long-time energy..."), this, [this] {
+        auto* d = new ConservationDialog(m_controller->parameters(), this);
+        d->setAttribute(Qt::WA_DeleteOnClose);
+        d->show();
+    });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_help);

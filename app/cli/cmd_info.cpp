@@ -21,11 +21,11 @@ Command addScenesCommand(CLI::App& app) {
 }
 
 Command addIntegratorsCommand(CLI::App& app) {
-    CLI::App* sub = app.add_subcommand("integrators", "list the integrators with their order");
+    CLI::App* sub = app.add_subcommand("integrators", "list the integrators with their order and family");
     return {sub, [] {}, [] {
                 for (const simcore::IntegratorInfo& i : simcore::integratorTable())
-                    std::printf("%-18s order %d  %s\n", std::string(i.name).c_str(), i.order,
-                                std::string(i.description).c_str());
+                    std::printf("%-18s order %-2d %-12s %s\n", std::string(i.name).c_str(), i.order,
+                                std::string(i.family).c_str(), std::string(i.description).c_str());
                 return kExitOk;
             }};
 }
