@@ -167,7 +167,7 @@ std::unique_ptr<CLI::App> makeApp(std::vector<Command>& commands) {
     app->get_formatter()->column_width(34);
     app->footer("`elastic-lab-cli COMMAND --help` lists a command's options with units and defaults.\n"
                 "Exit status: 0 success, 2 bad input (one line naming the problem), 3 the simulation failed.");
-    for (auto add : {addScenesCommand, addParamsCommand, addIntegratorsCommand, addRunCommand, addStudyCommand,
+    for (auto add : {addScenesCommand, addParamsCommand, addIntegratorsCommand, addRunCommand, addStudyCommand, addSweepCommand,
                      addStabilityCommand, addRestitutionCommand, addGalleryCommand, addBenchCommand,
                      addCompletionCommand})
         commands.push_back(add(*app));

@@ -104,6 +104,7 @@ Command addParamsCommand(CLI::App& app);
 Command addIntegratorsCommand(CLI::App& app);
 Command addRunCommand(CLI::App& app);
 Command addStudyCommand(CLI::App& app);
+Command addSweepCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addRestitutionCommand(CLI::App& app);
 Command addGalleryCommand(CLI::App& app);
