@@ -1,4 +1,4 @@
-#include "sweep.h"
+#include "simlab/sweep.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,13 +9,29 @@
 
 #include <nlohmann/json.hpp>
 
-#include "body.h"
 #include "elastic_lab_version.h"
-#include "output.h"
-#include "scenes.h"
-#include "simulation.h"
+#include "simcore/body.h"
+#include "simcore/integrator_table.h"
+#include "simcore/scenes.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Diagnostics;
+using simcore::Failure;
+using simcore::ParameterSet;
+using simcore::ParamSpec;
+using simcore::SceneKind;
+using simcore::Simulation;
+using simcore::SpringSet;
+using simcore::findParam;
+using simcore::hasGas;
+using simcore::parseNumber;
+using simcore::quoteShort;
+using simcore::sceneInfo;
+using simcore::unknownIntegrator;
+using simcore::validateShape;
 
 namespace {
 
@@ -211,7 +227,7 @@ std::optional<std::string> validateSweep(SweepSpec& spec) {
             for (double v : spec.axes[k]) {
                 if (auto error = checkValue(spec.params, spec.keys[k], v)) return "grid: " + *error;
                 if (!values.insert(v).second)
-                    return "grid: " + spec.keys[k] + " = " + sweepValueText(spec.keys[k], v) + " is listed twice";
+                    return "grid " + spec.keys[k] + ": " + quoteShort(sweepValueText(spec.keys[k], v)) + " is listed twice";
             }
             count *= static_cast<double>(spec.axes[k].size());
         }
@@ -359,7 +375,7 @@ std::string sweepSpecText(const SweepSpec& spec) {
     base.params = spec.params;
     base.integrator = spec.integrator;
     base.state = spec.state;
-    const IntegratorOptions& o = spec.options;
+    const simcore::IntegratorOptions& o = spec.options;
     Json j = {{"format", "elastic-lab-sweep"},
               {"version", 1},
               {"scene", Json::parse(sceneFileText(base))},
@@ -411,4 +427,4 @@ SweepSpecResult parseSweepSpec(const std::string& text) {
     }
 }
 
-}  // namespace simcore
+}  // namespace simlab

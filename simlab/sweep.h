@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include "integrators.h"
-#include "params.h"
-#include "scenefile.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simlab/scenefile.h"
 
-namespace simcore {
+namespace simlab {
 
 // The most points one sweep may hold, and the most steps one point may take by default.
 inline constexpr double kMaxSweepPoints = 1e7;
@@ -31,9 +31,9 @@ inline constexpr double kSweepDefaultMaxSteps = 1e8;
 
 struct SweepSpec {
     std::string sceneName;                    // built-in scene name
-    ParameterSet params;                      // the base: a scene file's values, then fixed keys
+    simcore::ParameterSet params;             // the base: a scene file's values, then fixed keys
     std::string integrator = "rk4";
-    IntegratorOptions options;
+    simcore::IntegratorOptions options;
     std::optional<SceneFile::State> state;    // a scene file's saved state (every point starts there)
     std::vector<std::string> keys;            // the varied parameters, in column order
     std::vector<std::vector<double>> axes;    // product mode: the values of each key (first key slowest)
@@ -53,7 +53,7 @@ struct SweepSpec {
 //                   run ends before it, or without a bounce)
 //   strain_max      largest |L/L0 - 1| of any spring over every step
 //   t_end [s], steps, force_evals, wall_seconds [s]
-std::vector<std::string> sweepMetricNames(SceneKind kind);
+std::vector<std::string> sweepMetricNames(simcore::SceneKind kind);
 
 // The one check of a sweep request (the CLI and Python call it before anything runs): the
 // scene's keys, every value of every axis through the parameter table, every point's shape with
@@ -108,4 +108,4 @@ struct SweepSpecResult {
 };
 SweepSpecResult parseSweepSpec(const std::string& text);
 
-}  // namespace simcore
+}  // namespace simlab

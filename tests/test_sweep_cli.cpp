@@ -157,7 +157,7 @@ private slots:
         QTest::newRow("unknown key") << base + QStringList{"--grid", "stiffness=1,2", "--csv", "x.csv"} << "unknown parameter 'stiffness'";
         QTest::newRow("out of range") << base + QStringList{"--grid", "ks=-5", "--csv", "x.csv"} << "ks = -5 is out of range";
         QTest::newRow("twice") << base + QStringList{"--grid", "ks=1,2", "--grid", "ks=3", "--csv", "x.csv"} << "'ks' is given twice";
-        QTest::newRow("listed twice") << base + QStringList{"--grid", "ks=1,1", "--csv", "x.csv"} << "listed twice";
+        QTest::newRow("listed twice") << base + QStringList{"--grid", "ks=1,1", "--csv", "x.csv"} << "ks: '1' is listed twice";
         QTest::newRow("bad range") << base + QStringList{"--grid", "ks=log:0:10:3", "--csv", "x.csv"} << "needs both ends > 0";
         QTest::newRow("unknown metric") << base + QStringList{"--metrics", "bounce", "--csv", "x.csv"} << "metrics: unknown 'bounce'";
         QTest::newRow("1D has no volumes") << QStringList{"sweep", "--scene", "spring1d", "--metrics", "volume_inner_final", "--csv", "x.csv"}

@@ -24,8 +24,8 @@
 
 #include "cli.h"
 #include "elastic_lab_version.h"
-#include "output.h"
-#include "sweep.h"
+#include "simlab/output.h"
+#include "simlab/sweep.h"
 
 namespace cli {
 
@@ -36,17 +36,17 @@ struct SweepArgs {
     std::vector<std::string> grid;
     std::optional<std::string> metrics, shard;
     double duration = 1.0;
-    double maxSteps = simcore::kSweepDefaultMaxSteps;
+    double maxSteps = simlab::kSweepDefaultMaxSteps;
     std::string csv;
     bool resume = false, quiet = false;
     simcore::IntegratorOptions integrator;
     // After check():
-    simcore::SweepSpec spec;
+    simlab::SweepSpec spec;
     std::pair<int, int> shardOf{0, 1};
 };
 
 // KEY=v1,v2,... or KEY=lin:A:B:N, KEY=log:A:B:N, KEY=decades:A:B:K.
-void addGridAxis(simcore::SweepSpec& spec, const std::string& text) {
+void addGridAxis(simlab::SweepSpec& spec, const std::string& text) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
         throw UsageError("--grid: expected KEY=v1,v2,... (or KEY=lin:A:B:N, log:A:B:N, decades:A:B:K), got " +
@@ -72,7 +72,7 @@ void addGridAxis(simcore::SweepSpec& spec, const std::string& text) {
         }
         if (abn.size() != 3) throw UsageError("--grid " + key + ": " + simcore::quoteShort(values) + " is not A:B:N");
         const std::string name = std::string(kind) == "lin:" ? "linear" : std::string(kind).substr(0, std::string(kind).size() - 1);
-        simcore::SweepRange range = simcore::sweepRange(name, abn[0], abn[1], abn[2]);
+        simlab::SweepRange range = simlab::sweepRange(name, abn[0], abn[1], abn[2]);
         if (!range.error.empty()) throw UsageError("--grid " + key + ": " + range.error);
         axis = std::move(range.values);
     }
@@ -94,7 +94,7 @@ void checkSweep(SweepArgs& args) {
     if (args.resume && args.csv == "-") throw UsageError("--resume needs a file for --csv (the journal lives beside it)");
     if (args.csv != "-") checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}});
     const SceneSetup setup = sceneSetup(args.scene);
-    simcore::SweepSpec& spec = args.spec;
+    simlab::SweepSpec& spec = args.spec;
     spec.sceneName = setup.sceneName;
     spec.params = setup.params;
     spec.integrator = setup.integrator;
@@ -104,7 +104,7 @@ void checkSweep(SweepArgs& args) {
     spec.maxSteps = args.maxSteps;
     for (const std::string& g : args.grid) addGridAxis(spec, g);
     if (args.metrics) spec.metrics = nameList("metrics", *args.metrics);
-    if (auto error = simcore::validateSweep(spec)) throw UsageError(*error);
+    if (auto error = simlab::validateSweep(spec)) throw UsageError(*error);
     if (args.shard) args.shardOf = parseShard(*args.shard);
 }
 
@@ -121,7 +121,7 @@ std::string fingerprint(const std::string& text) {
 class Progress {
 public:
     Progress(long total, bool quiet) : m_total(total), m_quiet(quiet), m_tty(isatty(2) != 0) {}
-    void done(const simcore::SweepRow& row) {
+    void done(const simlab::SweepRow& row) {
         ++m_done;
         m_failed += row.status == "failed";
         m_over += row.status == "over budget";
@@ -155,17 +155,17 @@ bool writeAll(int fd, const std::string& text) {
 }
 
 int runSweep(const SweepArgs& args) {
-    const simcore::SweepSpec& spec = args.spec;
-    const auto [begin, end] = simcore::sweepShard(spec, args.shardOf.first, args.shardOf.second);
-    const std::string header = simcore::sweepCsvHeader(spec);
+    const simlab::SweepSpec& spec = args.spec;
+    const auto [begin, end] = simlab::sweepShard(spec, args.shardOf.first, args.shardOf.second);
+    const std::string header = simlab::sweepCsvHeader(spec);
     long total = end - begin;
 
     if (args.csv == "-") {  // streamed in grid order, nothing to resume
         Progress progress(total, args.quiet);
         std::fputs(header.c_str(), stdout);
         for (long i = begin; i < end; ++i) {
-            const simcore::SweepRow row = simcore::runSweepPoint(spec, i);
-            std::fputs(simcore::sweepCsvRow(spec, row).c_str(), stdout);
+            const simlab::SweepRow row = simlab::runSweepPoint(spec, i);
+            std::fputs(simlab::sweepCsvRow(spec, row).c_str(), stdout);
             std::fflush(stdout);
             progress.done(row);
         }
@@ -173,11 +173,11 @@ int runSweep(const SweepArgs& args) {
     }
 
     // The final file is opened first: an unwritable path is bad input before any work.
-    simcore::AtomicFile out(args.csv);
+    simlab::AtomicFile out(args.csv);
     if (!out.ok()) throw UsageError(out.error());
     const std::string journalPath = args.csv + ".partial";
     const std::string stamp = "# elastic-lab sweep " +
-                              fingerprint(simcore::sweepSpecText(spec) + " shard " + std::to_string(args.shardOf.first) + "/" +
+                              fingerprint(simlab::sweepSpecText(spec) + " shard " + std::to_string(args.shardOf.first) + "/" +
                                           std::to_string(args.shardOf.second) + " " + elastic_lab::kVersion) + "\n";
     std::map<long, std::string> rows;  // index -> CSV line
     long keep = 0;                     // bytes of the journal that hold whole lines
@@ -194,7 +194,7 @@ int runSweep(const SweepArgs& args) {
                 const auto nl = text.find('\n', at);
                 if (nl == std::string::npos) break;  // a torn last line (killed while writing it)
                 const std::string line = text.substr(at, nl + 1 - at);
-                const auto index = simcore::sweepCsvRowIndex(line);
+                const auto index = simlab::sweepCsvRowIndex(line);
                 if (!index || *index < begin || *index >= end) break;  // not a row of ours: drop it and the rest
                 rows[*index] = line;
                 at = nl + 1;
@@ -218,8 +218,8 @@ int runSweep(const SweepArgs& args) {
     Progress progress(total - static_cast<long>(rows.size()), args.quiet);
     for (long i = begin; i < end; ++i) {
         if (rows.count(i)) continue;
-        const simcore::SweepRow row = simcore::runSweepPoint(spec, i);
-        const std::string line = simcore::sweepCsvRow(spec, row);
+        const simlab::SweepRow row = simlab::runSweepPoint(spec, i);
+        const std::string line = simlab::sweepCsvRow(spec, row);
         if (!writeAll(fd, line)) {
             ::close(fd);
             std::fprintf(stderr, "error: cannot write the journal %s: %s\n", simcore::quoteShort(journalPath, 200).c_str(),
