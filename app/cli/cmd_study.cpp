@@ -322,7 +322,7 @@ Command addStudyCommand(CLI::App& app) {
     CLI::Option* shard = sub->add_option("--shard", args->shard, "run the K-th of N equal parts of the sweep (1-based); "
                                                                  "the parts' CSVs concatenate into the whole")
                              ->type_name("K/N");
-    CLI::Option* csv = sub->add_option("--csv", args->csv, "write one row per run")->type_name("FILE");
+    CLI::Option* csv = addCsvOption(*sub, args->csv, "write one row per run");
     sub->add_option("--plot", args->plot, "draw the diagram as SVG")->type_name("FILE.svg");
     sub->add_option("--title", args->title, "the plot's title")->type_name("TEXT");
     sub->add_option("--interval", args->interval, "with --refine: compare the levels every I s [s]")

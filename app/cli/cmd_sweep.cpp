@@ -22,7 +22,7 @@
 #include <map>
 #include <memory>
 
-#include "cli.h"
+#include "app/cli/cli.h"
 #include "elastic_lab_version.h"
 #include "simlab/output.h"
 #include "simlab/sweep.h"
