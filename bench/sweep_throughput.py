@@ -58,7 +58,12 @@ def main():
             same(a, reference)
             same(b, reference)
             ratios.append(serial / parallel)
+            # The runs' own wall time against the elapsed time (x workers): how much of the time
+            # was spent inside the runs (the rest: scheduling, transfers, the CPU taken by others).
+            busy_serial = a["wall_seconds"].sum() / serial
+            busy_dask = b["wall_seconds"].sum() / (parallel * args.workers)
             print(f"pair {pair + 1}: serial {serial:.2f} s, dask {parallel:.2f} s, speed-up {serial / parallel:.2f}x; "
+                  f"inside the runs {100 * busy_serial:.0f} % / {100 * busy_dask:.0f} %; "
                   f"load average {os.getloadavg()[0]:.1f}; {len(a)} runs, {int(a['steps'].sum())} steps, "
                   f"{(a.status == 'ok').sum()} ok")
         print(f"speed-up: median {np.median(ratios):.2f}x, min {min(ratios):.2f}x, max {max(ratios):.2f}x "

@@ -8,6 +8,7 @@ whichever executor runs it (wall times aside), in grid order. docs/sweeps.md has
 from __future__ import annotations
 
 import numbers
+import os
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping, Optional, Sequence, Union
 
@@ -15,7 +16,7 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["sweep", "SweepItem", "run_item", "linear", "log", "decades", "uniform", "loguniform", "integers"]
+__all__ = ["sweep", "SweepItem", "run_item", "run_items", "linear", "log", "decades", "uniform", "loguniform", "integers"]
 
 
 # --- values --------------------------------------------------------------------------------------
@@ -87,6 +88,21 @@ def run_item(item: SweepItem) -> tuple:
     return _core._sweep_run(item.plan, item.index)
 
 
+def run_items(items: Sequence[SweepItem]) -> list:
+    """Runs several points, one after the other: a task that packs many short runs."""
+    return [run_item(item) for item in items]
+
+
+def _workers(executor: Any) -> int:
+    """How many points the executor runs at once, as far as can be told."""
+    if _is_dask_client(executor):
+        return max(1, sum(executor.nthreads().values()))
+    for attribute in ("_max_workers", "_processes"):  # concurrent.futures, multiprocessing.Pool
+        if isinstance(getattr(executor, attribute, None), int):
+            return max(1, getattr(executor, attribute))
+    return os.cpu_count() or 1
+
+
 # --- the sweep ---------------------------------------------------------------------------------------
 
 def _grid(grid: Optional[Mapping[str, Any]], samples: Optional[int], seed: Optional[int]):
@@ -145,7 +161,7 @@ def _progress_bar(total: int, progress):
     return tqdm(total=total, unit="run", desc="sweep")
 
 
-def _execute(items: list, executor: Any, progress) -> list:
+def _execute(items: list, executor: Any, progress, chunk: Optional[int]) -> list:
     bar = _progress_bar(len(items), progress)
     tick = bar.update if bar is not None else (lambda n=1: None)
     try:
@@ -155,19 +171,28 @@ def _execute(items: list, executor: Any, progress) -> list:
                 rows.append(run_item(item))
                 tick()
             return rows
-        if _is_dask_client(executor):
-            from distributed import as_completed
-            futures = executor.map(run_item, items, pure=False)
-            for _ in as_completed(futures):
-                tick()
-            return executor.gather(futures)
-        if not hasattr(executor, "map"):
+        if not _is_dask_client(executor) and not hasattr(executor, "map"):
             raise TypeError("executor: expected None, something with a map method (concurrent.futures, "
                             "multiprocessing, joblib's loky) or a dask.distributed.Client")
+        # Tasks of `chunk` points each: by default about four tasks per worker, so that a task's
+        # overhead (scheduling, pickling, a round trip) is paid per chunk, not per short run,
+        # while the workers still share the load evenly.
+        if chunk is None:
+            chunk = max(1, len(items) // (4 * _workers(executor)))
+        chunks = [items[i:i + chunk] for i in range(0, len(items), chunk)]
         rows = []
-        for row in executor.map(run_item, items):
-            rows.append(row)
-            tick()
+        if _is_dask_client(executor):
+            from distributed import as_completed
+            futures = executor.map(run_items, chunks, pure=False)
+            sizes = {future.key: len(part) for future, part in zip(futures, chunks)}
+            for future in as_completed(futures):
+                tick(sizes[future.key])
+            for part in executor.gather(futures):
+                rows.extend(part)
+            return rows
+        for part in executor.map(run_items, chunks):
+            rows.extend(part)
+            tick(len(part))
         return rows
     finally:
         if bar is not None:
@@ -181,7 +206,7 @@ def sweep(scene: Union[str, Any], grid: Optional[Mapping[str, Any]] = None, *, d
           max_step: Optional[float] = None, fixed_step: Optional[bool] = None,
           error_estimate: Optional[bool] = None, newton: Optional[int] = None,
           cg_tolerance: Optional[float] = None, cg_max_iterations: Optional[int] = None,
-          options: Optional[Mapping[str, Any]] = None,
+          options: Optional[Mapping[str, Any]] = None, chunk: Optional[int] = None,
           progress: Union[bool, Callable[[int, int], Any], None] = True, **fixed: Any):
     """Runs a grid of simulations and returns a pandas DataFrame, one row per run.
 
@@ -210,6 +235,9 @@ def sweep(scene: Union[str, Any], grid: Optional[Mapping[str, Any]] = None, *, d
         A run needing more steps is "over budget" (not run, or stopped there). Default 1e8.
     rtol, atol, min_step, max_step, fixed_step, error_estimate, newton, cg_tolerance, cg_max_iterations, options
         Integrator options, as for Simulation.
+    chunk : int, optional
+        Points per task sent to the executor (default: about four tasks per worker); the table
+        does not depend on it.
     progress : bool or callable
         True: a tqdm bar where tqdm is installed (a widget in a notebook); a callable gets
         ``(done, total)`` after each run; False: nothing.
@@ -236,7 +264,9 @@ def sweep(scene: Union[str, Any], grid: Optional[Mapping[str, Any]] = None, *, d
                     cg_max_iterations=cg_max_iterations)
     plan, columns, count = _core._sweep_plan(scene, keys, axes, points, duration, integrator, opts,
                                              None if metrics is None else list(metrics), max_steps, **fixed)
-    rows = _execute([SweepItem(plan, i) for i in range(count)], executor, progress)
+    if chunk is not None and (isinstance(chunk, bool) or int(chunk) != chunk or chunk < 1):
+        raise ValueError(f"chunk = {chunk!r} is out of range; allowed whole numbers >= 1")
+    rows = _execute([SweepItem(plan, i) for i in range(count)], executor, progress, chunk)
     df = pd.DataFrame.from_records(list(rows), columns=columns)
     for name in ("steps", "force_evals"):
         if name in df and df[name].notna().all():

@@ -100,6 +100,11 @@ def test_executors_with_map_give_the_same_table(serial):
         same_table(el.sweep("ring2d", GRID, duration=DURATION, executor=pool, progress=False, **FIXED), serial)
     with ThreadPoolExecutor(2) as pool:  # the GIL is released while a point runs
         same_table(el.sweep("ring2d", GRID, duration=DURATION, executor=pool, progress=False, **FIXED), serial)
+        # Points packed three to a task (the last task has two): the same table, in grid order.
+        same_table(el.sweep("ring2d", GRID, duration=DURATION, executor=pool, chunk=3, progress=False, **FIXED),
+                   serial)
+    with pytest.raises(ValueError, match="chunk = 0 is out of range"):
+        el.sweep("ring2d", GRID, duration=DURATION, executor=Refusing(), chunk=0, **FIXED)
 
 
 def test_the_cli_writes_the_same_table(serial, tmp_path):
