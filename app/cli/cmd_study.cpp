@@ -387,7 +387,7 @@ Command addStudyCommand(CLI::App& app) {
     CLI::Option* timingsOption =
         sub->add_option("--timings", args->timings, "write every raw wall time, one row per run and repeat")
             ->type_name("FILE");
-    CLI::Option* csv = sub->add_option("--csv", args->csv, "write one row per point")->type_name("FILE");
+    CLI::Option* csv = addCsvOption(*sub, args->csv, "write one row per point");
     sub->add_option("--plot", args->plot, "draw the diagram as SVG")->type_name("FILE.svg");
     sub->add_option("--title", args->title, "the plot's title")->type_name("TEXT");
     sub->add_option("--interval", args->interval, "with --refine: compare the levels every I s [s]")
