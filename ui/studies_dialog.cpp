@@ -44,8 +44,11 @@ QString number(double v) { return QString::number(v, 'g', 4); }
 void setupLogAxis(QCPAxis* axis, const QString& label) {
     axis->setScaleType(QCPAxis::stLogarithmic);
     axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-    axis->setNumberFormat(QStringLiteral("eb"));
-    axis->setNumberPrecision(0);
+    // Three significant digits: over less than 1.6 decades QCustomPlot's log ticker falls back
+    // to linear steps (0.008, 0.01, 0.012), which a one-digit mantissa printed as "10⁻²" three
+    // times. Powers of ten still read 0.001, 0.01, 1e+05 (beautified to 10⁵).
+    axis->setNumberFormat(QStringLiteral("gb"));
+    axis->setNumberPrecision(3);
     axis->setLabel(label);
 }
 
