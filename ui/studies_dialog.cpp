@@ -515,7 +515,7 @@ void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));
     m_rows.clear();
     if (cancel->load()) return;
-    m_modes = simcore::linearModes(m_params);
+    m_modes = simcore::stabilityModes(m_params);
     m_rows = simcore::runStability(
         m_spec, m_modes,
         [this](const simcore::StabilityProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
