@@ -2,7 +2,7 @@
 // Stability: the largest stable step, measured and predicted, side by side.
 //
 // Measured: bisection on dt per integrator. A run is stable when it does not fail (NaN,
-// runaway speed or energy, collapsed layer: Simulation's checks) and its energy stays bounded
+// runaway speed or energy, collapsed layer: simcore::Simulation's checks) and its energy stays bounded
 // over T, from a seeded small perturbation of the rest state: the energy balance is unbounded
 // when its gain exceeds half the energy the body can plausibly convert (gravity over the box
 // height + the start's kinetic and elastic energy + 1 J) and its largest gain in the second
@@ -33,10 +33,14 @@
 #include <string>
 #include <vector>
 
-#include "params.h"
-#include "simulation.h"
+#include "simcore/params.h"
+#include "simcore/simulation.h"
 
 namespace simcore {
+class Simulation;
+}  // namespace simcore
+
+namespace simlab {
 
 struct LinearModes {
     int freeCoordinates = 0;
@@ -70,7 +74,7 @@ inline constexpr int kDenseModeLimit = 1200;
 // (a dense non-symmetric eigen-solve of twice that size: ~1 s at 400). denseLimit: up to this
 // many, all modes (dense symmetric eigen-solve); above it the highest mode alone, by power
 // iteration on the Jacobian products (dense = false).
-LinearModes linearModes(const ParameterSet& params, int exactEigenLimit = kExactEigenLimit,
+LinearModes linearModes(const simcore::ParameterSet& params, int exactEigenLimit = kExactEigenLimit,
                         int denseLimit = kDenseModeLimit);
 
 // The one linearisation every door judges stability by (the pre-run banner, the failure
@@ -119,7 +123,7 @@ double modeAmplification(const std::string& integrator, double h, double omega, 
 double predictedStableStep(const std::string& integrator, const LinearModes& modes, double hMax = 10.0);
 
 struct StabilitySpec {
-    ParameterSet params{SceneKind::Ring2d};
+    simcore::ParameterSet params{simcore::SceneKind::Ring2d};
     std::vector<std::string> integrators;
     double duration = 2.0;      // T [s]
     double perturb = 0.01;      // used when params has no explicit perturb [m]
@@ -161,8 +165,7 @@ std::vector<std::string> shardNames(const std::vector<std::string>& names, int s
 // The pre-run check: for an explicit fixed-step method, dt above its verdict's limit
 // (stabilityVerdict on stabilityModes) gives a warning text. Adaptive rk45 and
 // implicit-euler never warn.
-class Simulation;
-std::optional<std::string> preRunStabilityWarning(const Simulation& sim);
+std::optional<std::string> preRunStabilityWarning(const simcore::Simulation& sim);
 // The same check with what to do about it: the warning and a step that the same estimate
 // predicts stable (0.9 of the limit, rounded down to two significant digits), for the GUI's
 // one-click offer and the CLI's advice. Nothing when the current dt is fine.
@@ -170,7 +173,7 @@ struct StabilityAdvice {
     std::string message;
     double suggestedDt = 0.0;  // [s]
 };
-std::optional<StabilityAdvice> stabilityAdvice(const Simulation& sim);
+std::optional<StabilityAdvice> stabilityAdvice(const simcore::Simulation& sim);
 // The failure banner's question: numerics or physics? A run failed at `failure.time`; the
 // stretch from `start` (a snapshot some time before it) is run again at a smaller step -
 // a quarter of the failed one, and no more than 0.9 of the method's verdict limit when that
@@ -188,13 +191,13 @@ struct FailureCheck {
     double failedDt = 0.0;         // [s]
     double rerunDt = 0.0;          // [s]
     double from = 0.0, until = 0.0;  // the stretch re-run [s]
-    std::optional<Failure> rerunFailure;
+    std::optional<simcore::Failure> rerunFailure;
     StabilityVerdict verdict;      // of the failed step
     // What a class can do: for a physical failure the body's remedies, for a numerical one
     // the step that ran through (rounded down to two digits) [s].
     double workingDt = 0.0;
 };
-FailureCheck checkFailure(const SimulationSnapshot& start, const Failure& failure,
+FailureCheck checkFailure(const simcore::SimulationSnapshot& start, const simcore::Failure& failure,
                           const std::atomic<bool>* cancel = nullptr);
 // The banner's words for a check: one paragraph, plain text (no markup).
 std::string failureCheckText(const FailureCheck& check);
@@ -205,9 +208,9 @@ double roundDownTwoDigits(double x);
 // The energy a body can plausibly convert from its current state [J]: 1 J + its kinetic and
 // elastic energy + its weight falling the box height + each gas expanding 100-fold (c ln 100).
 // The yardstick of "bounded energy" here and of the gallery's tolerances.
-double convertibleEnergy(const Simulation& sim);
+double convertibleEnergy(const simcore::Simulation& sim);
 
 std::string stabilityCsvHeader();  // integrator,dt_stable,dt_unstable,dt_predicted,h_omega_stable,reason
 std::string stabilityCsvRow(const StabilityRow& row, const LinearModes& modes);
 
-}  // namespace simcore
+}  // namespace simlab

@@ -7,13 +7,16 @@
 
 #include <QPushButton>
 
-#include "lessons.h"
-#include "main_window.h"
-#include "simulation_controller.h"
-#include "stability.h"
-#include "stability_map_dock.h"
-#include "stability_region.h"
+#include "ui/lessons.h"
+#include "ui/main_window.h"
+#include "ui/simulation_controller.h"
+#include "simlab/stability.h"
+#include "ui/stability_map_dock.h"
+#include "simlab/stability_region.h"
 #include "test_support.h"
+#include "ui/main_window.h"
+#include "ui/simulation_controller.h"
+#include "ui/stability_map_dock.h"
 
 using namespace elui;
 using simcore::ParameterSet;
@@ -50,7 +53,7 @@ private slots:
         // The fixed spring: one free coordinate, the pair lambda = -c/2 ± i sqrt(w^2 - c^2/4).
         QCOMPARE(dock.pointCount(), 2);
         QVERIFY(dock.boundaryPointCount() > 200);
-        const simcore::LinearModes modes = simcore::linearModes(spring(0.001));
+        const simlab::LinearModes modes = simlab::linearModes(spring(0.001));
         for (int i = 0; i < 2; ++i) {
             const Complex z = dock.point(i);
             double nearest = 1e300;
@@ -189,7 +192,7 @@ private slots:
         QVERIFY2(text.startsWith("View 2, rk4 (filled): DT is already outside"), qPrintable(text));
         QVERIFY2(text.contains("View 1, implicit-euler (dashed): No DT limit"), qPrintable(text));
         // rk4's figure is the one verdict's.
-        const double limit = simcore::stabilityVerdict(simcore::stabilityModes(p), "rk4", p.get(simcore::Param::Dt)).limit;
+        const double limit = simlab::stabilityVerdict(simlab::stabilityModes(p), "rk4", p.get(simcore::Param::Dt)).limit;
         QVERIFY(std::abs(dock->marginFactor() * p.get(simcore::Param::Dt) / limit - 1.0) < 1e-9);
         // One view again: no overlay.
         StabilityMapDock alone;

@@ -12,13 +12,13 @@
 #include <QTemporaryDir>
 
 #include "cli_process.h"
-#include "failure_banner.h"
-#include "lessons.h"
-#include "main_window.h"
-#include "simulation_controller.h"
-#include "stability.h"
-#include "stability_map_dock.h"
-#include "stability_region.h"
+#include "ui/failure_banner.h"
+#include "ui/lessons.h"
+#include "ui/main_window.h"
+#include "ui/simulation_controller.h"
+#include "simlab/stability.h"
+#include "ui/stability_map_dock.h"
+#include "simlab/stability_region.h"
 #include "test_support.h"
 
 using namespace elui;
@@ -41,7 +41,7 @@ ParameterSet stiffRing(double dt) {
 }
 
 double verdictLimit(const ParameterSet& p, const std::string& integrator) {
-    return simcore::stabilityVerdict(simcore::stabilityModes(p), integrator, p.get(Param::Dt)).limit;
+    return simlab::stabilityVerdict(simlab::stabilityModes(p), integrator, p.get(Param::Dt)).limit;
 }
 
 // The `predicted` column of `elastic-lab-cli stability` for each integrator (its CSV, full precision).
@@ -79,30 +79,30 @@ private slots:
         QVERIFY(rk4 > 0.005 && rk4 < 0.01);  // DT 0.01 is above it: the pre-run banner must speak
         QVERIFY(euler > 0.0 && euler < 0.8 * rk4);  // each method its own region
         // Arnoldi on this 396-coordinate body: the exact dense spectrum gives the same figure.
-        const simcore::LinearModes exact = simcore::linearModes(p, 100000, 100000);
-        QVERIFY(std::abs(simcore::predictedStableStep("rk4", exact) / rk4 - 1.0) < 1e-6);
+        const simlab::LinearModes exact = simlab::linearModes(p, 100000, 100000);
+        QVERIFY(std::abs(simlab::predictedStableStep("rk4", exact) / rk4 - 1.0) < 1e-6);
         // Pre-run banner (simlab's advice): the figure, printed as every door prints it.
-        const auto advice = simcore::stabilityAdvice(simcore::Simulation(p, "rk4"));
+        const auto advice = simlab::stabilityAdvice(simcore::Simulation(p, "rk4"));
         QVERIFY(advice);
-        QVERIFY2(advice->message.find(simcore::limitText(rk4) + " s") != std::string::npos, advice->message.c_str());
-        QCOMPARE(advice->suggestedDt, simcore::roundDownTwoDigits(0.9 * rk4));
+        QVERIFY2(advice->message.find(simlab::limitText(rk4) + " s") != std::string::npos, advice->message.c_str());
+        QCOMPARE(advice->suggestedDt, simlab::roundDownTwoDigits(0.9 * rk4));
         // Euler at 0.009 is told its own limit, not the rk4-like one.
         const ParameterSet p9 = sphere2(0.009);
-        const auto eulerAdvice = simcore::stabilityAdvice(simcore::Simulation(p9, "euler"));
+        const auto eulerAdvice = simlab::stabilityAdvice(simcore::Simulation(p9, "euler"));
         QVERIFY(eulerAdvice);
-        QVERIFY2(eulerAdvice->message.find(simcore::limitText(euler) + " s") != std::string::npos,
+        QVERIFY2(eulerAdvice->message.find(simlab::limitText(euler) + " s") != std::string::npos,
                  eulerAdvice->message.c_str());
-        QVERIFY(eulerAdvice->message.find(simcore::limitText(rk4)) == std::string::npos);
-        QVERIFY(!simcore::stabilityAdvice(simcore::Simulation(sphere2(0.0085), "rk4")));  // below rk4's limit
+        QVERIFY(eulerAdvice->message.find(simlab::limitText(rk4)) == std::string::npos);
+        QVERIFY(!simlab::stabilityAdvice(simcore::Simulation(sphere2(0.0085), "rk4")));  // below rk4's limit
         // The map's margin.
-        const simcore::LinearModes modes = simcore::stabilityModes(p);
+        const simlab::LinearModes modes = simlab::stabilityModes(p);
         for (const char* name : {"rk4", "euler"}) {
-            const auto margin = simcore::stepMargin(name, modes, simcore::spectrumPoints(modes), 0.01);
+            const auto margin = simlab::stepMargin(name, modes, simlab::spectrumPoints(modes), 0.01);
             QVERIFY(close(margin.factor * 0.01, verdictLimit(p, name)));
         }
         // The failure banner's check (its verdict on the failed step).
         simcore::Simulation sim(p, "rk4");
-        const auto check = simcore::checkFailure(sim.snapshot(), simcore::Failure{"test", 3, 0.03});
+        const auto check = simlab::checkFailure(sim.snapshot(), simcore::Failure{"test", 3, 0.03});
         QCOMPARE(check.verdict.limit, rk4);
         // The CLI, linearised at the rest shape although its trials start perturbed.
         const auto cli = cliPredicted({"--scene", "sphere3d", "--set", "subdivisions=2", "--set", "dt=0.01"},
@@ -116,7 +116,7 @@ private slots:
     void theWindowSaysItOnce() {
         const ParameterSet p = stiffRing(0.01);
         const double rk4 = verdictLimit(p, "rk4");
-        const QString figure = QString::fromStdString(simcore::limitText(rk4));
+        const QString figure = QString::fromStdString(simlab::limitText(rk4));
         MainWindow w(false);
         w.resize(1280, 800);
         w.show();
@@ -161,7 +161,7 @@ private slots:
         w.controller()->run();
         FailureBanner* banner = w.failureBanner();
         QVERIFY(testsupport::waitUntil([&] { return !banner->isHidden() && !banner->checking() && banner->check(); }));
-        const simcore::FailureCheck& check = *banner->check();
+        const simlab::FailureCheck& check = *banner->check();
         QVERIFY(check.checked);
         QVERIFY(check.physical);
         QVERIFY(check.rerunDt <= p.get(Param::Dt) / 4.0);

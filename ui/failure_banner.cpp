@@ -1,11 +1,11 @@
-#include "failure_banner.h"
+#include "ui/failure_banner.h"
 
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "mailbox.h"
+#include "ui/mailbox.h"
 
 namespace elui {
 
@@ -87,7 +87,7 @@ void FailureBanner::startCheck(const simcore::SimulationSnapshot& start, const s
     m_cancel = std::make_shared<std::atomic<bool>>(false);
     const quint64 serial = m_checkSerial;
     m_thread = std::thread([this, start, failure, serial, cancel = m_cancel] {
-        simcore::FailureCheck check = simcore::checkFailure(start, failure, cancel.get());
+        simlab::FailureCheck check = simlab::checkFailure(start, failure, cancel.get());
         if (cancel->load()) return;
         m_fromCheck->post([this, check = std::move(check), serial] {
             if (serial != m_checkSerial) return;
@@ -111,7 +111,7 @@ void FailureBanner::present() {
         body = tr("Checking whether a smaller step survives the same stretch (a re-run at a quarter of DT, in the "
                   "background)…");
     else if (m_check && m_check->checked)
-        body = QString::fromStdString(simcore::failureCheckText(*m_check)).toHtmlEscaped();
+        body = QString::fromStdString(simlab::failureCheckText(*m_check)).toHtmlEscaped();
     else
         body = tr("Try a smaller DT, a more stable integrator (rk4, or implicit-euler), softer springs or less "
                   "pressure, then Reset.");

@@ -10,7 +10,7 @@
 // Numerics or physics: when a lane fails, the banner re-runs the failed stretch (from the
 // lane's recorded state some time before the failure, LaneFrame::stretchStart) at a quarter
 // of the step - no more than 0.9 of the method's verdict limit - on a std::thread
-// (simcore::checkFailure), and says which it was. A failure the smaller step survives was the
+// (simlab::checkFailure), and says which it was. A failure the smaller step survives was the
 // step's: the banner offers the step that ran through and implicit Euler. One it does not
 // survive is the body's own: "the body itself collapses — no step size will save it", with
 // the body's remedies in words and Reset alone (no DT button). Until the check ends it says
@@ -24,8 +24,8 @@
 
 #include <QFrame>
 
-#include "frame.h"
-#include "stability.h"
+#include "ui/frame.h"
+#include "simlab/stability.h"
 
 class QLabel;
 class QPushButton;
@@ -47,7 +47,7 @@ public:
     QString text() const;                 // the banner's text (rich text), empty when hidden
     bool checking() const { return m_checking; }
     // The check's outcome for the failure shown (none while checking or without a stretch).
-    const std::optional<simcore::FailureCheck>& check() const { return m_check; }
+    const std::optional<simlab::FailureCheck>& check() const { return m_check; }
     QPushButton* smallerDtButton() const { return m_smaller; }
     QPushButton* implicitButton() const { return m_implicit; }
     QPushButton* resetButton() const { return m_reset; }
@@ -74,7 +74,7 @@ private:
     simcore::Failure m_failure;
     QString m_integrator;
     double m_dt = 0.0;
-    std::optional<simcore::FailureCheck> m_check;
+    std::optional<simlab::FailureCheck> m_check;
     bool m_checking = false;
     std::thread m_thread;
     std::shared_ptr<std::atomic<bool>> m_cancel;

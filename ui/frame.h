@@ -20,11 +20,11 @@
 #include <QString>
 #include <QVector3D>
 
-#include "body.h"
-#include "forces.h"
-#include "params.h"
-#include "scenefile.h"
-#include "simulation.h"
+#include "simcore/body.h"
+#include "simcore/forces.h"
+#include "simcore/params.h"
+#include "simcore/simulation.h"
+#include "simlab/scenefile.h"
 
 namespace elui {
 
@@ -39,7 +39,7 @@ struct SceneData {
     // What the table's values mean for this body: per-particle and per-spring values at its
     // resolution under its scaling (simcore::bodyValuesText).
     QString bodyValues;
-    // The pre-run check of lane 0's explicit method at the current DT (simcore::stabilityAdvice):
+    // The pre-run check of lane 0's explicit method at the current DT (simlab::stabilityAdvice):
     // the warning and a step predicted stable; empty / 0 when DT is fine.
     QString stabilityWarning;
     double suggestedDt = 0.0;             // [s]
@@ -59,7 +59,7 @@ struct LaneFrame {
     std::optional<simcore::Failure> failure;
     // A failed lane: its recorded state some time before the failure (the latest checkpoint at
     // least kFailureStretch before it, or the run's first), for the failure banner's check
-    // (simcore::checkFailure re-runs the stretch from it at a smaller step). None otherwise.
+    // (simlab::checkFailure re-runs the stretch from it at a smaller step). None otherwise.
     std::shared_ptr<const simcore::SimulationSnapshot> stretchStart;
     simcore::PointerSpring pointer;
     double divergence = 0.0;              // RMS distance to the reference lane's particles [m]
@@ -122,7 +122,7 @@ struct FrameBatch {
 
 // A scene file captured on the worker thread between two steps (SimulationController::captureScene).
 struct SceneCapture {
-    std::string text;                     // simcore::sceneFileText of lane 0, with its exact state
+    std::string text;                     // simlab::sceneFileText of lane 0, with its exact state
     simcore::ParameterSet parameters;     // what the text holds
     QString integrator;                   // lane 0's
     int lanes = 0;                        // views running (side by side: > 1; only lane 0 is in text)
@@ -132,5 +132,5 @@ struct SceneCapture {
 }  // namespace elui
 
 Q_DECLARE_METATYPE(elui::FramePtr)
-Q_DECLARE_METATYPE(simcore::SceneFile)
+Q_DECLARE_METATYPE(simlab::SceneFile)
 Q_DECLARE_METATYPE(simcore::ParameterSet)

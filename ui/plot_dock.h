@@ -19,8 +19,8 @@
 #include <QDockWidget>
 #include <QHash>
 
-#include "frame.h"
-#include "plot_series.h"
+#include "ui/frame.h"
+#include "ui/plot_series.h"
 
 class QCustomPlot;
 class QCPGraph;

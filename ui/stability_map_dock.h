@@ -16,10 +16,10 @@
 // one DT: the same points hλ): the view with the smallest margin - the one that turns red
 // first - is the primary one (its region filled, its limiting mode ringed, "Try it" measures
 // it); each other view's edge is drawn dashed in its own colour, and the words give every
-// view's margin, one line each. The linearisation (simcore::linearModes: up to ~1 s for a large
+// view's margin, one line each. The linearisation (simlab::stabilityModes: up to ~1 s for a large
 // body) and the margin run on a worker std::thread, one job at a time; a change during a job
 // queues one more (the newest wins). A DT change alone reuses the modes. "Try it" runs the
-// stability scan's bisection (simcore::scanIntegrator) for the current integrator on another
+// stability scan's bisection (simlab::scanIntegrator) for the current integrator on another
 // std::thread, with Cancel. Results come back through a Mailbox (mailbox.h: no Qt hand-over
 // across threads, so ThreadSanitizer sees it).
 
@@ -32,9 +32,9 @@
 
 #include <QDockWidget>
 
-#include "params.h"
-#include "stability.h"
-#include "stability_region.h"
+#include "simcore/params.h"
+#include "simlab/stability.h"
+#include "simlab/stability_region.h"
 
 class QCustomPlot;
 class QCPColorMap;
@@ -90,21 +90,21 @@ private:
     struct Job {
         simcore::ParameterSet params;
         std::vector<std::string> integrators;               // every view's
-        std::shared_ptr<const simcore::LinearModes> modes;  // reused when only DT changed
+        std::shared_ptr<const simlab::LinearModes> modes;  // reused when only DT changed
     };
     // One view's margin and edge.
     struct View {
         std::string integrator;
-        simcore::StepMargin margin;
+        simlab::StepMargin margin;
         std::vector<std::vector<std::complex<double>>> boundary;
     };
     struct Result {
         simcore::ParameterSet params;
         std::vector<std::string> integrators;  // as asked
         std::string integrator;                // the primary view's
-        std::shared_ptr<const simcore::LinearModes> modes;
-        simcore::SpectrumPoints points;
-        simcore::StepMargin margin;
+        std::shared_ptr<const simlab::LinearModes> modes;
+        simlab::SpectrumPoints points;
+        simlab::StepMargin margin;
         std::vector<std::vector<std::complex<double>>> boundary;
         std::vector<View> views;               // every view, in order
     };
@@ -136,9 +136,9 @@ private:
     simcore::ParameterSet m_shownParams;
     std::string m_shownIntegrator;
     double m_shownDt = 0.0;
-    std::shared_ptr<const simcore::LinearModes> m_modes;
-    simcore::SpectrumPoints m_spectrum;
-    simcore::StepMargin m_margin;
+    std::shared_ptr<const simlab::LinearModes> m_modes;
+    simlab::SpectrumPoints m_spectrum;
+    simlab::StepMargin m_margin;
     std::vector<std::vector<std::complex<double>>> m_curves;
     quint64 m_resultSerial = 0;
 
@@ -154,7 +154,7 @@ private:
     bool m_scanRunning = false;
     simcore::ParameterSet m_scanParams;
     std::string m_scanIntegrator;
-    std::optional<simcore::StabilityRow> m_scanRow;
+    std::optional<simlab::StabilityRow> m_scanRow;
     std::optional<std::complex<double>> m_measuredMark;
     QString m_measuredText;
 };
