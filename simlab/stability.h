@@ -86,7 +86,7 @@ LinearModes linearModes(const simcore::ParameterSet& params, int exactEigenLimit
 // the Jacobian products (linearModes's iterative path) - never the modal approximation,
 // which misses the fastest pure decay of non-proportional damping.
 inline constexpr int kVerdictExactLimit = 150;
-LinearModes stabilityModes(const ParameterSet& params);
+LinearModes stabilityModes(const simcore::ParameterSet& params);
 
 // The spectrum the prediction uses: the exact eigenvalues, or else Arnoldi's Ritz values
 // (empty for a LinearModes built by hand from modes alone).
