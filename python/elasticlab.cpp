@@ -638,15 +638,14 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
     spec.hMax = checkedNumber(hmax, "hmax", spec.hMin, 1.0, false, false, "s");
     auto csv = openOutput(csvPath);
 
-    // Linearised at the perturbed start the measured runs begin from (as the CLI's stability).
-    simcore::ParameterSet linearised = spec.params;
-    if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
+    // The one verdict's linearisation (simlab::stabilityModes: the rest shape, as the CLI's
+    // stability and the GUI's banners and map); the trials start perturbed.
     struct Outcome {
         simlab::LinearModes modes;
         std::vector<simlab::StabilityRow> rows;
     };
     const Outcome out = cancellable([&](const std::atomic<bool>* cancel) {
-        Outcome o{simlab::linearModes(linearised), {}};
+        Outcome o{simlab::stabilityModes(spec.params), {}};
         if (!*cancel) o.rows = simlab::runStability(spec, o.modes, {}, cancel);
         return o;
     });

@@ -359,19 +359,11 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
             margin.hasLimiting = true;
         }
     }
-    // The factor: for R methods the smallest exit over the plotted points (the same rays as
-    // predictedStableStep on the exact or modal spectrum; on the Ritz values for large
-    // bodies). Euler's and Heun's regions touch the imaginary axis only at 0: an undamped
-    // mode grows for every h (too slowly near 0 to see in double precision, hence explicit).
-    // Oscillator methods: the stability scan's prediction (exact step matrix for small bodies).
-    if (regionKind(integrator) == RegionKind::StabilityFunction) {
-        margin.factor = smallest;
-        if (integrator == "euler" || integrator == "midpoint")
-            for (const Complex& l : points.lambda)
-                if (std::abs(l.real()) <= 1e-9 * scale && std::abs(l.imag()) > 1e-6 * scale) margin.factor = 0.0;
-    } else {
-        margin.factor = predictedStableStep(integrator, modes, std::max(10.0, 1e4 * h)) / h;
-    }
+    // The factor: the one verdict (stabilityVerdict: predictedStableStep on the exact or
+    // Arnoldi spectrum, the exact step matrix for small bodies' partitioned methods), so the
+    // map says what the banners and `stability` say; the rays above only name the point
+    // that leaves first.
+    margin.factor = stabilityVerdict(modes, integrator, h).limit / h;
     const double limit = margin.factor * h;
     const bool isFastest = margin.hasLimiting && std::abs(std::abs(margin.limiting) - fastest) <= 1e-9 * fastest;
     char mode[160] = "";

@@ -36,6 +36,9 @@ using simcore::SceneKind;
 Q_DECLARE_METATYPE(simcore::SceneKind)
 
 namespace {
+// Lets queued deliveries (frames, rows, replots) run.
+void settleEvents() { QCoreApplication::processEvents(); }
+
 std::vector<simcore::Diagnostics> runRows(const simcore::ParameterSet& params, int steps, const char* integrator = "rk4") {
     simcore::Simulation sim(params, integrator);
     std::vector<simcore::Diagnostics> rows{sim.diagnostics()};
@@ -625,6 +628,114 @@ private slots:
         bars.showFrame(frameOf(params, {lanes[2]}));
         QCOMPARE(bars.laneCount(), 1);
         QCOMPARE(bars.value(drift), fieldOf("drift", lanes[2].second));
+    }
+
+    // Side by side every plot shows every view (issue 25): euler blows up at t = 0.98 s at DT
+    // 0.01 and stops alone, its curves end with a cross, midpoint and rk4 run on to 2 s; the
+    // axes are not swamped by euler's blow-up; the drift plot, the Run dock and the stability
+    // map show each view.
+    void sideBySideComparesEveryView() {
+        MainWindow w(false);
+        w.resize(1280, 800);
+        w.show();
+        w.openDock("stability-map");
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set(simcore::Param::Dt, 0.01);
+        w.startScene(p, {"euler", "midpoint", "rk4"});
+        SimulationController* c = w.controller();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest() && c->latest()->lanes.size() == 3; }));
+        c->setSpeed(Speed::AsFastAsPossible);
+        c->runUntil(2.0);
+        QVERIFY(testsupport::waitUntil([&] {
+            const FramePtr& f = c->latest();
+            return f && !f->running && f->lanes[2].diagnostics.time >= 2.0 - 1e-9 && f->lanes[0].failure;
+        }));
+        settleEvents();
+        PlotDock* plots = w.plotDock();
+        plots->replotNow();  // the marks and the axes (else on the replot timer)
+        QCOMPARE(plots->viewCount(), 3);
+        const double failedAt = c->latest()->lanes[0].failure->time;
+        QVERIFY(failedAt > 0.5 && failedAt < 1.5);
+        const std::vector<PlotSpec> specs = plotSpecs(SceneKind::Ring2d);
+        for (const QString& id : plots->plotIds())
+            for (int s = 0; s < plots->seriesNames(id).size(); ++s) {
+                // The energy plot compares the total only.
+                if (id == "energy" && plots->seriesNames(id)[s] != "total") {
+                    QCOMPARE(plots->viewPointCount(id, 1, s), -1);
+                    continue;
+                }
+                QVERIFY(plots->viewLastTime(id, 0, s) <= failedAt + 1e-9);  // euler stopped
+                const SeriesSpec& spec = specs[std::size_t(plots->plotIds().indexOf(id))].series[std::size_t(s)];
+                for (int v = 1; v < 3; ++v) {
+                    QVERIFY2(plots->viewLastTime(id, v, s) >= 2.0 - 1e-6, qPrintable(id));  // the others ran on
+                    // Each view's own values.
+                    QCOMPARE(plots->viewLastValue(id, v, s), spec.value(c->viewHistory()[std::size_t(v - 1)].back()));
+                }
+            }
+        // The values are each view's own: the last total energy of view 3 is rk4's.
+        const int total = int(plots->seriesNames("energy").indexOf("total"));
+        QCOMPARE(plots->viewLastValue("energy", 2, total), c->viewHistory()[1].back().total());
+        QCOMPARE(c->viewHistory()[1].back().time, c->latest()->lanes[2].diagnostics.time);
+        // Every view in the legend, the failed one with its cross and time.
+        const QStringList legend = plots->legendNames("volume");
+        QVERIFY2(legend.contains(QStringLiteral("1 euler ✕ %1 s").arg(failedAt, 0, 'f', 2)), qPrintable(legend.join("|")));
+        QVERIFY(legend.contains("2 midpoint") && legend.contains("3 rk4"));
+        // Euler's curves end with a cross: one per curve of the view.
+        QCOMPARE(plots->failureMarkCount("volume"), plots->seriesNames("volume").size());
+        QCOMPARE(plots->failureMarkCount("drift"), 1);
+        // Robust autoscale: euler's blow-up (its energy far beyond the others') does not set the axis.
+        double eulerPeak = 0.0, othersPeak = 0.0;
+        for (const auto& d : c->history()) eulerPeak = std::max(eulerPeak, std::abs(d.total()));
+        for (const auto& rows : c->viewHistory())
+            for (const auto& d : rows) othersPeak = std::max(othersPeak, std::abs(d.total()));
+        QVERIFY(eulerPeak > 100.0 * othersPeak);
+        const int energy = int(plots->plotIds().indexOf("energy"));
+        const QCPRange y = plots->plots()[std::size_t(energy)]->yAxis->range();
+        QVERIFY2(std::max(std::abs(y.lower), std::abs(y.upper)) < 3.0 * othersPeak, qPrintable(QString::number(y.upper)));
+        // The drift plot: log axis, every view, the same drift as the rows.
+        QVERIFY(plots->driftPlot()->isVisibleTo(plots));
+        QCOMPARE(plots->driftPlot()->yAxis->scaleType(), QCPAxis::stLogarithmic);
+        QCOMPARE(plots->lastDrift(2), std::abs(c->viewHistory()[1].back().energyDrift()));
+        QVERIFY(plots->driftPointCount(0) > 10 && plots->driftPointCount(1) > 10);
+        // The Run dock: each view's time (euler's failure), drift, and the distance between views.
+        const QString readout = w.runDock()->readout()->text();
+        QVERIFY2(readout.contains(QStringLiteral("✕ %1 s").arg(failedAt, 0, 'f', 3)), qPrintable(readout));
+        for (int v = 1; v < 3; ++v)
+            QVERIFY2(readout.contains(QStringLiteral("%1 J").arg(c->latest()->lanes[std::size_t(v)].diagnostics.energyDrift(), 0, 'g', 3)),
+                     qPrintable(readout));
+        QVERIFY2(readout.contains("distance to view 2"), qPrintable(readout));  // euler failed: midpoint is the reference
+        QVERIFY(readout.contains(QStringLiteral("%1 m").arg(c->latest()->lanes[2].divergence, 0, 'e', 2)));
+        // Back to one view: the comparison goes.
+        w.startScene(p, {"rk4"});
+        QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.size() == 1 && plots->viewCount() == 1; }));
+        QVERIFY(!plots->driftPlot()->isVisibleTo(plots));
+        QCOMPARE(plots->viewPointCount("volume", 1, 0), -1);
+    }
+
+    // The energy-drift lesson's answers can be read in the Run dock: each view's drift at t = 3 s.
+    void energyDriftLessonReadsEachView() {
+        MainWindow w(false);
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set(simcore::Param::Dt, 0.003);
+        w.startScene(p, {"euler", "midpoint", "rk4"});
+        SimulationController* c = w.controller();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest() && c->latest()->lanes.size() == 3; }));
+        c->setSpeed(Speed::AsFastAsPossible);
+        c->runUntil(3.0);
+        QVERIFY(testsupport::waitUntil([&] {
+            const FramePtr& f = c->latest();
+            return f && !f->running && f->lanes[0].diagnostics.time >= 3.0 - 1e-9;
+        }));
+        settleEvents();
+        const QString readout = w.runDock()->readout()->text();
+        // The lesson's measured answers (test_lessons measures them with the CLI): midpoint
+        // 0.225 J, rk4 0.060 J; here each view's own number, printed to three digits.
+        const double midpoint = c->latest()->lanes[1].diagnostics.energyDrift();
+        const double rk4 = c->latest()->lanes[2].diagnostics.energyDrift();
+        QVERIFY(std::abs(midpoint - 0.225) < 0.01 && std::abs(rk4 - 0.060) < 0.005);
+        QVERIFY2(readout.contains(QStringLiteral("%1 J").arg(midpoint, 0, 'g', 3)), qPrintable(readout));
+        QVERIFY2(readout.contains(QStringLiteral("%1 J").arg(rk4, 0, 'g', 3)), qPrintable(readout));
+        QCOMPARE(w.plotDock()->lastDrift(1), std::abs(c->viewHistory()[0].back().energyDrift()));
     }
 
     void numbersAndTicksStayReadable_data() {

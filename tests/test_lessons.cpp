@@ -76,9 +76,8 @@ simlab::StabilityRow scan(const ParameterSet& p, const std::string& integrator) 
     simlab::StabilitySpec spec;
     spec.params = p;
     spec.integrators = {integrator};
-    ParameterSet linearised = p;
-    if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
-    return simlab::scanIntegrator(spec, integrator, simlab::linearModes(linearised));
+    // The one verdict's linearisation, as the CLI's (the trials start perturbed).
+    return simlab::scanIntegrator(spec, integrator, simlab::stabilityModes(p));
 }
 
 // Mean height of the outer layer's particles minus that of the inner layer's [m].

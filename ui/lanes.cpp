@@ -139,14 +139,11 @@ void Lanes::applyKick() {
     }
 }
 
-void Lanes::updateDtLimit() {
-    const double rate = m_lanes.front()->estimatedFastestRate();
-    m_dtLimit = rate > 0.0 ? simcore::kExplicitStabilityLimit / rate : 0.0;
-}
-
 std::vector<LaneFrame> Lanes::laneFrames(bool forces, int selected) const {
     std::vector<LaneFrame> frames;
-    const auto x0 = m_lanes.front()->positions();
+    std::size_t reference = 0;
+    while (reference + 1 < m_lanes.size() && m_lanes[reference]->failed()) ++reference;
+    const auto x0 = m_lanes[reference]->positions();
     for (const auto& sim : m_lanes) {
         LaneFrame lane;
         lane.integrator = integratorName(*sim);
@@ -165,6 +162,7 @@ std::vector<LaneFrame> Lanes::laneFrames(bool forces, int selected) const {
         // Nine uncounted force evaluations (ForceModel::breakdown), only while one is selected.
         if (selected >= 0 && selected < sim->particleCount()) lane.breakdown = sim->forceBreakdown(selected);
         lane.divergence = std::sqrt((x - x0).colwise().squaredNorm().mean());
+        lane.divergenceReference = int(reference);
         frames.push_back(std::move(lane));
     }
     return frames;

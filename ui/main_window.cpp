@@ -25,6 +25,7 @@
 #include "ui/compare_dialog.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/export.h"
+#include "ui/failure_banner.h"
 #include "ui/help_dialog.h"
 #include "ui/lessons.h"
 #include "ui/lessons_dialog.h"
@@ -246,41 +247,34 @@ void MainWindow::createCentral() {
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
 
-    m_banner = new QFrame(central);
-    m_banner->setObjectName(QStringLiteral("failureBanner"));
-    m_banner->setStyleSheet(QStringLiteral("#failureBanner { background: #fbe3e1; border-bottom: 2px solid #c0392b; }"));
-    auto* bannerLayout = new QHBoxLayout(m_banner);
-    m_bannerText = new QLabel(m_banner);
-    m_bannerText->setWordWrap(true);
-    m_bannerText->setTextFormat(Qt::RichText);
-    bannerLayout->addWidget(m_bannerText, 1);
-    auto* smaller = new QPushButton(tr("Halve DT and reset"), m_banner);
-    connect(smaller, &QPushButton::clicked, this, [this] {
-        m_controller->setParameter(simcore::Param::Dt, m_controller->parameters().get(simcore::Param::Dt) * 0.5);
+    m_banner = new FailureBanner(central);
+    connect(m_banner, &FailureBanner::setDtAndReset, this, [this](double dt) {
+        m_controller->setParameter(simcore::Param::Dt, dt);
         m_controller->reset();
     });
-    auto* implicit = new QPushButton(tr("Use implicit-euler and reset"), m_banner);
-    connect(implicit, &QPushButton::clicked, this, [this] {
+    connect(m_banner, &FailureBanner::useImplicitAndReset, this, [this] {
         m_controller->setIntegrator(QStringLiteral("implicit-euler"));
         m_controller->reset();
     });
-    auto* reset = new QPushButton(tr("Reset"), m_banner);
-    connect(reset, &QPushButton::clicked, this, [this] { m_controller->reset(); });
-    bannerLayout->addWidget(smaller);
-    bannerLayout->addWidget(implicit);
-    bannerLayout->addWidget(reset);
-    m_banner->hide();
+    connect(m_banner, &FailureBanner::resetRequested, this, [this] { m_controller->reset(); });
     layout->addWidget(m_banner);
 
     m_stabilityBanner = new QFrame(central);
     m_stabilityBanner->setObjectName(QStringLiteral("stabilityBanner"));
     m_stabilityBanner->setStyleSheet(
         QStringLiteral("#stabilityBanner { background: #fdf0d5; border-bottom: 2px solid #d68910; }"));
-    auto* stabilityLayout = new QHBoxLayout(m_stabilityBanner);
+    // The text in lines across the view, the buttons in a row under it (FailureBanner's layout).
+    auto* stabilityColumn = new QVBoxLayout(m_stabilityBanner);
+    stabilityColumn->setContentsMargins(10, 6, 10, 6);
+    stabilityColumn->setSpacing(4);
     m_stabilityText = new QLabel(m_stabilityBanner);
     m_stabilityText->setWordWrap(true);
     m_stabilityText->setTextFormat(Qt::RichText);
-    stabilityLayout->addWidget(m_stabilityText, 1);
+    m_stabilityText->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Minimum);
+    stabilityColumn->addWidget(m_stabilityText);
+    auto* stabilityLayout = new QHBoxLayout;
+    stabilityLayout->addStretch(1);
+    stabilityColumn->addLayout(stabilityLayout);
     m_useSuggestedDt = new QPushButton(m_stabilityBanner);
     m_useSuggestedDt->setObjectName(QStringLiteral("useSuggestedDt"));
     connect(m_useSuggestedDt, &QPushButton::clicked, this, [this] {
@@ -474,6 +468,9 @@ void MainWindow::connectController() {
         m_plotDock->appendRows(m_controller->history(), first, count);
         m_pvDock->appendRows(m_controller->history(), first, count);
     });
+    connect(c, &SimulationController::viewRowsAppended, this, [this](int view, int first, int count) {
+        m_plotDock->appendViewRows(view, m_controller->viewHistory()[std::size_t(view - 1)], first, count);
+    });
     connect(c, &SimulationController::parameterRejected, this,
             [this](const QString&, const QString& message) { status(message); });
     connect(c, &SimulationController::sceneRejected, this, [this](const QString& message) {
@@ -662,8 +659,11 @@ void MainWindow::onFrame(const FramePtr& frame) {
     }
     m_runDock->showFrame(frame);
     m_plotDock->setLive(frame->running);
+    m_plotDock->setViews(*frame);
     m_energyBarsDock->showFrame(*frame);
-    m_stabilityMapDock->setState(frame->parameters, frame->lanes.front().integrator);
+    QStringList integrators;
+    for (const LaneFrame& lane : frame->lanes) integrators << lane.integrator;
+    m_stabilityMapDock->setState(frame->parameters, integrators);
     if (!m_paramsShown || !(m_shownParams == frame->parameters)) {
         m_shownParams = frame->parameters;
         m_paramsShown = true;
@@ -673,37 +673,10 @@ void MainWindow::onFrame(const FramePtr& frame) {
     }
     updateTitle(*frame);
     m_runPause->setText(frame->running ? tr("&Pause") : tr("&Run"));
-    showFailure(frame);
+    m_banner->showFrame(*frame);
 }
 
-void MainWindow::showFailure(const FramePtr& frame) {
-    const LaneFrame& lane = frame->lanes.front();
-    const bool failed = frame->lanes.size() == 1 && lane.failure.has_value();
-    if (failed == m_failureShown) return;
-    m_failureShown = failed;
-    if (!failed) {
-        m_banner->hide();
-        return;
-    }
-    const simcore::Failure& f = *lane.failure;
-    const double dt = frame->parameters.get(simcore::Param::Dt);
-    QString advice;
-    if (frame->explicitDtLimit > 0 && dt > 0.5 * frame->explicitDtLimit)
-        advice = tr("DT = %1 s is too large for this body with %2: explicit integrators need roughly DT below "
-                    "%3 s here. Try a smaller DT, or implicit-euler (stable at any DT).")
-                     .arg(dt).arg(lane.integrator).arg(frame->explicitDtLimit, 0, 'g', 2);
-    else
-        advice = tr("Try a smaller DT, a more stable integrator (rk4, or implicit-euler), softer springs or "
-                    "less pressure, then Reset.");
-    m_bannerText->setText(tr("<b>The simulation blew up</b> at t = %1 s (step %2): %3.<br>"
-                             "The run is paused and shows the last good state. %4")
-                              .arg(f.time, 0, 'f', 3)
-                              .arg(f.step)
-                              .arg(QString::fromStdString(f.reason).toHtmlEscaped(), advice.toHtmlEscaped()));
-    m_banner->show();
-}
-
-QString MainWindow::failureText() const { return m_banner->isVisible() ? m_bannerText->text() : QString(); }
+QString MainWindow::failureText() const { return m_banner->text(); }
 
 QString MainWindow::stabilityText() const {
     return m_stabilityBanner->isHidden() ? QString() : m_stabilityText->text();
@@ -985,6 +958,10 @@ void MainWindow::createTimeline() {
     });
     connect(c, &SimulationController::historyBranched, this, [this] {
         m_plotDock->setHistory(m_controller->history());
+        for (std::size_t v = 0; v < m_controller->viewHistory().size(); ++v) {
+            const auto& rows = m_controller->viewHistory()[v];
+            m_plotDock->appendViewRows(int(v + 1), rows, 0, int(rows.size()));
+        }
         m_pvDock->clear();
         m_pvDock->appendRows(m_controller->history(), 0, int(m_controller->history().size()));
     });

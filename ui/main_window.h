@@ -32,6 +32,7 @@ class PlotDock;
 class EnergyBarsDock;
 class PvDock;
 class StabilityMapDock;
+class FailureBanner;
 class TimelineDock;
 struct Preset;
 struct Lesson;
@@ -64,6 +65,7 @@ public:
     const ViewOptions& viewOptions() const { return m_options; }
     void setViewOptions(const ViewOptions& options);
     QString failureText() const;
+    FailureBanner* failureBanner() const { return m_banner; }
     // The pre-run stability warning after a rebuild (empty when none is shown), and its
     // one-click remedy: the button that sets the suggested DT.
     QString stabilityText() const;
@@ -129,7 +131,6 @@ private:
     void onFrame(const FramePtr& frame);
     void rebuildViewports(int count);
     void rebuildFromSceneDock(const simcore::ParameterSet& shape);
-    void showFailure(const FramePtr& frame);
     void status(const QString& text);
     // A warning in a window-modal message box that does not block (the run goes on), and in
     // the status bar.
@@ -144,8 +145,7 @@ private:
     ViewOptions m_options;
 
     // Central area: failure banner above a row of one to three viewports.
-    QFrame* m_banner = nullptr;
-    QLabel* m_bannerText = nullptr;
+    FailureBanner* m_banner = nullptr;
     // Stability banner: a rebuild made DT unstable for the chosen explicit method.
     QFrame* m_stabilityBanner = nullptr;
     QLabel* m_stabilityText = nullptr;
@@ -167,7 +167,6 @@ private:
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;
-    bool m_failureShown = false;
 
     // Scene file: the path, and the parameters and integrator it holds (what "modified" is
     // measured against). An open waits in m_pending until its scene runs.

@@ -1,6 +1,7 @@
 #include "ui/run_dock.h"
 
 #include <cmath>
+#include <functional>
 #include <map>
 
 #include <QElapsedTimer>
@@ -166,6 +167,36 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     connect(m_doubling, &QCheckBox::toggled, this, &RunDock::stepDoublingToggled);
 }
 
+QString RunDock::viewTable(const Frame& frame) {
+    // Side by side: each view's own numbers, one column per view (the table above is view 1's).
+    const auto& lanes = frame.lanes;
+    auto cells = [&](const QString& name, const std::function<QString(const LaneFrame&, std::size_t)>& value) {
+        QString tr_ = QStringLiteral("<tr><td>%1&nbsp;</td>").arg(name);
+        for (std::size_t v = 0; v < lanes.size(); ++v)
+            tr_ += QStringLiteral("<td align=right>&nbsp;%1</td>").arg(value(lanes[v], v));
+        return tr_ + QStringLiteral("</tr>");
+    };
+    QString html = QStringLiteral("<p style='margin-top:6px'><b>%1</b></p><table cellspacing=0>").arg(tr("Each view"));
+    html += cells(tr("view"), [](const LaneFrame& l, std::size_t v) {
+        return QStringLiteral("<b>%1 %2</b>").arg(v + 1).arg(l.integrator.toHtmlEscaped());
+    });
+    html += cells(tr("time"), [](const LaneFrame& l, std::size_t) {
+        return l.failure ? QStringLiteral("<span style='color:#c0392b'>✕ %1 s</span>").arg(l.failure->time, 0, 'f', 3)
+                         : QStringLiteral("%1 s").arg(l.diagnostics.time, 0, 'f', 3);
+    });
+    html += cells(tr("steps"), [](const LaneFrame& l, std::size_t) { return QString::number(l.diagnostics.step); });
+    html += cells(tr("energy drift"), [](const LaneFrame& l, std::size_t) {
+        return QStringLiteral("%1 J").arg(l.diagnostics.energyDrift(), 0, 'g', 3);
+    });
+    const int reference = lanes.size() > 1 ? lanes[1].divergenceReference : 0;
+    html += cells(tr("distance to view %1").arg(reference + 1), [&](const LaneFrame& l, std::size_t v) {
+        if (int(v) == reference) return QStringLiteral("—");
+        if (l.failure) return tr("failed");
+        return QStringLiteral("%1 m").arg(l.divergence, 0, 'e', 2);
+    });
+    return html + QStringLiteral("</table>");
+}
+
 void RunDock::showFrame(const FramePtr& frame) {
     if (!frame || frame->lanes.empty()) return;
     m_updating = true;
@@ -231,11 +262,8 @@ void RunDock::showFrame(const FramePtr& frame) {
                     QStringLiteral("%1 / %2").arg(c.errorTestFailures).arg(c.convergenceFailures));
         html += row(tr("order, re-initialisations"), QStringLiteral("%1, %2").arg(c.order).arg(c.reinitialisations));
     }
-    for (std::size_t i = 1; i < frame->lanes.size(); ++i)
-        html += row(tr("%1 vs %2").arg(frame->lanes[i].integrator, lane.integrator),
-                    frame->lanes[i].failure ? tr("blew up")
-                                            : QStringLiteral("%1 m").arg(frame->lanes[i].divergence, 0, 'e', 2));
     html += QStringLiteral("</table>");
+    if (!single) html += viewTable(*frame);
     if (frame->fallingBehind)
         html += tr("<p style='color:#b35900'>Cannot keep up with real time: showing as fast as it runs.</p>");
     if (m_readout->text() != html) m_readout->setText(html);

@@ -27,6 +27,11 @@ public:
 public slots:
     void showFrame(const elui::FramePtr& frame);
 
+public:
+    // Side by side: every view's time (✕ and when, for a failed one), steps, energy drift and
+    // distance to the reference view (view 1, or the first live one once view 1 failed).
+    static QString viewTable(const Frame& frame);
+
 signals:
     void integratorChosen(const QString& name);
     void dtEdited(double dt);

@@ -131,6 +131,9 @@ private:
     void afterRebuild();
     void recordRow();                     // lane 0's row, unless re-simulating
     void publish(bool force);             // a frame, if one is due (always when forced)
+    // A failed lane's state some time before its failure (Frame's LaneFrame::stretchStart).
+    static constexpr double kFailureStretch = 0.2;  // [s]
+    std::shared_ptr<const simcore::SimulationSnapshot> stretchStart(std::size_t lane, const simcore::Failure& failure);
 
     // Time travel. What was done between two steps, replayed when a moment is re-simulated.
     struct Input {
@@ -171,6 +174,8 @@ private:
     bool m_bandsWanted = false;
     int m_selected = -1;                  // the particle whose force breakdown frames carry
     bool m_failureReported = false;
+    // Per lane: the stretch start given for its failure, and that failure's step.
+    std::vector<std::pair<std::shared_ptr<const simcore::SimulationSnapshot>, long>> m_stretchStarts;
 
     simcore::TimelineRecorder m_recorder;
     std::vector<Input> m_inputs;          // by moment, in the order they were done

@@ -736,7 +736,7 @@ void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));
     m_rows.clear();
     if (cancel->load()) return;
-    m_modes = simlab::linearModes(m_params);
+    m_modes = simlab::stabilityModes(m_params);
     m_rows = simlab::runStability(
         m_spec, m_modes,
         [this](const simlab::StabilityProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },

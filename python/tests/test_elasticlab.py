@@ -456,3 +456,20 @@ def test_refinement_measures_second_order_in_space(tmp_path):
     assert "<svg" in (tmp_path / "ref.svg").read_text()
     with pytest.raises(ValueError):
         el.refinement("ring2d", levels=[12], duration=0.2)  # one level is not a study
+
+
+def test_stability_prediction_is_the_clis(tmp_path):
+    # One verdict (issue 25): Python's predicted step is the CLI's, on a body above the exact
+    # limit (the level-2 sphere: Arnoldi), linearised at the rest shape by both.
+    out = el.stability("sphere3d", integrators=["rk4", "euler"], duration=0.02, hmin=0.001, subdivisions=2, dt=0.01)
+    python = {r["integrator"]: r["dt_predicted"] for r in out["rows"]}
+    target = tmp_path / "cli.csv"
+    subprocess.run([os.environ["ELASTIC_LAB_CLI"], "stability", "--scene", "sphere3d", "--set", "subdivisions=2",
+                    "--set", "dt=0.01", "--integrators", "rk4,euler", "--duration", "0.02", "--hmin", "0.001",
+                    "--quiet", "--csv", str(target)], check=True, capture_output=True)
+    with open(target) as f:
+        cli = {row["integrator"]: float(row["dt_predicted"]) for row in csv.DictReader(f)}
+    assert python.keys() == cli.keys()
+    for name, predicted in cli.items():
+        assert python[name] == pytest.approx(predicted, rel=1e-12)
+    assert 0.005 < python["rk4"] < 0.01 and python["euler"] < 0.8 * python["rk4"]
