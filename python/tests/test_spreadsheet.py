@@ -117,7 +117,7 @@ def test_python_writes_the_cli_files(tmp_path):
     cli_csv, py_csv, py_xlsx = tmp_path / "cli.csv", tmp_path / "py.csv", tmp_path / "py.xlsx"
     cli(*RUN, "--csv", str(cli_csv), "--csv-dialect", "excel-semicolon")
     sim = el.Simulation("ring2d")
-    table = sim.run(0.05, every=3, csv=str(py_csv), xlsx=str(py_xlsx), csv_dialect="excel-semicolon")
+    table = sim.run(0.05, every_steps=3, csv=str(py_csv), xlsx=str(py_xlsx), csv_dialect="excel-semicolon")
     assert py_csv.read_bytes() == cli_csv.read_bytes()
     assert table.shape[0] == len(cli_csv.read_bytes().splitlines()) - 1
     plain = tmp_path / "cli-plain.csv"
