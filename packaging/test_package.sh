@@ -43,6 +43,7 @@ done
 
 [ -n "$(field Homepage)" ] || fail "no Homepage"
 [[ "$(field Suggests)" == *python3-matplotlib* ]] || fail "Suggests lacks python3-matplotlib (the examples draw with it)"
+[[ "$(field Suggests)" == *qt6-translations-l10n* ]] || fail "Suggests lacks qt6-translations-l10n (the standard dialogs' buttons in the GUI's language)"
 
 if [ "$python" = ON ]; then
   recommends=$(field Recommends)

@@ -6,6 +6,7 @@
 #include <QTimer>
 
 #include "qcustomplot.h"
+#include "ui/language.h"
 #include "ui/plot_ticks.h"
 
 namespace elui {
@@ -31,7 +32,7 @@ QString joules(double v) {
     const double a = std::abs(v);
     if (a == 0.0) return QStringLiteral("0 J");
     const int decimals = a >= 100.0 ? 0 : a >= 10.0 ? 1 : a >= 1.0 ? 2 : -1;
-    return (decimals >= 0 ? QString::number(v, 'f', decimals) : QString::number(v, 'g', 3)) + QStringLiteral(" J");
+    return (decimals >= 0 ? num(v, 'f', decimals) : num(v, 'g', 3)) + QStringLiteral(" J");
 }
 }  // namespace
 
@@ -235,14 +236,14 @@ void EnergyBarsDock::refreshText() {
     QString title = tr("Energy book");
     if (m_hasFrame) {
         title = tr("Energy at t = %1 s\ntotal %2, at the start %3")
-                    .arg(m_time, 0, 'f', 2)
+                    .arg(num(m_time, 'f', 2))
                     .arg(joules(m_total), joules(m_start));
         if (m_lanes > 1) {
             QStringList lanes;
             for (int lane = 0; lane < m_lanes && lane < m_laneNames.size(); ++lane)
                 lanes << QStringLiteral("%1: %2").arg(laneBrushName(lane), m_laneNames[lane]);
             // One view a line: a narrow dock would clip them side by side.
-            title = tr("Energy at t = %1 s\n%2").arg(m_time, 0, 'f', 2).arg(lanes.join(QLatin1Char('\n')));
+            title = tr("Energy at t = %1 s\n%2").arg(num(m_time, 'f', 2)).arg(lanes.join(QLatin1Char('\n')));
         }
     }
     m_title->setText(title);

@@ -6,6 +6,7 @@
 #include <QVBoxLayout>
 
 #include "ui/accessibility.h"
+#include "ui/language.h"
 #include "ui/mailbox.h"
 
 namespace elui {
@@ -110,7 +111,7 @@ void FailureBanner::startCheck(const simcore::SimulationSnapshot& start, const s
 void FailureBanner::present() {
     QString head = tr("<b>The simulation blew up</b> at t = %1 s (step %2): %3. The run is paused and shows the "
                       "last good state.")
-                       .arg(m_failure.time, 0, 'f', 3)
+                       .arg(num(m_failure.time, 'f', 3))
                        .arg(m_failure.step)
                        .arg(QString::fromStdString(m_failure.reason).toHtmlEscaped());
     QString body;
@@ -129,7 +130,7 @@ void FailureBanner::present() {
     setAccessibleName(plainText(m_text->text()));
     // Only remedies that work: the step that ran through; no DT button for the body's own failure.
     m_smaller->setVisible(numerical && m_check->workingDt > 0.0);
-    if (numerical) m_smaller->setText(tr("Use DT = %1 s and reset").arg(m_check->workingDt));
+    if (numerical) m_smaller->setText(tr("Use DT = %1 s and reset").arg(num(m_check->workingDt)));
     const bool unchecked = !m_checking && !(m_check && m_check->checked);
     m_implicit->setVisible((numerical || unchecked) && m_integrator != QStringLiteral("implicit-euler"));
 }

@@ -9,9 +9,10 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
+#include "ui/language.h"
+#include "ui/lessons.h"
 #include "ui/parameter_dock.h"
 #include "ui/presets.h"
-#include "ui/lessons.h"
 
 namespace elui {
 
@@ -96,7 +97,7 @@ QString HelpDialog::html() {
         h += QStringLiteral("<tr><td><b>%1</b></td><td align=center>%2</td><td>%3</td><td>%4</td></tr>")
                  .arg(name)
                  .arg(info.order)
-                 .arg(toQString(info.description).toHtmlEscaped(), integratorNote(name).toHtmlEscaped());
+                 .arg(simcoreText(info.description).toHtmlEscaped(), integratorNote(name).toHtmlEscaped());
     }
     h += QStringLiteral("</table>");
     h += QObject::tr("<h3>Presets</h3><ul>");

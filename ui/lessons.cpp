@@ -107,9 +107,11 @@ QMap<QString, LessonAnswer> lessonAnswers(const QString& html, QString* error) {
         const QRegularExpressionMatch m = it.next();
         const QString key = m.captured(1);
         bool okValue = false, okTol = false;
-        // A minus sign may be written as U+2212 in the text.
+        // A minus sign may be written as U+2212 in the text, and the German, French and Spanish
+        // texts write a decimal comma.
         QString number = m.captured(3).trimmed();
         number.replace(QChar(0x2212), QLatin1Char('-'));
+        number.replace(QLatin1Char(','), QLatin1Char('.'));
         const LessonAnswer answer{number.toDouble(&okValue), m.captured(2).toDouble(&okTol)};
         if (out.contains(key)) fail(QStringLiteral("answer %1 is marked twice").arg(key));
         else if (!okValue) fail(QStringLiteral("answer %1 is not a number: %2").arg(key, m.captured(3)));

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -19,6 +20,7 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
+#include <QTranslator>
 #include <QVBoxLayout>
 
 #include "simcore/scenes.h"
@@ -28,6 +30,7 @@
 #include "ui/export.h"
 #include "ui/failure_banner.h"
 #include "ui/help_dialog.h"
+#include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/lessons_dialog.h"
 #include "ui/parameter_dock.h"
@@ -208,6 +211,8 @@ void MainWindow::createMenus() {
     m_viewMenu->addAction(m_zoomIn);
     m_viewMenu->addAction(m_zoomOut);
     m_viewMenu->addSeparator();
+    createLanguageMenu();
+    m_viewMenu->addSeparator();
 
     QMenu* compare = menuBar()->addMenu(tr("&Compare"));
     compare->addAction(m_sideBySide);
@@ -290,7 +295,7 @@ void MainWindow::createCentral() {
     connect(m_useSuggestedDt, &QPushButton::clicked, this, [this] {
         m_controller->setParameter(simcore::Param::Dt, m_suggestedDt);
         m_stabilityBanner->hide();
-        status(tr("DT set to %1 s").arg(m_suggestedDt));
+        status(tr("DT set to %1 s").arg(num(m_suggestedDt)));
     });
     auto* stableImplicit = new QPushButton(tr("Use implicit-euler"), m_stabilityBanner);
     stableImplicit->setToolTip(tr("Linearised backward Euler: stable at any DT (and damps more)"));
@@ -551,6 +556,53 @@ void MainWindow::readSettings() {
     if (scale > 1.0) setUiScale(scale);
 }
 
+void MainWindow::createLanguageMenu() {
+    // View > Language: the choice is kept in the settings and applies at the next start (every
+    // dock, plot and dialog is built in its language; the running experiment is not torn down
+    // for it). The menu says so, in the language chosen as well as in this one.
+    QMenu* menu = m_viewMenu->addMenu(tr("&Language"));
+    menu->setObjectName(QStringLiteral("languageMenu"));
+    auto* group = new QActionGroup(menu);
+    const QString saved = m_useSettings ? QSettings().value(QStringLiteral("language")).toString() : QString();
+    auto add = [&](const QString& code, const QString& text) {
+        QAction* a = menu->addAction(text);
+        a->setObjectName(QStringLiteral("language-") + code);
+        a->setCheckable(true);
+        a->setData(code);
+        a->setChecked(code == (saved.isEmpty() ? QStringLiteral("system") : saved));
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code] { chooseLanguage(code); });
+    };
+    add(QStringLiteral("system"), tr("System language"));
+    menu->addSeparator();
+    for (const Language& l : languages()) add(l.code, l.nativeName);
+    menu->addSeparator();
+    QAction* note = menu->addAction(tr("Applies at the next start (now: %1)")
+                                        .arg(QLocale(currentLanguage()).nativeLanguageName()));
+    note->setEnabled(false);
+}
+
+void MainWindow::chooseLanguage(const QString& code) {
+    if (m_useSettings) QSettings().setValue(QStringLiteral("language"), code);
+    const QString target = code == QLatin1String("system")
+                               ? elui::chooseLanguage({}, {}, QLocale::system().uiLanguages())
+                               : code;
+    // The sentence in the language chosen too: a student who picked it by mistake can read it.
+    const char* const sentence = QT_TR_NOOP("The language changes when Elastic Lab starts again.");
+    QString text = tr(sentence);
+    QTranslator other;
+    if (target != currentLanguage() && target != QLatin1String("en") &&
+        other.load(QStringLiteral(":/i18n/elastic-lab_%1.qm").arg(target)))
+        text += QStringLiteral("\n\n") + other.translate("elui::MainWindow", sentence);
+    else if (target == QLatin1String("en") && currentLanguage() != QLatin1String("en"))
+        text += QStringLiteral("\n\n") + QString::fromLatin1(sentence);
+    status(tr("Language: %1 at the next start").arg(QLocale(target).nativeLanguageName()));
+    auto* box = new QMessageBox(QMessageBox::Information, tr("Language"), text, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setObjectName(QStringLiteral("languageNote"));
+    box->open();
+}
+
 void MainWindow::writeSettings() {
     if (!m_useSettings) return;
     QSettings settings;
@@ -668,7 +720,7 @@ void MainWindow::onFrame(const FramePtr& frame) {
     const bool multi = frame->lanes.size() > 1;
     for (Viewport* v : m_viewports) {
         const LaneFrame& lane = frame->lanes[std::size_t(std::min<int>(v->lane(), int(frame->lanes.size()) - 1))];
-        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(frame->parameters.get(simcore::Param::Dt))
+        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(num(frame->parameters.get(simcore::Param::Dt)))
                           : QString());
         v->showFrame(frame);
     }
@@ -730,7 +782,7 @@ void MainWindow::showStabilityAdvice(const SceneData& scene) {
     // so an explicit method needs a smaller DT (docs/numerics.md, "Resolution").
     m_stabilityText->setText(tr("<b>This body is likely unstable at the current DT.</b> %1. The run is paused.")
                                  .arg(scene.stabilityWarning.toHtmlEscaped()));
-    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(scene.suggestedDt));
+    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(num(scene.suggestedDt)));
     m_stabilityBanner->show();
 }
 

@@ -141,6 +141,8 @@ private:
     void setCurrentFile(const QString& path, const simcore::ParameterSet& saved, const QString& integrator);
     void updateTitle(const Frame& frame);
     void fillRecentMenu();
+    void createLanguageMenu();
+    void chooseLanguage(const QString& code);  // View > Language: kept for the next start
     void adoptOpenedFile();
 
     SimulationController* m_controller = nullptr;

@@ -12,6 +12,7 @@
 #include <QVBoxLayout>
 
 #include "qcustomplot.h"
+#include "ui/language.h"
 #include "ui/plot_ticks.h"
 
 namespace elui {
@@ -109,6 +110,8 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     // mode): each keeps the height its axes and legend need instead of being squashed.
     auto* scroll = new QScrollArea(host);
     scroll->setObjectName(QStringLiteral("plotsScroll"));
+    scroll->setAccessibleName(tr("Plots"));
+    scroll->setAccessibleDescription(tr("Volume, pressure and energy against simulated time, one plot under the other"));
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -475,11 +478,11 @@ QString PlotDock::cursorText(const QString& plotId) const {
     const int i = plotIndex(plotId);
     if (i < 0) return {};
     // Compact: three values a line under the time, so the label hides little of the curves.
-    QString text = tr("t = %1 s").arg(m_cursorTime, 0, 'f', 4);
+    QString text = tr("t = %1 s").arg(num(m_cursorTime, 'f', 4));
     const auto& series = m_specs[std::size_t(i)].series;
     for (std::size_t s = 0; s < series.size(); ++s)
         text += (s % 3 == 0 ? QStringLiteral("\n") : QStringLiteral("   ")) +
-                QStringLiteral("%1 %2").arg(series[s].name).arg(valueAt(plotId, int(s), m_cursorTime), 0, 'g', 6);
+                QStringLiteral("%1 %2").arg(series[s].name).arg(num(valueAt(plotId, int(s), m_cursorTime), 'g', 6));
     return text;
 }
 
@@ -713,7 +716,7 @@ void PlotDock::updateViewLegend() {
         const ViewInfo& info = m_views[std::size_t(v)];
         // Short: five entries share a legend row. The cross and time say where it failed.
         QString text = QStringLiteral("%1 %2").arg(v + 1).arg(info.integrator);
-        if (info.failedAt) text += tr(" ✕ %1 s").arg(*info.failedAt, 0, 'f', 2);
+        if (info.failedAt) text += tr(" ✕ %1 s").arg(num(*info.failedAt, 'f', 2));
         return text;
     };
     if (multi)

@@ -12,6 +12,7 @@
 
 #include "qcustomplot.h"
 #include "simcore/scenes.h"
+#include "ui/language.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_dock.h"
 #include "ui/plot_series.h"
@@ -112,7 +113,7 @@ void PvDock::setParameters(const simcore::ParameterSet& params) {
     if (c == m_c) return;
     m_c = c;
     for (int layer = 0; layer < 2; ++layer)
-        m_isotherms[std::size_t(layer)]->setName(tr("P = nRT/V, nRT = %1 J").arg(c[std::size_t(layer)]));
+        m_isotherms[std::size_t(layer)]->setName(tr("P = nRT/V, nRT = %1 J").arg(num(c[std::size_t(layer)])));
     scheduleReplot();
 }
 

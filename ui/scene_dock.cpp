@@ -8,6 +8,7 @@
 
 #include "simcore/scenes.h"
 #include "ui/accessibility.h"
+#include "ui/language.h"
 #include "ui/parameter_dock.h"
 
 namespace elui {
@@ -45,6 +46,8 @@ SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     // Scrolls when the screen is short (a projector, presentation mode) instead of holding the
     // window taller than the screen; the Parameters dock beside it does the same.
     auto* scroll = new QScrollArea(this);
+    scroll->setAccessibleName(tr("Scene"));
+    scroll->setAccessibleDescription(tr("The body to build, its shape and what its parameters mean"));
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(host);
@@ -63,7 +66,7 @@ void SceneDock::rebuildForm(simcore::SceneKind kind) {
     m_form = new ParameterForm(kind, {simcore::ParamGroup::Shape}, widget());
     m_formHost->addWidget(m_form);
     connect(m_form, &ParameterForm::rejected, this, &SceneDock::shapeRejected);
-    m_description->setText(toQString(simcore::sceneInfo(kind).description));
+    m_description->setText(simcoreText(simcore::sceneInfo(kind).description));
 }
 
 simcore::ParameterSet SceneDock::requestedShape() const { return m_form->values(); }

@@ -28,6 +28,7 @@
 #include "simlab/output.h"
 #include "simlab/refinement.h"
 #include "ui/export.h"
+#include "ui/language.h"
 #include "ui/mailbox.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_series.h"
@@ -108,7 +109,7 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
         box->setToolTip(tr("Include %1 (order %2) in the study: %3")
                             .arg(name)
                             .arg(info.order)
-                            .arg(toQString(info.description)));
+                            .arg(simcoreText(info.description)));
         grid->addWidget(box, i / 4, i % 4);
         m_integrators.push_back(box);
         ++i;
@@ -372,8 +373,8 @@ void WorkPrecisionDialog::present() {
         if (fit.points >= 2)
             summary += tr(" %1: order %2 (RMS %3).")
                            .arg(QString::fromStdString(fit.integrator))
-                           .arg(fit.order, 0, 'f', 2)
-                           .arg(fit.orderRms, 0, 'f', 2);
+                           .arg(num(fit.order, 'f', 2))
+                           .arg(num(fit.orderRms, 'f', 2));
     m_summary->setText(summary);
 }
 
@@ -527,7 +528,7 @@ void ConservationDialog::present() {
     QList<QStringList> cells;
     for (const simlab::ConservationRow& row : m_result.rows)
         cells.append({QString::fromStdString(row.integrator), row.ok ? QString::number(row.alpha, 'f', 3) : QString(),
-                      row.ok ? QStringLiteral("[%1, %2]").arg(row.alphaLo, 0, 'f', 3).arg(row.alphaHi, 0, 'f', 3) : QString(),
+                      row.ok ? QStringLiteral("[%1, %2]").arg(num(row.alphaLo, 'f', 3)).arg(num(row.alphaHi, 'f', 3)) : QString(),
                       QString::fromStdString(row.growth), row.ok ? number(row.finalError) : QString(),
                       row.ok ? number(row.relativeError) : QString(), QString::number(row.steps),
                       QString::fromStdString(row.status())});
@@ -537,7 +538,7 @@ void ConservationDialog::present() {
         QCPGraph* graph = m_plot->addGraph();
         const QString name = QString::fromStdString(row.integrator);
         graph->setPen(QPen(integratorColor(name), 1.8));
-        graph->setName(row.ok ? tr("%1: %2, α = %3").arg(name, QString::fromStdString(row.growth)).arg(row.alpha, 0, 'f', 2)
+        graph->setName(row.ok ? tr("%1: %2, α = %3").arg(name, QString::fromStdString(row.growth)).arg(num(row.alpha, 'f', 2))
                               : tr("%1: failed").arg(name));
         for (auto [t, e] : row.curve)
             if (t > 0 && e > 0) graph->addData(t, e);
@@ -708,7 +709,7 @@ void RefinementDialog::present() {
                        .arg(m_result.temporalValue)
                        .arg(number(m_result.timeErrorVolume), number(m_result.timeErrorCom));
     for (const simlab::SpatialOrder& fit : simlab::fitSpatialOrders(m_result))
-        summary += fit.points >= 2 ? tr("Spatial order (%1): %2. ").arg(QString::fromStdString(fit.observable)).arg(fit.order, 0, 'f', 2)
+        summary += fit.points >= 2 ? tr("Spatial order (%1): %2. ").arg(QString::fromStdString(fit.observable)).arg(num(fit.order, 'f', 2))
                                    : tr("Spatial order (%1): not resolved. ").arg(QString::fromStdString(fit.observable));
     m_summary->setText(summary);
 }

@@ -15,6 +15,7 @@
 #include <QTextDocument>
 #include <QWheelEvent>
 
+#include "ui/language.h"
 #include "ui/plot_series.h"
 
 static void initElasticLabResources() { Q_INIT_RESOURCE(elastic_lab); }
@@ -760,7 +761,7 @@ void Viewport::updateForcesPanel(const LaneFrame& lane) {
     QString html = QStringLiteral("<b>%1</b> %2<table cellspacing='0' cellpadding='1'>")
                        .arg(tr("Forces on particle %1").arg(b.particle), layer.isEmpty() ? QString() : QStringLiteral("(%1)").arg(layer));
     auto row = [&](const QColor& c, const QString& name, double newtons, bool bold) {
-        const QString value = QString::number(newtons, 'g', 4);
+        const QString value = num(newtons, 'g', 4);
         html += QStringLiteral("<tr><td><span style='color:%1; font-size:large'>&#9632;</span></td><td>%2</td>"
                                "<td align='right'>&nbsp;%3 N</td></tr>")
                     .arg(c.name(), bold ? QStringLiteral("<b>%1</b>").arg(name) : name,
@@ -819,11 +820,11 @@ void Viewport::updateOverlay() {
     const LaneFrame& lane = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))];
     QString html;
     if (!m_title.isEmpty()) html += QStringLiteral("<b>%1</b><br>").arg(m_title.toHtmlEscaped());
-    html += QStringLiteral("t = %1 s").arg(lane.diagnostics.time, 0, 'f', 3);
+    html += QStringLiteral("t = %1 s").arg(num(lane.diagnostics.time, 'f', 3));
     if (m_frame->lanes.size() > 1 && m_lane > 0)
         html += QStringLiteral("<br>%1 from %2: %3 m (RMS)")
                     .arg(tr("distance"), m_frame->lanes[0].integrator)
-                    .arg(lane.divergence, 0, 'g', 3);
+                    .arg(num(lane.divergence, 'g', 3));
     if (lane.failure)
         html += QStringLiteral("<br><span style='background:#c0392b; color:white'>&nbsp;%1&nbsp;</span>")
                     .arg(tr("Blew up at t = %1 s: %2")

@@ -25,6 +25,8 @@
 #include <QImageWriter>
 #include <QElapsedTimer>
 #include <QIcon>
+#include <QLocale>
+#include <QSettings>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -39,6 +41,7 @@
 #include "simlab/scenefile.h"
 #include "ui/export.h"
 #include "ui/gl_format.h"
+#include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/lessons_dialog.h"
 #include "ui/main_window.h"
@@ -84,6 +87,13 @@ void startupMessageHandler(QtMsgType type, const QMessageLogContext&, const QStr
                  qPrintable(where));
     std::fflush(stderr);
     std::_Exit(2);
+}
+
+// "en, de, fr, es, ar": the languages built in.
+QString languageCodes() {
+    QStringList codes;
+    for (const elui::Language& l : elui::languages()) codes << l.code;
+    return codes.join(QStringLiteral(", "));
 }
 
 }  // namespace
@@ -172,12 +182,17 @@ int main(int argc, char** argv) {
     const QCommandLineOption contrastOpt(QStringLiteral("high-contrast"),
                                          QStringLiteral("Start in high contrast (View > High contrast): white on black, "
                                                         "yellow focus."));
+    const QCommandLineOption langOpt(QStringLiteral("lang"),
+                                     QStringLiteral("The language of the window: %1 (View > Language; without it, the one "
+                                                    "chosen there, else the system's).")
+                                         .arg(languageCodes()),
+                                     QStringLiteral("CODE"));
     const QCommandLineOption scaleOpt(QStringLiteral("ui-scale"),
                                       QStringLiteral("Presentation mode at start: every text SCALE times larger (1 to 2; "
                                                      "View > Presentation mode, Ctrl+= / Ctrl+-)."),
                                       QStringLiteral("SCALE"));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt,
-                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, scaleOpt, contrastOpt});
+                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, scaleOpt, contrastOpt, langOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -193,7 +208,7 @@ int main(int argc, char** argv) {
     // A value-taking option given twice would silently lose one of the values.
     for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &lessonOpt, &shotOpt, &afterOpt,
                                            &optionsOpt, &docksOpt, &fpsOpt, &travelOpt, &branchOpt,
-                                           &selectOpt, &scaleOpt})
+                                           &selectOpt, &scaleOpt, &langOpt})
         if (parser.values(*once).size() > 1)
             return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
     if (parser.isSet(afterOpt) && !parser.isSet(shotOpt))
@@ -346,6 +361,14 @@ int main(int argc, char** argv) {
         elui::setDefaultGlFormat(0);
         elui::Viewport::setSamples(0);
     }
+    // The language before any widget is made (ui/language.h): --lang, else View > Language's
+    // choice (not for screenshots, which keep no settings), else the system's.
+    const QString lang = parser.value(langOpt);
+    if (!lang.isEmpty() && !elui::isLanguage(lang))
+        return fail(QStringLiteral("--lang %1 is not one of %2").arg(quoted(lang), languageCodes()));
+    elui::applyLanguage(elui::chooseLanguage(
+        lang, screenshot ? QString() : QSettings().value(QStringLiteral("language")).toString(),
+        QLocale::system().uiLanguages()));
     elui::MainWindow window(!screenshot);
     if (parser.isSet(contrastOpt)) window.setHighContrast(true);
     if (uiScale != 1.0) window.setUiScale(uiScale);
