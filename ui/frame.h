@@ -21,6 +21,7 @@
 #include <QVector3D>
 
 #include "body.h"
+#include "body_measures.h"
 #include "forces.h"
 #include "params.h"
 #include "scenefile.h"
@@ -55,6 +56,8 @@ struct LaneFrame {
     QString integrator;
     std::vector<float> positions;         // 3N [m], x0 y0 z0 x1 ...
     std::vector<float> forces;            // 3N [N], only when force vectors are asked for
+    std::vector<float> velocities;        // 3N [m/s]
+    BodyMeasures body;                    // centre of mass, layer centres, lowest point
     simcore::Diagnostics diagnostics;
     std::optional<simcore::Failure> failure;
     simcore::PointerSpring pointer;
