@@ -26,18 +26,19 @@
 #include <QTextBrowser>
 #include <QTextDocument>
 
-#include "energy_bars_dock.h"
-#include "help_dialog.h"
-#include "lesson_dock.h"
-#include "lesson_measures.h"
-#include "lessons.h"
-#include "lessons_dialog.h"
-#include "main_window.h"
-#include "pv_dock.h"
-#include "simulation.h"
-#include "simulation_controller.h"
-#include "stability.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/stability.h"
 #include "test_support.h"
+#include "ui/energy_bars_dock.h"
+#include "ui/help_dialog.h"
+#include "ui/lesson_dock.h"
+#include "ui/lesson_measures.h"
+#include "ui/lessons.h"
+#include "ui/lessons_dialog.h"
+#include "ui/main_window.h"
+#include "ui/pv_dock.h"
+#include "ui/simulation_controller.h"
 
 using namespace elui;
 using simcore::ParameterSet;
@@ -93,9 +94,10 @@ private slots:
             // Valid presets: the scene exists, every value passes the parameter table.
             QVERIFY2(simcore::findScene(l.preset.scene.toStdString()), qPrintable(l.id));
             ParameterSet p(simcore::findScene(l.preset.scene.toStdString())->kind);
-            for (const auto& [key, value] : l.preset.values) {
-                const auto error = p.set(key.toStdString(), value);
-                QVERIFY2(!error, qPrintable(l.id + ": " + key + ": " + QString::fromStdString(error.value_or(""))));
+            for (const auto& [id, value] : l.preset.values) {
+                const auto error = p.set(id, value);
+                QVERIFY2(!error, qPrintable(l.id + ": " + QString::fromUtf8(simcore::paramSpec(id).key.data()) + ": " +
+                                            QString::fromStdString(error.value_or(""))));
             }
             for (const QString& name : l.preset.integrators)
                 QVERIFY2(!simcore::unknownIntegrator(name.toStdString()), qPrintable(l.id + ": " + name));
@@ -164,8 +166,10 @@ private slots:
                     QVERIFY2(preset.get(spec->id) != v.value, qPrintable(l.id + ": try " + v.key + " is the preset's"));
                 }
             }
-            for (const auto& [key, value] : l.preset.values)
+            for (const auto& [id, value] : l.preset.values) {
+                const QString key = QString::fromUtf8(simcore::paramSpec(id).key.data(), qsizetype(simcore::paramSpec(id).key.size()));
                 QVERIFY2(named.contains(key), qPrintable(l.id + ": the preset sets " + key + ", the text does not say"));
+            }
             QString todo = lessonSection(html, "What to do");
             QVERIFY(!todo.isEmpty());
             todo.replace(marked, "#");
@@ -192,11 +196,11 @@ private slots:
         const double until = lessonUntil(l.html()).front();
         for (int level : {1, 2}) {
             const ParameterSet q = with(p, {{"subdivisions", double(level)}});
-            QVERIFY2(!simcore::stabilityAdvice(Simulation(q, "rk4")), qPrintable(QString::number(level)));
+            QVERIFY2(!simlab::stabilityAdvice(Simulation(q, "rk4")), qPrintable(QString::number(level)));
             QCOMPARE(lessonFailureTime(q, "rk4", until), -1.0);
         }
         const ParameterSet fine = with(p, {{"subdivisions", 3}});
-        const auto advice = simcore::stabilityAdvice(Simulation(fine, "rk4"));
+        const auto advice = simlab::stabilityAdvice(Simulation(fine, "rk4"));
         QVERIFY(advice);
         QVERIFY(lessonFailureTime(fine, "rk4", 1.0) > 0.0);
         QCOMPARE(lessonFailureTime(with(fine, {{"dt", advice->suggestedDt}}), "rk4", 0.3), -1.0);
@@ -361,7 +365,7 @@ private slots:
             for (std::size_t i = 0; i < f->lanes.size(); ++i)
                 QCOMPARE(f->lanes[i].integrator, l.preset.integrators.at(int(i)));
             QCOMPARE(window.controller()->integrators(), l.preset.integrators);
-            for (const auto& [key, value] : l.preset.values) QCOMPARE(f->parameters.get(simcore::findParam(key.toStdString())->id), value);
+            for (const auto& [id, value] : l.preset.values) QCOMPARE(f->parameters.get(id), value);
             for (const QString& dock : l.docks)
                 QVERIFY2(window.dock(dock) && !window.dock(dock)->isHidden(), qPrintable(l.id + ": " + dock));
             QVERIFY(window.currentFile().isEmpty());

@@ -1,8 +1,8 @@
-#include "body_measures.h"
+#include "ui/body_measures.h"
 
 #include <algorithm>
 
-#include "simulation.h"
+#include "simcore/simulation.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "lesson_dock.h"
+#include "ui/lesson_dock.h"
 
 #include <cmath>
 #include <limits>
@@ -15,7 +15,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include "lesson_measures.h"
+#include "ui/lesson_measures.h"
 
 namespace elui {
 
@@ -322,8 +322,9 @@ void LessonDock::showFrame(const FramePtr& frame) {
                                                 .arg(m_rebound, 0, 'f', 3)
                                                 .arg(m_rebound / m_impact, 0, 'f', 3)
                                           : QString());
-    lines << tr("lowest point %1 m above the floor%2")
-                 .arg(b.lowest, 0, 'f', 3)
+    // Resting on the floor, the smooth contact lets the lowest particles sink a little.
+    lines << (b.lowest >= 0.0 ? tr("lowest point %1 m above the floor%2") : tr("lowest point %1 m into the floor (contact)%2"))
+                 .arg(std::abs(b.lowest), 0, 'f', 3)
                  .arg(m_lastLiftOff >= 0 ? tr("; last left the floor at t = %1 s").arg(m_lastLiftOff, 0, 'f', 3)
                                          : QString());
     if (first.diagnostics.hasGas)

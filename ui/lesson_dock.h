@@ -25,8 +25,8 @@
 
 #include <QDockWidget>
 
-#include "frame.h"
-#include "lessons.h"
+#include "ui/frame.h"
+#include "ui/lessons.h"
 
 class QDoubleSpinBox;
 class QLabel;

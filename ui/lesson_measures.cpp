@@ -1,12 +1,12 @@
-#include "lesson_measures.h"
+#include "ui/lesson_measures.h"
 
 #include <memory>
 
-#include "body_measures.h"
-#include "impact.h"
-#include "simulation.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/simulation.h"
+#include "simlab/impact.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
+#include "ui/body_measures.h"
 
 namespace elui {
 
@@ -29,13 +29,13 @@ std::unique_ptr<Simulation> runSteps(const ParameterSet& p, const std::string& i
 }
 
 // `elastic-lab-cli stability`'s row for one integrator (perturb 0.01 m unless the set has one).
-simcore::StabilityRow scan(const ParameterSet& p, const std::string& integrator) {
-    simcore::StabilitySpec spec;
+simlab::StabilityRow scan(const ParameterSet& p, const std::string& integrator) {
+    simlab::StabilitySpec spec;
     spec.params = p;
     spec.integrators = {integrator};
     ParameterSet linearised = p;
     if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
-    return simcore::scanIntegrator(spec, integrator, simcore::linearModes(linearised));
+    return simlab::scanIntegrator(spec, integrator, simlab::linearModes(linearised));
 }
 
 // The row of a run with the smallest inner area: 0 its area, 1 its pressure, 2 its time.
@@ -99,7 +99,7 @@ QMap<QString, LessonMeasure> lessonMeasures(const QString& id) {
             };
         m["suggested-level3"] = [](const ParameterSet& p) {
             const Simulation sim(with(p, {{"subdivisions", 3}}), "rk4");
-            const auto advice = simcore::stabilityAdvice(sim);
+            const auto advice = simlab::stabilityAdvice(sim);
             return advice ? advice->suggestedDt : -1.0;
         };
     } else if (id == QLatin1String("pv-isotherm")) {
@@ -114,16 +114,16 @@ QMap<QString, LessonMeasure> lessonMeasures(const QString& id) {
                 return lessonLiftOffTime(with(p, {{"restitution", e}}), "rk4", 3.0);
             };
         m["particle-e0.9"] = [](const ParameterSet& p) {
-            return simcore::measureImpact(with(p, {{"restitution", 0.9}}), "rk4", 3.0).particle;
+            return simlab::measureImpact(with(p, {{"restitution", 0.9}}), "rk4", 3.0).particle;
         };
         m["body-e0.9"] = [](const ParameterSet& p) {
-            return simcore::measureImpact(with(p, {{"restitution", 0.9}}), "rk4", 3.0).body;
+            return simlab::measureImpact(with(p, {{"restitution", 0.9}}), "rk4", 3.0).body;
         };
         m["body-e0.2"] = [](const ParameterSet& p) {
-            return simcore::measureImpact(with(p, {{"restitution", 0.2}}), "rk4", 3.0).body;
+            return simlab::measureImpact(with(p, {{"restitution", 0.2}}), "rk4", 3.0).body;
         };
         m["particle-1mps"] = [](const ParameterSet& p) {
-            return simcore::measureImpact(with(p, {{"restitution", 0.9}}), "rk4", 1.0).particle;
+            return simlab::measureImpact(with(p, {{"restitution", 0.9}}), "rk4", 1.0).particle;
         };
     } else if (id == QLatin1String("stiff-springs")) {
         // `stability --scene ring2d --set ks=1e6 --integrators rk4`; `run ... implicit-euler
@@ -147,13 +147,13 @@ QMap<QString, LessonMeasure> helpMeasures() {
     // 0.000625 --duration 2`: damped velocity Verlet's fitted order (the closed form is the
     // reference).
     m["order-verlet-damped"] = [](const ParameterSet&) {
-        simcore::StudySpec spec;
+        simlab::StudySpec spec;
         spec.params = ParameterSet(simcore::SceneKind::Spring1d);
         spec.integrators = {"verlet"};
         spec.dts = {0.005, 0.0025, 0.00125, 0.000625};
         spec.duration = 2.0;
-        const simcore::StudyResult result = simcore::runStudy(spec);
-        const auto fits = simcore::fitOrders(result.rows, result.reference.estimatedError);
+        const simlab::StudyResult result = simlab::runStudy(spec);
+        const auto fits = simlab::fitOrders(result.rows, result.reference.estimatedError);
         return fits.empty() ? 0.0 : fits.front().order;
     };
     return m;

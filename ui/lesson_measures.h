@@ -11,7 +11,7 @@
 #include <QMap>
 #include <QString>
 
-#include "params.h"
+#include "simcore/params.h"
 
 namespace elui {
 

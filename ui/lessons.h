@@ -20,7 +20,7 @@
 #include <QString>
 #include <QStringList>
 
-#include "presets.h"
+#include "ui/presets.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "measure_plot_dock.h"
+#include "ui/measure_plot_dock.h"
 
 #include <cmath>
 #include <limits>
@@ -8,9 +8,9 @@
 #include <QPushButton>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <qcustomplot.h>
 
-#include "plot_dock.h"
+#include "qcustomplot.h"
+#include "ui/plot_dock.h"
 
 namespace elui {
 

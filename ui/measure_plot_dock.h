@@ -10,8 +10,8 @@
 
 #include <QDockWidget>
 
-#include "frame.h"
-#include "tracked.h"
+#include "ui/frame.h"
+#include "ui/tracked.h"
 
 class QCustomPlot;
 class QCPGraph;

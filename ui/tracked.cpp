@@ -1,4 +1,4 @@
-#include "tracked.h"
+#include "ui/tracked.h"
 
 #include <cmath>
 #include <limits>

@@ -5,7 +5,7 @@
 
 #include <QString>
 
-#include "frame.h"
+#include "ui/frame.h"
 
 namespace elui {
 
