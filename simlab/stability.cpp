@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "simcore/compositions.h"
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
 #include "simcore/simulation.h"
@@ -22,6 +23,7 @@ using simcore::Param;
 using simcore::ParameterSet;
 using simcore::Simulation;
 using simcore::Term;
+using simcore::compositionWeights;
 using simcore::hasStabilityFunction;
 using simcore::kExplicitStabilityLimit;
 using simcore::stabilityFunction;
@@ -45,18 +47,28 @@ std::pair<double, double> partitionedStep(const std::string& name, double h, dou
         const double v1 = v + h * acc(x, v);
         return {x + h * v1, v1};
     }
-    // velocity Verlet, damping at the half-step velocity (as the integrator does)
-    const double a0 = acc(x, v);
-    const double x1 = x + h * v + 0.5 * h * h * a0;
-    const double vh = v + 0.5 * h * a0;
-    return {x1, vh + 0.5 * h * acc(x1, vh)};
+    // velocity Verlet and its compositions, damping at the half-step velocity (as the
+    // integrators do): each substep's end acceleration starts the next
+    double a = acc(x, v);
+    for (double w : compositionWeights(name)) {
+        const double hw = w * h;
+        const double vh = v + 0.5 * hw * a;
+        x += hw * vh;
+        a = acc(x, vh);
+        v = vh + 0.5 * hw * a;
+    }
+    return {x, v};
 }
 
 }  // namespace
 
+bool isPartitioned(const std::string& integrator) {
+    return integrator == "symplectic-euler" || !compositionWeights(integrator).empty();
+}
+
 double modeAmplification(const std::string& integrator, double h, double omega, double c) {
     const double w2 = omega * omega;
-    if (integrator == "symplectic-euler" || integrator == "verlet") {
+    if (isPartitioned(integrator)) {
         const auto [a, cc] = partitionedStep(integrator, h, w2, c, 1.0, 0.0);
         const auto [b, d] = partitionedStep(integrator, h, w2, c, 0.0, 1.0);
         return radius2(a, b, cc, d);
@@ -191,13 +203,20 @@ double partitionedRadius(const std::string& name, double h, const Eigen::MatrixX
     if (name == "symplectic-euler") {
         const Eigen::MatrixXd vx = -h * A, vv = I - h * C;  // v1 = vx x + vv v
         S << I + h * vx, h * vv, vx, vv;
-    } else {  // velocity Verlet, damping at the half-step velocity
-        const Eigen::MatrixXd xx = I - 0.5 * h * h * A, xv = h * I - 0.5 * h * h * C;
-        const Eigen::MatrixXd hx = -0.5 * h * A, hv = I - 0.5 * h * C;  // v_half
-        // v1 = v_half + h/2 (-A x1 - C v_half)
-        const Eigen::MatrixXd vx = hx - 0.5 * h * (A * xx + C * hx);
-        const Eigen::MatrixXd vv = hv - 0.5 * h * (A * xv + C * hv);
-        S << xx, xv, vx, vv;
+    } else {  // velocity Verlet and its compositions, damping at the half-step velocity
+        // Rows of x and v as linear maps of the start state [x; v] (m x 2m each).
+        Eigen::MatrixXd X(m, 2 * m), V(m, 2 * m);
+        X << I, Eigen::MatrixXd::Zero(m, m);
+        V << Eigen::MatrixXd::Zero(m, m), I;
+        Eigen::MatrixXd a = -A * X - C * V;
+        for (double w : compositionWeights(name)) {
+            const double hw = w * h;
+            const Eigen::MatrixXd vh = V + 0.5 * hw * a;
+            X += hw * vh;
+            a = -A * X - C * vh;
+            V = vh + 0.5 * hw * a;
+        }
+        S << X, V;
     }
     Eigen::EigenSolver<Eigen::MatrixXd> eig(S, false);
     return eig.eigenvalues().cwiseAbs().maxCoeff();
@@ -209,7 +228,7 @@ double predictedStableStep(const std::string& integrator, const LinearModes& mod
     if (integrator == "implicit-euler") return std::numeric_limits<double>::infinity();
     // (With physically unstable modes the exact step matrix grows for every h; the modal path
     // can leave them out.)
-    if ((integrator == "symplectic-euler" || integrator == "verlet") && modes.stiffness.rows() > 0 &&
+    if (isPartitioned(integrator) && modes.stiffness.rows() > 0 &&
         modes.unstableModes == 0) {
         // Rigid modes are Jordan blocks at 1, whose computed eigenvalues scatter by ~sqrt(eps):
         // hence the looser 1e-6.

@@ -21,7 +21,10 @@
 // symplectic Euler and Verlet use the spectral radius of their exact 2m x 2m step matrix up
 // to kExactStepLimit free coordinates (the modal damping is ambiguous for degenerate modes).
 //   undamped limits (h w):  euler none (grows for every h), midpoint none, rk4 2*sqrt(2),
-//   rk45 (fixed step) ~3.3, symplectic-euler 2, verlet 2, implicit-euler unlimited.
+//   rk45 (fixed step) ~3.3, symplectic-euler 2, verlet 2, yoshida4 1.57, yoshida8 (see
+//   docs/numerics.md), implicit-euler unlimited. The compositions of Verlet (yoshida4,
+//   yoshida8) are treated as Verlet is: their step matrix is the product of Verlet's over
+//   the substeps (integrators.h, compositionWeights).
 
 #include <atomic>
 
@@ -78,6 +81,9 @@ LinearModes linearModes(const simcore::ParameterSet& params, int exactEigenLimit
 
 // Spectral radius of one step of `integrator` on x'' + c x' + w^2 x = 0.
 double modeAmplification(const std::string& integrator, double h, double omega, double c);
+// The partitioned methods (symplectic-euler, verlet and its compositions): no scalar stability
+// function; their step matrix per mode (or for the whole linear body) decides.
+bool isPartitioned(const std::string& integrator);
 // Largest h with every mode's amplification <= 1 (+1e-9): 0 when there is none (grows for
 // every h), +infinity when unlimited (A-stable), searched up to hMax.
 double predictedStableStep(const std::string& integrator, const LinearModes& modes, double hMax = 10.0);

@@ -7,6 +7,7 @@
 
 #include <QPushButton>
 
+#include "qcustomplot.h"
 #include "simlab/stability.h"
 #include "simlab/stability_region.h"
 #include "test_support.h"
@@ -41,6 +42,23 @@ void showState(StabilityMapDock& dock, const ParameterSet& p, const QString& int
 class TestGuiStabilityMap : public QObject {
     Q_OBJECT
 private slots:
+    void stabilityMapHasEqualScales() {
+        // Both axes of the complex plane have the same units per pixel in a dock of any shape,
+        // as drawn: Euler's disc is a circle.
+        for (const QSize size : {QSize(300, 700), QSize(700, 320), QSize(420, 420)}) {
+            StabilityMapDock map;
+            map.resize(size);
+            map.show();
+            map.setState(simcore::ParameterSet(SceneKind::Spring1d), "euler");
+            QVERIFY(testsupport::waitUntil([&] { return !map.computing() && map.resultSerial() > 0; }));
+            QCustomPlot* plot = map.plot();
+            plot->replot();
+            const QRect rect = plot->axisRect()->rect();
+            const double px = plot->xAxis->range().size() / rect.width(), py = plot->yAxis->range().size() / rect.height();
+            QVERIFY2(std::abs(px / py - 1.0) < 0.01, qPrintable(QString("%1x%2: %3 vs %4 per pixel").arg(size.width()).arg(size.height()).arg(px).arg(py)));
+        }
+    }
+
     void showsTheRegionAndThePointsAndFollowsDt() {
         StabilityMapDock dock;
         dock.resize(420, 520);

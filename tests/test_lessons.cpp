@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <map>
 
 #include <QDir>
 #include <QDockWidget>
@@ -29,6 +30,7 @@
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simlab/stability.h"
+#include "simlab/conservation.h"
 #include "test_support.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/help_dialog.h"

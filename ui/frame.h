@@ -95,6 +95,7 @@ struct Frame {
     double stepsPerSecond = 0.0;
     bool fallingBehind = false;           // real-time mode could not keep up
     double explicitDtLimit = 0.0;         // estimated largest stable DT of explicit methods [s]
+    double atol = 1e-6, rtol = 1e-6;      // the adaptive methods' tolerances in use [m, m/s] and [1]
     quint64 serial = 0;                   // increases with every published frame
     TimelineInfo timeline;
 };

@@ -24,6 +24,8 @@ Lanes::List Lanes::build(const simcore::ParameterSet& params, const QStringList&
             sim->setIntegratorOptions([&] {
                 simcore::IntegratorOptions o = sim->integratorOptions();
                 o.stepDoubling = m_stepDoubling;
+                o.atol = m_atol;
+                o.rtol = m_rtol;
                 return o;
             }());
             lanes.push_back(std::move(sim));
@@ -88,6 +90,17 @@ std::optional<std::string> Lanes::trySetParameter(simcore::Param id, double valu
 
 void Lanes::setParameter(simcore::Param id, double value) {
     for (auto& sim : m_lanes) sim->setParameter(id, value);
+}
+
+void Lanes::setTolerances(double atol, double rtol) {
+    m_atol = atol;
+    m_rtol = rtol;
+    for (auto& sim : m_lanes) {
+        simcore::IntegratorOptions o = sim->integratorOptions();
+        o.atol = m_atol;
+        o.rtol = m_rtol;
+        sim->setIntegratorOptions(o);
+    }
 }
 
 void Lanes::setStepDoubling(bool on) {

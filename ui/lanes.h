@@ -69,8 +69,17 @@ public:
     void setParameter(simcore::Param id, double value);
     bool stepDoubling() const { return m_stepDoubling; }
     void setStepDoubling(bool on);
-    // Step doubling as lane 0 has it (after a checkpoint was restored).
-    void readStepDoubling() { m_stepDoubling = m_lanes.front()->integratorOptions().stepDoubling; }
+    // The adaptive methods' tolerances (IntegratorOptions::atol, rtol) of every lane.
+    double atol() const { return m_atol; }
+    double rtol() const { return m_rtol; }
+    void setTolerances(double atol, double rtol);
+    // Step doubling and the tolerances as lane 0 has them (after a checkpoint was restored).
+    void readOptions() {
+        const simcore::IntegratorOptions& o = m_lanes.front()->integratorOptions();
+        m_stepDoubling = o.stepDoubling;
+        m_atol = o.atol;
+        m_rtol = o.rtol;
+    }
     void grab(int particle, const Eigen::Vector3d& anchor);
     void moveAnchor(const Eigen::Vector3d& anchor);
     void release();
@@ -97,6 +106,7 @@ private:
     double m_dtLimit = 0.0;               // estimated explicit stability limit on DT [s]
     double m_kickInner = 0.0, m_kickOuter = 0.0;  // start kick along x [m/s]
     bool m_stepDoubling = false;
+    double m_atol = simcore::IntegratorOptions{}.atol, m_rtol = simcore::IntegratorOptions{}.rtol;
     int m_threads = std::max(1, simcore::availableThreads() - 1);  // force-evaluation threads
 };
 

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "simcore/simulation.h"
+#include "simlab/conservation.h"
 #include "simlab/impact.h"
 #include "simlab/stability.h"
 #include "simlab/study.h"
@@ -132,6 +133,27 @@ QMap<QString, LessonMeasure> lessonMeasures(const QString& id) {
         m["implicit-drift"] = [](const ParameterSet& p) {
             return runSteps(p, "implicit-euler", 300)->diagnostics().energyDrift();
         };
+    } else if (id == QLatin1String("why-symplectic")) {
+        // `conservation --scene spring1d --dt 0.01 --periods 10000 (and 100) --integrators
+        // verlet,yoshida4,rk4`: rows 0, 1, 2 are verlet, yoshida4, rk4.
+        auto run = [](const ParameterSet& p, double periods) {
+            simlab::ConservationSpec spec;
+            spec.params = p;
+            spec.integrators = {"verlet", "yoshida4", "rk4"};
+            spec.periods = periods;
+            spec.dt = p.get(simcore::Param::Dt);
+            return simlab::runConservation(spec);
+        };
+        m["verlet-error"] = [run](const ParameterSet& p) { return run(p, 10000.0).rows[0].finalError; };
+        m["yoshida4-error"] = [run](const ParameterSet& p) { return run(p, 10000.0).rows[1].finalError; };
+        m["rk4-error"] = [run](const ParameterSet& p) { return run(p, 10000.0).rows[2].finalError; };
+        m["verlet-growth"] = [run](const ParameterSet& p) {
+            return run(p, 10000.0).rows[0].finalError / run(p, 100.0).rows[0].finalError;
+        };
+        m["rk4-growth"] = [run](const ParameterSet& p) {
+            return run(p, 10000.0).rows[2].finalError / run(p, 100.0).rows[2].finalError;
+        };
+        m["rk4-alpha"] = [run](const ParameterSet& p) { return run(p, 10000.0).rows[2].alpha; };
     }
     return m;
 }

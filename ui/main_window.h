@@ -19,6 +19,7 @@ class QLabel;
 class QPushButton;
 class QFrame;
 class QMenu;
+class QToolBar;
 
 namespace elui {
 
@@ -83,6 +84,14 @@ public:
     QString currentFile() const { return m_currentFile; }
     const RecentFiles& recentFiles() const { return m_recent; }
     QMenu* recentMenu() const { return m_recentMenu; }
+    // Presentation mode (View menu, Ctrl+= / Ctrl+-): the whole UI's text at `scale` (1 = normal,
+    // 1.25 .. 2; ui_scale.h), and the large Run/Pause, Step, Back, Reset bar shown above 1.
+    void setUiScale(double scale);
+    QToolBar* classControls() const { return m_classControls; }
+    QAction* presentationAction() const { return m_presentation; }
+    // `wanted` moved and shrunk into `available` (a screen's available geometry): the window
+    // opens, and restores its saved geometry, within the screen it is on.
+    static QRect fitWithin(const QRect& wanted, const QRect& available);
 
 public slots:
     void startScene(const simcore::ParameterSet& params, const QStringList& integrators);
@@ -203,6 +212,15 @@ private:
     QAction* m_step = nullptr;
     QAction* m_reset = nullptr;
     QAction* m_resetView = nullptr;
+    QAction* m_stepBack = nullptr;
+    QAction* m_presentation = nullptr;
+    QAction* m_zoomIn = nullptr;
+    QAction* m_zoomOut = nullptr;
+    QToolBar* m_classControls = nullptr;
+    void createClassControls();
+    // Tabs the docks beside the plots into the Plots dock while the window's minimum width
+    // would exceed a projector's 1280 px.
+    void keepMinimumWidth();
     QAction* m_sideBySide = nullptr;
     QAction* m_single = nullptr;
     QAction* m_help = nullptr;

@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ui/field_keys.h"
+
 namespace elui {
 
 QString toQString(std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); }
@@ -33,6 +35,17 @@ QString groupName(simcore::ParamGroup group) {
         case G::Start: return QObject::tr("Start");
     }
     return {};
+}
+
+QString fieldLabel(const simcore::ParamSpec& spec) {
+    // The gas keys hold nRT (P = nRT / V), an energy in J, not a pressure: named for what they
+    // are beside the plots of pressure in N/m or Pa. The key (CLI, files, Python) stays.
+    switch (spec.id) {
+        case simcore::Param::Pressure: return QObject::tr("gas nRT");
+        case simcore::Param::PressureInner: return QObject::tr("gas nRT inner");
+        case simcore::Param::PressureOuter: return QObject::tr("gas nRT outer");
+        default: return toQString(spec.key);
+    }
 }
 
 static QString formatValue(double v) { return QString::number(v, 'g', 10); }
@@ -145,11 +158,22 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
         connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
         h->addWidget(back);
         m_defaults[key] = back;
-        auto* label = new QLabel(key, this);
+        auto* label = new QLabel(fieldLabel(*spec), this);
+        label->setObjectName(QStringLiteral("label_") + key);
+        if (label->text() != key) tip += QStringLiteral("<br>key: %1").arg(key);
+        edit->setToolTip(tip);
+        edit->setProperty("tip", tip);
         label->setToolTip(tip);
         form->addRow(label, row);
         m_fields[key] = edit;
         connect(edit, &QLineEdit::editingFinished, this, [this, key] { commit(key); });
+        // Enter commits and leaves the field, Escape puts back the value in use (field_keys.h).
+        installFieldKeys(
+            edit, [this, key] { return commit(key); },
+            [this, key, edit] {
+                if (m_shown.count(key)) edit->setText(formatValue(m_shown[key]));
+                markField(edit, {}, edit->property("tip").toString());
+            });
         for (const SliderSpan& span : kSliderSpans) {
             if (span.id != spec->id) continue;
             // Inside the table's range; the ends and the unit beside it.
@@ -287,11 +311,13 @@ void ParameterForm::setValues(const simcore::ParameterSet& params) {
     for (auto& [key, edit] : m_fields) {
         const double v = params.get(simcore::findParam(key.toStdString())->id);
         m_shown[key] = v;
-        if (!edit->hasFocus() || edit->text().isEmpty()) edit->setText(formatValue(v));
-        edit->setStyleSheet(QString());
-        edit->setToolTip(edit->property("tip").toString());
-        if (QSlider* s = slider(key)) s->setValue(sliderPosition(key, v));
+        // A field being typed in keeps its text, and its red mark if the text was refused: the
+        // mark says the text is not the value in use.
+        if (QSlider* sl = slider(key)) sl->setValue(sliderPosition(key, v));
         showDefaultState(key, v);
+        if (edit->hasFocus() && !edit->text().isEmpty()) continue;
+        edit->setText(formatValue(v));
+        markField(edit, {}, edit->property("tip").toString());
     }
     for (auto& [key, box] : m_choices) {
         const double v = params.get(simcore::findParam(key.toStdString())->id);
@@ -302,30 +328,28 @@ void ParameterForm::setValues(const simcore::ParameterSet& params) {
     m_updating = false;
 }
 
-void ParameterForm::commit(const QString& key) {
-    if (m_updating) return;
+bool ParameterForm::commit(const QString& key) {
+    if (m_updating) return false;
     QLineEdit* edit = field(key);
     const simcore::ParamSpec* spec = simcore::findParam(key.toStdString());
-    if (!edit || !spec) return;
+    if (!edit || !spec) return false;
     double v = 0.0;
     const QString error = validate(*spec, edit->text(), &v);
+    markField(edit, error, edit->property("tip").toString());
     if (!error.isEmpty()) {
-        edit->setStyleSheet(QStringLiteral("background: #ffd6d6"));
-        edit->setToolTip(error);
         emit rejected(key, error);
-        return;
+        return false;
     }
-    edit->setStyleSheet(QString());
-    edit->setToolTip(edit->property("tip").toString());
-    if (m_shown.count(key) && m_shown[key] == v) return;  // nothing changed
+    if (m_shown.count(key) && m_shown[key] == v) return true;  // nothing changed
     m_shown[key] = v;
-    if (QSlider* s = slider(key)) {
+    if (QSlider* sl = slider(key)) {
         m_updating = true;
-        s->setValue(sliderPosition(key, v));
+        sl->setValue(sliderPosition(key, v));
         m_updating = false;
     }
     showDefaultState(key, v);
     emit edited(spec->id, v);
+    return true;
 }
 
 ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), parent) {

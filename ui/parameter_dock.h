@@ -55,7 +55,7 @@ signals:
     void rejected(const QString& key, const QString& message);
 
 private:
-    void commit(const QString& key);
+    bool commit(const QString& key);  // false: refused (the field is marked red)
     void setToDefault(const QString& key);
     void showDefaultState(const QString& key, double value);
 
@@ -96,6 +96,9 @@ private:
 };
 
 QString groupName(simcore::ParamGroup group);
+// A field's label: its key, except the gas keys (pressure, pressure_inner, pressure_outer),
+// which hold nRT in J and are shown as "gas nRT", "gas nRT inner", "gas nRT outer".
+QString fieldLabel(const simcore::ParamSpec& spec);
 QString toQString(std::string_view text);
 
 }  // namespace elui

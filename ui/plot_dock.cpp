@@ -7,10 +7,12 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
 
 #include "qcustomplot.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
 
@@ -24,9 +26,27 @@ void legendUnderAxes(QCustomPlot* plot, const QFont& base) {
     plot->plotLayout()->addElement(plot->plotLayout()->rowCount(), 0, plot->legend);
     plot->plotLayout()->setRowStretchFactor(plot->plotLayout()->rowCount() - 1, 0.001);
     plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    // At most five entries a row: the energy legend's eight in one row would hold the Plots
-    // dock at ~650 px and leave the view no room when the energy docks open beside it.
+    // At most five entries a row, fewer when the plot is narrow: the energy legend's eight in
+    // one row would hold the Plots dock at ~650 px, five at ~480 px, and leave the view no room
+    // on a 1280 px projector. The plot's own minimum width is set, so the legend's wish does
+    // not widen the dock; before each replot the wrap is the most entries that fit.
     plot->legend->setWrap(5);
+    plot->setMinimumWidth(220);
+    QObject::connect(plot, &QCustomPlot::beforeReplot, plot->legend, [plot] {
+        QCPLegend* legend = plot->legend;
+        const int room = plot->width() - 8;
+        const int current = legend->wrap();
+        int wrap = 5;
+        for (; wrap > 2; --wrap) {  // at least two a row: eight entries in four rows
+            legend->setWrap(wrap);
+            legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+            if (legend->minimumOuterSizeHint().width() <= room) break;
+        }
+        if (wrap != current) {
+            legend->setWrap(wrap);
+            legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+        }
+    });
     plot->legend->setBorderPen(Qt::NoPen);
     plot->legend->setMargins(QMargins(4, 0, 4, 0));
 }
@@ -47,23 +67,39 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_autoscale = new QCheckBox(tr("Autoscale"), host);
     m_autoscale->setChecked(true);
     m_autoscale->setToolTip(tr("Fit the axes to the data; off while you zoom (wheel) and pan (drag)"));
-    m_showBands = new QCheckBox(tr("Show error band"), host);
+    m_showBands = new QCheckBox(tr("Show per-step error band"), host);
     m_showBands->setObjectName(QStringLiteral("showErrorBand"));
     m_showBands->setToolTip(tr("A band around volume, pressure and total energy: the integrator's local error estimate "
-                               "of each step carried to them (|O(y + e) - O(y)|). rk45, CVODE and step doubling "
+                               "of each step carried to them (|O(y + e) - O(y)|): the error one step adds, not the "
+                               "error of the run so far, which can be far larger. rk45, CVODE and step doubling "
                                "have an estimate; other methods show no band."));
+    // What the band is, or why none is seen: its own line, wrapped (a narrow dock stays narrow).
     m_bandNote = new QLabel(host);
     m_bandNote->setObjectName(QStringLiteral("errorBandNote"));
     m_bandNote->setStyleSheet(QStringLiteral("QLabel { color: #806000; }"));
+    m_bandNote->setWordWrap(true);
+    m_bandNote->hide();
     bar->addWidget(new QLabel(tr("Show"), host));
     bar->addWidget(m_windowCombo);
     bar->addWidget(m_autoscale);
-    bar->addWidget(m_showBands);
-    bar->addWidget(m_bandNote);
     bar->addStretch(1);
     layout->addLayout(bar);
-    m_plotLayout = new QVBoxLayout;
-    layout->addLayout(m_plotLayout, 1);
+    // The band's switch on a line of its own: one long row would hold the dock (and with it
+    // the window) wider than a projector's 1280 px once the energy docks open beside it.
+    layout->addWidget(m_showBands);
+    layout->addWidget(m_bandNote);
+    // The plots scroll when the screen is too short for them (a projector in presentation
+    // mode): each keeps the height its axes and legend need instead of being squashed.
+    auto* scroll = new QScrollArea(host);
+    scroll->setObjectName(QStringLiteral("plotsScroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* plotHost = new QWidget(scroll);
+    m_plotLayout = new QVBoxLayout(plotHost);
+    m_plotLayout->setContentsMargins(0, 0, 0, 0);
+    scroll->setWidget(plotHost);
+    layout->addWidget(scroll, 1);
     setWidget(host);
 
     m_replotTimer = new QTimer(this);
@@ -100,9 +136,9 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     m_bands.clear();
     m_specs = plotSpecs(kind);
     for (const PlotSpec& spec : m_specs) {
-        auto* plot = new QCustomPlot(widget());
+        auto* plot = new QCustomPlot(m_plotLayout->parentWidget());
         plot->setObjectName(QStringLiteral("plot_") + spec.id);
-        plot->setMinimumHeight(140);
+        plot->setMinimumHeight(plotMinimumHeight());
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         // Live traces: fast polylines and cached labels keep a replot cheap on a busy machine.
         plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
@@ -111,6 +147,9 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         plot->plotLayout()->addElement(0, 0, title);
         plot->xAxis->setLabel(tr("t [s]"));
         plot->yAxis->setLabel(spec.yLabel);
+        // A narrow dock or presentation mode: only as many numbers as fit apart (plot_ticks.h).
+        keepTickLabelsApart(plot->xAxis);
+        keepTickLabelsApart(plot->yAxis);
         legendUnderAxes(plot, font());
         for (const SeriesSpec& s : spec.series) {
             QCPGraph* g = plot->addGraph();
@@ -178,6 +217,18 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     updateCursor();
 }
 
+int PlotDock::plotMinimumHeight() const {
+    // Twelve lines of text: a title, tick labels, an axis label, up to four legend rows and
+    // room for the curves; grows with the font (presentation mode), the plots then scroll.
+    return std::max(140, 12 * QFontMetrics(font()).height());
+}
+
+void PlotDock::changeEvent(QEvent* event) {
+    QDockWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange)
+        for (QCustomPlot* plot : m_plots) plot->setMinimumHeight(plotMinimumHeight());
+}
+
 QStringList PlotDock::plotIds() const {
     QStringList ids;
     for (const PlotSpec& s : m_specs) ids << s.id;
@@ -231,12 +282,46 @@ double PlotDock::lastBandHalfWidth(const QString& plotId, int series) const {
     return 0.5 * ((b->upper->data()->constEnd() - 1)->value - (b->lower->data()->constEnd() - 1)->value);
 }
 
+QString PlotDock::bandNote() const { return m_bandNote->text(); }
 bool PlotDock::bandsShown() const { return m_showBands->isChecked(); }
 void PlotDock::setBandsShown(bool on) { m_showBands->setChecked(on); }
 
 void PlotDock::updateBandNote() {
-    const bool missing = m_showBands->isChecked() && !m_lastRowHasBand;
-    m_bandNote->setText(missing ? tr("(no error estimate: use rk45, CVODE or step doubling)") : QString());
+    QString note;
+    if (m_showBands->isChecked()) {
+        if (!m_lastRowHasBand)
+            note = tr("No band: this integrator gives no error estimate. Use rk45, CVODE, or tick \"Estimate error "
+                      "(step doubling)\" in the Run dock.");
+        else if (m_bandsThin)
+            note = tr("The band is there but thinner than a line: each step's error estimate is below half a pixel "
+                      "at this zoom (an adaptive method keeps it under its tolerance). Loosen rtol/atol in the Run "
+                      "dock, or use a fixed-step method at a larger DT with step doubling, to see it.");
+        else
+            note = tr("Band: the error each step adds (a per-step estimate), not the error of the run so far.");
+    }
+    if (note != m_bandNote->text()) m_bandNote->setText(note);
+    m_bandNote->setVisible(!note.isEmpty());
+}
+
+bool PlotDock::bandsThinnerThanALine() const {
+    // The widest band point in view, in pixels of its plot's value axis.
+    double widest = 0.0;
+    bool any = false;
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        const QCustomPlot* plot = m_plots[i];
+        if (plot->axisRect()->height() < 10) return false;  // not laid out yet: unknown
+        const double unitsPerPixel = plot->yAxis->range().size() / plot->axisRect()->height();
+        const QCPRange x = plot->xAxis->range();
+        for (const Band& b : m_bands[i]) {
+            auto up = b.upper->data()->findBegin(x.lower), lo = b.lower->data()->findBegin(x.lower);
+            for (; up != b.upper->data()->constEnd() && lo != b.lower->data()->constEnd() && up->key <= x.upper; ++up, ++lo) {
+                if (std::isnan(up->value) || std::isnan(lo->value)) continue;
+                any = true;
+                widest = std::max(widest, 0.5 * (up->value - lo->value) / unitsPerPixel);
+            }
+        }
+    }
+    return any && widest < 0.5;
 }
 
 void PlotDock::setWindow(double seconds) {
@@ -423,6 +508,13 @@ void PlotDock::replotNow() {
             if (auto* label = qobject_cast<QCPItemText*>(plot->item(k)))
                 label->setPositionAlignment((right ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
         plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+    if (m_showBands->isChecked() && m_lastRowHasBand) {
+        const bool thin = bandsThinnerThanALine();
+        if (thin != m_bandsThin) {
+            m_bandsThin = thin;
+            updateBandNote();
+        }
     }
 }
 

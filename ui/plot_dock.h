@@ -51,6 +51,11 @@ public:
     int bandPointCount(const QString& plotId, int series) const;
     double lastBandHalfWidth(const QString& plotId, int series) const;
     bool bandsShown() const;
+    // What the dock says about the band: what it is, or why none is seen (no estimate, or
+    // thinner than a line at this zoom). Empty while the band is off.
+    QString bandNote() const;
+    // Whether every band point in view is narrower than half a pixel (the band "invisible").
+    bool bandsThinnerThanALine() const;
     void setBandsShown(bool on);
     std::vector<QCustomPlot*> plots() const { return m_plots; }
     const std::vector<PlotSpec>& specs() const { return m_specs; }
@@ -81,7 +86,11 @@ public slots:
     void setCursor(double time, bool visible);
     void replotNow();
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
+    int plotMinimumHeight() const;
     void scheduleReplot();
     void updateCursor();
     int plotIndex(const QString& plotId) const;
@@ -104,6 +113,7 @@ private:
     QLabel* m_bandNote = nullptr;   // says why no band is drawn
     std::vector<std::vector<Band>> m_bands;  // per plot
     bool m_lastRowHasBand = false;
+    bool m_bandsThin = false;  // as of the last replot (bandsThinnerThanALine)
     QTimer* m_replotTimer = nullptr;
     double m_window = 10.0;
     double m_lastTime = 0.0;

@@ -147,6 +147,21 @@ void SimWorker::setSpeed(int speed) {
     publish(true);
 }
 
+void SimWorker::setTolerances(double atol, double rtol) {
+    // The CLI's ranges (--atol in [0, 1], --rtol in (0, 1]); anything else is not sent by the GUI.
+    if (!(atol >= 0.0 && atol <= 1.0 && rtol > 0.0 && rtol <= 1.0)) return;
+    if (m_lanes.empty()) {
+        m_lanes.setTolerances(atol, rtol);
+        return;
+    }
+    Input input;
+    input.kind = Input::Tolerances;
+    input.value = atol;
+    input.value2 = rtol;
+    logInput(std::move(input));
+    publish(true);
+}
+
 void SimWorker::setStepDoubling(bool on) {
     if (m_lanes.empty()) {
         m_lanes.setStepDoubling(on);
@@ -338,6 +353,8 @@ void SimWorker::publish(bool force) {
     frame->stepsPerSecond = m_pacer.stepsPerSecond();
     frame->fallingBehind = m_pacer.fallingBehind();
     frame->explicitDtLimit = m_lanes.dtLimit();
+    frame->atol = m_lanes.atol();
+    frame->rtol = m_lanes.rtol();
     frame->timeline = timelineInfo();
     frame->lanes = m_lanes.laneFrames(m_forcesWanted, m_selected);
     m_publisher.publish(std::move(frame));
@@ -393,6 +410,7 @@ void SimWorker::applyInput(const Input& input) {
                 emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
             break;
         case Input::StepDoubling: m_lanes.setStepDoubling(input.value != 0.0); break;
+        case Input::Tolerances: m_lanes.setTolerances(input.value, input.value2); break;
         case Input::Grab: m_lanes.grab(input.particle, input.anchor); break;
         case Input::Move: m_lanes.moveAnchor(input.anchor); break;
         case Input::Release: m_lanes.release(); break;
@@ -454,7 +472,7 @@ void SimWorker::goTo(long target) {
     m_replaying = false;
     m_until = -1.0;  // shown paused
     m_params = m_lanes.front().parameters();
-    m_lanes.readStepDoubling();
+    m_lanes.readOptions();
     m_failureReported = m_lanes.front().failed();
     m_lanes.updateDtLimit();
 }

@@ -72,6 +72,7 @@ public:
     void setParameter(simcore::Param id, double value);
     void setSpeed(int speed);
     void setStepDoubling(bool on);
+    void setTolerances(double atol, double rtol);
     void setForcesWanted(bool on);
     // Whether each recorded row gets its error bands (Simulation::observableErrors: two
     // measurements per row, so only while the plots show them).
@@ -133,12 +134,13 @@ private:
 
     // Time travel. What was done between two steps, replayed when a moment is re-simulated.
     struct Input {
-        enum Kind { Parameter, Integrator, StepDoubling, Grab, Move, Release, Until };
+        enum Kind { Parameter, Integrator, StepDoubling, Tolerances, Grab, Move, Release, Until };
         long moment = 0;                  // done at this moment (after its step)
         Kind kind = Parameter;
         simcore::Param param = simcore::Param::Count;  // Parameter
         std::string key;                  // Integrator: the name
-        double value = 0.0;               // Parameter, StepDoubling (0/1), Until
+        double value = 0.0;               // Parameter, StepDoubling (0/1), Until, Tolerances: atol
+        double value2 = 0.0;              // Tolerances: rtol
         int particle = -1;                // Grab
         Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // Grab, Move
     };

@@ -69,6 +69,8 @@ public:
     void setParameter(const QString& key, double value);
     void setSpeed(Speed speed);
     void setStepDoubling(bool on);
+    // The adaptive methods' tolerances (rk45, cvode-bdf, cvode-adams), every lane; logged for time travel.
+    void setTolerances(double atol, double rtol);
     void setForcesWanted(bool on);
     void setErrorBandsWanted(bool on);  // fill the rows' error bands (Diagnostics::errors)
     void setStartKick(double innerVx, double outerVx);

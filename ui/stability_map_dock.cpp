@@ -78,6 +78,9 @@ StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability 
     m_measured->setLineStyle(QCPGraph::lsNone);
     m_measured->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QPen(QColor(210, 30, 30), 2.5), Qt::NoBrush, 14));
     m_measured->setName(tr("measured limit"));
+    // Equal scales, checked on the axis rect the plot is about to draw into (its size is known
+    // only once the layout has run: tick labels and the legend take their share first).
+    connect(m_plot, &QCustomPlot::afterLayout, this, &StabilityMapDock::keepEqualAspect);
     m_measured->removeFromLegend();
     m_plot->legend->setVisible(true);
     QFont small = font();
@@ -317,6 +320,19 @@ void StabilityMapDock::fitView() {
     }
     m_plot->xAxis->setRange(x0, x1);
     m_plot->yAxis->setRange(y0, y1);
+    drawRegion();
+}
+
+void StabilityMapDock::keepEqualAspect() {
+    // Widen the axis with fewer units per pixel about its centre until both have the same: a
+    // circle (Euler's region) stays a circle whatever the dock's shape.
+    const QRect rect = m_plot->axisRect()->rect();
+    if (rect.width() < 10 || rect.height() < 10) return;
+    const QCPRange xr = m_plot->xAxis->range(), yr = m_plot->yAxis->range();
+    const double px = xr.size() / rect.width(), py = yr.size() / rect.height();
+    if (!(px > 0) || !(py > 0) || std::abs(px - py) <= 1e-9 * std::max(px, py)) return;
+    if (px < py) m_plot->xAxis->setRange(xr.center(), py * rect.width(), Qt::AlignCenter);
+    else m_plot->yAxis->setRange(yr.center(), px * rect.height(), Qt::AlignCenter);
     drawRegion();
 }
 

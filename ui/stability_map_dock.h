@@ -96,6 +96,7 @@ private:
     void present(const Result& result);
     void fitView();
     void drawRegion();
+    void keepEqualAspect();
     void showMeasured();
 
     QCustomPlot* m_plot = nullptr;

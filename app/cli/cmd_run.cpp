@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/cli.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
@@ -49,13 +51,56 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
     }
 }
 
+// --json: the summary as one JSON object (SI units, as the text's), whatever the run's end:
+// "status" is ok, failed (with "failure": reason, step, time) or stopped (--max-steps).
+void printSummaryJson(const simcore::Simulation& sim, const SceneSetup& setup, double wallSeconds, const std::string& status) {
+    const simcore::Diagnostics& d = sim.diagnostics();
+    const simcore::Topology& topo = sim.topology();
+    nlohmann::ordered_json j = {
+        {"scene", setup.sceneName},
+        {"particles", topo.particleCount()},
+        {"springs", topo.springCount()},
+        {"surfaces", topo.surfaces.size()},
+        {"integrator", sim.integrator().name()},
+        {"dt", sim.dt()},
+        {"steps", d.step},
+        {"t", d.time},
+        {"status", status},
+    };
+    if (sim.failure())
+        j["failure"] = {{"reason", sim.failure()->reason}, {"step", sim.failure()->step}, {"time", sim.failure()->time}};
+    nlohmann::ordered_json energy = {{"kinetic", d.kinetic}, {"spring", d.springTotal()}, {"gravity", d.gravity}};
+    if (d.hasGas) energy["gas"] = d.gas;
+    if (!sim.contactProjection()) energy["contact"] = d.contact;
+    energy["total"] = d.total();
+    j["energy"] = energy;
+    j["removed"] = sim.contactProjection()
+                       ? nlohmann::ordered_json{{"damping", d.removedDamping}, {"collisions", d.removedCollisions}}
+                       : nlohmann::ordered_json{{"damping", d.removedDamping}, {"contact", d.removedContact}};
+    j["energy_drift"] = d.energyDrift();
+    if (d.hasGas)
+        j["layers"] = {{"volume_inner", d.volume[0]}, {"volume_outer", d.volume[1]},
+                       {"pressure_inner", d.pressure[0]}, {"pressure_outer", d.pressure[1]}};
+    j["cost"] = {{"force_evaluations", d.forceEvaluations}, {"wall_seconds", wallSeconds},
+                 {"steps_per_second", wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0}};
+    if (d.hasSolverCounters) {
+        const simcore::SolverCounters& c = d.solver;
+        j["solver"] = {{"steps", c.steps}, {"rhs_evaluations", c.rhsEvaluations}, {"jacobian_products", c.jacobianProducts},
+                       {"linear_iterations", c.linearIterations}, {"preconditioner_iterations", c.preconditionerIterations},
+                       {"nonlinear_iterations", c.nonlinearIterations}, {"error_test_failures", c.errorTestFailures},
+                       {"convergence_failures", c.convergenceFailures}, {"reinitialisations", c.reinitialisations},
+                       {"order", c.order}, {"step", c.step}};
+    }
+    printJson(j);
+}
+
 struct RunArgs {
     SceneArgs scene;
     double duration = 5.0;
     long every = 1;
     double maxSteps = kMaxSteps;
     std::string csv, state, saveScene;
-    bool quiet = false;
+    bool quiet = false, json = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
 };
@@ -129,7 +174,10 @@ int run(const RunArgs& args) {
             std::fprintf(stderr, "error: %s\n", file->error().c_str());
             return kExitBadInput;
         }
-    if (!args.quiet) printSummary(sim, setup, wall);
+    if (args.json)
+        printSummaryJson(sim, setup, wall, sim.failed() ? "failed" : tooManySteps ? "stopped" : "ok");
+    else if (!args.quiet)
+        printSummary(sim, setup, wall);
     // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a
     // duration that is not a multiple of dt ends past it; it is said, never silent.
     if (!sim.failed() && sim.time() > tEnd + 1e-9 * sim.dt())
@@ -163,7 +211,7 @@ Command addRunCommand(CLI::App& app) {
         ->type_name("T")
         ->check(finiteIn(0.0, 1e7, true))
         ->capture_default_str();
-    sub->add_option("--csv", args->csv, "write the time series (one row per --every steps and the last)")->type_name("FILE");
+    addCsvOption(*sub, args->csv, "write the time series (one row per --every steps and the last)");
     sub->add_option("--every", args->every, "CSV row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
     sub->add_option("--state", args->state, "write the final state: index, layer, position, velocity")->type_name("FILE");
     sub->add_option("--save-scene", args->saveScene, "save the experiment with its final state as a scene file")
@@ -174,6 +222,7 @@ Command addRunCommand(CLI::App& app) {
         ->check(finiteIn(1.0, 1e12, false))
         ->default_str("1e9");
     sub->add_flag("--quiet", args->quiet, "no summary on standard output");
+    addJsonFlag(*sub, args->json);
     addIntegratorOptions(*sub, args->integrator);
     return {sub, [args] { checkRun(*args); }, [args] { return run(*args); }};
 }

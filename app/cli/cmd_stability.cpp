@@ -143,7 +143,7 @@ Command addStabilityCommand(CLI::App& app) {
     sub->add_option("--hmin", args->hMin, "smallest dt scanned [s]")->type_name("H")->check(finiteIn(0.0, 1.0, true))->capture_default_str();
     sub->add_option("--hmax", args->hMax, "largest dt scanned [s]")->type_name("H")->check(finiteIn(0.0, 1.0, true))->capture_default_str();
     sub->add_option("--shard", args->shard, "scan the K-th of N equal parts of the integrators (1-based)")->type_name("K/N");
-    sub->add_option("--csv", args->csv, "write one row per integrator")->type_name("FILE");
+    addCsvOption(*sub, args->csv, "write one row per integrator");
     sub->add_flag("--quiet", args->quiet, "no table on standard output");
     return {sub, [args] { checkStability(*args); }, [args] { return runStability(*args); }};
 }
