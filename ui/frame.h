@@ -26,6 +26,8 @@
 #include "simcore/simulation.h"
 #include "simlab/scenefile.h"
 
+#include "ui/body_measures.h"
+
 namespace elui {
 
 // Topology and everything else that changes only on a rebuild.
@@ -55,6 +57,8 @@ struct LaneFrame {
     QString integrator;
     std::vector<float> positions;         // 3N [m], x0 y0 z0 x1 ...
     std::vector<float> forces;            // 3N [N], only when force vectors are asked for
+    std::vector<float> velocities;        // 3N [m/s]
+    BodyMeasures body;                    // centre of mass, layer centres, lowest point
     simcore::Diagnostics diagnostics;
     std::optional<simcore::Failure> failure;
     // A failed lane: its recorded state some time before the failure (the latest checkpoint at
