@@ -15,6 +15,7 @@
 #include "ui/plot_dock.h"
 #include "ui/plot_ticks.h"
 #include "ui/pv_dock.h"
+#include "ui/reference_run.h"
 #include "ui/simulation_controller.h"
 #include "ui/studies_dialog.h"
 
@@ -257,6 +258,65 @@ private slots:
             else if (hidden) QCOMPARE(banded, 0);
             else QCOMPARE(banded, 0);
         }
+    }
+
+    // The reference curve: a converged rk45 run from the run's start, beside the curves; the
+    // run's distance to it is the error of the run so far. DT edits keep it (the exact
+    // solution is the same), a change of the physics stops it there, a reset starts it over.
+    void referenceCurveIsTheGlobalError() {
+        MainWindow window(false);
+        PlotDock* dock = window.plotDock();
+        dock->setReferenceShown(true);
+        simcore::ParameterSet ring(SceneKind::Ring2d);
+        QVERIFY(!ring.set(simcore::Param::Dt, 0.05));
+        window.startScene(ring, {QStringLiteral("implicit-euler")});
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, testsupport::kHangGuardMs);
+        SimulationController* c = window.controller();
+        auto runTo = [&](double t) {
+            c->runUntil(t);
+            QTRY_VERIFY_WITH_TIMEOUT(c->latest()->lanes[0].diagnostics.time >= t - 1e-9 && !c->latest()->running,
+                                     testsupport::kHangGuardMs);
+        };
+        runTo(0.5);
+        c->setParameter(simcore::Param::Dt, 0.025);  // not a change of the physics
+        runTo(1.0);
+        const double tRun = c->latest()->lanes[0].diagnostics.time;
+        QTRY_COMPARE_WITH_TIMEOUT(dock->referenceTime(), tRun, testsupport::kHangGuardMs);
+
+        // The reference is rk45 at 1e-10 from the same start, computed here on its own.
+        simcore::Simulation exact(ring, "rk45");
+        simcore::IntegratorOptions tight = exact.integratorOptions();
+        tight.atol = tight.rtol = ReferenceRun::kTolerance;
+        exact.setIntegratorOptions(tight);
+        QVERIFY(exact.advanceTo(tRun));
+        const int total = dock->seriesNames("energy").indexOf("total");
+        const simcore::Diagnostics& d = exact.diagnostics();
+        QVERIFY(total >= 0);
+        QVERIFY(qAbs(dock->referenceValueAt("energy", total, tRun) - d.total()) <= 1e-9 * qAbs(d.total()));
+        QVERIFY(qAbs(dock->referenceValueAt("volume", 0, tRun) - d.volume[0]) <= 1e-9 * d.volume[0]);
+        // The error shown is the run's curve minus the reference, at a row of the run.
+        const double error = dock->valueAt("energy", total, tRun) - d.total();
+        QVERIFY2(qAbs(dock->referenceEnergyError() - error) <= 1e-9 * qAbs(error),
+                 qPrintable(QStringLiteral("%1 vs %2").arg(dock->referenceEnergyError()).arg(error)));
+        QVERIFY(qAbs(error) > 0.01);  // implicit Euler at DT 0.05/0.025 is far from converged
+        QVERIFY2(dock->referenceNote().contains(QStringLiteral("t = %1 s").arg(tRun, 0, 'f', 3)),
+                 qPrintable(dock->referenceNote()));
+        QVERIFY(dock->referencePointCount("volume", 0) >= int(1.0 / ReferenceRun::kSampleInterval));
+
+        // A change of the physics: the reference stops where it happened.
+        c->setParameter(simcore::Param::Ks, 2000.0);
+        runTo(1.5);
+        QTRY_VERIFY_WITH_TIMEOUT(dock->referenceNote().contains(QStringLiteral("changed at t = 1.000 s")),
+                                 testsupport::kHangGuardMs);
+        QCOMPARE(dock->referenceTime(), tRun);
+        QCOMPARE(dock->referenceRun()->samples().back().time, tRun);
+
+        // A reset starts it over from the new start; switched off it stops and says nothing.
+        c->reset();
+        QTRY_COMPARE_WITH_TIMEOUT(dock->referencePointCount("volume", 0), 1, testsupport::kHangGuardMs);
+        dock->setReferenceShown(false);
+        QVERIFY(dock->referenceNote().isEmpty());
+        QVERIFY(!dock->referenceRun()->active());
     }
 
     void readoutShowsTheSolverCounters() {

@@ -12,6 +12,7 @@
 // The scene part (topology, rest lengths, box) changes only when the body is rebuilt; it is
 // shared between frames, so the viewport uploads topology only when `scene` changes.
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -104,6 +105,12 @@ struct Frame {
     double atol = 1e-6, rtol = 1e-6;      // the adaptive methods' tolerances in use [m, m/s] and [1]
     quint64 serial = 0;                   // increases with every published frame
     TimelineInfo timeline;
+    // For the reference curve (reference_run.h): lane 0's state when the timeline began (a
+    // new scene, a reset, an opened file; the same pointer until the next one), and the
+    // simulated time of the first change of the physics since then that is still on the
+    // timeline: a parameter edit other than DT, or a grab (+inf: none).
+    std::shared_ptr<const simcore::SimulationSnapshot> runStart;
+    double physicsChangedAt = std::numeric_limits<double>::infinity();
 };
 
 using FramePtr = std::shared_ptr<const Frame>;

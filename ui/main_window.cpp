@@ -745,6 +745,7 @@ void MainWindow::onFrame(const FramePtr& frame) {
     m_measureDock->showFrame(frame);
     m_plotDock->setLive(frame->running);
     m_plotDock->setViews(*frame);
+    m_plotDock->followReference(*frame);
     m_energyBarsDock->showFrame(*frame);
     QStringList integrators;
     for (const LaneFrame& lane : frame->lanes) integrators << lane.integrator;

@@ -103,6 +103,7 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     // the window) wider than a projector's 1280 px once the energy docks open beside it.
     layout->addWidget(m_showBands);
     layout->addWidget(m_bandNote);
+    createReferenceControls(host, layout);
     // The plots scroll when the screen is too short for them (a projector in presentation
     // mode): each keeps the height its axes and legend need instead of being squashed.
     auto* scroll = new QScrollArea(host);
@@ -280,6 +281,7 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     // The views' graphs again for the new plots (the views stay until a frame says otherwise).
     for (int v = 1; v < int(m_views.size()); ++v) addViewGraphs(v);
     updateViewLegend();
+    rebuildReferenceGraphs();
     clear();
     updateCursor();
 }

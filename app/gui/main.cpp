@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
                                       QStringLiteral("SECONDS"), QStringLiteral("0"));
     const QCommandLineOption optionsOpt(QStringLiteral("show"),
                                         QStringLiteral("Display switches, comma separated: strain, forces, velocities, normals, noparticles, "
-                                                       "nofaces, nostructural, noradius, noshear, nobox, errorband."),
+                                                       "nofaces, nostructural, noradius, noshear, nobox, errorband, reference."),
                                         QStringLiteral("LIST"));
     const QCommandLineOption docksOpt(QStringLiteral("docks"),
                                       QStringLiteral("Open these docks, comma separated: %1.")
@@ -324,6 +324,7 @@ int main(int argc, char** argv) {
             else if (s == QLatin1String("noshear")) o.springs[2] = false;
             else if (s == QLatin1String("nobox")) o.box = false;
             else if (s == QLatin1String("errorband")) window.plotDock()->setBandsShown(true);
+            else if (s == QLatin1String("reference")) window.plotDock()->setReferenceShown(true);
             else return fail(QStringLiteral("unknown --show switch %1").arg(quoted(s)));
         }
         window.setViewOptions(o);
