@@ -475,6 +475,33 @@ private slots:
             dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/study.png");
     }
 
+    void studyAxesKeepTheirLabelsApart() {
+        // DTs spanning less than 1.6 decades: the log ticker falls back to linear steps with
+        // long labels (0.0125, 0.015, 0.0175), which ran into each other at 1000 px.
+        simcore::ParameterSet p(SceneKind::Spring1d);
+        WorkPrecisionDialog dialog(p);
+        dialog.setSteps("0.02 0.016 0.0125 0.01");
+        dialog.setDuration(0.4);
+        dialog.setRepeats(1);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QVERIFY(dialog.busy());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, testsupport::kHangGuardMs);
+        dialog.resize(1000, 700);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        dialog.plot()->replot();
+        dialog.plot()->replot();  // the second draw: the ticks chosen for the laid-out axes
+        QCOMPARE(dialog.plot()->axisRectCount(), 2);
+        for (QCPAxisRect* rect : dialog.plot()->axisRects())
+            for (QCPAxis* axis : {rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft)}) {
+                int inRange = 0;
+                for (double t : axis->tickVector()) inRange += axis->range().contains(t);
+                QVERIFY2(inRange >= 2, qPrintable(axis->label()));
+                QVERIFY2(!tickLabelsOverlap(axis), qPrintable(axis->label() + ": " + QStringList(axis->tickVectorLabels().toList()).join(" ")));
+            }
+    }
+
     void conservationStudyClassifiesTheGrowth() {
         // simlab's long-time energy (the CLI's `conservation`) behind the dialog.
         simcore::ParameterSet p(SceneKind::Spring1d);

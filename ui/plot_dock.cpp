@@ -131,6 +131,8 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_driftPlot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
     m_driftPlot->yAxis->setNumberFormat(QStringLiteral("eb"));
     m_driftPlot->yAxis->setNumberPrecision(0);
+    keepTickLabelsApart(m_driftPlot->xAxis);
+    keepTickLabelsApart(m_driftPlot->yAxis);
     legendUnderAxes(m_driftPlot, font());
     m_driftMarks = m_driftPlot->addGraph();
     m_driftMarks->setLineStyle(QCPGraph::lsNone);
