@@ -266,7 +266,10 @@ private slots:
     void referenceCurveIsTheGlobalError() {
         MainWindow window(false);
         PlotDock* dock = window.plotDock();
+        auto legendHasReference = [&] { return dock->legendNames("volume").join('|').contains("reference"); };
+        QVERIFY(!legendHasReference());  // off: not drawn, not in the legend
         dock->setReferenceShown(true);
+        QVERIFY(legendHasReference());
         simcore::ParameterSet ring(SceneKind::Ring2d);
         QVERIFY(!ring.set(simcore::Param::Dt, 0.05));
         window.startScene(ring, {QStringLiteral("implicit-euler")});
@@ -316,6 +319,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(dock->referencePointCount("volume", 0), 1, testsupport::kHangGuardMs);
         dock->setReferenceShown(false);
         QVERIFY(dock->referenceNote().isEmpty());
+        QVERIFY(!legendHasReference());
         QVERIFY(!dock->referenceRun()->active());
     }
 

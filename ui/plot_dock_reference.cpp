@@ -43,6 +43,12 @@ void PlotDock::createReferenceControls(QWidget* host, QVBoxLayout* layout) {
         if (!on) m_reference->stop();
         for (const auto& graphs : m_referenceGraphs)
             for (const ReferenceGraph& r : graphs) r.graph->setVisible(on);
+        // One legend line per plot, only while the curve is drawn.
+        for (const auto& graphs : m_referenceGraphs)
+            if (!graphs.empty()) {
+                if (on) graphs.front().graph->addToLegend();
+                else graphs.front().graph->removeFromLegend();
+            }
         updateReferenceNote();
         scheduleReplot();
     });
@@ -65,7 +71,8 @@ void PlotDock::rebuildReferenceGraphs() {
             QCPGraph* g = m_plots[i]->addGraph();
             g->setPen(QPen(QColor(20, 20, 20), 1.2, Qt::DashLine));
             g->setName(tr("reference (rk45, 1e-10)"));
-            if (!graphs.empty()) g->removeFromLegend();  // one legend line per plot
+            // One legend line per plot, while the curve is drawn.
+            if (!graphs.empty() || !m_showReference->isChecked()) g->removeFromLegend();
             g->setVisible(m_showReference->isChecked());
             graphs.push_back({int(s), g});
         }

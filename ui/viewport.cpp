@@ -801,15 +801,20 @@ void Viewport::layoutInfo() {
     m_info->setFixedHeight(height > 0 ? height : m_info->sizeHint().height());
 }
 
+QString Viewport::overlayText() const { return m_info->text(); }
+
 void Viewport::updateOverlay() {
     if (!m_frame) return;
     const LaneFrame& lane = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))];
     QString html;
     if (!m_title.isEmpty()) html += QStringLiteral("<b>%1</b><br>").arg(m_title.toHtmlEscaped());
     html += QStringLiteral("t = %1 s").arg(lane.diagnostics.time, 0, 'f', 3);
-    if (m_frame->lanes.size() > 1 && m_lane > 0)
+    // The distance to the reference view: view 1, or the first live view once view 1 has failed
+    // (the Run dock's "distance to view N"); none on the reference view itself.
+    const int reference = std::clamp(lane.divergenceReference, 0, int(m_frame->lanes.size()) - 1);
+    if (m_frame->lanes.size() > 1 && m_lane != reference && !lane.failure)
         html += QStringLiteral("<br>%1 from %2: %3 m (RMS)")
-                    .arg(tr("distance"), m_frame->lanes[0].integrator)
+                    .arg(tr("distance"), m_frame->lanes[std::size_t(reference)].integrator)
                     .arg(lane.divergence, 0, 'g', 3);
     if (lane.failure)
         html += QStringLiteral("<br><span style='background:#c0392b; color:white'>&nbsp;%1&nbsp;</span>")

@@ -68,6 +68,7 @@ public:
     // The ruler (ViewOptions::ruler): its length [m] (0: none drawn), and the label shown.
     double rulerLength() const;
     QString rulerText() const;
+    QString overlayText() const;  // the text over the view (title, time, distance, failure)
 
 public slots:
     void showFrame(const elui::FramePtr& frame);
