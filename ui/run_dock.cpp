@@ -203,10 +203,11 @@ QString RunDock::viewTable(const Frame& frame) {
         return QStringLiteral("%1 J").arg(num(l.diagnostics.energyDrift(), 'g', 3));
     });
     const int reference = lanes.size() > 1 ? lanes[1].divergenceReference : 0;
-    html += cells(tr("distance to view %1").arg(reference + 1), [&](const LaneFrame& l, std::size_t v) {
+    // On two lines: the longest label would otherwise set the dock's width.
+    html += cells(tr("distance<br>to view %1").arg(reference + 1), [&](const LaneFrame& l, std::size_t v) {
         if (int(v) == reference) return QStringLiteral("—");
         if (l.failure) return tr("failed");
-        return QStringLiteral("%1 m").arg(num(l.divergence, 'e', 2));
+        return QStringLiteral("%1 m").arg(num(l.divergence, 'g', 3));
     });
     return html + QStringLiteral("</table>");
 }
@@ -256,17 +257,22 @@ void RunDock::showFrame(const FramePtr& frame) {
         return QStringLiteral("<tr><td>%1&nbsp;</td><td align=right>%2</td></tr>").arg(name, value);
     };
     QString html = QStringLiteral("<table cellspacing=0>");
-    html += row(tr("simulated time"), QStringLiteral("%1 s").arg(num(d.time, 'f', 3)));
+    // Side by side the first table holds what the views share (the clock, the common step);
+    // each view's own numbers are in the Each view table under it, not view 1's twice over
+    // (which also kept the dock within a 1280 px projector at presentation size).
+    if (single) html += row(tr("simulated time"), QStringLiteral("%1 s").arg(num(d.time, 'f', 3)));
     html += row(tr("wall time"), QStringLiteral("%1 s").arg(num(frame->wallSeconds, 'f', 2)));
-    html += row(tr("steps"), num(static_cast<long long>(d.step)));
+    if (single) html += row(tr("steps"), num(static_cast<long long>(d.step)));
     html += row(tr("steps/s"), frame->running ? num(static_cast<long long>(std::lround(frame->stepsPerSecond))) : tr("paused"));
     html += row(tr("step taken"), QStringLiteral("%1 s").arg(num(d.dt, 'g', 3)));
-    html += row(tr("error estimate"),
-                d.errorEstimate >= 0 ? QStringLiteral("%1 m").arg(num(d.errorEstimate, 'e', 2)) : tr("off"));
-    html += row(tr("contact energy"), QStringLiteral("%1 J").arg(num(d.contact, 'g', 4)));
-    html += row(tr("removed by contact"),
-                QStringLiteral("%1 J").arg(num(d.removedContact + d.removedCollisions, 'g', 4)));
-    html += row(tr("energy drift"), QStringLiteral("%1 J").arg(num(d.energyDrift(), 'e', 2)));
+    if (single) {
+        html += row(tr("error estimate"),
+                    d.errorEstimate >= 0 ? QStringLiteral("%1 m").arg(num(d.errorEstimate, 'e', 2)) : tr("off"));
+        html += row(tr("contact energy"), QStringLiteral("%1 J").arg(num(d.contact, 'g', 4)));
+        html += row(tr("removed by contact"),
+                    QStringLiteral("%1 J").arg(num(d.removedContact + d.removedCollisions, 'g', 4)));
+        html += row(tr("energy drift"), QStringLiteral("%1 J").arg(num(d.energyDrift(), 'e', 2)));
+    }
     if (d.hasSolverCounters) {  // CVODE's own counters (issue 13)
         const simcore::SolverCounters& c = d.solver;
         html += row(tr("force evaluations"), num(static_cast<long long>(d.forceEvaluations)));
