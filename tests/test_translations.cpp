@@ -7,7 +7,8 @@
 //   the same     a translation keeps its source's placeholders (%1, %2 ...), units in brackets
 //                ([s], [N/m]), HTML tags and line breaks
 //   lessons      each guided experiment's text exists in German, French and Spanish, with the
-//                sections' translated titles and the same measured answers (keys and values)
+//                sections' translated titles, the same measured answers (keys and values) and
+//                the same marked settings, values to try and "run until" times
 //   the window   in Arabic the layout runs right to left (the menu bar starts on the right) and
 //                the menus are in Arabic; in German the numbers have a decimal comma and a field
 //                reads "0,004" as 0.004
@@ -185,6 +186,16 @@ private slots:
                 QCOMPARE(answers[key].value, englishAnswers[id][key].value);
                 QCOMPARE(answers[key].relativeTolerance, englishAnswers[id][key].relativeTolerance);
             }
+            // What to do: the same marked settings, values to try and "run until" times.
+            const QList<LessonValue> values = lessonValues(html), englishValues = lessonValues(english[id]);
+            QCOMPARE(values.size(), englishValues.size());
+            for (qsizetype i = 0; i < values.size(); ++i) {
+                QVERIFY2(values[i].valid, qPrintable(id + QStringLiteral(": ") + values[i].key));
+                QCOMPARE(values[i].kind, englishValues[i].kind);
+                QCOMPARE(values[i].key, englishValues[i].key);
+                QCOMPARE(values[i].value, englishValues[i].value);
+            }
+            QCOMPARE(lessonUntil(html), lessonUntil(english[id]));
         }
         applyLanguage(QStringLiteral("en"));
     }

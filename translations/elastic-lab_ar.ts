@@ -40,26 +40,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Cheapest and least stable: on an undamped spring it gains energy at every DT. On the two-layer ring it holds only below DT ≈ 0.007 s.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Two force evaluations per step, second order; on the two-layer ring its limit is about DT 0.0074 s (a single ring survives 0.03).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Four evaluations, fourth order; stable up to h·ω ≈ 2.8: about DT 0.013 s on the two-layer ring, so it fails at the thesis&apos;s 0.03 and 0.3.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Same cost as Euler, but energy stays bounded on an undamped spring (h·ω &lt; 2).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Velocity Verlet: time-reversible, good long-run energy behaviour.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Three Verlet substeps (the middle one backwards): fourth order, and energy stays bounded like Verlet&apos;s; stable up to h·ω ≈ 1.57 on an undamped spring.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -104,10 +84,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&lt;p&gt;&lt;b&gt;Help → Experiments&lt;/b&gt;: %1 guided experiments, each set up in one click, with what to change, what to look at and the answer measured with elastic-lab-cli.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&lt;h3&gt;Mouse&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Left-drag on the body: grab the nearest outer particle and pull it.&lt;/li&gt;&lt;li&gt;Left-drag elsewhere, or Shift+left-drag (3D): orbit. Right- or middle-drag: pan. Wheel: zoom. View → Reset view.&lt;/li&gt;&lt;/ul&gt;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -126,10 +102,6 @@
     <message>
         <source>README</source>
         <translation>README</translation>
-    </message>
-    <message>
-        <source>Help &gt; Experiments explains what to do.</source>
-        <translation>المساعدة &gt; التجارب تشرح ما يجب فعله.</translation>
     </message>
     <message>
         <source>1. How large may DT be for Euler?</source>
@@ -217,7 +189,7 @@
     </message>
     <message>
         <source>Start</source>
-        <translation>البداية</translation>
+        <translation>ابدأ</translation>
     </message>
     <message>
         <source>gas nRT</source>
@@ -406,6 +378,66 @@
     <message>
         <source>none</source>
         <translation>لا شيء</translation>
+    </message>
+    <message>
+        <source>Cheapest and least stable: on an undamped spring it gains energy at every DT. On the two-layer ring it holds for 2 s up to DT %1 s (measured).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Two force evaluations per step, second order; on the two-layer ring it holds for 2 s up to DT %1 s (measured), so it fails at the thesis&apos;s 0.03.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Four evaluations, fourth order; stable up to h·ω ≈ 2.8: on the two-layer ring it holds for 2 s up to DT %1 s (measured), so it fails at the thesis&apos;s 0.03 and 0.3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Same cost as Euler, but energy stays bounded on an undamped spring (h·ω &amp;lt; 2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity Verlet: time-reversible, good long-run energy behaviour. Second order without damping; with the dampers on (every scene here) its damping sees the half-step velocity and it is first order: the fitted order on the damped spring is %1 (measured).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>2 (1 damped)</source>
+        <translation>2 (1 مع التخميد)</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Lessons&lt;/b&gt; menu (or Help → Experiments): %1 guided experiments, each set up in one click, with what to change, what to look at and the answer measured with elastic-lab-cli; the Lesson dock shows what each answer expects beside what your run gives.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lessons &gt; Lesson texts explains what to do.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>height of particle %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>speed of particle %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>height of the inner layer&apos;s centre</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>height of the outer layer&apos;s centre</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centre-of-mass height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centre-of-mass speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>layers&apos; separation</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -636,6 +668,157 @@ total %2, at the start %3</source>
     </message>
 </context>
 <context>
+    <name>elui::LessonDock</name>
+    <message>
+        <source>Lesson</source>
+        <translation>الدرس</translation>
+    </message>
+    <message>
+        <source>Run until t =</source>
+        <translation>شغّل حتى t =</translation>
+    </message>
+    <message>
+        <source>Run as fast as possible and pause at this simulated time.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated time between Start and Stop (the first view&apos;s clock).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>ابدأ</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>صفر</translation>
+    </message>
+    <message>
+        <source>answer</source>
+        <translation>الإجابة</translation>
+    </message>
+    <message>
+        <source>expected</source>
+        <translation>المتوقع</translation>
+    </message>
+    <message>
+        <source>you got</source>
+        <translation>ما حصلت عليه</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>قِس</translation>
+    </message>
+    <message>
+        <source>Measure every answer on the parameters in use, as the lesson&apos;s elastic-lab-cli commands do (stability scans, weightless impacts, runs).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;small&gt;you got: from your run, or &lt;i&gt;measured&lt;/i&gt; (Measure); green within the text&apos;s tolerance, amber off it&lt;/small&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No lesson: choose one in the Lessons menu. Run until and the stopwatch work for any scene.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopwatch: &lt;b&gt;%1 s&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>أوقف</translation>
+    </message>
+    <message>
+        <source>read off your run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>press Measure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>measured on the parameters in use</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t = &lt;b&gt;%1 s&lt;/b&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: energy drift &lt;b&gt;%2 J&lt;/b&gt;%3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, blew up at t = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centre of mass: %1 m above the floor, vertical speed %2 m/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>layer centres above the floor: inner %1 m, outer %2 m; the inner one sits &lt;b&gt;%3 m&lt;/b&gt; %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>above</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centre of mass hit the floor at %1 m/s%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, left it at %1 m/s (ratio %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>lowest point %1 m above the floor%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>lowest point %1 m into the floor (contact)%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; last left the floor at t = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inner layer: %1 %2, pressure %3 %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>measuring on the parameters in use…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run until a time, a stopwatch, and each answer of the lesson beside what your run gives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run until this simulated time</source>
+        <translation>شغّل حتى هذا الزمن المحاكى</translation>
+    </message>
+    <message>
+        <source>The simulated time [s] at which Run until pauses</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start or stop the stopwatch on the simulated clock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set the stopwatch back to zero</source>
+        <translation>أعد ساعة الإيقاف إلى الصفر</translation>
+    </message>
+</context>
+<context>
     <name>elui::LessonsDialog</name>
     <message>
         <source>Experiments</source>
@@ -795,10 +978,6 @@ total %2, at the start %3</source>
     <message>
         <source>Elastic Lab &amp;help</source>
         <translation>&amp;مساعدة Elastic Lab</translation>
-    </message>
-    <message>
-        <source>&amp;Experiments...</source>
-        <translation>&amp;تجارب...</translation>
     </message>
     <message>
         <source>Guided experiments: a scene set up in one click, what to change, what to look at, the measured answer</source>
@@ -962,10 +1141,6 @@ Plots, parameters and exports still work.</source>
         <translation> اضغط تشغيل (مسافة).</translation>
     </message>
     <message>
-        <source>%1: set up. Help &gt; Experiments says what to change and what to look at. Press Run (Space).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&amp;Pause</source>
         <translation>إي&amp;قاف مؤقت</translation>
     </message>
@@ -1126,6 +1301,93 @@ Plots, parameters and exports still work.</source>
         <source>&amp;Clear abandoned future</source>
         <translation>مسح المستقبل ال&amp;متروك</translation>
     </message>
+    <message>
+        <source>Velocity vectors</source>
+        <translation>متجهات السرعة</translation>
+    </message>
+    <message>
+        <source>Ruler (drag to measure)</source>
+        <translation>المسطرة (اسحب للقياس)</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;texts (Experiments)...</source>
+        <translation>&amp;نصوص الدروس (التجارب)...</translation>
+    </message>
+    <message>
+        <source>&amp;Lessons</source>
+        <translation>ال&amp;دروس</translation>
+    </message>
+    <message>
+        <source>%1: set up. Lessons &gt; Lesson texts says what to change and what to look at. Press Run (Space).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plotting the %1 against time (the Measured dock).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Particle %1</source>
+        <translation>الجسيم %1</translation>
+    </message>
+    <message>
+        <source>Plot its height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plot its speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plot the inner layer&apos;s centre height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plot the outer layer&apos;s centre height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Body</source>
+        <translation>الجسم</translation>
+    </message>
+    <message>
+        <source>Plot the centre-of-mass height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plot the centre-of-mass speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plot the layers&apos; separation</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>elui::MeasurePlotDock</name>
+    <message>
+        <source>Measured</source>
+        <translation>المقيس</translation>
+    </message>
+    <message>
+        <source>Right-click a particle or the body in the view to plot it here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove all</source>
+        <translation>أزل الكل</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation type="unfinished">t [s]</translation>
+    </message>
+    <message>
+        <source>length [m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>speed [m/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>elui::Pacer</name>
@@ -1155,6 +1417,14 @@ Plots, parameters and exports still work.</source>
     <message>
         <source>Every parameter of the scene with its unit; a change applies at once</source>
         <translation>كل معاملات المشهد مع وحداتها؛ يُطبَّق التغيير فورًا</translation>
+    </message>
+    <message>
+        <source>Reset all to the scene&apos;s defaults</source>
+        <translation>أعد الكل إلى قيم المشهد الافتراضية</translation>
+    </message>
+    <message>
+        <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1186,6 +1456,22 @@ Plots, parameters and exports still work.</source>
     <message>
         <source>, whole numbers</source>
         <translation>، أعداد صحيحة</translation>
+    </message>
+    <message>
+        <source>Back to the default: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to the default: %1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 from %2 to %3 %4%5 (the field takes any value in %6)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, logarithmic</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1292,6 +1578,42 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>Volume, pressure and energy against simulated time, one plot under the other</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference curve (rk45)</source>
+        <translation>منحنى مرجعي (rk45)</translation>
+    </message>
+    <message>
+        <source>A converged solution (rk45 at tolerance 1e-10) from the run&apos;s start, computed beside the run on a thread of its own and drawn dashed: the distance between a curve and it is the error of the run so far (the global error), where the band is the error one step adds. It follows the run up to the first change of the physics (a parameter edit other than DT, or a drag).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reference (rk45, 1e-10)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference: computing from the run&apos;s start…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>At t = %1 s the run&apos;s total energy is %2 J from the reference: the error of the run so far.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The band there, one step&apos;s error: ±%1 J.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reference itself failed at t = %1 s (%2): the body fails at every step size.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run was changed at t = %1 s (a parameter edit or a drag): the reference stops there.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reference has reached t = %1 s (computing).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1596,10 +1918,6 @@ Plots, parameters and exports still work.</source>
         <translation>انجراف الطاقة</translation>
     </message>
     <message>
-        <source>distance to view %1</source>
-        <translation>المسافة إلى العرض %1</translation>
-    </message>
-    <message>
         <source>failed</source>
         <translation>فشل</translation>
     </message>
@@ -1687,6 +2005,10 @@ Plots, parameters and exports still work.</source>
         <source>Run</source>
         <comment>button: start the simulation</comment>
         <translation>تشغيل</translation>
+    </message>
+    <message>
+        <source>distance&lt;br&gt;to view %1</source>
+        <translation>المسافة&lt;br&gt;إلى العرض %1</translation>
     </message>
 </context>
 <context>
@@ -2097,6 +2419,14 @@ Plots, parameters and exports still work.</source>
     <message>
         <source>Blew up at t = %1 s: %2</source>
         <translation>انفجرت عند t = %1 s: %2</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source> (Δx %1, Δy %2)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -40,26 +40,6 @@
         <translation>Konnte %1 nicht kodieren</translation>
     </message>
     <message>
-        <source>Cheapest and least stable: on an undamped spring it gains energy at every DT. On the two-layer ring it holds only below DT ≈ 0.007 s.</source>
-        <translation>Am billigsten und am wenigsten stabil: an einer ungedämpften Feder gewinnt es bei jedem DT Energie. Am zweischichtigen Ring hält es nur unter DT ≈ 0,007 s.</translation>
-    </message>
-    <message>
-        <source>Two force evaluations per step, second order; on the two-layer ring its limit is about DT 0.0074 s (a single ring survives 0.03).</source>
-        <translation>Zwei Kraftauswertungen pro Schritt, zweite Ordnung; am zweischichtigen Ring liegt seine Grenze bei etwa DT 0,0074 s (ein einzelner Ring übersteht 0,03).</translation>
-    </message>
-    <message>
-        <source>Four evaluations, fourth order; stable up to h·ω ≈ 2.8: about DT 0.013 s on the two-layer ring, so it fails at the thesis&apos;s 0.03 and 0.3.</source>
-        <translation>Vier Auswertungen, vierte Ordnung; stabil bis h·ω ≈ 2,8: etwa DT 0,013 s am zweischichtigen Ring, daher scheitert es an den 0,03 und 0,3 der Diplomarbeit.</translation>
-    </message>
-    <message>
-        <source>Same cost as Euler, but energy stays bounded on an undamped spring (h·ω &lt; 2).</source>
-        <translation>Gleicher Aufwand wie Euler, aber die Energie bleibt an einer ungedämpften Feder beschränkt (h·ω &lt; 2).</translation>
-    </message>
-    <message>
-        <source>Velocity Verlet: time-reversible, good long-run energy behaviour.</source>
-        <translation>Geschwindigkeits-Verlet: zeitumkehrbar, gutes Energieverhalten über lange Zeit.</translation>
-    </message>
-    <message>
         <source>Three Verlet substeps (the middle one backwards): fourth order, and energy stays bounded like Verlet&apos;s; stable up to h·ω ≈ 1.57 on an undamped spring.</source>
         <translation>Drei Verlet-Teilschritte (der mittlere rückwärts): vierte Ordnung, und die Energie bleibt beschränkt wie bei Verlet; stabil bis h·ω ≈ 1,57 an einer ungedämpften Feder.</translation>
     </message>
@@ -104,10 +84,6 @@
         <translation>&lt;h3&gt;Voreinstellungen&lt;/h3&gt;&lt;ul&gt;</translation>
     </message>
     <message>
-        <source>&lt;p&gt;&lt;b&gt;Help → Experiments&lt;/b&gt;: %1 guided experiments, each set up in one click, with what to change, what to look at and the answer measured with elastic-lab-cli.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Hilfe → Experimente&lt;/b&gt;: %1 angeleitete Experimente, jedes mit einem Klick eingerichtet, mit dem, was man ändern und worauf man achten soll, und der mit elastic-lab-cli gemessenen Antwort.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>&lt;h3&gt;Mouse&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Left-drag on the body: grab the nearest outer particle and pull it.&lt;/li&gt;&lt;li&gt;Left-drag elsewhere, or Shift+left-drag (3D): orbit. Right- or middle-drag: pan. Wheel: zoom. View → Reset view.&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;h3&gt;Maus&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Linksziehen auf dem Körper: das nächste äußere Teilchen greifen und daran ziehen.&lt;/li&gt;&lt;li&gt;Linksziehen anderswo oder Umschalt+Linksziehen (3D): drehen. Rechts- oder Mittelziehen: verschieben. Mausrad: zoomen. Ansicht → Ansicht zurücksetzen.&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
@@ -126,10 +102,6 @@
     <message>
         <source>README</source>
         <translation>README</translation>
-    </message>
-    <message>
-        <source>Help &gt; Experiments explains what to do.</source>
-        <translation>Hilfe &gt; Experimente erklärt, was zu tun ist.</translation>
     </message>
     <message>
         <source>1. How large may DT be for Euler?</source>
@@ -407,6 +379,66 @@
         <source>none</source>
         <translation>keiner</translation>
     </message>
+    <message>
+        <source>Cheapest and least stable: on an undamped spring it gains energy at every DT. On the two-layer ring it holds for 2 s up to DT %1 s (measured).</source>
+        <translation>Am billigsten und am wenigsten stabil: an einer ungedämpften Feder gewinnt es bei jedem DT Energie. Am zweischichtigen Ring hält es 2 s lang bis DT %1 s (gemessen).</translation>
+    </message>
+    <message>
+        <source>Two force evaluations per step, second order; on the two-layer ring it holds for 2 s up to DT %1 s (measured), so it fails at the thesis&apos;s 0.03.</source>
+        <translation>Zwei Kraftauswertungen pro Schritt, zweite Ordnung; am zweischichtigen Ring hält es 2 s lang bis DT %1 s (gemessen), scheitert also an den 0,03 der Diplomarbeit.</translation>
+    </message>
+    <message>
+        <source>Four evaluations, fourth order; stable up to h·ω ≈ 2.8: on the two-layer ring it holds for 2 s up to DT %1 s (measured), so it fails at the thesis&apos;s 0.03 and 0.3.</source>
+        <translation>Vier Auswertungen, vierte Ordnung; stabil bis h·ω ≈ 2,8: am zweischichtigen Ring hält es 2 s lang bis DT %1 s (gemessen), scheitert also an den 0,03 und 0,3 der Diplomarbeit.</translation>
+    </message>
+    <message>
+        <source>Same cost as Euler, but energy stays bounded on an undamped spring (h·ω &amp;lt; 2).</source>
+        <translation>Gleicher Aufwand wie Euler, aber die Energie bleibt an einer ungedämpften Feder beschränkt (h·ω &amp;lt; 2).</translation>
+    </message>
+    <message>
+        <source>Velocity Verlet: time-reversible, good long-run energy behaviour. Second order without damping; with the dampers on (every scene here) its damping sees the half-step velocity and it is first order: the fitted order on the damped spring is %1 (measured).</source>
+        <translation>Geschwindigkeits-Verlet: zeitumkehrbar, gutes Energieverhalten über lange Zeit. Zweite Ordnung ohne Dämpfung; mit eingeschalteten Dämpfern (in jeder Szene hier) sieht seine Dämpfung die Geschwindigkeit im halben Schritt, und es ist von erster Ordnung: die angepasste Ordnung an der gedämpften Feder ist %1 (gemessen).</translation>
+    </message>
+    <message>
+        <source>2 (1 damped)</source>
+        <translation>2 (1 gedämpft)</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Lessons&lt;/b&gt; menu (or Help → Experiments): %1 guided experiments, each set up in one click, with what to change, what to look at and the answer measured with elastic-lab-cli; the Lesson dock shows what each answer expects beside what your run gives.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Menü &lt;b&gt;Lektionen&lt;/b&gt; (oder Hilfe → Experimente): %1 angeleitete Experimente, jedes mit einem Klick eingerichtet, mit dem, was man ändern und worauf man achten soll, und der mit elastic-lab-cli gemessenen Antwort; das Lektion-Dock zeigt neben jeder erwarteten Antwort, was Ihr Lauf ergibt.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Lessons &gt; Lesson texts explains what to do.</source>
+        <translation>Lektionen &gt; Lektionstexte erklärt, was zu tun ist.</translation>
+    </message>
+    <message>
+        <source>height of particle %1</source>
+        <translation>Höhe von Teilchen %1</translation>
+    </message>
+    <message>
+        <source>speed of particle %1</source>
+        <translation>Geschwindigkeit von Teilchen %1</translation>
+    </message>
+    <message>
+        <source>height of the inner layer&apos;s centre</source>
+        <translation>Höhe des Mittelpunkts der inneren Schicht</translation>
+    </message>
+    <message>
+        <source>height of the outer layer&apos;s centre</source>
+        <translation>Höhe des Mittelpunkts der äußeren Schicht</translation>
+    </message>
+    <message>
+        <source>centre-of-mass height</source>
+        <translation>Höhe des Schwerpunkts</translation>
+    </message>
+    <message>
+        <source>centre-of-mass speed</source>
+        <translation>Geschwindigkeit des Schwerpunkts</translation>
+    </message>
+    <message>
+        <source>layers&apos; separation</source>
+        <translation>Abstand der Schichten</translation>
+    </message>
 </context>
 <context>
     <name>elui::CompareDialog</name>
@@ -636,6 +668,157 @@ gesamt %2, zu Beginn %3</translation>
     </message>
 </context>
 <context>
+    <name>elui::LessonDock</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Lektion</translation>
+    </message>
+    <message>
+        <source>Run until t =</source>
+        <translation>Laufen bis t =</translation>
+    </message>
+    <message>
+        <source>Run as fast as possible and pause at this simulated time.</source>
+        <translation>So schnell wie möglich laufen und bei dieser simulierten Zeit anhalten.</translation>
+    </message>
+    <message>
+        <source>Simulated time between Start and Stop (the first view&apos;s clock).</source>
+        <translation>Simulierte Zeit zwischen Start und Stopp (die Uhr der ersten Ansicht).</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>Null</translation>
+    </message>
+    <message>
+        <source>answer</source>
+        <translation>Antwort</translation>
+    </message>
+    <message>
+        <source>expected</source>
+        <translation>erwartet</translation>
+    </message>
+    <message>
+        <source>you got</source>
+        <translation>Ihr Lauf</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Messen</translation>
+    </message>
+    <message>
+        <source>Measure every answer on the parameters in use, as the lesson&apos;s elastic-lab-cli commands do (stability scans, weightless impacts, runs).</source>
+        <translation>Jede Antwort mit den aktuellen Parametern messen, wie es die elastic-lab-cli-Befehle der Lektion tun (Stabilitätsscans, Aufpralle ohne Schwerkraft, Läufe).</translation>
+    </message>
+    <message>
+        <source>&lt;small&gt;you got: from your run, or &lt;i&gt;measured&lt;/i&gt; (Measure); green within the text&apos;s tolerance, amber off it&lt;/small&gt;</source>
+        <translation>&lt;small&gt;Ihr Lauf: aus Ihrem Lauf oder &lt;i&gt;gemessen&lt;/i&gt; (Messen); grün innerhalb der Toleranz des Texts, gelb außerhalb&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>No lesson: choose one in the Lessons menu. Run until and the stopwatch work for any scene.</source>
+        <translation>Keine Lektion: wählen Sie eine im Menü Lektionen. „Laufen bis“ und die Stoppuhr funktionieren in jeder Szene.</translation>
+    </message>
+    <message>
+        <source>Stopwatch: &lt;b&gt;%1 s&lt;/b&gt;</source>
+        <translation>Stoppuhr: &lt;b&gt;%1 s&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>read off your run</source>
+        <translation>aus Ihrem Lauf abgelesen</translation>
+    </message>
+    <message>
+        <source>press Measure</source>
+        <translation>Messen drücken</translation>
+    </message>
+    <message>
+        <source>measured on the parameters in use</source>
+        <translation>mit den aktuellen Parametern gemessen</translation>
+    </message>
+    <message>
+        <source>t = &lt;b&gt;%1 s&lt;/b&gt;</source>
+        <translation>t = &lt;b&gt;%1 s&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>%1: energy drift &lt;b&gt;%2 J&lt;/b&gt;%3</source>
+        <translation>%1: Energiedrift &lt;b&gt;%2 J&lt;/b&gt;%3</translation>
+    </message>
+    <message>
+        <source>, blew up at t = %1 s</source>
+        <translation>, explodiert bei t = %1 s</translation>
+    </message>
+    <message>
+        <source>centre of mass: %1 m above the floor, vertical speed %2 m/s</source>
+        <translation>Schwerpunkt: %1 m über dem Boden, vertikale Geschwindigkeit %2 m/s</translation>
+    </message>
+    <message>
+        <source>layer centres above the floor: inner %1 m, outer %2 m; the inner one sits &lt;b&gt;%3 m&lt;/b&gt; %4</source>
+        <translation>Mittelpunkte der Schichten über dem Boden: innen %1 m, außen %2 m; die innere liegt &lt;b&gt;%3 m&lt;/b&gt; %4</translation>
+    </message>
+    <message>
+        <source>below</source>
+        <translation>darunter</translation>
+    </message>
+    <message>
+        <source>above</source>
+        <translation>darüber</translation>
+    </message>
+    <message>
+        <source>centre of mass hit the floor at %1 m/s%2</source>
+        <translation>der Schwerpunkt traf mit %1 m/s auf den Boden%2</translation>
+    </message>
+    <message>
+        <source>, left it at %1 m/s (ratio %2)</source>
+        <translation>, verließ ihn mit %1 m/s (Verhältnis %2)</translation>
+    </message>
+    <message>
+        <source>lowest point %1 m above the floor%2</source>
+        <translation>tiefster Punkt %1 m über dem Boden%2</translation>
+    </message>
+    <message>
+        <source>lowest point %1 m into the floor (contact)%2</source>
+        <translation>tiefster Punkt %1 m im Boden (Kontakt)%2</translation>
+    </message>
+    <message>
+        <source>; last left the floor at t = %1 s</source>
+        <translation>; zuletzt vom Boden abgehoben bei t = %1 s</translation>
+    </message>
+    <message>
+        <source>inner layer: %1 %2, pressure %3 %4</source>
+        <translation>innere Schicht: %1 %2, Druck %3 %4</translation>
+    </message>
+    <message>
+        <source>measuring on the parameters in use…</source>
+        <translation>Messung mit den aktuellen Parametern…</translation>
+    </message>
+    <message>
+        <source>Run until a time, a stopwatch, and each answer of the lesson beside what your run gives</source>
+        <translation>Laufen bis zu einer Zeit, eine Stoppuhr, und jede Antwort der Lektion neben dem, was Ihr Lauf ergibt</translation>
+    </message>
+    <message>
+        <source>Run until this simulated time</source>
+        <translation>Laufen bis zu dieser simulierten Zeit</translation>
+    </message>
+    <message>
+        <source>The simulated time [s] at which Run until pauses</source>
+        <translation>Die simulierte Zeit [s], bei der „Laufen bis“ anhält</translation>
+    </message>
+    <message>
+        <source>Start or stop the stopwatch on the simulated clock</source>
+        <translation>Die Stoppuhr auf der simulierten Uhr starten oder anhalten</translation>
+    </message>
+    <message>
+        <source>Set the stopwatch back to zero</source>
+        <translation>Die Stoppuhr auf null zurücksetzen</translation>
+    </message>
+</context>
+<context>
     <name>elui::LessonsDialog</name>
     <message>
         <source>Experiments</source>
@@ -795,10 +978,6 @@ gesamt %2, zu Beginn %3</translation>
     <message>
         <source>Elastic Lab &amp;help</source>
         <translation>&amp;Hilfe zu Elastic Lab</translation>
-    </message>
-    <message>
-        <source>&amp;Experiments...</source>
-        <translation>&amp;Experimente...</translation>
     </message>
     <message>
         <source>Guided experiments: a scene set up in one click, what to change, what to look at, the measured answer</source>
@@ -963,10 +1142,6 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <translation> Drücken Sie Start (Leertaste).</translation>
     </message>
     <message>
-        <source>%1: set up. Help &gt; Experiments says what to change and what to look at. Press Run (Space).</source>
-        <translation>%1: eingerichtet. Hilfe &gt; Experimente sagt, was zu ändern und worauf zu achten ist. Drücken Sie Start (Leertaste).</translation>
-    </message>
-    <message>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
@@ -1128,6 +1303,93 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <source>&amp;Clear abandoned future</source>
         <translation>Verworfene &amp;Zukunft entfernen</translation>
     </message>
+    <message>
+        <source>Velocity vectors</source>
+        <translation>Geschwindigkeitsvektoren</translation>
+    </message>
+    <message>
+        <source>Ruler (drag to measure)</source>
+        <translation>Lineal (ziehen zum Messen)</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;texts (Experiments)...</source>
+        <translation>Lektions&amp;texte (Experimente)...</translation>
+    </message>
+    <message>
+        <source>&amp;Lessons</source>
+        <translation>&amp;Lektionen</translation>
+    </message>
+    <message>
+        <source>%1: set up. Lessons &gt; Lesson texts says what to change and what to look at. Press Run (Space).</source>
+        <translation>%1: eingerichtet. Lektionen &gt; Lektionstexte sagt, was zu ändern und worauf zu achten ist. Drücken Sie Start (Leertaste).</translation>
+    </message>
+    <message>
+        <source>Plotting the %1 against time (the Measured dock).</source>
+        <translation>Gegen die Zeit gezeichnet: %1 (das Dock Gemessen).</translation>
+    </message>
+    <message>
+        <source>Particle %1</source>
+        <translation>Teilchen %1</translation>
+    </message>
+    <message>
+        <source>Plot its height</source>
+        <translation>Seine Höhe zeichnen</translation>
+    </message>
+    <message>
+        <source>Plot its speed</source>
+        <translation>Seine Geschwindigkeit zeichnen</translation>
+    </message>
+    <message>
+        <source>Plot the inner layer&apos;s centre height</source>
+        <translation>Die Höhe des Mittelpunkts der inneren Schicht zeichnen</translation>
+    </message>
+    <message>
+        <source>Plot the outer layer&apos;s centre height</source>
+        <translation>Die Höhe des Mittelpunkts der äußeren Schicht zeichnen</translation>
+    </message>
+    <message>
+        <source>Body</source>
+        <translation>Körper</translation>
+    </message>
+    <message>
+        <source>Plot the centre-of-mass height</source>
+        <translation>Die Höhe des Schwerpunkts zeichnen</translation>
+    </message>
+    <message>
+        <source>Plot the centre-of-mass speed</source>
+        <translation>Die Geschwindigkeit des Schwerpunkts zeichnen</translation>
+    </message>
+    <message>
+        <source>Plot the layers&apos; separation</source>
+        <translation>Den Abstand der Schichten zeichnen</translation>
+    </message>
+</context>
+<context>
+    <name>elui::MeasurePlotDock</name>
+    <message>
+        <source>Measured</source>
+        <translation>Gemessen</translation>
+    </message>
+    <message>
+        <source>Right-click a particle or the body in the view to plot it here.</source>
+        <translation>Klicken Sie mit rechts auf ein Teilchen oder den Körper in der Ansicht, um es hier zu zeichnen.</translation>
+    </message>
+    <message>
+        <source>Remove all</source>
+        <translation>Alle entfernen</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>length [m]</source>
+        <translation>Länge [m]</translation>
+    </message>
+    <message>
+        <source>speed [m/s]</source>
+        <translation>Geschwindigkeit [m/s]</translation>
+    </message>
 </context>
 <context>
     <name>elui::Pacer</name>
@@ -1157,6 +1419,14 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     <message>
         <source>Every parameter of the scene with its unit; a change applies at once</source>
         <translation>Alle Parameter der Szene mit ihrer Einheit; eine Änderung gilt sofort</translation>
+    </message>
+    <message>
+        <source>Reset all to the scene&apos;s defaults</source>
+        <translation>Alle auf die Standardwerte der Szene zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
+        <translation>Jeder Parameter hier (und DT) zurück auf den Standardwert der Szene; die Form des Körpers bleibt (Szene-Dock).</translation>
     </message>
 </context>
 <context>
@@ -1188,6 +1458,22 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     <message>
         <source>, whole numbers</source>
         <translation>, ganze Zahlen</translation>
+    </message>
+    <message>
+        <source>Back to the default: %1</source>
+        <translation>Zurück zum Standardwert: %1</translation>
+    </message>
+    <message>
+        <source>Back to the default: %1 %2</source>
+        <translation>Zurück zum Standardwert: %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 from %2 to %3 %4%5 (the field takes any value in %6)</source>
+        <translation>%1 von %2 bis %3 %4%5 (das Feld nimmt jeden Wert in %6)</translation>
+    </message>
+    <message>
+        <source>, logarithmic</source>
+        <translation>, logarithmisch</translation>
     </message>
 </context>
 <context>
@@ -1295,6 +1581,42 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     <message>
         <source>Volume, pressure and energy against simulated time, one plot under the other</source>
         <translation>Volumen, Druck und Energie gegen die simulierte Zeit, ein Diagramm unter dem anderen</translation>
+    </message>
+    <message>
+        <source>Reference curve (rk45)</source>
+        <translation>Referenzkurve (rk45)</translation>
+    </message>
+    <message>
+        <source>A converged solution (rk45 at tolerance 1e-10) from the run&apos;s start, computed beside the run on a thread of its own and drawn dashed: the distance between a curve and it is the error of the run so far (the global error), where the band is the error one step adds. It follows the run up to the first change of the physics (a parameter edit other than DT, or a drag).</source>
+        <translation>Eine konvergierte Lösung (rk45 mit Toleranz 1e-10) ab dem Start des Laufs, neben dem Lauf in einem eigenen Thread berechnet und gestrichelt gezeichnet: der Abstand einer Kurve zu ihr ist der bisherige Fehler des Laufs (der globale Fehler), während das Band der Fehler ist, den ein Schritt hinzufügt. Sie folgt dem Lauf bis zur ersten Änderung der Physik (eine Parameteränderung außer DT, oder ein Ziehen).</translation>
+    </message>
+    <message>
+        <source>reference (rk45, 1e-10)</source>
+        <translation>Referenz (rk45, 1e-10)</translation>
+    </message>
+    <message>
+        <source>Reference: computing from the run&apos;s start…</source>
+        <translation>Referenz: wird ab dem Start des Laufs berechnet…</translation>
+    </message>
+    <message>
+        <source>At t = %1 s the run&apos;s total energy is %2 J from the reference: the error of the run so far.</source>
+        <translation>Bei t = %1 s liegt die Gesamtenergie des Laufs %2 J neben der Referenz: der bisherige Fehler des Laufs.</translation>
+    </message>
+    <message>
+        <source>The band there, one step&apos;s error: ±%1 J.</source>
+        <translation>Das Band dort, der Fehler eines Schritts: ±%1 J.</translation>
+    </message>
+    <message>
+        <source>The reference itself failed at t = %1 s (%2): the body fails at every step size.</source>
+        <translation>Die Referenz selbst ist bei t = %1 s gescheitert (%2): der Körper scheitert bei jeder Schrittweite.</translation>
+    </message>
+    <message>
+        <source>The run was changed at t = %1 s (a parameter edit or a drag): the reference stops there.</source>
+        <translation>Der Lauf wurde bei t = %1 s geändert (eine Parameteränderung oder ein Ziehen): die Referenz endet dort.</translation>
+    </message>
+    <message>
+        <source>The reference has reached t = %1 s (computing).</source>
+        <translation>Die Referenz hat t = %1 s erreicht (wird berechnet).</translation>
     </message>
 </context>
 <context>
@@ -1598,10 +1920,6 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <translation>Energiedrift</translation>
     </message>
     <message>
-        <source>distance to view %1</source>
-        <translation>Abstand zu Ansicht %1</translation>
-    </message>
-    <message>
         <source>failed</source>
         <translation>gescheitert</translation>
     </message>
@@ -1689,6 +2007,10 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <source>Run</source>
         <comment>button: start the simulation</comment>
         <translation>Start</translation>
+    </message>
+    <message>
+        <source>distance&lt;br&gt;to view %1</source>
+        <translation>Abstand&lt;br&gt;zu Ansicht %1</translation>
     </message>
 </context>
 <context>
@@ -2100,6 +2422,14 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     <message>
         <source>Blew up at t = %1 s: %2</source>
         <translation>Explodiert bei t = %1 s: %2</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source> (Δx %1, Δy %2)</source>
+        <translation> (Δx %1, Δy %2)</translation>
     </message>
 </context>
 <context>

@@ -40,26 +40,6 @@
         <translation>No se pudo codificar %1</translation>
     </message>
     <message>
-        <source>Cheapest and least stable: on an undamped spring it gains energy at every DT. On the two-layer ring it holds only below DT ≈ 0.007 s.</source>
-        <translation>El más barato y el menos estable: en un resorte sin amortiguar gana energía con cada DT. En el anillo de dos capas solo aguanta por debajo de DT ≈ 0,007 s.</translation>
-    </message>
-    <message>
-        <source>Two force evaluations per step, second order; on the two-layer ring its limit is about DT 0.0074 s (a single ring survives 0.03).</source>
-        <translation>Dos evaluaciones de fuerza por paso, segundo orden; en el anillo de dos capas su límite es de unos DT 0,0074 s (un anillo solo aguanta 0,03).</translation>
-    </message>
-    <message>
-        <source>Four evaluations, fourth order; stable up to h·ω ≈ 2.8: about DT 0.013 s on the two-layer ring, so it fails at the thesis&apos;s 0.03 and 0.3.</source>
-        <translation>Cuatro evaluaciones, cuarto orden; estable hasta h·ω ≈ 2,8: unos DT 0,013 s en el anillo de dos capas, así que falla con los 0,03 y 0,3 de la tesis.</translation>
-    </message>
-    <message>
-        <source>Same cost as Euler, but energy stays bounded on an undamped spring (h·ω &lt; 2).</source>
-        <translation>El mismo coste que Euler, pero la energía se mantiene acotada en un resorte sin amortiguar (h·ω &lt; 2).</translation>
-    </message>
-    <message>
-        <source>Velocity Verlet: time-reversible, good long-run energy behaviour.</source>
-        <translation>Verlet de velocidades: reversible en el tiempo, buen comportamiento de la energía a largo plazo.</translation>
-    </message>
-    <message>
         <source>Three Verlet substeps (the middle one backwards): fourth order, and energy stays bounded like Verlet&apos;s; stable up to h·ω ≈ 1.57 on an undamped spring.</source>
         <translation>Tres subpasos de Verlet (el del medio hacia atrás): cuarto orden, y la energía se mantiene acotada como con Verlet; estable hasta h·ω ≈ 1,57 en un resorte sin amortiguar.</translation>
     </message>
@@ -104,10 +84,6 @@
         <translation>&lt;h3&gt;Ajustes predefinidos&lt;/h3&gt;&lt;ul&gt;</translation>
     </message>
     <message>
-        <source>&lt;p&gt;&lt;b&gt;Help → Experiments&lt;/b&gt;: %1 guided experiments, each set up in one click, with what to change, what to look at and the answer measured with elastic-lab-cli.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Ayuda → Experimentos&lt;/b&gt;: %1 experimentos guiados, cada uno preparado con un clic, con qué cambiar, qué observar y la respuesta medida con elastic-lab-cli.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>&lt;h3&gt;Mouse&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Left-drag on the body: grab the nearest outer particle and pull it.&lt;/li&gt;&lt;li&gt;Left-drag elsewhere, or Shift+left-drag (3D): orbit. Right- or middle-drag: pan. Wheel: zoom. View → Reset view.&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;h3&gt;Ratón&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Arrastrar con el botón izquierdo sobre el cuerpo: agarrar la partícula exterior más cercana y tirar de ella.&lt;/li&gt;&lt;li&gt;Arrastrar con el izquierdo en otro lugar, o Mayús+arrastrar (3D): girar. Arrastrar con el derecho o el central: desplazar. Rueda: zoom. Ver → Restablecer vista.&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
@@ -126,10 +102,6 @@
     <message>
         <source>README</source>
         <translation>README</translation>
-    </message>
-    <message>
-        <source>Help &gt; Experiments explains what to do.</source>
-        <translation>Ayuda &gt; Experimentos explica qué hacer.</translation>
     </message>
     <message>
         <source>1. How large may DT be for Euler?</source>
@@ -407,6 +379,66 @@
         <source>none</source>
         <translation>ninguno</translation>
     </message>
+    <message>
+        <source>Cheapest and least stable: on an undamped spring it gains energy at every DT. On the two-layer ring it holds for 2 s up to DT %1 s (measured).</source>
+        <translation>El más barato y el menos estable: en un resorte sin amortiguar gana energía con cada DT. En el anillo de dos capas aguanta 2 s hasta DT %1 s (medido).</translation>
+    </message>
+    <message>
+        <source>Two force evaluations per step, second order; on the two-layer ring it holds for 2 s up to DT %1 s (measured), so it fails at the thesis&apos;s 0.03.</source>
+        <translation>Dos evaluaciones de fuerza por paso, segundo orden; en el anillo de dos capas aguanta 2 s hasta DT %1 s (medido), así que falla con el 0,03 de la tesis.</translation>
+    </message>
+    <message>
+        <source>Four evaluations, fourth order; stable up to h·ω ≈ 2.8: on the two-layer ring it holds for 2 s up to DT %1 s (measured), so it fails at the thesis&apos;s 0.03 and 0.3.</source>
+        <translation>Cuatro evaluaciones, cuarto orden; estable hasta h·ω ≈ 2,8: en el anillo de dos capas aguanta 2 s hasta DT %1 s (medido), así que falla con los 0,03 y 0,3 de la tesis.</translation>
+    </message>
+    <message>
+        <source>Same cost as Euler, but energy stays bounded on an undamped spring (h·ω &amp;lt; 2).</source>
+        <translation>El mismo coste que Euler, pero la energía se mantiene acotada en un resorte sin amortiguar (h·ω &amp;lt; 2).</translation>
+    </message>
+    <message>
+        <source>Velocity Verlet: time-reversible, good long-run energy behaviour. Second order without damping; with the dampers on (every scene here) its damping sees the half-step velocity and it is first order: the fitted order on the damped spring is %1 (measured).</source>
+        <translation>Verlet de velocidades: reversible en el tiempo, buen comportamiento de la energía a largo plazo. Segundo orden sin amortiguamiento; con los amortiguadores activos (en todas las escenas aquí) su amortiguamiento ve la velocidad del medio paso y es de primer orden: el orden ajustado en el resorte amortiguado es %1 (medido).</translation>
+    </message>
+    <message>
+        <source>2 (1 damped)</source>
+        <translation>2 (1 amortiguado)</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Lessons&lt;/b&gt; menu (or Help → Experiments): %1 guided experiments, each set up in one click, with what to change, what to look at and the answer measured with elastic-lab-cli; the Lesson dock shows what each answer expects beside what your run gives.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Menú &lt;b&gt;Lecciones&lt;/b&gt; (o Ayuda → Experimentos): %1 experimentos guiados, cada uno preparado con un clic, con qué cambiar, qué observar y la respuesta medida con elastic-lab-cli; el panel Lección muestra lo que espera cada respuesta junto a lo que da su ejecución.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Lessons &gt; Lesson texts explains what to do.</source>
+        <translation>Lecciones &gt; Textos de las lecciones explica qué hacer.</translation>
+    </message>
+    <message>
+        <source>height of particle %1</source>
+        <translation>altura de la partícula %1</translation>
+    </message>
+    <message>
+        <source>speed of particle %1</source>
+        <translation>velocidad de la partícula %1</translation>
+    </message>
+    <message>
+        <source>height of the inner layer&apos;s centre</source>
+        <translation>altura del centro de la capa interior</translation>
+    </message>
+    <message>
+        <source>height of the outer layer&apos;s centre</source>
+        <translation>altura del centro de la capa exterior</translation>
+    </message>
+    <message>
+        <source>centre-of-mass height</source>
+        <translation>altura del centro de masas</translation>
+    </message>
+    <message>
+        <source>centre-of-mass speed</source>
+        <translation>velocidad del centro de masas</translation>
+    </message>
+    <message>
+        <source>layers&apos; separation</source>
+        <translation>separación de las capas</translation>
+    </message>
 </context>
 <context>
     <name>elui::CompareDialog</name>
@@ -636,6 +668,157 @@ total %2, al inicio %3</translation>
     </message>
 </context>
 <context>
+    <name>elui::LessonDock</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Lección</translation>
+    </message>
+    <message>
+        <source>Run until t =</source>
+        <translation>Ejecutar hasta t =</translation>
+    </message>
+    <message>
+        <source>Run as fast as possible and pause at this simulated time.</source>
+        <translation>Ejecutar lo más rápido posible y pausar en este tiempo simulado.</translation>
+    </message>
+    <message>
+        <source>Simulated time between Start and Stop (the first view&apos;s clock).</source>
+        <translation>Tiempo simulado entre Inicio y Parar (el reloj de la primera vista).</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Inicio</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>Cero</translation>
+    </message>
+    <message>
+        <source>answer</source>
+        <translation>respuesta</translation>
+    </message>
+    <message>
+        <source>expected</source>
+        <translation>esperado</translation>
+    </message>
+    <message>
+        <source>you got</source>
+        <translation>obtenido</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Medir</translation>
+    </message>
+    <message>
+        <source>Measure every answer on the parameters in use, as the lesson&apos;s elastic-lab-cli commands do (stability scans, weightless impacts, runs).</source>
+        <translation>Medir cada respuesta con los parámetros en uso, como hacen los comandos elastic-lab-cli de la lección (barridos de estabilidad, choques sin gravedad, ejecuciones).</translation>
+    </message>
+    <message>
+        <source>&lt;small&gt;you got: from your run, or &lt;i&gt;measured&lt;/i&gt; (Measure); green within the text&apos;s tolerance, amber off it&lt;/small&gt;</source>
+        <translation>&lt;small&gt;obtenido: de su ejecución, o &lt;i&gt;medido&lt;/i&gt; (Medir); verde dentro de la tolerancia del texto, ámbar fuera de ella&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>No lesson: choose one in the Lessons menu. Run until and the stopwatch work for any scene.</source>
+        <translation>Ninguna lección: elija una en el menú Lecciones. «Ejecutar hasta» y el cronómetro funcionan en cualquier escena.</translation>
+    </message>
+    <message>
+        <source>Stopwatch: &lt;b&gt;%1 s&lt;/b&gt;</source>
+        <translation>Cronómetro: &lt;b&gt;%1 s&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+    <message>
+        <source>read off your run</source>
+        <translation>leído de su ejecución</translation>
+    </message>
+    <message>
+        <source>press Measure</source>
+        <translation>pulse Medir</translation>
+    </message>
+    <message>
+        <source>measured on the parameters in use</source>
+        <translation>medido con los parámetros en uso</translation>
+    </message>
+    <message>
+        <source>t = &lt;b&gt;%1 s&lt;/b&gt;</source>
+        <translation>t = &lt;b&gt;%1 s&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>%1: energy drift &lt;b&gt;%2 J&lt;/b&gt;%3</source>
+        <translation>%1: deriva de energía &lt;b&gt;%2 J&lt;/b&gt;%3</translation>
+    </message>
+    <message>
+        <source>, blew up at t = %1 s</source>
+        <translation>, explotó en t = %1 s</translation>
+    </message>
+    <message>
+        <source>centre of mass: %1 m above the floor, vertical speed %2 m/s</source>
+        <translation>centro de masas: %1 m sobre el suelo, velocidad vertical %2 m/s</translation>
+    </message>
+    <message>
+        <source>layer centres above the floor: inner %1 m, outer %2 m; the inner one sits &lt;b&gt;%3 m&lt;/b&gt; %4</source>
+        <translation>centros de las capas sobre el suelo: interior %1 m, exterior %2 m; la interior está &lt;b&gt;%3 m&lt;/b&gt; %4</translation>
+    </message>
+    <message>
+        <source>below</source>
+        <translation>por debajo</translation>
+    </message>
+    <message>
+        <source>above</source>
+        <translation>por encima</translation>
+    </message>
+    <message>
+        <source>centre of mass hit the floor at %1 m/s%2</source>
+        <translation>el centro de masas chocó con el suelo a %1 m/s%2</translation>
+    </message>
+    <message>
+        <source>, left it at %1 m/s (ratio %2)</source>
+        <translation>, lo dejó a %1 m/s (razón %2)</translation>
+    </message>
+    <message>
+        <source>lowest point %1 m above the floor%2</source>
+        <translation>punto más bajo %1 m sobre el suelo%2</translation>
+    </message>
+    <message>
+        <source>lowest point %1 m into the floor (contact)%2</source>
+        <translation>punto más bajo %1 m dentro del suelo (contacto)%2</translation>
+    </message>
+    <message>
+        <source>; last left the floor at t = %1 s</source>
+        <translation>; dejó el suelo por última vez en t = %1 s</translation>
+    </message>
+    <message>
+        <source>inner layer: %1 %2, pressure %3 %4</source>
+        <translation>capa interior: %1 %2, presión %3 %4</translation>
+    </message>
+    <message>
+        <source>measuring on the parameters in use…</source>
+        <translation>midiendo con los parámetros en uso…</translation>
+    </message>
+    <message>
+        <source>Run until a time, a stopwatch, and each answer of the lesson beside what your run gives</source>
+        <translation>Ejecutar hasta un instante, un cronómetro, y cada respuesta de la lección junto a lo que da su ejecución</translation>
+    </message>
+    <message>
+        <source>Run until this simulated time</source>
+        <translation>Ejecutar hasta este tiempo simulado</translation>
+    </message>
+    <message>
+        <source>The simulated time [s] at which Run until pauses</source>
+        <translation>El tiempo simulado [s] en el que «Ejecutar hasta» se detiene</translation>
+    </message>
+    <message>
+        <source>Start or stop the stopwatch on the simulated clock</source>
+        <translation>Iniciar o parar el cronómetro sobre el reloj simulado</translation>
+    </message>
+    <message>
+        <source>Set the stopwatch back to zero</source>
+        <translation>Poner el cronómetro a cero</translation>
+    </message>
+</context>
+<context>
     <name>elui::LessonsDialog</name>
     <message>
         <source>Experiments</source>
@@ -795,10 +978,6 @@ total %2, al inicio %3</translation>
     <message>
         <source>Elastic Lab &amp;help</source>
         <translation>A&amp;yuda de Elastic Lab</translation>
-    </message>
-    <message>
-        <source>&amp;Experiments...</source>
-        <translation>&amp;Experimentos...</translation>
     </message>
     <message>
         <source>Guided experiments: a scene set up in one click, what to change, what to look at, the measured answer</source>
@@ -963,10 +1142,6 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <translation> Pulse Ejecutar (Espacio).</translation>
     </message>
     <message>
-        <source>%1: set up. Help &gt; Experiments says what to change and what to look at. Press Run (Space).</source>
-        <translation>%1: preparado. Ayuda &gt; Experimentos dice qué cambiar y qué observar. Pulse Ejecutar (Espacio).</translation>
-    </message>
-    <message>
         <source>&amp;Pause</source>
         <translation>&amp;Pausa</translation>
     </message>
@@ -1128,6 +1303,93 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <source>&amp;Clear abandoned future</source>
         <translation>&amp;Borrar el futuro abandonado</translation>
     </message>
+    <message>
+        <source>Velocity vectors</source>
+        <translation>Vectores de velocidad</translation>
+    </message>
+    <message>
+        <source>Ruler (drag to measure)</source>
+        <translation>Regla (arrastre para medir)</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;texts (Experiments)...</source>
+        <translation>&amp;Textos de las lecciones (Experimentos)...</translation>
+    </message>
+    <message>
+        <source>&amp;Lessons</source>
+        <translation>&amp;Lecciones</translation>
+    </message>
+    <message>
+        <source>%1: set up. Lessons &gt; Lesson texts says what to change and what to look at. Press Run (Space).</source>
+        <translation>%1: preparado. Lecciones &gt; Textos de las lecciones dice qué cambiar y qué observar. Pulse Ejecutar (Espacio).</translation>
+    </message>
+    <message>
+        <source>Plotting the %1 against time (the Measured dock).</source>
+        <translation>Dibujando frente al tiempo: %1 (el panel Medido).</translation>
+    </message>
+    <message>
+        <source>Particle %1</source>
+        <translation>Partícula %1</translation>
+    </message>
+    <message>
+        <source>Plot its height</source>
+        <translation>Dibujar su altura</translation>
+    </message>
+    <message>
+        <source>Plot its speed</source>
+        <translation>Dibujar su velocidad</translation>
+    </message>
+    <message>
+        <source>Plot the inner layer&apos;s centre height</source>
+        <translation>Dibujar la altura del centro de la capa interior</translation>
+    </message>
+    <message>
+        <source>Plot the outer layer&apos;s centre height</source>
+        <translation>Dibujar la altura del centro de la capa exterior</translation>
+    </message>
+    <message>
+        <source>Body</source>
+        <translation>Cuerpo</translation>
+    </message>
+    <message>
+        <source>Plot the centre-of-mass height</source>
+        <translation>Dibujar la altura del centro de masas</translation>
+    </message>
+    <message>
+        <source>Plot the centre-of-mass speed</source>
+        <translation>Dibujar la velocidad del centro de masas</translation>
+    </message>
+    <message>
+        <source>Plot the layers&apos; separation</source>
+        <translation>Dibujar la separación de las capas</translation>
+    </message>
+</context>
+<context>
+    <name>elui::MeasurePlotDock</name>
+    <message>
+        <source>Measured</source>
+        <translation>Medido</translation>
+    </message>
+    <message>
+        <source>Right-click a particle or the body in the view to plot it here.</source>
+        <translation>Haga clic derecho en una partícula o en el cuerpo en la vista para dibujarlo aquí.</translation>
+    </message>
+    <message>
+        <source>Remove all</source>
+        <translation>Quitar todo</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>length [m]</source>
+        <translation>longitud [m]</translation>
+    </message>
+    <message>
+        <source>speed [m/s]</source>
+        <translation>velocidad [m/s]</translation>
+    </message>
 </context>
 <context>
     <name>elui::Pacer</name>
@@ -1157,6 +1419,14 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     <message>
         <source>Every parameter of the scene with its unit; a change applies at once</source>
         <translation>Todos los parámetros de la escena con su unidad; un cambio se aplica al instante</translation>
+    </message>
+    <message>
+        <source>Reset all to the scene&apos;s defaults</source>
+        <translation>Restablecer todo a los valores por defecto de la escena</translation>
+    </message>
+    <message>
+        <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
+        <translation>Cada parámetro de aquí (y DT) vuelve al valor por defecto de la escena; la forma del cuerpo se mantiene (panel Escena).</translation>
     </message>
 </context>
 <context>
@@ -1188,6 +1458,22 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     <message>
         <source>, whole numbers</source>
         <translation>, números enteros</translation>
+    </message>
+    <message>
+        <source>Back to the default: %1</source>
+        <translation>Volver al valor por defecto: %1</translation>
+    </message>
+    <message>
+        <source>Back to the default: %1 %2</source>
+        <translation>Volver al valor por defecto: %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 from %2 to %3 %4%5 (the field takes any value in %6)</source>
+        <translation>%1 de %2 a %3 %4%5 (el campo admite cualquier valor en %6)</translation>
+    </message>
+    <message>
+        <source>, logarithmic</source>
+        <translation>, logarítmico</translation>
     </message>
 </context>
 <context>
@@ -1295,6 +1581,42 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     <message>
         <source>Volume, pressure and energy against simulated time, one plot under the other</source>
         <translation>Volumen, presión y energía frente al tiempo simulado, un gráfico debajo de otro</translation>
+    </message>
+    <message>
+        <source>Reference curve (rk45)</source>
+        <translation>Curva de referencia (rk45)</translation>
+    </message>
+    <message>
+        <source>A converged solution (rk45 at tolerance 1e-10) from the run&apos;s start, computed beside the run on a thread of its own and drawn dashed: the distance between a curve and it is the error of the run so far (the global error), where the band is the error one step adds. It follows the run up to the first change of the physics (a parameter edit other than DT, or a drag).</source>
+        <translation>Una solución convergida (rk45 con tolerancia 1e-10) desde el inicio de la ejecución, calculada junto a ella en un hilo propio y dibujada a trazos: la distancia entre una curva y ella es el error acumulado de la ejecución (el error global), mientras que la banda es el error que añade un paso. Sigue a la ejecución hasta el primer cambio de la física (un cambio de parámetro distinto de DT, o un arrastre).</translation>
+    </message>
+    <message>
+        <source>reference (rk45, 1e-10)</source>
+        <translation>referencia (rk45, 1e-10)</translation>
+    </message>
+    <message>
+        <source>Reference: computing from the run&apos;s start…</source>
+        <translation>Referencia: calculando desde el inicio de la ejecución…</translation>
+    </message>
+    <message>
+        <source>At t = %1 s the run&apos;s total energy is %2 J from the reference: the error of the run so far.</source>
+        <translation>En t = %1 s la energía total de la ejecución está a %2 J de la referencia: el error acumulado de la ejecución.</translation>
+    </message>
+    <message>
+        <source>The band there, one step&apos;s error: ±%1 J.</source>
+        <translation>La banda ahí, el error de un paso: ±%1 J.</translation>
+    </message>
+    <message>
+        <source>The reference itself failed at t = %1 s (%2): the body fails at every step size.</source>
+        <translation>La propia referencia falló en t = %1 s (%2): el cuerpo falla con cualquier paso.</translation>
+    </message>
+    <message>
+        <source>The run was changed at t = %1 s (a parameter edit or a drag): the reference stops there.</source>
+        <translation>La ejecución se cambió en t = %1 s (un cambio de parámetro o un arrastre): la referencia termina ahí.</translation>
+    </message>
+    <message>
+        <source>The reference has reached t = %1 s (computing).</source>
+        <translation>La referencia ha llegado a t = %1 s (calculando).</translation>
     </message>
 </context>
 <context>
@@ -1598,10 +1920,6 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <translation>deriva de energía</translation>
     </message>
     <message>
-        <source>distance to view %1</source>
-        <translation>distancia a la vista %1</translation>
-    </message>
-    <message>
         <source>failed</source>
         <translation>falló</translation>
     </message>
@@ -1689,6 +2007,10 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <source>Run</source>
         <comment>button: start the simulation</comment>
         <translation>Ejecutar</translation>
+    </message>
+    <message>
+        <source>distance&lt;br&gt;to view %1</source>
+        <translation>distancia&lt;br&gt;a la vista %1</translation>
     </message>
 </context>
 <context>
@@ -2100,6 +2422,14 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     <message>
         <source>Blew up at t = %1 s: %2</source>
         <translation>Explotó en t = %1 s: %2</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source> (Δx %1, Δy %2)</source>
+        <translation> (Δx %1, Δy %2)</translation>
     </message>
 </context>
 <context>

@@ -40,26 +40,6 @@
         <translation>Impossible d’encoder %1</translation>
     </message>
     <message>
-        <source>Cheapest and least stable: on an undamped spring it gains energy at every DT. On the two-layer ring it holds only below DT ≈ 0.007 s.</source>
-        <translation>Le moins cher et le moins stable : sur un ressort non amorti, il gagne de l’énergie à chaque DT. Sur l’anneau à deux couches, il ne tient qu’en dessous de DT ≈ 0,007 s.</translation>
-    </message>
-    <message>
-        <source>Two force evaluations per step, second order; on the two-layer ring its limit is about DT 0.0074 s (a single ring survives 0.03).</source>
-        <translation>Deux évaluations de force par pas, ordre deux ; sur l’anneau à deux couches, sa limite est d’environ DT 0,0074 s (un anneau seul supporte 0,03).</translation>
-    </message>
-    <message>
-        <source>Four evaluations, fourth order; stable up to h·ω ≈ 2.8: about DT 0.013 s on the two-layer ring, so it fails at the thesis&apos;s 0.03 and 0.3.</source>
-        <translation>Quatre évaluations, ordre quatre ; stable jusqu’à h·ω ≈ 2,8 : environ DT 0,013 s sur l’anneau à deux couches, il échoue donc aux 0,03 et 0,3 du mémoire.</translation>
-    </message>
-    <message>
-        <source>Same cost as Euler, but energy stays bounded on an undamped spring (h·ω &lt; 2).</source>
-        <translation>Même coût qu’Euler, mais l’énergie reste bornée sur un ressort non amorti (h·ω &lt; 2).</translation>
-    </message>
-    <message>
-        <source>Velocity Verlet: time-reversible, good long-run energy behaviour.</source>
-        <translation>Verlet vitesse : réversible en temps, bon comportement de l’énergie sur la durée.</translation>
-    </message>
-    <message>
         <source>Three Verlet substeps (the middle one backwards): fourth order, and energy stays bounded like Verlet&apos;s; stable up to h·ω ≈ 1.57 on an undamped spring.</source>
         <translation>Trois sous-pas de Verlet (celui du milieu en arrière) : ordre quatre, et l’énergie reste bornée comme avec Verlet ; stable jusqu’à h·ω ≈ 1,57 sur un ressort non amorti.</translation>
     </message>
@@ -104,10 +84,6 @@
         <translation>&lt;h3&gt;Préréglages&lt;/h3&gt;&lt;ul&gt;</translation>
     </message>
     <message>
-        <source>&lt;p&gt;&lt;b&gt;Help → Experiments&lt;/b&gt;: %1 guided experiments, each set up in one click, with what to change, what to look at and the answer measured with elastic-lab-cli.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;Aide → Expériences&lt;/b&gt; : %1 expériences guidées, chacune préparée en un clic, avec ce qu’il faut changer, ce qu’il faut observer et la réponse mesurée avec elastic-lab-cli.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>&lt;h3&gt;Mouse&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Left-drag on the body: grab the nearest outer particle and pull it.&lt;/li&gt;&lt;li&gt;Left-drag elsewhere, or Shift+left-drag (3D): orbit. Right- or middle-drag: pan. Wheel: zoom. View → Reset view.&lt;/li&gt;&lt;/ul&gt;</source>
         <translation>&lt;h3&gt;Souris&lt;/h3&gt;&lt;ul&gt;&lt;li&gt;Glisser avec le bouton gauche sur le corps : saisir la particule extérieure la plus proche et la tirer.&lt;/li&gt;&lt;li&gt;Glisser à gauche ailleurs, ou Maj+glisser à gauche (3D) : tourner. Glisser avec le bouton droit ou du milieu : déplacer. Molette : zoomer. Affichage → Réinitialiser la vue.&lt;/li&gt;&lt;/ul&gt;</translation>
     </message>
@@ -126,10 +102,6 @@
     <message>
         <source>README</source>
         <translation>README</translation>
-    </message>
-    <message>
-        <source>Help &gt; Experiments explains what to do.</source>
-        <translation>Aide &gt; Expériences explique quoi faire.</translation>
     </message>
     <message>
         <source>1. How large may DT be for Euler?</source>
@@ -407,6 +379,66 @@
         <source>none</source>
         <translation>aucun</translation>
     </message>
+    <message>
+        <source>Cheapest and least stable: on an undamped spring it gains energy at every DT. On the two-layer ring it holds for 2 s up to DT %1 s (measured).</source>
+        <translation>Le moins cher et le moins stable : sur un ressort non amorti, il gagne de l’énergie à chaque DT. Sur l’anneau à deux couches, il tient 2 s jusqu’à DT %1 s (mesuré).</translation>
+    </message>
+    <message>
+        <source>Two force evaluations per step, second order; on the two-layer ring it holds for 2 s up to DT %1 s (measured), so it fails at the thesis&apos;s 0.03.</source>
+        <translation>Deux évaluations de force par pas, ordre deux ; sur l’anneau à deux couches, il tient 2 s jusqu’à DT %1 s (mesuré), il échoue donc au 0,03 du mémoire.</translation>
+    </message>
+    <message>
+        <source>Four evaluations, fourth order; stable up to h·ω ≈ 2.8: on the two-layer ring it holds for 2 s up to DT %1 s (measured), so it fails at the thesis&apos;s 0.03 and 0.3.</source>
+        <translation>Quatre évaluations, ordre quatre ; stable jusqu’à h·ω ≈ 2,8 : sur l’anneau à deux couches, il tient 2 s jusqu’à DT %1 s (mesuré), il échoue donc aux 0,03 et 0,3 du mémoire.</translation>
+    </message>
+    <message>
+        <source>Same cost as Euler, but energy stays bounded on an undamped spring (h·ω &amp;lt; 2).</source>
+        <translation>Même coût qu’Euler, mais l’énergie reste bornée sur un ressort non amorti (h·ω &amp;lt; 2).</translation>
+    </message>
+    <message>
+        <source>Velocity Verlet: time-reversible, good long-run energy behaviour. Second order without damping; with the dampers on (every scene here) its damping sees the half-step velocity and it is first order: the fitted order on the damped spring is %1 (measured).</source>
+        <translation>Verlet vitesse : réversible en temps, bon comportement de l’énergie sur la durée. Ordre deux sans amortissement ; avec les amortisseurs actifs (toutes les scènes ici), son amortissement voit la vitesse du demi-pas et il est d’ordre un : l’ordre ajusté sur le ressort amorti est %1 (mesuré).</translation>
+    </message>
+    <message>
+        <source>2 (1 damped)</source>
+        <translation>2 (1 amorti)</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Lessons&lt;/b&gt; menu (or Help → Experiments): %1 guided experiments, each set up in one click, with what to change, what to look at and the answer measured with elastic-lab-cli; the Lesson dock shows what each answer expects beside what your run gives.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Menu &lt;b&gt;Leçons&lt;/b&gt; (ou Aide → Expériences) : %1 expériences guidées, chacune préparée en un clic, avec ce qu’il faut changer, ce qu’il faut observer et la réponse mesurée avec elastic-lab-cli ; le dock Leçon montre ce que chaque réponse attend à côté de ce que donne votre simulation.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Lessons &gt; Lesson texts explains what to do.</source>
+        <translation>Leçons &gt; Textes des leçons explique quoi faire.</translation>
+    </message>
+    <message>
+        <source>height of particle %1</source>
+        <translation>hauteur de la particule %1</translation>
+    </message>
+    <message>
+        <source>speed of particle %1</source>
+        <translation>vitesse de la particule %1</translation>
+    </message>
+    <message>
+        <source>height of the inner layer&apos;s centre</source>
+        <translation>hauteur du centre de la couche intérieure</translation>
+    </message>
+    <message>
+        <source>height of the outer layer&apos;s centre</source>
+        <translation>hauteur du centre de la couche extérieure</translation>
+    </message>
+    <message>
+        <source>centre-of-mass height</source>
+        <translation>hauteur du centre de masse</translation>
+    </message>
+    <message>
+        <source>centre-of-mass speed</source>
+        <translation>vitesse du centre de masse</translation>
+    </message>
+    <message>
+        <source>layers&apos; separation</source>
+        <translation>écart entre les couches</translation>
+    </message>
 </context>
 <context>
     <name>elui::CompareDialog</name>
@@ -636,6 +668,157 @@ total %2, au départ %3</translation>
     </message>
 </context>
 <context>
+    <name>elui::LessonDock</name>
+    <message>
+        <source>Lesson</source>
+        <translation>Leçon</translation>
+    </message>
+    <message>
+        <source>Run until t =</source>
+        <translation>Simuler jusqu’à t =</translation>
+    </message>
+    <message>
+        <source>Run as fast as possible and pause at this simulated time.</source>
+        <translation>Simuler aussi vite que possible et s’arrêter à ce temps simulé.</translation>
+    </message>
+    <message>
+        <source>Simulated time between Start and Stop (the first view&apos;s clock).</source>
+        <translation>Temps simulé entre Départ et Arrêt (l’horloge de la première vue).</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Départ</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>Zéro</translation>
+    </message>
+    <message>
+        <source>answer</source>
+        <translation>réponse</translation>
+    </message>
+    <message>
+        <source>expected</source>
+        <translation>attendu</translation>
+    </message>
+    <message>
+        <source>you got</source>
+        <translation>obtenu</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Mesurer</translation>
+    </message>
+    <message>
+        <source>Measure every answer on the parameters in use, as the lesson&apos;s elastic-lab-cli commands do (stability scans, weightless impacts, runs).</source>
+        <translation>Mesurer chaque réponse avec les paramètres actuels, comme le font les commandes elastic-lab-cli de la leçon (balayages de stabilité, chocs sans pesanteur, simulations).</translation>
+    </message>
+    <message>
+        <source>&lt;small&gt;you got: from your run, or &lt;i&gt;measured&lt;/i&gt; (Measure); green within the text&apos;s tolerance, amber off it&lt;/small&gt;</source>
+        <translation>&lt;small&gt;obtenu : d’après votre simulation, ou &lt;i&gt;mesuré&lt;/i&gt; (Mesurer) ; vert dans la tolérance du texte, orangé hors de celle-ci&lt;/small&gt;</translation>
+    </message>
+    <message>
+        <source>No lesson: choose one in the Lessons menu. Run until and the stopwatch work for any scene.</source>
+        <translation>Aucune leçon : choisissez-en une dans le menu Leçons. « Simuler jusqu’à » et le chronomètre fonctionnent pour toute scène.</translation>
+    </message>
+    <message>
+        <source>Stopwatch: &lt;b&gt;%1 s&lt;/b&gt;</source>
+        <translation>Chronomètre : &lt;b&gt;%1 s&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Arrêt</translation>
+    </message>
+    <message>
+        <source>read off your run</source>
+        <translation>lu sur votre simulation</translation>
+    </message>
+    <message>
+        <source>press Measure</source>
+        <translation>appuyez sur Mesurer</translation>
+    </message>
+    <message>
+        <source>measured on the parameters in use</source>
+        <translation>mesuré avec les paramètres actuels</translation>
+    </message>
+    <message>
+        <source>t = &lt;b&gt;%1 s&lt;/b&gt;</source>
+        <translation>t = &lt;b&gt;%1 s&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>%1: energy drift &lt;b&gt;%2 J&lt;/b&gt;%3</source>
+        <translation>%1 : dérive d’énergie &lt;b&gt;%2 J&lt;/b&gt;%3</translation>
+    </message>
+    <message>
+        <source>, blew up at t = %1 s</source>
+        <translation>, a explosé à t = %1 s</translation>
+    </message>
+    <message>
+        <source>centre of mass: %1 m above the floor, vertical speed %2 m/s</source>
+        <translation>centre de masse : %1 m au-dessus du sol, vitesse verticale %2 m/s</translation>
+    </message>
+    <message>
+        <source>layer centres above the floor: inner %1 m, outer %2 m; the inner one sits &lt;b&gt;%3 m&lt;/b&gt; %4</source>
+        <translation>centres des couches au-dessus du sol : intérieure %1 m, extérieure %2 m ; l’intérieure se trouve &lt;b&gt;%3 m&lt;/b&gt; %4</translation>
+    </message>
+    <message>
+        <source>below</source>
+        <translation>en dessous</translation>
+    </message>
+    <message>
+        <source>above</source>
+        <translation>au-dessus</translation>
+    </message>
+    <message>
+        <source>centre of mass hit the floor at %1 m/s%2</source>
+        <translation>le centre de masse a touché le sol à %1 m/s%2</translation>
+    </message>
+    <message>
+        <source>, left it at %1 m/s (ratio %2)</source>
+        <translation>, l’a quitté à %1 m/s (rapport %2)</translation>
+    </message>
+    <message>
+        <source>lowest point %1 m above the floor%2</source>
+        <translation>point le plus bas %1 m au-dessus du sol%2</translation>
+    </message>
+    <message>
+        <source>lowest point %1 m into the floor (contact)%2</source>
+        <translation>point le plus bas %1 m dans le sol (contact)%2</translation>
+    </message>
+    <message>
+        <source>; last left the floor at t = %1 s</source>
+        <translation>&#x202f;; a quitté le sol pour la dernière fois à t = %1 s</translation>
+    </message>
+    <message>
+        <source>inner layer: %1 %2, pressure %3 %4</source>
+        <translation>couche intérieure : %1 %2, pression %3 %4</translation>
+    </message>
+    <message>
+        <source>measuring on the parameters in use…</source>
+        <translation>mesure avec les paramètres actuels…</translation>
+    </message>
+    <message>
+        <source>Run until a time, a stopwatch, and each answer of the lesson beside what your run gives</source>
+        <translation>Simuler jusqu’à un instant, un chronomètre, et chaque réponse de la leçon à côté de ce que donne votre simulation</translation>
+    </message>
+    <message>
+        <source>Run until this simulated time</source>
+        <translation>Simuler jusqu’à ce temps simulé</translation>
+    </message>
+    <message>
+        <source>The simulated time [s] at which Run until pauses</source>
+        <translation>Le temps simulé [s] auquel « Simuler jusqu’à » s’arrête</translation>
+    </message>
+    <message>
+        <source>Start or stop the stopwatch on the simulated clock</source>
+        <translation>Démarrer ou arrêter le chronomètre sur l’horloge simulée</translation>
+    </message>
+    <message>
+        <source>Set the stopwatch back to zero</source>
+        <translation>Remettre le chronomètre à zéro</translation>
+    </message>
+</context>
+<context>
     <name>elui::LessonsDialog</name>
     <message>
         <source>Experiments</source>
@@ -795,10 +978,6 @@ total %2, au départ %3</translation>
     <message>
         <source>Elastic Lab &amp;help</source>
         <translation>&amp;Aide d’Elastic Lab</translation>
-    </message>
-    <message>
-        <source>&amp;Experiments...</source>
-        <translation>&amp;Expériences...</translation>
     </message>
     <message>
         <source>Guided experiments: a scene set up in one click, what to change, what to look at, the measured answer</source>
@@ -963,10 +1142,6 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <translation> Appuyez sur Lancer (Espace).</translation>
     </message>
     <message>
-        <source>%1: set up. Help &gt; Experiments says what to change and what to look at. Press Run (Space).</source>
-        <translation>%1 : préparé. Aide &gt; Expériences dit ce qu’il faut changer et observer. Appuyez sur Lancer (Espace).</translation>
-    </message>
-    <message>
         <source>&amp;Pause</source>
         <translation>&amp;Pause</translation>
     </message>
@@ -1128,6 +1303,93 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <source>&amp;Clear abandoned future</source>
         <translation>Effacer le &amp;futur abandonné</translation>
     </message>
+    <message>
+        <source>Velocity vectors</source>
+        <translation>Vecteurs vitesse</translation>
+    </message>
+    <message>
+        <source>Ruler (drag to measure)</source>
+        <translation>Règle (faire glisser pour mesurer)</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;texts (Experiments)...</source>
+        <translation>&amp;Textes des leçons (Expériences)...</translation>
+    </message>
+    <message>
+        <source>&amp;Lessons</source>
+        <translation>&amp;Leçons</translation>
+    </message>
+    <message>
+        <source>%1: set up. Lessons &gt; Lesson texts says what to change and what to look at. Press Run (Space).</source>
+        <translation>%1 : préparé. Leçons &gt; Textes des leçons dit ce qu’il faut changer et observer. Appuyez sur Lancer (Espace).</translation>
+    </message>
+    <message>
+        <source>Plotting the %1 against time (the Measured dock).</source>
+        <translation>Tracé en fonction du temps : %1 (le dock Mesuré).</translation>
+    </message>
+    <message>
+        <source>Particle %1</source>
+        <translation>Particule %1</translation>
+    </message>
+    <message>
+        <source>Plot its height</source>
+        <translation>Tracer sa hauteur</translation>
+    </message>
+    <message>
+        <source>Plot its speed</source>
+        <translation>Tracer sa vitesse</translation>
+    </message>
+    <message>
+        <source>Plot the inner layer&apos;s centre height</source>
+        <translation>Tracer la hauteur du centre de la couche intérieure</translation>
+    </message>
+    <message>
+        <source>Plot the outer layer&apos;s centre height</source>
+        <translation>Tracer la hauteur du centre de la couche extérieure</translation>
+    </message>
+    <message>
+        <source>Body</source>
+        <translation>Corps</translation>
+    </message>
+    <message>
+        <source>Plot the centre-of-mass height</source>
+        <translation>Tracer la hauteur du centre de masse</translation>
+    </message>
+    <message>
+        <source>Plot the centre-of-mass speed</source>
+        <translation>Tracer la vitesse du centre de masse</translation>
+    </message>
+    <message>
+        <source>Plot the layers&apos; separation</source>
+        <translation>Tracer l’écart entre les couches</translation>
+    </message>
+</context>
+<context>
+    <name>elui::MeasurePlotDock</name>
+    <message>
+        <source>Measured</source>
+        <translation>Mesuré</translation>
+    </message>
+    <message>
+        <source>Right-click a particle or the body in the view to plot it here.</source>
+        <translation>Clic droit sur une particule ou sur le corps dans la vue pour le tracer ici.</translation>
+    </message>
+    <message>
+        <source>Remove all</source>
+        <translation>Tout retirer</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>length [m]</source>
+        <translation>longueur [m]</translation>
+    </message>
+    <message>
+        <source>speed [m/s]</source>
+        <translation>vitesse [m/s]</translation>
+    </message>
 </context>
 <context>
     <name>elui::Pacer</name>
@@ -1157,6 +1419,14 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     <message>
         <source>Every parameter of the scene with its unit; a change applies at once</source>
         <translation>Tous les paramètres de la scène avec leur unité ; une modification s’applique aussitôt</translation>
+    </message>
+    <message>
+        <source>Reset all to the scene&apos;s defaults</source>
+        <translation>Tout remettre aux valeurs par défaut de la scène</translation>
+    </message>
+    <message>
+        <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
+        <translation>Chaque paramètre ici (et DT) revient à la valeur par défaut de la scène ; la forme du corps reste (dock Scène).</translation>
     </message>
 </context>
 <context>
@@ -1188,6 +1458,22 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     <message>
         <source>, whole numbers</source>
         <translation>, nombres entiers</translation>
+    </message>
+    <message>
+        <source>Back to the default: %1</source>
+        <translation>Revenir à la valeur par défaut : %1</translation>
+    </message>
+    <message>
+        <source>Back to the default: %1 %2</source>
+        <translation>Revenir à la valeur par défaut : %1 %2</translation>
+    </message>
+    <message>
+        <source>%1 from %2 to %3 %4%5 (the field takes any value in %6)</source>
+        <translation>%1 de %2 à %3 %4%5 (le champ accepte toute valeur dans %6)</translation>
+    </message>
+    <message>
+        <source>, logarithmic</source>
+        <translation>, logarithmique</translation>
     </message>
 </context>
 <context>
@@ -1295,6 +1581,42 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     <message>
         <source>Volume, pressure and energy against simulated time, one plot under the other</source>
         <translation>Volume, pression et énergie en fonction du temps simulé, un graphique sous l’autre</translation>
+    </message>
+    <message>
+        <source>Reference curve (rk45)</source>
+        <translation>Courbe de référence (rk45)</translation>
+    </message>
+    <message>
+        <source>A converged solution (rk45 at tolerance 1e-10) from the run&apos;s start, computed beside the run on a thread of its own and drawn dashed: the distance between a curve and it is the error of the run so far (the global error), where the band is the error one step adds. It follows the run up to the first change of the physics (a parameter edit other than DT, or a drag).</source>
+        <translation>Une solution convergée (rk45 à la tolérance 1e-10) depuis le début de la simulation, calculée à côté dans un fil à part et tracée en tirets : l’écart entre une courbe et elle est l’erreur accumulée de la simulation (l’erreur globale), alors que la bande est l’erreur qu’ajoute un pas. Elle suit la simulation jusqu’au premier changement de la physique (une modification de paramètre autre que DT, ou un glissement).</translation>
+    </message>
+    <message>
+        <source>reference (rk45, 1e-10)</source>
+        <translation>référence (rk45, 1e-10)</translation>
+    </message>
+    <message>
+        <source>Reference: computing from the run&apos;s start…</source>
+        <translation>Référence : calcul depuis le début de la simulation…</translation>
+    </message>
+    <message>
+        <source>At t = %1 s the run&apos;s total energy is %2 J from the reference: the error of the run so far.</source>
+        <translation>À t = %1 s, l’énergie totale de la simulation est à %2 J de la référence : l’erreur accumulée de la simulation.</translation>
+    </message>
+    <message>
+        <source>The band there, one step&apos;s error: ±%1 J.</source>
+        <translation>La bande à cet endroit, l’erreur d’un pas : ±%1 J.</translation>
+    </message>
+    <message>
+        <source>The reference itself failed at t = %1 s (%2): the body fails at every step size.</source>
+        <translation>La référence elle-même a échoué à t = %1 s (%2) : le corps échoue à tout pas de temps.</translation>
+    </message>
+    <message>
+        <source>The run was changed at t = %1 s (a parameter edit or a drag): the reference stops there.</source>
+        <translation>La simulation a été modifiée à t = %1 s (une modification de paramètre ou un glissement) : la référence s’arrête là.</translation>
+    </message>
+    <message>
+        <source>The reference has reached t = %1 s (computing).</source>
+        <translation>La référence a atteint t = %1 s (calcul en cours).</translation>
     </message>
 </context>
 <context>
@@ -1598,10 +1920,6 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <translation>dérive d’énergie</translation>
     </message>
     <message>
-        <source>distance to view %1</source>
-        <translation>distance à la vue %1</translation>
-    </message>
-    <message>
         <source>failed</source>
         <translation>échec</translation>
     </message>
@@ -1689,6 +2007,10 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <source>Run</source>
         <comment>button: start the simulation</comment>
         <translation>Lancer</translation>
+    </message>
+    <message>
+        <source>distance&lt;br&gt;to view %1</source>
+        <translation>distance&lt;br&gt;à la vue %1</translation>
     </message>
 </context>
 <context>
@@ -2100,6 +2422,14 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     <message>
         <source>Blew up at t = %1 s: %2</source>
         <translation>A explosé à t = %1 s : %2</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source> (Δx %1, Δy %2)</source>
+        <translation> (Δx %1, Δy %2)</translation>
     </message>
 </context>
 <context>

@@ -736,8 +736,8 @@ void Viewport::updateRulerLabel() {
         return;
     }
     const QVector3D d = m_rulerB - m_rulerA;
-    QString text = tr("%1 m").arg(double(d.length()), 0, 'f', 3);
-    if (m_camera.is2d()) text += tr(" (Δx %1, Δy %2)").arg(double(d.x()), 0, 'f', 3).arg(double(d.y()), 0, 'f', 3);
+    QString text = tr("%1 m").arg(num(double(d.length()), 'f', 3));
+    if (m_camera.is2d()) text += tr(" (Δx %1, Δy %2)").arg(num(double(d.x()), 'f', 3)).arg(num(double(d.y()), 'f', 3));
     m_rulerLabel->setText(text);
     m_rulerLabel->adjustSize();
     const QPointF p = toPixel(m_rulerB);

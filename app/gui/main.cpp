@@ -198,6 +198,14 @@ int main(int argc, char** argv) {
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
     if (parser.isSet(QStringLiteral("version"))) parser.showVersion();
+    // The language before any widget or translated text is made (ui/language.h): --lang, else
+    // View > Language's choice (not for screenshots, which keep no settings), else the system's.
+    const QString lang = parser.value(langOpt);
+    if (!lang.isEmpty() && !elui::isLanguage(lang))
+        return fail(QStringLiteral("--lang %1 is not one of %2").arg(quoted(lang), languageCodes()));
+    elui::applyLanguage(elui::chooseLanguage(
+        lang, parser.isSet(shotOpt) ? QString() : QSettings().value(QStringLiteral("language")).toString(),
+        QLocale::system().uiLanguages()));
     // One scene, given alone (a file from the desktop) or by --scene, not both.
     const QStringList positional = parser.positionalArguments();
     if (positional.size() > 1)
@@ -362,14 +370,6 @@ int main(int argc, char** argv) {
         elui::setDefaultGlFormat(0);
         elui::Viewport::setSamples(0);
     }
-    // The language before any widget is made (ui/language.h): --lang, else View > Language's
-    // choice (not for screenshots, which keep no settings), else the system's.
-    const QString lang = parser.value(langOpt);
-    if (!lang.isEmpty() && !elui::isLanguage(lang))
-        return fail(QStringLiteral("--lang %1 is not one of %2").arg(quoted(lang), languageCodes()));
-    elui::applyLanguage(elui::chooseLanguage(
-        lang, screenshot ? QString() : QSettings().value(QStringLiteral("language")).toString(),
-        QLocale::system().uiLanguages()));
     elui::MainWindow window(!screenshot);
     if (parser.isSet(contrastOpt)) window.setHighContrast(true);
     if (uiScale != 1.0) window.setUiScale(uiScale);
