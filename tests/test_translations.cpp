@@ -27,6 +27,8 @@
 #include <QXmlStreamReader>
 
 #include "simcore/params.h"
+#include "simlab/stability.h"
+#include "ui/failure_banner.h"
 #include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/main_window.h"
@@ -250,7 +252,18 @@ private slots:
             // simcore's texts through the "simcore" context.
             QVERIFY(simcoreText(simcore::paramSpec(simcore::Param::Gravity).meaning).startsWith(QStringLiteral("Fallbeschleunigung")));
         }
+        // The failure banner's verdict: the same sentences in German, simlab's words in English.
+        simlab::FailureCheck check;
+        check.checked = true;
+        check.from = 0.5;
+        check.rerunDt = 0.0025;
+        check.until = 0.9;
+        const QString german = FailureBanner::checkText(check);
+        QVERIFY2(german.startsWith(QStringLiteral("Der Schritt war zu groß")) && german.contains(QStringLiteral("t = 0,500 s")) &&
+                     german.contains(QStringLiteral("0,0025 s")),
+                 qPrintable(german));
         applyLanguage(QStringLiteral("en"));
+        QCOMPARE(FailureBanner::checkText(check), QString::fromStdString(simlab::failureCheckText(check)));
         QCOMPARE(num(0.0025), QStringLiteral("0.0025"));
     }
 

@@ -647,6 +647,14 @@ total %2, at the start %3</source>
         <source>Use DT = %1 s and reset</source>
         <translation>استخدم DT = %1 s وأعد الضبط</translation>
     </message>
+    <message>
+        <source>The body itself collapses — no step size will save it: run again from t = %1 s at a step of %2 s (%3), it fails at t = %4 s as well (%5). Change the body instead: lighter masses or less gravity, stiffer springs (ks, and the radial ones), more gas pressure, or more damping.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The step was too large: run again from t = %1 s at a step of %2 s, the same stretch runs through t = %3 s. The linearised body agrees: %4.</source>
+        <translation>كانت الخطوة كبيرة جدًا: بإعادة التشغيل من t = %1 s بخطوة %2 s يجتاز المقطع نفسه حتى t = %3 s. ويؤكد الجسم الخطي ذلك: %4.</translation>
+    </message>
 </context>
 <context>
     <name>elui::HelpDialog</name>

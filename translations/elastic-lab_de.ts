@@ -647,6 +647,14 @@ gesamt %2, zu Beginn %3</translation>
         <source>Use DT = %1 s and reset</source>
         <translation>DT = %1 s verwenden und zurücksetzen</translation>
     </message>
+    <message>
+        <source>The body itself collapses — no step size will save it: run again from t = %1 s at a step of %2 s (%3), it fails at t = %4 s as well (%5). Change the body instead: lighter masses or less gravity, stiffer springs (ks, and the radial ones), more gas pressure, or more damping.</source>
+        <translation>Der Körper selbst kollabiert — keine Schrittweite rettet ihn: erneut ab t = %1 s mit einem Schritt von %2 s gerechnet (%3), scheitert er ebenfalls bei t = %4 s (%5). Ändern Sie stattdessen den Körper: leichtere Massen oder weniger Schwerkraft, steifere Federn (ks und die radialen), mehr Gasdruck oder mehr Dämpfung.</translation>
+    </message>
+    <message>
+        <source>The step was too large: run again from t = %1 s at a step of %2 s, the same stretch runs through t = %3 s. The linearised body agrees: %4.</source>
+        <translation>Der Schritt war zu groß: erneut ab t = %1 s mit einem Schritt von %2 s gerechnet, läuft derselbe Abschnitt bis t = %3 s durch. Der linearisierte Körper stimmt zu: %4.</translation>
+    </message>
 </context>
 <context>
     <name>elui::HelpDialog</name>

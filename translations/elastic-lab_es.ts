@@ -647,6 +647,14 @@ total %2, al inicio %3</translation>
         <source>Use DT = %1 s and reset</source>
         <translation>Usar DT = %1 s y reiniciar</translation>
     </message>
+    <message>
+        <source>The body itself collapses — no step size will save it: run again from t = %1 s at a step of %2 s (%3), it fails at t = %4 s as well (%5). Change the body instead: lighter masses or less gravity, stiffer springs (ks, and the radial ones), more gas pressure, or more damping.</source>
+        <translation>El propio cuerpo colapsa — ningún tamaño de paso lo salvará: ejecutado de nuevo desde t = %1 s con un paso de %2 s (%3), también falla en t = %4 s (%5). Cambie en su lugar el cuerpo: masas más ligeras o menos gravedad, resortes más rígidos (ks, y los radiales), más presión del gas o más amortiguamiento.</translation>
+    </message>
+    <message>
+        <source>The step was too large: run again from t = %1 s at a step of %2 s, the same stretch runs through t = %3 s. The linearised body agrees: %4.</source>
+        <translation>El paso era demasiado grande: ejecutado de nuevo desde t = %1 s con un paso de %2 s, el mismo tramo llega hasta t = %3 s. El cuerpo linealizado lo confirma: %4.</translation>
+    </message>
 </context>
 <context>
     <name>elui::HelpDialog</name>

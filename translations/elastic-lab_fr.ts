@@ -647,6 +647,14 @@ total %2, au départ %3</translation>
         <source>Use DT = %1 s and reset</source>
         <translation>Utiliser DT = %1 s et réinitialiser</translation>
     </message>
+    <message>
+        <source>The body itself collapses — no step size will save it: run again from t = %1 s at a step of %2 s (%3), it fails at t = %4 s as well (%5). Change the body instead: lighter masses or less gravity, stiffer springs (ks, and the radial ones), more gas pressure, or more damping.</source>
+        <translation>Le corps lui-même s’effondre — aucun pas de temps ne le sauvera : relancé depuis t = %1 s avec un pas de %2 s (%3), il échoue lui aussi à t = %4 s (%5). Changez plutôt le corps : des masses plus légères ou moins de pesanteur, des ressorts plus raides (ks, et les radiaux), plus de pression de gaz, ou plus d’amortissement.</translation>
+    </message>
+    <message>
+        <source>The step was too large: run again from t = %1 s at a step of %2 s, the same stretch runs through t = %3 s. The linearised body agrees: %4.</source>
+        <translation>Le pas était trop grand : relancé depuis t = %1 s avec un pas de %2 s, le même passage va jusqu’à t = %3 s. Le corps linéarisé le confirme : %4.</translation>
+    </message>
 </context>
 <context>
     <name>elui::HelpDialog</name>

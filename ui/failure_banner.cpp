@@ -108,6 +108,22 @@ void FailureBanner::startCheck(const simcore::SimulationSnapshot& start, const s
     });
 }
 
+// The check's verdict in words: simlab's text in English; in another language the same sentences
+// with the same numbers (the failure's reason and the linearised verdict stay simlab's words).
+QString FailureBanner::checkText(const simlab::FailureCheck& c) {
+    if (currentLanguage() == QLatin1String("en")) return QString::fromStdString(simlab::failureCheckText(c));
+    if (c.physical && c.rerunFailure)
+        return tr("The body itself collapses — no step size will save it: run again from t = %1 s at a step of %2 s "
+                  "(%3), it fails at t = %4 s as well (%5). Change the body instead: lighter masses or less gravity, "
+                  "stiffer springs (ks, and the radial ones), more gas pressure, or more damping.")
+            .arg(num(c.from, 'f', 3), num(c.rerunDt, 'g', 3), QString::fromStdString(c.integrator),
+                 num(c.rerunFailure->time, 'f', 3), QString::fromStdString(c.rerunFailure->reason));
+    return tr("The step was too large: run again from t = %1 s at a step of %2 s, the same stretch runs through "
+              "t = %3 s. The linearised body agrees: %4.")
+        .arg(num(c.from, 'f', 3), num(c.rerunDt, 'g', 3), num(c.until, 'f', 3),
+             QString::fromStdString(simlab::verdictText(c.verdict)));
+}
+
 void FailureBanner::present() {
     QString head = tr("<b>The simulation blew up</b> at t = %1 s (step %2): %3. The run is paused and shows the "
                       "last good state.")
@@ -121,7 +137,7 @@ void FailureBanner::present() {
         body = tr("Checking whether a smaller step survives the same stretch (a re-run at a quarter of DT, in the "
                   "background)…");
     else if (m_check && m_check->checked)
-        body = QString::fromStdString(simlab::failureCheckText(*m_check)).toHtmlEscaped();
+        body = checkText(*m_check).toHtmlEscaped();
     else
         body = tr("Try a smaller DT, a more stable integrator (rk4, or implicit-euler), softer springs or less "
                   "pressure, then Reset.");
