@@ -1428,7 +1428,7 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>Reset all to the scene&apos;s defaults</source>
-        <translation>أعد الكل إلى قيم المشهد الافتراضية</translation>
+        <translation>الكل إلى القيم الافتراضية</translation>
     </message>
     <message>
         <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>

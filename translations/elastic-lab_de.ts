@@ -1430,7 +1430,7 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     </message>
     <message>
         <source>Reset all to the scene&apos;s defaults</source>
-        <translation>Alle auf die Standardwerte der Szene zurücksetzen</translation>
+        <translation>Alle auf Standardwerte</translation>
     </message>
     <message>
         <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>

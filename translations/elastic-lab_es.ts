@@ -1430,7 +1430,7 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     </message>
     <message>
         <source>Reset all to the scene&apos;s defaults</source>
-        <translation>Restablecer todo a los valores por defecto de la escena</translation>
+        <translation>Todo a valores por defecto</translation>
     </message>
     <message>
         <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>

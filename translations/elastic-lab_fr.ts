@@ -1430,7 +1430,7 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     </message>
     <message>
         <source>Reset all to the scene&apos;s defaults</source>
-        <translation>Tout remettre aux valeurs par défaut de la scène</translation>
+        <translation>Tout aux valeurs par défaut</translation>
     </message>
     <message>
         <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
