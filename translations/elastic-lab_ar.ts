@@ -2421,8 +2421,8 @@ Plots, parameters and exports still work.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>distance</source>
-        <translation>المسافة</translation>
+        <source>distance from %1: %2 m (RMS)</source>
+        <translation>المسافة عن %1: %2 m (RMS)</translation>
     </message>
     <message>
         <source>Blew up at t = %1 s: %2</source>

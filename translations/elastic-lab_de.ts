@@ -2424,8 +2424,8 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <translation>anderswo klicken zum Aufheben</translation>
     </message>
     <message>
-        <source>distance</source>
-        <translation>Abstand</translation>
+        <source>distance from %1: %2 m (RMS)</source>
+        <translation>Abstand zu %1: %2 m (RMS)</translation>
     </message>
     <message>
         <source>Blew up at t = %1 s: %2</source>

@@ -2424,8 +2424,8 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <translation>haga clic en otro lugar para borrar</translation>
     </message>
     <message>
-        <source>distance</source>
-        <translation>distancia</translation>
+        <source>distance from %1: %2 m (RMS)</source>
+        <translation>distancia a %1: %2 m (RMS)</translation>
     </message>
     <message>
         <source>Blew up at t = %1 s: %2</source>

@@ -2424,8 +2424,8 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <translation>cliquez ailleurs pour effacer</translation>
     </message>
     <message>
-        <source>distance</source>
-        <translation>distance</translation>
+        <source>distance from %1: %2 m (RMS)</source>
+        <translation>distance à %1 : %2 m (RMS)</translation>
     </message>
     <message>
         <source>Blew up at t = %1 s: %2</source>

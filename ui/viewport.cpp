@@ -909,9 +909,9 @@ void Viewport::updateOverlay() {
     // (the Run dock's "distance to view N"); none on the reference view itself.
     const int reference = std::clamp(lane.divergenceReference, 0, int(m_frame->lanes.size()) - 1);
     if (m_frame->lanes.size() > 1 && m_lane != reference && !lane.failure)
-        html += QStringLiteral("<br>%1 from %2: %3 m (RMS)")
-                    .arg(tr("distance"), m_frame->lanes[std::size_t(reference)].integrator)
-                    .arg(num(lane.divergence, 'g', 3));
+        html += QStringLiteral("<br>") + tr("distance from %1: %2 m (RMS)")
+                                              .arg(m_frame->lanes[std::size_t(reference)].integrator)
+                                              .arg(num(lane.divergence, 'g', 3));
     if (lane.failure)
         html += QStringLiteral("<br><span style='background:#c0392b; color:white'>&nbsp;%1&nbsp;</span>")
                     .arg(tr("Blew up at t = %1 s: %2")
