@@ -294,7 +294,7 @@ private slots:
         tight.atol = tight.rtol = ReferenceRun::kTolerance;
         exact.setIntegratorOptions(tight);
         QVERIFY(exact.advanceTo(tRun));
-        const int total = dock->seriesNames("energy").indexOf("total");
+        const int total = int(dock->seriesNames("energy").indexOf("total"));
         const simcore::Diagnostics& d = exact.diagnostics();
         QVERIFY(total >= 0);
         QVERIFY(qAbs(dock->referenceValueAt("energy", total, tRun) - d.total()) <= 1e-9 * qAbs(d.total()));

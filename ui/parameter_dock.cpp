@@ -97,132 +97,153 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
             form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
             outer->addWidget(box);
         }
-        const QString key = toQString(spec->key);
-        const QString unit = toQString(spec->unit);
         if (!spec->choices.empty()) {
-            // A choice: its names, in the table's order (index = the parameter's value).
-            auto* box = new QComboBox(this);
-            box->setObjectName(QStringLiteral("param_") + key);
-            for (int k = 0; !spec->choiceName(k).empty(); ++k) box->addItem(QString::fromStdString(spec->choiceName(k)));
-            const QString tip = tr("<b>%1</b><br>%2<br>default: %3")
-                                    .arg(key, simcoreText(spec->meaning).toHtmlEscaped(),
-                                         QString::fromStdString(spec->choiceName(spec->defaultFor(kind))));
-            box->setToolTip(tip);
-            setAccessibleText(box, key + QStringLiteral(": ") + simcoreText(spec->meaning), tip);
-            auto* label = new QLabel(key, this);
-            label->setToolTip(tip);
-            auto* choiceRow = new QWidget(this);
-            auto* ch = new QHBoxLayout(choiceRow);
-            ch->setContentsMargins(0, 0, 0, 0);
-            ch->addWidget(box, 1);
-            auto* back = new QToolButton(choiceRow);
-            back->setObjectName(QStringLiteral("default_") + key);
-            back->setText(QStringLiteral("↺"));
-            back->setToolTip(tr("Back to the default: %1").arg(QString::fromStdString(spec->choiceName(spec->defaultFor(kind)))));
-            connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
-            ch->addWidget(back);
-            m_defaults[key] = back;
-            form->addRow(label, choiceRow);
-            m_choices[key] = box;
-            connect(box, &QComboBox::activated, this, [this, key, id = spec->id](int index) {
-                if (m_updating) return;
-                if (m_shown.count(key) && m_shown[key] == index) return;
-                m_shown[key] = index;
-                emit edited(id, index);
-            });
+            addChoiceRow(*spec, form);
             continue;
         }
-        auto* edit = new QLineEdit(this);
-        edit->setObjectName(QStringLiteral("param_") + key);
-        QString tip = tr("<b>%1</b>%2<br>%3<br>allowed: %4<br>default: %5")
-                                .arg(key, unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit),
-                                     simcoreText(spec->meaning).toHtmlEscaped(),
-                                     QString::fromStdString(spec->rangeText()),
-                                     formatValue(spec->defaultFor(kind)));
-        if (spec->id == simcore::Param::Dt) {
-            // One editor for DT: the Run dock's (it also offers the stable step). Shown here.
-            edit->setReadOnly(true);
-            edit->setEnabled(false);
-            tip = tr("Set DT in the Run dock.") + QStringLiteral("<br>") + tip;
-        }
-        edit->setToolTip(tip);
-        edit->setProperty("tip", tip);
-        // Read as "ks: structural spring stiffness ... , newtons per metre" (the unit as written).
-        setAccessibleText(edit, key + QStringLiteral(": ") + simcoreText(spec->meaning) +
-                                    (unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit)),
-                          tip);
-        auto* row = new QWidget(this);
-        auto* h = new QHBoxLayout(row);
-        h->setContentsMargins(0, 0, 0, 0);
-        h->addWidget(edit, 1);
-        auto* unitLabel = new QLabel(unit, row);
-        unitLabel->setMinimumWidth(44);
-        h->addWidget(unitLabel);
-        auto* back = new QToolButton(row);
-        back->setObjectName(QStringLiteral("default_") + key);
-        back->setText(QStringLiteral("↺"));
-        back->setToolTip(tr("Back to the default: %1 %2").arg(formatValue(spec->defaultFor(kind)), unit));
-        back->setEnabled(spec->id != simcore::Param::Dt);
-        connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
-        h->addWidget(back);
-        m_defaults[key] = back;
-        auto* label = new QLabel(fieldLabel(*spec), this);
-        label->setObjectName(QStringLiteral("label_") + key);
-        if (label->text() != key) tip += QStringLiteral("<br>") + tr("key: %1").arg(key);
-        edit->setToolTip(tip);
-        edit->setProperty("tip", tip);
-        label->setToolTip(tip);
-        form->addRow(label, row);
-        m_fields[key] = edit;
-        connect(edit, &QLineEdit::editingFinished, this, [this, key] { commit(key); });
-        // Enter commits and leaves the field, Escape puts back the value in use (field_keys.h).
-        installFieldKeys(
-            edit, [this, key] { return commit(key); },
-            [this, key, edit] {
-                if (m_shown.count(key)) edit->setText(formatValue(m_shown[key]));
-                markField(edit, {}, edit->property("tip").toString());
-            });
-        for (const SliderSpan& span : kSliderSpans) {
-            if (span.id != spec->id) continue;
-            // Inside the table's range; the ends and the unit beside it.
-            const double lo = std::max(span.lo, spec->minValue), hi = std::min(span.hi, spec->maxValue);
-            m_spans[key] = {lo, hi, span.log && lo > 0.0};
-            auto* slideRow = new QWidget(this);
-            auto* sh = new QHBoxLayout(slideRow);
-            sh->setContentsMargins(0, 0, 0, 0);
-            auto* slider = new QSlider(Qt::Horizontal, slideRow);
-            slider->setObjectName(QStringLiteral("slider_") + key);
-            slider->setRange(0, kSliderSteps);
-            slider->setToolTip(tr("%1 from %2 to %3 %4%5 (the field takes any value in %6)")
-                                   .arg(key, formatValue(lo), formatValue(hi), unit,
-                                        m_spans[key].log ? tr(", logarithmic") : QString(),
-                                        QString::fromStdString(spec->rangeText())));
-            auto* loLabel = new QLabel(formatValue(lo), slideRow);
-            auto* hiLabel = new QLabel(unit.isEmpty() ? formatValue(hi) : formatValue(hi) + QLatin1Char(' ') + unit, slideRow);
-            QFont small = loLabel->font();
-            small.setPointSizeF(small.pointSizeF() * 0.85);
-            loLabel->setFont(small);
-            hiLabel->setFont(small);
-            sh->addWidget(loLabel);
-            sh->addWidget(slider, 1);
-            sh->addWidget(hiLabel);
-            form->addRow(QString(), slideRow);
-            m_sliders[key] = slider;
-            connect(slider, &QSlider::valueChanged, this, [this, key, id = spec->id](int position) {
-                if (m_updating) return;
-                const double v = sliderValue(key, position);
-                if (m_shown.count(key) && m_shown[key] == v) return;
-                m_shown[key] = v;
-                m_updating = true;
-                m_fields[key]->setText(formatValue(v));
-                m_updating = false;
-                showDefaultState(key, v);
-                emit edited(id, v);
-            });
-        }
+        addFieldRow(*spec, form);
+        for (const SliderSpan& span : kSliderSpans)
+            if (span.id == spec->id) addSliderRow(*spec, span.lo, span.hi, span.log, form);
     }
     outer->addStretch(1);
     setValues(simcore::ParameterSet(kind));
+}
+
+// A choice: its names, in the table's order (index = the parameter's value), and ↺.
+void ParameterForm::addChoiceRow(const simcore::ParamSpec& param, QFormLayout* form) {
+    const simcore::ParamSpec* spec = &param;
+    const simcore::SceneKind kind = m_kind;
+    const QString key = toQString(spec->key);
+    auto* box = new QComboBox(this);
+    box->setObjectName(QStringLiteral("param_") + key);
+    for (int k = 0; !spec->choiceName(k).empty(); ++k) box->addItem(QString::fromStdString(spec->choiceName(k)));
+    const QString tip = tr("<b>%1</b><br>%2<br>default: %3")
+                            .arg(key, simcoreText(spec->meaning).toHtmlEscaped(),
+                                 QString::fromStdString(spec->choiceName(spec->defaultFor(kind))));
+    box->setToolTip(tip);
+    setAccessibleText(box, key + QStringLiteral(": ") + simcoreText(spec->meaning), tip);
+    auto* label = new QLabel(key, this);
+    label->setToolTip(tip);
+    auto* choiceRow = new QWidget(this);
+    auto* ch = new QHBoxLayout(choiceRow);
+    ch->setContentsMargins(0, 0, 0, 0);
+    ch->addWidget(box, 1);
+    auto* back = new QToolButton(choiceRow);
+    back->setObjectName(QStringLiteral("default_") + key);
+    back->setText(QStringLiteral("↺"));
+    back->setToolTip(tr("Back to the default: %1").arg(QString::fromStdString(spec->choiceName(spec->defaultFor(kind)))));
+    connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
+    ch->addWidget(back);
+    m_defaults[key] = back;
+    form->addRow(label, choiceRow);
+    m_choices[key] = box;
+    connect(box, &QComboBox::activated, this, [this, key, id = spec->id](int index) {
+        if (m_updating) return;
+        if (m_shown.count(key) && m_shown[key] == index) return;
+        m_shown[key] = index;
+        emit edited(id, index);
+    });
+}
+
+// A number: the field, its unit and ↺ on one row, labelled with the key (or its name).
+void ParameterForm::addFieldRow(const simcore::ParamSpec& param, QFormLayout* form) {
+    const simcore::ParamSpec* spec = &param;
+    const simcore::SceneKind kind = m_kind;
+    const QString key = toQString(spec->key);
+    const QString unit = toQString(spec->unit);
+    auto* edit = new QLineEdit(this);
+    edit->setObjectName(QStringLiteral("param_") + key);
+    QString tip = tr("<b>%1</b>%2<br>%3<br>allowed: %4<br>default: %5")
+                            .arg(key, unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit),
+                                 simcoreText(spec->meaning).toHtmlEscaped(),
+                                 QString::fromStdString(spec->rangeText()),
+                                 formatValue(spec->defaultFor(kind)));
+    if (spec->id == simcore::Param::Dt) {
+        // One editor for DT: the Run dock's (it also offers the stable step). Shown here.
+        edit->setReadOnly(true);
+        edit->setEnabled(false);
+        tip = tr("Set DT in the Run dock.") + QStringLiteral("<br>") + tip;
+    }
+    edit->setToolTip(tip);
+    edit->setProperty("tip", tip);
+    // Read as "ks: structural spring stiffness ... , newtons per metre" (the unit as written).
+    setAccessibleText(edit, key + QStringLiteral(": ") + simcoreText(spec->meaning) +
+                                (unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit)),
+                      tip);
+    auto* row = new QWidget(this);
+    auto* h = new QHBoxLayout(row);
+    h->setContentsMargins(0, 0, 0, 0);
+    h->addWidget(edit, 1);
+    auto* unitLabel = new QLabel(unit, row);
+    unitLabel->setMinimumWidth(44);
+    h->addWidget(unitLabel);
+    auto* back = new QToolButton(row);
+    back->setObjectName(QStringLiteral("default_") + key);
+    back->setText(QStringLiteral("↺"));
+    back->setToolTip(tr("Back to the default: %1 %2").arg(formatValue(spec->defaultFor(kind)), unit));
+    back->setEnabled(spec->id != simcore::Param::Dt);
+    connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
+    h->addWidget(back);
+    m_defaults[key] = back;
+    auto* label = new QLabel(fieldLabel(*spec), this);
+    label->setObjectName(QStringLiteral("label_") + key);
+    if (label->text() != key) tip += QStringLiteral("<br>") + tr("key: %1").arg(key);
+    edit->setToolTip(tip);
+    edit->setProperty("tip", tip);
+    label->setToolTip(tip);
+    form->addRow(label, row);
+    m_fields[key] = edit;
+    connect(edit, &QLineEdit::editingFinished, this, [this, key] { commit(key); });
+    // Enter commits and leaves the field, Escape puts back the value in use (field_keys.h).
+    installFieldKeys(
+        edit, [this, key] { return commit(key); },
+        [this, key, edit] {
+            if (m_shown.count(key)) edit->setText(formatValue(m_shown[key]));
+            markField(edit, {}, edit->property("tip").toString());
+        });
+}
+
+// The slider under a main parameter's field, inside the table's range, its ends and unit beside it.
+void ParameterForm::addSliderRow(const simcore::ParamSpec& param, double spanLo, double spanHi, bool spanLog,
+                                 QFormLayout* form) {
+    const simcore::ParamSpec* spec = &param;
+    const QString key = toQString(spec->key);
+    const QString unit = toQString(spec->unit);
+    // Inside the table's range; the ends and the unit beside it.
+    const double lo = std::max(spanLo, spec->minValue), hi = std::min(spanHi, spec->maxValue);
+    m_spans[key] = {lo, hi, spanLog && lo > 0.0};
+    auto* slideRow = new QWidget(this);
+    auto* sh = new QHBoxLayout(slideRow);
+    sh->setContentsMargins(0, 0, 0, 0);
+    auto* slider = new QSlider(Qt::Horizontal, slideRow);
+    slider->setObjectName(QStringLiteral("slider_") + key);
+    slider->setRange(0, kSliderSteps);
+    slider->setToolTip(tr("%1 from %2 to %3 %4%5 (the field takes any value in %6)")
+                           .arg(key, formatValue(lo), formatValue(hi), unit,
+                                m_spans[key].log ? tr(", logarithmic") : QString(),
+                                QString::fromStdString(spec->rangeText())));
+    auto* loLabel = new QLabel(formatValue(lo), slideRow);
+    auto* hiLabel = new QLabel(unit.isEmpty() ? formatValue(hi) : formatValue(hi) + QLatin1Char(' ') + unit, slideRow);
+    QFont small = loLabel->font();
+    small.setPointSizeF(small.pointSizeF() * 0.85);
+    loLabel->setFont(small);
+    hiLabel->setFont(small);
+    sh->addWidget(loLabel);
+    sh->addWidget(slider, 1);
+    sh->addWidget(hiLabel);
+    form->addRow(QString(), slideRow);
+    m_sliders[key] = slider;
+    connect(slider, &QSlider::valueChanged, this, [this, key, id = spec->id](int position) {
+        if (m_updating) return;
+        const double v = sliderValue(key, position);
+        if (m_shown.count(key) && m_shown[key] == v) return;
+        m_shown[key] = v;
+        m_updating = true;
+        m_fields[key]->setText(formatValue(v));
+        m_updating = false;
+        showDefaultState(key, v);
+        emit edited(id, v);
+    });
 }
 
 QStringList ParameterForm::keys() const {

@@ -16,6 +16,7 @@
 #include "simcore/params.h"
 
 class QComboBox;
+class QFormLayout;
 class QLineEdit;
 class QPushButton;
 class QSlider;
@@ -55,6 +56,9 @@ signals:
     void rejected(const QString& key, const QString& message);
 
 private:
+    void addChoiceRow(const simcore::ParamSpec& spec, QFormLayout* form);
+    void addFieldRow(const simcore::ParamSpec& spec, QFormLayout* form);
+    void addSliderRow(const simcore::ParamSpec& spec, double lo, double hi, bool log, QFormLayout* form);
     bool commit(const QString& key);  // false: refused (the field is marked red)
     void setToDefault(const QString& key);
     void showDefaultState(const QString& key, double value);

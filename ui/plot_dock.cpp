@@ -121,7 +121,33 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_plotLayout->setContentsMargins(0, 0, 0, 0);
     scroll->setWidget(plotHost);
     layout->addWidget(scroll, 1);
-    // Side by side: every view's energy drift on a log axis.
+    createDriftPlot(host);
+    setWidget(host);
+
+    m_replotTimer = new QTimer(this);
+    m_replotTimer->setSingleShot(true);
+    m_replotTimer->setInterval(100);  // 10 replots a second are plenty for a trace
+    connect(m_replotTimer, &QTimer::timeout, this, &PlotDock::replotNow);
+    connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
+            [this] { setWindow(m_windowCombo->currentData().toDouble()); });
+    connect(m_autoscale, &QCheckBox::toggled, this, [this](bool on) {
+        if (on) scheduleReplot();
+    });
+    connect(m_showBands, &QCheckBox::toggled, this, [this](bool on) {
+        for (const auto& bands : m_bands)
+            for (const Band& b : bands) {
+                b.upper->setVisible(on);
+                b.lower->setVisible(on);
+            }
+        updateBandNote();
+        scheduleReplot();
+        emit bandsShownChanged(on);
+    });
+    setScene(simcore::SceneKind::Ring2d);
+}
+
+// Side by side: every view's energy drift on a log axis, under the plots (hidden with one view).
+void PlotDock::createDriftPlot(QWidget* host) {
     m_driftPlot = new QCustomPlot(host);
     m_driftPlot->setObjectName(QStringLiteral("plot_drift"));
     m_driftPlot->setMinimumHeight(plotMinimumHeight());
@@ -152,28 +178,6 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_views.push_back({});
     m_driftGraphs.push_back(m_driftPlot->addGraph());
     m_driftGraphs[0]->setPen(QPen(viewColor(0), 1.6, viewStyle(0)));
-    setWidget(host);
-
-    m_replotTimer = new QTimer(this);
-    m_replotTimer->setSingleShot(true);
-    m_replotTimer->setInterval(100);  // 10 replots a second are plenty for a trace
-    connect(m_replotTimer, &QTimer::timeout, this, &PlotDock::replotNow);
-    connect(m_windowCombo, &QComboBox::currentIndexChanged, this,
-            [this] { setWindow(m_windowCombo->currentData().toDouble()); });
-    connect(m_autoscale, &QCheckBox::toggled, this, [this](bool on) {
-        if (on) scheduleReplot();
-    });
-    connect(m_showBands, &QCheckBox::toggled, this, [this](bool on) {
-        for (const auto& bands : m_bands)
-            for (const Band& b : bands) {
-                b.upper->setVisible(on);
-                b.lower->setVisible(on);
-            }
-        updateBandNote();
-        scheduleReplot();
-        emit bandsShownChanged(on);
-    });
-    setScene(simcore::SceneKind::Ring2d);
 }
 
 void PlotDock::setScene(simcore::SceneKind kind) {
@@ -195,95 +199,8 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     for (std::size_t v = 0; v < m_driftGraphs.size(); ++v) m_viewOf.insert(m_driftGraphs[v], int(v));
     m_specs = plotSpecs(kind);
     for (const PlotSpec& spec : m_specs) {
-        auto* plot = new QCustomPlot(m_plotLayout->parentWidget());
-        plot->setObjectName(QStringLiteral("plot_") + spec.id);
-        plot->setAccessibleName(spec.title);
-        plot->setAccessibleDescription(tr("%1 against simulated time; the numbers are in the Run dock's readout and in "
-                                          "File > Export Data").arg(spec.title));
-        plot->setMinimumHeight(plotMinimumHeight());
-        plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-        // Live traces: fast polylines and cached labels keep a replot cheap on a busy machine.
-        plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
-        plot->plotLayout()->insertRow(0);
-        auto* title = new QCPTextElement(plot, spec.title, QFont(font().family(), font().pointSize(), QFont::Bold));
-        plot->plotLayout()->addElement(0, 0, title);
-        plot->xAxis->setLabel(tr("t [s]"));
-        plot->yAxis->setLabel(spec.yLabel);
-        // A narrow dock or presentation mode: only as many numbers as fit apart (plot_ticks.h).
-        keepTickLabelsApart(plot->xAxis);
-        keepTickLabelsApart(plot->yAxis);
-        legendUnderAxes(plot, font());
-        for (const SeriesSpec& s : spec.series) {
-            QCPGraph* g = plot->addGraph();
-            g->setName(s.name);
-            g->setPen(QPen(s.color, s.name == tr("total") ? 2.0 : 1.4));
-        }
-        // The abandoned future: the same colours, faint and dashed, behind the series.
-        for (const SeriesSpec& s : spec.series) {
-            QCPGraph* g = plot->addGraph();
-            g->setName(s.name + tr(" (abandoned)"));
-            QColor faint = s.color;
-            faint.setAlpha(90);
-            g->setPen(QPen(faint, 1.2, Qt::DashLine));
-            g->removeFromLegend();
-            g->setLayer(QStringLiteral("background"));
-        }
-        // The cursor line and its values.
-        auto* line = new QCPItemStraightLine(plot);
-        line->setObjectName(QStringLiteral("cursorLine"));
-        line->setPen(QPen(QColor(40, 40, 40, 200), 1.0));
-        line->setVisible(false);
-        auto* label = new QCPItemText(plot);
-        label->setObjectName(QStringLiteral("cursorText"));
-        // Beside the line at the top: x in time, y a fraction of the axis rect.
-        label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
-        label->position->setTypeX(QCPItemPosition::ptPlotCoords);
-        label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-        label->position->setCoords(0.0, 0.02);
-        label->setTextAlignment(Qt::AlignLeft);
-        label->setBrush(QColor(255, 255, 255, 200));
-        label->setPen(QPen(QColor(40, 40, 40, 120)));
-        label->setPadding(QMargins(3, 1, 3, 1));
-        QFont small = font();
-        small.setPointSizeF(small.pointSizeF() * 0.85);
-        label->setFont(small);
-        label->setVisible(false);
-        // The bands after every series (graph i stays series i), behind them, out of the legend.
-        std::vector<Band> bands;
-        for (std::size_t s = 0; s < spec.series.size(); ++s) {
-            if (!spec.series[s].error) continue;
-            QColor edge = spec.series[s].color, fill = edge;
-            edge.setAlpha(90);
-            fill.setAlpha(60);
-            Band b{int(s), plot->addGraph(), plot->addGraph()};
-            for (QCPGraph* g : {b.upper, b.lower}) {
-                g->setName(spec.series[s].name + tr(" error band"));
-                g->setPen(QPen(edge, 0.8));
-                g->removeFromLegend();
-                g->setLayer(QStringLiteral("grid"));  // drawn under the curves
-                g->setVisible(m_showBands->isChecked());
-            }
-            b.lower->setBrush(fill);
-            b.lower->setChannelFillGraph(b.upper);
-            bands.push_back(b);
-        }
-        m_bands.push_back(std::move(bands));
-        // Zooming or dragging by hand means the user wants to look: stop autoscaling.
-        connect(plot, &QCustomPlot::mouseWheel, this, [this] { m_autoscale->setChecked(false); });
-        connect(plot, &QCustomPlot::mousePress, this, [this] { m_autoscale->setChecked(false); });
-        plot->setNotAntialiasedElements(m_live ? QCP::aePlottables : QCP::aeNone);
-        m_plotLayout->addWidget(plot, 1);
-        m_plots.push_back(plot);
-        // Where a view failed: a red cross at the end of its curves.
-        QCPGraph* marks = plot->addGraph();
-        marks->setLineStyle(QCPGraph::lsNone);
-        marks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QPen(QColor(210, 30, 30), 2.2), Qt::NoBrush, 11));
-        marks->setName(tr("✕ a view failed"));
-        marks->removeFromLegend();
-        m_viewOf.insert(marks, -1);
-        m_failMarks.push_back(marks);
-        m_viewGraphs.emplace_back();
-        m_viewLegend.emplace_back();
+        QCustomPlot* plot = createPlot(spec);
+        addBandsAndMarks(plot, spec);
     }
     // The drift plot stays last, with the same share of the height as each plot.
     m_plotLayout->removeWidget(m_driftPlot);
@@ -294,6 +211,106 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     rebuildReferenceGraphs();
     clear();
     updateCursor();
+}
+
+// One plot of the scene: title, axes, the series, the abandoned future's faint copies (graph
+// i is series i, then the abandoned ones) and the cursor's line and label.
+QCustomPlot* PlotDock::createPlot(const PlotSpec& spec) {
+    auto* plot = new QCustomPlot(m_plotLayout->parentWidget());
+    plot->setObjectName(QStringLiteral("plot_") + spec.id);
+    plot->setAccessibleName(spec.title);
+    plot->setAccessibleDescription(tr("%1 against simulated time; the numbers are in the Run dock's readout and in "
+                                      "File > Export Data").arg(spec.title));
+    plot->setMinimumHeight(plotMinimumHeight());
+    plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    // Live traces: fast polylines and cached labels keep a replot cheap on a busy machine.
+    plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
+    plot->plotLayout()->insertRow(0);
+    auto* title = new QCPTextElement(plot, spec.title, QFont(font().family(), font().pointSize(), QFont::Bold));
+    plot->plotLayout()->addElement(0, 0, title);
+    plot->xAxis->setLabel(tr("t [s]"));
+    plot->yAxis->setLabel(spec.yLabel);
+    // A narrow dock or presentation mode: only as many numbers as fit apart (plot_ticks.h).
+    keepTickLabelsApart(plot->xAxis);
+    keepTickLabelsApart(plot->yAxis);
+    legendUnderAxes(plot, font());
+    for (const SeriesSpec& s : spec.series) {
+        QCPGraph* g = plot->addGraph();
+        g->setName(s.name);
+        g->setPen(QPen(s.color, s.name == tr("total") ? 2.0 : 1.4));
+    }
+    // The abandoned future: the same colours, faint and dashed, behind the series.
+    for (const SeriesSpec& s : spec.series) {
+        QCPGraph* g = plot->addGraph();
+        g->setName(s.name + tr(" (abandoned)"));
+        QColor faint = s.color;
+        faint.setAlpha(90);
+        g->setPen(QPen(faint, 1.2, Qt::DashLine));
+        g->removeFromLegend();
+        g->setLayer(QStringLiteral("background"));
+    }
+    // The cursor line and its values.
+    auto* line = new QCPItemStraightLine(plot);
+    line->setObjectName(QStringLiteral("cursorLine"));
+    line->setPen(QPen(QColor(40, 40, 40, 200), 1.0));
+    line->setVisible(false);
+    auto* label = new QCPItemText(plot);
+    label->setObjectName(QStringLiteral("cursorText"));
+    // Beside the line at the top: x in time, y a fraction of the axis rect.
+    label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+    label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+    label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    label->position->setCoords(0.0, 0.02);
+    label->setTextAlignment(Qt::AlignLeft);
+    label->setBrush(QColor(255, 255, 255, 200));
+    label->setPen(QPen(QColor(40, 40, 40, 120)));
+    label->setPadding(QMargins(3, 1, 3, 1));
+    QFont small = font();
+    small.setPointSizeF(small.pointSizeF() * 0.85);
+    label->setFont(small);
+    label->setVisible(false);
+    return plot;
+}
+
+// The error bands (two graphs each, behind the curves, out of the legend), the zoom that stops
+// autoscaling, and the red crosses where a view failed; the plot joins the dock.
+void PlotDock::addBandsAndMarks(QCustomPlot* plot, const PlotSpec& spec) {
+    // The bands after every series (graph i stays series i), behind them, out of the legend.
+    std::vector<Band> bands;
+    for (std::size_t s = 0; s < spec.series.size(); ++s) {
+        if (!spec.series[s].error) continue;
+        QColor edge = spec.series[s].color, fill = edge;
+        edge.setAlpha(90);
+        fill.setAlpha(60);
+        Band b{int(s), plot->addGraph(), plot->addGraph()};
+        for (QCPGraph* g : {b.upper, b.lower}) {
+            g->setName(spec.series[s].name + tr(" error band"));
+            g->setPen(QPen(edge, 0.8));
+            g->removeFromLegend();
+            g->setLayer(QStringLiteral("grid"));  // drawn under the curves
+            g->setVisible(m_showBands->isChecked());
+        }
+        b.lower->setBrush(fill);
+        b.lower->setChannelFillGraph(b.upper);
+        bands.push_back(b);
+    }
+    m_bands.push_back(std::move(bands));
+    // Zooming or dragging by hand means the user wants to look: stop autoscaling.
+    connect(plot, &QCustomPlot::mouseWheel, this, [this] { m_autoscale->setChecked(false); });
+    connect(plot, &QCustomPlot::mousePress, this, [this] { m_autoscale->setChecked(false); });
+    plot->setNotAntialiasedElements(m_live ? QCP::aePlottables : QCP::aeNone);
+    m_plotLayout->addWidget(plot, 1);
+    m_plots.push_back(plot);
+    // Where a view failed: a red cross at the end of its curves.
+    QCPGraph* marks = plot->addGraph();
+    marks->setLineStyle(QCPGraph::lsNone);
+    marks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QPen(QColor(210, 30, 30), 2.2), Qt::NoBrush, 11));
+    marks->setName(tr("✕ a view failed"));
+    marks->removeFromLegend();
+    m_viewOf.insert(marks, -1);
+    m_failMarks.push_back(marks);
+    m_viewGraphs.emplace_back();
+    m_viewLegend.emplace_back();
 }
 
 int PlotDock::plotMinimumHeight() const {

@@ -145,6 +145,9 @@ private:
     void updateCursor();
     int plotIndex(const QString& plotId) const;
     void updateBandNote();
+    void createDriftPlot(QWidget* host);
+    QCustomPlot* createPlot(const PlotSpec& spec);
+    void addBandsAndMarks(QCustomPlot* plot, const PlotSpec& spec);
     void createReferenceControls(QWidget* host, QVBoxLayout* layout);
     void rebuildReferenceGraphs();        // after setScene: graphs for the new plots, refilled
     void appendReference(int first, int count);

@@ -43,6 +43,17 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     auto* host = new QWidget(this);
     auto* layout = new QVBoxLayout(host);
     layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(createForm(host));
+    createButtons(host, layout);
+    createReadout(host, layout);
+    layout->addStretch(1);
+    setWidget(host);
+    connectFields();
+    connectButtons();
+}
+
+// Integrator, DT, the adaptive methods' tolerances and the speed, one row each.
+QFormLayout* RunDock::createForm(QWidget* host) {
     auto* form = new QFormLayout;
     m_integrator = new QComboBox(host);
     m_integrator->setObjectName(QStringLiteral("integratorCombo"));
@@ -92,8 +103,11 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     m_speed->setToolTip(tr("How fast simulated time runs against the wall clock"));
     form->addRow(tr("Speed"), m_speed);
     m_speed->setAccessibleName(tr("Speed"));
-    layout->addLayout(form);
+    return form;
+}
 
+// Run / Pause, Step, Reset in a row, and the step-doubling switch under them.
+void RunDock::createButtons(QWidget* host, QVBoxLayout* layout) {
     auto* buttons = new QHBoxLayout;
     m_run = new QPushButton(tr("Run", "button: start the simulation"), host);
     m_run->setObjectName(QStringLiteral("runButton"));
@@ -111,6 +125,10 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     m_doubling->setToolTip(tr("Fixed-step integrators: estimate the local error by taking each step also as "
                               "two half steps. Costs about twice the work. rk45 always reports its own estimate."));
     layout->addWidget(m_doubling);
+}
+
+// The readout: the run's numbers in a monospace table, read out by screen readers.
+void RunDock::createReadout(QWidget* host, QVBoxLayout* layout) {
     m_readout = new QLabel(host);
     m_readout->setObjectName(QStringLiteral("readout"));
     m_readout->setTextFormat(Qt::RichText);
@@ -124,9 +142,10 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     // second: it changes every frame).
     makeLive(m_readout, tr("Readout"));
     m_readout->setAccessibleDescription(tr("Time, steps, energies and the energy balance of the run"));
-    layout->addStretch(1);
-    setWidget(host);
+}
 
+// The typed fields: checked, committed on Enter or leaving, put back on Escape.
+void RunDock::connectFields() {
     connect(m_integrator, &QComboBox::currentTextChanged, this, [this](const QString& name) {
         if (!m_updating) emit integratorChosen(name);
     });
@@ -170,6 +189,9 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
             markField(m_atol, {}, m_tolTip);
         });
     }
+}
+
+void RunDock::connectButtons() {
     connect(m_run, &QPushButton::clicked, this, [this] {
         if (m_running) emit pauseRequested();
         else emit runRequested();

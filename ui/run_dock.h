@@ -10,6 +10,8 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QVBoxLayout;
+class QFormLayout;
 class QLineEdit;
 class QPushButton;
 
@@ -45,6 +47,11 @@ signals:
     void message(const QString& text);
 
 private:
+    QFormLayout* createForm(QWidget* host);
+    void createButtons(QWidget* host, QVBoxLayout* layout);
+    void createReadout(QWidget* host, QVBoxLayout* layout);
+    void connectFields();
+    void connectButtons();
     QComboBox* m_integrator = nullptr;
     QLineEdit* m_dt = nullptr;
     QPushButton* m_run = nullptr;

@@ -232,7 +232,25 @@ void StabilityMapDock::present(const Result& r) {
     m_margin = r.margin;
     m_curves = r.boundary;
     const bool hasRegion = simlab::regionKind(r.integrator) != simlab::RegionKind::None;
+    drawEdges(r, hasRegion);
+    drawEigenvalues(hasRegion);
+    const QString name = QString::fromStdString(r.integrator);
+    describe(r);
+    m_try->setEnabled(hasRegion || m_scanRunning);
+    m_try->setToolTip(hasRegion ? tryTip() : tr("%1 has no fixed stability limit to measure").arg(name));
+    // A measured limit holds for the body and the method, whatever DT is now.
+    if (m_scanRow && !(withoutDt(m_scanParams) == withoutDt(m_shownParams) && m_scanIntegrator == m_shownIntegrator)) {
+        m_scanRow.reset();
+        m_measuredText.clear();
+    }
+    showMeasured();
+    fitView();
+    ++m_resultSerial;
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
 
+// The region's edge (filled when the method has one), and the other views' edges dashed.
+void StabilityMapDock::drawEdges(const Result& r, bool hasRegion) {
     for (QCPCurve* c : m_boundary) m_plot->removePlottable(c);
     m_boundary.clear();
     for (const auto& curve : m_curves) {
@@ -267,7 +285,10 @@ void StabilityMapDock::present(const Result& r) {
             m_overlay.push_back(c);
         }
     }
+}
 
+// The eigenvalues times DT, and the limiting pair marked where the method has a region.
+void StabilityMapDock::drawEigenvalues(bool hasRegion) {
     QVector<double> xs, ys;
     for (const Complex& l : m_spectrum.lambda) {
         xs.append(m_shownDt * l.real());
@@ -283,7 +304,10 @@ void StabilityMapDock::present(const Result& r) {
     m_limiting->setVisible(m_margin.hasLimiting && hasRegion);
     if (m_limiting->visible()) m_limiting->addToLegend();
     else m_limiting->removeFromLegend();
+}
 
+// The axis, each view's margin in words and how the eigenvalues were found.
+void StabilityMapDock::describe(const Result& r) {
     const QString name = QString::fromStdString(r.integrator);
     m_plot->xAxis->setLabel(tr("Re(hλ), h = DT = %1 s").arg(num(m_shownDt)));
     if (r.views.size() <= 1) {
@@ -304,17 +328,6 @@ void StabilityMapDock::present(const Result& r) {
     }
     m_methodLabel->setText(tr("Eigenvalues: %1.\n%2")
                                .arg(QString::fromStdString(m_spectrum.methodText), QString::fromStdString(simlab::regionNote(r.integrator))));
-    m_try->setEnabled(hasRegion || m_scanRunning);
-    m_try->setToolTip(hasRegion ? tryTip() : tr("%1 has no fixed stability limit to measure").arg(name));
-    // A measured limit holds for the body and the method, whatever DT is now.
-    if (m_scanRow && !(withoutDt(m_scanParams) == withoutDt(m_shownParams) && m_scanIntegrator == m_shownIntegrator)) {
-        m_scanRow.reset();
-        m_measuredText.clear();
-    }
-    showMeasured();
-    fitView();
-    ++m_resultSerial;
-    m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
 void StabilityMapDock::showMeasured() {

@@ -111,6 +111,9 @@ private:
     void request();
     void startJob(Job job);
     void present(const Result& result);
+    void drawEdges(const Result& r, bool hasRegion);
+    void drawEigenvalues(bool hasRegion);
+    void describe(const Result& r);
     void fitView();
     void drawRegion();
     void keepEqualAspect();
