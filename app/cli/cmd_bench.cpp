@@ -1,9 +1,12 @@
 // `bench`: how fast one scene steps, per size, integrator and thread count.
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "app/cli/cli.h"
 #include "simcore/force_kernels.h"
@@ -20,9 +23,26 @@ long peakResidentKiB() {
     return usage.ru_maxrss;  // KiB on Linux
 }
 
+// FNV-1a (64 bits) of a byte range: the final state's fingerprint (same hash = same
+// trajectory, bit for bit).
+std::uint64_t fnv1a(const void* data, std::size_t bytes) {
+    std::uint64_t h = 14695981039346656037ULL;
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * 1099511628211ULL;
+    return h;
+}
+
+// The default thread counts: one, and all CPUs this process may use (when more than one), so
+// that a bench prints both figures people compare.
+std::vector<long> defaultThreadCounts() {
+    const long all = simcore::availableThreads();
+    return all > 1 ? std::vector<long>{1, all} : std::vector<long>{1};
+}
+
 struct BenchArgs {
     SceneArgs scene;
-    long steps = 200, warmup = 10, threads = simcore::availableThreads();
+    long steps = 200, warmup = 10;
+    std::vector<long> threads = defaultThreadCounts();
     std::string kernels;
     bool header = false;
     bool stages = false;
@@ -38,14 +58,11 @@ void checkBench(BenchArgs& args) {
         if (!params.isExplicit(simcore::Param::Scaling)) params.set(simcore::Param::Scaling, 1.0);
 }
 
-int runBench(const BenchArgs& args) {
+// One timed run with `threads` threads from the scene's start: one CSV row.
+int benchRow(const BenchArgs& args, long threads, bool header) {
     const SceneSetup& setup = args.setup;
-    const long steps = args.steps, warmup = args.warmup, threads = args.threads;
-    // The force kernels to time (default: the widest this CPU runs); the row names the set
-    // actually used, which is narrower when the CPU lacks the one asked for.
+    const long steps = args.steps, warmup = args.warmup;
     namespace kernels = simcore::kernels;
-    for (auto set : {kernels::KernelSet::Portable, kernels::KernelSet::Avx2, kernels::KernelSet::Avx512})
-        if (args.kernels == kernels::kernelSetName(set)) kernels::useKernels(set);
 
     const auto buildStart = std::chrono::steady_clock::now();
     simcore::Simulation sim(setup.params, setup.integrator);
@@ -71,25 +88,45 @@ int runBench(const BenchArgs& args) {
     const double usPerStep = 1e6 * seconds / static_cast<double>(steps);
     const double nsPerSpring = 1e9 * seconds / (evals * static_cast<double>(topo.springCount()));
     const double realTime = sim.dt() / (seconds / static_cast<double>(steps));
-    if (args.header) {
-        std::printf("scene,integrator,threads,particles,springs,faces,steps,us_per_step,ns_per_spring_eval,"
-                    "steps_per_second,real_time_factor,build_seconds,peak_rss_mib,kernels");
+    const Eigen::VectorXd& state = sim.state();
+    const std::uint64_t hash = fnv1a(state.data(), sizeof(double) * static_cast<std::size_t>(state.size()));
+    if (header) {
+        std::printf("scene,integrator,precision,threads,particles,springs,faces,steps,us_per_step,ns_per_spring_eval,"
+                    "steps_per_second,real_time_factor,build_seconds,peak_rss_mib,state_hash,kernels");
         // One column per stage of the step (simulation.h), in its order: us per step.
         if (args.stages)
             for (int s = 0; s < simcore::kStageCount; ++s)
                 std::printf(",us_%s", std::string(simcore::stageName(static_cast<simcore::Stage>(s))).c_str());
         std::printf("\n");
     }
-    std::printf("%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%s", setup.sceneName.c_str(),
+    std::printf("%s,%s,double,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%016llx,%s", setup.sceneName.c_str(),
                 setup.integrator.c_str(), sim.threads(), topo.particleCount(), topo.springCount(), faces,
                 steps, usPerStep, nsPerSpring, 1e6 / usPerStep, realTime, buildSeconds,
-                static_cast<double>(peakResidentKiB()) / 1024.0, kernels::kernelSetName(kernels::kernelsInUse()));
+                static_cast<double>(peakResidentKiB()) / 1024.0, static_cast<unsigned long long>(hash),
+                kernels::kernelSetName(kernels::kernelsInUse()));
     if (args.stages) {
         const simcore::StepProfile& profile = sim.profile();
         for (int s = 0; s < simcore::kStageCount; ++s)
             std::printf(",%.3f", 1e6 * profile[static_cast<simcore::Stage>(s)] / static_cast<double>(profile.steps));
     }
     std::printf("\n");
+    std::fflush(stdout);
+    return kExitOk;
+}
+
+int runBench(const BenchArgs& args) {
+    // The force kernels to time (default: the widest this CPU runs); the row names the set
+    // actually used, which is narrower when the CPU lacks the one asked for.
+    namespace kernels = simcore::kernels;
+    for (auto set : {kernels::KernelSet::Portable, kernels::KernelSet::Avx2, kernels::KernelSet::Avx512})
+        if (args.kernels == kernels::kernelSetName(set)) kernels::useKernels(set);
+    // One row per thread count, each a fresh run from the same start (the same hash means the
+    // same trajectory, whatever the thread count).
+    bool header = args.header;
+    for (long threads : args.threads) {
+        if (const int code = benchRow(args, threads, header); code != kExitOk) return code;
+        header = false;
+    }
     return kExitOk;
 }
 
@@ -98,12 +135,15 @@ int runBench(const BenchArgs& args) {
 Command addBenchCommand(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
     CLI::App* sub = app.add_subcommand("bench", "time N steps: us/step, ns per spring evaluation, real-time factor, "
-                                                "memory, and the force kernels used");
+                                                "memory, the precision and force kernels used, and a hash of the final state");
     addSceneOptions(*sub, args->scene);
     sub->add_option("--steps", args->steps, "steps timed")->type_name("N")->check(wholeIn(1, 100000000L))->capture_default_str();
     sub->add_option("--warmup", args->warmup, "steps run before timing")->type_name("N")->check(wholeIn(0, 1000000L))->capture_default_str();
-    sub->add_option("--threads", args->threads, "threads (default: all CPUs this process may use: its affinity mask and cgroup CPU quota)")
-        ->type_name("K")
+    sub->add_option("--threads", args->threads,
+                    "thread counts, one row each, comma-separated (default: 1 and all CPUs this process may use: its "
+                    "affinity mask and cgroup CPU quota)")
+        ->type_name("K[,K...]")
+        ->delimiter(',')
         ->check(wholeIn(1, 256))
         ->capture_default_str();
     sub->add_option("--kernels", args->kernels, "force kernels (default: the widest this CPU runs; a narrower set is "
