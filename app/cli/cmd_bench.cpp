@@ -5,10 +5,13 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/cli/cli.h"
+#include "simcore/float_path.h"
 #include "simcore/force_kernels.h"
 #include "simcore/params.h"
 #include "simcore/simulation.h"
@@ -44,6 +47,7 @@ struct BenchArgs {
     long steps = 200, warmup = 10;
     std::vector<long> threads = defaultThreadCounts();
     std::string kernels;
+    std::string precision = "double";
     bool header = false;
     bool stages = false;
     SceneSetup setup;  // after check()
@@ -56,6 +60,12 @@ void checkBench(BenchArgs& args) {
     simcore::ParameterSet& params = args.setup.params;
     if (params.has(simcore::Param::Scaling))
         if (!params.isExplicit(simcore::Param::Scaling)) params.set(simcore::Param::Scaling, 1.0);
+    if (args.precision == "float") {
+        if (!simcore::floatPathSupports(args.setup.integrator))
+            throw UsageError("--precision float is built for the explicit integrators " +
+                             simcore::floatPathIntegrators() + ", not " + args.setup.integrator);
+        if (args.stages) throw UsageError("--stages times the double path's stages; not with --precision float");
+    }
 }
 
 // One timed run with `threads` threads from the scene's start: one CSV row.
@@ -66,22 +76,31 @@ int benchRow(const BenchArgs& args, long threads, bool header) {
 
     const auto buildStart = std::chrono::steady_clock::now();
     simcore::Simulation sim(setup.params, setup.integrator);
+    // --precision float: the float path, started from the same state (float_path.h).
+    std::unique_ptr<simcore::FloatSimulation> single;
+    if (args.precision == "float") single = std::make_unique<simcore::FloatSimulation>(sim);
     const double buildSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
-    sim.setThreads(static_cast<int>(threads));
-    for (long i = 0; i < warmup; ++i) sim.step();
+    if (single) single->setThreads(static_cast<int>(threads));
+    else sim.setThreads(static_cast<int>(threads));
+    auto step = [&] { return single ? single->step() : sim.step(); };
+    auto failure = [&]() -> const std::optional<simcore::Failure>& { return single ? single->failure() : sim.failure(); };
+    auto evaluations = [&] {
+        return single ? single->diagnostics().forceEvaluations : sim.diagnostics().forceEvaluations;
+    };
+    for (long i = 0; i < warmup; ++i) step();
     // With --stages the timed steps time their stages too (two clock reads per stage, which
     // us_per_step then includes).
     sim.setProfiling(args.stages);
-    const std::uint64_t evalsBefore = sim.diagnostics().forceEvaluations;
+    const std::uint64_t evalsBefore = evaluations();
     const auto start = std::chrono::steady_clock::now();
-    for (long i = 0; i < steps && !sim.failed(); ++i) sim.step();
+    for (long i = 0; i < steps && !failure(); ++i) step();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (sim.failed()) {
-        std::fprintf(stderr, "bench: the simulation failed: %s\n", sim.failure()->reason.c_str());
+    if (failure()) {
+        std::fprintf(stderr, "bench: the simulation failed: %s\n", failure()->reason.c_str());
         return kExitFailed;
     }
-    const double evals = static_cast<double>(sim.diagnostics().forceEvaluations - evalsBefore);
+    const double evals = static_cast<double>(evaluations() - evalsBefore);
     const simcore::Topology& topo = sim.topology();
     std::size_t faces = 0;
     for (const simcore::Surface& s : topo.surfaces) faces += topo.dimension == 2 ? s.edges.size() : s.triangles.size();
@@ -89,7 +108,8 @@ int benchRow(const BenchArgs& args, long threads, bool header) {
     const double nsPerSpring = 1e9 * seconds / (evals * static_cast<double>(topo.springCount()));
     const double realTime = sim.dt() / (seconds / static_cast<double>(steps));
     const Eigen::VectorXd& state = sim.state();
-    const std::uint64_t hash = fnv1a(state.data(), sizeof(double) * static_cast<std::size_t>(state.size()));
+    const std::uint64_t hash = single ? single->stateHash()
+                                      : fnv1a(state.data(), sizeof(double) * static_cast<std::size_t>(state.size()));
     if (header) {
         std::printf("scene,integrator,precision,threads,particles,springs,faces,steps,us_per_step,ns_per_spring_eval,"
                     "steps_per_second,real_time_factor,build_seconds,peak_rss_mib,state_hash,kernels");
@@ -99,8 +119,8 @@ int benchRow(const BenchArgs& args, long threads, bool header) {
                 std::printf(",us_%s", std::string(simcore::stageName(static_cast<simcore::Stage>(s))).c_str());
         std::printf("\n");
     }
-    std::printf("%s,%s,double,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%016llx,%s", setup.sceneName.c_str(),
-                setup.integrator.c_str(), sim.threads(), topo.particleCount(), topo.springCount(), faces,
+    std::printf("%s,%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%016llx,%s", setup.sceneName.c_str(),
+                setup.integrator.c_str(), args.precision.c_str(), single ? single->threads() : sim.threads(), topo.particleCount(), topo.springCount(), faces,
                 steps, usPerStep, nsPerSpring, 1e6 / usPerStep, realTime, buildSeconds,
                 static_cast<double>(peakResidentKiB()) / 1024.0, static_cast<unsigned long long>(hash),
                 kernels::kernelSetName(kernels::kernelsInUse()));
@@ -150,6 +170,11 @@ Command addBenchCommand(CLI::App& app) {
                                                 "used and named when the CPU lacks the one asked for)")
         ->type_name("SET")
         ->check(CLI::IsMember({"portable", "avx2", "avx512"}));
+    sub->add_option("--precision", args->precision,
+                     "double, or float: the float32 path (state and forces in float; euler, midpoint, rk4, "
+                     "symplectic-euler, verlet; no contact)")
+        ->check(CLI::IsMember({"double", "float"}))
+        ->capture_default_str();
     sub->add_flag("--header", args->header, "print the CSV header line first");
     sub->add_flag("--stages", args->stages,
                   "also time each stage of the step (save, size, integrate, scan, collide, measure, constrain, "
