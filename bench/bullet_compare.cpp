@@ -1,7 +1,7 @@
 // Elastic Lab beside Bullet's btSoftBody, in one process, in alternating rounds (issue 27).
 //
 //   build/release/bench/elastic-lab-bullet-compare [--level 6] [--steps 200] [--rounds 7]
-//       [--kernels avx2] [--threads 1,2] [--bullet-bending 2] [--bullet-iterations 1]
+//       [--kernels avx2] [--threads 1,2] [--bullet-bending 2] [--bullet-iterations 1] [--float on]
 //
 // Ours: the two-layer sphere3d at the level (thesis scaling as `elastic-lab-cli bench`,
 // gravity off, the start perturbed by 0.01), RK4, DT 0.003, every diagnostic on.
@@ -12,6 +12,9 @@
 // iteration (Bullet's default; --bullet-iterations), in a btSoftRigidDynamicsWorld with gravity
 // off, stepped by stepSimulation(0.003, 0) (one step of exactly 0.003 s per call). Bullet's
 // soft body runs on one thread; ours with each thread count asked for.
+//
+// Ours also runs on the float32 path (float_path.h; --float off leaves it out), started from
+// the same state, each float lane paired with the double lane of its thread count.
 //
 // Each round times every lane for the same number of steps, one after the other; a lane's
 // ratio is its steps/s over Bullet's in the same round (a paired ratio, so that a machine
@@ -33,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "simcore/float_path.h"
 #include "simcore/force_kernels.h"
 #include "simcore/parallel.h"
 #include "simcore/simulation.h"
@@ -116,8 +120,10 @@ private:
 struct Lane {
     std::string name;
     std::function<void()> step;
+    int pairedWith = -1;        // the lane this one is also compared with (float: double's)
     std::vector<double> rate;   // steps/s per round
     std::vector<double> ratio;  // rate / Bullet's in the same round
+    std::vector<double> paired; // rate / the paired lane's in the same round
 };
 
 }  // namespace
@@ -128,6 +134,7 @@ int main(int argc, char** argv) {
     // outer layer's structural and shear springs (147,456). One position iteration: Bullet's
     // default.
     int level = 6, bending = 2, iterations = 1;
+    bool withFloat = true;
     long steps = 200, rounds = 7, warmup = 10;
     std::string kernels;
     std::vector<int> threads{1, 2};
@@ -135,7 +142,7 @@ int main(int argc, char** argv) {
         const std::string arg = argv[i];
         const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
         if (!value) {
-            std::fprintf(stderr, "usage: %s [--level L] [--steps N] [--rounds R] [--warmup N] [--kernels SET] [--threads 1,2] [--bullet-bending K] [--bullet-iterations N]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--level L] [--steps N] [--rounds R] [--warmup N] [--kernels SET] [--threads 1,2] [--bullet-bending K] [--bullet-iterations N] [--float on|off]\n", argv[0]);
             return 2;
         }
         if (arg == "--level") level = std::atoi(value);
@@ -145,6 +152,7 @@ int main(int argc, char** argv) {
         else if (arg == "--kernels") kernels = value;
         else if (arg == "--bullet-bending") bending = std::atoi(value);
         else if (arg == "--bullet-iterations") iterations = std::atoi(value);
+        else if (arg == "--float") withFloat = std::string(value) != "off";
         else if (arg == "--threads") {
             threads.clear();
             for (const char* p = value; *p;) {
@@ -171,21 +179,32 @@ int main(int argc, char** argv) {
     params.set(simcore::Param::Dt, 0.003);
 
     std::vector<std::unique_ptr<simcore::Simulation>> ours;
+    std::vector<std::unique_ptr<simcore::FloatSimulation>> floats;
     std::vector<Lane> lanes;
-    BulletSphere* bulletPtr = nullptr;
     std::unique_ptr<BulletSphere> bullet;
+    auto threadName = [](int t) { return std::to_string(t) + " thread" + (t > 1 ? "s" : ""); };
+    // Lanes: Bullet, then ours in double per thread count, then in float (the float32 path,
+    // started from the same state) per thread count, each float lane paired with the double
+    // lane of its thread count.
     for (int t : threads) {
         ours.push_back(std::make_unique<simcore::Simulation>(params, "rk4"));
         simcore::Simulation* sim = ours.back().get();
         sim->setThreads(t);
         if (!bullet) {
             bullet = std::make_unique<BulletSphere>(*sim, bending, iterations);
-            bulletPtr = bullet.get();
-            lanes.push_back({"bullet btSoftBody, 1 thread", [bulletPtr] { bulletPtr->step(); }, {}, {}});
+            BulletSphere* b = bullet.get();
+            lanes.push_back({"bullet btSoftBody, 1 thread", [b] { b->step(); }, -1, {}, {}, {}});
         }
-        lanes.push_back({"elastic-lab double, " + std::to_string(sim->threads()) + " thread" + (sim->threads() > 1 ? "s" : ""),
-                         [sim] { sim->step(); }, {}, {}});
+        lanes.push_back({"elastic-lab double, " + threadName(sim->threads()), [sim] { sim->step(); }, -1, {}, {}, {}});
     }
+    if (withFloat)
+        for (std::size_t k = 0; k < threads.size(); ++k) {
+            floats.push_back(std::make_unique<simcore::FloatSimulation>(*ours[k]));
+            simcore::FloatSimulation* single = floats.back().get();
+            single->setThreads(threads[k]);
+            lanes.push_back({"elastic-lab float, " + threadName(single->threads()), [single] { single->step(); },
+                             static_cast<int>(k) + 1, {}, {}, {}});
+        }
     const simcore::Simulation& first = *ours.front();
     std::printf("# CPU: %s; our kernels: %s; Bullet %d (btScalar: %zu bytes)\n", cpuName().c_str(),
                 sk::kernelSetName(sk::kernelsInUse()), btGetVersion(), sizeof(btScalar));
@@ -203,10 +222,18 @@ int main(int argc, char** argv) {
             lane.rate.push_back(static_cast<double>(steps) / seconds);
             lane.ratio.push_back(lane.rate.back() / lanes.front().rate.back());
         }
+        for (Lane& lane : lanes)
+            if (lane.pairedWith >= 0)
+                lane.paired.push_back(lane.rate.back() / lanes[static_cast<std::size_t>(lane.pairedWith)].rate.back());
     }
     for (const auto& sim : ours)
         if (sim->failed()) {
             std::fprintf(stderr, "our simulation failed: %s\n", sim->failure()->reason.c_str());
+            return 1;
+        }
+    for (const auto& single : floats)
+        if (single->failed()) {
+            std::fprintf(stderr, "our float simulation failed: %s\n", single->failure()->reason.c_str());
             return 1;
         }
     if (!bullet->finite()) {
@@ -214,12 +241,18 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::printf("lane,rounds,steps_per_round,steps_per_second_median,steps_per_second_min,steps_per_second_max,"
-                "ratio_to_bullet_median,ratio_min,ratio_max\n");
-    for (const Lane& lane : lanes)
-        std::printf("%s,%ld,%ld,%.1f,%.1f,%.1f,%.3f,%.3f,%.3f\n", lane.name.c_str(), rounds, steps, median(lane.rate),
+                "ratio_to_bullet_median,ratio_min,ratio_max,ratio_to_double_median,ratio_to_double_min,"
+                "ratio_to_double_max\n");
+    for (const Lane& lane : lanes) {
+        std::printf("%s,%ld,%ld,%.1f,%.1f,%.1f,%.3f,%.3f,%.3f", lane.name.c_str(), rounds, steps, median(lane.rate),
                     *std::min_element(lane.rate.begin(), lane.rate.end()),
                     *std::max_element(lane.rate.begin(), lane.rate.end()), median(lane.ratio),
                     *std::min_element(lane.ratio.begin(), lane.ratio.end()),
                     *std::max_element(lane.ratio.begin(), lane.ratio.end()));
+        if (lane.paired.empty()) std::printf(",,,\n");
+        else
+            std::printf(",%.3f,%.3f,%.3f\n", median(lane.paired), *std::min_element(lane.paired.begin(), lane.paired.end()),
+                        *std::max_element(lane.paired.begin(), lane.paired.end()));
+    }
     return 0;
 }

@@ -1,21 +1,24 @@
 // The float32 path (float_path.h).
 //
-// One force evaluation is three passes, each split into tasks fixed by the body:
-//  1. springs, in blocks: each spring's force F = [ks (L - L0) + kd (dv.u)] u into its own row
-//     of a spring buffer (4 floats), its damping power kd (dv.u)^2 summed per task in double;
-//     faces, in blocks: each face's row (b - a) x (c - a) (3D; (dy, -dx) in 2D) and its volume
-//     term x_a.((b - a) x (c - a)) (= x_a.(x_b x x_c); 2D: the shoelace term), summed per task
-//     in double;
-//  2. (the caller) volumes and pressures from the task sums, in task order;
-//  3. particles, in blocks: each gathers the rows of its springs (+ where it is the first
-//     end, - where the second) and of its faces (times P/6, or P/2 in 2D) in a fixed order,
-//     adds its weight, divides by its mass, and hands (v, a) to the integrator's update of its
-//     own rows.
-// Positions and velocities are padded rows (x, y, z, 0) of 16 bytes, so that a particle is one
-// 128-bit load. With AVX2 the spring and face passes take eight at a time: the rows of eight
-// particles are transposed to columns in registers, the arithmetic runs eight wide, operation
-// for operation as the scalar code (no fused multiply-add: simcore builds with
-// -ffp-contract=off), so that both give the same bits.
+// One force evaluation, as the double path's ForceModel does it: the body's particles are
+// owned by kChunks fixed chunks (vertex k of each layer by chunk 0 when k < n/2), each chunk's
+// springs and faces join only its own particles, and the few joining two chunks are shared:
+//  1. each chunk (a task) clears its rows of the force and gradient buffers and adds its
+//     springs' forces F = [ks (L - L0) + kd (dv.u)] u (+F to the first end, -F to the second,
+//     spring by spring) and its faces' rows (b - a) x (c - a) (3D; (dy, -dx) in 2D) to each
+//     corner; its damping power kd (dv.u)^2 and volume terms x_a.((b - a) x (c - a))
+//     (= x_a.(x_b x x_c); 2D: the shoelace term) are summed in double lanes;
+//  2. (the caller) the shared springs and faces, then volumes and pressures from the sums, in
+//     chunk order;
+//  3. particles, in blocks: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the
+//     integrator's update of the particle's own rows.
+// Positions, velocities and forces are padded rows (x, y, z, 0) of 16 bytes, so that a
+// particle is one 128-bit load. With AVX2 springs and faces go eight at a time: the rows of
+// eight particles are transposed to columns in registers, the arithmetic runs eight wide,
+// operation for operation as the scalar code (no fused multiply-add: simcore builds with
+// -ffp-contract=off), and the results are added to the rows one spring or face at a time in
+// order, so that both give the same bits, and so do 1 and 2 threads (the split depends on the
+// body only).
 #include "simcore/float_path.h"
 
 #include <algorithm>
@@ -38,9 +41,10 @@ namespace simcore {
 namespace {
 
 constexpr std::array<std::string_view, 5> kFloatIntegrators{"euler", "midpoint", "rk4", "symplectic-euler", "verlet"};
-constexpr std::size_t kSpringTask = 4096;  // springs per task (a multiple of 8)
-constexpr std::size_t kFaceTask = 4096;    // faces per task
 constexpr int kParticleTask = 2048;        // particles per task
+// Springs and faces are taken in blocks of kStridedBlock with a stride of kStride (see the
+// constructor).
+constexpr std::size_t kStridedBlock = 128, kStride = 16;
 
 using F4 = float __attribute__((vector_size(16)));
 
@@ -65,13 +69,17 @@ struct LaneSums {
 
 struct SpringArrays {
     std::vector<int> a, b;
-    std::vector<float> rest, ks, kd;
+    std::vector<float> rest;
     std::size_t size() const { return a.size(); }
 };
 
-// One spring, scalar: the reference the eight-wide code follows operation by operation.
-inline void springScalar(const SpringArrays& s, std::size_t k, const float* x, const float* v, float* out,
-                         LaneSums& power) {
+inline void addRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) + r); }
+inline void subRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) - r); }
+
+// One spring, scalar: the reference the eight-wide code follows operation by operation. Its
+// power goes to lane (k - base) % 8.
+inline void springScalar(const SpringArrays& s, std::size_t base, std::size_t k, float ks, float kd, const float* x,
+                         const float* v, float* f4, LaneSums& power) {
     const F4 xa = row(x, s.a[k]), xb = row(x, s.b[k]), va = row(v, s.a[k]), vb = row(v, s.b[k]);
     const F4 d = xb - xa, dv = vb - va;
     const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
@@ -79,34 +87,36 @@ inline void springScalar(const SpringArrays& s, std::size_t k, const float* x, c
     const float inv = 1.0f / len;
     const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
     const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
-    float mag = s.ks[k] * (len - s.rest[k]) + s.kd[k] * dvu;
-    float p = s.kd[k] * dvu * dvu;
-    if (!(len >= static_cast<float>(kDegenerateLength))) mag = 0.0f, p = 0.0f;
-    const float fx = mag * ux, fy = mag * uy, fz = mag * uz;
+    const float mag = ks * (len - s.rest[k]) + kd * dvu;
+    const float p = kd * dvu * dvu;
     const bool ok = len >= static_cast<float>(kDegenerateLength);
-    setRow(out, static_cast<int>(k), F4{ok ? fx : 0.0f, ok ? fy : 0.0f, ok ? fz : 0.0f, 0.0f});
-    power.lane[k % 8] += static_cast<double>(p);
+    const F4 force{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
+    addRow(f4, s.a[k], force);
+    subRow(f4, s.b[k], force);
+    power.lane[(k - base) % 8] += static_cast<double>(ok ? p : 0.0f);
 }
 
-// One face, scalar: its row and its volume term.
-// The volume term goes to lane (k - base) % 8, base being where the run of faces began.
+// One face, scalar: its row added to its corners, its volume term to lane (k - base) % 8.
 inline void faceScalar(const std::vector<std::array<int, 3>>& faces, int dimension, std::size_t base, std::size_t k,
-                       const float* x, float* out, LaneSums& volume) {
+                       const float* x, float* g4, LaneSums& volume) {
     const auto& f = faces[k];
     const F4 xa = row(x, f[0]), xb = row(x, f[1]);
-    F4 g;
     float term;
     if (dimension == 2) {
         const F4 d = xb - xa;
-        g = F4{d[1], 0.0f - d[0], 0.0f, 0.0f};
+        const F4 g{d[1], 0.0f - d[0], 0.0f, 0.0f};
         term = xa[0] * xb[1] - xb[0] * xa[1];
+        addRow(g4, f[0], g);
+        addRow(g4, f[1], g);
     } else {
         const F4 xc = row(x, f[2]);
         const F4 e = xb - xa, h = xc - xa;
-        g = F4{e[1] * h[2] - e[2] * h[1], e[2] * h[0] - e[0] * h[2], e[0] * h[1] - e[1] * h[0], 0.0f};
+        const F4 g{e[1] * h[2] - e[2] * h[1], e[2] * h[0] - e[0] * h[2], e[0] * h[1] - e[1] * h[0], 0.0f};
         term = (xa[0] * g[0] + xa[1] * g[1]) + xa[2] * g[2];
+        addRow(g4, f[0], g);
+        addRow(g4, f[1], g);
+        addRow(g4, f[2], g);
     }
-    setRow(out, static_cast<int>(k), g);
     volume.lane[(k - base) % 8] += static_cast<double>(term);
 }
 
@@ -128,31 +138,53 @@ inline void faceScalar(const std::vector<std::array<int, 3>>& faces, int dimensi
     cz = _mm256_shuffle_ps(t1, t3, 0x44);
 }
 
-// Rows k..k+7 of out from three columns (the fourth component 0).
-[[gnu::always_inline]] inline void storeRows8(float* out, std::size_t k, __m256 cx, __m256 cy,
-                                                                    __m256 cz) {
+// Eight rows (x, y, z, 0) from three columns: rows[j] is lane j's.
+[[gnu::always_inline]] inline void rows8(__m256 cx, __m256 cy, __m256 cz, __m128* rows) {
     const __m256 zero = _mm256_setzero_ps();
     const __m256 t0 = _mm256_unpacklo_ps(cx, cy), t1 = _mm256_unpackhi_ps(cx, cy);
     const __m256 t2 = _mm256_unpacklo_ps(cz, zero), t3 = _mm256_unpackhi_ps(cz, zero);
     const __m256 r0 = _mm256_shuffle_ps(t0, t2, 0x44), r1 = _mm256_shuffle_ps(t0, t2, 0xEE);
     const __m256 r2 = _mm256_shuffle_ps(t1, t3, 0x44), r3 = _mm256_shuffle_ps(t1, t3, 0xEE);
-    float* o = out + 4 * k;
-    _mm256_storeu_ps(o, _mm256_permute2f128_ps(r0, r1, 0x20));
-    _mm256_storeu_ps(o + 8, _mm256_permute2f128_ps(r2, r3, 0x20));
-    _mm256_storeu_ps(o + 16, _mm256_permute2f128_ps(r0, r1, 0x31));
-    _mm256_storeu_ps(o + 24, _mm256_permute2f128_ps(r2, r3, 0x31));
+    rows[0] = _mm256_castps256_ps128(r0);
+    rows[1] = _mm256_castps256_ps128(r1);
+    rows[2] = _mm256_castps256_ps128(r2);
+    rows[3] = _mm256_castps256_ps128(r3);
+    rows[4] = _mm256_extractf128_ps(r0, 1);
+    rows[5] = _mm256_extractf128_ps(r1, 1);
+    rows[6] = _mm256_extractf128_ps(r2, 1);
+    rows[7] = _mm256_extractf128_ps(r3, 1);
 }
 
-[[gnu::always_inline]] inline void addLanes(LaneSums& sums, __m256 v) {
-    alignas(32) double d[8];
-    _mm256_store_pd(d, _mm256_cvtps_pd(_mm256_castps256_ps128(v)));
-    _mm256_store_pd(d + 4, _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1)));
-    for (int l = 0; l < 8; ++l) sums.lane[static_cast<std::size_t>(l)] += d[l];
+[[gnu::always_inline]] inline void addRow128(float* f4, int i, __m128 r) {
+    float* p = f4 + 4 * static_cast<std::ptrdiff_t>(i);
+    _mm_storeu_ps(p, _mm_add_ps(_mm_loadu_ps(p), r));
+}
+[[gnu::always_inline]] inline void subRow128(float* f4, int i, __m128 r) {
+    float* p = f4 + 4 * static_cast<std::ptrdiff_t>(i);
+    _mm_storeu_ps(p, _mm_sub_ps(_mm_loadu_ps(p), r));
 }
 
-void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, const float* x,
-                                      const float* v, float* out, LaneSums& power) {
+// Eight double lanes in two registers, loaded from and stored back to LaneSums: lane l adds
+// its elements in the same order as the scalar code.
+struct LaneRegisters {
+    __m256d lo, hi;
+    explicit LaneRegisters(const LaneSums& sums)
+        : lo(_mm256_loadu_pd(sums.lane.data())), hi(_mm256_loadu_pd(sums.lane.data() + 4)) {}
+    void add(__m256 v) {
+        lo = _mm256_add_pd(lo, _mm256_cvtps_pd(_mm256_castps256_ps128(v)));
+        hi = _mm256_add_pd(hi, _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1)));
+    }
+    void store(LaneSums& sums) const {
+        _mm256_storeu_pd(sums.lane.data(), lo);
+        _mm256_storeu_pd(sums.lane.data() + 4, hi);
+    }
+};
+
+void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float ksScalar, float kdScalar,
+              const float* x, const float* v, float* f4, LaneSums& power) {
     const __m256 degenerate = _mm256_set1_ps(static_cast<float>(kDegenerateLength)), one = _mm256_set1_ps(1.0f);
+    const __m256 ks = _mm256_set1_ps(ksScalar), kd = _mm256_set1_ps(kdScalar);
+    LaneRegisters sums(power);
     std::size_t k = begin;
     for (; k + 8 <= end; k += 8) {
         const int* ia = s.a.data() + k;
@@ -171,29 +203,36 @@ void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, const f
         const __m256 ux = _mm256_mul_ps(dx, inv), uy = _mm256_mul_ps(dy, inv), uz = _mm256_mul_ps(dz, inv);
         const __m256 dvu =
             _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, ux), _mm256_mul_ps(wy, uy)), _mm256_mul_ps(wz, uz));
-        const __m256 ks = _mm256_loadu_ps(s.ks.data() + k), kd = _mm256_loadu_ps(s.kd.data() + k);
         const __m256 ok = _mm256_cmp_ps(len, degenerate, _CMP_GE_OQ);
-        const __m256 mag = _mm256_and_ps(
-            ok, _mm256_add_ps(_mm256_mul_ps(ks, _mm256_sub_ps(len, _mm256_loadu_ps(s.rest.data() + k))),
-                              _mm256_mul_ps(kd, dvu)));
+        const __m256 mag = _mm256_add_ps(_mm256_mul_ps(ks, _mm256_sub_ps(len, _mm256_loadu_ps(s.rest.data() + k))),
+                                         _mm256_mul_ps(kd, dvu));
         const __m256 p = _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(kd, dvu), dvu));
-        storeRows8(out, k, _mm256_and_ps(ok, _mm256_mul_ps(mag, ux)), _mm256_and_ps(ok, _mm256_mul_ps(mag, uy)),
-                   _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)));
-        addLanes(power, p);
+        __m128 rows[8];
+        rows8(_mm256_and_ps(ok, _mm256_mul_ps(mag, ux)), _mm256_and_ps(ok, _mm256_mul_ps(mag, uy)),
+              _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)), rows);
+        for (int j = 0; j < 8; ++j) {
+            addRow128(f4, ia[j], rows[j]);
+            subRow128(f4, ib[j], rows[j]);
+        }
+        sums.add(p);
     }
-    for (; k < end; ++k) springScalar(s, k, x, v, out, power);
+    sums.store(power);
+    for (; k < end; ++k) springScalar(s, begin, k, ksScalar, kdScalar, x, v, f4, power);
 }
 
-void faces8(const std::vector<std::array<int, 3>>& faces, std::size_t begin, std::size_t end,
-                                    const int* corners, const float* x, float* out, LaneSums& volume) {
-    // corners: the faces' corner indices as three columns (a, b, c) of faces.size() each.
-    const std::size_t n = faces.size();
+// corners: the faces' corner indices as three columns (a, b, c) of `stride` each.
+void faces8(const std::vector<std::array<int, 3>>& faces, const int* corners, std::size_t stride, std::size_t begin,
+            std::size_t end, const float* x, float* g4, LaneSums& volume) {
+    LaneRegisters sums(volume);
     std::size_t k = begin;
     for (; k + 8 <= end; k += 8) {
+        const int* ia = corners + k;
+        const int* ib = corners + stride + k;
+        const int* ic = corners + 2 * stride + k;
         __m256 ax, ay, az, bx, by, bz, cx, cy, cz;
-        columns8(x, corners + k, ax, ay, az);
-        columns8(x, corners + n + k, bx, by, bz);
-        columns8(x, corners + 2 * n + k, cx, cy, cz);
+        columns8(x, ia, ax, ay, az);
+        columns8(x, ib, bx, by, bz);
+        columns8(x, ic, cx, cy, cz);
         const __m256 ex = _mm256_sub_ps(bx, ax), ey = _mm256_sub_ps(by, ay), ez = _mm256_sub_ps(bz, az);
         const __m256 hx = _mm256_sub_ps(cx, ax), hy = _mm256_sub_ps(cy, ay), hz = _mm256_sub_ps(cz, az);
         const __m256 gx = _mm256_sub_ps(_mm256_mul_ps(ey, hz), _mm256_mul_ps(ez, hy));
@@ -201,10 +240,17 @@ void faces8(const std::vector<std::array<int, 3>>& faces, std::size_t begin, std
         const __m256 gz = _mm256_sub_ps(_mm256_mul_ps(ex, hy), _mm256_mul_ps(ey, hx));
         const __m256 term =
             _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, gx), _mm256_mul_ps(ay, gy)), _mm256_mul_ps(az, gz));
-        storeRows8(out, k, gx, gy, gz);
-        addLanes(volume, term);
+        __m128 rows[8];
+        rows8(gx, gy, gz, rows);
+        for (int j = 0; j < 8; ++j) {
+            addRow128(g4, ia[j], rows[j]);
+            addRow128(g4, ib[j], rows[j]);
+            addRow128(g4, ic[j], rows[j]);
+        }
+        sums.add(term);
     }
-    for (; k < end; ++k) faceScalar(faces, 3, begin, k, x, out, volume);
+    sums.store(volume);
+    for (; k < end; ++k) faceScalar(faces, 3, begin, k, x, g4, volume);
 }
 
 #pragma GCC pop_options
@@ -212,25 +258,16 @@ void faces8(const std::vector<std::array<int, 3>>& faces, std::size_t begin, std
 bool haveAvx2() { return __builtin_cpu_supports("avx2"); }
 #endif
 
-// Per-particle lists of rows, each padded to one width (the longest list, rounded up to even)
-// with a row of zeros (index `zero`): every particle's loop then runs the same number of times,
-// so its exit is always predicted (lists of 5 to 8 rows of varying length cost a mispredicted
-// branch each), and two accumulators take the even and odd positions.
-struct Incidence {
-    int width = 0;
-    std::vector<int> items;  // n x width
-    void build(int n, const std::vector<std::pair<int, int>>& pairs, int zero) {  // (particle, item), in item order
-        std::vector<int> count(static_cast<std::size_t>(n), 0);
-        for (auto [p, item] : pairs) ++count[static_cast<std::size_t>(p)];
-        width = 0;
-        for (int c : count) width = std::max(width, c);
-        width += width % 2;
-        items.assign(static_cast<std::size_t>(n) * static_cast<std::size_t>(width), zero);
-        std::fill(count.begin(), count.end(), 0);
-        for (auto [p, item] : pairs)
-            items[static_cast<std::size_t>(p) * static_cast<std::size_t>(width) +
-                  static_cast<std::size_t>(count[static_cast<std::size_t>(p)]++)] = item;
-    }
+// The springs and faces of one chunk (or the shared ones), and what they sum.
+struct Chunk {
+    SpringArrays springs;
+    std::array<std::size_t, kSpringFamilyCount + 1> familyStart{};  // families in order
+    std::vector<std::array<int, 3>> faces;                          // slot 0's first
+    std::size_t slotStart = 0;                                      // the first face of slot 1
+    std::vector<int> faceCorners;                                   // three columns
+    std::vector<std::pair<int, int>> owned;                         // particle ranges [begin, end)
+    LaneSums power;
+    std::array<LaneSums, 2> volume;
 };
 
 }  // namespace
@@ -262,12 +299,8 @@ struct FloatSimulation::Impl {
     Eigen::VectorXd mass;
     std::vector<float> invMass4;  // 4 per particle (0 on fixed particles and absent axes)
     std::vector<float> weight4;   // gravity force rows
-    SpringArrays springs;
-    std::vector<std::array<int, 3>> faces;  // all surfaces' faces (2D: (a, b, -))
-    std::vector<int> faceCorners;           // the corners as columns (AVX2 path)
-    std::vector<std::uint8_t> faceSlot;     // [inner, outer] slot of each face's surface
-    std::array<std::size_t, 3> faceSlotEnd{};  // faces of slot 0 come first
-    Incidence plus, minus, incidentFaces;
+    std::vector<Chunk> chunks;    // the chunks, then the shared springs and faces
+    std::array<float, kSpringFamilyCount> ks{}, kd{};
     std::vector<std::uint8_t> particleSlot;
     ForceParams params;
     bool gas = false;
@@ -275,8 +308,7 @@ struct FloatSimulation::Impl {
 
     // State and scratch (4 floats per particle).
     std::vector<float> x, v, xt, vt, xa, va;
-    std::vector<float> springRows, faceRows;
-    std::vector<LaneSums> springPower, faceVolume;  // per task
+    std::vector<float> force4, gradient4;
     std::array<float, 2> pressureScaled{};  // P / 6 (P / 2 in 2D) per slot
     double stagePower = 0.0;                // the last evaluation's damping power [W]
     std::uint64_t evaluations = 0;
@@ -290,8 +322,6 @@ struct FloatSimulation::Impl {
     double removed = 0.0;
     double initialEnergy = 0.0;
 
-    int springTasks() const { return static_cast<int>((springs.size() + kSpringTask - 1) / kSpringTask); }
-    int faceTasks() const { return static_cast<int>((faces.size() + kFaceTask - 1) / kFaceTask); }
     int particleTasks() const { return (n + kParticleTask - 1) / kParticleTask; }
 
     void run(int count, TaskRef task) {
@@ -302,90 +332,71 @@ struct FloatSimulation::Impl {
         }
     }
 
-    // Passes 1 and 2 at (px, pv): spring and face rows, damping power and pressures.
-    void springsAndFaces(const float* px, const float* pv) {
-        const int st = springTasks(), ft = faceTasks();
-        auto task = [&](int t) {
-            if (t < st) {
-                const std::size_t begin = static_cast<std::size_t>(t) * kSpringTask,
-                                  end = std::min(springs.size(), begin + kSpringTask);
-                LaneSums& sums = springPower[static_cast<std::size_t>(t)];
-                sums = {};
+    // A chunk's springs and faces at (px, pv), added to the force and gradient rows.
+    void accumulate(Chunk& c, const float* px, const float* pv) {
+        c.power = {};
+        c.volume = {};
+        float* f4 = force4.data();
+        for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
+            const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
 #ifdef SIMCORE_FLOAT_AVX2
-                if (wide) {
-                    springs8(springs, begin, end, px, pv, springRows.data(), sums);
-                    return;
-                }
-#endif
-                for (std::size_t k = begin; k < end; ++k) springScalar(springs, k, px, pv, springRows.data(), sums);
-            } else {
-                const std::size_t f = static_cast<std::size_t>(t - st);
-                const std::size_t begin = f * kFaceTask, end = std::min(faces.size(), begin + kFaceTask);
-                LaneSums& sums = faceVolume[f];
-                sums = {};
-#ifdef SIMCORE_FLOAT_AVX2
-                if (wide && dimension == 3) {
-                    // A task's faces are of one slot or straddle the slot boundary; the volume
-                    // sums are split at it below.
-                    const std::size_t cut = std::clamp(faceSlotEnd[0], begin, end);
-                    faces8(faces, begin, cut, faceCorners.data(), px, faceRows.data(), sums);
-                    LaneSums& second = faceVolume[faceVolume.size() / 2 + f];
-                    second = {};
-                    faces8(faces, cut, end, faceCorners.data(), px, faceRows.data(), second);
-                    return;
-                }
-#endif
-                const std::size_t cut = std::clamp(faceSlotEnd[0], begin, end);
-                for (std::size_t k = begin; k < cut; ++k) faceScalar(faces, dimension, begin, k, px, faceRows.data(), sums);
-                LaneSums& second = faceVolume[faceVolume.size() / 2 + f];
-                second = {};
-                for (std::size_t k = cut; k < end; ++k) faceScalar(faces, dimension, cut, k, px, faceRows.data(), second);
+            if (wide) {
+                springs8(c.springs, begin, end, ks[f], kd[f], px, pv, f4, c.power);
+                continue;
             }
+#endif
+            for (std::size_t k = begin; k < end; ++k) springScalar(c.springs, begin, k, ks[f], kd[f], px, pv, f4, c.power);
+        }
+        if (!gas) return;
+        float* g4 = gradient4.data();
+        const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
+        for (std::size_t slot = 0; slot < 2; ++slot) {
+#ifdef SIMCORE_FLOAT_AVX2
+            if (wide && dimension == 3) {
+                faces8(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
+                continue;
+            }
+#endif
+            for (std::size_t k = cut[slot]; k < cut[slot + 1]; ++k)
+                faceScalar(c.faces, dimension, cut[slot], k, px, g4, c.volume[slot]);
+        }
+    }
+
+    // Passes 1 and 2 at (px, pv): forces and gradients, damping power and pressures.
+    void springsAndFaces(const float* px, const float* pv) {
+        const int owners = static_cast<int>(chunks.size()) - 1;
+        auto task = [&](int t) {
+            Chunk& c = chunks[static_cast<std::size_t>(t)];
+            for (auto [begin, end] : c.owned) {
+                const auto bytes = sizeof(float) * 4 * static_cast<std::size_t>(end - begin);
+                std::memset(force4.data() + 4 * static_cast<std::ptrdiff_t>(begin), 0, bytes);
+                if (gas) std::memset(gradient4.data() + 4 * static_cast<std::ptrdiff_t>(begin), 0, bytes);
+            }
+            accumulate(c, px, pv);
         };
-        run(st + (gas ? ft : 0), task);
+        run(owners, task);
+        accumulate(chunks.back(), px, pv);
         double power = 0.0;
-        for (int t = 0; t < st; ++t) power += springPower[static_cast<std::size_t>(t)].total();
+        for (const Chunk& c : chunks) power += c.power.total();
         stagePower = power;
-        if (gas) {
-            const std::size_t half = faceVolume.size() / 2;
+        if (gas)
             for (std::size_t slot = 0; slot < 2; ++slot) {
                 double sum = 0.0;
-                for (std::size_t f = 0; f < half; ++f) sum += faceVolume[slot * half + f].total();
+                for (const Chunk& c : chunks) sum += c.volume[slot].total();
                 const double volume = dimension == 2 ? 0.5 * sum : sum / 6.0;
                 const double pressure = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
                 pressureScaled[slot] = static_cast<float>(dimension == 2 ? 0.5 * pressure : pressure / 6.0);
             }
-        }
         ++evaluations;
     }
 
-    // The sum of particle i's rows of `rows` (list.items) in two interleaved accumulators (even
-    // and odd positions, then added): two independent add chains, in an order fixed by the list.
-    static F4 sumRows(const float* rows, const Incidence& list, int i) {
-        F4 even = splat(0.0f), odd = splat(0.0f);
-        const int* items = list.items.data() + static_cast<std::ptrdiff_t>(i) * list.width;
-        for (int k = 0; k < list.width; k += 2) {
-            even += row(rows, items[k]);
-            odd += row(rows, items[k + 1]);
-        }
-        return even + odd;
-    }
-
-    // Pass 3: the force on particle i, times its inverse mass: its weight, the rows of the
-    // springs where it is the first end minus those where it is the second, and its faces'
-    // rows times the pressure (P / 6; P / 2 in 2D).
+    // Pass 3: the force on particle i (its weight, its springs, its gas), times its inverse mass.
     F4 acceleration(int i) const {
-        const auto s = static_cast<std::size_t>(i);
-        const F4 springForce = sumRows(springRows.data(), plus, i) - sumRows(springRows.data(), minus, i);
-        F4 f = row(weight4.data(), i) + springForce;
-        if (gas) {
-            const F4 g = sumRows(faceRows.data(), incidentFaces, i);
-            f += splat(pressureScaled[particleSlot[s]]) * g;
-        }
+        F4 f = row(weight4.data(), i) + row(force4.data(), i);
+        if (gas) f += splat(pressureScaled[particleSlot[static_cast<std::size_t>(i)]]) * row(gradient4.data(), i);
         return f * row(invMass4.data(), i);
     }
 
-    // One evaluation at (px, pv); update(i, v_i, a_i) on each particle's own rows.
     template <class Update>
     void evaluate(const float* px, const float* pv, Update&& update) {
         springsAndFaces(px, pv);
@@ -557,55 +568,92 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
         if (s.dimension == 3) s.invMass4[4 * i + 2] = inv;
         s.weight4[4 * i + 1] = static_cast<float>(0.0 - s.mass[static_cast<Eigen::Index>(i)] * s.params.gravity);
     }
-    // Springs of all families in one array, ordered by their lower particle (then the
-    // other): the mesh is numbered for locality (renumberForLocality), so a particle's springs
-    // lie together, near its neighbours', for the gathers of pass 3. Each particle's lists in
-    // that order.
-    std::vector<std::array<int, 3>> order;  // (family, index, lower particle)
-    for (int f = 0; f < kSpringFamilyCount; ++f) {
-        const SpringSet& set = topo.springs[static_cast<std::size_t>(f)];
-        for (std::size_t k = 0; k < set.size(); ++k) order.push_back({f, static_cast<int>(k), std::min(set.a[k], set.b[k])});
+    // Chunks by particle ownership (as ForceModel: vertex k of each layer in chunk 0 when
+    // k < n/2; one chunk below ForceModel::kChunkThreshold springs); a spring or face whose
+    // particles are not all one chunk's is shared.
+    const int owners = topo.springCount() >= ForceModel::kChunkThreshold ? ForceModel::kChunks : 1;
+    const bool layered = !topo.layerPairs.empty() && 2 * topo.layerPairs.size() == n;
+    const int perLayer = layered ? s.n / 2 : s.n;
+    auto owner = [&](int i) { return owners == 1 ? 0 : ((i % perLayer) * owners) / perLayer; };
+    s.chunks.resize(static_cast<std::size_t>(owners) + 1);
+    auto chunkOf = [&](std::initializer_list<int> particles) {
+        const int first = owner(*particles.begin());
+        for (int p : particles)
+            if (owner(p) != first) return &s.chunks.back();
+        return &s.chunks[static_cast<std::size_t>(first)];
+    };
+    for (int i = 0; i < s.n; ++i) {
+        auto& owned = s.chunks[static_cast<std::size_t>(owner(i))].owned;
+        if (!owned.empty() && owned.back().second == i) ++owned.back().second;
+        else owned.emplace_back(i, i + 1);
     }
-    std::stable_sort(order.begin(), order.end(), [](const auto& p, const auto& q) { return p[2] < q[2]; });
-    std::vector<std::pair<int, int>> plus, minus;
-    for (const auto& [f, k, lower] : order) {
-        const SpringSet& set = topo.springs[static_cast<std::size_t>(f)];
-        const auto j = static_cast<std::size_t>(k);
-        const int id = static_cast<int>(s.springs.size());
-        s.springs.a.push_back(set.a[j]);
-        s.springs.b.push_back(set.b[j]);
-        s.springs.rest.push_back(static_cast<float>(set.rest[j]));
-        s.springs.ks.push_back(static_cast<float>(s.params.ks[static_cast<std::size_t>(f)]));
-        s.springs.kd.push_back(static_cast<float>(s.params.kd[static_cast<std::size_t>(f)]));
-        plus.emplace_back(set.a[j], id);
-        minus.emplace_back(set.b[j], id);
+    for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
+        s.ks[f] = static_cast<float>(s.params.ks[f]);
+        s.kd[f] = static_cast<float>(s.params.kd[f]);
+        for (Chunk& c : s.chunks) c.familyStart[f] = c.springs.size();
+        const SpringSet& set = topo.springs[f];
+        for (std::size_t k = 0; k < set.size(); ++k) {
+            Chunk* c = chunkOf({set.a[k], set.b[k]});
+            c->springs.a.push_back(set.a[k]);
+            c->springs.b.push_back(set.b[k]);
+            c->springs.rest.push_back(static_cast<float>(set.rest[k]));
+        }
     }
-    const int zeroSpring = static_cast<int>(s.springs.size());  // the row of zeros after the springs'
-    s.plus.build(s.n, plus, zeroSpring);
-    s.minus.build(s.n, minus, zeroSpring);
-    // Faces: the inner layer's first (slot 0), then the outer's.
-    std::vector<std::pair<int, int>> incident;
+    for (Chunk& c : s.chunks) {
+        c.familyStart[kSpringFamilyCount] = c.springs.size();
+        // Within each family, blocks of 128 springs taken with a stride of 16 (k, k + 16, ...,
+        // then k + 1, ...): the mesh's springs come edge after edge, so neighbours in the list
+        // share a particle, and adding their forces one after the other would wait on the
+        // previous store to the same row; 16 apart they rarely do (nearby still: the block is
+        // small).
+        SpringArrays order;
+        for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
+            const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
+            auto take = [&](std::size_t k) {
+                order.a.push_back(c.springs.a[k]);
+                order.b.push_back(c.springs.b[k]);
+                order.rest.push_back(c.springs.rest[k]);
+            };
+            std::size_t block = begin;
+            for (; block + kStridedBlock <= end; block += kStridedBlock)
+                for (std::size_t r = 0; r < kStride; ++r)
+                    for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) take(block + q * kStride + r);
+            for (; block < end; ++block) take(block);
+        }
+        c.springs = std::move(order);
+    }
+    // Faces: each chunk's inner layer's first (slot 0), then the outer's.
     if (s.gas) {
         for (std::size_t slot = 0; slot < 2; ++slot) {
+            for (Chunk& c : s.chunks)
+                if (slot == 1) c.slotStart = c.faces.size();
             for (const Surface& surface : topo.surfaces) {
                 if (static_cast<std::size_t>(layerSlot(surface.layer)) != slot) continue;
                 if (s.dimension == 2) {
-                    for (auto [a, b] : surface.edges) s.faces.push_back({a, b, a});
+                    for (auto [a, b] : surface.edges) chunkOf({a, b})->faces.push_back({a, b, a});
                 } else {
-                    for (const auto& t : surface.triangles) s.faces.push_back(t);
+                    for (const auto& t : surface.triangles) chunkOf({t[0], t[1], t[2]})->faces.push_back(t);
                 }
             }
-            s.faceSlotEnd[slot] = s.faces.size();
         }
-        for (std::size_t f = 0; f < s.faces.size(); ++f) {
-            const int corners = s.dimension == 2 ? 2 : 3;
-            for (int c = 0; c < corners; ++c) incident.emplace_back(s.faces[f][static_cast<std::size_t>(c)], static_cast<int>(f));
+        for (Chunk& c : s.chunks) {
+            // The faces of each slot in strided blocks, as the springs below (consecutive faces
+            // share corners).
+            std::vector<std::array<int, 3>> order;
+            const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
+            for (std::size_t slot = 0; slot < 2; ++slot) {
+                std::size_t block = cut[slot];
+                for (; block + kStridedBlock <= cut[slot + 1]; block += kStridedBlock)
+                    for (std::size_t r = 0; r < kStride; ++r)
+                        for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) order.push_back(c.faces[block + q * kStride + r]);
+                for (; block < cut[slot + 1]; ++block) order.push_back(c.faces[block]);
+            }
+            c.faces = std::move(order);
+            c.faceCorners.resize(3 * c.faces.size());
+            for (std::size_t f = 0; f < c.faces.size(); ++f)
+                for (std::size_t k = 0; k < 3; ++k) c.faceCorners[k * c.faces.size() + f] = c.faces[f][k];
         }
-        s.faceCorners.resize(3 * s.faces.size());
-        for (std::size_t f = 0; f < s.faces.size(); ++f)
-            for (std::size_t c = 0; c < 3; ++c) s.faceCorners[c * s.faces.size() + f] = s.faces[f][c];
     }
-    s.incidentFaces.build(s.n, incident, static_cast<int>(s.faces.size()));
     s.particleSlot.resize(n);
     for (std::size_t i = 0; i < n; ++i) s.particleSlot[i] = static_cast<std::uint8_t>(layerSlot(topo.layer[i]));
     // State, rounded to float.
@@ -616,10 +664,8 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
             s.x[4 * i + axis] = static_cast<float>(y[static_cast<Eigen::Index>(3 * i + axis)]);
             s.v[4 * i + axis] = static_cast<float>(y[static_cast<Eigen::Index>(3 * (n + i) + axis)]);
         }
-    s.springRows.assign(4 * (s.springs.size() + 1), 0.0f);  // + the row of zeros
-    s.faceRows.assign(4 * (s.faces.size() + 1), 0.0f);
-    s.springPower.resize(static_cast<std::size_t>(s.springTasks()));
-    s.faceVolume.resize(2 * static_cast<std::size_t>(s.faceTasks()));
+    s.force4.assign(4 * n, 0.0f);
+    s.gradient4.assign(4 * n, 0.0f);
 #ifdef SIMCORE_FLOAT_AVX2
     s.wide = kernels::kernelsInUse() != kernels::KernelSet::Portable && haveAvx2();
 #endif
