@@ -6,6 +6,8 @@
 
 #include "cli_process.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
 
@@ -226,6 +228,34 @@ private slots:
         const auto byDefault = rows({"--steps", "1"});
         QCOMPARE(byDefault.size(), simcore::availableThreads() > 1 ? 2 : 1);
         QCOMPARE(byDefault[0].first, QString("1"));
+    }
+    // run and bench --precision float (issue 27): the float path runs, says so, writes its
+    // state, agrees with double to a float tolerance, and is refused for a method without a
+    // float build (and by bench for --stages).
+    void precisionFloat() {
+        const QStringList scene{"--scene", "ring2d", "--set", "gravity=0", "--set", "perturb=0.01", "--duration", "0.3"};
+        const Result f = cli(QStringList{"run", "--precision", "float", "--json"} + scene);
+        QCOMPARE(f.code, 0);
+        const Result d = cli(QStringList{"run", "--json"} + scene);
+        QCOMPARE(d.code, 0);
+        const QJsonObject fj = QJsonDocument::fromJson(f.out.toUtf8()).object(), dj = QJsonDocument::fromJson(d.out.toUtf8()).object();
+        QCOMPARE(fj["precision"].toString(), QString("float"));
+        QCOMPARE(dj["precision"].toString(), QString("double"));
+        QCOMPARE(fj["steps"].toInt(), dj["steps"].toInt());
+        const double ef = fj["energy"].toObject()["total"].toDouble(), ed = dj["energy"].toObject()["total"].toDouble();
+        QVERIFY2(std::abs(ef - ed) < 1e-4 * std::abs(ed) && ef != ed, qPrintable(QString("%1 vs %2").arg(ef).arg(ed)));
+        const QString state = path("float-state.csv");
+        QCOMPARE(cli(QStringList{"run", "--precision", "float", "--quiet", "--state", state} + scene).code, 0);
+        QVERIFY(readCsv(state).size() > 1);
+        const Result refused = cli(QStringList{"run", "--precision", "float", "--integrator", "implicit-euler"} + scene);
+        QCOMPARE(refused.code, 2);
+        QVERIFY2(refused.err.contains("explicit integrators"), qPrintable(refused.err));
+        QCOMPARE(cli({"bench", "--scene", "ring2d", "--precision", "float", "--stages", "--steps", "3"}).code, 2);
+        const Result bench = cli({"bench", "--scene", "ring2d", "--set", "gravity=0", "--precision", "float", "--steps", "3",
+                                  "--threads", "1", "--header"});
+        QCOMPARE(bench.code, 0);
+        const QStringList lines = bench.out.trimmed().split('\n');
+        QCOMPARE(lines[1].split(',')[lines[0].split(',').indexOf("precision")], QString("float"));
     }
     // bench --stages: one column per stage of the step (simulation.h's order) after the
     // others; each stage's time lies inside its step, so they add up to no more than the step.
