@@ -83,6 +83,24 @@ LessonDock::LessonDock(QWidget* parent) : QDockWidget(tr("Lesson"), parent) {
     m_title->setWordWrap(true);
     layout->addWidget(m_title);
 
+    createRunUntilRow(host, layout);
+    createStopwatchRow(host, layout);
+    m_readout = new QLabel(host);
+    m_readout->setObjectName(QStringLiteral("lessonReadout"));
+    m_readout->setTextFormat(Qt::RichText);
+    m_readout->setWordWrap(true);
+    layout->addWidget(m_readout);
+
+    createAnswers(host, layout);
+
+    scroll->setWidget(host);
+    setWidget(scroll);
+    setLesson(nullptr);
+    updateStopwatch();
+}
+
+// "Run until t = [3.000 s]": runs as fast as possible and pauses at that simulated time.
+void LessonDock::createRunUntilRow(QWidget* host, QVBoxLayout* layout) {
     auto* untilRow = new QHBoxLayout;
     m_until = new QDoubleSpinBox(host);
     m_until->setObjectName(QStringLiteral("runUntilTime"));
@@ -97,7 +115,10 @@ LessonDock::LessonDock(QWidget* parent) : QDockWidget(tr("Lesson"), parent) {
     untilRow->addWidget(m_runUntil);
     untilRow->addWidget(m_until, 1);
     layout->addLayout(untilRow);
+}
 
+// The stopwatch: simulated time between Start and Stop, Zero to start over.
+void LessonDock::createStopwatchRow(QWidget* host, QVBoxLayout* layout) {
     auto* watchRow = new QHBoxLayout;
     m_watch = new QLabel(host);
     m_watch->setObjectName(QStringLiteral("stopwatch"));
@@ -124,13 +145,10 @@ LessonDock::LessonDock(QWidget* parent) : QDockWidget(tr("Lesson"), parent) {
     watchRow->addWidget(m_watchButton);
     watchRow->addWidget(m_watchReset);
     layout->addLayout(watchRow);
+}
 
-    m_readout = new QLabel(host);
-    m_readout->setObjectName(QStringLiteral("lessonReadout"));
-    m_readout->setTextFormat(Qt::RichText);
-    m_readout->setWordWrap(true);
-    layout->addWidget(m_readout);
-
+// The answers' table (answer, expected, you got), its legend and Measure.
+void LessonDock::createAnswers(QWidget* host, QVBoxLayout* layout) {
     m_table = new QTableWidget(0, 3, host);
     m_table->setObjectName(QStringLiteral("lessonAnswers"));
     m_table->setHorizontalHeaderLabels({tr("answer"), tr("expected"), tr("you got")});
@@ -159,11 +177,6 @@ LessonDock::LessonDock(QWidget* parent) : QDockWidget(tr("Lesson"), parent) {
     measureRow->addWidget(m_measure);
     measureRow->addWidget(m_measureNote, 1);
     layout->addLayout(measureRow);
-
-    scroll->setWidget(host);
-    setWidget(scroll);
-    setLesson(nullptr);
-    updateStopwatch();
 }
 
 LessonDock::~LessonDock() {

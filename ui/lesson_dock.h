@@ -30,6 +30,7 @@
 
 class QDoubleSpinBox;
 class QLabel;
+class QVBoxLayout;
 class QPushButton;
 class QTableWidget;
 class QToolButton;
@@ -73,6 +74,9 @@ signals:
     void runUntilRequested(double simulatedTime);
 
 private:
+    void createRunUntilRow(QWidget* host, QVBoxLayout* layout);
+    void createStopwatchRow(QWidget* host, QVBoxLayout* layout);
+    void createAnswers(QWidget* host, QVBoxLayout* layout);
     void fillTable();
     void readRows();  // the answers read off the rows so far
     void setGot(const QString& key, double value, bool fromRun);

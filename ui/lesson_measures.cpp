@@ -66,6 +66,8 @@ double lessonLiftOffTime(const ParameterSet& p, const std::string& integrator, d
     return -1.0;
 }
 
+// Kept whole: a table, lesson after lesson, each answer beside the elastic-lab-cli command that
+// measures it, read top to bottom.
 QMap<QString, LessonMeasure> lessonMeasures(const QString& id) {
     QMap<QString, LessonMeasure> m;
     if (id == QLatin1String("euler-limit")) {
