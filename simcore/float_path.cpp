@@ -31,7 +31,9 @@
 #include "simcore/forces.h"
 #include "simcore/parallel.h"
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// The AVX2 passes on x86-64 with GCC, unless the build asks for portable kernels only
+// (ELASTIC_LAB_PORTABLE_KERNELS: no x86 intrinsics, as for another architecture).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(ELASTIC_LAB_PORTABLE_KERNELS)
 #define SIMCORE_FLOAT_AVX2 1
 #include <immintrin.h>
 #endif

@@ -21,10 +21,10 @@
 // removed by damping is integrated in double from each stage's damping power (summed in double
 // in a fixed order) with the integrator's own weights.
 //
-// Results do not depend on the thread count: every pass is split into tasks fixed by the body
-// alone (springs, faces, particles in blocks), each force row is gathered per particle in a
-// fixed order (no scatter: nothing depends on which thread finishes first), and the sums are
-// combined in task order (tested bit for bit).
+// Results do not depend on the thread count: the particles are owned by chunks fixed by the
+// body alone (as ForceModel's), each chunk's springs and faces add into its own particles'
+// rows in a fixed order, the shared ones after, and the sums are combined in chunk order
+// (tested bit for bit, also between the portable and the AVX2 code).
 
 #include <cstdint>
 #include <memory>
