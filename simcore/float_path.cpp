@@ -23,9 +23,12 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "simcore/force_kernels.h"
 #include "simcore/forces.h"
@@ -77,6 +80,44 @@ struct SpringArrays {
 
 inline void addRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) + r); }
 inline void subRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) - r); }
+
+// Edge quads of a two-layer body, as ForceModel's (force_kernels.h, QuadSet): for a mesh edge
+// (a, b) of the inner layer and its outer copy (A, B) = (a + n, b + n), the four springs over
+// the same four particles, one per lane: structural (a, b), structural (A, B), shear (A, b)
+// and shear (B, a). Evaluated together they load 4 particle rows instead of 8 and update 4
+// instead of 8.
+struct QuadArrays {
+    std::vector<int> a, b;
+    std::vector<float> rest;  // 4 per quad, in lane order
+    std::size_t size() const { return a.size(); }
+};
+
+// One quad, scalar: lane l's spring as springScalar, its power to lane ((q - base) % 2) * 4 + l;
+// the rows then updated in a fixed order: a += F0 - F3, b -= F0 + F2, A += F1 + F2,
+// B += F3 - F1.
+inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q, int n, const std::array<float, 4>& ks,
+                       const std::array<float, 4>& kd, const float* x, const float* v, float* f4, LaneSums& power) {
+    const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
+    const std::array<int, 4> first{a, A, A, B}, second{b, B, b, a};
+    std::array<F4, 4> force;
+    for (std::size_t l = 0; l < 4; ++l) {
+        const F4 d = row(x, second[l]) - row(x, first[l]), dv = row(v, second[l]) - row(v, first[l]);
+        const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
+        const float len = std::sqrt(len2);
+        const float inv = 1.0f / len;
+        const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
+        const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
+        const float mag = ks[l] * (len - quads.rest[4 * q + l]) + kd[l] * dvu;
+        const float p = kd[l] * dvu * dvu;
+        const bool ok = len >= static_cast<float>(kDegenerateLength);
+        force[l] = F4{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
+        power.lane[((q - base) % 2) * 4 + l] += static_cast<double>(ok ? p : 0.0f);
+    }
+    addRow(f4, a, force[0] - force[3]);
+    subRow(f4, b, force[0] + force[2]);
+    addRow(f4, A, force[1] + force[2]);
+    addRow(f4, B, force[3] - force[1]);
+}
 
 // One spring, scalar: the reference the eight-wide code follows operation by operation. Its
 // power goes to lane (k - base) % 8.
@@ -182,9 +223,28 @@ struct LaneRegisters {
     }
 };
 
+// Eight springs' forces (masked to 0 where degenerate) and damping powers from their end
+// differences d (positions) and w (velocities): the scalar springScalar's operations.
+struct Springs8 {
+    __m256 fx, fy, fz, power;
+};
+[[gnu::always_inline]] inline Springs8 springForces8(__m256 dx, __m256 dy, __m256 dz, __m256 wx, __m256 wy, __m256 wz,
+                                                     __m256 ks, __m256 kd, __m256 rest) {
+    const __m256 len2 =
+        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
+    const __m256 len = _mm256_sqrt_ps(len2);
+    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
+    const __m256 ux = _mm256_mul_ps(dx, inv), uy = _mm256_mul_ps(dy, inv), uz = _mm256_mul_ps(dz, inv);
+    const __m256 dvu =
+        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, ux), _mm256_mul_ps(wy, uy)), _mm256_mul_ps(wz, uz));
+    const __m256 ok = _mm256_cmp_ps(len, _mm256_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
+    const __m256 mag = _mm256_add_ps(_mm256_mul_ps(ks, _mm256_sub_ps(len, rest)), _mm256_mul_ps(kd, dvu));
+    return {_mm256_and_ps(ok, _mm256_mul_ps(mag, ux)), _mm256_and_ps(ok, _mm256_mul_ps(mag, uy)),
+            _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)), _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(kd, dvu), dvu))};
+}
+
 void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float ksScalar, float kdScalar,
               const float* x, const float* v, float* f4, LaneSums& power) {
-    const __m256 degenerate = _mm256_set1_ps(static_cast<float>(kDegenerateLength)), one = _mm256_set1_ps(1.0f);
     const __m256 ks = _mm256_set1_ps(ksScalar), kd = _mm256_set1_ps(kdScalar);
     LaneRegisters sums(power);
     std::size_t k = begin;
@@ -198,28 +258,59 @@ void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float k
         columns8(v, ib, vbx, vby, vbz);
         const __m256 dx = _mm256_sub_ps(xbx, xax), dy = _mm256_sub_ps(xby, xay), dz = _mm256_sub_ps(xbz, xaz);
         const __m256 wx = _mm256_sub_ps(vbx, vax), wy = _mm256_sub_ps(vby, vay), wz = _mm256_sub_ps(vbz, vaz);
-        const __m256 len2 =
-            _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
-        const __m256 len = _mm256_sqrt_ps(len2);
-        const __m256 inv = _mm256_div_ps(one, len);
-        const __m256 ux = _mm256_mul_ps(dx, inv), uy = _mm256_mul_ps(dy, inv), uz = _mm256_mul_ps(dz, inv);
-        const __m256 dvu =
-            _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, ux), _mm256_mul_ps(wy, uy)), _mm256_mul_ps(wz, uz));
-        const __m256 ok = _mm256_cmp_ps(len, degenerate, _CMP_GE_OQ);
-        const __m256 mag = _mm256_add_ps(_mm256_mul_ps(ks, _mm256_sub_ps(len, _mm256_loadu_ps(s.rest.data() + k))),
-                                         _mm256_mul_ps(kd, dvu));
-        const __m256 p = _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(kd, dvu), dvu));
+        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, ks, kd, _mm256_loadu_ps(s.rest.data() + k));
         __m128 rows[8];
-        rows8(_mm256_and_ps(ok, _mm256_mul_ps(mag, ux)), _mm256_and_ps(ok, _mm256_mul_ps(mag, uy)),
-              _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)), rows);
+        rows8(f.fx, f.fy, f.fz, rows);
         for (int j = 0; j < 8; ++j) {
             addRow128(f4, ia[j], rows[j]);
             subRow128(f4, ib[j], rows[j]);
         }
-        sums.add(p);
+        sums.add(f.power);
     }
     sums.store(power);
     for (; k < end; ++k) springScalar(s, begin, k, ksScalar, kdScalar, x, v, f4, power);
+}
+
+// Two quads at a time: lanes 0-3 the first quad's springs, 4-7 the second's.
+void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, const std::array<float, 4>& ks4,
+            const std::array<float, 4>& kd4, const float* x, const float* v, float* f4, LaneSums& power) {
+    const __m256 ks = _mm256_setr_ps(ks4[0], ks4[1], ks4[2], ks4[3], ks4[0], ks4[1], ks4[2], ks4[3]);
+    const __m256 kd = _mm256_setr_ps(kd4[0], kd4[1], kd4[2], kd4[3], kd4[0], kd4[1], kd4[2], kd4[3]);
+    // Lane 0 and 3 of each half subtract (a: F0 - F3, B: F3 - F1): x - y is x + (-y) exactly.
+    const __m256 flip = _mm256_castsi256_ps(_mm256_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN));
+    LaneRegisters sums(power);
+    std::size_t q = begin;
+    for (; q + 2 <= end; q += 2) {
+        const int ids[8] = {quads.a[q], quads.b[q], quads.a[q] + n, quads.b[q] + n,
+                            quads.a[q + 1], quads.b[q + 1], quads.a[q + 1] + n, quads.b[q + 1] + n};
+        // Columns (a, b, A, B | a', b', A', B') of x and v.
+        __m256 X, Y, Z, VX, VY, VZ;
+        columns8(x, ids, X, Y, Z);
+        columns8(v, ids, VX, VY, VZ);
+        // First ends (a, A, A, B) = columns (0, 2, 2, 3); second ends (b, B, b, a) = (1, 3, 1, 0).
+        const __m256 dx = _mm256_sub_ps(_mm256_permute_ps(X, 0x1D), _mm256_permute_ps(X, 0xE8));
+        const __m256 dy = _mm256_sub_ps(_mm256_permute_ps(Y, 0x1D), _mm256_permute_ps(Y, 0xE8));
+        const __m256 dz = _mm256_sub_ps(_mm256_permute_ps(Z, 0x1D), _mm256_permute_ps(Z, 0xE8));
+        const __m256 wx = _mm256_sub_ps(_mm256_permute_ps(VX, 0x1D), _mm256_permute_ps(VX, 0xE8));
+        const __m256 wy = _mm256_sub_ps(_mm256_permute_ps(VY, 0x1D), _mm256_permute_ps(VY, 0xE8));
+        const __m256 wz = _mm256_sub_ps(_mm256_permute_ps(VZ, 0x1D), _mm256_permute_ps(VZ, 0xE8));
+        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, ks, kd, _mm256_loadu_ps(quads.rest.data() + 4 * q));
+        // Per lane (a, b, A, B): F0 + (-F3), F0 + F2, F1 + F2, F3 + (-F1): (0, 0, 1, 3) + (3, 2, 2, 1).
+        auto rowsOf = [&](__m256 column) {
+            return _mm256_add_ps(_mm256_permute_ps(column, 0xD0), _mm256_xor_ps(_mm256_permute_ps(column, 0x6B), flip));
+        };
+        __m128 rows[8];
+        rows8(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), rows);
+        for (int j = 0; j < 2; ++j) {
+            addRow128(f4, ids[4 * j], rows[4 * j]);
+            subRow128(f4, ids[4 * j + 1], rows[4 * j + 1]);
+            addRow128(f4, ids[4 * j + 2], rows[4 * j + 2]);
+            addRow128(f4, ids[4 * j + 3], rows[4 * j + 3]);
+        }
+        sums.add(f.power);
+    }
+    sums.store(power);
+    for (; q < end; ++q) quadScalar(quads, begin, q, n, ks4, kd4, x, v, f4, power);
 }
 
 // corners: the faces' corner indices as three columns (a, b, c) of `stride` each.
@@ -262,6 +353,7 @@ bool haveAvx2() { return __builtin_cpu_supports("avx2"); }
 
 // The springs and faces of one chunk (or the shared ones), and what they sum.
 struct Chunk {
+    QuadArrays quads;
     SpringArrays springs;
     std::array<std::size_t, kSpringFamilyCount + 1> familyStart{};  // families in order
     std::vector<std::array<int, 3>> faces;                          // slot 0's first
@@ -303,6 +395,7 @@ struct FloatSimulation::Impl {
     std::vector<float> weight4;   // gravity force rows
     std::vector<Chunk> chunks;    // the chunks, then the shared springs and faces
     std::array<float, kSpringFamilyCount> ks{}, kd{};
+    int perLayer = 0;  // particles per layer (the quads' outer offset)
     std::vector<std::uint8_t> particleSlot;
     ForceParams params;
     bool gas = false;
@@ -339,6 +432,13 @@ struct FloatSimulation::Impl {
         c.power = {};
         c.volume = {};
         float* f4 = force4.data();
+        const std::array<float, 4> quadKs{ks[0], ks[0], ks[2], ks[2]}, quadKd{kd[0], kd[0], kd[2], kd[2]};
+#ifdef SIMCORE_FLOAT_AVX2
+        if (wide) quads8(c.quads, 0, c.quads.size(), perLayer, quadKs, quadKd, px, pv, f4, c.power);
+        else
+#endif
+            for (std::size_t q = 0; q < c.quads.size(); ++q)
+                quadScalar(c.quads, 0, q, perLayer, quadKs, quadKd, px, pv, f4, c.power);
         for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
             const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
 #ifdef SIMCORE_FLOAT_AVX2
@@ -482,7 +582,36 @@ struct FloatSimulation::Impl {
     }
 
     // Finite, and inside the walls; the reason when not.
-    std::string check() const {
+    // Whether particles [begin, end) are finite and inside the walls (branch-free: the step's
+    // common case is that they are).
+    bool sound(int begin, int end) const {
+        const F4 lo{static_cast<float>(std::max(low[0], -3e38)), static_cast<float>(std::max(low[1], -3e38)),
+                    static_cast<float>(std::max(low[2], -3e38)), -1.0f};
+        const F4 hi{static_cast<float>(std::min(high[0], 3e38)), static_cast<float>(std::min(high[1], 3e38)),
+                    static_cast<float>(std::min(high[2], 3e38)), 1.0f};
+        const F4 big = splat(3e38f);
+        auto bad = F4{} < F4{};  // all lanes false
+        for (int i = begin; i < end; ++i) {
+            const F4 xi = row(x.data(), i), vi = row(v.data(), i);
+            // NaN fails every comparison, so "not (inside)" catches it; infinities are outside.
+            bad |= !((xi >= lo) & (xi <= hi) & (vi >= (F4{} - big)) & (vi <= big));
+        }
+        return !(bad[0] | bad[1] | bad[2] | bad[3]);
+    }
+
+    // The reason the state is unusable, or "": checked in parallel pieces, the first bad
+    // particle found again serially for the message.
+    std::string check() {
+        bool ok = true;
+        std::array<std::uint8_t, 64> pieceOk{};
+        const int pieces = std::min<int>(particleTasks(), static_cast<int>(pieceOk.size()));
+        auto task = [&](int t) {
+            const int per = (n + pieces - 1) / pieces, begin = t * per, end = std::min(n, begin + per);
+            pieceOk[static_cast<std::size_t>(t)] = sound(begin, end) ? 1 : 0;
+        };
+        run(pieces, task);
+        for (int t = 0; t < pieces; ++t) ok = ok && pieceOk[static_cast<std::size_t>(t)] != 0;
+        if (ok) return "";
         for (int i = 0; i < n; ++i) {
             const F4 xi = row(x.data(), i), vi = row(v.data(), i);
             for (int axis = 0; axis < 3; ++axis) {
@@ -589,12 +718,65 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
         if (!owned.empty() && owned.back().second == i) ++owned.back().second;
         else owned.emplace_back(i, i + 1);
     }
+    s.perLayer = perLayer;
+    // Edge quads (two-layer bodies): each inner structural spring (a, b) whose outer copy
+    // (A, B) and shear springs (A, b), (B, a) exist (in either orientation), all four in one
+    // chunk; their springs leave the families.
+    std::array<std::vector<bool>, kSpringFamilyCount> inQuad;
+    for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f)
+        inQuad[f].assign(topo.springs[f].size(), false);
+    if (layered) {
+        const auto structural = static_cast<std::size_t>(SpringFamily::Structural),
+                   shear = static_cast<std::size_t>(SpringFamily::Shear);
+        auto key = [](int i, int j) {
+            return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(i, j))) << 32) |
+                   static_cast<std::uint32_t>(std::max(i, j));
+        };
+        std::unordered_map<std::uint64_t, std::size_t> structuralAt, shearAt;
+        for (std::size_t k = 0; k < topo.springs[structural].size(); ++k)
+            structuralAt.emplace(key(topo.springs[structural].a[k], topo.springs[structural].b[k]), k);
+        for (std::size_t k = 0; k < topo.springs[shear].size(); ++k)
+            shearAt.emplace(key(topo.springs[shear].a[k], topo.springs[shear].b[k]), k);
+        const SpringSet& st = topo.springs[structural];
+        const SpringSet& sh = topo.springs[shear];
+        for (std::size_t k = 0; k < st.size(); ++k) {
+            const int a = st.a[k], b = st.b[k];
+            if (a >= perLayer || b >= perLayer || inQuad[structural][k]) continue;
+            const int A = a + perLayer, B = b + perLayer;
+            const auto outer = structuralAt.find(key(A, B)), s1 = shearAt.find(key(A, b)), s2 = shearAt.find(key(B, a));
+            if (outer == structuralAt.end() || s1 == shearAt.end() || s2 == shearAt.end()) continue;
+            if (inQuad[structural][outer->second] || inQuad[shear][s1->second] || inQuad[shear][s2->second]) continue;
+            Chunk* c = chunkOf({a, b, A, B});
+            if (c == &s.chunks.back()) continue;  // shared: the quads run inside the chunks only
+            inQuad[structural][k] = inQuad[structural][outer->second] = true;
+            inQuad[shear][s1->second] = inQuad[shear][s2->second] = true;
+            c->quads.a.push_back(a);
+            c->quads.b.push_back(b);
+            for (double rest : {st.rest[k], st.rest[outer->second], sh.rest[s1->second], sh.rest[s2->second]})
+                c->quads.rest.push_back(static_cast<float>(rest));
+        }
+        for (Chunk& c : s.chunks) {  // strided blocks, as the springs below
+            QuadArrays order;
+            std::size_t block = 0;
+            auto take = [&](std::size_t q) {
+                order.a.push_back(c.quads.a[q]);
+                order.b.push_back(c.quads.b[q]);
+                for (std::size_t l = 0; l < 4; ++l) order.rest.push_back(c.quads.rest[4 * q + l]);
+            };
+            for (; block + kStridedBlock <= c.quads.size(); block += kStridedBlock)
+                for (std::size_t r = 0; r < kStride; ++r)
+                    for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) take(block + q * kStride + r);
+            for (; block < c.quads.size(); ++block) take(block);
+            c.quads = std::move(order);
+        }
+    }
     for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
         s.ks[f] = static_cast<float>(s.params.ks[f]);
         s.kd[f] = static_cast<float>(s.params.kd[f]);
         for (Chunk& c : s.chunks) c.familyStart[f] = c.springs.size();
         const SpringSet& set = topo.springs[f];
         for (std::size_t k = 0; k < set.size(); ++k) {
+            if (inQuad[f][k]) continue;
             Chunk* c = chunkOf({set.a[k], set.b[k]});
             c->springs.a.push_back(set.a[k]);
             c->springs.b.push_back(set.b[k]);
