@@ -279,14 +279,21 @@ void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, 
     // Lane 0 and 3 of each half subtract (a: F0 - F3, B: F3 - F1): x - y is x + (-y) exactly.
     const __m256 flip = _mm256_castsi256_ps(_mm256_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN));
     LaneRegisters sums(power);
-    std::size_t q = begin;
-    for (; q + 2 <= end; q += 2) {
-        const int ids[8] = {quads.a[q], quads.b[q], quads.a[q] + n, quads.b[q] + n,
-                            quads.a[q + 1], quads.b[q + 1], quads.a[q + 1] + n, quads.b[q + 1] + n};
+    // One group: quads q and q + 1; their particles in ids, their four row updates each in
+    // rows (a, b, A, B per quad).
+    struct Group {
+        int ids[8];
+        __m128 rows[8];
+        __m256 power;
+    };
+    auto compute = [&](std::size_t q, Group& g) {
+        const int at[8] = {quads.a[q], quads.b[q], quads.a[q] + n, quads.b[q] + n,
+                           quads.a[q + 1], quads.b[q + 1], quads.a[q + 1] + n, quads.b[q + 1] + n};
+        std::copy(at, at + 8, g.ids);
         // Columns (a, b, A, B | a', b', A', B') of x and v.
         __m256 X, Y, Z, VX, VY, VZ;
-        columns8(x, ids, X, Y, Z);
-        columns8(v, ids, VX, VY, VZ);
+        columns8(x, g.ids, X, Y, Z);
+        columns8(v, g.ids, VX, VY, VZ);
         // First ends (a, A, A, B) = columns (0, 2, 2, 3); second ends (b, B, b, a) = (1, 3, 1, 0).
         const __m256 dx = _mm256_sub_ps(_mm256_permute_ps(X, 0x1D), _mm256_permute_ps(X, 0xE8));
         const __m256 dy = _mm256_sub_ps(_mm256_permute_ps(Y, 0x1D), _mm256_permute_ps(Y, 0xE8));
@@ -299,15 +306,32 @@ void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, 
         auto rowsOf = [&](__m256 column) {
             return _mm256_add_ps(_mm256_permute_ps(column, 0xD0), _mm256_xor_ps(_mm256_permute_ps(column, 0x6B), flip));
         };
-        __m128 rows[8];
-        rows8(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), rows);
+        rows8(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), g.rows);
+        g.power = f.power;
+    };
+    auto apply = [&](const Group& g) {
         for (int j = 0; j < 2; ++j) {
-            addRow128(f4, ids[4 * j], rows[4 * j]);
-            subRow128(f4, ids[4 * j + 1], rows[4 * j + 1]);
-            addRow128(f4, ids[4 * j + 2], rows[4 * j + 2]);
-            addRow128(f4, ids[4 * j + 3], rows[4 * j + 3]);
+            addRow128(f4, g.ids[4 * j], g.rows[4 * j]);
+            subRow128(f4, g.ids[4 * j + 1], g.rows[4 * j + 1]);
+            addRow128(f4, g.ids[4 * j + 2], g.rows[4 * j + 2]);
+            addRow128(f4, g.ids[4 * j + 3], g.rows[4 * j + 3]);
         }
-        sums.add(f.power);
+        sums.add(g.power);
+    };
+    // Two groups per iteration, both computed before either is added, so that the core
+    // overlaps their square root and division chains (as the double path's kernels); the rows
+    // are still updated quad by quad in order.
+    std::size_t q = begin;
+    Group g1, g2;
+    for (; q + 4 <= end; q += 4) {
+        compute(q, g1);
+        compute(q + 2, g2);
+        apply(g1);
+        apply(g2);
+    }
+    for (; q + 2 <= end; q += 2) {
+        compute(q, g1);
+        apply(g1);
     }
     sums.store(power);
     for (; q < end; ++q) quadScalar(quads, begin, q, n, ks4, kd4, x, v, f4, power);
