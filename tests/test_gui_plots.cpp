@@ -1,4 +1,6 @@
 // Plot data per scene (only the quantities a scene has), and the file exports.
+#include <set>
+
 #include <QApplication>
 #include <QFile>
 #include <QSignalSpy>
@@ -711,6 +713,12 @@ private slots:
                 QCOMPARE(bars.value(b, lane), fieldOf(ids[b], lanes[std::size_t(lane)].second));
                 QCOMPARE(bars.color(b, lane), bars.color(b, 0));
             }
+        // Colour-blind safe: the three spring families (one hue, three lightnesses) differ in
+        // their outline too, solid, dashed and dotted (issue 30).
+        const std::set<Qt::PenStyle> styles = {bars.outline(int(ids.indexOf("spring-structural"))),
+                                               bars.outline(int(ids.indexOf("spring-radius"))),
+                                               bars.outline(int(ids.indexOf("spring-shear")))};
+        QCOMPARE(styles, (std::set<Qt::PenStyle>{Qt::SolidLine, Qt::DashLine, Qt::DotLine}));
         // Euler's drift is not RK4's: the grouped bars show a difference.
         QVERIFY(bars.value(drift, 0) != bars.value(drift, 2));
         bars.refreshText();

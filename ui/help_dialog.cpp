@@ -1,6 +1,7 @@
 #include "ui/help_dialog.h"
 
 #include <QDialogButtonBox>
+#include <QPushButton>
 #include <QDir>
 #include <QTextBrowser>
 #include <QUrl>
@@ -8,9 +9,10 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
+#include "ui/language.h"
+#include "ui/lessons.h"
 #include "ui/parameter_dock.h"
 #include "ui/presets.h"
-#include "ui/lessons.h"
 
 namespace elui {
 
@@ -109,7 +111,7 @@ QString HelpDialog::html() {
         h += QStringLiteral("<tr><td><b>%1</b></td><td align=center>%2</td><td>%3</td><td>%4</td></tr>")
                  .arg(name)
                  .arg(name == QLatin1String("verlet") ? QObject::tr("2 (1 damped)") : QString::number(info.order))
-                 .arg(toQString(info.description).toHtmlEscaped(), integratorNote(name));
+                 .arg(simcoreText(info.description).toHtmlEscaped(), integratorNote(name));
     }
     h += QStringLiteral("</table>");
     h += QObject::tr("<h3>Presets</h3><ul>");
@@ -138,9 +140,12 @@ HelpDialog::HelpDialog(QWidget* parent) : QDialog(parent) {
     auto* layout = new QVBoxLayout(this);
     auto* browser = new QTextBrowser(this);
     browser->setOpenExternalLinks(true);
+    browser->setAccessibleName(tr("Help"));
+    browser->setAccessibleDescription(tr("How to use Elastic Lab: the view, the docks, the integrators and the files"));
     browser->setHtml(html());
     layout->addWidget(browser);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    buttons->button(QDialogButtonBox::Close)->setToolTip(tr("Close the help"));
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);
 }

@@ -15,6 +15,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "ui/language.h"
 #include "ui/lesson_measures.h"
 
 namespace elui {
@@ -65,13 +66,15 @@ RunReading runReading(const QString& lesson, const QString& key) {
     return {};
 }
 
-QString number(double v) { return std::isfinite(v) ? QString::number(v, 'g', 4) : QStringLiteral("—"); }
+QString number(double v) { return std::isfinite(v) ? num(v, 'g', 4) : QStringLiteral("—"); }
 
 }  // namespace
 
 LessonDock::LessonDock(QWidget* parent) : QDockWidget(tr("Lesson"), parent) {
     setObjectName(QStringLiteral("LessonDock"));
     auto* scroll = new QScrollArea(this);
+    scroll->setAccessibleName(tr("Lesson"));
+    scroll->setAccessibleDescription(tr("Run until a time, a stopwatch, and each answer of the lesson beside what your run gives"));
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // rows wrap to the dock's width
     auto* host = new QWidget(scroll);
@@ -108,6 +111,8 @@ void LessonDock::createRunUntilRow(QWidget* host, QVBoxLayout* layout) {
     m_until->setDecimals(3);
     m_until->setValue(3.0);
     m_until->setSuffix(QStringLiteral(" s"));
+    m_until->setAccessibleName(tr("Run until this simulated time"));
+    m_until->setToolTip(tr("The simulated time [s] at which Run until pauses"));
     m_runUntil = new QPushButton(tr("Run until t ="), host);
     m_runUntil->setObjectName(QStringLiteral("runUntil"));
     m_runUntil->setToolTip(tr("Run as fast as possible and pause at this simulated time."));
@@ -126,8 +131,10 @@ void LessonDock::createStopwatchRow(QWidget* host, QVBoxLayout* layout) {
     m_watchButton = new QToolButton(host);
     m_watchButton->setText(tr("Start"));
     m_watchButton->setObjectName(QStringLiteral("stopwatchStartStop"));
+    m_watchButton->setToolTip(tr("Start or stop the stopwatch on the simulated clock"));
     m_watchReset = new QToolButton(host);
     m_watchReset->setText(tr("Zero"));
+    m_watchReset->setToolTip(tr("Set the stopwatch back to zero"));
     connect(m_watchButton, &QToolButton::clicked, this, [this] {
         const double now = m_last && !m_last->lanes.empty() ? m_last->lanes.front().diagnostics.time : 0.0;
         if (m_watchRunning) m_watchHeld += now - m_watchStart;
@@ -218,7 +225,7 @@ double LessonDock::stopwatch() const {
 }
 
 void LessonDock::updateStopwatch() {
-    m_watch->setText(tr("Stopwatch: <b>%1 s</b>").arg(stopwatch(), 0, 'f', 3));
+    m_watch->setText(tr("Stopwatch: <b>%1 s</b>").arg(num(stopwatch(), 'f', 3)));
     m_watchButton->setText(m_watchRunning ? tr("Stop") : tr("Start"));
 }
 
@@ -306,21 +313,21 @@ void LessonDock::showFrame(const FramePtr& frame) {
 
     // Readouts.
     QStringList lines;
-    lines << tr("t = <b>%1 s</b>").arg(t, 0, 'f', 3);
+    lines << tr("t = <b>%1 s</b>").arg(num(t, 'f', 3));
     for (const LaneFrame& lane : frame->lanes)
         lines << tr("%1: energy drift <b>%2 J</b>%3")
                      .arg(lane.integrator)
-                     .arg(lane.diagnostics.energyDrift(), 0, 'g', 4)
-                     .arg(lane.failure ? tr(", blew up at t = %1 s").arg(lane.failure->time, 0, 'f', 3) : QString());
+                     .arg(num(lane.diagnostics.energyDrift(), 'g', 4))
+                     .arg(lane.failure ? tr(", blew up at t = %1 s").arg(num(lane.failure->time, 'f', 3)) : QString());
     const BodyMeasures& b = first.body;
     lines << tr("centre of mass: %1 m above the floor, vertical speed %2 m/s")
-                 .arg(b.centreOfMass.y() - b.floor, 0, 'f', 3)
-                 .arg(b.centreVelocity.y(), 0, 'f', 3);
+                 .arg(num(b.centreOfMass.y() - b.floor, 'f', 3))
+                 .arg(num(b.centreVelocity.y(), 'f', 3));
     if (b.layered)
         lines << tr("layer centres above the floor: inner %1 m, outer %2 m; the inner one sits <b>%3 m</b> %4")
-                     .arg(b.layerCentre[0].y() - b.floor, 0, 'f', 3)
-                     .arg(b.layerCentre[1].y() - b.floor, 0, 'f', 3)
-                     .arg(std::abs(b.sag()), 0, 'f', 4)
+                     .arg(num(b.layerCentre[0].y() - b.floor, 'f', 3))
+                     .arg(num(b.layerCentre[1].y() - b.floor, 'f', 3))
+                     .arg(num(std::abs(b.sag()), 'f', 4))
                      .arg(b.sag() >= 0.0 ? tr("below") : tr("above"));
     // The centre's speed where the body last touched down and last took off (frames).
     const bool touching = first.diagnostics.contact > 0.0;
@@ -330,22 +337,22 @@ void LessonDock::showFrame(const FramePtr& frame) {
     m_lastFrame = frame;
     if (m_impact > 0.0)
         lines << tr("centre of mass hit the floor at %1 m/s%2")
-                     .arg(m_impact, 0, 'f', 3)
+                     .arg(num(m_impact, 'f', 3))
                      .arg(m_rebound > 0.0 ? tr(", left it at %1 m/s (ratio %2)")
-                                                .arg(m_rebound, 0, 'f', 3)
-                                                .arg(m_rebound / m_impact, 0, 'f', 3)
+                                                .arg(num(m_rebound, 'f', 3))
+                                                .arg(num(m_rebound / m_impact, 'f', 3))
                                           : QString());
     // Resting on the floor, the smooth contact lets the lowest particles sink a little.
     lines << (b.lowest >= 0.0 ? tr("lowest point %1 m above the floor%2") : tr("lowest point %1 m into the floor (contact)%2"))
-                 .arg(std::abs(b.lowest), 0, 'f', 3)
-                 .arg(m_lastLiftOff >= 0 ? tr("; last left the floor at t = %1 s").arg(m_lastLiftOff, 0, 'f', 3)
+                 .arg(num(std::abs(b.lowest), 'f', 3))
+                 .arg(m_lastLiftOff >= 0 ? tr("; last left the floor at t = %1 s").arg(num(m_lastLiftOff, 'f', 3))
                                          : QString());
     if (first.diagnostics.hasGas)
         lines << tr("inner layer: %1 %2, pressure %3 %4")
-                     .arg(first.diagnostics.volume[0], 0, 'g', 4)
+                     .arg(num(first.diagnostics.volume[0], 'g', 4))
                      .arg(frame->scene && frame->scene->kind == simcore::SceneKind::Ring2d ? QStringLiteral("m²")
                                                                                            : QStringLiteral("m³"))
-                     .arg(first.diagnostics.pressure[0], 0, 'g', 4)
+                     .arg(num(first.diagnostics.pressure[0], 'g', 4))
                      .arg(frame->scene && frame->scene->kind == simcore::SceneKind::Ring2d ? QStringLiteral("N/m")
                                                                                            : QStringLiteral("N/m²"));
     m_readout->setText(lines.join(QStringLiteral("<br>")));

@@ -4,6 +4,8 @@
 #include <QObject>
 #include <QRegularExpression>
 
+#include "ui/language.h"
+
 // The texts are in the UI library's resources; a static library needs them registered by name.
 static void initLessonResources() {
     static const bool once = [] {
@@ -64,7 +66,14 @@ QList<Lesson> lessons() {
 }
 
 const Lesson* findLesson(const QString& id) {
-    static const QList<Lesson> all = lessons();
+    // Made again when the language changes (the titles are translated): the command line's help
+    // lists the lessons before the language is chosen.
+    static QList<Lesson> all;
+    static QString madeIn;
+    if (all.isEmpty() || madeIn != currentLanguage()) {
+        all = lessons();
+        madeIn = currentLanguage();
+    }
     for (const Lesson& l : all)
         if (l.id == id) return &l;
     return nullptr;
@@ -108,9 +117,11 @@ QMap<QString, LessonAnswer> lessonAnswers(const QString& html, QString* error) {
         const QRegularExpressionMatch m = it.next();
         const QString key = m.captured(1);
         bool okValue = false, okTol = false;
-        // A minus sign may be written as U+2212 in the text.
+        // A minus sign may be written as U+2212 in the text, and the German, French and Spanish
+        // texts write a decimal comma.
         QString number = m.captured(3).trimmed();
         number.replace(QChar(0x2212), QLatin1Char('-'));
+        number.replace(QLatin1Char(','), QLatin1Char('.'));
         const LessonAnswer answer{number.toDouble(&okValue), m.captured(2).toDouble(&okTol)};
         if (out.contains(key)) fail(QStringLiteral("answer %1 is marked twice").arg(key));
         else if (!okValue) fail(QStringLiteral("answer %1 is not a number: %2").arg(key, m.captured(3)));
@@ -130,7 +141,7 @@ QList<LessonValue> lessonValues(const QString& html) {
         LessonValue v;
         v.kind = m.captured(1);
         v.key = m.captured(2);
-        v.value = m.captured(3).trimmed().toDouble(&v.valid);
+        v.value = QString(m.captured(3).trimmed()).replace(QLatin1Char(','), QLatin1Char('.')).toDouble(&v.valid);
         out << v;
     }
     return out;
@@ -150,7 +161,7 @@ QList<double> lessonUntil(const QString& html) {
     QList<double> out;
     for (auto it = span.globalMatch(html); it.hasNext();) {
         bool ok = false;
-        const double t = it.next().captured(1).trimmed().toDouble(&ok);
+        const double t = it.next().captured(1).trimmed().replace(QLatin1Char(','), QLatin1Char('.')).toDouble(&ok);
         if (ok) out << t;
     }
     return out;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -20,14 +21,17 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
+#include <QTranslator>
 #include <QVBoxLayout>
 
 #include "simcore/scenes.h"
+#include "ui/accessibility.h"
 #include "ui/compare_dialog.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/export.h"
 #include "ui/failure_banner.h"
 #include "ui/help_dialog.h"
+#include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/lesson_dock.h"
 #include "ui/lessons_dialog.h"
@@ -59,6 +63,9 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     createTimeline();
     createClassControls();
     readSettings();
+    // Screen readers get plain-text descriptions of every control (docs/accessibility.md).
+    installToolTipDescriptions();
+    if (m_highContrastWanted) setHighContrast(true);
 }
 
 MainWindow::~MainWindow() {
@@ -79,7 +86,7 @@ void MainWindow::createActions() {
     m_saveSceneAs = new QAction(tr("Save scene &as..."), this);
     m_saveSceneAs->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
     connect(m_saveSceneAs, &QAction::triggered, this, &MainWindow::saveSceneAs);
-    m_exportCsv = new QAction(tr("Export &CSV..."), this);
+    m_exportCsv = new QAction(tr("Export &Data (CSV, Excel)..."), this);
     m_exportCsv->setToolTip(tr("The time series of this run, with the same columns as elastic-lab-cli run --csv"));
     connect(m_exportCsv, &QAction::triggered, this, &MainWindow::exportCsv);
     m_exportPlots = new QAction(tr("Export &plots (PNG, SVG, PDF)..."), this);
@@ -197,10 +204,18 @@ void MainWindow::createMenus() {
     m_viewMenu = menuBar()->addMenu(tr("&View"));  // dock toggles are added in createDocks()
     for (QAction* a : m_displayToggles) m_viewMenu->addAction(a);
     m_viewMenu->addAction(m_resetView);
+    // High contrast: black, white and yellow for the whole window (docs/accessibility.md).
+    m_highContrast = m_viewMenu->addAction(tr("&High contrast"));
+    m_highContrast->setObjectName(QStringLiteral("highContrast"));
+    m_highContrast->setCheckable(true);
+    m_highContrast->setToolTip(tr("White text on black, yellow highlight and focus: for low vision and projectors"));
+    connect(m_highContrast, &QAction::toggled, this, &MainWindow::setHighContrast);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_presentation);
     m_viewMenu->addAction(m_zoomIn);
     m_viewMenu->addAction(m_zoomOut);
+    m_viewMenu->addSeparator();
+    createLanguageMenu();
     m_viewMenu->addSeparator();
 
     QMenu* compare = menuBar()->addMenu(tr("&Compare"));
@@ -293,7 +308,7 @@ void MainWindow::createCentral() {
     connect(m_useSuggestedDt, &QPushButton::clicked, this, [this] {
         m_controller->setParameter(simcore::Param::Dt, m_suggestedDt);
         m_stabilityBanner->hide();
-        status(tr("DT set to %1 s").arg(m_suggestedDt));
+        status(tr("DT set to %1 s").arg(num(m_suggestedDt)));
     });
     auto* stableImplicit = new QPushButton(tr("Use implicit-euler"), m_stabilityBanner);
     stableImplicit->setToolTip(tr("Linearised backward Euler: stable at any DT (and damps more)"));
@@ -345,6 +360,8 @@ void MainWindow::rebuildViewports(int count) {
         connect(v, &Viewport::anchorMoved, m_controller, &SimulationController::moveAnchor);
         connect(v, &Viewport::releaseRequested, m_controller, &SimulationController::release);
         connect(v, &Viewport::selectRequested, m_controller, &SimulationController::selectAlongRay);
+        connect(v, &Viewport::particleSelected, m_controller, &SimulationController::selectParticle);
+        v->setHighContrast(m_highContrast->isChecked());
         connect(v, &Viewport::contextRequested, this, [this](const QPoint& at, int particle) {
             QMenu* menu = viewContextMenu(particle);
             menu->setAttribute(Qt::WA_DeleteOnClose);
@@ -570,8 +587,57 @@ void MainWindow::readSettings() {
         if (now && !isMaximized() && !isFullScreen()) setGeometry(fitWithin(geometry(), now->availableGeometry()));
     }
     restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+    // High contrast stays chosen from one start to the next.
+    if (settings.value(QStringLiteral("highContrast"), false).toBool()) m_highContrastWanted = true;
     const double scale = settings.value(QStringLiteral("uiScale"), 1.0).toDouble();
     if (scale > 1.0) setUiScale(scale);
+}
+
+void MainWindow::createLanguageMenu() {
+    // View > Language: the choice is kept in the settings and applies at the next start (every
+    // dock, plot and dialog is built in its language; the running experiment is not torn down
+    // for it). The menu says so, in the language chosen as well as in this one.
+    QMenu* menu = m_viewMenu->addMenu(tr("&Language"));
+    menu->setObjectName(QStringLiteral("languageMenu"));
+    auto* group = new QActionGroup(menu);
+    const QString saved = m_useSettings ? QSettings().value(QStringLiteral("language")).toString() : QString();
+    auto add = [&](const QString& code, const QString& text) {
+        QAction* a = menu->addAction(text);
+        a->setObjectName(QStringLiteral("language-") + code);
+        a->setCheckable(true);
+        a->setData(code);
+        a->setChecked(code == (saved.isEmpty() ? QStringLiteral("system") : saved));
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code] { chooseLanguage(code); });
+    };
+    add(QStringLiteral("system"), tr("System language"));
+    menu->addSeparator();
+    for (const Language& l : languages()) add(l.code, l.nativeName);
+    menu->addSeparator();
+    QAction* note = menu->addAction(tr("Applies at the next start (now: %1)")
+                                        .arg(QLocale(currentLanguage()).nativeLanguageName()));
+    note->setEnabled(false);
+}
+
+void MainWindow::chooseLanguage(const QString& code) {
+    if (m_useSettings) QSettings().setValue(QStringLiteral("language"), code);
+    const QString target = code == QLatin1String("system")
+                               ? elui::chooseLanguage({}, {}, QLocale::system().uiLanguages())
+                               : code;
+    // The sentence in the language chosen too: a student who picked it by mistake can read it.
+    const char* const sentence = QT_TR_NOOP("The language changes when Elastic Lab starts again.");
+    QString text = tr(sentence);
+    QTranslator other;
+    if (target != currentLanguage() && target != QLatin1String("en") &&
+        other.load(QStringLiteral(":/i18n/elastic-lab_%1.qm").arg(target)))
+        text += QStringLiteral("\n\n") + other.translate("elui::MainWindow", sentence);
+    else if (target == QLatin1String("en") && currentLanguage() != QLatin1String("en"))
+        text += QStringLiteral("\n\n") + QString::fromLatin1(sentence);
+    status(tr("Language: %1 at the next start").arg(QLocale(target).nativeLanguageName()));
+    auto* box = new QMessageBox(QMessageBox::Information, tr("Language"), text, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setObjectName(QStringLiteral("languageNote"));
+    box->open();
 }
 
 void MainWindow::writeSettings() {
@@ -579,6 +645,7 @@ void MainWindow::writeSettings() {
     QSettings settings;
     settings.setValue(QStringLiteral("geometry"), saveGeometry());
     settings.setValue(QStringLiteral("windowState"), saveState());
+    settings.setValue(QStringLiteral("highContrast"), m_highContrast->isChecked());
     settings.setValue(QStringLiteral("uiScale"), uiScale());
 }
 
@@ -736,7 +803,7 @@ void MainWindow::onFrame(const FramePtr& frame) {
     const bool multi = frame->lanes.size() > 1;
     for (Viewport* v : m_viewports) {
         const LaneFrame& lane = frame->lanes[std::size_t(std::min<int>(v->lane(), int(frame->lanes.size()) - 1))];
-        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(frame->parameters.get(simcore::Param::Dt))
+        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(num(frame->parameters.get(simcore::Param::Dt)))
                           : QString());
         v->showFrame(frame);
     }
@@ -762,6 +829,29 @@ void MainWindow::onFrame(const FramePtr& frame) {
     m_banner->showFrame(*frame);
 }
 
+void MainWindow::setHighContrast(bool on) {
+    if (m_highContrast->isChecked() != on) m_highContrast->setChecked(on);  // toggled() calls back
+    static const QPalette normal = QApplication::palette();
+    QApplication::setPalette(on ? highContrastPalette() : normal);
+    // The Fusion style draws frames and check boxes in shades of the window colour, which on black
+    // vanish: white frames, and a yellow check, say where the controls are.
+    qApp->setStyleSheet(on ? QStringLiteral("QPushButton, QComboBox, QLineEdit { border: 1px solid white; padding: 2px 6px; }"
+                                            "QPushButton:focus, QComboBox:focus, QLineEdit:focus { border: 2px solid yellow; }"
+                                            "QCheckBox::indicator { width: 13px; height: 13px; border: 2px solid white; }"
+                                            "QCheckBox::indicator:checked { background: yellow; }")
+                           : QString());
+    // The banners' own colours: light tints in the normal theme; black with a coloured border
+    // in high contrast (their white text stays readable).
+    m_banner->setStyleSheet(on ? QStringLiteral("#failureBanner { background: black; border: 3px solid #ff5050; }")
+                               : QStringLiteral("#failureBanner { background: #fbe3e1; border-bottom: 2px solid #c0392b; }"));
+    m_stabilityBanner->setStyleSheet(
+        on ? QStringLiteral("#stabilityBanner { background: black; border: 3px solid yellow; }")
+           : QStringLiteral("#stabilityBanner { background: #fdf0d5; border-bottom: 2px solid #d68910; }"));
+    for (Viewport* v : m_viewports) v->setHighContrast(on);
+}
+
+bool MainWindow::highContrast() const { return m_highContrast->isChecked(); }
+
 QString MainWindow::failureText() const { return m_banner->text(); }
 
 QString MainWindow::stabilityText() const {
@@ -778,7 +868,7 @@ void MainWindow::showStabilityAdvice(const SceneData& scene) {
     // so an explicit method needs a smaller DT (docs/numerics.md, "Resolution").
     m_stabilityText->setText(tr("<b>This body is likely unstable at the current DT.</b> %1. The run is paused.")
                                  .arg(scene.stabilityWarning.toHtmlEscaped()));
-    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(scene.suggestedDt));
+    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(num(scene.suggestedDt)));
     m_stabilityBanner->show();
 }
 
@@ -954,11 +1044,26 @@ QString MainWindow::saveSceneFile(const QString& path) {
 }
 
 void MainWindow::exportCsv() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), QStringLiteral("elastic-lab.csv"),
-                                                      tr("CSV files (*.csv)"));
+    // Three spellings of the same table; the one this locale's spreadsheet opens by a
+    // double-click is offered first (the semicolon dialect where the decimal separator is a comma).
+    const QString plain = tr("CSV, comma and decimal point (*.csv)");
+    const QString semicolon = tr("CSV for spreadsheets, semicolon and decimal comma (*.csv)");
+    const QString workbook = tr("Excel workbook with charts (*.xlsx)");
+    QString selected = defaultCsvDialect(locale()) == simlab::CsvDialect::ExcelSemicolon ? semicolon : plain;
+    QString path = QFileDialog::getSaveFileName(this, tr("Export data"), QStringLiteral("elastic-lab.csv"),
+                                                QStringList{plain, semicolon, workbook}.join(QStringLiteral(";;")),
+                                                &selected);
     if (path.isEmpty()) return;
-    const QString error = writeCsv(path, m_controller->sceneKind(), m_controller->history());
-    if (!error.isEmpty()) warn(tr("Export CSV"), error);
+    const bool xlsx = selected == workbook || path.endsWith(QLatin1String(".xlsx"), Qt::CaseInsensitive);
+    if (xlsx && !path.endsWith(QLatin1String(".xlsx"), Qt::CaseInsensitive)) {
+        if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) path.chop(4);
+        path += QLatin1String(".xlsx");
+    }
+    const QString error = xlsx ? writeXlsx(path, m_controller->sceneKind(), m_controller->history())
+                               : writeCsv(path, m_controller->sceneKind(), m_controller->history(),
+                                          selected == semicolon ? simlab::CsvDialect::ExcelSemicolon
+                                                                : simlab::CsvDialect::Plain);
+    if (!error.isEmpty()) warn(tr("Export data"), error);
     else status(tr("Wrote %1 rows to %2").arg(m_controller->history().size()).arg(path));
 }
 

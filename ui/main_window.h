@@ -77,6 +77,9 @@ public:
     const ViewOptions& viewOptions() const { return m_options; }
     void setViewOptions(const ViewOptions& options);
     QString failureText() const;
+    // View > High contrast (docs/accessibility.md): the palette, the banners and the views.
+    void setHighContrast(bool on);
+    bool highContrast() const;
     FailureBanner* failureBanner() const { return m_banner; }
     // The pre-run stability warning after a rebuild (empty when none is shown), and its
     // one-click remedy: the button that sets the suggested DT.
@@ -150,6 +153,8 @@ private:
     void setCurrentFile(const QString& path, const simcore::ParameterSet& saved, const QString& integrator);
     void updateTitle(const Frame& frame);
     void fillRecentMenu();
+    void createLanguageMenu();
+    void chooseLanguage(const QString& code);  // View > Language: kept for the next start
     void adoptOpenedFile();
 
     SimulationController* m_controller = nullptr;
@@ -225,6 +230,8 @@ private:
     QAction* m_help = nullptr;
     QAction* m_lessons = nullptr;
     LessonsDialog* m_lessonsDialog = nullptr;
+    QAction* m_highContrast = nullptr;
+    bool m_highContrastWanted = false;  // from the settings, applied once the window is built
     QAction* m_about = nullptr;
     std::vector<QAction*> m_displayToggles;
     QMenu* m_viewMenu = nullptr;

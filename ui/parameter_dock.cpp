@@ -1,5 +1,8 @@
 #include "ui/parameter_dock.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -12,10 +15,9 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include <algorithm>
-#include <cmath>
-
+#include "ui/accessibility.h"
 #include "ui/field_keys.h"
+#include "ui/language.h"
 
 namespace elui {
 
@@ -48,7 +50,8 @@ QString fieldLabel(const simcore::ParamSpec& spec) {
     }
 }
 
-static QString formatValue(double v) { return QString::number(v, 'g', 10); }
+// In the locale's spelling (a decimal comma in German); fields read it and the C spelling.
+static QString formatValue(double v) { return num(v, 'g', 10); }
 
 namespace {
 // The span a main parameter's slider covers: the values a class tries, inside the table's
@@ -101,10 +104,11 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
             auto* box = new QComboBox(this);
             box->setObjectName(QStringLiteral("param_") + key);
             for (int k = 0; !spec->choiceName(k).empty(); ++k) box->addItem(QString::fromStdString(spec->choiceName(k)));
-            const QString tip = QStringLiteral("<b>%1</b><br>%2<br>default: %3")
-                                    .arg(key, toQString(spec->meaning).toHtmlEscaped(),
+            const QString tip = tr("<b>%1</b><br>%2<br>default: %3")
+                                    .arg(key, simcoreText(spec->meaning).toHtmlEscaped(),
                                          QString::fromStdString(spec->choiceName(spec->defaultFor(kind))));
             box->setToolTip(tip);
+            setAccessibleText(box, key + QStringLiteral(": ") + simcoreText(spec->meaning), tip);
             auto* label = new QLabel(key, this);
             label->setToolTip(tip);
             auto* choiceRow = new QWidget(this);
@@ -130,9 +134,9 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
         }
         auto* edit = new QLineEdit(this);
         edit->setObjectName(QStringLiteral("param_") + key);
-        QString tip = QStringLiteral("<b>%1</b>%2<br>%3<br>allowed: %4<br>default: %5")
+        QString tip = tr("<b>%1</b>%2<br>%3<br>allowed: %4<br>default: %5")
                                 .arg(key, unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit),
-                                     toQString(spec->meaning).toHtmlEscaped(),
+                                     simcoreText(spec->meaning).toHtmlEscaped(),
                                      QString::fromStdString(spec->rangeText()),
                                      formatValue(spec->defaultFor(kind)));
         if (spec->id == simcore::Param::Dt) {
@@ -143,6 +147,10 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
         }
         edit->setToolTip(tip);
         edit->setProperty("tip", tip);
+        // Read as "ks: structural spring stiffness ... , newtons per metre" (the unit as written).
+        setAccessibleText(edit, key + QStringLiteral(": ") + simcoreText(spec->meaning) +
+                                    (unit.isEmpty() ? QString() : QStringLiteral(" [%1]").arg(unit)),
+                          tip);
         auto* row = new QWidget(this);
         auto* h = new QHBoxLayout(row);
         h->setContentsMargins(0, 0, 0, 0);
@@ -160,7 +168,7 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
         m_defaults[key] = back;
         auto* label = new QLabel(fieldLabel(*spec), this);
         label->setObjectName(QStringLiteral("label_") + key);
-        if (label->text() != key) tip += QStringLiteral("<br>key: %1").arg(key);
+        if (label->text() != key) tip += QStringLiteral("<br>") + tr("key: %1").arg(key);
         edit->setToolTip(tip);
         edit->setProperty("tip", tip);
         label->setToolTip(tip);
@@ -285,12 +293,17 @@ QLineEdit* ParameterForm::field(const QString& key) const {
 }
 
 QString ParameterForm::validate(const simcore::ParamSpec& spec, const QString& text, double* value) {
-    const std::string t = text.trimmed().toStdString();
+    const std::string t = toCNumber(text).trimmed().toStdString();  // "0,5" in German: 0.5
     const auto parsed = simcore::parseValue(spec, t);  // a number, or a choice's name
     if (!parsed)
-        return QStringLiteral("%1: '%2' is not a number; allowed %3")
-            .arg(toQString(spec.key), text, QString::fromStdString(spec.rangeText()));
-    if (auto error = simcore::validateValue(spec, *parsed)) return QString::fromStdString(*error);
+        return tr("%1: '%2' is not a number; allowed %3").arg(toQString(spec.key), text, QString::fromStdString(spec.rangeText()));
+    // simcore's message in English; in another language the same facts in its words.
+    if (auto error = simcore::validateValue(spec, *parsed))
+        return currentLanguage() == QLatin1String("en")
+                   ? QString::fromStdString(*error)
+                   : tr("%1 = %2 is not allowed; allowed %3%4")
+                         .arg(toQString(spec.key), text.trimmed(), QString::fromStdString(spec.rangeText()),
+                              spec.integer ? tr(", whole numbers") : QString());
     if (value) *value = *parsed;
     return {};
 }
@@ -355,6 +368,8 @@ bool ParameterForm::commit(const QString& key) {
 ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), parent) {
     setObjectName(QStringLiteral("ParametersDock"));
     auto* scroll = new QScrollArea(this);
+    scroll->setAccessibleName(tr("Parameters"));
+    scroll->setAccessibleDescription(tr("Every parameter of the scene with its unit; a change applies at once"));
     scroll->setWidgetResizable(true);
     m_host = new QWidget(scroll);
     m_layout = new QVBoxLayout(m_host);

@@ -6,6 +6,8 @@
 #include <QGuiApplication>
 #include <QMouseEvent>
 #include <QOffscreenSurface>
+#include <QFrame>
+#include <QKeyEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QLabel>
@@ -13,6 +15,7 @@
 #include <QTextDocument>
 #include <QWheelEvent>
 
+#include "ui/language.h"
 #include "ui/plot_series.h"
 
 static void initElasticLabResources() { Q_INIT_RESOURCE(elastic_lab); }
@@ -145,6 +148,93 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     m_rulerLabel->setStyleSheet(QStringLiteral("QLabel { background: rgba(255,255,255,220); color: #731a8c; "
                                                "border: 1px solid #731a8c; padding: 2px; }"));
     m_rulerLabel->hide();
+    // Keyboard: a visible frame while the view has focus (drawn over the GL image).
+    m_focusFrame = new QFrame(this);
+    m_focusFrame->setObjectName(QStringLiteral("focusFrame"));
+    m_focusFrame->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_focusFrame->hide();
+    setHighContrast(false);
+    setAccessibleName(tr("Simulation view"));
+    setAccessibleDescription(
+        tr("The body. Keyboard: arrow keys or Page Up and Page Down choose a particle and show the forces on it; "
+           "Enter grabs it with the mouse spring, then the arrow keys drag it (Shift: ten times farther) and "
+           "Enter or Escape lets go; Escape clears the choice."));
+}
+
+void Viewport::setHighContrast(bool on) {
+    m_highContrast = on;
+    m_info->setStyleSheet(on ? QStringLiteral("QLabel { color: white; background: black; padding: 3px; }")
+                             : QStringLiteral("QLabel { color: #202030; background: rgba(255,255,255,150); padding: 3px; }"));
+    m_focusFrame->setStyleSheet(on ? QStringLiteral("QFrame { border: 4px solid yellow; background: transparent; }")
+                                   : QStringLiteral("QFrame { border: 3px solid #1a5fd0; background: transparent; }"));
+    update();
+}
+
+void Viewport::focusInEvent(QFocusEvent* event) {
+    QOpenGLWidget::focusInEvent(event);
+    m_focusFrame->setGeometry(rect());
+    m_focusFrame->show();
+    m_focusFrame->raise();
+}
+
+void Viewport::focusOutEvent(QFocusEvent* event) {
+    QOpenGLWidget::focusOutEvent(event);
+    m_focusFrame->hide();
+}
+
+QPointF Viewport::pixelOf(int particle) const {
+    const auto& x = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))].positions;
+    const QVector3D p(x[3 * std::size_t(particle)], x[3 * std::size_t(particle) + 1], x[3 * std::size_t(particle) + 2]);
+    const QVector3D ndc = (m_camera.projection(size()) * m_camera.view()).map(p);
+    return {(ndc.x() + 1.0) * 0.5 * width(), (1.0 - ndc.y()) * 0.5 * height()};
+}
+
+void Viewport::keyPressEvent(QKeyEvent* event) {
+    const int count = m_frame && m_frame->scene ? m_frame->scene->topology.particleCount() : 0;
+    if (count == 0) return QOpenGLWidget::keyPressEvent(event);
+    const int key = event->key();
+    const bool enter = key == Qt::Key_Return || key == Qt::Key_Enter;
+    if (m_drag == Drag::Grab) {
+        // Dragging by keyboard: the anchor moves in the plane facing the camera, 8 pixels a
+        // press (Shift: 80); Enter or Escape lets go.
+        const double step = event->modifiers() & Qt::ShiftModifier ? 80.0 : 8.0;
+        QPointF d;
+        if (key == Qt::Key_Left) d = {-step, 0};
+        else if (key == Qt::Key_Right) d = {step, 0};
+        else if (key == Qt::Key_Up) d = {0, -step};
+        else if (key == Qt::Key_Down) d = {0, step};
+        else if (enter || key == Qt::Key_Escape) {
+            emit releaseRequested();
+            m_drag = Drag::None;
+            m_grabbed = false;
+            return;
+        } else {
+            return QOpenGLWidget::keyPressEvent(event);
+        }
+        m_lastPixel += d;
+        if (m_grabbed) emit anchorMoved(anchorUnder(m_lastPixel));
+        return;
+    }
+    int next = m_keyboardParticle;
+    const int jump = event->modifiers() & Qt::ShiftModifier ? 10 : 1;
+    if (key == Qt::Key_Right || key == Qt::Key_Down || key == Qt::Key_PageDown) next = next < 0 ? 0 : (next + jump) % count;
+    else if (key == Qt::Key_Left || key == Qt::Key_Up || key == Qt::Key_PageUp)
+        next = next < 0 ? count - 1 : ((next - jump) % count + count) % count;
+    else if (key == Qt::Key_Escape) next = -1;  // Home and End travel the timeline
+    else if (enter && m_keyboardParticle >= 0) {
+        // Grab the chosen particle as a press on it would (the worker picks along the ray
+        // through it, the nearest outer particle; onGrabbed starts the drag).
+        m_lastPixel = pixelOf(m_keyboardParticle);
+        const Ray ray = m_camera.rayAt(m_lastPixel, size());
+        m_drag = Drag::Grab;
+        m_grabbed = false;
+        emit grabRequested(ray.origin, ray.direction, 28.0 * m_camera.worldPerPixel(size()));
+        return;
+    } else {
+        return QOpenGLWidget::keyPressEvent(event);
+    }
+    m_keyboardParticle = next;
+    emit particleSelected(next);
 }
 
 Viewport::~Viewport() {
@@ -479,7 +569,8 @@ void Viewport::drawBox() {
 
 void Viewport::paintGL() {
     ++m_paints;
-    glClearColor(0.95f, 0.96f, 0.975f, 1.0f);
+    if (m_highContrast) glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    else glClearColor(0.95f, 0.96f, 0.975f, 1.0f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     if (!m_frame || !m_lines || !m_lines->isLinked()) return;
@@ -523,7 +614,9 @@ void Viewport::paintGL() {
     }
     for (int f = 0; f < 3; ++f)
         if (m_options.springs[f])
-            drawElementsLines(m_springs[std::size_t(f)], kFamilyColor[f], f == 0 ? lineWidth * 1.3f : lineWidth, f);
+            drawElementsLines(m_springs[std::size_t(f)],
+                              m_highContrast && f == 0 ? QVector4D(1.0f, 1.0f, 1.0f, 1.0f) : kFamilyColor[f],
+                              f == 0 ? lineWidth * 1.3f : lineWidth, f);
 
     if (m_options.normals) {
         if (flat) {
@@ -643,8 +736,8 @@ void Viewport::updateRulerLabel() {
         return;
     }
     const QVector3D d = m_rulerB - m_rulerA;
-    QString text = tr("%1 m").arg(double(d.length()), 0, 'f', 3);
-    if (m_camera.is2d()) text += tr(" (Δx %1, Δy %2)").arg(double(d.x()), 0, 'f', 3).arg(double(d.y()), 0, 'f', 3);
+    QString text = tr("%1 m").arg(num(double(d.length()), 'f', 3));
+    if (m_camera.is2d()) text += tr(" (Δx %1, Δy %2)").arg(num(double(d.x()), 'f', 3)).arg(num(double(d.y()), 'f', 3));
     m_rulerLabel->setText(text);
     m_rulerLabel->adjustSize();
     const QPointF p = toPixel(m_rulerB);
@@ -750,7 +843,7 @@ void Viewport::updateForcesPanel(const LaneFrame& lane) {
     QString html = QStringLiteral("<b>%1</b> %2<table cellspacing='0' cellpadding='1'>")
                        .arg(tr("Forces on particle %1").arg(b.particle), layer.isEmpty() ? QString() : QStringLiteral("(%1)").arg(layer));
     auto row = [&](const QColor& c, const QString& name, double newtons, bool bold) {
-        const QString value = QString::number(newtons, 'g', 4);
+        const QString value = num(newtons, 'g', 4);
         html += QStringLiteral("<tr><td><span style='color:%1; font-size:large'>&#9632;</span></td><td>%2</td>"
                                "<td align='right'>&nbsp;%3 N</td></tr>")
                     .arg(c.name(), bold ? QStringLiteral("<b>%1</b>").arg(name) : name,
@@ -778,7 +871,10 @@ void Viewport::updateForcesPanel(const LaneFrame& lane) {
     m_forcesPanel->show();
 }
 
+void Viewport::resizeEventFrame() { if (m_focusFrame) m_focusFrame->setGeometry(rect()); }
+
 void Viewport::resizeEvent(QResizeEvent* event) {
+    resizeEventFrame();
     QOpenGLWidget::resizeEvent(event);
     if (m_forcesPanel) m_forcesPanel->move(width() - m_forcesPanel->width() - 8, 8);
     if (m_legend) m_legend->move(width() - m_legend->width() - 10, height() - m_legend->height() - 10);
@@ -808,14 +904,14 @@ void Viewport::updateOverlay() {
     const LaneFrame& lane = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))];
     QString html;
     if (!m_title.isEmpty()) html += QStringLiteral("<b>%1</b><br>").arg(m_title.toHtmlEscaped());
-    html += QStringLiteral("t = %1 s").arg(lane.diagnostics.time, 0, 'f', 3);
+    html += QStringLiteral("t = %1 s").arg(num(lane.diagnostics.time, 'f', 3));
     // The distance to the reference view: view 1, or the first live view once view 1 has failed
     // (the Run dock's "distance to view N"); none on the reference view itself.
     const int reference = std::clamp(lane.divergenceReference, 0, int(m_frame->lanes.size()) - 1);
     if (m_frame->lanes.size() > 1 && m_lane != reference && !lane.failure)
-        html += QStringLiteral("<br>%1 from %2: %3 m (RMS)")
-                    .arg(tr("distance"), m_frame->lanes[std::size_t(reference)].integrator)
-                    .arg(lane.divergence, 0, 'g', 3);
+        html += QStringLiteral("<br>") + tr("distance from %1: %2 m (RMS)")
+                                              .arg(m_frame->lanes[std::size_t(reference)].integrator)
+                                              .arg(num(lane.divergence, 'g', 3));
     if (lane.failure)
         html += QStringLiteral("<br><span style='background:#c0392b; color:white'>&nbsp;%1&nbsp;</span>")
                     .arg(tr("Blew up at t = %1 s: %2")

@@ -14,6 +14,9 @@
 // once) selects the particle under the cursor: its free-body diagram, one arrow per force part
 // from the particle and the total, and a panel of their magnitudes (frames carry the
 // breakdown, the worker computes it). A click away from the body clears it.
+//
+// Keyboard (with focus, shown by a frame): arrow keys and Page Up/Down choose a particle (its
+// forces as for a click), Enter grabs it and the arrows drag it, Enter or Escape let go.
 
 #include <array>
 #include <memory>
@@ -29,6 +32,7 @@
 #include "ui/frame.h"
 #include "ui/view_options.h"
 
+class QFrame;
 class QLabel;
 
 namespace elui {
@@ -70,6 +74,9 @@ public:
     QString rulerText() const;
     QString overlayText() const;  // the text over the view (title, time, distance, failure)
 
+    // High contrast (View menu): black background, white structural springs, yellow focus frame.
+    void setHighContrast(bool on);
+
 public slots:
     void showFrame(const elui::FramePtr& frame);
     void resetView();
@@ -84,6 +91,8 @@ signals:
     // A right click (no drag) at a global position, on a particle (its index) or not (-1).
     void contextRequested(const QPoint& globalPosition, int particle);
     void cameraChanged(const elui::Camera& camera);
+    // The keyboard chose a particle (arrow keys, Page Up/Down), or none (-1, Escape).
+    void particleSelected(int particle);
 
 protected:
     void initializeGL() override;
@@ -93,6 +102,9 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
 
 private:
@@ -122,6 +134,8 @@ private:
     QVector3D onViewPlane(const QPointF& pixel) const;
     void updateForcesPanel(const LaneFrame& lane);
     QVector3D anchorUnder(const QPointF& pixel) const;
+    QPointF pixelOf(int particle) const;  // where a particle of the shown lane is drawn
+    void resizeEventFrame();
 
     FramePtr m_frame;
     std::shared_ptr<const SceneData> m_uploadedScene;
@@ -162,6 +176,11 @@ private:
     bool m_grabbed = false;
     QVector3D m_planePoint;   // the drag plane passes through here, facing the camera
     QVector3D m_planeNormal;
+
+    // Keyboard (issue 30): the particle chosen with the arrow keys (-1: none), the focus frame.
+    int m_keyboardParticle = -1;
+    QFrame* m_focusFrame = nullptr;
+    bool m_highContrast = false;
 };
 
 }  // namespace elui

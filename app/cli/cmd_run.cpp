@@ -13,6 +13,7 @@
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simlab/output.h"
+#include "simlab/timeseries.h"
 
 namespace cli {
 
@@ -123,7 +124,9 @@ struct RunArgs {
     double duration = 5.0;
     long every = 1;
     double maxSteps = kMaxSteps;
-    std::string csv, state, saveScene;
+    std::string csv, state, saveScene, xlsx;
+    std::string dialectName = "plain";
+    simlab::CsvDialect dialect = simlab::CsvDialect::Plain;  // after check()
     std::string precision = "double";
     bool quiet = false, json = false;
     simcore::IntegratorOptions integrator;
@@ -131,8 +134,11 @@ struct RunArgs {
 };
 
 void checkRun(RunArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"state", args.state},
-                        {"save-scene", args.saveScene}});
+    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"xlsx", args.xlsx},
+                        {"state", args.state}, {"save-scene", args.saveScene}});
+    const auto dialect = simlab::csvDialectNamed(args.dialectName);
+    if (!dialect) throw UsageError("--csv-dialect: " + simlab::unknownCsvDialectMessage(args.dialectName));
+    args.dialect = *dialect;
     args.setup = sceneSetup(args.scene);
     if (args.precision == "float" && !simcore::floatPathSupports(args.setup.integrator))
         throw UsageError("--precision float is built for the explicit integrators " + simcore::floatPathIntegrators() +
@@ -150,6 +156,19 @@ void checkRun(RunArgs& args) {
                           args.duration, dt, steps, args.maxSteps);
             throw UsageError(text);
         }
+        // A workbook's sheet has room for 1048575 rows of data: the start, every N-th step and
+        // the last must fit, or the run is refused before it starts (an adaptive run that
+        // outgrows the sheet is told at the end, its CSV still written).
+        const double rows = std::floor(steps / static_cast<double>(args.every)) + 2;
+        if (!args.xlsx.empty() && rows > static_cast<double>(simlab::kXlsxMaxDataRows)) {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "--xlsx: %.0f rows (%.0f steps, a row every %ld) do not fit a sheet of %ld rows; use "
+                          "--every %.0f or more",
+                          rows, steps, args.every, simlab::kXlsxMaxDataRows,
+                          std::ceil(steps / static_cast<double>(simlab::kXlsxMaxDataRows - 2)));
+            throw UsageError(text);
+        }
     }
 }
 
@@ -158,8 +177,8 @@ int run(const RunArgs& args) {
     const double duration = args.duration;
     const long every = args.every;
     // Open every output before running: an unwritable path is bad input, found at once.
-    std::unique_ptr<simlab::AtomicFile> csv, state, sceneOut;
-    for (auto [path, file] : {std::pair{&args.csv, &csv}, {&args.state, &state}, {&args.saveScene, &sceneOut}}) {
+    std::unique_ptr<simlab::AtomicFile> state, sceneOut;
+    for (auto [path, file] : {std::pair{&args.state, &state}, {&args.saveScene, &sceneOut}}) {
         if (path->empty()) continue;
         *file = std::make_unique<simlab::AtomicFile>(*path);
         if (!(*file)->ok()) throw UsageError((*file)->error());
@@ -180,11 +199,12 @@ int run(const RunArgs& args) {
     auto stepCount = [&] { return single ? single->stepCount() : sim.stepCount(); };
     auto failed = [&] { return single ? single->failed() : sim.failed(); };
 
-    const auto columns = simlab::timeSeriesColumns(setup.params.kind(), diagnostics().hasSolverCounters);
-    if (csv) {
-        csv->write(simlab::csvHeader(columns));
-        csv->write(simlab::csvRow(columns, diagnostics()));
-    }
+    simlab::TimeSeriesWriter series(setup.params.kind(),
+                                     simlab::timeSeriesColumns(setup.params.kind(), diagnostics().hasSolverCounters),
+                                     {args.csv, args.dialect, args.xlsx});
+    if (!series.ok()) throw UsageError(series.error());
+    const bool recording = !args.csv.empty() || !args.xlsx.empty();
+    if (recording) series.add(diagnostics());
     const auto start = std::chrono::steady_clock::now();
     const double tEnd = time() + duration;  // a resumed run continues from its saved time
     // An adaptive method chooses its own steps: the same bound holds while it runs (a
@@ -194,7 +214,7 @@ int run(const RunArgs& args) {
     while (time() < tEnd - 1e-9 * sim.dt()) {
         if (!(single ? single->step() : sim.step(tEnd))) break;
         const bool last = time() >= tEnd - 1e-9 * sim.dt();
-        if (csv && (stepCount() % every == 0 || last)) csv->write(simlab::csvRow(columns, diagnostics()));
+        if (recording && (stepCount() % every == 0 || last)) series.add(diagnostics());
         if (static_cast<double>(stepCount() - firstStep) >= args.maxSteps && !last) {
             tooManySteps = true;
             break;
@@ -209,10 +229,14 @@ int run(const RunArgs& args) {
         sim.setState(Eigen::Map<const Eigen::Matrix3Xd>(y.data(), 3, n), Eigen::Map<const Eigen::Matrix3Xd>(y.data() + 3 * n, 3, n),
                      single->stepCount(), single->time());
     }
-    if (state) state->write(simlab::stateTable(sim));
+    if (state) state->write(simlab::inDialect(simlab::stateTable(sim), args.dialect, true));
     if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
 
-    for (auto* file : {csv.get(), state.get(), sceneOut.get()})
+    if (!series.commit()) {
+        std::fprintf(stderr, "error: %s\n", series.error().c_str());
+        return kExitBadInput;
+    }
+    for (auto* file : {state.get(), sceneOut.get()})
         if (file && !file->commit()) {
             std::fprintf(stderr, "error: %s\n", file->error().c_str());
             return kExitBadInput;
@@ -256,7 +280,15 @@ Command addRunCommand(CLI::App& app) {
         ->check(finiteIn(0.0, 1e7, true))
         ->capture_default_str();
     addCsvOption(*sub, args->csv, "write the time series (one row per --every steps and the last)");
-    sub->add_option("--every", args->every, "CSV row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
+    sub->add_option("--xlsx", args->xlsx, "write the time series as an .xlsx workbook: the table with units on one "
+                                          "sheet, charts of energy, volume and pressure against t on another")
+        ->type_name("FILE.xlsx");
+    sub->add_option("--csv-dialect", args->dialectName, "how --csv and --state are spelled: plain (comma, decimal point) "
+                                                        "or excel-semicolon (semicolon, decimal comma, CRLF, UTF-8 "
+                                                        "byte-order mark, for spreadsheets in decimal-comma locales)")
+        ->type_name("NAME")
+        ->capture_default_str();
+    sub->add_option("--every", args->every, "CSV and .xlsx row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
     sub->add_option("--state", args->state, "write the final state: index, layer, position, velocity")->type_name("FILE");
     sub->add_option("--save-scene", args->saveScene, "save the experiment with its final state as a scene file")
         ->type_name("FILE.json");

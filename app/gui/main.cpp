@@ -1,17 +1,20 @@
 // elastic-lab: the GUI.
 //
-//   elastic-lab [--scene S|FILE.json] [--set key=value]... [--integrator NAME] [--compare A,B,C]
+//   elastic-lab [FILE.json | --scene S|FILE.json] [--set key=value]... [--integrator NAME] [--compare A,B,C]
 //               [--preset ID | --lesson ID] [--experiments] [--docks LIST]
 //               [--screenshot FILE --after SECONDS [--travel-back SECONDS [--branch key=value]]]
 //
-// --screenshot runs (as fast as possible) to the given simulated time, renders the main
+// A scene file may also be given alone (the desktop entry's Exec=elastic-lab %f, a file manager's
+// "Open with"). --screenshot runs (as fast as possible) to the given simulated time, renders the main
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 #include <cmath>
 
@@ -22,6 +25,8 @@
 #include <QImageWriter>
 #include <QElapsedTimer>
 #include <QIcon>
+#include <QLocale>
+#include <QSettings>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -36,6 +41,7 @@
 #include "simlab/scenefile.h"
 #include "ui/export.h"
 #include "ui/gl_format.h"
+#include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/lesson_dock.h"
 #include "ui/lessons_dialog.h"
@@ -60,6 +66,37 @@ QString quoted(const QString& value, std::size_t limit = 40) {
     return QString::fromStdString(simcore::quoteShort(value.toStdString(), limit));
 }
 
+// Started where no window can be shown (no DISPLAY nor WAYLAND_DISPLAY, a display that refuses
+// the connection, no platform plugin), Qt ends in a fatal message of several lines whose advice
+// ("Reinstalling the application may fix this problem") is wrong. Qt's messages are held while
+// the application starts: on the fatal one a single line says what to do, exit 2 (bad input, as
+// for every refusal); when the start succeeds, the held messages are printed as Qt would have.
+QStringList g_heldMessages;
+void startupMessageHandler(QtMsgType type, const QMessageLogContext&, const QString& message) {
+    if (type != QtFatalMsg) {
+        g_heldMessages << message;
+        return;
+    }
+    const QByteArray display = qgetenv("DISPLAY"), wayland = qgetenv("WAYLAND_DISPLAY");
+    const QString where = display.isEmpty() && wayland.isEmpty()
+                              ? QStringLiteral("DISPLAY and WAYLAND_DISPLAY are not set")
+                              : QStringLiteral("display '%1' cannot be reached")
+                                    .arg(QString::fromLocal8Bit(display.isEmpty() ? wayland : display));
+    std::fprintf(stderr,
+                 "elastic-lab: no display to open the window on (%s); start it from a desktop session, or without "
+                 "a screen as xvfb-run -a elastic-lab ..., or use elastic-lab-cli for headless runs\n",
+                 qPrintable(where));
+    std::fflush(stderr);
+    std::_Exit(2);
+}
+
+// "en, de, fr, es, ar": the languages built in.
+QString languageCodes() {
+    QStringList codes;
+    for (const elui::Language& l : elui::languages()) codes << l.code;
+    return codes.join(QStringLiteral(", "));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -75,7 +112,10 @@ int main(int argc, char** argv) {
             !qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
             qputenv("QT_QPA_PLATFORM", "offscreen");
     }
+    const QtMessageHandler qtHandler = qInstallMessageHandler(startupMessageHandler);
     QApplication app(argc, argv);
+    qInstallMessageHandler(qtHandler);
+    for (const QString& message : std::exchange(g_heldMessages, {})) std::fprintf(stderr, "%s\n", qPrintable(message));
     QApplication::setOrganizationName(QStringLiteral("ElasticLab"));
     QApplication::setApplicationName(QStringLiteral("elastic-lab"));
     QApplication::setApplicationVersion(QString::fromLatin1(elastic_lab::kVersion));
@@ -89,6 +129,9 @@ int main(int argc, char** argv) {
     parser.setApplicationDescription(QStringLiteral("Elastic Lab: two-layer elastic bodies, for teaching."));
     parser.addHelpOption();
     parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("FILE.json"),
+                                 QStringLiteral("A scene file to open (as --scene FILE.json; what the desktop entry passes)."),
+                                 QStringLiteral("[FILE.json]"));
     const QCommandLineOption sceneOpt(QStringLiteral("scene"), QStringLiteral("Scene: %1, or a scene file (.json).").arg(elui::toQString(simcore::sceneNames())),
                                       QStringLiteral("S"), QStringLiteral("ring2d"));
     const QCommandLineOption setOpt(QStringLiteral("set"), QStringLiteral("Set a parameter (repeatable)."),
@@ -137,23 +180,44 @@ int main(int argc, char** argv) {
                                        QStringLiteral("With --travel-back: branch there with key=value (a parameter, or "
                                                       "integrator=NAME), run on to --after and travel back again."),
                                        QStringLiteral("key=value"));
+    const QCommandLineOption contrastOpt(QStringLiteral("high-contrast"),
+                                         QStringLiteral("Start in high contrast (View > High contrast): white on black, "
+                                                        "yellow focus."));
+    const QCommandLineOption langOpt(QStringLiteral("lang"),
+                                     QStringLiteral("The language of the window: %1 (View > Language; without it, the one "
+                                                    "chosen there, else the system's).")
+                                         .arg(languageCodes()),
+                                     QStringLiteral("CODE"));
     const QCommandLineOption scaleOpt(QStringLiteral("ui-scale"),
                                       QStringLiteral("Presentation mode at start: every text SCALE times larger (1 to 2; "
                                                      "View > Presentation mode, Ctrl+= / Ctrl+-)."),
                                       QStringLiteral("SCALE"));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt,
-                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, scaleOpt});
+                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, scaleOpt, contrastOpt, langOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
     if (parser.isSet(QStringLiteral("version"))) parser.showVersion();
-    if (!parser.positionalArguments().isEmpty())
-        return fail(QStringLiteral("unexpected argument %1; elastic-lab --help lists the options")
-                        .arg(quoted(parser.positionalArguments().front())));
+    // The language before any widget or translated text is made (ui/language.h): --lang, else
+    // View > Language's choice (not for screenshots, which keep no settings), else the system's.
+    const QString lang = parser.value(langOpt);
+    if (!lang.isEmpty() && !elui::isLanguage(lang))
+        return fail(QStringLiteral("--lang %1 is not one of %2").arg(quoted(lang), languageCodes()));
+    elui::applyLanguage(elui::chooseLanguage(
+        lang, parser.isSet(shotOpt) ? QString() : QSettings().value(QStringLiteral("language")).toString(),
+        QLocale::system().uiLanguages()));
+    // One scene, given alone (a file from the desktop) or by --scene, not both.
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() > 1)
+        return fail(QStringLiteral("unexpected argument %1: one scene file at most; elastic-lab --help lists the options")
+                        .arg(quoted(positional.at(1))));
+    if (!positional.isEmpty() && parser.isSet(sceneOpt))
+        return fail(QStringLiteral("%1 and --scene both choose the scene; give one").arg(quoted(positional.front())));
+    const bool sceneGiven = parser.isSet(sceneOpt) || !positional.isEmpty();
     // A value-taking option given twice would silently lose one of the values.
     for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &lessonOpt, &shotOpt, &afterOpt,
                                            &optionsOpt, &docksOpt, &fpsOpt, &travelOpt, &branchOpt,
-                                           &selectOpt, &scaleOpt})
+                                           &selectOpt, &scaleOpt, &langOpt})
         if (parser.values(*once).size() > 1)
             return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
     if (parser.isSet(afterOpt) && !parser.isSet(shotOpt))
@@ -177,10 +241,11 @@ int main(int argc, char** argv) {
     }
     // --scene takes a scene name or a scene file (.json), as the CLI does; --set, --integrator
     // and --compare override what the file holds.
-    const QString sceneArg = parser.value(sceneOpt);
+    const QString sceneArg = positional.isEmpty() ? parser.value(sceneOpt) : positional.front();
     const simcore::SceneInfo* scene = simcore::findScene(sceneArg.toStdString());
     std::optional<simlab::SceneFile> file;
-    if (!scene && sceneArg.endsWith(QLatin1String(".json"))) {
+    // A file manager may hand over a scene file by any name: an existing file is read as one.
+    if (!scene && (sceneArg.endsWith(QLatin1String(".json")) || QFileInfo(sceneArg).isFile())) {
         simlab::SceneFileResult read = simlab::readSceneFile(sceneArg.toStdString());
         if (!read.file) return fail(QString::fromStdString(read.error));
         file = std::move(read.file);
@@ -190,7 +255,7 @@ int main(int argc, char** argv) {
         return fail(QString::fromStdString(simcore::unknownSceneMessage(sceneArg.toStdString())) +
                     QStringLiteral(", or a scene file (.json)"));
     simcore::ParameterSet params = file                                 ? file->params
-                                   : preset && !parser.isSet(sceneOpt) ? preset->parameters()
+                                   : preset && !sceneGiven ? preset->parameters()
                                                                        : simcore::ParameterSet(scene->kind);
     for (const QString& assignment : parser.values(setOpt))
         if (auto error = params.assign(assignment.toStdString())) return fail(QStringLiteral("--set ") + QString::fromStdString(*error));
@@ -306,6 +371,7 @@ int main(int argc, char** argv) {
         elui::Viewport::setSamples(0);
     }
     elui::MainWindow window(!screenshot);
+    if (parser.isSet(contrastOpt)) window.setHighContrast(true);
     if (uiScale != 1.0) window.setUiScale(uiScale);
     if (parser.isSet(optionsOpt)) {
         elui::ViewOptions o = window.viewOptions();
