@@ -6,12 +6,15 @@
 
 #include "cli_process.h"
 
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QTemporaryDir>
 
 #include <cmath>
 #include <csignal>
 
+#include "simcore/parallel.h"
 #include "simcore/params.h"
 #include "simcore/scenes.h"
 
@@ -170,13 +173,15 @@ private slots:
         const QStringList lines = r.out.trimmed().split('\n');
         QCOMPARE(lines.size(), 2);
         const QStringList header = lines[0].split(','), row = lines[1].split(',');
-        QCOMPARE(header, (QStringList{"scene", "integrator", "threads", "particles", "springs", "faces", "steps",
-                                      "us_per_step", "ns_per_spring_eval", "steps_per_second", "real_time_factor",
-                                      "build_seconds", "peak_rss_mib", "kernels"}));
+        QCOMPARE(header, (QStringList{"scene", "integrator", "precision", "threads", "particles", "springs", "faces",
+                                      "steps", "us_per_step", "ns_per_spring_eval", "steps_per_second",
+                                      "real_time_factor", "build_seconds", "peak_rss_mib", "state_hash", "kernels"}));
         QCOMPARE(row.size(), header.size());
         auto at = [&](const char* column) { return row[header.indexOf(column)]; };
         QCOMPARE(at("scene"), QString("sphere3d"));
         QCOMPARE(at("integrator"), QString("verlet"));
+        QCOMPARE(at("precision"), QString("double"));
+        QCOMPARE(at("state_hash").size(), 16);
         // Level 2: 2 x 66 particles, 834 springs, 2 x 128 triangles; one chunk below 8,192
         // springs, so a second thread is not started.
         QCOMPARE(at("particles"), QString("132"));
@@ -193,11 +198,70 @@ private slots:
         // Asking for more than the CPU has falls back; never wider than asked.
         if (!kernels.isEmpty()) QVERIFY(sets.indexOf(at("kernels")) <= sets.indexOf(kernels));
     }
+    // bench's state_hash fingerprints the final state: the same for 1 and 2 threads (a body
+    // of two chunks, level 4, so that the second thread does work), and different when the
+    // trajectory changes (one step more, or another DT). The default thread counts are 1 and
+    // all CPUs this process may use.
+    void benchHashFollowsTheTrajectory() {
+        auto rows = [&](QStringList extra) {
+            QStringList args{"bench", "--scene", "sphere3d", "--set", "subdivisions=4", "--set", "perturb=0.01",
+                             "--warmup", "2", "--header"};
+            const Result r = cli(args + extra);
+            if (r.code != 0) qWarning("%s", qPrintable(r.err));
+            const QStringList lines = r.out.trimmed().split('\n');
+            const QStringList header = lines[0].split(',');
+            QList<QPair<QString, QString>> out;  // (threads, hash) per row
+            for (qsizetype k = 1; k < lines.size(); ++k) {
+                const QStringList row = lines[k].split(',');
+                out.append({row[header.indexOf("threads")], row[header.indexOf("state_hash")]});
+            }
+            return out;
+        };
+        const auto both = rows({"--steps", "12", "--threads", "1,2"});
+        QCOMPARE(both.size(), 2);
+        QCOMPARE(both[0].first, QString("1"));
+        QCOMPARE(both[1].first, QString("2"));
+        QCOMPARE(both[0].second, both[1].second);
+        QCOMPARE(rows({"--steps", "12", "--threads", "2"})[0].second, both[0].second);  // warm-up and steps only
+        QVERIFY(rows({"--steps", "13", "--threads", "1"})[0].second != both[0].second);
+        QVERIFY(rows({"--steps", "12", "--threads", "1", "--dt", "0.0029"})[0].second != both[0].second);
+        const auto byDefault = rows({"--steps", "1"});
+        QCOMPARE(byDefault.size(), simcore::availableThreads() > 1 ? 2 : 1);
+        QCOMPARE(byDefault[0].first, QString("1"));
+    }
+    // run and bench --precision float (issue 27): the float path runs, says so, writes its
+    // state, agrees with double to a float tolerance, and is refused for a method without a
+    // float build (and by bench for --stages).
+    void precisionFloat() {
+        const QStringList scene{"--scene", "ring2d", "--set", "gravity=0", "--set", "perturb=0.01", "--duration", "0.3"};
+        const Result f = cli(QStringList{"run", "--precision", "float", "--json"} + scene);
+        QCOMPARE(f.code, 0);
+        const Result d = cli(QStringList{"run", "--json"} + scene);
+        QCOMPARE(d.code, 0);
+        const QJsonObject fj = QJsonDocument::fromJson(f.out.toUtf8()).object(), dj = QJsonDocument::fromJson(d.out.toUtf8()).object();
+        QCOMPARE(fj["precision"].toString(), QString("float"));
+        QCOMPARE(dj["precision"].toString(), QString("double"));
+        QCOMPARE(fj["steps"].toInt(), dj["steps"].toInt());
+        const double ef = fj["energy"].toObject()["total"].toDouble(), ed = dj["energy"].toObject()["total"].toDouble();
+        QVERIFY2(std::abs(ef - ed) < 1e-4 * std::abs(ed) && ef != ed, qPrintable(QString("%1 vs %2").arg(ef).arg(ed)));
+        const QString state = path("float-state.csv");
+        QCOMPARE(cli(QStringList{"run", "--precision", "float", "--quiet", "--state", state} + scene).code, 0);
+        QVERIFY(readCsv(state).size() > 1);
+        const Result refused = cli(QStringList{"run", "--precision", "float", "--integrator", "implicit-euler"} + scene);
+        QCOMPARE(refused.code, 2);
+        QVERIFY2(refused.err.contains("explicit integrators"), qPrintable(refused.err));
+        QCOMPARE(cli({"bench", "--scene", "ring2d", "--precision", "float", "--stages", "--steps", "3"}).code, 2);
+        const Result bench = cli({"bench", "--scene", "ring2d", "--set", "gravity=0", "--precision", "float", "--steps", "3",
+                                  "--threads", "1", "--header"});
+        QCOMPARE(bench.code, 0);
+        const QStringList lines = bench.out.trimmed().split('\n');
+        QCOMPARE(lines[1].split(',')[lines[0].split(',').indexOf("precision")], QString("float"));
+    }
     // bench --stages: one column per stage of the step (simulation.h's order) after the
     // others; each stage's time lies inside its step, so they add up to no more than the step.
     void benchTimesTheStages() {
         const Result r = cli({"bench", "--scene", "ring2d", "--set", "contact=projection", "--steps", "300",
-                              "--integrator", "rk4", "--header", "--stages"});
+                              "--integrator", "rk4", "--header", "--stages", "--threads", "1"});
         QCOMPARE(r.code, 0);
         const QStringList lines = r.out.trimmed().split('\n');
         QCOMPARE(lines.size(), 2);

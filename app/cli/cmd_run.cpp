@@ -3,10 +3,13 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli/cli.h"
+#include "simcore/float_path.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simlab/output.h"
@@ -16,19 +19,39 @@ namespace cli {
 
 namespace {
 
-void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, double wallSeconds) {
-    const simcore::Diagnostics& d = sim.diagnostics();
-    const simcore::Topology& topo = sim.topology();
+// What the summary reads of a finished run, in double or on the float path.
+struct RunView {
+    const simcore::Diagnostics& d;
+    const simcore::Topology& topology;
+    std::string integrator;
+    double dt;
+    bool contactProjection;
+    const std::optional<simcore::Failure>& failure;
+    std::string precision;
+};
+
+RunView viewOf(const simcore::Simulation& sim) {
+    return {sim.diagnostics(), sim.topology(), std::string(sim.integrator().name()), sim.dt(),
+            sim.contactProjection(), sim.failure(), "double"};
+}
+RunView viewOf(const simcore::FloatSimulation& single) {
+    return {single.diagnostics(), single.topology(), std::string(single.integrator()), single.dt(), false,
+            single.failure(), "float"};
+}
+
+void printSummary(const RunView& sim, const SceneSetup& setup, double wallSeconds) {
+    const simcore::Diagnostics& d = sim.d;
+    const simcore::Topology& topo = sim.topology;
     std::printf("scene        %s (%d particles, %zu springs, %zu surfaces)\n", setup.sceneName.c_str(),
                 topo.particleCount(), topo.springCount(), topo.surfaces.size());
-    std::printf("integrator   %s, dt %g s, %ld steps, t = %g s\n",
-                std::string(sim.integrator().name()).c_str(), sim.dt(), d.step, d.time);
+    std::printf("integrator   %s, dt %g s, %ld steps, t = %g s%s\n", sim.integrator.c_str(), sim.dt, d.step, d.time,
+                sim.precision == "float" ? ", precision float" : "");
     std::printf("energy       kinetic %.6g J, spring %.6g J, gravity %.6g J", d.kinetic,
                 d.springTotal(), d.gravity);
     if (d.hasGas) std::printf(", gas %.6g J", d.gas);
-    if (!sim.contactProjection()) std::printf(", contact %.6g J", d.contact);
+    if (!sim.contactProjection) std::printf(", contact %.6g J", d.contact);
     std::printf(", total %.6g J\n", d.total());
-    if (sim.contactProjection())
+    if (sim.contactProjection)
         std::printf("removed      damping %.6g J, collisions (projection) %.6g J; balance drift %.3g J\n",
                     d.removedDamping, d.removedCollisions, d.energyDrift());
     else
@@ -54,28 +77,29 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
 
 // --json: the summary as one JSON object (SI units, as the text's), whatever the run's end:
 // "status" is ok, failed (with "failure": reason, step, time) or stopped (--max-steps).
-void printSummaryJson(const simcore::Simulation& sim, const SceneSetup& setup, double wallSeconds, const std::string& status) {
-    const simcore::Diagnostics& d = sim.diagnostics();
-    const simcore::Topology& topo = sim.topology();
+void printSummaryJson(const RunView& sim, const SceneSetup& setup, double wallSeconds, const std::string& status) {
+    const simcore::Diagnostics& d = sim.d;
+    const simcore::Topology& topo = sim.topology;
     nlohmann::ordered_json j = {
         {"scene", setup.sceneName},
         {"particles", topo.particleCount()},
         {"springs", topo.springCount()},
         {"surfaces", topo.surfaces.size()},
-        {"integrator", sim.integrator().name()},
-        {"dt", sim.dt()},
+        {"integrator", sim.integrator},
+        {"precision", sim.precision},
+        {"dt", sim.dt},
         {"steps", d.step},
         {"t", d.time},
         {"status", status},
     };
-    if (sim.failure())
-        j["failure"] = {{"reason", sim.failure()->reason}, {"step", sim.failure()->step}, {"time", sim.failure()->time}};
+    if (sim.failure)
+        j["failure"] = {{"reason", sim.failure->reason}, {"step", sim.failure->step}, {"time", sim.failure->time}};
     nlohmann::ordered_json energy = {{"kinetic", d.kinetic}, {"spring", d.springTotal()}, {"gravity", d.gravity}};
     if (d.hasGas) energy["gas"] = d.gas;
-    if (!sim.contactProjection()) energy["contact"] = d.contact;
+    if (!sim.contactProjection) energy["contact"] = d.contact;
     energy["total"] = d.total();
     j["energy"] = energy;
-    j["removed"] = sim.contactProjection()
+    j["removed"] = sim.contactProjection
                        ? nlohmann::ordered_json{{"damping", d.removedDamping}, {"collisions", d.removedCollisions}}
                        : nlohmann::ordered_json{{"damping", d.removedDamping}, {"contact", d.removedContact}};
     j["energy_drift"] = d.energyDrift();
@@ -103,6 +127,7 @@ struct RunArgs {
     std::string csv, state, saveScene, xlsx;
     std::string dialectName = "plain";
     simlab::CsvDialect dialect = simlab::CsvDialect::Plain;  // after check()
+    std::string precision = "double";
     bool quiet = false, json = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
@@ -115,6 +140,9 @@ void checkRun(RunArgs& args) {
     if (!dialect) throw UsageError("--csv-dialect: " + simlab::unknownCsvDialectMessage(args.dialectName));
     args.dialect = *dialect;
     args.setup = sceneSetup(args.scene);
+    if (args.precision == "float" && !simcore::floatPathSupports(args.setup.integrator))
+        throw UsageError("--precision float is built for the explicit integrators " + simcore::floatPathIntegrators() +
+                         ", not " + args.setup.integrator);
     // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
     // refused at once instead of running for ever.
     if (!simcore::makeIntegrator(args.setup.integrator)->adaptive() || args.integrator.fixedStep) {
@@ -163,28 +191,44 @@ int run(const RunArgs& args) {
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
+    // --precision float: the float path from this state (float_path.h), stepped instead.
+    std::unique_ptr<simcore::FloatSimulation> single;
+    if (args.precision == "float") single = std::make_unique<simcore::FloatSimulation>(sim);
+    auto diagnostics = [&]() -> const simcore::Diagnostics& { return single ? single->diagnostics() : sim.diagnostics(); };
+    auto time = [&] { return single ? single->time() : sim.time(); };
+    auto stepCount = [&] { return single ? single->stepCount() : sim.stepCount(); };
+    auto failed = [&] { return single ? single->failed() : sim.failed(); };
+
     simlab::TimeSeriesWriter series(setup.params.kind(),
-                                     simlab::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters),
+                                     simlab::timeSeriesColumns(setup.params.kind(), diagnostics().hasSolverCounters),
                                      {args.csv, args.dialect, args.xlsx});
     if (!series.ok()) throw UsageError(series.error());
     const bool recording = !args.csv.empty() || !args.xlsx.empty();
-    if (recording) series.add(sim.diagnostics());
+    if (recording) series.add(diagnostics());
     const auto start = std::chrono::steady_clock::now();
-    const double tEnd = sim.time() + duration;  // a resumed run continues from its saved time
+    const double tEnd = time() + duration;  // a resumed run continues from its saved time
     // An adaptive method chooses its own steps: the same bound holds while it runs (a
     // tolerance it cannot meet ends the run, exit 3, instead of creeping on for ever).
-    const long firstStep = sim.stepCount();
+    const long firstStep = stepCount();
     bool tooManySteps = false;
-    while (sim.time() < tEnd - 1e-9 * sim.dt()) {
-        if (!sim.step(tEnd)) break;
-        const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
-        if (recording && (sim.stepCount() % every == 0 || last)) series.add(sim.diagnostics());
-        if (static_cast<double>(sim.stepCount() - firstStep) >= args.maxSteps && !last) {
+    while (time() < tEnd - 1e-9 * sim.dt()) {
+        if (!(single ? single->step() : sim.step(tEnd))) break;
+        const bool last = time() >= tEnd - 1e-9 * sim.dt();
+        if (recording && (stepCount() % every == 0 || last)) series.add(diagnostics());
+        if (static_cast<double>(stepCount() - firstStep) >= args.maxSteps && !last) {
             tooManySteps = true;
             break;
         }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (single) {
+        // The state table and the scene file from the float state, in double (a saved scene
+        // resumes on the double path unless run again with --precision float).
+        const Eigen::VectorXd y = single->state();
+        const auto n = static_cast<Eigen::Index>(single->topology().particleCount());
+        sim.setState(Eigen::Map<const Eigen::Matrix3Xd>(y.data(), 3, n), Eigen::Map<const Eigen::Matrix3Xd>(y.data() + 3 * n, 3, n),
+                     single->stepCount(), single->time());
+    }
     if (state) state->write(simlab::inDialect(simlab::stateTable(sim), args.dialect, true));
     if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
 
@@ -197,25 +241,26 @@ int run(const RunArgs& args) {
             std::fprintf(stderr, "error: %s\n", file->error().c_str());
             return kExitBadInput;
         }
+    const RunView view = single ? viewOf(*single) : viewOf(sim);
     if (args.json)
-        printSummaryJson(sim, setup, wall, sim.failed() ? "failed" : tooManySteps ? "stopped" : "ok");
+        printSummaryJson(view, setup, wall, failed() ? "failed" : tooManySteps ? "stopped" : "ok");
     else if (!args.quiet)
-        printSummary(sim, setup, wall);
+        printSummary(view, setup, wall);
     // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a
     // duration that is not a multiple of dt ends past it; it is said, never silent.
-    if (!sim.failed() && sim.time() > tEnd + 1e-9 * sim.dt())
+    if (!failed() && time() > tEnd + 1e-9 * sim.dt())
         std::fprintf(stderr,
                      "note: --duration %g s is not a multiple of dt %g s: the run took whole steps and ended at "
                      "t = %g s, %g s past the end asked for\n",
-                     duration, sim.dt(), sim.time(), sim.time() - tEnd);
+                     duration, sim.dt(), time(), time() - tEnd);
     if (tooManySteps) {
         std::fprintf(stderr, "run stopped at step %ld, t = %g s: %.0f steps taken, the most one run may take (--max-steps; "
                              "loosen --rtol/--atol or shorten --duration); the files hold the run so far\n",
-                     sim.stepCount(), sim.time(), args.maxSteps);
+                     stepCount(), time(), args.maxSteps);
         return kExitFailed;
     }
-    if (sim.failed()) {
-        const simcore::Failure& f = *sim.failure();
+    if (failed()) {
+        const simcore::Failure& f = *view.failure;
         std::fprintf(stderr, "simulation failed at step %ld, t = %g s: %s\n", f.step, f.time,
                      f.reason.c_str());
         return kExitFailed;
@@ -252,6 +297,11 @@ Command addRunCommand(CLI::App& app) {
         ->type_name("N")
         ->check(finiteIn(1.0, 1e12, false))
         ->default_str("1e9");
+    sub->add_option("--precision", args->precision,
+                    "double, or float: the float32 path (state and forces in float, diagnostics in double; euler, "
+                    "midpoint, rk4, symplectic-euler, verlet; no contact: the run stops where a particle reaches a wall)")
+        ->check(CLI::IsMember({"double", "float"}))
+        ->capture_default_str();
     sub->add_flag("--quiet", args->quiet, "no summary on standard output");
     addJsonFlag(*sub, args->json);
     addIntegratorOptions(*sub, args->integrator);

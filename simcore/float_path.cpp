@@ -1,0 +1,945 @@
+// The float32 path (float_path.h).
+//
+// One force evaluation, as the double path's ForceModel does it: the body's particles are
+// owned by kChunks fixed chunks (vertex k of each layer by chunk 0 when k < n/2), each chunk's
+// springs and faces join only its own particles, and the few joining two chunks are shared:
+//  1. each chunk (a task) clears its rows of the force and gradient buffers and adds its
+//     springs' forces F = [ks (L - L0) + kd (dv.u)] u (+F to the first end, -F to the second,
+//     spring by spring) and its faces' rows (b - a) x (c - a) (3D; (dy, -dx) in 2D) to each
+//     corner; its damping power kd (dv.u)^2 and volume terms x_a.((b - a) x (c - a))
+//     (= x_a.(x_b x x_c); 2D: the shoelace term) are summed in double lanes;
+//  2. (the caller) the shared springs and faces, then volumes and pressures from the sums, in
+//     chunk order;
+//  3. particles, in blocks: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the
+//     integrator's update of the particle's own rows.
+// Positions, velocities and forces are padded rows (x, y, z, 0) of 16 bytes, so that a
+// particle is one 128-bit load. With AVX2 springs and faces go eight at a time: the rows of
+// eight particles are transposed to columns in registers, the arithmetic runs eight wide,
+// operation for operation as the scalar code (no fused multiply-add: simcore builds with
+// -ffp-contract=off), and the results are added to the rows one spring or face at a time in
+// order, so that both give the same bits, and so do 1 and 2 threads (the split depends on the
+// body only).
+#include "simcore/float_path.h"
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "simcore/force_kernels.h"
+#include "simcore/forces.h"
+#include "simcore/parallel.h"
+
+// The AVX2 passes on x86-64 with GCC, unless the build asks for portable kernels only
+// (ELASTIC_LAB_PORTABLE_KERNELS: no x86 intrinsics, as for another architecture).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(ELASTIC_LAB_PORTABLE_KERNELS)
+#define SIMCORE_FLOAT_AVX2 1
+#include <immintrin.h>
+#endif
+
+namespace simcore {
+
+namespace {
+
+constexpr std::array<std::string_view, 5> kFloatIntegrators{"euler", "midpoint", "rk4", "symplectic-euler", "verlet"};
+constexpr int kParticleTask = 2048;        // particles per task
+// Springs and faces are taken in blocks of kStridedBlock with a stride of kStride (see the
+// constructor).
+constexpr std::size_t kStridedBlock = 128, kStride = 16;
+
+using F4 = float __attribute__((vector_size(16)));
+
+inline F4 row(const float* p, int i) {
+    F4 r;
+    std::memcpy(&r, p + 4 * static_cast<std::ptrdiff_t>(i), sizeof r);
+    return r;
+}
+inline void setRow(float* p, int i, F4 r) { std::memcpy(p + 4 * static_cast<std::ptrdiff_t>(i), &r, sizeof r); }
+inline F4 splat(float s) { return F4{s, s, s, s}; }
+
+// Eight lanes of double sums, added lane by lane (lane k % 8 for element k of a task) and
+// combined in lane order: the same order for the scalar and the eight-wide code.
+struct LaneSums {
+    std::array<double, 8> lane{};
+    double total() const {
+        double s = 0.0;
+        for (double l : lane) s += l;
+        return s;
+    }
+};
+
+struct SpringArrays {
+    std::vector<int> a, b;
+    std::vector<float> rest;
+    std::size_t size() const { return a.size(); }
+};
+
+inline void addRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) + r); }
+inline void subRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) - r); }
+
+// Edge quads of a two-layer body, as ForceModel's (force_kernels.h, QuadSet): for a mesh edge
+// (a, b) of the inner layer and its outer copy (A, B) = (a + n, b + n), the four springs over
+// the same four particles, one per lane: structural (a, b), structural (A, B), shear (A, b)
+// and shear (B, a). Evaluated together they load 4 particle rows instead of 8 and update 4
+// instead of 8.
+struct QuadArrays {
+    std::vector<int> a, b;
+    std::vector<float> rest;  // 4 per quad, in lane order
+    std::size_t size() const { return a.size(); }
+};
+
+// One quad, scalar: lane l's spring as springScalar, its power to lane ((q - base) % 2) * 4 + l;
+// the rows then updated in a fixed order: a += F0 - F3, b -= F0 + F2, A += F1 + F2,
+// B += F3 - F1.
+inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q, int n, const std::array<float, 4>& ks,
+                       const std::array<float, 4>& kd, const float* x, const float* v, float* f4, LaneSums& power) {
+    const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
+    const std::array<int, 4> first{a, A, A, B}, second{b, B, b, a};
+    std::array<F4, 4> force;
+    for (std::size_t l = 0; l < 4; ++l) {
+        const F4 d = row(x, second[l]) - row(x, first[l]), dv = row(v, second[l]) - row(v, first[l]);
+        const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
+        const float len = std::sqrt(len2);
+        const float inv = 1.0f / len;
+        const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
+        const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
+        const float mag = ks[l] * (len - quads.rest[4 * q + l]) + kd[l] * dvu;
+        const float p = kd[l] * dvu * dvu;
+        const bool ok = len >= static_cast<float>(kDegenerateLength);
+        force[l] = F4{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
+        power.lane[((q - base) % 2) * 4 + l] += static_cast<double>(ok ? p : 0.0f);
+    }
+    addRow(f4, a, force[0] - force[3]);
+    subRow(f4, b, force[0] + force[2]);
+    addRow(f4, A, force[1] + force[2]);
+    addRow(f4, B, force[3] - force[1]);
+}
+
+// One spring, scalar: the reference the eight-wide code follows operation by operation. Its
+// power goes to lane (k - base) % 8.
+inline void springScalar(const SpringArrays& s, std::size_t base, std::size_t k, float ks, float kd, const float* x,
+                         const float* v, float* f4, LaneSums& power) {
+    const F4 xa = row(x, s.a[k]), xb = row(x, s.b[k]), va = row(v, s.a[k]), vb = row(v, s.b[k]);
+    const F4 d = xb - xa, dv = vb - va;
+    const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
+    const float len = std::sqrt(len2);
+    const float inv = 1.0f / len;
+    const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
+    const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
+    const float mag = ks * (len - s.rest[k]) + kd * dvu;
+    const float p = kd * dvu * dvu;
+    const bool ok = len >= static_cast<float>(kDegenerateLength);
+    const F4 force{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
+    addRow(f4, s.a[k], force);
+    subRow(f4, s.b[k], force);
+    power.lane[(k - base) % 8] += static_cast<double>(ok ? p : 0.0f);
+}
+
+// One face, scalar: its row added to its corners, its volume term to lane (k - base) % 8.
+inline void faceScalar(const std::vector<std::array<int, 3>>& faces, int dimension, std::size_t base, std::size_t k,
+                       const float* x, float* g4, LaneSums& volume) {
+    const auto& f = faces[k];
+    const F4 xa = row(x, f[0]), xb = row(x, f[1]);
+    float term;
+    if (dimension == 2) {
+        const F4 d = xb - xa;
+        const F4 g{d[1], 0.0f - d[0], 0.0f, 0.0f};
+        term = xa[0] * xb[1] - xb[0] * xa[1];
+        addRow(g4, f[0], g);
+        addRow(g4, f[1], g);
+    } else {
+        const F4 xc = row(x, f[2]);
+        const F4 e = xb - xa, h = xc - xa;
+        const F4 g{e[1] * h[2] - e[2] * h[1], e[2] * h[0] - e[0] * h[2], e[0] * h[1] - e[1] * h[0], 0.0f};
+        term = (xa[0] * g[0] + xa[1] * g[1]) + xa[2] * g[2];
+        addRow(g4, f[0], g);
+        addRow(g4, f[1], g);
+        addRow(g4, f[2], g);
+    }
+    volume.lane[(k - base) % 8] += static_cast<double>(term);
+}
+
+#ifdef SIMCORE_FLOAT_AVX2
+#pragma GCC push_options
+#pragma GCC target("avx2")
+// The x, y, z columns of eight particles' rows (rows idx[0..7] of p).
+[[gnu::always_inline]] inline void columns8(const float* p, const int* idx, __m256& cx,
+                                                                  __m256& cy, __m256& cz) {
+    auto pair = [&](int k) {
+        return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k]))),
+                                    _mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k + 4])), 1);
+    };
+    const __m256 r0 = pair(0), r1 = pair(1), r2 = pair(2), r3 = pair(3);
+    const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
+    const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
+    cx = _mm256_shuffle_ps(t0, t2, 0x44);
+    cy = _mm256_shuffle_ps(t0, t2, 0xEE);
+    cz = _mm256_shuffle_ps(t1, t3, 0x44);
+}
+
+// Eight rows (x, y, z, 0) from three columns: rows[j] is lane j's.
+[[gnu::always_inline]] inline void rows8(__m256 cx, __m256 cy, __m256 cz, __m128* rows) {
+    const __m256 zero = _mm256_setzero_ps();
+    const __m256 t0 = _mm256_unpacklo_ps(cx, cy), t1 = _mm256_unpackhi_ps(cx, cy);
+    const __m256 t2 = _mm256_unpacklo_ps(cz, zero), t3 = _mm256_unpackhi_ps(cz, zero);
+    const __m256 r0 = _mm256_shuffle_ps(t0, t2, 0x44), r1 = _mm256_shuffle_ps(t0, t2, 0xEE);
+    const __m256 r2 = _mm256_shuffle_ps(t1, t3, 0x44), r3 = _mm256_shuffle_ps(t1, t3, 0xEE);
+    rows[0] = _mm256_castps256_ps128(r0);
+    rows[1] = _mm256_castps256_ps128(r1);
+    rows[2] = _mm256_castps256_ps128(r2);
+    rows[3] = _mm256_castps256_ps128(r3);
+    rows[4] = _mm256_extractf128_ps(r0, 1);
+    rows[5] = _mm256_extractf128_ps(r1, 1);
+    rows[6] = _mm256_extractf128_ps(r2, 1);
+    rows[7] = _mm256_extractf128_ps(r3, 1);
+}
+
+[[gnu::always_inline]] inline void addRow128(float* f4, int i, __m128 r) {
+    float* p = f4 + 4 * static_cast<std::ptrdiff_t>(i);
+    _mm_storeu_ps(p, _mm_add_ps(_mm_loadu_ps(p), r));
+}
+[[gnu::always_inline]] inline void subRow128(float* f4, int i, __m128 r) {
+    float* p = f4 + 4 * static_cast<std::ptrdiff_t>(i);
+    _mm_storeu_ps(p, _mm_sub_ps(_mm_loadu_ps(p), r));
+}
+
+// Eight double lanes in two registers, loaded from and stored back to LaneSums: lane l adds
+// its elements in the same order as the scalar code.
+struct LaneRegisters {
+    __m256d lo, hi;
+    explicit LaneRegisters(const LaneSums& sums)
+        : lo(_mm256_loadu_pd(sums.lane.data())), hi(_mm256_loadu_pd(sums.lane.data() + 4)) {}
+    void add(__m256 v) {
+        lo = _mm256_add_pd(lo, _mm256_cvtps_pd(_mm256_castps256_ps128(v)));
+        hi = _mm256_add_pd(hi, _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1)));
+    }
+    void store(LaneSums& sums) const {
+        _mm256_storeu_pd(sums.lane.data(), lo);
+        _mm256_storeu_pd(sums.lane.data() + 4, hi);
+    }
+};
+
+// Eight springs' forces (masked to 0 where degenerate) and damping powers from their end
+// differences d (positions) and w (velocities): the scalar springScalar's operations.
+struct Springs8 {
+    __m256 fx, fy, fz, power;
+};
+[[gnu::always_inline]] inline Springs8 springForces8(__m256 dx, __m256 dy, __m256 dz, __m256 wx, __m256 wy, __m256 wz,
+                                                     __m256 ks, __m256 kd, __m256 rest) {
+    const __m256 len2 =
+        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
+    const __m256 len = _mm256_sqrt_ps(len2);
+    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
+    const __m256 ux = _mm256_mul_ps(dx, inv), uy = _mm256_mul_ps(dy, inv), uz = _mm256_mul_ps(dz, inv);
+    const __m256 dvu =
+        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, ux), _mm256_mul_ps(wy, uy)), _mm256_mul_ps(wz, uz));
+    const __m256 ok = _mm256_cmp_ps(len, _mm256_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
+    const __m256 mag = _mm256_add_ps(_mm256_mul_ps(ks, _mm256_sub_ps(len, rest)), _mm256_mul_ps(kd, dvu));
+    return {_mm256_and_ps(ok, _mm256_mul_ps(mag, ux)), _mm256_and_ps(ok, _mm256_mul_ps(mag, uy)),
+            _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)), _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(kd, dvu), dvu))};
+}
+
+void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float ksScalar, float kdScalar,
+              const float* x, const float* v, float* f4, LaneSums& power) {
+    const __m256 ks = _mm256_set1_ps(ksScalar), kd = _mm256_set1_ps(kdScalar);
+    LaneRegisters sums(power);
+    std::size_t k = begin;
+    for (; k + 8 <= end; k += 8) {
+        const int* ia = s.a.data() + k;
+        const int* ib = s.b.data() + k;
+        __m256 xax, xay, xaz, xbx, xby, xbz, vax, vay, vaz, vbx, vby, vbz;
+        columns8(x, ia, xax, xay, xaz);
+        columns8(x, ib, xbx, xby, xbz);
+        columns8(v, ia, vax, vay, vaz);
+        columns8(v, ib, vbx, vby, vbz);
+        const __m256 dx = _mm256_sub_ps(xbx, xax), dy = _mm256_sub_ps(xby, xay), dz = _mm256_sub_ps(xbz, xaz);
+        const __m256 wx = _mm256_sub_ps(vbx, vax), wy = _mm256_sub_ps(vby, vay), wz = _mm256_sub_ps(vbz, vaz);
+        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, ks, kd, _mm256_loadu_ps(s.rest.data() + k));
+        __m128 rows[8];
+        rows8(f.fx, f.fy, f.fz, rows);
+        for (int j = 0; j < 8; ++j) {
+            addRow128(f4, ia[j], rows[j]);
+            subRow128(f4, ib[j], rows[j]);
+        }
+        sums.add(f.power);
+    }
+    sums.store(power);
+    for (; k < end; ++k) springScalar(s, begin, k, ksScalar, kdScalar, x, v, f4, power);
+}
+
+// Two quads at a time: lanes 0-3 the first quad's springs, 4-7 the second's.
+void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, const std::array<float, 4>& ks4,
+            const std::array<float, 4>& kd4, const float* x, const float* v, float* f4, LaneSums& power) {
+    const __m256 ks = _mm256_setr_ps(ks4[0], ks4[1], ks4[2], ks4[3], ks4[0], ks4[1], ks4[2], ks4[3]);
+    const __m256 kd = _mm256_setr_ps(kd4[0], kd4[1], kd4[2], kd4[3], kd4[0], kd4[1], kd4[2], kd4[3]);
+    // Lane 0 and 3 of each half subtract (a: F0 - F3, B: F3 - F1): x - y is x + (-y) exactly.
+    const __m256 flip = _mm256_castsi256_ps(_mm256_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN));
+    LaneRegisters sums(power);
+    // One group: quads q and q + 1; their particles in ids, their four row updates each in
+    // rows (a, b, A, B per quad).
+    struct Group {
+        int ids[8];
+        __m128 rows[8];
+        __m256 power;
+    };
+    auto compute = [&](std::size_t q, Group& g) {
+        const int at[8] = {quads.a[q], quads.b[q], quads.a[q] + n, quads.b[q] + n,
+                           quads.a[q + 1], quads.b[q + 1], quads.a[q + 1] + n, quads.b[q + 1] + n};
+        std::copy(at, at + 8, g.ids);
+        // Columns (a, b, A, B | a', b', A', B') of x and v.
+        __m256 X, Y, Z, VX, VY, VZ;
+        columns8(x, g.ids, X, Y, Z);
+        columns8(v, g.ids, VX, VY, VZ);
+        // First ends (a, A, A, B) = columns (0, 2, 2, 3); second ends (b, B, b, a) = (1, 3, 1, 0).
+        const __m256 dx = _mm256_sub_ps(_mm256_permute_ps(X, 0x1D), _mm256_permute_ps(X, 0xE8));
+        const __m256 dy = _mm256_sub_ps(_mm256_permute_ps(Y, 0x1D), _mm256_permute_ps(Y, 0xE8));
+        const __m256 dz = _mm256_sub_ps(_mm256_permute_ps(Z, 0x1D), _mm256_permute_ps(Z, 0xE8));
+        const __m256 wx = _mm256_sub_ps(_mm256_permute_ps(VX, 0x1D), _mm256_permute_ps(VX, 0xE8));
+        const __m256 wy = _mm256_sub_ps(_mm256_permute_ps(VY, 0x1D), _mm256_permute_ps(VY, 0xE8));
+        const __m256 wz = _mm256_sub_ps(_mm256_permute_ps(VZ, 0x1D), _mm256_permute_ps(VZ, 0xE8));
+        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, ks, kd, _mm256_loadu_ps(quads.rest.data() + 4 * q));
+        // Per lane (a, b, A, B): F0 + (-F3), F0 + F2, F1 + F2, F3 + (-F1): (0, 0, 1, 3) + (3, 2, 2, 1).
+        auto rowsOf = [&](__m256 column) {
+            return _mm256_add_ps(_mm256_permute_ps(column, 0xD0), _mm256_xor_ps(_mm256_permute_ps(column, 0x6B), flip));
+        };
+        rows8(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), g.rows);
+        g.power = f.power;
+    };
+    auto apply = [&](const Group& g) {
+        for (int j = 0; j < 2; ++j) {
+            addRow128(f4, g.ids[4 * j], g.rows[4 * j]);
+            subRow128(f4, g.ids[4 * j + 1], g.rows[4 * j + 1]);
+            addRow128(f4, g.ids[4 * j + 2], g.rows[4 * j + 2]);
+            addRow128(f4, g.ids[4 * j + 3], g.rows[4 * j + 3]);
+        }
+        sums.add(g.power);
+    };
+    // Two groups per iteration, both computed before either is added, so that the core
+    // overlaps their square root and division chains (as the double path's kernels); the rows
+    // are still updated quad by quad in order.
+    std::size_t q = begin;
+    Group g1, g2;
+    for (; q + 4 <= end; q += 4) {
+        compute(q, g1);
+        compute(q + 2, g2);
+        apply(g1);
+        apply(g2);
+    }
+    for (; q + 2 <= end; q += 2) {
+        compute(q, g1);
+        apply(g1);
+    }
+    sums.store(power);
+    for (; q < end; ++q) quadScalar(quads, begin, q, n, ks4, kd4, x, v, f4, power);
+}
+
+// corners: the faces' corner indices as three columns (a, b, c) of `stride` each.
+void faces8(const std::vector<std::array<int, 3>>& faces, const int* corners, std::size_t stride, std::size_t begin,
+            std::size_t end, const float* x, float* g4, LaneSums& volume) {
+    LaneRegisters sums(volume);
+    std::size_t k = begin;
+    for (; k + 8 <= end; k += 8) {
+        const int* ia = corners + k;
+        const int* ib = corners + stride + k;
+        const int* ic = corners + 2 * stride + k;
+        __m256 ax, ay, az, bx, by, bz, cx, cy, cz;
+        columns8(x, ia, ax, ay, az);
+        columns8(x, ib, bx, by, bz);
+        columns8(x, ic, cx, cy, cz);
+        const __m256 ex = _mm256_sub_ps(bx, ax), ey = _mm256_sub_ps(by, ay), ez = _mm256_sub_ps(bz, az);
+        const __m256 hx = _mm256_sub_ps(cx, ax), hy = _mm256_sub_ps(cy, ay), hz = _mm256_sub_ps(cz, az);
+        const __m256 gx = _mm256_sub_ps(_mm256_mul_ps(ey, hz), _mm256_mul_ps(ez, hy));
+        const __m256 gy = _mm256_sub_ps(_mm256_mul_ps(ez, hx), _mm256_mul_ps(ex, hz));
+        const __m256 gz = _mm256_sub_ps(_mm256_mul_ps(ex, hy), _mm256_mul_ps(ey, hx));
+        const __m256 term =
+            _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, gx), _mm256_mul_ps(ay, gy)), _mm256_mul_ps(az, gz));
+        __m128 rows[8];
+        rows8(gx, gy, gz, rows);
+        for (int j = 0; j < 8; ++j) {
+            addRow128(g4, ia[j], rows[j]);
+            addRow128(g4, ib[j], rows[j]);
+            addRow128(g4, ic[j], rows[j]);
+        }
+        sums.add(term);
+    }
+    sums.store(volume);
+    for (; k < end; ++k) faceScalar(faces, 3, begin, k, x, g4, volume);
+}
+
+#pragma GCC pop_options
+
+bool haveAvx2() { return __builtin_cpu_supports("avx2"); }
+#endif
+
+// The springs and faces of one chunk (or the shared ones), and what they sum.
+struct Chunk {
+    QuadArrays quads;
+    SpringArrays springs;
+    std::array<std::size_t, kSpringFamilyCount + 1> familyStart{};  // families in order
+    std::vector<std::array<int, 3>> faces;                          // slot 0's first
+    std::size_t slotStart = 0;                                      // the first face of slot 1
+    std::vector<int> faceCorners;                                   // three columns
+    std::vector<std::pair<int, int>> owned;                         // particle ranges [begin, end)
+    LaneSums power;
+    std::array<LaneSums, 2> volume;
+};
+
+}  // namespace
+
+bool floatPathSupports(std::string_view integrator) {
+    return std::find(kFloatIntegrators.begin(), kFloatIntegrators.end(), integrator) != kFloatIntegrators.end();
+}
+
+std::string floatPathIntegrators() {
+    std::string s;
+    for (std::string_view name : kFloatIntegrators) s += (s.empty() ? "" : ", ") + std::string(name);
+    return s;
+}
+
+std::string floatPathRefusal(const Simulation& start) {
+    const std::string_view name = start.integrator().name();
+    if (!floatPathSupports(name))
+        return "precision float is built for the explicit integrators " + floatPathIntegrators() + ", not " +
+               std::string(name);
+    if (start.pointer().active) return "precision float has no pointer (mouse spring)";
+    return "";
+}
+
+struct FloatSimulation::Impl {
+    // The body.
+    const Topology* topo = nullptr;
+    int n = 0;
+    int dimension = 3;
+    Eigen::VectorXd mass;
+    std::vector<float> invMass4;  // 4 per particle (0 on fixed particles and absent axes)
+    std::vector<float> weight4;   // gravity force rows
+    std::vector<Chunk> chunks;    // the chunks, then the shared springs and faces
+    std::array<float, kSpringFamilyCount> ks{}, kd{};
+    int perLayer = 0;  // particles per layer (the quads' outer offset)
+    std::vector<std::uint8_t> particleSlot;
+    ForceParams params;
+    bool gas = false;
+    std::array<double, 3> low{}, high{};
+
+    // State and scratch (4 floats per particle).
+    std::vector<float> x, v, xt, vt, xa, va;
+    std::vector<float> force4, gradient4;
+    std::array<float, 2> pressureScaled{};  // P / 6 (P / 2 in 2D) per slot
+    double stagePower = 0.0;                // the last evaluation's damping power [W]
+    std::uint64_t evaluations = 0;
+
+    std::unique_ptr<ThreadPool> pool;
+    int threads = 1;
+    bool wide = false;  // the AVX2 passes
+
+    mutable Diagnostics diag;
+    mutable bool measured = false;
+    double removed = 0.0;
+    double initialEnergy = 0.0;
+
+    int particleTasks() const { return (n + kParticleTask - 1) / kParticleTask; }
+
+    void run(int count, TaskRef task) {
+        if (pool) {
+            pool->run(count, task);
+        } else {
+            for (int t = 0; t < count; ++t) task(t);
+        }
+    }
+
+    // A chunk's springs and faces at (px, pv), added to the force and gradient rows.
+    void accumulate(Chunk& c, const float* px, const float* pv) {
+        c.power = {};
+        c.volume = {};
+        float* f4 = force4.data();
+        const std::array<float, 4> quadKs{ks[0], ks[0], ks[2], ks[2]}, quadKd{kd[0], kd[0], kd[2], kd[2]};
+#ifdef SIMCORE_FLOAT_AVX2
+        if (wide) quads8(c.quads, 0, c.quads.size(), perLayer, quadKs, quadKd, px, pv, f4, c.power);
+        else
+#endif
+            for (std::size_t q = 0; q < c.quads.size(); ++q)
+                quadScalar(c.quads, 0, q, perLayer, quadKs, quadKd, px, pv, f4, c.power);
+        for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
+            const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
+#ifdef SIMCORE_FLOAT_AVX2
+            if (wide) {
+                springs8(c.springs, begin, end, ks[f], kd[f], px, pv, f4, c.power);
+                continue;
+            }
+#endif
+            for (std::size_t k = begin; k < end; ++k) springScalar(c.springs, begin, k, ks[f], kd[f], px, pv, f4, c.power);
+        }
+        if (!gas) return;
+        float* g4 = gradient4.data();
+        const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
+        for (std::size_t slot = 0; slot < 2; ++slot) {
+#ifdef SIMCORE_FLOAT_AVX2
+            if (wide && dimension == 3) {
+                faces8(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
+                continue;
+            }
+#endif
+            for (std::size_t k = cut[slot]; k < cut[slot + 1]; ++k)
+                faceScalar(c.faces, dimension, cut[slot], k, px, g4, c.volume[slot]);
+        }
+    }
+
+    // Passes 1 and 2 at (px, pv): forces and gradients, damping power and pressures.
+    void springsAndFaces(const float* px, const float* pv) {
+        const int owners = static_cast<int>(chunks.size()) - 1;
+        auto task = [&](int t) {
+            Chunk& c = chunks[static_cast<std::size_t>(t)];
+            for (auto [begin, end] : c.owned) {
+                const auto bytes = sizeof(float) * 4 * static_cast<std::size_t>(end - begin);
+                std::memset(force4.data() + 4 * static_cast<std::ptrdiff_t>(begin), 0, bytes);
+                if (gas) std::memset(gradient4.data() + 4 * static_cast<std::ptrdiff_t>(begin), 0, bytes);
+            }
+            accumulate(c, px, pv);
+        };
+        run(owners, task);
+        accumulate(chunks.back(), px, pv);
+        double power = 0.0;
+        for (const Chunk& c : chunks) power += c.power.total();
+        stagePower = power;
+        if (gas)
+            for (std::size_t slot = 0; slot < 2; ++slot) {
+                double sum = 0.0;
+                for (const Chunk& c : chunks) sum += c.volume[slot].total();
+                const double volume = dimension == 2 ? 0.5 * sum : sum / 6.0;
+                const double pressure = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
+                pressureScaled[slot] = static_cast<float>(dimension == 2 ? 0.5 * pressure : pressure / 6.0);
+            }
+        ++evaluations;
+    }
+
+    // Pass 3: the force on particle i (its weight, its springs, its gas), times its inverse mass.
+    F4 acceleration(int i) const {
+        F4 f = row(weight4.data(), i) + row(force4.data(), i);
+        if (gas) f += splat(pressureScaled[particleSlot[static_cast<std::size_t>(i)]]) * row(gradient4.data(), i);
+        return f * row(invMass4.data(), i);
+    }
+
+    template <class Update>
+    void evaluate(const float* px, const float* pv, Update&& update) {
+        springsAndFaces(px, pv);
+        auto task = [&](int t) {
+            const int begin = t * kParticleTask, end = std::min(n, begin + kParticleTask);
+            for (int i = begin; i < end; ++i) update(i, row(pv, i), acceleration(i));
+        };
+        run(particleTasks(), task);
+    }
+
+    void step(std::string_view integrator, float h, double hd) {
+        float* X = x.data();
+        float* V = v.data();
+        if (integrator == "euler") {
+            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+                setRow(X, i, row(X, i) + splat(h) * vi);
+                setRow(V, i, vi + splat(h) * ai);
+            });
+            removed += hd * stagePower;
+        } else if (integrator == "symplectic-euler") {
+            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+                const F4 vn = vi + splat(h) * ai;
+                setRow(V, i, vn);
+                setRow(X, i, row(X, i) + splat(h) * vn);
+            });
+            removed += hd * stagePower;
+        } else if (integrator == "verlet") {
+            const float half = 0.5f * h, hh = 0.5f * h * h;
+            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+                setRow(X, i, row(X, i) + splat(h) * vi + splat(hh) * ai);
+                setRow(V, i, vi + splat(half) * ai);
+            });
+            const double p1 = stagePower;
+            evaluate(X, V, [&](int i, F4 vi, F4 ai) { setRow(V, i, vi + splat(half) * ai); });
+            removed += 0.5 * hd * (p1 + stagePower);
+        } else if (integrator == "midpoint") {
+            float* XT = xt.data();
+            float* VT = vt.data();
+            const float half = 0.5f * h;
+            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+                setRow(XT, i, row(X, i) + splat(half) * vi);
+                setRow(VT, i, vi + splat(half) * ai);
+            });
+            evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
+                setRow(X, i, row(X, i) + splat(h) * vi);
+                setRow(V, i, row(V, i) + splat(h) * ai);
+            });
+            removed += hd * stagePower;
+        } else {  // rk4
+            float* XT = xt.data();
+            float* VT = vt.data();
+            float* XA = xa.data();
+            float* VA = va.data();
+            const float sixth = h / 6.0f, third = h / 3.0f, half = 0.5f * h;
+            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+                const F4 xi = row(X, i);
+                setRow(XA, i, xi + splat(sixth) * vi);
+                setRow(VA, i, vi + splat(sixth) * ai);
+                setRow(XT, i, xi + splat(half) * vi);
+                setRow(VT, i, vi + splat(half) * ai);
+            });
+            double power = stagePower;
+            auto middle = [&](float c) {
+                evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
+                    setRow(XA, i, row(XA, i) + splat(third) * vi);
+                    setRow(VA, i, row(VA, i) + splat(third) * ai);
+                    setRow(XT, i, row(X, i) + splat(c) * vi);
+                    setRow(VT, i, row(V, i) + splat(c) * ai);
+                });
+                power += 2.0 * stagePower;
+            };
+            middle(half);
+            middle(h);
+            evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
+                setRow(X, i, row(XA, i) + splat(sixth) * vi);
+                setRow(V, i, row(VA, i) + splat(sixth) * ai);
+            });
+            power += stagePower;
+            removed += hd / 6.0 * power;
+        }
+    }
+
+    // Finite, and inside the walls; the reason when not.
+    // Whether particles [begin, end) are finite and inside the walls (branch-free: the step's
+    // common case is that they are).
+    bool sound(int begin, int end) const {
+        const F4 lo{static_cast<float>(std::max(low[0], -3e38)), static_cast<float>(std::max(low[1], -3e38)),
+                    static_cast<float>(std::max(low[2], -3e38)), -1.0f};
+        const F4 hi{static_cast<float>(std::min(high[0], 3e38)), static_cast<float>(std::min(high[1], 3e38)),
+                    static_cast<float>(std::min(high[2], 3e38)), 1.0f};
+        const F4 big = splat(3e38f);
+        auto bad = F4{} < F4{};  // all lanes false
+        for (int i = begin; i < end; ++i) {
+            const F4 xi = row(x.data(), i), vi = row(v.data(), i);
+            // NaN fails every comparison, so "not (inside)" catches it; infinities are outside.
+            bad |= !((xi >= lo) & (xi <= hi) & (vi >= (F4{} - big)) & (vi <= big));
+        }
+        return !(bad[0] | bad[1] | bad[2] | bad[3]);
+    }
+
+    // The reason the state is unusable, or "": checked in parallel pieces, the first bad
+    // particle found again serially for the message.
+    std::string check() {
+        bool ok = true;
+        std::array<std::uint8_t, 64> pieceOk{};
+        const int pieces = std::min<int>(particleTasks(), static_cast<int>(pieceOk.size()));
+        auto task = [&](int t) {
+            const int per = (n + pieces - 1) / pieces, begin = t * per, end = std::min(n, begin + per);
+            pieceOk[static_cast<std::size_t>(t)] = sound(begin, end) ? 1 : 0;
+        };
+        run(pieces, task);
+        for (int t = 0; t < pieces; ++t) ok = ok && pieceOk[static_cast<std::size_t>(t)] != 0;
+        if (ok) return "";
+        for (int i = 0; i < n; ++i) {
+            const F4 xi = row(x.data(), i), vi = row(v.data(), i);
+            for (int axis = 0; axis < 3; ++axis) {
+                if (!std::isfinite(xi[axis]) || !std::isfinite(vi[axis]))
+                    return "the state is no longer finite (particle " + std::to_string(i) + ")";
+                const double c = xi[axis];
+                if (c < low[static_cast<std::size_t>(axis)] || c > high[static_cast<std::size_t>(axis)])
+                    return "particle " + std::to_string(i) +
+                           " reached a wall: the float path has no contact (use precision double)";
+            }
+        }
+        return "";
+    }
+
+    void toDouble(Eigen::VectorXd& out) const {
+        out.resize(6 * static_cast<Eigen::Index>(n));
+        for (int i = 0; i < n; ++i)
+            for (int axis = 0; axis < 3; ++axis) {
+                out[3 * i + axis] = static_cast<double>(x[4 * static_cast<std::size_t>(i) + static_cast<std::size_t>(axis)]);
+                out[3 * (n + i) + axis] =
+                    static_cast<double>(v[4 * static_cast<std::size_t>(i) + static_cast<std::size_t>(axis)]);
+            }
+    }
+
+    // Energies, volumes and pressures in double from the float state (the double path's
+    // functions).
+    void measure(Diagnostics& d) const {
+        Eigen::VectorXd y;
+        toDouble(y);
+        const double* px = y.data();
+        const double* pv = y.data() + 3 * n;
+        d.kinetic = 0.0;
+        d.gravity = 0.0;
+        for (int i = 0; i < n; ++i) {
+            const double m = mass[i];
+            d.kinetic += 0.5 * m * ((pv[3 * i] * pv[3 * i] + pv[3 * i + 1] * pv[3 * i + 1]) + pv[3 * i + 2] * pv[3 * i + 2]);
+            d.gravity += m * params.gravity * px[3 * i + 1];
+        }
+        for (int f = 0; f < kSpringFamilyCount; ++f)
+            d.spring[static_cast<std::size_t>(f)] =
+                springEnergy(topo->springs[static_cast<std::size_t>(f)], params.ks[static_cast<std::size_t>(f)], px);
+        d.gas = 0.0;
+        d.volume = {};
+        d.pressure = {};
+        if (gas)
+            for (const Surface& s : topo->surfaces) {
+                const std::size_t count = dimension == 2 ? s.edges.size() : s.triangles.size();
+                const double sum = partialVolume(s, dimension, px, 0, count);
+                const double volume = dimension == 2 ? 0.5 * sum : sum / 6.0;
+                const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+                d.volume[slot] = volume;
+                d.pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
+                d.gas += gasEnergy(params.gasConstant[slot], volume);
+            }
+    }
+};
+
+FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_unique<Impl>()) {
+    if (std::string refusal = floatPathRefusal(start); !refusal.empty()) throw std::invalid_argument(refusal);
+    Impl& s = *m_impl;
+    const Topology& topo = start.topology();
+    m_topology = &topo;
+    m_integrator = std::string(start.integrator().name());
+    m_dt = start.dt();
+    m_time = start.time();
+    m_step = start.stepCount();
+    s.topo = &topo;
+    s.n = topo.particleCount();
+    s.dimension = topo.dimension;
+    s.mass = start.body().mass;
+    const ForceModel& model = start.forces();
+    s.params = model.params;
+    if (!model.terms().has(Term::Gravity)) s.params.gravity = 0.0;
+    s.gas = model.terms().has(Term::Gas);
+    s.low = model.contact.low;
+    s.high = model.contact.high;
+    const auto n = static_cast<std::size_t>(s.n);
+    s.invMass4.assign(4 * n, 0.0f);
+    s.weight4.assign(4 * n, 0.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+        const bool fixed = i < start.body().fixed.size() && start.body().fixed[i];
+        const float inv = fixed ? 0.0f : static_cast<float>(1.0 / s.mass[static_cast<Eigen::Index>(i)]);
+        s.invMass4[4 * i + 1] = inv;
+        if (s.dimension >= 2) s.invMass4[4 * i] = inv;
+        if (s.dimension == 3) s.invMass4[4 * i + 2] = inv;
+        s.weight4[4 * i + 1] = static_cast<float>(0.0 - s.mass[static_cast<Eigen::Index>(i)] * s.params.gravity);
+    }
+    // Chunks by particle ownership (as ForceModel: vertex k of each layer in chunk 0 when
+    // k < n/2; one chunk below ForceModel::kChunkThreshold springs); a spring or face whose
+    // particles are not all one chunk's is shared.
+    const int owners = topo.springCount() >= ForceModel::kChunkThreshold ? ForceModel::kChunks : 1;
+    const bool layered = !topo.layerPairs.empty() && 2 * topo.layerPairs.size() == n;
+    const int perLayer = layered ? s.n / 2 : s.n;
+    auto owner = [&](int i) { return owners == 1 ? 0 : ((i % perLayer) * owners) / perLayer; };
+    s.chunks.resize(static_cast<std::size_t>(owners) + 1);
+    auto chunkOf = [&](std::initializer_list<int> particles) {
+        const int first = owner(*particles.begin());
+        for (int p : particles)
+            if (owner(p) != first) return &s.chunks.back();
+        return &s.chunks[static_cast<std::size_t>(first)];
+    };
+    for (int i = 0; i < s.n; ++i) {
+        auto& owned = s.chunks[static_cast<std::size_t>(owner(i))].owned;
+        if (!owned.empty() && owned.back().second == i) ++owned.back().second;
+        else owned.emplace_back(i, i + 1);
+    }
+    s.perLayer = perLayer;
+    // Edge quads (two-layer bodies): each inner structural spring (a, b) whose outer copy
+    // (A, B) and shear springs (A, b), (B, a) exist (in either orientation), all four in one
+    // chunk; their springs leave the families.
+    std::array<std::vector<bool>, kSpringFamilyCount> inQuad;
+    for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f)
+        inQuad[f].assign(topo.springs[f].size(), false);
+    if (layered) {
+        const auto structural = static_cast<std::size_t>(SpringFamily::Structural),
+                   shear = static_cast<std::size_t>(SpringFamily::Shear);
+        auto key = [](int i, int j) {
+            return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(i, j))) << 32) |
+                   static_cast<std::uint32_t>(std::max(i, j));
+        };
+        std::unordered_map<std::uint64_t, std::size_t> structuralAt, shearAt;
+        for (std::size_t k = 0; k < topo.springs[structural].size(); ++k)
+            structuralAt.emplace(key(topo.springs[structural].a[k], topo.springs[structural].b[k]), k);
+        for (std::size_t k = 0; k < topo.springs[shear].size(); ++k)
+            shearAt.emplace(key(topo.springs[shear].a[k], topo.springs[shear].b[k]), k);
+        const SpringSet& st = topo.springs[structural];
+        const SpringSet& sh = topo.springs[shear];
+        for (std::size_t k = 0; k < st.size(); ++k) {
+            const int a = st.a[k], b = st.b[k];
+            if (a >= perLayer || b >= perLayer || inQuad[structural][k]) continue;
+            const int A = a + perLayer, B = b + perLayer;
+            const auto outer = structuralAt.find(key(A, B)), s1 = shearAt.find(key(A, b)), s2 = shearAt.find(key(B, a));
+            if (outer == structuralAt.end() || s1 == shearAt.end() || s2 == shearAt.end()) continue;
+            if (inQuad[structural][outer->second] || inQuad[shear][s1->second] || inQuad[shear][s2->second]) continue;
+            Chunk* c = chunkOf({a, b, A, B});
+            if (c == &s.chunks.back()) continue;  // shared: the quads run inside the chunks only
+            inQuad[structural][k] = inQuad[structural][outer->second] = true;
+            inQuad[shear][s1->second] = inQuad[shear][s2->second] = true;
+            c->quads.a.push_back(a);
+            c->quads.b.push_back(b);
+            for (double rest : {st.rest[k], st.rest[outer->second], sh.rest[s1->second], sh.rest[s2->second]})
+                c->quads.rest.push_back(static_cast<float>(rest));
+        }
+        for (Chunk& c : s.chunks) {  // strided blocks, as the springs below
+            QuadArrays order;
+            std::size_t block = 0;
+            auto take = [&](std::size_t q) {
+                order.a.push_back(c.quads.a[q]);
+                order.b.push_back(c.quads.b[q]);
+                for (std::size_t l = 0; l < 4; ++l) order.rest.push_back(c.quads.rest[4 * q + l]);
+            };
+            for (; block + kStridedBlock <= c.quads.size(); block += kStridedBlock)
+                for (std::size_t r = 0; r < kStride; ++r)
+                    for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) take(block + q * kStride + r);
+            for (; block < c.quads.size(); ++block) take(block);
+            c.quads = std::move(order);
+        }
+    }
+    for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
+        s.ks[f] = static_cast<float>(s.params.ks[f]);
+        s.kd[f] = static_cast<float>(s.params.kd[f]);
+        for (Chunk& c : s.chunks) c.familyStart[f] = c.springs.size();
+        const SpringSet& set = topo.springs[f];
+        for (std::size_t k = 0; k < set.size(); ++k) {
+            if (inQuad[f][k]) continue;
+            Chunk* c = chunkOf({set.a[k], set.b[k]});
+            c->springs.a.push_back(set.a[k]);
+            c->springs.b.push_back(set.b[k]);
+            c->springs.rest.push_back(static_cast<float>(set.rest[k]));
+        }
+    }
+    for (Chunk& c : s.chunks) {
+        c.familyStart[kSpringFamilyCount] = c.springs.size();
+        // Within each family, blocks of 128 springs taken with a stride of 16 (k, k + 16, ...,
+        // then k + 1, ...): the mesh's springs come edge after edge, so neighbours in the list
+        // share a particle, and adding their forces one after the other would wait on the
+        // previous store to the same row; 16 apart they rarely do (nearby still: the block is
+        // small).
+        SpringArrays order;
+        for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
+            const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
+            auto take = [&](std::size_t k) {
+                order.a.push_back(c.springs.a[k]);
+                order.b.push_back(c.springs.b[k]);
+                order.rest.push_back(c.springs.rest[k]);
+            };
+            std::size_t block = begin;
+            for (; block + kStridedBlock <= end; block += kStridedBlock)
+                for (std::size_t r = 0; r < kStride; ++r)
+                    for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) take(block + q * kStride + r);
+            for (; block < end; ++block) take(block);
+        }
+        c.springs = std::move(order);
+    }
+    // Faces: each chunk's inner layer's first (slot 0), then the outer's.
+    if (s.gas) {
+        for (std::size_t slot = 0; slot < 2; ++slot) {
+            for (Chunk& c : s.chunks)
+                if (slot == 1) c.slotStart = c.faces.size();
+            for (const Surface& surface : topo.surfaces) {
+                if (static_cast<std::size_t>(layerSlot(surface.layer)) != slot) continue;
+                if (s.dimension == 2) {
+                    for (auto [a, b] : surface.edges) chunkOf({a, b})->faces.push_back({a, b, a});
+                } else {
+                    for (const auto& t : surface.triangles) chunkOf({t[0], t[1], t[2]})->faces.push_back(t);
+                }
+            }
+        }
+        for (Chunk& c : s.chunks) {
+            // The faces of each slot in strided blocks, as the springs below (consecutive faces
+            // share corners).
+            std::vector<std::array<int, 3>> order;
+            const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
+            for (std::size_t slot = 0; slot < 2; ++slot) {
+                std::size_t block = cut[slot];
+                for (; block + kStridedBlock <= cut[slot + 1]; block += kStridedBlock)
+                    for (std::size_t r = 0; r < kStride; ++r)
+                        for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) order.push_back(c.faces[block + q * kStride + r]);
+                for (; block < cut[slot + 1]; ++block) order.push_back(c.faces[block]);
+            }
+            c.faces = std::move(order);
+            c.faceCorners.resize(3 * c.faces.size());
+            for (std::size_t f = 0; f < c.faces.size(); ++f)
+                for (std::size_t k = 0; k < 3; ++k) c.faceCorners[k * c.faces.size() + f] = c.faces[f][k];
+        }
+    }
+    s.particleSlot.resize(n);
+    for (std::size_t i = 0; i < n; ++i) s.particleSlot[i] = static_cast<std::uint8_t>(layerSlot(topo.layer[i]));
+    // State, rounded to float.
+    const Eigen::VectorXd& y = start.state();
+    for (auto* buffer : {&s.x, &s.v, &s.xt, &s.vt, &s.xa, &s.va}) buffer->assign(4 * n, 0.0f);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t axis = 0; axis < 3; ++axis) {
+            s.x[4 * i + axis] = static_cast<float>(y[static_cast<Eigen::Index>(3 * i + axis)]);
+            s.v[4 * i + axis] = static_cast<float>(y[static_cast<Eigen::Index>(3 * (n + i) + axis)]);
+        }
+    s.force4.assign(4 * n, 0.0f);
+    s.gradient4.assign(4 * n, 0.0f);
+#ifdef SIMCORE_FLOAT_AVX2
+    s.wide = kernels::kernelsInUse() != kernels::KernelSet::Portable && haveAvx2();
+#endif
+    s.measure(s.diag);
+    s.diag.hasGas = s.gas;
+    s.diag.dt = m_dt;
+    s.diag.time = m_time;
+    s.diag.step = m_step;
+    for (const Surface& surface : topo.surfaces)
+        s.diag.restVolume[static_cast<std::size_t>(layerSlot(surface.layer))] = surface.restVolume;
+    s.initialEnergy = s.diag.total();
+    s.diag.initialEnergy = s.initialEnergy;
+    s.measured = true;
+    setThreads(start.threads());
+}
+
+FloatSimulation::~FloatSimulation() = default;
+
+void FloatSimulation::setThreads(int threads) {
+    threads = std::max(1, threads);
+    m_impl->pool = threads > 1 ? std::make_unique<ThreadPool>(threads) : nullptr;
+    m_impl->threads = threads;
+}
+
+int FloatSimulation::threads() const { return m_impl->threads; }
+
+bool FloatSimulation::step() {
+    if (failed()) return false;
+    m_impl->step(m_integrator, static_cast<float>(m_dt), m_dt);
+    ++m_step;
+    const double started = m_time;
+    m_time += m_dt;
+    m_impl->measured = false;
+    if (std::string reason = m_impl->check(); !reason.empty()) {
+        m_failure = Failure{reason, m_step, started};
+        return false;
+    }
+    return true;
+}
+
+const Diagnostics& FloatSimulation::diagnostics() const {
+    Impl& s = *m_impl;
+    if (!s.measured) {
+        s.measure(s.diag);
+        s.measured = true;
+    }
+    s.diag.step = m_step;
+    s.diag.time = m_time;
+    s.diag.removedDamping = s.removed;
+    s.diag.forceEvaluations = s.evaluations;
+    return s.diag;
+}
+
+Eigen::VectorXd FloatSimulation::state() const {
+    Eigen::VectorXd y;
+    m_impl->toDouble(y);
+    return y;
+}
+
+std::uint64_t FloatSimulation::stateHash() const {
+    std::uint64_t h = 14695981039346656037ULL;
+    for (const std::vector<float>* buffer : {&m_impl->x, &m_impl->v}) {
+        const auto* p = reinterpret_cast<const unsigned char*>(buffer->data());
+        for (std::size_t i = 0; i < buffer->size() * sizeof(float); ++i) h = (h ^ p[i]) * 1099511628211ULL;
+    }
+    return h;
+}
+
+}  // namespace simcore
