@@ -19,6 +19,7 @@
 #include <cmath>
 #include <future>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@
 #include "output.h"
 #include "params.h"
 #include "refinement.h"
+#include "request.h"
 #include "scenefile.h"
 #include "scenes.h"
 #include "simulation.h"
@@ -67,43 +69,28 @@ double numberOf(const py::handle& value, const std::string& key, const char* exp
     return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
 }
 
-// A scene as the CLI's sceneSetup builds it: a built-in name or a scene file (.json), then the
-// keyword parameters in the order given, each through the table (ValueError: its message).
-struct Scene {
-    std::string name;
-    simcore::ParameterSet params;
-    std::string integrator = "rk4";
-    std::optional<simcore::SceneFile::State> state;  // a scene file's saved state
-};
+// A scene through the front door (simlab::resolveScene), as the CLI's --scene, --set and
+// --integrator give it: the keyword parameters in the order given, each as `key=value` text
+// (a number as its shortest text, as `--set key=value` would give it, nan and inf included).
+// Its refusals are RequestError, a std::invalid_argument: ValueError with the CLI's text.
+using Scene = simlab::SceneSetup;
 
-void assignParameter(simcore::ParameterSet& params, const std::string& key, const py::handle& value) {
-    std::optional<std::string> error;
-    if (py::isinstance<py::str>(value))
-        error = params.setFromText(key, value.cast<std::string>());  // a number or a choice's name
-    else  // as its shortest text, as `--set key=value` would give it (nan, inf included)
-        error = params.setFromText(key, py::repr(py::float_(numberOf(value, key, "a number or a name"))).cast<std::string>());
-    if (error) throw py::value_error(*error);
+std::string parameterText(const std::string& key, const py::handle& value) {
+    if (py::isinstance<py::str>(value)) return value.cast<std::string>();  // a number or a choice's name
+    return py::repr(py::float_(numberOf(value, key, "a number or a name"))).cast<std::string>();
 }
 
-Scene sceneFrom(const py::object& scene, const py::kwargs& parameters) {
-    Scene s;
-    s.name = pathText(scene);
-    const simcore::SceneInfo* info = simcore::findScene(s.name);
-    if (!info && s.name.size() > 5 && s.name.ends_with(".json")) {
-        simcore::SceneFileResult read = simcore::readSceneFile(s.name);
-        if (!read.file) throw py::value_error(read.error);
-        s.name = read.file->sceneName;
-        s.params = read.file->params;
-        s.integrator = read.file->integrator;
-        s.state = read.file->state;
-    } else if (!info) {
-        throw py::value_error(simcore::unknownSceneMessage(s.name) + ", or a scene file (.json)");
-    } else {
-        s.params = simcore::ParameterSet(info->kind);
+Scene sceneFrom(const py::object& scene, const py::kwargs& parameters, const py::object& integrator = py::none()) {
+    simlab::SceneRequest request;
+    request.scene = pathText(scene);
+    for (const auto& [k, value] : parameters) {
+        const std::string key = py::str(k).cast<std::string>();
+        if (key.find('=') != std::string::npos)
+            throw py::value_error("unknown parameter " + simlab::quoted(key) + " (a keyword holds no '=')");
+        request.set.push_back(key + "=" + parameterText(key, value));
     }
-    for (const auto& [key, value] : parameters) assignParameter(s.params, py::str(key).cast<std::string>(), value);
-    if (auto error = simcore::validateShape(s.params)) throw py::value_error(*error);
-    return s;
+    if (!integrator.is_none()) request.integrator = integrator.cast<std::string>();
+    return simlab::resolveScene(request);
 }
 
 void checkIntegrator(const std::string& name) {
@@ -217,23 +204,26 @@ class PySimulation {
 public:
     PySimulation(const py::object& scene, const py::object& integrator, const py::object& options,
                  const py::object& threads, const py::kwargs& parameters) {
-        Scene s = sceneFrom(scene, parameters);
-        if (!integrator.is_none()) s.integrator = integrator.cast<std::string>();
-        checkIntegrator(s.integrator);
-        // The chosen integrator's memory too (the CVODE methods hold more), as the CLI checks it.
-        if (auto error = simcore::validateShape(s.params, s.integrator)) throw py::value_error(*error);
-        m_scene = s.name;
+        const Scene s = sceneFrom(scene, parameters, integrator);  // the integrator's memory too, as the CLI
+        m_scene = s.sceneName;
         m_sim = std::make_unique<simcore::Simulation>(s.params, s.integrator);
         m_sim->setIntegratorOptions(integratorOptions(options));
         if (!threads.is_none()) m_sim->setThreads(static_cast<int>(checkedNumber(threads, "threads", 1, 256, false, true)));
         if (s.state)
             if (auto error = simcore::applyState(*m_sim, *s.state)) throw py::value_error(*error);
         m_columns = simcore::timeSeriesColumns(s.params.kind());
+        constructed().insert(this);
     }
+    ~PySimulation() { constructed().erase(this); }
+    PySimulation(const PySimulation&) = delete;
+    PySimulation& operator=(const PySimulation&) = delete;
 
     // For reading: refused while another thread steps (a look, not a claim: a reader never
     // makes a stepping thread fail).
     const simcore::Simulation& sim() const {
+        // Simulation.__new__(Simulation) without __init__: pybind11 hands the methods raw,
+        // never-constructed memory; only objects whose constructor ran are in the set.
+        if (!constructed().contains(this)) throw std::runtime_error("this Simulation was not initialised; create it with Simulation(scene, ...)");
         if (m_busy.load(std::memory_order_acquire))
             throw std::runtime_error("this Simulation is being stepped by another thread");
         return *m_sim;
@@ -242,6 +232,7 @@ public:
     // Steps n times; SimulationFailed when a step fails.
     void step(const py::handle& count) {
         const long n = static_cast<long>(checkedNumber(count, "n", 1, 1e12, false, true));
+        sim();
         Busy busy(m_busy);
         long done = 0;
         inSlices([&] { return m_sim->step() && ++done < n; });
@@ -255,7 +246,18 @@ public:
     py::object run(const py::handle& durationArg, const py::object& everyArg) {
         const double duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
         const long every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
+        // The front door's bounds: the steps of a fixed-step run, the rows held in memory.
+        simlab::SceneSetup setup;
+        setup.params = sim().parameters();
+        setup.integrator = std::string(sim().integrator().name());
+        simlab::RunRequest request;
+        request.duration = duration;
+        request.rowsEvery = every;
+        request.rowColumns = static_cast<int>(m_columns.size());
+        request.options = sim().integratorOptions();
+        simlab::checkRun(setup, request);
         Busy busy(m_busy);
+        const long firstStep = m_sim->stepCount();
         std::vector<double> rows;
         auto record = [&] {
             for (const simcore::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
@@ -268,6 +270,10 @@ public:
                 if (!m_sim->step(tEnd)) return false;
                 const bool last = reached();
                 if (every && (m_sim->stepCount() % every == 0 || last)) record();
+                // An adaptive run stops at the bound, as the CLI's (its rows up to there kept).
+                if (!last && static_cast<double>(m_sim->stepCount() - firstStep) >= simlab::kMaxSteps)
+                    throw std::runtime_error("run stopped at step " + std::to_string(m_sim->stepCount()) + ": " +
+                                             simlab::number(simlab::kMaxSteps) + " steps taken, the most one run may take");
                 return !last;
             });
         py::object table = py::none();
@@ -282,6 +288,7 @@ public:
     }
 
     void reset() {
+        sim();
         Busy busy(m_busy);
         m_sim->reset();
     }
@@ -310,6 +317,7 @@ public:
         return row;
     }
     std::vector<std::string> columns() const {
+        sim();
         std::vector<std::string> names;
         for (const simcore::CsvColumn& c : m_columns) names.push_back(c.name);
         return names;
@@ -343,7 +351,7 @@ public:
     }
     void setIntegrator(const std::string& name, const py::object& options) {
         checkIntegrator(name);
-        const simcore::IntegratorOptions o = integratorOptions(options, m_sim->integratorOptions());
+        const simcore::IntegratorOptions o = integratorOptions(options, sim().integratorOptions());
         Busy busy(m_busy);
         if (auto error = m_sim->setIntegrator(name)) throw py::value_error(*error);
         m_sim->setIntegratorOptions(o);
@@ -366,13 +374,18 @@ public:
 
     void saveScene(const py::object& path) {
         const std::string text = simcore::sceneFileText(sim(), m_scene, true);
+        simlab::checkFiles({}, {{"save-scene", pathText(path)}});
         simcore::AtomicFile file(pathText(path));
         if (!file.ok() || !file.write(text) || !file.commit()) throw py::value_error(file.error());
     }
 
-    const std::string& scene() const { return m_scene; }
+    const std::string& scene() const {
+        sim();
+        return m_scene;
+    }
 
     std::string repr() const {
+        if (!constructed().contains(this)) return "<elasticlab.Simulation, not initialised>";
         if (m_busy.load(std::memory_order_acquire)) return "<elasticlab.Simulation '" + m_scene + "', stepping>";
         char text[160];
         std::snprintf(text, sizeof text, ", %d particles, step %ld, t = %g s%s>", m_sim->particleCount(),
@@ -381,6 +394,12 @@ public:
     }
 
 private:
+    // The Simulations whose constructor completed (read and changed with the GIL held).
+    static std::set<const PySimulation*>& constructed() {
+        static std::set<const PySimulation*> live;
+        return live;
+    }
+
     // SimulationFailed("simulation failed at step S, t = T s: reason") with .reason, .step,
     // .time and, from run(every=...), .rows up to the last good step.
     void raiseIfFailed(const py::object& rows) {
@@ -417,8 +436,28 @@ void commit(simcore::AtomicFile& file) {
 }
 
 std::vector<std::string> integratorList(const std::vector<std::string>& names) {
-    for (const std::string& name : names) checkIntegrator(name);
+    // As the CLI's --integrators a,b,c: the same list rules and the same words.
+    std::string joined;
+    for (const std::string& name : names) {
+        if (name.find(',') != std::string::npos) throw py::value_error("integrator " + simlab::quoted(name) + " holds a comma");
+        joined += (joined.empty() ? "" : ",") + name;
+    }
+    if (names.size() == 1 && names.front().empty()) joined = ",";  // [""]: an empty item, not an empty list
+    const simcore::NameList list = simcore::parseNameList("integrators", joined);
+    if (!list.error.empty()) throw py::value_error(list.error);
+    simlab::checkIntegrators(names);
     return names;
+}
+
+// The outputs against the scene file read and each other (the front door's checkFiles).
+void checkOutputs(const Scene& scene, const std::vector<std::pair<std::string, py::object>>& outputs) {
+    std::vector<simlab::NamedPath> named;
+    for (const auto& [option, path] : outputs) {
+        if (path.is_none()) continue;
+        named.emplace_back(option, pathText(path));
+        simlab::checkOutputNamed(option, named.back().second);
+    }
+    simlab::checkFiles({{"scene", scene.sceneFile}}, named);
 }
 
 double nanIfFailed(bool ok, double v) { return ok ? v : std::nan(""); }
@@ -441,7 +480,8 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
     spec.samples = static_cast<int>(checkedNumber(samples, "samples", 1, 100000, false, true));
     spec.reference = reference;
     spec.options.fixedStep = fixedStep;
-    if (auto error = simcore::validateStudy(spec)) throw py::value_error(*error);
+    simlab::checkStudy(spec);
+    checkOutputs(s, {{"csv", csvPath}, {"plot", plotPath}});
     auto csv = openOutput(csvPath);
     auto plot = openOutput(plotPath);
 
@@ -466,7 +506,7 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
         commit(*csv);
     }
     if (plot) {
-        const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simcore::formatDouble(spec.duration) + " s"
+        const std::string t = title.is_none() ? s.sceneName + ": error against cost, T = " + simcore::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
         plot->write(simcore::studySvg(result.rows, t));
         commit(*plot);
@@ -486,7 +526,9 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e5, true, false, "s");
     spec.perturb = checkedNumber(perturb, "perturb", 0.0, 1e3, false, false, "m");
     spec.hMin = checkedNumber(hmin, "hmin", 0.0, 1.0, true, false, "s");
-    spec.hMax = checkedNumber(hmax, "hmax", spec.hMin, 1.0, false, false, "s");
+    spec.hMax = checkedNumber(hmax, "hmax", 0.0, 1.0, true, false, "s");
+    simlab::checkStability(spec);
+    checkOutputs(s, {{"csv", csvPath}});
     auto csv = openOutput(csvPath);
 
     // Linearised at the perturbed start the measured runs begin from (as the CLI's stability).
@@ -537,7 +579,8 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
     spec.interval = checkedNumber(interval, "interval", 0.0, 1e6, true, false, "s");
     spec.temporalRuns = static_cast<int>(checkedNumber(temporalRuns, "temporal_runs", 0, 10, false, true));
     spec.options.fixedStep = fixedStep;
-    if (auto error = simcore::validateRefinement(spec)) throw py::value_error(*error);
+    simlab::checkRefinement(spec);
+    checkOutputs(s, {{"csv", csvPath}, {"plot", plotPath}});
     auto csv = openOutput(csvPath);
     auto plot = openOutput(plotPath);
 
@@ -567,7 +610,7 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
         commit(*csv);
     }
     if (plot) {
-        const std::string t = title.is_none() ? s.name + ": mesh error and step error against run time, T = " +
+        const std::string t = title.is_none() ? s.sceneName + ": mesh error and step error against run time, T = " +
                                                     simcore::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
         plot->write(simcore::refinementSvg(spec, result, t));

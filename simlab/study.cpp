@@ -186,6 +186,11 @@ std::vector<double> studyGrid(const StudySpec& spec) {
     return grid;
 }
 
+double studyReferenceStep(const StudySpec& spec) {
+    const bool rk4 = spec.reference == "rk4" || (spec.reference == "auto" && !closedFormApplies(spec));
+    return rk4 ? smallestFixedStep(spec) / 16.0 : 0.0;
+}
+
 StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* cancel) {
     StudyReference ref;
     ref.times = studyGrid(spec);
@@ -203,6 +208,14 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
     IntegratorOptions options = spec.options;
     options.stepDoubling = false;
     options.fixedStep = false;
+    // Cancelled part-way: no positions, nothing to compare with (a trajectory cut short has
+    // fewer samples than the grid, none at all when cancelled before the first).
+    auto cancelledReference = [&] {
+        StudyReference none;
+        none.cancelled = true;
+        none.times = ref.times;
+        return none;
+    };
     // An adaptive reference at a tight tolerance, its error estimated against a run at a
     // looser one: rk45 at 1e-12 (1e-10), or the stiff-capable cvode-bdf at 1e-11 (1e-9; BDF's
     // cost grows gently with the tolerance and is not limited by the stiff modes' stability,
@@ -217,6 +230,7 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
         IntegratorOptions coarse = fineOptions;
         coarse.atol = coarse.rtol = loose;
         Trajectory check = runTrajectory(spec.params, method, smallestFixedStep(spec), coarse, ref.times, cancel);
+        if (fine.cancelled || check.cancelled) return cancelledReference();
         if (fine.failed) throw std::runtime_error("the " + method + " reference failed: " + fine.failure + why);
         ref.description = method + " at atol = rtol = " + formatShort(tight) + " (" + std::to_string(fine.steps) + " steps)" + why;
         ref.positions = fine.positions;
@@ -228,13 +242,15 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
     if (spec.reference == "rk45" || spec.reference == "cvode-bdf") return adaptiveReference(spec.reference, "");
     const double h = smallestFixedStep(spec) / 16.0;
     Trajectory fine = runTrajectory(spec.params, "rk4", h, options, ref.times, cancel);
-    if (fine.failed && spec.reference == "auto" && !fine.cancelled)
+    if (fine.cancelled) return cancelledReference();
+    if (fine.failed && spec.reference == "auto")
         // Stiff: rk4 16x below the smallest studied step is still unstable. The most accurate
         // reference left is the stiff solver at a tight tolerance.
         return adaptiveReference("cvode-bdf", ", because rk4 at dt = " + formatShort(h) + " s failed (" + fine.failure + ")");
     if (fine.failed)
         throw std::runtime_error("the rk4 reference at dt = " + formatShort(h) + " s failed: " + fine.failure);
     Trajectory check = runTrajectory(spec.params, "rk4", 2.0 * h, options, ref.times, cancel);
+    if (check.cancelled) return cancelledReference();
     ref.description = "rk4 at dt = " + formatShort(h) + " s (16x below the smallest studied step)";
     ref.positions = fine.positions;
     // The difference to the run at 2h bounds the error for any convergent method; for a
@@ -252,6 +268,11 @@ StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyR
     if (item.tolerance > 0.0) options.atol = options.rtol = item.tolerance;
     StudyRow row;
     row.item = item;
+    if (reference.cancelled || reference.positions.size() != reference.times.size()) {
+        row.ok = false;  // no reference to measure against (it was cancelled)
+        row.failure = "cancelled";
+        return row;
+    }
     std::vector<double> walls;
     Trajectory run;
     for (int r = 0; r < spec.repeat; ++r) {
@@ -289,6 +310,11 @@ StudyResult runStudy(const StudySpec& spec, const StudyProgressFn& progress, con
     const int total = static_cast<int>(items.size()) + 1;
     if (progress) progress({0, total, "reference"});
     result.reference = computeReference(spec, cancel);
+    if (result.reference.cancelled) {
+        result.cancelled = true;
+        if (progress) progress({total, total, "cancelled"});
+        return result;
+    }
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (cancel && cancel->load()) {
             result.cancelled = true;

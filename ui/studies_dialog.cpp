@@ -16,6 +16,8 @@
 #include <QPushButton>
 #include <QSplitter>
 #include <QTableWidget>
+
+#include "request.h"
 #include <QVBoxLayout>
 
 #include "export.h"
@@ -279,7 +281,11 @@ simcore::StudySpec WorkPrecisionDialog::spec() const {
 }
 
 QString WorkPrecisionDialog::validate() const {
-    if (auto problem = simcore::validateStudy(spec())) return QString::fromStdString(*problem);
+    try {
+        simlab::checkStudy(spec());  // the front door: the CLI's and Python's checks and bounds
+    } catch (const simlab::RequestError& e) {
+        return QString::fromStdString(e.what());
+    }
     return {};
 }
 
@@ -401,7 +407,11 @@ QString RefinementDialog::validate() const {
         t.toInt(&ok);
         if (!ok) return tr("Levels are whole numbers separated by spaces, got '%1'").arg(t);
     }
-    if (auto problem = simcore::validateRefinement(spec())) return QString::fromStdString(*problem);
+    try {
+        simlab::checkRefinement(spec());
+    } catch (const simlab::RequestError& e) {
+        return QString::fromStdString(e.what());
+    }
     return {};
 }
 
@@ -504,12 +514,25 @@ StabilityDialog::StabilityDialog(const simcore::ParameterSet& params, QWidget* p
 
 void StabilityDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
 
-void StabilityDialog::prepare() {
-    m_spec = simcore::StabilitySpec{};
-    m_spec.params = m_params;
-    for (const QString& name : chosenIntegrators()) m_spec.integrators.push_back(name.toStdString());
-    m_spec.duration = m_duration->text().toDouble() > 0 ? m_duration->text().toDouble() : 2.0;
+simcore::StabilitySpec StabilityDialog::spec() const {
+    simcore::StabilitySpec s;
+    s.params = m_params;
+    for (const QString& name : chosenIntegrators()) s.integrators.push_back(name.toStdString());
+    s.duration = simcore::parseNumber(m_duration->text().trimmed().toStdString()).value_or(0.0);
+    return s;
 }
+
+QString StabilityDialog::validate() const {
+    if (!(spec().duration > 0.0)) return tr("Duration must be a positive number of seconds");
+    try {
+        simlab::checkStability(spec());
+    } catch (const simlab::RequestError& e) {
+        return QString::fromStdString(e.what());
+    }
+    return {};
+}
+
+void StabilityDialog::prepare() { m_spec = spec(); }
 
 void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));

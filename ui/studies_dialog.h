@@ -155,12 +155,14 @@ public:
     void setDuration(double seconds);
 
 protected:
+    QString validate() const override;
     void prepare() override;
     void compute(const std::atomic<bool>* cancel) override;
     void present() override;
     QString csv() const override;
 
 private:
+    simcore::StabilitySpec spec() const;
     QLineEdit* m_duration = nullptr;
     simcore::StabilitySpec m_spec;
     simcore::LinearModes m_modes;

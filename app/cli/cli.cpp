@@ -60,45 +60,10 @@ void addSceneOptions(CLI::App& app, SceneArgs& args, bool withDt, bool withInteg
     if (withDt)
         app.add_option("--dt", args.dt, "time step [s] (same as --set dt=H; default: the scene's)")->type_name("H");
     if (withIntegrator)
-        app.add_option("--integrator", args.integrator, "integration method (default: the scene file's, else rk4)")
-            ->type_name("NAME")
-            ->check(CLI::Validator(
-                [](std::string& name) { return simcore::unknownIntegrator(name).value_or(std::string()); },
-                "{" + simcore::integratorNames() + "}"));
-}
-
-std::string sceneFileOf(const SceneArgs& args) {
-    return !simcore::findScene(args.scene) && args.scene.size() > 5 && args.scene.ends_with(".json") ? args.scene
-                                                                                                      : std::string();
-}
-
-SceneSetup sceneSetup(const SceneArgs& args) {
-    SceneSetup setup;
-    setup.sceneName = args.scene;
-    const simcore::SceneInfo* scene = simcore::findScene(setup.sceneName);
-    std::string fileIntegrator;
-    if (!sceneFileOf(args).empty()) {
-        // A scene file wherever a scene name is taken; --set, --dt, --integrator override it.
-        simcore::SceneFileResult read = simcore::readSceneFile(setup.sceneName);
-        if (!read.file) throw UsageError(read.error);
-        setup.sceneName = read.file->sceneName;
-        scene = simcore::findScene(setup.sceneName);
-        setup.params = read.file->params;
-        fileIntegrator = read.file->integrator;
-        setup.state = read.file->state;
-    } else if (!scene) {
-        throw UsageError(simcore::unknownSceneMessage(setup.sceneName) + ", or a scene file (.json)");
-    } else {
-        setup.params = simcore::ParameterSet(scene->kind);
-    }
-    for (const std::string& assignment : args.set)
-        if (auto error = setup.params.assign(assignment)) throw UsageError("--set " + *error);
-    if (args.dt)
-        if (auto error = setup.params.setFromText("dt", *args.dt)) throw UsageError("--" + *error);
-    setup.integrator = args.integrator.value_or(fileIntegrator.empty() ? "rk4" : fileIntegrator);
-    if (auto error = simcore::unknownIntegrator(setup.integrator)) throw UsageError(*error);
-    if (auto error = simcore::validateShape(setup.params, setup.integrator)) throw UsageError(*error);
-    return setup;
+        // Checked by the front door (simlab::resolveScene), in the words every door uses.
+        app.add_option("--integrator", args.integrator, "integration method (default: the scene file's, else rk4): " +
+                                                            simcore::integratorNames())
+            ->type_name("NAME");
 }
 
 void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& o) {
@@ -123,12 +88,6 @@ std::string stabilityWarning(const simcore::ParameterSet& params, std::string_vi
     char suggestion[64];
     std::snprintf(suggestion, sizeof suggestion, " (predicted stable: --dt %g)", advice->suggestedDt);
     return "warning: " + advice->message + suggestion;
-}
-
-// --- Files -------------------------------------------------------------------------------------
-
-void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs) {
-    if (auto clash = simcore::fileClash(inputsThenOutputs)) throw UsageError(*clash);
 }
 
 // --- Lists -------------------------------------------------------------------------------------
@@ -243,6 +202,12 @@ int runCommandLine(const std::vector<std::string>& argsIn, Mode mode) {
     for (const Command& command : commands) {
         if (!command.app->parsed()) continue;
         try {
+            // A file option given with an empty name ('' from an unset shell variable) is a
+            // mistake, never "no file": refused before anything else.
+            for (const CLI::Option* option : command.app->get_options())
+                if (option->count() > 0 && option->get_type_name().find("FILE") != std::string::npos)
+                    for (const std::string& value : option->results())
+                        simlab::checkOutputNamed(option->get_lnames().front(), value);
             command.check();
             if (mode == Mode::CheckOnly) return kExitOk;
             const int status = command.run();

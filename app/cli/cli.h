@@ -18,6 +18,7 @@
 
 #include "integrators.h"
 #include "params.h"
+#include "request.h"
 #include "scenefile.h"
 
 namespace cli {
@@ -25,14 +26,12 @@ namespace cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitFailed = 3;
-// The most steps one fixed-step run may take (1e9: about 3 days for the default ring on this
-// machine): more is a mistake in --dt or --duration, refused before it runs.
-inline constexpr double kMaxSteps = 1e9;
+// The most steps one fixed-step run may take: the front door's bound (simlab/request.h).
+inline constexpr double kMaxSteps = simlab::kMaxSteps;
 
-// Bad input: reported on one line, exit status 2.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+// Bad input: reported on one line, exit status 2. The front door's refusal (simlab/request.h),
+// so that a check made there and one made here read and exit alike.
+using UsageError = simlab::RequestError;
 
 // One command of the tool. `check` is the validation layer: it decides, before anything is
 // written or run, that the work is well formed and finite (throws UsageError); `run` does it.
@@ -55,24 +54,15 @@ std::unique_ptr<CLI::App> makeApp(std::vector<Command>& commands);
 
 // --- Option groups shared by several commands --------------------------------------------------
 
-// --scene S|FILE.json, --set key=value..., and optionally --dt H and --integrator NAME.
-struct SceneArgs {
-    std::string scene = "ring2d";
-    std::vector<std::string> set;
-    std::optional<std::string> dt;          // validated by the parameter table
-    std::optional<std::string> integrator;  // default: the scene file's, else rk4
-};
+// --scene S|FILE.json, --set key=value..., and optionally --dt H and --integrator NAME: the
+// front door's scene request, resolved and checked by simlab::resolveScene.
+using SceneArgs = simlab::SceneRequest;
 void addSceneOptions(CLI::App& app, SceneArgs& args, bool withDt = true, bool withIntegrator = true);
 
-struct SceneSetup {
-    simcore::ParameterSet params;
-    std::string sceneName;
-    std::string integrator = "rk4";
-    std::optional<simcore::SceneFile::State> state;  // from a scene file that saved one
-};
-SceneSetup sceneSetup(const SceneArgs& args);
+using SceneSetup = simlab::SceneSetup;
+inline SceneSetup sceneSetup(const SceneArgs& args) { return simlab::resolveScene(args); }
 // The scene file named by --scene, or empty when it names a built-in scene.
-std::string sceneFileOf(const SceneArgs& args);
+inline std::string sceneFileOf(const SceneArgs& args) { return simlab::sceneFileOf(args.scene); }
 
 // Integrator tunables: --atol, --rtol, --newton, --fixed-step, --error-estimate.
 void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& options);
@@ -84,13 +74,12 @@ CLI::Validator wholeIn(long min, long max);
 // The pre-run warning: dt above the explicit stability estimate (empty when none applies).
 std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator);
 
-// Outputs never overwrite an input or each other (issue 18): the files named, as (option, path)
-// pairs with inputs first and empty paths skipped, are compared by identity, not by spelling
-// (device and inode of an existing file, or of the folder a new one goes in and its name, so
-// links, "./" and ".." count). A clash is a UsageError naming both options, before anything is
-// written.
-using NamedPath = std::pair<std::string, std::string>;
-void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs);
+// Outputs never overwrite an input or each other, never a FIFO (simlab::checkFiles): a clash
+// is a UsageError naming both options, before anything is written.
+using NamedPath = simlab::NamedPath;
+inline void checkFiles(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs) {
+    simlab::checkFiles(inputs, outputs);
+}
 
 // Comma-separated lists: both refuse an empty list, an empty item and an item listed twice.
 std::vector<double> numberList(const std::string& option, const std::string& text);

@@ -60,23 +60,14 @@ struct RunArgs {
 };
 
 void checkRun(RunArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"state", args.state},
-                        {"save-scene", args.saveScene}});
+    checkFiles({{"scene", sceneFileOf(args.scene)}},
+               {{"csv", args.csv}, {"state", args.state}, {"save-scene", args.saveScene}});
     args.setup = sceneSetup(args.scene);
-    // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
-    // refused at once instead of running for ever.
-    if (!simcore::makeIntegrator(args.setup.integrator)->adaptive() || args.integrator.fixedStep) {
-        const double dt = args.setup.params.get(simcore::Param::Dt);
-        const double steps = std::ceil(args.duration / dt - 1e-9);
-        if (steps > args.maxSteps) {
-            char text[300];
-            std::snprintf(text, sizeof text,
-                          "--duration %g s at dt %g s would take %.3g steps; at most %.0f per run (use a larger --dt, "
-                          "a shorter --duration, or an adaptive integrator; --max-steps raises the limit)",
-                          args.duration, dt, steps, args.maxSteps);
-            throw UsageError(text);
-        }
-    }
+    simlab::RunRequest request;
+    request.duration = args.duration;
+    request.maxSteps = args.maxSteps;
+    request.options = args.integrator;
+    simlab::checkRun(args.setup, request);
 }
 
 int run(const RunArgs& args) {
