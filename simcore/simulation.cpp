@@ -1,4 +1,4 @@
-#include "simulation.h"
+#include "simcore/simulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "body_ode.h"
+#include "simcore/integrator_table.h"
+#include "simcore/internal/body_ode.h"
 
 namespace simcore {
 
@@ -55,8 +56,9 @@ Eigen::Map<const Eigen::Matrix3Xd> Simulation::velocities() const {
 
 void Simulation::build() {
     m_p = resolve(m_params);
-    m_body = buildBody(m_params);
-    m_scale = bodyScale(m_params, m_body);
+    ScaledBody scaled = buildScaledBody(m_params, m_p);
+    m_body = std::move(scaled.body);
+    m_scale = scaled.scale;
     const Topology& topo = m_body.topology;
     const int count = topo.particleCount();
     m_n = 3 * count;
@@ -91,7 +93,6 @@ void Simulation::setThreads(int threads) {
 }
 
 void Simulation::applyForceParams() {
-    m_p = resolve(m_params);
     ForceParams& p = m_forces.params;
     // The per-spring values this resolution uses (scaling.h; all factors 1 under scaling=thesis
     // and at the reference resolution).
@@ -540,6 +541,7 @@ std::optional<std::string> Simulation::setParameter(Param id, double value) {
     // stretch, a heavier particle more kinetic energy): book the jump as work by the edit.
     const double before = totalEnergyNow();
     m_params = next;
+    m_p = resolve(m_params);
     m_ode->dropEnd();
     m_restartIntegrator = true;
     if (spec.group == ParamGroup::Mass) applyMasses();
@@ -550,7 +552,7 @@ std::optional<std::string> Simulation::setParameter(Param id, double value) {
 }
 
 void Simulation::applyMasses() {
-    const Params::Shape shape = resolve(m_params).shape;
+    const Params::Shape& shape = m_p.shape;
     const Topology& topo = m_body.topology;
     for (int i = 0; i < topo.particleCount(); ++i) {
         const Layer l = topo.layer[static_cast<std::size_t>(i)];
@@ -600,6 +602,7 @@ void Simulation::restore(const SimulationSnapshot& s) {
     if (s.y.size() != m_y.size()) throw std::invalid_argument("the snapshot is of another body");
     // Parameters (live edits only: a shape edit rebuilds the body, and a new run begins).
     m_params = s.params;
+    m_p = resolve(m_params);
     applyMasses();
     applyForceParams();
     if (m_integrator->name() != s.integrator) {

@@ -1,4 +1,4 @@
-#include "output.h"
+#include "simlab/output.h"
 
 #include <sys/stat.h>
 
@@ -11,7 +11,14 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Diagnostics;
+using simcore::SceneKind;
+using simcore::Simulation;
+using simcore::hasGas;
+using simcore::layerName;
+using simcore::quoteShort;
 
 AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
     if (m_path.empty()) {
@@ -251,4 +258,4 @@ std::optional<std::string> fileClash(const std::vector<std::pair<std::string, st
     return std::nullopt;
 }
 
-}  // namespace simcore
+}  // namespace simlab

@@ -15,9 +15,9 @@
 #include <string_view>
 #include <vector>
 
-#include "simulation.h"
+#include "simcore/simulation.h"
 
-namespace simcore {
+namespace simlab {
 
 class AtomicFile {
 public:
@@ -53,21 +53,21 @@ std::optional<std::string> fileClash(const std::vector<std::pair<std::string, st
 // One CSV column: its header name and how to read it from the diagnostics.
 struct CsvColumn {
     std::string name;
-    std::function<double(const Diagnostics&)> value;
+    std::function<double(const simcore::Diagnostics&)> value;
 };
 
 // The time-series columns of a scene: only what the scene has (no gas columns in 1D). With
-// solverCounters (a CVODE integrator: Diagnostics::hasSolverCounters) the solver's cumulative
+// solverCounters (a CVODE integrator: simcore::Diagnostics::hasSolverCounters) the solver's cumulative
 // counters follow: force_evals (every force evaluation and every Jacobian-vector product),
 // solver_steps, rhs_evals, jac_products, linear_iterations, precond_iterations,
 // nonlinear_iterations, error_test_failures, convergence_failures, reinits, order, step_size.
-std::vector<CsvColumn> timeSeriesColumns(SceneKind kind, bool solverCounters = false);
+std::vector<CsvColumn> timeSeriesColumns(simcore::SceneKind kind, bool solverCounters = false);
 std::string csvHeader(const std::vector<CsvColumn>& columns);
-std::string csvRow(const std::vector<CsvColumn>& columns, const Diagnostics& d);
+std::string csvRow(const std::vector<CsvColumn>& columns, const simcore::Diagnostics& d);
 // Shortest text that reads back to the same double.
 std::string formatDouble(double value);
 
 // index,layer,x,y,z,vx,vy,vz: one row per particle.
-std::string stateTable(const Simulation& sim);
+std::string stateTable(const simcore::Simulation& sim);
 
-}  // namespace simcore
+}  // namespace simlab

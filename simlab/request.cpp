@@ -1,4 +1,4 @@
-#include "request.h"
+#include "simlab/request.h"
 
 #include <sys/stat.h>
 
@@ -7,12 +7,13 @@
 #include <cstdio>
 #include <set>
 
-#include "body.h"
-#include "output.h"
-#include "refinement.h"
-#include "scenes.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/body.h"
+#include "simcore/integrator_table.h"
+#include "simcore/scenes.h"
+#include "simlab/output.h"
+#include "simlab/refinement.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
 namespace simlab {
 
@@ -65,7 +66,7 @@ SceneSetup resolveScene(const SceneRequest& request) {
     if (!setup.sceneFile.empty()) {
         // A scene file wherever a scene name is taken; the assignments, dt and the integrator
         // override what it holds.
-        simcore::SceneFileResult read = simcore::readSceneFile(setup.sceneFile);
+        simlab::SceneFileResult read = simlab::readSceneFile(setup.sceneFile);
         if (!read.file) refuse(read.error);
         setup.sceneName = read.file->sceneName;
         setup.params = read.file->params;
@@ -128,7 +129,7 @@ void checkFiles(const std::vector<NamedPath>& inputs, const std::vector<NamedPat
                    "; an output is a regular file, a terminal or another character device");
         all.push_back(out);
     }
-    refuseIf(simcore::fileClash(all));
+    refuseIf(simlab::fileClash(all));
 }
 
 // --- the work ----------------------------------------------------------------------------------------
@@ -163,44 +164,44 @@ void checkIntegrators(const std::vector<std::string>& names) {
     }
 }
 
-void checkStudy(const simcore::StudySpec& spec) {
+void checkStudy(const simlab::StudySpec& spec) {
     checkIntegrators(spec.integrators);
-    refuseIf(simcore::validateStudy(spec));
+    refuseIf(simlab::validateStudy(spec));
     for (const std::string& name : spec.integrators) refuseIf(simcore::validateShape(spec.params, name));
     // Every run, the reference (16x below the smallest step) and its check run bounded.
     const double T = spec.duration;
     for (double dt : spec.dts)
         checkSteps(T / dt, "a run at dt " + number(dt) + " s over duration " + number(T) + " s",
                    "larger steps or a shorter duration");
-    if (const double h = simcore::studyReferenceStep(spec); h > 0.0)
+    if (const double h = simlab::studyReferenceStep(spec); h > 0.0)
         checkSteps(T / h,
                    "the rk4 reference at dt " + number(h) + " s (16x below the smallest step) over duration " + number(T) + " s",
                    spec.dts.empty() ? "give larger steps with dts, a shorter duration, or reference rk45 or cvode-bdf"
                                     : "larger steps or a shorter duration");
     // Held: the reference's positions on the grid, a run's and the reference's check run.
     const double particles = static_cast<double>(simcore::bodySize(spec.params).particles);
-    const double samples = static_cast<double>(simcore::studyGrid(spec).size());
+    const double samples = static_cast<double>(simlab::studyGrid(spec).size());
     checkHeld(3.0 * samples * particles * 3.0 * 8.0,
               "the study's trajectories (" + number(samples) + " samples of " + number(particles) + " particles)",
               "fewer samples or a smaller body");
 }
 
-void checkRefinement(const simcore::RefinementSpec& spec) {
-    refuseIf(simcore::validateRefinement(spec));
+void checkRefinement(const simlab::RefinementSpec& spec) {
+    refuseIf(simlab::validateRefinement(spec));
     const double T = spec.duration;
     const double points = std::round(T / spec.interval) + 1.0;
     const double runs = static_cast<double>(spec.values.size()) + spec.temporalRuns + 1.0;
     checkHeld(points * runs * 64.0, "the refinement's output grid (" + number(points) + " times, " + number(runs) + " runs)",
               "a longer interval or a shorter duration");
     for (int value : spec.values)
-        refuseIf(simcore::validateShape(simcore::refinementLevel(spec, value), spec.integrator));
-    const auto [dt, rule] = simcore::refinementStep(spec);
+        refuseIf(simcore::validateShape(simlab::refinementLevel(spec, value), spec.integrator));
+    const auto [dt, rule] = simlab::refinementStep(spec);
     if (dt > 0.0 && !(spec.integrator == "rk45" && !spec.options.fixedStep))
         checkSteps(T / dt, "each level at dt " + number(dt) + " s over duration " + number(T) + " s",
                    "a larger dt or a shorter duration");
 }
 
-void checkStability(const simcore::StabilitySpec& spec) {
+void checkStability(const simlab::StabilitySpec& spec) {
     checkIntegrators(spec.integrators);
     if (spec.hMax < spec.hMin) refuse("hmax " + number(spec.hMax) + " s is below hmin " + number(spec.hMin) + " s");
     // A trial at the smallest step takes duration / hmin steps.

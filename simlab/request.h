@@ -20,17 +20,15 @@
 #include <utility>
 #include <vector>
 
-#include "integrators.h"
-#include "params.h"
-#include "scenefile.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simlab/scenefile.h"
 
-namespace simcore {
+namespace simlab {
+
 struct StudySpec;
 struct RefinementSpec;
 struct StabilitySpec;
-}  // namespace simcore
-
-namespace simlab {
 
 // Bad input: the message names the problem and what is allowed.
 struct RequestError : std::invalid_argument {
@@ -71,8 +69,8 @@ struct SceneSetup {
     std::string sceneName;
     std::string sceneFile;  // the file read, or empty for a built-in scene
     std::string integrator = "rk4";
-    std::optional<simcore::SceneFile::State> state;  // from a scene file that saved one
-    std::optional<simcore::SceneFile> file;          // the scene file as read (before the overrides)
+    std::optional<SceneFile::State> state;  // from a scene file that saved one
+    std::optional<SceneFile> file;          // the scene file as read (before the overrides)
 };
 
 // The scene file a scene argument names, or empty when it names a built-in scene.
@@ -112,11 +110,11 @@ void checkRun(const SceneSetup& scene, const RunRequest& run);
 
 // A work-precision study: validateStudy, then its references and runs bounded in steps and
 // in memory (the reference trajectory and one run's, samples x particles each).
-void checkStudy(const simcore::StudySpec& spec);
+void checkStudy(const StudySpec& spec);
 // A refinement study: validateRefinement, its levels and output grid bounded.
-void checkRefinement(const simcore::RefinementSpec& spec);
+void checkRefinement(const RefinementSpec& spec);
 // A stability scan: hmin <= hmax, a trial at hmin within kMaxSteps and at least kMinTrialSteps.
-void checkStability(const simcore::StabilitySpec& spec);
+void checkStability(const StabilitySpec& spec);
 // Restitution at these impact speeds: each run (10 s at min(dt, 3e-4 s / speed)) bounded.
 void checkRestitution(const simcore::ParameterSet& params, const std::vector<double>& speeds);
 

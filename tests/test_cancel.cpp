@@ -13,9 +13,9 @@
 
 #include <QtTest>
 
-#include "refinement.h"
-#include "stability.h"
-#include "study.h"
+#include "simlab/refinement.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
 namespace {
 
@@ -43,7 +43,7 @@ class TestCancel : public QObject {
 
 private slots:
     void studyCancelledAnywhere() {
-        simcore::StudySpec spec;
+        simlab::StudySpec spec;
         spec.params = simcore::ParameterSet(simcore::SceneKind::Ring2d);
         spec.integrators = {"euler", "rk4", "rk45"};
         spec.dts = {0.002, 0.001};
@@ -52,8 +52,8 @@ private slots:
         spec.samples = 10;
         int cancelledInReference = 0;
         for (int k = 0; k < kInstants; ++k) {
-            const simcore::StudyResult r =
-                cancelledAfter(instant(k), [&](const std::atomic<bool>* c) { return simcore::runStudy(spec, {}, c); });
+            const simlab::StudyResult r =
+                cancelledAfter(instant(k), [&](const std::atomic<bool>* c) { return simlab::runStudy(spec, {}, c); });
             if (r.reference.cancelled) {
                 ++cancelledInReference;
                 QVERIFY(r.cancelled);
@@ -62,23 +62,23 @@ private slots:
                 continue;
             }
             QCOMPARE(r.reference.positions.size(), r.reference.times.size());
-            for (const simcore::StudyRow& row : r.rows)
+            for (const simlab::StudyRow& row : r.rows)
                 QVERIFY2(row.ok || row.failure == "cancelled", row.failure.c_str());
             if (!r.cancelled) QCOMPARE(r.rows.size(), std::size_t{6});
         }
         // The first instant (0: cancelled before the reference's first step) always lands in it.
         QVERIFY(cancelledInReference >= 1);
         // A row asked for with a cancelled reference is a cancelled row, never a read of nothing.
-        simcore::StudyReference none;
+        simlab::StudyReference none;
         none.cancelled = true;
         none.times = {0.1, 0.2};
-        const simcore::StudyRow row = simcore::runStudyItem(spec, {"rk4", 0.001, -1.0}, none);
+        const simlab::StudyRow row = simlab::runStudyItem(spec, {"rk4", 0.001, -1.0}, none);
         QVERIFY(!row.ok);
         QCOMPARE(row.failure, std::string("cancelled"));
     }
 
     void refinementCancelledAnywhere() {
-        simcore::RefinementSpec spec;
+        simlab::RefinementSpec spec;
         spec.params = simcore::ParameterSet(simcore::SceneKind::Ring2d);
         spec.key = "particles";
         spec.values = {12, 24, 48};
@@ -86,24 +86,24 @@ private slots:
         spec.interval = 0.01;
         spec.temporalRuns = 2;
         for (int k = 0; k < kInstants; ++k) {
-            const simcore::RefinementResult r =
-                cancelledAfter(instant(k), [&](const std::atomic<bool>* c) { return simcore::runRefinement(spec, {}, c); });
+            const simlab::RefinementResult r =
+                cancelledAfter(instant(k), [&](const std::atomic<bool>* c) { return simlab::runRefinement(spec, {}, c); });
             if (!r.cancelled) QCOMPARE(r.rows.size(), std::size_t{3});
-            for (const simcore::RefinementRow& row : r.rows) QVERIFY(row.particles > 0);
+            for (const simlab::RefinementRow& row : r.rows) QVERIFY(row.particles > 0);
         }
     }
 
     void stabilityScanCancelledAnywhere() {
-        simcore::StabilitySpec spec;
+        simlab::StabilitySpec spec;
         spec.params = simcore::ParameterSet(simcore::SceneKind::Ring2d);
         spec.integrators = {"euler", "rk4"};
         spec.duration = 0.5;
-        const simcore::LinearModes modes = simcore::linearModes(spec.params);
+        const simlab::LinearModes modes = simlab::linearModes(spec.params);
         for (int k = 0; k < kInstants; ++k) {
             const auto rows = cancelledAfter(
-                instant(k), [&](const std::atomic<bool>* c) { return simcore::runStability(spec, modes, {}, c); });
+                instant(k), [&](const std::atomic<bool>* c) { return simlab::runStability(spec, modes, {}, c); });
             QVERIFY(rows.size() <= spec.integrators.size());
-            for (const simcore::StabilityRow& row : rows) QVERIFY(row.stable >= 0.0 && !std::isnan(row.unstable));
+            for (const simlab::StabilityRow& row : rows) QVERIFY(row.stable >= 0.0 && !std::isnan(row.unstable));
         }
     }
 };

@@ -1,4 +1,4 @@
-#include "cli.h"
+#include "app/cli/cli.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -8,20 +8,21 @@
 #include <iostream>
 
 #include "elastic_lab_version.h"
-#include "integrators.h"
-#include "output.h"
-#include "scenefile.h"
-#include "scenes.h"
-#include "simulation.h"
-#include "stability.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/scenes.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
+#include "simlab/scenefile.h"
+#include "simlab/stability.h"
 
 namespace cli {
 
 // --- Validators --------------------------------------------------------------------------------
 
 CLI::Validator finiteIn(double min, double max, bool minExclusive) {
-    const std::string range = std::string(minExclusive ? "(" : "[") + simcore::formatDouble(min) + ", " +
-                              simcore::formatDouble(max) + "]";
+    const std::string range = std::string(minExclusive ? "(" : "[") + simlab::formatDouble(min) + ", " +
+                              simlab::formatDouble(max) + "]";
     return CLI::Validator(
         [=](std::string& text) -> std::string {
             const auto v = simcore::parseNumber(text);
@@ -83,7 +84,7 @@ void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& o) {
 
 std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator) {
     simcore::Simulation sim(params, integrator);
-    const auto advice = simcore::stabilityAdvice(sim);
+    const auto advice = simlab::stabilityAdvice(sim);
     if (!advice) return {};
     char suggestion[64];
     std::snprintf(suggestion, sizeof suggestion, " (predicted stable: --dt %g)", advice->suggestedDt);

@@ -16,10 +16,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "integrators.h"
-#include "params.h"
-#include "request.h"
-#include "scenefile.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simlab/request.h"
+#include "simlab/scenefile.h"
 
 namespace cli {
 

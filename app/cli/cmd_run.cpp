@@ -4,9 +4,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli.h"
-#include "output.h"
-#include "simulation.h"
+#include "app/cli/cli.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
 
 namespace cli {
 
@@ -75,24 +76,24 @@ int run(const RunArgs& args) {
     const double duration = args.duration;
     const long every = args.every;
     // Open every output before running: an unwritable path is bad input, found at once.
-    std::unique_ptr<simcore::AtomicFile> csv, state, sceneOut;
+    std::unique_ptr<simlab::AtomicFile> csv, state, sceneOut;
     for (auto [path, file] : {std::pair{&args.csv, &csv}, {&args.state, &state}, {&args.saveScene, &sceneOut}}) {
         if (path->empty()) continue;
-        *file = std::make_unique<simcore::AtomicFile>(*path);
+        *file = std::make_unique<simlab::AtomicFile>(*path);
         if (!(*file)->ok()) throw UsageError((*file)->error());
     }
 
     simcore::Simulation sim(setup.params, setup.integrator);
     sim.setIntegratorOptions(args.integrator);
     if (setup.state)  // resume a saved experiment
-        if (auto error = simcore::applyState(sim, *setup.state)) throw UsageError(*error);
+        if (auto error = simlab::applyState(sim, *setup.state)) throw UsageError(*error);
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
-    const auto columns = simcore::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters);
+    const auto columns = simlab::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters);
     if (csv) {
-        csv->write(simcore::csvHeader(columns));
-        csv->write(simcore::csvRow(columns, sim.diagnostics()));
+        csv->write(simlab::csvHeader(columns));
+        csv->write(simlab::csvRow(columns, sim.diagnostics()));
     }
     const auto start = std::chrono::steady_clock::now();
     const double tEnd = sim.time() + duration;  // a resumed run continues from its saved time
@@ -104,15 +105,15 @@ int run(const RunArgs& args) {
         if (!sim.step(tEnd)) break;
         const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
         if (csv && (sim.stepCount() % every == 0 || last))
-            csv->write(simcore::csvRow(columns, sim.diagnostics()));
+            csv->write(simlab::csvRow(columns, sim.diagnostics()));
         if (static_cast<double>(sim.stepCount() - firstStep) >= args.maxSteps && !last) {
             tooManySteps = true;
             break;
         }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (state) state->write(simcore::stateTable(sim));
-    if (sceneOut) sceneOut->write(simcore::sceneFileText(sim, setup.sceneName, true));
+    if (state) state->write(simlab::stateTable(sim));
+    if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
 
     for (auto* file : {csv.get(), state.get(), sceneOut.get()})
         if (file && !file->commit()) {

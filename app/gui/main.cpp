@@ -25,25 +25,27 @@
 #include <QSurfaceFormat>
 #include <QTimer>
 
-#include "body.h"
 #include "elastic_lab_version.h"
-#include "export.h"
-#include "lessons.h"
-#include "lessons_dialog.h"
-#include "integrators.h"
-#include "output.h"
-#include "params.h"
-#include "main_window.h"
-#include "parameter_dock.h"
-#include "plot_dock.h"
-#include "run_dock.h"
-#include "presets.h"
-#include "request.h"
-#include "scenefile.h"
-#include "scenes.h"
-#include "simulation_controller.h"
-#include "stability_map_dock.h"
-#include "viewport.h"
+#include "simcore/body.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simcore/scaling.h"
+#include "simcore/scenes.h"
+#include "simlab/output.h"
+#include "simlab/request.h"
+#include "simlab/scenefile.h"
+#include "ui/export.h"
+#include "ui/lessons.h"
+#include "ui/lessons_dialog.h"
+#include "ui/main_window.h"
+#include "ui/parameter_dock.h"
+#include "ui/plot_dock.h"
+#include "ui/presets.h"
+#include "ui/run_dock.h"
+#include "ui/simulation_controller.h"
+#include "ui/stability_map_dock.h"
+#include "ui/viewport.h"
 
 namespace {
 
@@ -191,7 +193,7 @@ int main(int argc, char** argv) {
     } catch (const simlab::RequestError& e) {
         return fail(QString::fromStdString(e.what()));
     }
-    const std::optional<simcore::SceneFile>& file = setup.file;
+    const std::optional<simlab::SceneFile>& file = setup.file;
     const simcore::ParameterSet& params = setup.params;
     QStringList integrators{QString::fromStdString(setup.integrator)};
     if (preset && !parser.isSet(integratorOpt) && !file) integrators = preset->integrators;
@@ -271,7 +273,7 @@ int main(int argc, char** argv) {
         if (!suffix.isEmpty() && !QImageWriter::supportedImageFormats().contains(suffix))
             return fail(QStringLiteral("--screenshot %1: this build cannot write .%2 images; use .png")
                             .arg(quoted(shotPath, 200), QString::fromLatin1(suffix)));
-        const simcore::AtomicFile probe(shotPath.toStdString());  // discarded: nothing is written
+        const simlab::AtomicFile probe(shotPath.toStdString());  // discarded: nothing is written
         if (!probe.ok()) return fail(QStringLiteral("--screenshot ") + QString::fromStdString(probe.error()));
     }
     int selected = -1;
@@ -315,7 +317,7 @@ int main(int argc, char** argv) {
     elui::SimulationController* controller = window.controller();
     if (parser.isSet(doublingOpt)) window.runDock()->findChild<QCheckBox*>(QStringLiteral("stepDoubling"))->setChecked(true);
     if (file) {
-        simcore::SceneFile changed = *file;
+        simlab::SceneFile changed = *file;
         changed.params = params;
         changed.integrator = integrators.front().toStdString();
         window.openScene(changed, integrators, sceneArg, &*file);
