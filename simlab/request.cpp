@@ -10,10 +10,12 @@
 #include "simcore/body.h"
 #include "simcore/integrator_table.h"
 #include "simcore/scenes.h"
+#include "simlab/conservation.h"
 #include "simlab/output.h"
 #include "simlab/refinement.h"
 #include "simlab/stability.h"
 #include "simlab/study.h"
+#include "simlab/sweep.h"
 
 namespace simlab {
 
@@ -122,8 +124,10 @@ void checkFiles(const std::vector<NamedPath>& inputs, const std::vector<NamedPat
         if (out.second.empty()) continue;
         // What an existing output is: a FIFO would block the tool (or a reader) for ever, a
         // folder or socket cannot hold a table.
+        // A standard stream already open (--csv - or /dev/stdout into a pipe) never blocks.
         struct stat st {};
-        if (::stat(out.second.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISCHR(st.st_mode))
+        if (!simlab::standardStream(out.second) && ::stat(out.second.c_str(), &st) == 0 && !S_ISREG(st.st_mode) &&
+            !S_ISCHR(st.st_mode))
             refuse("--" + out.first + " " + quoted(out.second, 200) + " is " +
                    (S_ISDIR(st.st_mode) ? "a folder" : S_ISFIFO(st.st_mode) ? "a FIFO" : "not a regular file") +
                    "; an output is a regular file, a terminal or another character device");
@@ -151,6 +155,12 @@ void checkRun(const SceneSetup& scene, const RunRequest& run) {
         checkHeld(rows * std::max(1, run.rowColumns) * 8.0,
                   "a row every " + std::to_string(run.rowsEvery) + " steps over " + number(fixed ? steps : run.maxSteps) +
                       " steps",
+                  "a larger every, or a shorter duration");
+    }
+    if (run.sampleEvery > 0.0) {
+        const double rows = std::floor(run.duration / run.sampleEvery + 1e-9) + 2.0;
+        checkHeld(rows * std::max(1, run.rowColumns) * 8.0,
+                  "a row every " + number(run.sampleEvery) + " s over " + number(run.duration) + " s",
                   "a larger every, or a shorter duration");
     }
 }
@@ -216,6 +226,14 @@ void checkStability(const simlab::StabilitySpec& spec) {
                number(kMinTrialSteps * spec.hMin) + " s or more, or lower hmin)");
     for (const std::string& name : spec.integrators) refuseIf(simcore::validateShape(spec.params, name));
 }
+
+void checkConservation(const simlab::ConservationSpec& spec) {
+    checkIntegrators(spec.integrators);
+    refuseIf(simlab::validateConservation(spec));
+    for (const std::string& name : spec.integrators) refuseIf(simcore::validateShape(spec.params, name));
+}
+
+void checkSweep(simlab::SweepSpec& spec) { refuseIf(simlab::validateSweep(spec)); }
 
 void checkRestitution(const simcore::ParameterSet& params, const std::vector<double>& speeds) {
     for (double speed : speeds) {

@@ -29,6 +29,8 @@ namespace simlab {
 struct StudySpec;
 struct RefinementSpec;
 struct StabilitySpec;
+struct ConservationSpec;
+struct SweepSpec;
 
 // Bad input: the message names the problem and what is allowed.
 struct RequestError : std::invalid_argument {
@@ -103,6 +105,7 @@ struct RunRequest {
     double duration = 5.0;
     double maxSteps = kMaxSteps;
     long rowsEvery = 0;   // 0: rows are streamed to a file, not held
+    double sampleEvery = 0.0;  // > 0: a row held every so many seconds of simulated time
     int rowColumns = 0;   // columns of a held row
     simcore::IntegratorOptions options;
 };
@@ -117,6 +120,13 @@ void checkRefinement(const RefinementSpec& spec);
 void checkStability(const StabilitySpec& spec);
 // Restitution at these impact speeds: each run (10 s at min(dt, 3e-4 s / speed)) bounded.
 void checkRestitution(const simcore::ParameterSet& params, const std::vector<double>& speeds);
+
+// Long-time energy (conservation): validateConservation, each integrator's memory. The step
+// count needs the scene's fastest mode; runConservation refuses it (a RequestError, before any
+// step) when above kMaxSteps.
+void checkConservation(const ConservationSpec& spec);
+// A sweep: validateSweep (its points, every point's body, max_steps at most kMaxSteps per point).
+void checkSweep(SweepSpec& spec);
 
 // The integrators a scan or study names: each known.
 void checkIntegrators(const std::vector<std::string>& names);

@@ -72,7 +72,7 @@ private slots:
         simlab::StudyReference none;
         none.cancelled = true;
         none.times = {0.1, 0.2};
-        const simlab::StudyRow row = simlab::runStudyItem(spec, {"rk4", 0.001, -1.0}, none);
+        const simlab::StudyRow row = simlab::runStudyItem(spec, {"rk4", "double", 0.001, -1.0}, none);
         QVERIFY(!row.ok);
         QCOMPARE(row.failure, std::string("cancelled"));
     }

@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "elastic_lab_version.h"
 #include "simcore/integrator_table.h"
@@ -91,6 +96,102 @@ std::string stabilityWarning(const simcore::ParameterSet& params, std::string_vi
     return "warning: " + advice->message + suggestion;
 }
 
+// --- Output forms ------------------------------------------------------------------------------
+
+void addJsonFlag(CLI::App& app, bool& json) {
+    app.add_flag("--json", json, "print the result as JSON on standard output instead of text");
+}
+
+void printJsonText(const std::string& text) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fputc('\n', stdout);
+}
+
+namespace {
+// `--csv -`: the CSV goes to the standard output the tool was started with, through a copy of
+// that descriptor taken when the option is parsed; before the command runs, standard output is
+// pointed at standard error, so that the command's report (run's summary, study's table) never
+// mixes with the rows.
+int g_csvStdout = -1;
+}  // namespace
+
+CLI::Option* addCsvOption(CLI::App& app, std::string& path, const std::string& help) {
+    return app.add_option("--csv", path, help + " (- for standard output; the report then goes to standard error)")
+        ->type_name("FILE|-")
+        ->transform(CLI::Validator(
+            [](std::string& text) {
+                if (text != "-") return std::string();
+                if (g_csvStdout < 0) g_csvStdout = ::fcntl(1, F_DUPFD_CLOEXEC, 3);
+                if (g_csvStdout < 0) return std::string("cannot use standard output: ") + std::strerror(errno);
+                text = "/dev/fd/" + std::to_string(g_csvStdout);  // a pipe or terminal: written in place
+                return std::string();
+            },
+            ""));
+}
+
+// --- Long commands: signals and progress ------------------------------------------------------
+
+namespace {
+volatile std::sig_atomic_t g_stopSignal = 0;
+extern "C" void onStopSignal(int signal) { g_stopSignal = signal; }
+struct sigaction g_previous[2];
+constexpr int kStopSignals[2] = {SIGINT, SIGTERM};
+}  // namespace
+
+StopSignals::StopSignals() {
+    g_stopSignal = 0;
+    for (int i = 0; i < 2; ++i) {
+        struct sigaction action {};
+        action.sa_handler = onStopSignal;
+        sigemptyset(&action.sa_mask);
+        ::sigaction(kStopSignals[i], nullptr, &g_previous[i]);
+        if (g_previous[i].sa_handler == SIG_IGN) continue;  // started ignoring it: keep ignoring
+        ::sigaction(kStopSignals[i], &action, nullptr);
+    }
+}
+
+StopSignals::~StopSignals() {
+    for (int i = 0; i < 2; ++i) ::sigaction(kStopSignals[i], &g_previous[i], nullptr);
+}
+
+int StopSignals::caught() const { return g_stopSignal; }
+
+const char* StopSignals::name(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"; }
+
+namespace {
+double wallNow() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+}  // namespace
+
+ProgressLine::ProgressLine(bool quiet) : m_enabled(!quiet && ::isatty(2) == 1), m_start(wallNow()) {}
+
+ProgressLine::~ProgressLine() { clear(); }
+
+void ProgressLine::update(double done, double total, const char* unit, long steps) {
+    if (!m_enabled || (m_calls++ & 63u) != 0) return;
+    const double now = wallNow();
+    if (m_last >= 0.0 && now - m_last < 0.25) return;
+    m_last = now;
+    const double elapsed = now - m_start;
+    const double fraction = total > 0.0 ? std::clamp(done / total, 0.0, 1.0) : 0.0;
+    char line[160];
+    int n = std::snprintf(line, sizeof line, "%.4g / %.4g %s (%.0f %%), step %ld, %.0f s", done, total, unit,
+                          100.0 * fraction, steps, elapsed);
+    if (fraction > 0.01 && elapsed > 1.0)
+        n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), ", about %.0f s left",
+                           elapsed * (1.0 - fraction) / fraction);
+    const std::size_t width = static_cast<std::size_t>(std::max(n, 0));
+    std::fprintf(stderr, "\r%s%*s", line, static_cast<int>(m_width > width ? m_width - width : 0), "");
+    std::fflush(stderr);
+    m_width = std::max(m_width, width);
+}
+
+void ProgressLine::clear() {
+    if (!m_enabled || m_width == 0) return;
+    std::fprintf(stderr, "\r%*s\r", static_cast<int>(m_width), "");
+    std::fflush(stderr);
+    m_width = 0;
+}
+
 // --- Lists -------------------------------------------------------------------------------------
 
 std::vector<double> numberList(const std::string& option, const std::string& text) {
@@ -127,7 +228,7 @@ std::unique_ptr<CLI::App> makeApp(std::vector<Command>& commands) {
     app->get_formatter()->column_width(34);
     app->footer("`elastic-lab-cli COMMAND --help` lists a command's options with units and defaults.\n"
                 "Exit status: 0 success, 2 bad input (one line naming the problem), 3 the simulation failed.");
-    for (auto add : {addScenesCommand, addParamsCommand, addIntegratorsCommand, addRunCommand, addStudyCommand,
+    for (auto add : {addScenesCommand, addParamsCommand, addIntegratorsCommand, addRunCommand, addStudyCommand, addConservationCommand, addSweepCommand,
                      addStabilityCommand, addRestitutionCommand, addGalleryCommand, addBenchCommand,
                      addCompletionCommand})
         commands.push_back(add(*app));
@@ -162,7 +263,27 @@ std::string parseErrorText(const CLI::ParseError& e, const CLI::App& app, const 
     if (dynamic_cast<const CLI::ExtrasError*>(&e))
         text += chosen.empty() ? "; allowed: --help, --version, or a command: " + commandNames(app)
                                : "; " + chosen.front()->get_name() + " takes " + optionNames(*chosen.front());
-    return text;
+    // CLI11 echoes the values it refuses raw: every argument it quoted is quoted and cut by the
+    // one helper (a 100 kB value with escape sequences stays one short, inert line).
+    std::vector<std::string> longest = args;
+    std::sort(longest.begin(), longest.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    for (const std::string& arg : longest) {
+        const std::string value = arg.substr(arg.find('=') == std::string::npos || !arg.starts_with("--") ? 0 : arg.find('=') + 1);
+        const bool plain = value.size() <= 40 && std::all_of(value.begin(), value.end(), [](char c) {
+                               return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+                           });
+        if (plain || value.empty()) continue;
+        for (std::size_t at = 0; (at = text.find(value, at)) != std::string::npos;) {
+            const std::string q = simcore::quoteShort(value);
+            text.replace(at, value.size(), q);
+            at += q.size();
+        }
+    }
+    // Whatever is left (a value CLI11 altered) still never reaches the terminal raw or whole.
+    const bool inert = text.size() <= 1000 && std::all_of(text.begin(), text.end(), [](char c) {
+                           return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+                       });
+    return inert ? text : simcore::quoteShort(text, 1000);
 }
 
 bool stdoutWritten() {
@@ -185,6 +306,8 @@ int runCommandLine(const std::vector<std::string>& argsIn, Mode mode) {
         args.erase(args.begin());
         args.emplace_back("--help");
     }
+    if (g_csvStdout >= 0) ::close(g_csvStdout);  // a previous call's (the fuzz target calls again)
+    g_csvStdout = -1;
     std::vector<Command> commands;
     const std::unique_ptr<CLI::App> app = makeApp(commands);
     try {
@@ -209,9 +332,26 @@ int runCommandLine(const std::vector<std::string>& argsIn, Mode mode) {
                 if (option->count() > 0 && option->get_type_name().find("FILE") != std::string::npos)
                     for (const std::string& value : option->results())
                         simlab::checkOutputNamed(option->get_lnames().front(), value);
-            command.check();
+            try {
+                command.check();
+            } catch (const std::bad_alloc&) {  // a request too large to even check
+                std::fprintf(stderr, "error: out of memory while checking the request; ask for less (a smaller body, "
+                                     "fewer samples, a smaller file)\n");
+                return kExitBadInput;
+            }
             if (mode == Mode::CheckOnly) return kExitOk;
-            const int status = command.run();
+            if (g_csvStdout >= 0) {  // --csv -: the report to standard error
+                std::fflush(stdout);
+                ::dup2(2, 1);
+            }
+            int status = kExitFailed;
+            try {
+                status = command.run();
+            } catch (const std::bad_alloc&) {  // the work ran out of memory: a failed run, exit 3
+                std::fprintf(stderr, "error: out of memory during the run (the machine or its limits gave less than "
+                                     "the request needs; docs/reliability.md)\n");
+                return kExitFailed;
+            }
             return stdoutWritten() ? status : kExitBadInput;
         } catch (const UsageError& e) {
             std::fprintf(stderr, "error: %s\n", e.what());

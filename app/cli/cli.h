@@ -67,6 +67,17 @@ inline std::string sceneFileOf(const SceneArgs& args) { return simlab::sceneFile
 // Integrator tunables: --atol, --rtol, --newton, --fixed-step, --error-estimate.
 void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& options);
 
+// --json: print the command's result as JSON on standard output (instead of text).
+void addJsonFlag(CLI::App& app, bool& json);
+// Writes a JSON value (nlohmann::ordered_json, passed as its text) and a newline to stdout.
+void printJsonText(const std::string& text);
+template <class Json>
+void printJson(const Json& value) {
+    printJsonText(value.dump(2));
+}
+// A CSV output option: FILE, or - for standard output (written in place, never replaced).
+CLI::Option* addCsvOption(CLI::App& app, std::string& path, const std::string& help);
+
 // Number validators for CLI11 options: finite numbers in a range, whole numbers in a range.
 CLI::Validator finiteIn(double min, double max, bool minExclusive);
 CLI::Validator wholeIn(long min, long max);
@@ -81,6 +92,40 @@ inline void checkFiles(const std::vector<NamedPath>& inputs, const std::vector<N
     simlab::checkFiles(inputs, outputs);
 }
 
+// Ctrl+C (SIGINT) and SIGTERM (a Slurm time limit, a container stop) during a long command:
+// while one of these lives, the signal only sets a flag the command polls between whole steps;
+// the command then writes its outputs so far and exits 128 + the signal (130, 143). A signal
+// the tool was started ignoring (a background job's SIGINT) stays ignored. The previous
+// handlers come back at destruction.
+class StopSignals {
+public:
+    StopSignals();
+    ~StopSignals();
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+    // The signal caught, or 0.
+    int caught() const;
+    static const char* name(int signal);
+};
+
+// A progress line on standard error, rewritten in place ("\r"), only on a terminal and unless
+// quiet; cleared at the end. update() is cheap: it looks at the clock every 64 calls and writes
+// at most 4 times a second.
+class ProgressLine {
+public:
+    explicit ProgressLine(bool quiet);
+    ~ProgressLine();
+    bool enabled() const { return m_enabled; }
+    void update(double done, double total, const char* unit, long steps);
+    void clear();
+
+private:
+    bool m_enabled = false;
+    unsigned m_calls = 0;
+    double m_start = 0.0, m_last = -1.0;
+    std::size_t m_width = 0;
+};
+
 // Comma-separated lists: both refuse an empty list, an empty item and an item listed twice.
 std::vector<double> numberList(const std::string& option, const std::string& text);
 std::vector<std::string> nameList(const std::string& option, const std::string& text);
@@ -93,6 +138,8 @@ Command addParamsCommand(CLI::App& app);
 Command addIntegratorsCommand(CLI::App& app);
 Command addRunCommand(CLI::App& app);
 Command addStudyCommand(CLI::App& app);
+Command addConservationCommand(CLI::App& app);
+Command addSweepCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addRestitutionCommand(CLI::App& app);
 Command addGalleryCommand(CLI::App& app);

@@ -3,6 +3,8 @@
 #include <iostream>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/cli.h"
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
@@ -13,19 +15,35 @@ namespace cli {
 
 Command addScenesCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("scenes", "list the built-in scenes");
-    return {sub, [] {}, [] {
-                for (const simcore::SceneInfo& s : simcore::sceneTable())
-                    std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
+    auto json = std::make_shared<bool>(false);
+    addJsonFlag(*sub, *json);
+    return {sub, [] {}, [json] {
+                nlohmann::ordered_json list = nlohmann::ordered_json::array();
+                for (const simcore::SceneInfo& s : simcore::sceneTable()) {
+                    if (*json)
+                        list.push_back({{"name", s.name}, {"description", s.description}, {"gas", simcore::hasGas(s.kind)}});
+                    else
+                        std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
+                }
+                if (*json) printJson(list);
                 return kExitOk;
             }};
 }
 
 Command addIntegratorsCommand(CLI::App& app) {
-    CLI::App* sub = app.add_subcommand("integrators", "list the integrators with their order");
-    return {sub, [] {}, [] {
-                for (const simcore::IntegratorInfo& i : simcore::integratorTable())
-                    std::printf("%-18s order %d  %s\n", std::string(i.name).c_str(), i.order,
-                                std::string(i.description).c_str());
+    CLI::App* sub = app.add_subcommand("integrators", "list the integrators with their order and family");
+    auto json = std::make_shared<bool>(false);
+    addJsonFlag(*sub, *json);
+    return {sub, [] {}, [json] {
+                nlohmann::ordered_json list = nlohmann::ordered_json::array();
+                for (const simcore::IntegratorInfo& i : simcore::integratorTable()) {
+                    if (*json)
+                        list.push_back({{"name", i.name}, {"order", i.order}, {"family", i.family}, {"description", i.description}});
+                    else
+                        std::printf("%-18s order %-2d %-12s %s\n", std::string(i.name).c_str(), i.order,
+                                    std::string(i.family).c_str(), std::string(i.description).c_str());
+                }
+                if (*json) printJson(list);
                 return kExitOk;
             }};
 }
@@ -37,7 +55,39 @@ struct ParamsArgs {
     std::vector<std::string> set;
     std::optional<simcore::SceneKind> kind;
     std::optional<simcore::ParameterSet> params;  // the scene's, after --set
+    bool json = false;
 };
+
+// --json: the same listing as a JSON array (defaults as numbers; an inherited default as null
+// with "inherits": the key it follows; choices as a list of names).
+int listParamsJson(const ParamsArgs& args, const std::vector<const simcore::ParamSpec*>& specs) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const simcore::ParamSpec* s : specs) {
+        nlohmann::ordered_json p = {{"key", s->key}, {"unit", s->unit}};
+        if (s->inherits != simcore::Param::Count) {
+            p["default"] = nullptr;
+            p["inherits"] = simcore::paramSpec(s->inherits).key;
+        } else {
+            p["default"] = args.kind ? s->defaultFor(*args.kind) : s->defaultValue;
+        }
+        p["min"] = s->minValue;
+        p["max"] = s->maxValue;
+        p["min_exclusive"] = s->minExclusive;
+        p["integer"] = s->integer;
+        nlohmann::ordered_json choices = nlohmann::ordered_json::array();
+        for (std::string_view rest = s->choices; !rest.empty();) {
+            const auto bar = rest.find('|');
+            choices.push_back(rest.substr(0, bar));
+            rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
+        }
+        p["choices"] = choices;
+        p["meaning"] = s->meaning;
+        if (args.kind) p["value"] = args.params->get(s->id);  // after --set
+        list.push_back(p);
+    }
+    printJson(list);
+    return kExitOk;
+}
 
 int listParams(const ParamsArgs& args) {
     std::vector<const simcore::ParamSpec*> specs;
@@ -47,6 +97,7 @@ int listParams(const ParamsArgs& args) {
     } else {
         for (const simcore::ParamSpec& s : simcore::parameterTable()) specs.push_back(&s);
     }
+    if (args.json) return listParamsJson(args, specs);
     std::printf("%-15s %-7s %-12s %-22s %s\n", "key", "unit", "default", "range", "meaning");
     for (const simcore::ParamSpec* s : specs) {
         std::string def;
@@ -89,6 +140,7 @@ Command addParamsCommand(CLI::App& app) {
         ->type_name("KEY=VALUE")
         ->allow_extra_args(false)
         ->needs(scene);
+    addJsonFlag(*sub, args->json);
     return {sub,
             [args] {
                 if (!args->scene) return;

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/cli.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
@@ -49,13 +51,56 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
     }
 }
 
+// --json: the summary as one JSON object (SI units, as the text's), whatever the run's end:
+// "status" is ok, failed (with "failure": reason, step, time) or stopped (--max-steps).
+void printSummaryJson(const simcore::Simulation& sim, const SceneSetup& setup, double wallSeconds, const std::string& status) {
+    const simcore::Diagnostics& d = sim.diagnostics();
+    const simcore::Topology& topo = sim.topology();
+    nlohmann::ordered_json j = {
+        {"scene", setup.sceneName},
+        {"particles", topo.particleCount()},
+        {"springs", topo.springCount()},
+        {"surfaces", topo.surfaces.size()},
+        {"integrator", sim.integrator().name()},
+        {"dt", sim.dt()},
+        {"steps", d.step},
+        {"t", d.time},
+        {"status", status},
+    };
+    if (sim.failure())
+        j["failure"] = {{"reason", sim.failure()->reason}, {"step", sim.failure()->step}, {"time", sim.failure()->time}};
+    nlohmann::ordered_json energy = {{"kinetic", d.kinetic}, {"spring", d.springTotal()}, {"gravity", d.gravity}};
+    if (d.hasGas) energy["gas"] = d.gas;
+    if (!sim.contactProjection()) energy["contact"] = d.contact;
+    energy["total"] = d.total();
+    j["energy"] = energy;
+    j["removed"] = sim.contactProjection()
+                       ? nlohmann::ordered_json{{"damping", d.removedDamping}, {"collisions", d.removedCollisions}}
+                       : nlohmann::ordered_json{{"damping", d.removedDamping}, {"contact", d.removedContact}};
+    j["energy_drift"] = d.energyDrift();
+    if (d.hasGas)
+        j["layers"] = {{"volume_inner", d.volume[0]}, {"volume_outer", d.volume[1]},
+                       {"pressure_inner", d.pressure[0]}, {"pressure_outer", d.pressure[1]}};
+    j["cost"] = {{"force_evaluations", d.forceEvaluations}, {"wall_seconds", wallSeconds},
+                 {"steps_per_second", wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0}};
+    if (d.hasSolverCounters) {
+        const simcore::SolverCounters& c = d.solver;
+        j["solver"] = {{"steps", c.steps}, {"rhs_evaluations", c.rhsEvaluations}, {"jacobian_products", c.jacobianProducts},
+                       {"linear_iterations", c.linearIterations}, {"preconditioner_iterations", c.preconditionerIterations},
+                       {"nonlinear_iterations", c.nonlinearIterations}, {"error_test_failures", c.errorTestFailures},
+                       {"convergence_failures", c.convergenceFailures}, {"reinitialisations", c.reinitialisations},
+                       {"order", c.order}, {"step", c.step}};
+    }
+    printJson(j);
+}
+
 struct RunArgs {
     SceneArgs scene;
     double duration = 5.0;
     long every = 1;
     double maxSteps = kMaxSteps;
     std::string csv, state, saveScene;
-    bool quiet = false;
+    bool quiet = false, json = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
 };
@@ -96,12 +141,16 @@ int run(const RunArgs& args) {
         csv->write(simlab::csvRow(columns, sim.diagnostics()));
     }
     const auto start = std::chrono::steady_clock::now();
-    const double tEnd = sim.time() + duration;  // a resumed run continues from its saved time
+    const double tStart = sim.time();
+    const double tEnd = tStart + duration;  // a resumed run continues from its saved time
     // An adaptive method chooses its own steps: the same bound holds while it runs (a
     // tolerance it cannot meet ends the run, exit 3, instead of creeping on for ever).
     const long firstStep = sim.stepCount();
     bool tooManySteps = false;
+    const StopSignals signals;  // Ctrl+C, SIGTERM: stop after a whole step, write the run so far
+    ProgressLine progress(args.quiet || args.json);
     while (sim.time() < tEnd - 1e-9 * sim.dt()) {
+        if (signals.caught()) break;
         if (!sim.step(tEnd)) break;
         const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
         if (csv && (sim.stepCount() % every == 0 || last))
@@ -110,20 +159,32 @@ int run(const RunArgs& args) {
             tooManySteps = true;
             break;
         }
+        progress.update(sim.time() - tStart, duration, "s", sim.stepCount() - firstStep);
     }
+    progress.clear();
+    const int stoppedBy = signals.caught();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (state) state->write(simlab::stateTable(sim));
     if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
 
-    for (auto* file : {csv.get(), state.get(), sceneOut.get()})
-        if (file && !file->commit()) {
-            std::fprintf(stderr, "error: %s\n", file->error().c_str());
-            return kExitBadInput;
-        }
-    if (!args.quiet) printSummary(sim, setup, wall);
+    // All or none: every output complete before the first replaces its file.
+    if (auto error = simlab::commitAll({csv.get(), state.get(), sceneOut.get()})) {
+        std::fprintf(stderr, "error: %s\n", error->c_str());
+        return kExitBadInput;
+    }
+    if (stoppedBy) {
+        if (args.json) printSummaryJson(sim, setup, wall, "stopped");
+        std::fprintf(stderr, "run stopped by %s at step %ld, t = %g s; the files hold the run so far\n",
+                     StopSignals::name(stoppedBy), sim.stepCount(), sim.time());
+        return 128 + stoppedBy;
+    }
+    if (args.json)
+        printSummaryJson(sim, setup, wall, sim.failed() ? "failed" : tooManySteps ? "stopped" : "ok");
+    else if (!args.quiet)
+        printSummary(sim, setup, wall);
     // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a
     // duration that is not a multiple of dt ends past it; it is said, never silent.
-    if (!sim.failed() && sim.time() > tEnd + 1e-9 * sim.dt())
+    if (!args.quiet && !sim.failed() && sim.time() > tEnd + 1e-9 * sim.dt())
         std::fprintf(stderr,
                      "note: --duration %g s is not a multiple of dt %g s: the run took whole steps and ended at "
                      "t = %g s, %g s past the end asked for\n",
@@ -154,7 +215,7 @@ Command addRunCommand(CLI::App& app) {
         ->type_name("T")
         ->check(finiteIn(0.0, 1e7, true))
         ->capture_default_str();
-    sub->add_option("--csv", args->csv, "write the time series (one row per --every steps and the last)")->type_name("FILE");
+    addCsvOption(*sub, args->csv, "write the time series (one row per --every steps and the last)");
     sub->add_option("--every", args->every, "CSV row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
     sub->add_option("--state", args->state, "write the final state: index, layer, position, velocity")->type_name("FILE");
     sub->add_option("--save-scene", args->saveScene, "save the experiment with its final state as a scene file")
@@ -164,7 +225,8 @@ Command addRunCommand(CLI::App& app) {
         ->type_name("N")
         ->check(finiteIn(1.0, 1e12, false))
         ->default_str("1e9");
-    sub->add_flag("--quiet", args->quiet, "no summary on standard output");
+    sub->add_flag("--quiet", args->quiet, "no summary on standard output, no progress line and no notes on standard error");
+    addJsonFlag(*sub, args->json);
     addIntegratorOptions(*sub, args->integrator);
     return {sub, [args] { checkRun(*args); }, [args] { return run(*args); }};
 }
