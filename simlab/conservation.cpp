@@ -5,12 +5,13 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simlab/output.h"
 #include "simlab/reference_problem.h"
-#include "simlab/request.h"
+#include "simlab/bounds.h"
 #include "simlab/stability.h"
 #include "simlab/study.h"
 
@@ -146,8 +147,10 @@ ConservationResult runConservation(const ConservationSpec& spec, const Conservat
     if (!(result.omegaMax > 0.0)) throw std::runtime_error("the scene has no oscillating mode (omega_max = 0)");
     result.period = 2.0 * std::numbers::pi / result.omegaMax;
     const double wanted = std::ceil(spec.periods * result.period / spec.dt - 1e-9);
-    if (wanted > kMaxSteps)  // a refusal before any step (exit 2, ValueError), as the front door's
-        throw RequestError(shortNumber(spec.periods) + " periods of " + shortNumber(result.period) + " s at dt = " +
+    // A refusal before any step, as the front door's (std::invalid_argument, the base of its
+    // RequestError: exit 2 in the CLI, ValueError in Python).
+    if (wanted > kMaxSteps)
+        throw std::invalid_argument(shortNumber(spec.periods) + " periods of " + shortNumber(result.period) + " s at dt = " +
                                  shortNumber(spec.dt) + " s would take " + shortNumber(wanted) +
                                  " steps; at most " + shortNumber(kMaxSteps) + " (fewer periods or a larger step)");
     const long total = std::max(1L, static_cast<long>(wanted));

@@ -22,6 +22,7 @@
 
 #include "simcore/integrators.h"
 #include "simcore/params.h"
+#include "simlab/bounds.h"
 #include "simlab/scenefile.h"
 
 namespace simlab {
@@ -41,17 +42,6 @@ struct RequestError : std::invalid_argument {
 std::string quoted(std::string_view value, std::size_t limit = 40);
 // A number in a message: its shortest round-trip text (inf and nan as such).
 std::string number(double value);
-
-// The most steps one run may take (1e9: about 3 days for the default ring on this machine).
-inline constexpr double kMaxSteps = 1e9;
-// The most particle-steps (steps x particles) of one measurement that runs a body for a fixed
-// simulated time whatever its size (restitution: 10 s per speed), about an hour of one core.
-inline constexpr double kMaxParticleSteps = 1e10;
-// The most bytes of results one request may hold in memory at once (1 GiB).
-inline constexpr double kMaxHeldBytes = 1024.0 * 1024.0 * 1024.0;
-// A stability trial at the smallest step scanned must take at least this many steps: a
-// shorter one shows no growth (a duration of 1e-300 s called every method stable up to hmax).
-inline constexpr double kMinTrialSteps = 100.0;
 
 // --- the scene -----------------------------------------------------------------------------------
 

@@ -15,7 +15,7 @@
 #include "simcore/scenes.h"
 #include "simcore/simulation.h"
 #include "simlab/output.h"
-#include "simlab/request.h"
+#include "simlab/bounds.h"
 
 namespace simlab {
 
