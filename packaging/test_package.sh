@@ -41,6 +41,10 @@ done
 # ... and no development, debug or sanitizer runtime package.
 [[ "$depends" =~ -dev|-dbg|libasan|libtsan|libubsan ]] && fail "Depends names a build-only package"
 
+[ -n "$(field Homepage)" ] || fail "no Homepage"
+[[ "$(field Suggests)" == *python3-matplotlib* ]] || fail "Suggests lacks python3-matplotlib (the examples draw with it)"
+[[ "$(field Suggests)" == *qt6-translations-l10n* ]] || fail "Suggests lacks qt6-translations-l10n (the standard dialogs' buttons in the GUI's language)"
+
 if [ "$python" = ON ]; then
   recommends=$(field Recommends)
   echo "Recommends: $recommends"
@@ -57,6 +61,22 @@ expected_bins="elastic-lab-cli "
 [ "$bins" = "$expected_bins" ] || fail "usr/bin holds '$bins', expected '$expected_bins'"
 stray=$(cd "$root" && find . \( -name '*.a' -o -name '*.h' -o -name 'test_*' -o -name 'CMakeFiles' \) -print)
 [ -z "$stray" ] || fail "build files in the package: $stray"
+
+# Hardened and stripped as Debian's own packages are: immediate binding (bindnow) with full
+# RELRO, fortified libc calls (__*_chk), no debug sections, no .comment section.
+for bin in "$usr"/bin/* "$usr"/lib/python3/dist-packages/*.so; do
+  [ -e "$bin" ] || continue
+  name=${bin#"$root"}
+  # (Each readelf's output is read whole first: grep -q quitting early would fail the pipe.)
+  dynamic=$(readelf -d "$bin") segments=$(readelf -lW "$bin")
+  grep -q 'FLAGS.*BIND_NOW\|FLAGS_1.*NOW' <<<"$dynamic" || fail "$name is not linked with -z now (bindnow)"
+  grep -q 'GNU_RELRO' <<<"$segments" || fail "$name has no RELRO segment"
+  sections=$(readelf -SW "$bin")
+  grep -q '\.debug_' <<<"$sections" && fail "$name ships debug sections (not stripped)"
+  grep -q ' \.comment ' <<<"$sections" && fail "$name ships a .comment section"
+done
+symbols=$(readelf --dyn-syms -W "$usr/bin/elastic-lab-cli")
+grep -q '__[a-z]*_chk@' <<<"$symbols" || fail "elastic-lab-cli calls no fortified function (not built with _FORTIFY_SOURCE)"
 
 # The installed CLI, from the scratch root, with a clean environment and its own working directory.
 mkdir -m 700 "$scratch/runtime"
@@ -112,6 +132,35 @@ if [ "$gui" = ON ]; then
   grep -q "<launchable type=\"desktop-id\">$app_id.desktop</launchable>" "$metainfo" ||
     fail "the metainfo does not launch $app_id.desktop"
   grep -q "<release version=\"$version\"" "$metainfo" || fail "the metainfo has no release $version"
+  # Today's integrator count, the homepage and screenshots.
+  count=$(run_installed "$usr/bin/elastic-lab-cli" integrators | wc -l)
+  grep -q "<li>$count integrators" "$metainfo" || fail "the metainfo does not say $count integrators (elastic-lab-cli integrators)"
+  grep -q '<url type="homepage">https\?://' "$metainfo" || fail "the metainfo has no homepage"
+  [ "$(grep -c '<image>https\?://' "$metainfo")" -ge 1 ] || fail "the metainfo has no screenshot"
+  # Scene files: the desktop entry takes a file (%f) of the lab's MIME type, whose definition
+  # is installed and tells a scene file from other JSON by its content.
+  grep -q '^Exec=elastic-lab %f$' "$desktop" || fail "the desktop entry's Exec takes no file (%f)"
+  grep -q '^MimeType=application/x-elastic-lab-scene;$' "$desktop" || fail "the desktop entry names no scene MIME type"
+  mime=$usr/share/mime/packages/$app_id.xml
+  [ -s "$mime" ] || fail "missing ${mime#"$root"}"
+  grep -q 'type="application/x-elastic-lab-scene"' "$mime" || fail "$mime does not define the scene type"
+  if command -v update-mime-database >/dev/null; then
+    # The type as a desktop's MIME database compiles it: a sub-class of JSON with a content
+    # match on the scene files' first line, so it wins over the *.json glob for them only.
+    mkdir -p "$scratch/xdg/mime/packages"
+    cp "$mime" "$scratch/xdg/mime/packages/"
+    update-mime-database "$scratch/xdg/mime" >"$scratch/mime.log" 2>&1 || { cat "$scratch/mime.log" >&2; fail "update-mime-database"; }
+    grep -qx 'application/x-elastic-lab-scene application/json' "$scratch/xdg/mime/subclasses" ||
+      fail "the scene type is not a sub-class of application/json"
+    grep -aq '^\[80:application/x-elastic-lab-scene\]' "$scratch/xdg/mime/magic" || fail "the scene type has no content match"
+    run_installed "$usr/bin/elastic-lab-cli" run --scene ring2d --duration 0.01 --quiet --save-scene "$scratch/saved.json" ||
+      fail "save a scene file"
+    start=$(head -c 64 "$scratch/saved.json" | tr -d '\n')
+    grep -q '"format": "elastic-lab-scene"' <<<"$start" ||
+      fail "a saved scene does not open with the \"format\" the content match looks for"
+  else
+    echo "scene MIME type not compiled: update-mime-database not found (Debian: shared-mime-info)"
+  fi
   if [ -n "$desktop_validate" ]; then
     "$desktop_validate" "$desktop" || fail "desktop-file-validate"
   else
@@ -140,12 +189,33 @@ if [ "$man" = ON ]; then
   zcat "$usr/share/man/man1/elastic-lab-cli.1.gz" | grep -q 'simulated time to run \[s\]' ||
     fail "elastic-lab-cli.1 lacks the description of run --duration"
   [ "$gui" = ON ] && check_man elastic-lab 'screenshot'
+  # Nothing of the build machine in the pages: bench --threads says its default in words.
+  page=$(zcat "$usr/share/man/man1/elastic-lab-cli.1.gz")
+  threads=$(grep -A3 'fB\\-\\-threads' <<<"$page")
+  grep -q 'all CPUs this process may use' <<<"$threads" ||
+    fail "elastic-lab-cli.1: bench --threads does not say 'all CPUs this process may use'"
+  grep -q '\[[0-9][0-9]*\]' <<<"$threads" && fail "elastic-lab-cli.1: bench --threads shows a number as its default: $threads"
 fi
 
 # The bash completion (app/cli), written by the tool from its command tree.
 completion=$usr/share/bash-completion/completions/elastic-lab-cli
 [ -s "$completion" ] || fail "missing ${completion#"$root"}"
 grep -q 'complete .*elastic-lab-cli' "$completion" || fail "the completion does not complete elastic-lab-cli"
+# What it offers, asked through bash itself: scene files after --scene, parameter keys after --set.
+mkdir -p "$scratch/complete/sub"
+touch "$scratch/complete/ball.json" "$scratch/complete/notes.txt"
+completions() { # completions WORD...: what TAB offers for the last word
+  (cd "$scratch/complete" && bash -c 'source "$1"; shift; COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1))
+     _elastic_lab_cli; printf "%s\n" "${COMPREPLY[@]}"' _ "$completion" elastic-lab-cli "$@")
+}
+offered=$(completions run --scene "")
+grep -qx ball.json <<<"$offered" || fail "run --scene does not offer the scene file ball.json: $offered"
+grep -qx notes.txt <<<"$offered" && fail "run --scene offers notes.txt (not a scene file)"
+grep -qx ring2d <<<"$offered" || fail "run --scene does not offer the built-in scenes"
+offered=$(completions run --set "k")
+grep -qx 'ks=' <<<"$offered" || fail "run --set k does not offer ks=: $offered"
+offered=$(completions run --csv-dialect "")
+grep -qx 'excel-semicolon' <<<"$offered" || fail "run --csv-dialect does not offer excel-semicolon: $offered"
 
 # Docs in the repository's layout: every relative link to a file in them resolves.
 doc=$usr/share/doc/elastic-lab

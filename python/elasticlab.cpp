@@ -47,6 +47,7 @@
 #include "simlab/stability.h"
 #include "simlab/study.h"
 #include "simlab/sweep.h"
+#include "simlab/timeseries.h"
 
 namespace py = pybind11;
 
@@ -290,9 +291,11 @@ public:
     // diagnostics_columns), one per line, are recorded at the start, every `every` steps and the
     // end, or at `times` (absolute simulated times, ascending): the first step at or past each
     // (an adaptive method shortens its step to land on it, as it does at the end). `progress`,
-    // when given, is called with the simulated time between slices of work.
+    // when given, is called with the simulated time between slices of work. csv= and xlsx= write
+    // the same rows in the CLI's `run --csv/--xlsx` formats (its columns), the CSV in csv_dialect.
     py::object run(const py::handle& durationArg, const py::object& everyArg, const py::object& timesArg,
-                   const py::object& progress, const py::object& everySecondsArg) {
+                   const py::object& progress, const py::object& csvPath, const py::object& xlsxPath,
+                   const std::string& dialectName, const py::object& everySecondsArg) {
         const double duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
         const long every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
         const double everySeconds =
@@ -316,11 +319,24 @@ public:
             for (long k = 0; k <= count; ++k) times.push_back(start + static_cast<double>(k) * everySeconds);
         }
         const bool sampled = every || everySeconds > 0.0 || !timesArg.is_none();
+        const auto dialect = simlab::csvDialectNamed(dialectName);
+        if (!dialect) throw py::value_error(simlab::unknownCsvDialectMessage(dialectName));
+        simlab::TimeSeriesFiles files{csvPath.is_none() ? "" : pathText(csvPath), *dialect,
+                                       xlsxPath.is_none() ? "" : pathText(xlsxPath)};
+        // The outputs through the front door (an empty name, a FIFO, one over the other).
+        if (!csvPath.is_none()) simlab::checkOutputNamed("csv", files.csv);
+        if (!xlsxPath.is_none()) simlab::checkOutputNamed("xlsx", files.xlsx);
+        simlab::checkFiles({}, {{"csv", files.csv}, {"xlsx", files.xlsx}});
+        const simcore::SceneKind kind = m_sim->parameters().kind();
+        simlab::TimeSeriesWriter writer(kind, simlab::timeSeriesColumns(kind, m_sim->diagnostics().hasSolverCounters),
+                                         files);
+        if (!writer.ok()) throw py::value_error(writer.error());
         Busy busy(m_busy);
         const long firstStep = m_sim->stepCount();
         std::vector<double> rows;
         auto record = [&] {
             for (const simlab::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
+            if (files.any()) writer.add(m_sim->diagnostics());
         };
         std::size_t next = 0;  // the next of `times` not yet recorded
         auto due = [&] {       // records one row for every sample time reached (one per step)
@@ -355,6 +371,8 @@ public:
             std::copy(rows.begin(), rows.end(), a.mutable_data());
             table = a;
         }
+        // The files hold the run so far also when it failed (as the CLI's).
+        if (files.any() && !writer.commit()) throw py::value_error(writer.error());
         raiseIfFailed(table);
         return table;
     }
@@ -925,10 +943,14 @@ PYBIND11_MODULE(_core, m) {
         .def("__repr__", &PySimulation::repr)
         .def("step", &PySimulation::step, py::arg("n") = 1, "Takes n steps (SimulationFailed when one fails).")
         .def("run", &PySimulation::run, py::arg("duration"), py::arg("every") = py::none(),
-             py::arg("times") = py::none(), py::arg("progress") = py::none(), py::arg("every_seconds") = py::none(),
+             py::arg("times") = py::none(), py::arg("progress") = py::none(), py::kw_only(),
+             py::arg("csv") = py::none(), py::arg("xlsx") = py::none(), py::arg("csv_dialect") = "plain",
+             py::arg("every_seconds") = py::none(),
              "Runs for duration seconds [s]; with every=N (steps) or times=[t...] (absolute simulated times [s], "
              "ascending) returns the diagnostics rows (start, then every N steps or the first step at or past each "
-             "time, end) as an array, columns as diagnostics_columns; progress(t) is called between slices; "
+             "time, end) as an array, columns as diagnostics_columns; progress(t) is called between slices. "
+             "csv= and xlsx= write the same rows as the CLI's `run --csv/--xlsx` files; csv_dialect='excel-semicolon' "
+             "spells the CSV for spreadsheets in decimal-comma locales (semicolon, decimal comma, CRLF, byte-order mark); "
              "every_seconds=S samples every S seconds from the start (the rows held bounded before it starts).")
         .def("reset", &PySimulation::reset, "Back to the start state, same parameters.")
         .def("set_integrator", &PySimulation::setIntegrator, py::arg("name"), py::arg("options") = py::none(),

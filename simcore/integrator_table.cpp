@@ -6,24 +6,25 @@
 #include "simcore/internal/cvode_integrators.h"
 #include "simcore/internal/integrator_makers.h"
 #include "simcore/params.h"
+#include "simcore/texts.h"
 
 namespace simcore {
 
 namespace {
 // clang-format off
 constexpr std::array kIntegrators = {
-    IntegratorInfo{"euler", 1, "explicit Euler: x and v both from the old state (thesis eq. 22)", "explicit-rk"},
-    IntegratorInfo{"midpoint", 2, "the thesis's midpoint (eq. 31-33), i.e. Heun's RK2: two force evaluations", "explicit-rk"},
-    IntegratorInfo{"rk4", 4, "classical Runge-Kutta 4 (eq. 35-40): four force evaluations", "explicit-rk"},
-    IntegratorInfo{"symplectic-euler", 1, "semi-implicit Euler: v from the old forces, then x from the new v", "symplectic"},
-    IntegratorInfo{"verlet", 2, "velocity Verlet (order 1 when damping is on: damping is taken at the half-step velocity)", "symplectic"},
-    IntegratorInfo{"yoshida4", 4, "Yoshida's 4th-order composition of velocity Verlet: 3 substeps (one backwards), 4 force evaluations (order 1 with damping)", "symplectic"},
-    IntegratorInfo{"yoshida8", 8, "Yoshida's 8th-order composition of velocity Verlet (solution D): 15 substeps, 16 force evaluations (order 1 with damping)", "symplectic"},
-    IntegratorInfo{"rk45", 5, "Dormand-Prince 5(4): adaptive step from atol/rtol, embedded error estimate every step", "adaptive"},
-    IntegratorInfo{"implicit-euler", 1, "linearised backward Euler (Baraff-Witkin 1998): spring and gas Jacobians, matrix-free CG", "implicit"},
-    IntegratorInfo{"cvode-bdf", 5, "SUNDIALS CVODE, variable-order BDF 1-5: Newton, matrix-free GMRES on the analytic Jacobian, implicit-euler's solve as preconditioner; adaptive from atol/rtol", "production"},
-    IntegratorInfo{"xpbd", 1, "extended position-based dynamics (Macklin et al. 2016, small steps 2019): springs as compliant distance constraints, `substeps` substeps of one iteration per step", "constraint"},
-    IntegratorInfo{"cvode-adams", 12, "SUNDIALS CVODE, variable-order Adams-Moulton 1-12 with fixed-point iteration (non-stiff); adaptive from atol/rtol", "production"},
+    IntegratorInfo{"euler", 1, SIMCORE_TEXT("simcore", "explicit Euler: x and v both from the old state (thesis eq. 22)"), "explicit-rk"},
+    IntegratorInfo{"midpoint", 2, SIMCORE_TEXT("simcore", "the thesis's midpoint (eq. 31-33), i.e. Heun's RK2: two force evaluations"), "explicit-rk"},
+    IntegratorInfo{"rk4", 4, SIMCORE_TEXT("simcore", "classical Runge-Kutta 4 (eq. 35-40): four force evaluations"), "explicit-rk"},
+    IntegratorInfo{"symplectic-euler", 1, SIMCORE_TEXT("simcore", "semi-implicit Euler: v from the old forces, then x from the new v"), "symplectic"},
+    IntegratorInfo{"verlet", 2, SIMCORE_TEXT("simcore", "velocity Verlet (order 1 when damping is on: damping is taken at the half-step velocity)"), "symplectic"},
+    IntegratorInfo{"yoshida4", 4, SIMCORE_TEXT("simcore", "Yoshida's 4th-order composition of velocity Verlet: 3 substeps (one backwards), 4 force evaluations (order 1 with damping)"), "symplectic"},
+    IntegratorInfo{"yoshida8", 8, SIMCORE_TEXT("simcore", "Yoshida's 8th-order composition of velocity Verlet (solution D): 15 substeps, 16 force evaluations (order 1 with damping)"), "symplectic"},
+    IntegratorInfo{"rk45", 5, SIMCORE_TEXT("simcore", "Dormand-Prince 5(4): adaptive step from atol/rtol, embedded error estimate every step"), "adaptive"},
+    IntegratorInfo{"implicit-euler", 1, SIMCORE_TEXT("simcore", "linearised backward Euler (Baraff-Witkin 1998): spring and gas Jacobians, matrix-free CG"), "implicit"},
+    IntegratorInfo{"cvode-bdf", 5, SIMCORE_TEXT("simcore", "SUNDIALS CVODE, variable-order BDF 1-5: Newton, matrix-free GMRES on the analytic Jacobian, implicit-euler's solve as preconditioner; adaptive from atol/rtol"), "production"},
+    IntegratorInfo{"xpbd", 1, SIMCORE_TEXT("simcore", "extended position-based dynamics (Macklin et al. 2016, small steps 2019): springs as compliant distance constraints, `substeps` substeps of one iteration per step"), "constraint"},
+    IntegratorInfo{"cvode-adams", 12, SIMCORE_TEXT("simcore", "SUNDIALS CVODE, variable-order Adams-Moulton 1-12 with fixed-point iteration (non-stiff); adaptive from atol/rtol"), "production"},
 };
 // clang-format on
 }  // namespace

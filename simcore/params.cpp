@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include "simcore/texts.h"
+
 namespace simcore {
 
 namespace {
@@ -16,84 +18,84 @@ namespace {
 constexpr std::array kTable = {
     //        key             unit     default  min    max     >min   int    scenes         group
     ParamSpec{Param::Ks, "ks",           "N/m",   800.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Springs, Param::Count,
-              "structural spring stiffness KS, per spring (scaling=physical: at the reference resolution; a 2D chain keeps "
-              "k L0, a 3D membrane keeps k)"},
+              SIMCORE_TEXT("simcore", "structural spring stiffness KS, per spring (scaling=physical: at the reference resolution; a 2D chain keeps "
+              "k L0, a 3D membrane keeps k)")},
     ParamSpec{Param::Kd, "kd",           "N*s/m", 15.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Springs, Param::Count,
-              "structural spring damping KD, per spring; scales like KS"},
+              SIMCORE_TEXT("simcore", "structural spring damping KD, per spring; scales like KS")},
     ParamSpec{Param::Rks, "rks",          "N/m",   700.0,   0.0,   1e9,    false, false, kBitsLayered,  ParamGroup::Springs, Param::Count,
-              "radius and shear spring stiffness RKS, per spring (scaling=physical: at the reference resolution; "
-              "in parallel, k times count stays fixed)"},
+              SIMCORE_TEXT("simcore", "radius and shear spring stiffness RKS, per spring (scaling=physical: at the reference resolution; "
+              "in parallel, k times count stays fixed)")},
     ParamSpec{Param::Rkd, "rkd",          "N*s/m", 50.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Springs, Param::Count,
-              "radius and shear spring damping RKD, per spring; scales like RKS"},
+              SIMCORE_TEXT("simcore", "radius and shear spring damping RKD, per spring; scales like RKS")},
     ParamSpec{Param::Pressure, "pressure",     "J",     20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, Param::Count,
-              "gas constant nRT of each closed layer (PRESSURE): P = nRT / V"},
+              SIMCORE_TEXT("simcore", "gas constant nRT of each closed layer (PRESSURE): P = nRT / V")},
     ParamSpec{Param::PressureInner, "pressure_inner","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, Param::Pressure,
-              "nRT of the gas enclosed by the inner layer (defaults to pressure)"},
+              SIMCORE_TEXT("simcore", "nRT of the gas enclosed by the inner layer (defaults to pressure)")},
     ParamSpec{Param::PressureOuter, "pressure_outer","J",    20.0,    0.0,   1e7,    false, false, kBitsLayered,  ParamGroup::Gas, Param::Pressure,
-              "nRT of the gas enclosed by the outer layer (defaults to pressure)"},
+              SIMCORE_TEXT("simcore", "nRT of the gas enclosed by the outer layer (defaults to pressure)")},
     ParamSpec{Param::Mass, "mass",         "kg",    1.0,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Mass, Param::Count,
-              "particle mass MASS (scaling=physical: at the reference resolution; each layer keeps its total)"},
+              SIMCORE_TEXT("simcore", "particle mass MASS (scaling=physical: at the reference resolution; each layer keeps its total)")},
     ParamSpec{Param::MassInner, "mass_inner",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, Param::Mass,
-              "inner-layer particle mass (defaults to mass; scaled like mass): real inertia, not scaled gravity"},
+              SIMCORE_TEXT("simcore", "inner-layer particle mass (defaults to mass; scaled like mass): real inertia, not scaled gravity")},
     ParamSpec{Param::MassOuter, "mass_outer",   "kg",    1.0,     0.0,   1e6,    true,  false, kBitsLayered,  ParamGroup::Mass, Param::Mass,
-              "outer-layer particle mass (defaults to mass; scaled like mass)"},
+              SIMCORE_TEXT("simcore", "outer-layer particle mass (defaults to mass; scaled like mass)")},
     ParamSpec{Param::Gravity, "gravity",      "m/s^2", 9.81,    0.0,   1e4,    false, false, kBitsAll,      ParamGroup::Environment, Param::Count,
-              "gravitational acceleration, pointing along -y"},
+              SIMCORE_TEXT("simcore", "gravitational acceleration, pointing along -y")},
     ParamSpec{Param::Box, "box",          "m",     2.5,     0.0,   1e6,    true,  false, kBitsAll,      ParamGroup::Environment, Param::Count,
-              "half-size of the collision box (floor, ceiling, walls), centred on the body's start"},
+              SIMCORE_TEXT("simcore", "half-size of the collision box (floor, ceiling, walls), centred on the body's start")},
     ParamSpec{Param::Contact, "contact",      "",      0.0,     0.0,   1.0,    false, true,  kBitsAll,      ParamGroup::Contact, Param::Count,
-              "contact model: 0 = force (smooth penalty force inside the ODE, in the energy ledger), "
-              "1 = projection (the thesis program: put back and reflect after the step)",
+              SIMCORE_TEXT("simcore", "contact model: 0 = force (smooth penalty force inside the ODE, in the energy ledger), "
+              "1 = projection (the thesis program: put back and reflect after the step)"),
               0, 0.0, "force|projection"},
     ParamSpec{Param::Restitution, "restitution",  "",      0.5,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, Param::Count,
-              "coefficient of restitution e at the box walls: a particle hitting at contact_speed rebounds "
-              "at e times its speed (projection: v_n becomes -e*v_n)"},
+              SIMCORE_TEXT("simcore", "coefficient of restitution e at the box walls: a particle hitting at contact_speed rebounds "
+              "at e times its speed (projection: v_n becomes -e*v_n)")},
     ParamSpec{Param::ContactStiffness, "contact_stiffness","N/m^3", 2e7, 0.0,   1e15,   true,  false, kBitsAll,      ParamGroup::Contact, Param::Count,
-              "k of the contact potential U = k d^4/4 per particle at a wall (d: penetration) and of the layer "
-              "barrier (scaling=physical: at the reference resolution, scaled like mass)"},
+              SIMCORE_TEXT("simcore", "k of the contact potential U = k d^4/4 per particle at a wall (d: penetration) and of the layer "
+              "barrier (scaling=physical: at the reference resolution, scaled like mass)")},
     ParamSpec{Param::ContactSpeed, "contact_speed","m/s",   3.0,     0.0,   1e4,    true,  false, kBitsAll,      ParamGroup::Contact, Param::Count,
-              "impact speed at which the contact damping gives exactly the restitution e"},
+              SIMCORE_TEXT("simcore", "impact speed at which the contact damping gives exactly the restitution e")},
     ParamSpec{Param::Friction, "friction",     "",      0.0,     0.0,   1.0,    false, false, kBitsAll,      ParamGroup::Contact, Param::Count,
-              "wall friction: Coulomb coefficient mu (force); tangential velocity fraction removed (projection)"},
+              SIMCORE_TEXT("simcore", "wall friction: Coulomb coefficient mu (force); tangential velocity fraction removed (projection)")},
     ParamSpec{Param::FrictionSpeed, "friction_speed","m/s",  0.5,     0.0,   1e3,    true,  false, kBitsAll,      ParamGroup::Contact, Param::Count,
-              "slip speed below which Coulomb friction is smoothed (regularised) [force contact]"},
+              SIMCORE_TEXT("simcore", "slip speed below which Coulomb friction is smoothed (regularised) [force contact]")},
     ParamSpec{Param::Mks, "mks",          "N/m",   150.0,   0.0,   1e9,    false, false, kBitsAll,      ParamGroup::Pointer, Param::Count,
-              "mouse spring stiffness (MKS)"},
+              SIMCORE_TEXT("simcore", "mouse spring stiffness (MKS)")},
     ParamSpec{Param::Mkd, "mkd",          "N*s/m", 25.0,    0.0,   1e7,    false, false, kBitsAll,      ParamGroup::Pointer, Param::Count,
-              "mouse spring damping (MKD)"},
+              SIMCORE_TEXT("simcore", "mouse spring damping (MKD)")},
     ParamSpec{Param::MouseRest, "mouse_rest",   "m",     0.0,     0.0,   1e3,    false, false, kBitsAll,      ParamGroup::Pointer, Param::Count,
-              "rest length of the mouse spring"},
+              SIMCORE_TEXT("simcore", "rest length of the mouse spring")},
     ParamSpec{Param::Dt, "dt",           "s",     0.003,   0.0,   1.0,    true,  false, kBitsAll,      ParamGroup::Time, Param::Count,
-              "time step DT of fixed-step integrators (initial step of adaptive ones)"},
+              SIMCORE_TEXT("simcore", "time step DT of fixed-step integrators (initial step of adaptive ones)")},
     ParamSpec{Param::Substeps, "substeps",     "",      8.0,     1.0,   1000.0, false, true,  kBitsAll,      ParamGroup::Time, Param::Count,
-              "xpbd: substeps per step DT, one constraint iteration each (Macklin et al. 2019, small steps)"},
+              SIMCORE_TEXT("simcore", "xpbd: substeps per step DT, one constraint iteration each (Macklin et al. 2019, small steps)")},
     ParamSpec{Param::Scaling, "scaling",      "",      0.0,     0.0,   1.0,    false, true,  kBitsLayered,  ParamGroup::Shape, Param::Count,
-              "what mass, ks, kd, rks, rkd and contact_stiffness mean when the mesh is refined: 0 = physical (the "
+              SIMCORE_TEXT("simcore", "what mass, ks, kd, rks, rkd and contact_stiffness mean when the mesh is refined: 0 = physical (the "
               "values hold at the scene's default resolution and the body keeps its totals and material constants), "
-              "1 = thesis (per particle and per spring at every resolution)",
+              "1 = thesis (per particle and per spring at every resolution)"),
               0, 0.0, "physical|thesis"},
     ParamSpec{Param::Particles, "particles",    "",      12.0,    3.0,   100000, false, true,  kBitRing2d,    ParamGroup::Shape, Param::Count,
-              "particles per layer of the 2D ring"},
+              SIMCORE_TEXT("simcore", "particles per layer of the 2D ring")},
     ParamSpec{Param::Subdivisions, "subdivisions", "",      2.0,     0.0,   7.0,    false, true,  kBitSphere3d,  ParamGroup::Shape, Param::Count,
-              "subdivision level L of the octahedron sphere: 4*4^L+2 particles per layer"},
+              SIMCORE_TEXT("simcore", "subdivision level L of the octahedron sphere: 4*4^L+2 particles per layer")},
     ParamSpec{Param::Slices, "slices",       "",      8.0,    3.0,   1024,   false, true,  kBitLatLong,   ParamGroup::Shape, Param::Count,
-              "meridians of the lat/long sphere"},
+              SIMCORE_TEXT("simcore", "meridians of the lat/long sphere")},
     ParamSpec{Param::Stacks, "stacks",       "",      4.0,     2.0,   512,    false, true,  kBitLatLong,   ParamGroup::Shape, Param::Count,
-              "latitude bands of the lat/long sphere (pole to pole)"},
+              SIMCORE_TEXT("simcore", "latitude bands of the lat/long sphere (pole to pole)")},
     ParamSpec{Param::RadiusInner, "radius_inner", "m",     1.5,     0.0,   1e3,    true,  false, kBitsLayered,  ParamGroup::Shape, Param::Count,
-              "rest radius of the inner layer (must be below radius_outer)"},
+              SIMCORE_TEXT("simcore", "rest radius of the inner layer (must be below radius_outer)")},
     ParamSpec{Param::RadiusOuter, "radius_outer", "m",     2.0,     0.0,   1e3,    true,  false, kBitsLayered,  ParamGroup::Shape, Param::Count,
-              "rest radius of the outer layer"},
+              SIMCORE_TEXT("simcore", "rest radius of the outer layer")},
     ParamSpec{Param::Length, "length",       "m",     1.0,     0.0,   1e3,    true,  false, kBitSpring1d,  ParamGroup::Shape, Param::Count,
-              "rest length of the 1D spring"},
+              SIMCORE_TEXT("simcore", "rest length of the 1D spring")},
     ParamSpec{Param::InitialLength, "initial_length","m",    1.5,     0.0,   1e3,    true,  false, kBitSpring1d,  ParamGroup::Shape, Param::Count,
-              "distance between the two particles at the start (the spring hangs along -y)"},
+              SIMCORE_TEXT("simcore", "distance between the two particles at the start (the spring hangs along -y)")},
     ParamSpec{Param::FixedEnd, "fixed_end",    "",      1.0,     0.0,   1.0,    false, true,  kBitSpring1d,  ParamGroup::Shape, Param::Count,
-              "1: the top particle is fixed in space (thesis fig. 7); 0: both particles move"},
+              SIMCORE_TEXT("simcore", "1: the top particle is fixed in space (thesis fig. 7); 0: both particles move")},
     ParamSpec{Param::Perturb, "perturb",      "m",     0.0,     0.0,   1e3,    false, false, kBitsAll,      ParamGroup::Start, Param::Count,
-              "amplitude of a seeded random displacement of the start positions (breaks symmetry)"},
+              SIMCORE_TEXT("simcore", "amplitude of a seeded random displacement of the start positions (breaks symmetry)")},
     ParamSpec{Param::Seed, "seed",         "",      1.0,     0.0,   4294967295.0, false, true, kBitsAll, ParamGroup::Start, Param::Count,
-              "seed of the start perturbation"},
+              SIMCORE_TEXT("simcore", "seed of the start perturbation")},
 };
 // clang-format on
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "simcore/params.h"
+#include "simcore/texts.h"
 
 namespace simcore {
 
@@ -11,13 +12,13 @@ namespace {
 // clang-format off
 constexpr std::array kScenes = {
     SceneInfo{"spring1d", SceneKind::Spring1d,
-              "1D: two masses on one spring hanging along -y, the top one fixed (thesis fig. 7)"},
+              SIMCORE_TEXT("simcore", "1D: two masses on one spring hanging along -y, the top one fixed (thesis fig. 7)")},
     SceneInfo{"ring2d", SceneKind::Ring2d,
-              "2D: two concentric gas-filled rings joined by radius and shear springs (thesis 3.4)"},
+              SIMCORE_TEXT("simcore", "2D: two concentric gas-filled rings joined by radius and shear springs (thesis 3.4)")},
     SceneInfo{"sphere3d", SceneKind::Sphere3d,
-              "3D: two concentric gas-filled spheres, subdivided octahedron (thesis 3.5.2)"},
+              SIMCORE_TEXT("simcore", "3D: two concentric gas-filled spheres, subdivided octahedron (thesis 3.5.2)")},
     SceneInfo{"sphere3d-latlong", SceneKind::Sphere3dLatLong,
-              "3D: two concentric gas-filled lat/long spheres, the non-uniform sphere (thesis 3.5.1)"},
+              SIMCORE_TEXT("simcore", "3D: two concentric gas-filled lat/long spheres, the non-uniform sphere (thesis 3.5.1)")},
 };
 // clang-format on
 }  // namespace

@@ -236,41 +236,44 @@ std::string formatDouble(double value) {
 
 std::vector<CsvColumn> timeSeriesColumns(SceneKind kind, bool solverCounters) {
     using D = Diagnostics;
+    // 2D bodies enclose an area [m^2] and their gas pushes per length [N/m].
+    const bool flat = kind == SceneKind::Ring2d;
     std::vector<CsvColumn> c = {
         {"step", [](const D& d) { return static_cast<double>(d.step); }},
-        {"t", [](const D& d) { return d.time; }},
-        {"dt", [](const D& d) { return d.dt; }},
-        {"energy_kinetic", [](const D& d) { return d.kinetic; }},
-        {"energy_spring", [](const D& d) { return d.springTotal(); }},
-        {"energy_spring_structural", [](const D& d) { return d.spring[0]; }},
+        {"t", [](const D& d) { return d.time; }, "s"},
+        {"dt", [](const D& d) { return d.dt; }, "s"},
+        {"energy_kinetic", [](const D& d) { return d.kinetic; }, "J"},
+        {"energy_spring", [](const D& d) { return d.springTotal(); }, "J"},
+        {"energy_spring_structural", [](const D& d) { return d.spring[0]; }, "J"},
     };
     const bool layered = hasGas(kind);
     if (layered) {
-        c.push_back({"energy_spring_radius", [](const D& d) { return d.spring[1]; }});
-        c.push_back({"energy_spring_shear", [](const D& d) { return d.spring[2]; }});
+        c.push_back({"energy_spring_radius", [](const D& d) { return d.spring[1]; }, "J"});
+        c.push_back({"energy_spring_shear", [](const D& d) { return d.spring[2]; }, "J"});
     }
-    c.push_back({"energy_gravity", [](const D& d) { return d.gravity; }});
-    if (layered) c.push_back({"energy_gas", [](const D& d) { return d.gas; }});
-    c.push_back({"energy_pointer", [](const D& d) { return d.pointer; }});
+    c.push_back({"energy_gravity", [](const D& d) { return d.gravity; }, "J"});
+    if (layered) c.push_back({"energy_gas", [](const D& d) { return d.gas; }, "J"});
+    c.push_back({"energy_pointer", [](const D& d) { return d.pointer; }, "J"});
     // Every scene has the box walls: contact energy (walls + layer barrier) and what contact
     // dissipation and friction removed (both 0 with contact = projection, which books its
     // changes as energy_removed_collisions).
-    c.push_back({"energy_contact", [](const D& d) { return d.contact; }});
-    c.push_back({"energy_total", [](const D& d) { return d.total(); }});
-    c.push_back({"energy_removed", [](const D& d) { return d.removed(); }});
-    c.push_back({"energy_removed_damping", [](const D& d) { return d.removedDamping; }});
-    c.push_back({"energy_removed_contact", [](const D& d) { return d.removedContact; }});
-    c.push_back({"energy_removed_collisions", [](const D& d) { return d.removedCollisions; }});
-    c.push_back({"work_pointer", [](const D& d) { return d.workPointer; }});
-    c.push_back({"energy_drift", [](const D& d) { return d.energyDrift(); }});
+    c.push_back({"energy_contact", [](const D& d) { return d.contact; }, "J"});
+    c.push_back({"energy_total", [](const D& d) { return d.total(); }, "J"});
+    c.push_back({"energy_removed", [](const D& d) { return d.removed(); }, "J"});
+    c.push_back({"energy_removed_damping", [](const D& d) { return d.removedDamping; }, "J"});
+    c.push_back({"energy_removed_contact", [](const D& d) { return d.removedContact; }, "J"});
+    c.push_back({"energy_removed_collisions", [](const D& d) { return d.removedCollisions; }, "J"});
+    c.push_back({"work_pointer", [](const D& d) { return d.workPointer; }, "J"});
+    c.push_back({"energy_drift", [](const D& d) { return d.energyDrift(); }, "J"});
     // Local position error estimate of the last step [m], RMS over particles: rk45's embedded
     // estimate, or step doubling for fixed-step methods (run --error-estimate); -1 = none.
-    c.push_back({"error_estimate", [](const D& d) { return d.errorEstimate; }});
+    c.push_back({"error_estimate", [](const D& d) { return d.errorEstimate; }, "m"});
     if (layered) {
-        c.push_back({"volume_inner", [](const D& d) { return d.volume[0]; }});
-        c.push_back({"volume_outer", [](const D& d) { return d.volume[1]; }});
-        c.push_back({"pressure_inner", [](const D& d) { return d.pressure[0]; }});
-        c.push_back({"pressure_outer", [](const D& d) { return d.pressure[1]; }});
+        const std::string volume = flat ? "m²" : "m³", pressure = flat ? "N/m" : "Pa";
+        c.push_back({"volume_inner", [](const D& d) { return d.volume[0]; }, volume});
+        c.push_back({"volume_outer", [](const D& d) { return d.volume[1]; }, volume});
+        c.push_back({"pressure_inner", [](const D& d) { return d.pressure[0]; }, pressure});
+        c.push_back({"pressure_outer", [](const D& d) { return d.pressure[1]; }, pressure});
     }
     if (solverCounters) {
         auto count = [](auto value) { return [value](const D& d) { return static_cast<double>(value(d)); }; };
@@ -285,9 +288,52 @@ std::vector<CsvColumn> timeSeriesColumns(SceneKind kind, bool solverCounters) {
         c.push_back({"convergence_failures", count([](const D& d) { return d.solver.convergenceFailures; })});
         c.push_back({"reinits", count([](const D& d) { return d.solver.reinitialisations; })});
         c.push_back({"order", count([](const D& d) { return d.solver.order; })});
-        c.push_back({"step_size", [](const D& d) { return d.solver.step; }});
+        c.push_back({"step_size", [](const D& d) { return d.solver.step; }, "s"});
     }
     return c;
+}
+
+std::vector<ChartSpec> timeSeriesCharts(SceneKind kind) {
+    std::vector<ChartSpec> charts = {{"Energy", "energy [J]", {"energy_kinetic", "energy_spring", "energy_gravity"}}};
+    if (hasGas(kind)) charts.front().columns.push_back("energy_gas");
+    charts.front().columns.push_back("energy_total");
+    if (hasGas(kind)) {
+        const bool flat = kind == SceneKind::Ring2d;
+        charts.push_back({flat ? "Area" : "Volume", flat ? "area [m²]" : "volume [m³]", {"volume_inner", "volume_outer"}});
+        charts.push_back({"Pressure", flat ? "pressure [N/m]" : "pressure [Pa]", {"pressure_inner", "pressure_outer"}});
+    }
+    return charts;
+}
+
+std::optional<CsvDialect> csvDialectNamed(std::string_view name) {
+    if (name == "plain") return CsvDialect::Plain;
+    if (name == "excel-semicolon") return CsvDialect::ExcelSemicolon;
+    return std::nullopt;
+}
+
+std::string unknownCsvDialectMessage(std::string_view name) {
+    return "csv dialect " + quoteShort(name) + " is unknown; one of " + std::string(kCsvDialectNames);
+}
+
+std::string_view csvDialectName(CsvDialect dialect) {
+    return dialect == CsvDialect::ExcelSemicolon ? "excel-semicolon" : "plain";
+}
+
+std::string inDialect(std::string plain, CsvDialect dialect, bool fileStart) {
+    if (dialect == CsvDialect::Plain) return plain;
+    std::string out = fileStart ? "\xEF\xBB\xBF" : "";  // UTF-8 byte-order mark
+    out.reserve(out.size() + plain.size() + plain.size() / 16);
+    for (const char ch : plain) {
+        if (ch == ',') out += ';';
+        else if (ch == '.') out += ',';
+        else if (ch == '\n') out += "\r\n";
+        else out += ch;
+    }
+    return out;
+}
+
+std::string headerWithUnit(const CsvColumn& column) {
+    return column.unit.empty() ? column.name : column.name + " [" + column.unit + "]";
 }
 
 std::string csvHeader(const std::vector<CsvColumn>& columns) {

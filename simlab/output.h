@@ -73,11 +73,30 @@ std::optional<int> standardStream(const std::string& path);
 // and ".." count). Returns the message naming both options for the first clash.
 std::optional<std::string> fileClash(const std::vector<std::pair<std::string, std::string>>& inputsThenOutputs);
 
-// One CSV column: its header name and how to read it from the diagnostics.
+// One CSV column: its header name, how to read it from the diagnostics, and its SI unit ("" for
+// counts and orders; the .xlsx header shows it as "name [unit]", the CSV header never does).
 struct CsvColumn {
     std::string name;
     std::function<double(const simcore::Diagnostics&)> value;
+    std::string unit = {};
 };
+
+// How a CSV file is spelled (docs/teachers.md, "Spreadsheets"):
+//   plain            comma, decimal point, LF, no byte-order mark: the documented format every
+//                    script reads (the default);
+//   excel-semicolon  semicolon, decimal comma, CRLF and a UTF-8 byte-order mark: what a spreadsheet
+//                    in a locale with a decimal comma (German, French, Spanish, ...) opens with a
+//                    double-click into columns of numbers. The values are the same shortest
+//                    round-trip texts, only '.' is written ','.
+enum class CsvDialect { Plain, ExcelSemicolon };
+inline constexpr std::string_view kCsvDialectNames = "plain, excel-semicolon";
+std::optional<CsvDialect> csvDialectNamed(std::string_view name);
+// "csv dialect 'NAME' is unknown; one of plain, excel-semicolon" (CLI and Python say the same).
+std::string unknownCsvDialectMessage(std::string_view name);
+std::string_view csvDialectName(CsvDialect dialect);
+// A plain-dialect CSV text (whole lines, numbers and bare words only) as `dialect` spells it;
+// fileStart: the text opens the file (gets the byte-order mark).
+std::string inDialect(std::string plain, CsvDialect dialect, bool fileStart);
 
 // The time-series columns of a scene: only what the scene has (no gas columns in 1D). With
 // solverCounters (a CVODE integrator: simcore::Diagnostics::hasSolverCounters) the solver's cumulative
@@ -85,7 +104,16 @@ struct CsvColumn {
 // solver_steps, rhs_evals, jac_products, linear_iterations, precond_iterations,
 // nonlinear_iterations, error_test_failures, convergence_failures, reinits, order, step_size.
 std::vector<CsvColumn> timeSeriesColumns(simcore::SceneKind kind, bool solverCounters = false);
+// The time series' columns plotted against t in an .xlsx workbook's charts (energy, volume,
+// pressure), with the axis's title; only what the scene has (a 1D scene has no gas).
+struct ChartSpec {
+    std::string title, axis;
+    std::vector<std::string> columns;
+};
+std::vector<ChartSpec> timeSeriesCharts(simcore::SceneKind kind);
 std::string csvHeader(const std::vector<CsvColumn>& columns);
+// "name [unit]", or the name alone for a column without a unit.
+std::string headerWithUnit(const CsvColumn& column);
 std::string csvRow(const std::vector<CsvColumn>& columns, const simcore::Diagnostics& d);
 // Shortest text that reads back to the same double.
 std::string formatDouble(double value);

@@ -57,7 +57,10 @@ void checkSteps(double steps, const std::string& what, const std::string& remedy
 // --- the scene -------------------------------------------------------------------------------------
 
 std::string sceneFileOf(const std::string& scene) {
-    return !simcore::findScene(scene) && scene.size() > 5 && scene.ends_with(".json") ? scene : std::string();
+    // A scene file: named *.json, or an existing file by any name (a file manager hands one over).
+    struct stat st {};
+    const bool file = (scene.size() > 5 && scene.ends_with(".json")) || (::stat(scene.c_str(), &st) == 0 && S_ISREG(st.st_mode));
+    return !simcore::findScene(scene) && file ? scene : std::string();
 }
 
 SceneSetup resolveScene(const SceneRequest& request) {

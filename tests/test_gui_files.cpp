@@ -107,7 +107,7 @@ std::string edited(const std::string& text, const std::string& from, const std::
     return out.replace(at, from.size(), to);
 }
 
-enum class Writer { Scene, Csv, PlotsPng, PlotsSvg, PlotsPdf, Screenshot };
+enum class Writer { Scene, Csv, CsvSemicolon, Xlsx, PlotsPng, PlotsSvg, PlotsPdf, Screenshot };
 enum class Failure { MissingFolder, IsAFolder, DiskFullOverExisting, ReadOnlyFolderOverExisting, FullDevice };
 
 // Writes well over 1 KiB with the given writer; the error message or empty.
@@ -127,6 +127,9 @@ QString writeWith(Writer writer, const QString& path) {
             return writeFile(path, QByteArray::fromStdString(simlab::sceneFileText(sim, "sphere3d", true)));
         }
         case Writer::Csv: return writeCsv(path, simcore::SceneKind::Ring2d, rows);
+        case Writer::CsvSemicolon:
+            return writeCsv(path, simcore::SceneKind::Ring2d, rows, simlab::CsvDialect::ExcelSemicolon);
+        case Writer::Xlsx: return writeXlsx(path, simcore::SceneKind::Ring2d, rows);
         case Writer::PlotsPng:
         case Writer::PlotsSvg:
         case Writer::PlotsPdf: {
@@ -149,7 +152,9 @@ QString writeWith(Writer writer, const QString& path) {
 QString suffixOf(Writer writer) {
     switch (writer) {
         case Writer::Scene: return QStringLiteral("json");
-        case Writer::Csv: return QStringLiteral("csv");
+        case Writer::Csv:
+        case Writer::CsvSemicolon: return QStringLiteral("csv");
+        case Writer::Xlsx: return QStringLiteral("xlsx");
         case Writer::PlotsPng: return QStringLiteral("png");
         case Writer::PlotsSvg: return QStringLiteral("svg");
         case Writer::PlotsPdf: return QStringLiteral("pdf");
@@ -542,7 +547,8 @@ private slots:
         QTest::addColumn<Writer>("writer");
         QTest::addColumn<Failure>("failure");
         const QList<QPair<const char*, Writer>> writers = {
-            {"scene", Writer::Scene},         {"csv", Writer::Csv},           {"plots png", Writer::PlotsPng},
+            {"scene", Writer::Scene},         {"csv", Writer::Csv},           {"csv semicolon", Writer::CsvSemicolon},
+            {"xlsx", Writer::Xlsx},           {"plots png", Writer::PlotsPng},
             {"plots svg", Writer::PlotsSvg}, {"plots pdf", Writer::PlotsPdf}, {"screenshot", Writer::Screenshot}};
         const QList<QPair<const char*, Failure>> failures = {{"missing folder", Failure::MissingFolder},
                                                              {"onto a folder", Failure::IsAFolder},
@@ -627,14 +633,43 @@ private slots:
     void writesSucceedOverAnExistingFile() {
         // The same writers replace an existing file completely when nothing fails.
         QTemporaryDir dir;
-        for (Writer w : {Writer::Scene, Writer::Csv, Writer::PlotsPng, Writer::PlotsSvg, Writer::PlotsPdf,
-                         Writer::Screenshot}) {
+        for (Writer w : {Writer::Scene, Writer::Csv, Writer::CsvSemicolon, Writer::Xlsx, Writer::PlotsPng,
+                         Writer::PlotsSvg, Writer::PlotsPdf, Writer::Screenshot}) {
             const QString path = dir.filePath("out." + suffixOf(w));
             QCOMPARE(writeFile(path, "old"), QString());
             QCOMPARE(writeWith(w, path), QString());
             QVERIFY(readAll(path).size() > 1024);
         }
-        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 5);  // two .png share a name
+        // Two .png and two .csv share a name.
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 6);
+    }
+
+    // --- spreadsheets (the workbook's contents are checked against the CSV by test_python) ---
+
+    void exportDialectFollowsTheLocale() {
+        for (QLocale::Language language : {QLocale::German, QLocale::French, QLocale::Spanish, QLocale::Arabic})
+            if (QLocale(language).decimalPoint() == QLatin1String(","))
+                QCOMPARE(defaultCsvDialect(QLocale(language)), simlab::CsvDialect::ExcelSemicolon);
+        QCOMPARE(defaultCsvDialect(QLocale(QLocale::German, QLocale::Germany)), simlab::CsvDialect::ExcelSemicolon);
+        QCOMPARE(defaultCsvDialect(QLocale(QLocale::French, QLocale::France)), simlab::CsvDialect::ExcelSemicolon);
+        QCOMPARE(defaultCsvDialect(QLocale(QLocale::Spanish, QLocale::Spain)), simlab::CsvDialect::ExcelSemicolon);
+        QCOMPARE(defaultCsvDialect(QLocale(QLocale::English, QLocale::UnitedStates)), simlab::CsvDialect::Plain);
+        QCOMPARE(defaultCsvDialect(QLocale::c()), simlab::CsvDialect::Plain);
+    }
+
+    void semicolonCsvIsThePlainOneRespelled() {
+        QTemporaryDir dir;
+        const QString plain = dir.filePath("plain.csv"), semicolon = dir.filePath("semi.csv");
+        QCOMPARE(writeWith(Writer::Csv, plain), QString());
+        QCOMPARE(writeWith(Writer::CsvSemicolon, semicolon), QString());
+        const QByteArray p = readAll(plain), s = readAll(semicolon);
+        QVERIFY(s.startsWith("\xEF\xBB\xBF"));
+        QCOMPARE(s.count("\r\n"), p.count('\n'));
+        QVERIFY(!s.mid(3).contains('.'));
+        QByteArray back = s.mid(3);
+        back.replace("\r\n", "\n").replace(',', '.').replace(';', ',');
+        QCOMPARE(back, p);
+        QVERIFY(readAll(dir.filePath("plain.csv")).startsWith("step,t,dt,"));
     }
 
     // --- recent files ---

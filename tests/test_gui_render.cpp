@@ -203,6 +203,28 @@ private slots:
         QTest::newRow("ring2d") << SceneKind::Ring2d;
         QTest::newRow("sphere3d") << SceneKind::Sphere3d;
     }
+    void distanceIsToTheLiveReferenceView() {
+        // Euler fails at t = 0.98 s at DT 0.01; midpoint and rk4 run on. The distance is then
+        // measured to midpoint (the first live view): rk4's view names it, midpoint's and the
+        // failed view's show none (as the Run dock's "distance to view 2").
+        MainWindow w(false);
+        simcore::ParameterSet ring(SceneKind::Ring2d);
+        QVERIFY(!ring.set(simcore::Param::Dt, 0.01));
+        w.startScene(ring, {"euler", "midpoint", "rk4"});
+        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 3, testsupport::kHangGuardMs);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest() && w.controller()->latest()->lanes.size() == 3, testsupport::kHangGuardMs);
+        w.controller()->runUntil(1.5);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() &&
+                                     w.controller()->latest()->lanes[1].diagnostics.time > 1.49, testsupport::kHangGuardMs);
+        const FramePtr f = w.controller()->latest();
+        QVERIFY(f->lanes[0].failure.has_value());
+        QCOMPARE(f->lanes[2].divergenceReference, 1);
+        QTRY_VERIFY_WITH_TIMEOUT(w.viewports()[2]->overlayText().contains("distance from midpoint"), testsupport::kHangGuardMs);
+        QVERIFY2(!w.viewports()[1]->overlayText().contains("distance"), qPrintable(w.viewports()[1]->overlayText()));
+        QVERIFY(!w.viewports()[0]->overlayText().contains("distance"));
+        QVERIFY(w.viewports()[0]->overlayText().contains("Blew up"));
+    }
+
     void mouseDragGrabsAndPulls() {
         QFETCH(SceneKind, kind);
         MainWindow w(false);
@@ -244,6 +266,56 @@ private slots:
         send(QEvent::MouseButtonRelease, at + QPointF(0, -120), Qt::NoButton);
         QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].pointer.active, testsupport::kHangGuardMs);
         w.controller()->pause();
+    }
+
+    void keyboardChoosesGrabsAndDrags() {
+        // Issue 30: without a mouse. With focus (a frame shows it) the arrow keys choose a
+        // particle (its forces shown as for a click), Enter grabs it, the arrows drag it, Enter
+        // lets go.
+        MainWindow w(false);
+        w.resize(1200, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set(simcore::Param::Gravity, 0.0);
+        w.startScene(p, {"rk4"});
+        QVERIFY(waitForScene(w, SceneKind::Ring2d));
+        Viewport* v = w.viewports().front();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w, testsupport::kHangGuardMs));
+        v->setFocus(Qt::TabFocusReason);
+        QTRY_VERIFY_WITH_TIMEOUT(v->hasFocus(), testsupport::kHangGuardMs);
+        QVERIFY(v->findChild<QWidget*>(QStringLiteral("focusFrame"))->isVisible());
+        const FramePtr f = w.controller()->latest();
+        int top = -1;
+        const auto& x = f->lanes[0].positions;
+        for (int i = 0; i < f->scene->topology.particleCount(); ++i)
+            if (f->scene->topology.layer[std::size_t(i)] == simcore::Layer::Outer &&
+                (top < 0 || x[3 * std::size_t(i) + 1] > x[3 * std::size_t(top) + 1]))
+                top = i;
+        for (int i = 0; i <= top; ++i) QTest::keyClick(v, Qt::Key_Right);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].breakdown &&
+                                     w.controller()->latest()->lanes[0].breakdown->particle == top,
+                                 testsupport::kHangGuardMs);
+        QTest::keyClick(v, Qt::Key_Left);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].breakdown->particle == top - 1 ||
+                                     (top == 0 && w.controller()->latest()->lanes[0].breakdown->particle ==
+                                                      f->scene->topology.particleCount() - 1),
+                                 testsupport::kHangGuardMs);
+        QTest::keyClick(v, Qt::Key_Right);
+        QTest::keyClick(v, Qt::Key_Return);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.active, testsupport::kHangGuardMs);
+        QCOMPARE(w.controller()->latest()->lanes[0].pointer.particle, top);
+        for (int i = 0; i < 15; ++i) QTest::keyClick(v, Qt::Key_Up);  // 120 pixels up
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest()->lanes[0].pointer.anchor.y() > x[3 * std::size_t(top) + 1] + 0.3,
+                                 testsupport::kHangGuardMs);
+        QTest::keyClick(v, Qt::Key_Return);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].pointer.active, testsupport::kHangGuardMs);
+        QTest::keyClick(v, Qt::Key_Escape);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->latest()->lanes[0].breakdown, testsupport::kHangGuardMs);
+        v->clearFocus();
+        QTRY_VERIFY_WITH_TIMEOUT(!v->findChild<QWidget*>(QStringLiteral("focusFrame"))->isVisible(),
+                                 testsupport::kHangGuardMs);
     }
 
     void clickShowsTheForcesOnAParticle_data() { mouseDragGrabsAndPulls_data(); }
@@ -411,7 +483,10 @@ private slots:
         QVERIFY(QFile::link(scene, dir.filePath("link.png")));
         const QList<QPair<QStringList, QString>> refusals = {
             {{"--bogus"}, "bogus"},
-            {{"stray"}, "unexpected argument 'stray'"},
+            // A plain argument is a scene (the desktop entry's %f): one at most, not beside --scene.
+            {{"stray"}, "unknown scene 'stray'"},
+            {{scene, scene}, "one scene file at most"},
+            {{scene, "--scene", "ring2d"}, "both choose the scene"},
             {{"--after", "1"}, "--after needs --screenshot"},
             {{"--screenshot", shot, "--after", "1", "--after", "2"}, "--after is given 2 times"},
             {{"--compare", "rk4,,euler"}, "item 2 is empty"},
@@ -446,6 +521,24 @@ private slots:
         }
         QVERIFY(!QFileInfo::exists(shot));
         QCOMPARE(QFileInfo(dir.filePath("link.png")).symLinkTarget(), scene);  // the scene file untouched
+        // Without a display: one line saying what to do, exit 2 (not Qt's abort advising to
+        // reinstall), both with no display at all and with one that cannot be reached.
+        for (const QString& display : {QString(), QStringLiteral(":9999")}) {
+            QProcess headless;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"}) env.remove(QString::fromLatin1(name));
+            if (!display.isEmpty()) env.insert(QStringLiteral("DISPLAY"), display);
+            headless.setProcessEnvironment(env);
+            headless.start(ELASTIC_LAB_GUI, {"--scene", "ring2d"});
+            QVERIFY(testsupport::waitForExit(headless));
+            QCOMPARE(headless.exitStatus(), QProcess::NormalExit);
+            QCOMPARE(headless.exitCode(), 2);
+            QString err = QString::fromUtf8(headless.readAllStandardError());
+            err.remove(QRegularExpression("QStandardPaths: [^\\n]*\\n"));
+            QVERIFY2(err.startsWith("elastic-lab: no display") && err.contains("xvfb-run -a elastic-lab"), qPrintable(err));
+            QVERIFY2(err.contains(display.isEmpty() ? QStringLiteral("not set") : display), qPrintable(err));
+            QCOMPARE(err.trimmed().count('\n'), 0);
+        }
         QProcess version;
         version.start(ELASTIC_LAB_GUI, {"--version"});
         QVERIFY(testsupport::waitForExit(version));
@@ -465,6 +558,13 @@ private slots:
         p.start(ELASTIC_LAB_GUI, {"--scene", scene, "--set", "kd=20", "--screenshot", shot, "--after", "0.5"});
         QVERIFY(testsupport::waitForExit(p));
         QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+        QVERIFY(census(QImage(shot)).colours > 20);
+        // The same file given alone, as the desktop entry (Exec=elastic-lab %f) passes it.
+        QVERIFY(QFile::remove(shot));
+        QProcess alone;
+        alone.start(ELASTIC_LAB_GUI, {scene, "--screenshot", shot, "--after", "0.4"});
+        QVERIFY(testsupport::waitForExit(alone));
+        QVERIFY2(alone.exitCode() == 0, alone.readAllStandardError().constData());
         QVERIFY(census(QImage(shot)).colours > 20);
         // Refused before any window: a bad file (naming the key), a missing one, and a --set
         // that changes the body's shape under a saved state.

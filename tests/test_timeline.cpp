@@ -439,6 +439,17 @@ private slots:
         QVERIFY(sameFrame(*c.latest(), *frames.at(7)));
         QCOMPARE(dock.slider()->value(), 7);
         QVERIFY(dock.info()->text().contains(QStringLiteral("checkpoints")));
+        // By keyboard: Tab reaches the slider, the arrow keys move one moment each.
+        QVERIFY(dock.slider()->focusPolicy() & Qt::TabFocus);
+        QTest::keyClick(dock.slider(), Qt::Key_Left);
+        settle(c);
+        QCOMPARE(c.latest()->timeline.moment, 6L);
+        QVERIFY(sameFrame(*c.latest(), *frames.at(6)));
+        QTest::keyClick(dock.slider(), Qt::Key_Right);
+        QTest::keyClick(dock.slider(), Qt::Key_Right);
+        settle(c);
+        QCOMPARE(c.latest()->timeline.moment, 8L);
+        QCOMPARE(dock.slider()->value(), 8);
     }
 
     void windowKeysTravelAndBranch() {

@@ -2,6 +2,7 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QPushButton>
 #include <QFormLayout>
 #include <QLabel>
 #include <QVBoxLayout>
@@ -28,12 +29,16 @@ CompareDialog::CompareDialog(const QStringList& current, double dt, QWidget* par
         if (i < current.size()) m_combo[i]->setCurrentText(current[i]);
         else if (i > 0) m_combo[i]->setCurrentIndex(0);
         form->addRow(tr("View %1").arg(i + 1), m_combo[i]);
+        m_combo[i]->setAccessibleName(tr("View %1").arg(i + 1));
+        m_combo[i]->setToolTip(i == 0 ? tr("The integrator of the first view") : tr("The integrator of this view, or none"));
     }
     auto* dtLabel = new QLabel(tr("%1 s, common to every view (set it in the Run dock)").arg(dt, 0, 'g', 10), this);
     dtLabel->setObjectName(QStringLiteral("dtShown"));
     form->addRow(tr("DT"), dtLabel);
     layout->addLayout(form);
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setToolTip(tr("Start the views side by side from the current start state"));
+    buttons->button(QDialogButtonBox::Cancel)->setToolTip(tr("Keep the views as they are"));
     connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     layout->addWidget(buttons);

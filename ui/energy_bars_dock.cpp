@@ -6,6 +6,7 @@
 #include <QTimer>
 
 #include "qcustomplot.h"
+#include "ui/language.h"
 #include "ui/plot_ticks.h"
 
 namespace elui {
@@ -31,7 +32,7 @@ QString joules(double v) {
     const double a = std::abs(v);
     if (a == 0.0) return QStringLiteral("0 J");
     const int decimals = a >= 100.0 ? 0 : a >= 10.0 ? 1 : a >= 1.0 ? 2 : -1;
-    return (decimals >= 0 ? QString::number(v, 'f', decimals) : QString::number(v, 'g', 3)) + QStringLiteral(" J");
+    return (decimals >= 0 ? num(v, 'f', decimals) : num(v, 'g', 3)) + QStringLiteral(" J");
 }
 }  // namespace
 
@@ -39,6 +40,9 @@ EnergyBarsDock::EnergyBarsDock(QWidget* parent) : QDockWidget(tr("Energy bars"),
     setObjectName(QStringLiteral("EnergyBarsDock"));
     m_plot = new QCustomPlot(this);
     m_plot->setObjectName(QStringLiteral("energyBars"));
+    m_plot->setAccessibleName(tr("Energy bars"));
+    m_plot->setAccessibleDescription(tr("Each part of the energy as a bar, named on the axis; the values are in the "
+                                        "Run dock's readout"));
     m_plot->setMinimumSize(220, 200);
     m_plot->setPlottingHints(QCP::phCacheLabels);
     m_plot->plotLayout()->insertRow(0);
@@ -116,7 +120,15 @@ void EnergyBarsDock::rebuild() {
         for (int lane = 0; lane < m_lanes; ++lane) {
             auto* bars = new QCPBars(m_plot->yAxis, m_plot->xAxis);
             bars->setWidth(width);
-            bars->setPen(QPen(c.darker(130), 1.0));
+            // The spring families share a hue (one energy, three parts); their outlines differ in
+            // style as well as in lightness, for colour-blind eyes and grey-scale print:
+            // structural solid, radius dashed, shear dotted (and each bar is named on the axis).
+            const EnergyTerm term = m_bars[b].term;
+            const Qt::PenStyle style = term == EnergyTerm::SpringRadius  ? Qt::DashLine
+                                       : term == EnergyTerm::SpringShear ? Qt::DotLine
+                                                                         : Qt::SolidLine;
+            const bool family = term == EnergyTerm::SpringRadius || term == EnergyTerm::SpringShear;
+            bars->setPen(QPen(family ? QColor(20, 60, 30) : c.darker(130), family ? 2.0 : 1.0, style));
             bars->setBrush(QBrush(c, laneBrush(lane)));
             bars->setAntialiased(false);
             // One data point, written in place by every frame.
@@ -224,14 +236,14 @@ void EnergyBarsDock::refreshText() {
     QString title = tr("Energy book");
     if (m_hasFrame) {
         title = tr("Energy at t = %1 s\ntotal %2, at the start %3")
-                    .arg(m_time, 0, 'f', 2)
+                    .arg(num(m_time, 'f', 2))
                     .arg(joules(m_total), joules(m_start));
         if (m_lanes > 1) {
             QStringList lanes;
             for (int lane = 0; lane < m_lanes && lane < m_laneNames.size(); ++lane)
                 lanes << QStringLiteral("%1: %2").arg(laneBrushName(lane), m_laneNames[lane]);
             // One view a line: a narrow dock would clip them side by side.
-            title = tr("Energy at t = %1 s\n%2").arg(m_time, 0, 'f', 2).arg(lanes.join(QLatin1Char('\n')));
+            title = tr("Energy at t = %1 s\n%2").arg(num(m_time, 'f', 2)).arg(lanes.join(QLatin1Char('\n')));
         }
     }
     m_title->setText(title);
@@ -253,6 +265,11 @@ QStringList EnergyBarsDock::barNames() const {
 double EnergyBarsDock::value(int bar, int lane) const {
     if (bar < 0 || bar >= int(m_bars.size()) || lane < 0 || lane >= m_lanes) return std::nan("");
     return barAt(bar, lane)->data()->constBegin()->value;
+}
+
+Qt::PenStyle EnergyBarsDock::outline(int bar, int lane) const {
+    if (bar < 0 || bar >= int(m_bars.size()) || lane < 0 || lane >= m_lanes) return Qt::NoPen;
+    return barAt(bar, lane)->pen().style();
 }
 
 QColor EnergyBarsDock::color(int bar, int lane) const {

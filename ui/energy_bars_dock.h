@@ -52,6 +52,8 @@ public:
     int laneCount() const { return m_lanes; }
     double value(int bar, int lane = 0) const;
     QColor color(int bar, int lane = 0) const;
+    // The bar's outline: the spring families differ in style, not only in lightness.
+    Qt::PenStyle outline(int bar, int lane = 0) const;
     QString title() const;
     QCustomPlot* plot() const { return m_plot; }
     // Whether every number shown beside a bar lies inside the plot's axis rect (as drawn last).

@@ -17,6 +17,7 @@
 #include "qcustomplot.h"
 #include "simlab/output.h"
 #include "ui/plot_series.h"
+#include "simlab/timeseries.h"
 
 namespace elui {
 
@@ -110,18 +111,34 @@ QByteArray encodedImage(const QImage& image, const char* format) {
 
 }  // namespace
 
-QString writeCsv(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows) {
+QString writeCsv(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows,
+                 simlab::CsvDialect dialect) {
     // Streamed row by row (a long history is hundreds of MB).
     Output file(path);
     if (QString e = file.open(); !e.isEmpty()) return e;
     const auto columns = simlab::timeSeriesColumns(kind);
-    const std::string header = simlab::csvHeader(columns);
+    const std::string header = simlab::inDialect(simlab::csvHeader(columns), dialect, true);
     file.write(header.data(), qint64(header.size()));
     for (const simcore::Diagnostics& d : rows) {
-        const std::string row = simlab::csvRow(columns, d);
+        const std::string row = simlab::inDialect(simlab::csvRow(columns, d), dialect, false);
         file.write(row.data(), qint64(row.size()));
     }
     return file.commit();
+}
+
+QString writeXlsx(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows) {
+    simlab::TimeSeriesWriter writer(kind, simlab::timeSeriesColumns(kind), {{}, {}, path.toStdString()});
+    for (const simcore::Diagnostics& d : rows) {
+        if (!writer.ok()) break;
+        writer.add(d);
+    }
+    if (!writer.commit()) return QString::fromStdString(writer.error());
+    return {};
+}
+
+simlab::CsvDialect defaultCsvDialect(const QLocale& locale) {
+    return locale.decimalPoint() == QLatin1String(",") ? simlab::CsvDialect::ExcelSemicolon
+                                                       : simlab::CsvDialect::Plain;
 }
 
 QString writeFile(const QString& path, const QByteArray& bytes) { return writeEncoded(path, bytes); }

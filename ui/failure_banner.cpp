@@ -5,6 +5,8 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include "ui/accessibility.h"
+#include "ui/language.h"
 #include "ui/mailbox.h"
 
 namespace elui {
@@ -12,6 +14,9 @@ namespace elui {
 FailureBanner::FailureBanner(QWidget* parent) : QFrame(parent) {
     setObjectName(QStringLiteral("failureBanner"));
     setStyleSheet(QStringLiteral("#failureBanner { background: #fbe3e1; border-bottom: 2px solid #c0392b; }"));
+    // An alert to screen readers: announced when it appears and when the check's answer replaces
+    // its text, read as its plain text (present()).
+    markAsAlert(this);
     m_fromCheck = new Mailbox(this);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(10, 6, 10, 6);
@@ -27,14 +32,17 @@ FailureBanner::FailureBanner(QWidget* parent) : QFrame(parent) {
     buttons->addStretch(1);
     m_smaller = new QPushButton(this);
     m_smaller->setObjectName(QStringLiteral("failureSmallerDt"));
+    m_smaller->setToolTip(tr("Start again from the beginning with the step that ran through the failed stretch"));
     connect(m_smaller, &QPushButton::clicked, this, [this] {
         if (m_check && m_check->workingDt > 0.0) emit setDtAndReset(m_check->workingDt);
     });
     m_implicit = new QPushButton(tr("Use implicit-euler and reset"), this);
     m_implicit->setObjectName(QStringLiteral("failureImplicit"));
+    m_implicit->setToolTip(tr("Start again with the implicit Euler integrator, which is stable at any time step"));
     connect(m_implicit, &QPushButton::clicked, this, &FailureBanner::useImplicitAndReset);
     m_reset = new QPushButton(tr("Reset"), this);
     m_reset->setObjectName(QStringLiteral("failureReset"));
+    m_reset->setToolTip(tr("Start again from the beginning with the same settings"));
     connect(m_reset, &QPushButton::clicked, this, &FailureBanner::resetRequested);
     buttons->addWidget(m_smaller);
     buttons->addWidget(m_implicit);
@@ -80,6 +88,7 @@ void FailureBanner::showFrame(const Frame& frame) {
     if (lane.stretchStart) startCheck(*lane.stretchStart, m_failure);
     present();
     show();
+    announceAlert(this);
 }
 
 void FailureBanner::startCheck(const simcore::SimulationSnapshot& start, const simcore::Failure& failure) {
@@ -94,14 +103,31 @@ void FailureBanner::startCheck(const simcore::SimulationSnapshot& start, const s
             m_checking = false;
             m_check = check;
             present();
+            announceAlert(this);  // the answer replaces "checking…": read it out
         });
     });
+}
+
+// The check's verdict in words: simlab's text in English; in another language the same sentences
+// with the same numbers (the failure's reason and the linearised verdict stay simlab's words).
+QString FailureBanner::checkText(const simlab::FailureCheck& c) {
+    if (currentLanguage() == QLatin1String("en")) return QString::fromStdString(simlab::failureCheckText(c));
+    if (c.physical && c.rerunFailure)
+        return tr("The body itself collapses — no step size will save it: run again from t = %1 s at a step of %2 s "
+                  "(%3), it fails at t = %4 s as well (%5). Change the body instead: lighter masses or less gravity, "
+                  "stiffer springs (ks, and the radial ones), more gas pressure, or more damping.")
+            .arg(num(c.from, 'f', 3), num(c.rerunDt, 'g', 3), QString::fromStdString(c.integrator),
+                 num(c.rerunFailure->time, 'f', 3), QString::fromStdString(c.rerunFailure->reason));
+    return tr("The step was too large: run again from t = %1 s at a step of %2 s, the same stretch runs through "
+              "t = %3 s. The linearised body agrees: %4.")
+        .arg(num(c.from, 'f', 3), num(c.rerunDt, 'g', 3), num(c.until, 'f', 3),
+             QString::fromStdString(simlab::verdictText(c.verdict)));
 }
 
 void FailureBanner::present() {
     QString head = tr("<b>The simulation blew up</b> at t = %1 s (step %2): %3. The run is paused and shows the "
                       "last good state.")
-                       .arg(m_failure.time, 0, 'f', 3)
+                       .arg(num(m_failure.time, 'f', 3))
                        .arg(m_failure.step)
                        .arg(QString::fromStdString(m_failure.reason).toHtmlEscaped());
     QString body;
@@ -111,15 +137,16 @@ void FailureBanner::present() {
         body = tr("Checking whether a smaller step survives the same stretch (a re-run at a quarter of DT, in the "
                   "background)…");
     else if (m_check && m_check->checked)
-        body = QString::fromStdString(simlab::failureCheckText(*m_check)).toHtmlEscaped();
+        body = checkText(*m_check).toHtmlEscaped();
     else
         body = tr("Try a smaller DT, a more stable integrator (rk4, or implicit-euler), softer springs or less "
                   "pressure, then Reset.");
     if (physical) body = QStringLiteral("<b>%1</b>").arg(body);
     m_text->setText(head + QStringLiteral("<br>") + body);
+    setAccessibleName(plainText(m_text->text()));
     // Only remedies that work: the step that ran through; no DT button for the body's own failure.
     m_smaller->setVisible(numerical && m_check->workingDt > 0.0);
-    if (numerical) m_smaller->setText(tr("Use DT = %1 s and reset").arg(m_check->workingDt));
+    if (numerical) m_smaller->setText(tr("Use DT = %1 s and reset").arg(num(m_check->workingDt)));
     const bool unchecked = !m_checking && !(m_check && m_check->checked);
     m_implicit->setVisible((numerical || unchecked) && m_integrator != QStringLiteral("implicit-euler"));
 }

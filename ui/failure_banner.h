@@ -52,6 +52,8 @@ public:
     QPushButton* implicitButton() const { return m_implicit; }
     QPushButton* resetButton() const { return m_reset; }
     QLabel* label() const { return m_text; }
+    // The check's verdict in words, in the current language (simlab's text in English).
+    static QString checkText(const simlab::FailureCheck& check);
 
 signals:
     void setDtAndReset(double dt);

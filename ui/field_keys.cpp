@@ -3,6 +3,8 @@
 #include <QKeyEvent>
 #include <QLineEdit>
 
+#include "ui/accessibility.h"
+
 namespace elui {
 
 namespace {
@@ -46,6 +48,8 @@ void installFieldKeys(QLineEdit* edit, std::function<bool()> commit, std::functi
 void markField(QLineEdit* edit, const QString& error, const QString& normalTip) {
     edit->setStyleSheet(error.isEmpty() ? QString() : QStringLiteral("background: #ffd6d6"));
     edit->setToolTip(error.isEmpty() ? normalTip : error);
+    // A screen reader reads the description: the error while refused, else the field's meaning.
+    edit->setAccessibleDescription(plainText(edit->toolTip()));
     edit->setProperty("refused", !error.isEmpty());
 }
 

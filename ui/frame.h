@@ -12,6 +12,7 @@
 // The scene part (topology, rest lengths, box) changes only when the body is rebuilt; it is
 // shared between frames, so the viewport uploads topology only when `scene` changes.
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,6 +26,8 @@
 #include "simcore/params.h"
 #include "simcore/simulation.h"
 #include "simlab/scenefile.h"
+
+#include "ui/body_measures.h"
 
 namespace elui {
 
@@ -55,6 +58,8 @@ struct LaneFrame {
     QString integrator;
     std::vector<float> positions;         // 3N [m], x0 y0 z0 x1 ...
     std::vector<float> forces;            // 3N [N], only when force vectors are asked for
+    std::vector<float> velocities;        // 3N [m/s]
+    BodyMeasures body;                    // centre of mass, layer centres, lowest point
     simcore::Diagnostics diagnostics;
     std::optional<simcore::Failure> failure;
     // A failed lane: its recorded state some time before the failure (the latest checkpoint at
@@ -100,6 +105,12 @@ struct Frame {
     double atol = 1e-6, rtol = 1e-6;      // the adaptive methods' tolerances in use [m, m/s] and [1]
     quint64 serial = 0;                   // increases with every published frame
     TimelineInfo timeline;
+    // For the reference curve (reference_run.h): lane 0's state when the timeline began (a
+    // new scene, a reset, an opened file; the same pointer until the next one), and the
+    // simulated time of the first change of the physics since then that is still on the
+    // timeline: a parameter edit other than DT, or a grab (+inf: none).
+    std::shared_ptr<const simcore::SimulationSnapshot> runStart;
+    double physicsChangedAt = std::numeric_limits<double>::infinity();
 };
 
 using FramePtr = std::shared_ptr<const Frame>;

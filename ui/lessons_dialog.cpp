@@ -36,12 +36,16 @@ LessonsDialog::LessonsDialog(QWidget* parent) : QDialog(parent) {
     auto* splitter = new QSplitter(Qt::Horizontal, this);
     m_list = new QListWidget(splitter);
     m_list->setObjectName(QStringLiteral("lessonList"));
+    m_list->setAccessibleName(tr("Experiments"));
+    m_list->setAccessibleDescription(tr("The guided experiments; the arrow keys choose one, its text is beside the list"));
     for (const Lesson& l : lessons()) {
         auto* item = new QListWidgetItem(l.title, m_list);
         item->setData(Qt::UserRole, l.id);
     }
     m_text = new QTextBrowser(splitter);
     m_text->setObjectName(QStringLiteral("lessonText"));
+    m_text->setAccessibleName(tr("Experiment"));
+    m_text->setAccessibleDescription(tr("What the chosen experiment sets up, what to change and what to look for"));
     m_text->setOpenExternalLinks(true);
     // Long commands wrap instead of scrolling the page sideways.
     m_text->document()->setDefaultStyleSheet(QStringLiteral("pre { white-space: pre-wrap; }"));
@@ -55,6 +59,8 @@ LessonsDialog::LessonsDialog(QWidget* parent) : QDialog(parent) {
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     m_setUp = buttons->addButton(tr("Set up this experiment"), QDialogButtonBox::ActionRole);
     m_setUp->setObjectName(QStringLiteral("setUpLesson"));
+    m_setUp->setToolTip(tr("Set up the chosen experiment in the main window: its scene, parameters and docks"));
+    buttons->button(QDialogButtonBox::Close)->setToolTip(tr("Close the experiments; the main window keeps its scene"));
     m_setUp->setDefault(true);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(m_setUp, &QPushButton::clicked, this, [this] {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
@@ -12,6 +13,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
@@ -19,16 +21,21 @@
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
+#include <QTranslator>
 #include <QVBoxLayout>
 
 #include "simcore/scenes.h"
+#include "ui/accessibility.h"
 #include "ui/compare_dialog.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/export.h"
 #include "ui/failure_banner.h"
 #include "ui/help_dialog.h"
+#include "ui/language.h"
 #include "ui/lessons.h"
+#include "ui/lesson_dock.h"
 #include "ui/lessons_dialog.h"
+#include "ui/measure_plot_dock.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_dock.h"
 #include "ui/presets.h"
@@ -56,6 +63,9 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     createTimeline();
     createClassControls();
     readSettings();
+    // Screen readers get plain-text descriptions of every control (docs/accessibility.md).
+    installToolTipDescriptions();
+    if (m_highContrastWanted) setHighContrast(true);
 }
 
 MainWindow::~MainWindow() {
@@ -76,7 +86,7 @@ void MainWindow::createActions() {
     m_saveSceneAs = new QAction(tr("Save scene &as..."), this);
     m_saveSceneAs->setShortcut(Qt::CTRL | Qt::SHIFT | Qt::Key_S);
     connect(m_saveSceneAs, &QAction::triggered, this, &MainWindow::saveSceneAs);
-    m_exportCsv = new QAction(tr("Export &CSV..."), this);
+    m_exportCsv = new QAction(tr("Export &Data (CSV, Excel)..."), this);
     m_exportCsv->setToolTip(tr("The time series of this run, with the same columns as elastic-lab-cli run --csv"));
     connect(m_exportCsv, &QAction::triggered, this, &MainWindow::exportCsv);
     m_exportPlots = new QAction(tr("Export &plots (PNG, SVG, PDF)..."), this);
@@ -131,7 +141,8 @@ void MainWindow::createActions() {
         {tr("Structural springs"), nullptr, 0}, {tr("Radius springs"), nullptr, 1},
         {tr("Shear springs"), nullptr, 2},      {tr("Faces"), &ViewOptions::faces, -1},
         {tr("Particles"), &ViewOptions::particles, -1}, {tr("Normals"), &ViewOptions::normals, -1},
-        {tr("Force vectors"), &ViewOptions::forces, -1}, {tr("Colour springs by strain"), &ViewOptions::strain, -1},
+        {tr("Force vectors"), &ViewOptions::forces, -1}, {tr("Velocity vectors"), &ViewOptions::velocities, -1},
+        {tr("Ruler (drag to measure)"), &ViewOptions::ruler, -1}, {tr("Colour springs by strain"), &ViewOptions::strain, -1},
         {tr("Collision box"), &ViewOptions::box, -1},
     };
     for (const Toggle& t : toggles) {
@@ -157,7 +168,7 @@ void MainWindow::createActions() {
     m_help = new QAction(tr("Elastic Lab &help"), this);
     m_help->setShortcut(QKeySequence::HelpContents);
     connect(m_help, &QAction::triggered, this, &MainWindow::showHelp);
-    m_lessons = new QAction(tr("&Experiments..."), this);
+    m_lessons = new QAction(tr("Lesson &texts (Experiments)..."), this);
     m_lessons->setToolTip(tr("Guided experiments: a scene set up in one click, what to change, what to look at, "
                              "the measured answer"));
     connect(m_lessons, &QAction::triggered, this, &MainWindow::showLessons);
@@ -193,10 +204,18 @@ void MainWindow::createMenus() {
     m_viewMenu = menuBar()->addMenu(tr("&View"));  // dock toggles are added in createDocks()
     for (QAction* a : m_displayToggles) m_viewMenu->addAction(a);
     m_viewMenu->addAction(m_resetView);
+    // High contrast: black, white and yellow for the whole window (docs/accessibility.md).
+    m_highContrast = m_viewMenu->addAction(tr("&High contrast"));
+    m_highContrast->setObjectName(QStringLiteral("highContrast"));
+    m_highContrast->setCheckable(true);
+    m_highContrast->setToolTip(tr("White text on black, yellow highlight and focus: for low vision and projectors"));
+    connect(m_highContrast, &QAction::toggled, this, &MainWindow::setHighContrast);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_presentation);
     m_viewMenu->addAction(m_zoomIn);
     m_viewMenu->addAction(m_zoomOut);
+    m_viewMenu->addSeparator();
+    createLanguageMenu();
     m_viewMenu->addSeparator();
 
     QMenu* compare = menuBar()->addMenu(tr("&Compare"));
@@ -234,6 +253,15 @@ void MainWindow::createMenus() {
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
+
+    // Lessons: each guided experiment set up in one click, and their texts.
+    m_lessonsMenu = menuBar()->addMenu(tr("&Lessons"));
+    for (const Lesson& l : lessons())
+        m_lessonsMenu->addAction(l.title, this, [this, id = l.id] {
+            if (const Lesson* lesson = findLesson(id)) applyLesson(*lesson);
+        });
+    m_lessonsMenu->addSeparator();
+    m_lessonsMenu->addAction(m_lessons);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_help);
@@ -280,7 +308,7 @@ void MainWindow::createCentral() {
     connect(m_useSuggestedDt, &QPushButton::clicked, this, [this] {
         m_controller->setParameter(simcore::Param::Dt, m_suggestedDt);
         m_stabilityBanner->hide();
-        status(tr("DT set to %1 s").arg(m_suggestedDt));
+        status(tr("DT set to %1 s").arg(num(m_suggestedDt)));
     });
     auto* stableImplicit = new QPushButton(tr("Use implicit-euler"), m_stabilityBanner);
     stableImplicit->setToolTip(tr("Linearised backward Euler: stable at any DT (and damps more)"));
@@ -332,6 +360,13 @@ void MainWindow::rebuildViewports(int count) {
         connect(v, &Viewport::anchorMoved, m_controller, &SimulationController::moveAnchor);
         connect(v, &Viewport::releaseRequested, m_controller, &SimulationController::release);
         connect(v, &Viewport::selectRequested, m_controller, &SimulationController::selectAlongRay);
+        connect(v, &Viewport::particleSelected, m_controller, &SimulationController::selectParticle);
+        v->setHighContrast(m_highContrast->isChecked());
+        connect(v, &Viewport::contextRequested, this, [this](const QPoint& at, int particle) {
+            QMenu* menu = viewContextMenu(particle);
+            menu->setAttribute(Qt::WA_DeleteOnClose);
+            menu->popup(at);
+        });
         connect(m_controller, &SimulationController::grabbed, v, &Viewport::onGrabbed);
         m_viewports.push_back(v);
     }
@@ -373,10 +408,22 @@ void MainWindow::createDocks() {
     m_stabilityMapDock = new StabilityMapDock(this);
     tabifyDockWidget(m_pvDock, m_stabilityMapDock);
     m_stabilityMapDock->hide();
+    // The lesson in use, under the Run dock, a tab beside Scene and Parameters (raised when a
+    // lesson opens it: its table needs the height; Parameters is one click away for a step that
+    // types a value): closed until a lesson (or View) opens it.
+    m_lessonDock = new LessonDock(this);
+    tabifyDockWidget(m_parameterDock, m_lessonDock);
+    m_lessonDock->hide();
+    // What the teacher picks off the body (right-click in the view), under the plots.
+    m_measureDock = new MeasurePlotDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, m_measureDock);
+    splitDockWidget(m_plotDock, m_measureDock, Qt::Vertical);
+    m_measureDock->hide();
     for (QDockWidget* d : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_parameterDock),
                            static_cast<QDockWidget*>(m_runDock), static_cast<QDockWidget*>(m_plotDock),
                            static_cast<QDockWidget*>(m_energyBarsDock), static_cast<QDockWidget*>(m_pvDock),
-                           static_cast<QDockWidget*>(m_stabilityMapDock)})
+                           static_cast<QDockWidget*>(m_stabilityMapDock), static_cast<QDockWidget*>(m_lessonDock),
+                           static_cast<QDockWidget*>(m_measureDock)})
         m_viewMenu->addAction(d->toggleViewAction());
     resizeDocks({m_runDock, m_plotDock}, {290, 420}, Qt::Horizontal);
 }
@@ -409,7 +456,8 @@ void MainWindow::keepMinimumWidth() {
 }
 
 QStringList MainWindow::dockNames() {
-    return {QStringLiteral("energy-bars"), QStringLiteral("pv"), QStringLiteral("stability-map"), QStringLiteral("timeline")};
+    return {QStringLiteral("energy-bars"), QStringLiteral("pv"), QStringLiteral("stability-map"), QStringLiteral("timeline"),
+            QStringLiteral("lesson")};
 }
 
 QDockWidget* MainWindow::dock(const QString& name) const {
@@ -417,13 +465,15 @@ QDockWidget* MainWindow::dock(const QString& name) const {
            : name == QLatin1String("pv")            ? static_cast<QDockWidget*>(m_pvDock)
            : name == QLatin1String("stability-map") ? static_cast<QDockWidget*>(m_stabilityMapDock)
            : name == QLatin1String("timeline")      ? static_cast<QDockWidget*>(m_timelineDock)
+           : name == QLatin1String("lesson")        ? static_cast<QDockWidget*>(m_lessonDock)
                                                     : nullptr;
 }
 
 bool MainWindow::openDock(const QString& name) {
-    if (name == QLatin1String("timeline")) {  // under the view: no share of the right column
-        m_timelineDock->show();
-        m_timelineDock->raise();
+    if (name == QLatin1String("timeline") || name == QLatin1String("lesson")) {  // no share of the right column
+        QDockWidget* own = dock(name);
+        own->show();
+        own->raise();
         return true;
     }
     QDockWidget* dock = this->dock(name);
@@ -467,10 +517,14 @@ void MainWindow::connectController() {
     connect(c, &SimulationController::rowsAppended, this, [this](int first, int count) {
         m_plotDock->appendRows(m_controller->history(), first, count);
         m_pvDock->appendRows(m_controller->history(), first, count);
+        m_lessonDock->appendRows(m_controller->history(), first, count);
     });
     connect(c, &SimulationController::viewRowsAppended, this, [this](int view, int first, int count) {
         m_plotDock->appendViewRows(view, m_controller->viewHistory()[std::size_t(view - 1)], first, count);
     });
+    connect(c, &SimulationController::historyReset, m_lessonDock, &LessonDock::clearRun);
+    connect(c, &SimulationController::historyReset, m_measureDock, &MeasurePlotDock::clearData);
+    connect(m_lessonDock, &LessonDock::runUntilRequested, c, &SimulationController::runUntil);
     connect(c, &SimulationController::parameterRejected, this,
             [this](const QString&, const QString& message) { status(message); });
     connect(c, &SimulationController::sceneRejected, this, [this](const QString& message) {
@@ -533,8 +587,57 @@ void MainWindow::readSettings() {
         if (now && !isMaximized() && !isFullScreen()) setGeometry(fitWithin(geometry(), now->availableGeometry()));
     }
     restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+    // High contrast stays chosen from one start to the next.
+    if (settings.value(QStringLiteral("highContrast"), false).toBool()) m_highContrastWanted = true;
     const double scale = settings.value(QStringLiteral("uiScale"), 1.0).toDouble();
     if (scale > 1.0) setUiScale(scale);
+}
+
+void MainWindow::createLanguageMenu() {
+    // View > Language: the choice is kept in the settings and applies at the next start (every
+    // dock, plot and dialog is built in its language; the running experiment is not torn down
+    // for it). The menu says so, in the language chosen as well as in this one.
+    QMenu* menu = m_viewMenu->addMenu(tr("&Language"));
+    menu->setObjectName(QStringLiteral("languageMenu"));
+    auto* group = new QActionGroup(menu);
+    const QString saved = m_useSettings ? QSettings().value(QStringLiteral("language")).toString() : QString();
+    auto add = [&](const QString& code, const QString& text) {
+        QAction* a = menu->addAction(text);
+        a->setObjectName(QStringLiteral("language-") + code);
+        a->setCheckable(true);
+        a->setData(code);
+        a->setChecked(code == (saved.isEmpty() ? QStringLiteral("system") : saved));
+        group->addAction(a);
+        connect(a, &QAction::triggered, this, [this, code] { chooseLanguage(code); });
+    };
+    add(QStringLiteral("system"), tr("System language"));
+    menu->addSeparator();
+    for (const Language& l : languages()) add(l.code, l.nativeName);
+    menu->addSeparator();
+    QAction* note = menu->addAction(tr("Applies at the next start (now: %1)")
+                                        .arg(QLocale(currentLanguage()).nativeLanguageName()));
+    note->setEnabled(false);
+}
+
+void MainWindow::chooseLanguage(const QString& code) {
+    if (m_useSettings) QSettings().setValue(QStringLiteral("language"), code);
+    const QString target = code == QLatin1String("system")
+                               ? elui::chooseLanguage({}, {}, QLocale::system().uiLanguages())
+                               : code;
+    // The sentence in the language chosen too: a student who picked it by mistake can read it.
+    const char* const sentence = QT_TR_NOOP("The language changes when Elastic Lab starts again.");
+    QString text = tr(sentence);
+    QTranslator other;
+    if (target != currentLanguage() && target != QLatin1String("en") &&
+        other.load(QStringLiteral(":/i18n/elastic-lab_%1.qm").arg(target)))
+        text += QStringLiteral("\n\n") + other.translate("elui::MainWindow", sentence);
+    else if (target == QLatin1String("en") && currentLanguage() != QLatin1String("en"))
+        text += QStringLiteral("\n\n") + QString::fromLatin1(sentence);
+    status(tr("Language: %1 at the next start").arg(QLocale(target).nativeLanguageName()));
+    auto* box = new QMessageBox(QMessageBox::Information, tr("Language"), text, QMessageBox::Ok, this);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setObjectName(QStringLiteral("languageNote"));
+    box->open();
 }
 
 void MainWindow::writeSettings() {
@@ -542,6 +645,7 @@ void MainWindow::writeSettings() {
     QSettings settings;
     settings.setValue(QStringLiteral("geometry"), saveGeometry());
     settings.setValue(QStringLiteral("windowState"), saveState());
+    settings.setValue(QStringLiteral("highContrast"), m_highContrast->isChecked());
     settings.setValue(QStringLiteral("uiScale"), uiScale());
 }
 
@@ -622,8 +726,54 @@ void MainWindow::applyPreset(const Preset& preset) {
 void MainWindow::applyLesson(const Lesson& lesson) {
     applyPreset(lesson.preset);
     for (const QString& dock : lesson.docks) openDock(dock);
-    status(tr("%1: set up. Help > Experiments says what to change and what to look at. Press Run (Space).")
+    m_lessonDock->setLesson(findLesson(lesson.id));
+    openDock(QStringLiteral("lesson"));
+    status(tr("%1: set up. Lessons > Lesson texts says what to change and what to look at. Press Run (Space).")
                .arg(lesson.title));
+}
+
+void MainWindow::plotQuantity(const Tracked& quantity) {
+    m_measureDock->add(quantity);
+    m_measureDock->show();
+    m_measureDock->raise();
+    status(tr("Plotting the %1 against time (the Measured dock).").arg(quantity.name()));
+}
+
+QMenu* MainWindow::viewContextMenu(int particle) {
+    auto* menu = new QMenu(this);
+    menu->setObjectName(QStringLiteral("viewContextMenu"));
+    using K = Tracked::Kind;
+    auto plot = [this, menu](const QString& text, K kind, int index = -1, int layer = 0) {
+        Tracked t;
+        t.kind = kind;
+        t.particle = index;
+        t.layer = layer;
+        menu->addAction(text, this, [this, t] { plotQuantity(t); });
+    };
+    const FramePtr frame = m_controller->latest();
+    const bool layered = frame && !frame->lanes.empty() && frame->lanes.front().body.layered;
+    if (particle >= 0) {
+        menu->addSection(tr("Particle %1").arg(particle));
+        plot(tr("Plot its height"), K::ParticleHeight, particle);
+        plot(tr("Plot its speed"), K::ParticleSpeed, particle);
+        const auto& layers = frame ? frame->scene->topology.layer : std::vector<simcore::Layer>{};
+        if (layered && particle < int(layers.size())) {
+            const int layer = layers[std::size_t(particle)] == simcore::Layer::Inner ? 0 : 1;
+            plot(layer == 0 ? tr("Plot the inner layer's centre height") : tr("Plot the outer layer's centre height"),
+                 K::LayerHeight, -1, layer);
+        }
+    }
+    menu->addSection(tr("Body"));
+    plot(tr("Plot the centre-of-mass height"), K::CentreHeight);
+    plot(tr("Plot the centre-of-mass speed"), K::CentreSpeed);
+    if (layered) plot(tr("Plot the layers' separation"), K::LayerSeparation);
+    menu->addSeparator();
+    for (QAction* a : m_displayToggles)
+        if (a->objectName() == QLatin1String("toggle_Velocity vectors") ||
+            a->objectName() == QLatin1String("toggle_Force vectors") ||
+            a->objectName() == QLatin1String("toggle_Ruler (drag to measure)"))
+            menu->addAction(a);
+    return menu;
 }
 
 LessonsDialog* MainWindow::showLessons() {
@@ -653,13 +803,16 @@ void MainWindow::onFrame(const FramePtr& frame) {
     const bool multi = frame->lanes.size() > 1;
     for (Viewport* v : m_viewports) {
         const LaneFrame& lane = frame->lanes[std::size_t(std::min<int>(v->lane(), int(frame->lanes.size()) - 1))];
-        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(frame->parameters.get(simcore::Param::Dt))
+        v->setTitle(multi ? QStringLiteral("%1, DT %2 s").arg(lane.integrator).arg(num(frame->parameters.get(simcore::Param::Dt)))
                           : QString());
         v->showFrame(frame);
     }
     m_runDock->showFrame(frame);
+    if (!m_lessonDock->isHidden()) m_lessonDock->showFrame(frame);
+    m_measureDock->showFrame(frame);
     m_plotDock->setLive(frame->running);
     m_plotDock->setViews(*frame);
+    m_plotDock->followReference(*frame);
     m_energyBarsDock->showFrame(*frame);
     QStringList integrators;
     for (const LaneFrame& lane : frame->lanes) integrators << lane.integrator;
@@ -675,6 +828,29 @@ void MainWindow::onFrame(const FramePtr& frame) {
     m_runPause->setText(frame->running ? tr("&Pause") : tr("&Run"));
     m_banner->showFrame(*frame);
 }
+
+void MainWindow::setHighContrast(bool on) {
+    if (m_highContrast->isChecked() != on) m_highContrast->setChecked(on);  // toggled() calls back
+    static const QPalette normal = QApplication::palette();
+    QApplication::setPalette(on ? highContrastPalette() : normal);
+    // The Fusion style draws frames and check boxes in shades of the window colour, which on black
+    // vanish: white frames, and a yellow check, say where the controls are.
+    qApp->setStyleSheet(on ? QStringLiteral("QPushButton, QComboBox, QLineEdit { border: 1px solid white; padding: 2px 6px; }"
+                                            "QPushButton:focus, QComboBox:focus, QLineEdit:focus { border: 2px solid yellow; }"
+                                            "QCheckBox::indicator { width: 13px; height: 13px; border: 2px solid white; }"
+                                            "QCheckBox::indicator:checked { background: yellow; }")
+                           : QString());
+    // The banners' own colours: light tints in the normal theme; black with a coloured border
+    // in high contrast (their white text stays readable).
+    m_banner->setStyleSheet(on ? QStringLiteral("#failureBanner { background: black; border: 3px solid #ff5050; }")
+                               : QStringLiteral("#failureBanner { background: #fbe3e1; border-bottom: 2px solid #c0392b; }"));
+    m_stabilityBanner->setStyleSheet(
+        on ? QStringLiteral("#stabilityBanner { background: black; border: 3px solid yellow; }")
+           : QStringLiteral("#stabilityBanner { background: #fdf0d5; border-bottom: 2px solid #d68910; }"));
+    for (Viewport* v : m_viewports) v->setHighContrast(on);
+}
+
+bool MainWindow::highContrast() const { return m_highContrast->isChecked(); }
 
 QString MainWindow::failureText() const { return m_banner->text(); }
 
@@ -692,7 +868,7 @@ void MainWindow::showStabilityAdvice(const SceneData& scene) {
     // so an explicit method needs a smaller DT (docs/numerics.md, "Resolution").
     m_stabilityText->setText(tr("<b>This body is likely unstable at the current DT.</b> %1. The run is paused.")
                                  .arg(scene.stabilityWarning.toHtmlEscaped()));
-    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(scene.suggestedDt));
+    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(num(scene.suggestedDt)));
     m_stabilityBanner->show();
 }
 
@@ -868,11 +1044,26 @@ QString MainWindow::saveSceneFile(const QString& path) {
 }
 
 void MainWindow::exportCsv() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), QStringLiteral("elastic-lab.csv"),
-                                                      tr("CSV files (*.csv)"));
+    // Three spellings of the same table; the one this locale's spreadsheet opens by a
+    // double-click is offered first (the semicolon dialect where the decimal separator is a comma).
+    const QString plain = tr("CSV, comma and decimal point (*.csv)");
+    const QString semicolon = tr("CSV for spreadsheets, semicolon and decimal comma (*.csv)");
+    const QString workbook = tr("Excel workbook with charts (*.xlsx)");
+    QString selected = defaultCsvDialect(locale()) == simlab::CsvDialect::ExcelSemicolon ? semicolon : plain;
+    QString path = QFileDialog::getSaveFileName(this, tr("Export data"), QStringLiteral("elastic-lab.csv"),
+                                                QStringList{plain, semicolon, workbook}.join(QStringLiteral(";;")),
+                                                &selected);
     if (path.isEmpty()) return;
-    const QString error = writeCsv(path, m_controller->sceneKind(), m_controller->history());
-    if (!error.isEmpty()) warn(tr("Export CSV"), error);
+    const bool xlsx = selected == workbook || path.endsWith(QLatin1String(".xlsx"), Qt::CaseInsensitive);
+    if (xlsx && !path.endsWith(QLatin1String(".xlsx"), Qt::CaseInsensitive)) {
+        if (path.endsWith(QLatin1String(".csv"), Qt::CaseInsensitive)) path.chop(4);
+        path += QLatin1String(".xlsx");
+    }
+    const QString error = xlsx ? writeXlsx(path, m_controller->sceneKind(), m_controller->history())
+                               : writeCsv(path, m_controller->sceneKind(), m_controller->history(),
+                                          selected == semicolon ? simlab::CsvDialect::ExcelSemicolon
+                                                                : simlab::CsvDialect::Plain);
+    if (!error.isEmpty()) warn(tr("Export data"), error);
     else status(tr("Wrote %1 rows to %2").arg(m_controller->history().size()).arg(path));
 }
 

@@ -37,6 +37,9 @@ class TimelineDock;
 struct Preset;
 struct Lesson;
 class LessonsDialog;
+class LessonDock;
+class MeasurePlotDock;
+struct Tracked;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -55,8 +58,17 @@ public:
     PvDock* pvDock() const { return m_pvDock; }
     TimelineDock* timelineDock() const { return m_timelineDock; }
     StabilityMapDock* stabilityMapDock() const { return m_stabilityMapDock; }
+    LessonDock* lessonDock() const { return m_lessonDock; }
+    MeasurePlotDock* measureDock() const { return m_measureDock; }
+    // The view's right-click menu for a particle (-1: none under the cursor): plot its height or
+    // speed, its layer centre's height, the body's centre-of-mass height or speed, the layers'
+    // separation; the force and velocity arrows and the ruler. The caller shows it.
+    QMenu* viewContextMenu(int particle);
+    // Adds a quantity to the Measured dock and shows it.
+    void plotQuantity(const elui::Tracked& quantity);
+    QMenu* lessonsMenu() const { return m_lessonsMenu; }
     // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv", "stability-map",
-    // "timeline".
+    // "timeline", "lesson".
     static QStringList dockNames();
     // Shows the named dock (hidden ones are closed by default); false for an unknown name.
     bool openDock(const QString& name);
@@ -65,6 +77,9 @@ public:
     const ViewOptions& viewOptions() const { return m_options; }
     void setViewOptions(const ViewOptions& options);
     QString failureText() const;
+    // View > High contrast (docs/accessibility.md): the palette, the banners and the views.
+    void setHighContrast(bool on);
+    bool highContrast() const;
     FailureBanner* failureBanner() const { return m_banner; }
     // The pre-run stability warning after a rebuild (empty when none is shown), and its
     // one-click remedy: the button that sets the suggested DT.
@@ -138,6 +153,8 @@ private:
     void setCurrentFile(const QString& path, const simcore::ParameterSet& saved, const QString& integrator);
     void updateTitle(const Frame& frame);
     void fillRecentMenu();
+    void createLanguageMenu();
+    void chooseLanguage(const QString& code);  // View > Language: kept for the next start
     void adoptOpenedFile();
 
     SimulationController* m_controller = nullptr;
@@ -164,6 +181,9 @@ private:
     PvDock* m_pvDock = nullptr;
     TimelineDock* m_timelineDock = nullptr;
     StabilityMapDock* m_stabilityMapDock = nullptr;
+    LessonDock* m_lessonDock = nullptr;
+    MeasurePlotDock* m_measureDock = nullptr;
+    QMenu* m_lessonsMenu = nullptr;
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;
@@ -210,6 +230,8 @@ private:
     QAction* m_help = nullptr;
     QAction* m_lessons = nullptr;
     LessonsDialog* m_lessonsDialog = nullptr;
+    QAction* m_highContrast = nullptr;
+    bool m_highContrastWanted = false;  // from the settings, applied once the window is built
     QAction* m_about = nullptr;
     std::vector<QAction*> m_displayToggles;
     QMenu* m_viewMenu = nullptr;

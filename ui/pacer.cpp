@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <QCoreApplication>
+
 namespace elui {
 
 double speedFactor(Speed speed) {
@@ -16,10 +18,10 @@ double speedFactor(Speed speed) {
 
 QString speedName(Speed speed) {
     switch (speed) {
-        case Speed::RealTime: return QStringLiteral("Real time");
-        case Speed::Quarter: return QStringLiteral("1/4 speed");
-        case Speed::Tenth: return QStringLiteral("1/10 speed");
-        case Speed::AsFastAsPossible: return QStringLiteral("As fast as possible");
+        case Speed::RealTime: return QCoreApplication::translate("elui::Pacer", "Real time");
+        case Speed::Quarter: return QCoreApplication::translate("elui::Pacer", "1/4 speed");
+        case Speed::Tenth: return QCoreApplication::translate("elui::Pacer", "1/10 speed");
+        case Speed::AsFastAsPossible: return QCoreApplication::translate("elui::Pacer", "As fast as possible");
     }
     return {};
 }

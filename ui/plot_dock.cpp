@@ -12,6 +12,7 @@
 #include <QVBoxLayout>
 
 #include "qcustomplot.h"
+#include "ui/language.h"
 #include "ui/plot_ticks.h"
 
 namespace elui {
@@ -92,6 +93,8 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_bandNote = new QLabel(host);
     m_bandNote->setObjectName(QStringLiteral("errorBandNote"));
     m_bandNote->setStyleSheet(QStringLiteral("QLabel { color: #806000; }"));
+    m_windowCombo->setAccessibleName(tr("Time window of the plots"));
+    m_windowCombo->setToolTip(tr("How much of the run the plots show: the last seconds, or all of it"));
     m_bandNote->setWordWrap(true);
     m_bandNote->hide();
     bar->addWidget(new QLabel(tr("Show"), host));
@@ -103,10 +106,13 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     // the window) wider than a projector's 1280 px once the energy docks open beside it.
     layout->addWidget(m_showBands);
     layout->addWidget(m_bandNote);
+    createReferenceControls(host, layout);
     // The plots scroll when the screen is too short for them (a projector in presentation
     // mode): each keeps the height its axes and legend need instead of being squashed.
     auto* scroll = new QScrollArea(host);
     scroll->setObjectName(QStringLiteral("plotsScroll"));
+    scroll->setAccessibleName(tr("Plots"));
+    scroll->setAccessibleDescription(tr("Volume, pressure and energy against simulated time, one plot under the other"));
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -130,6 +136,8 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_driftPlot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
     m_driftPlot->yAxis->setNumberFormat(QStringLiteral("eb"));
     m_driftPlot->yAxis->setNumberPrecision(0);
+    keepTickLabelsApart(m_driftPlot->xAxis);
+    keepTickLabelsApart(m_driftPlot->yAxis);
     legendUnderAxes(m_driftPlot, font());
     m_driftMarks = m_driftPlot->addGraph();
     m_driftMarks->setLineStyle(QCPGraph::lsNone);
@@ -189,6 +197,9 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     for (const PlotSpec& spec : m_specs) {
         auto* plot = new QCustomPlot(m_plotLayout->parentWidget());
         plot->setObjectName(QStringLiteral("plot_") + spec.id);
+        plot->setAccessibleName(spec.title);
+        plot->setAccessibleDescription(tr("%1 against simulated time; the numbers are in the Run dock's readout and in "
+                                          "File > Export Data").arg(spec.title));
         plot->setMinimumHeight(plotMinimumHeight());
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         // Live traces: fast polylines and cached labels keep a replot cheap on a busy machine.
@@ -280,6 +291,7 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     // The views' graphs again for the new plots (the views stay until a frame says otherwise).
     for (int v = 1; v < int(m_views.size()); ++v) addViewGraphs(v);
     updateViewLegend();
+    rebuildReferenceGraphs();
     clear();
     updateCursor();
 }
@@ -470,11 +482,11 @@ QString PlotDock::cursorText(const QString& plotId) const {
     const int i = plotIndex(plotId);
     if (i < 0) return {};
     // Compact: three values a line under the time, so the label hides little of the curves.
-    QString text = tr("t = %1 s").arg(m_cursorTime, 0, 'f', 4);
+    QString text = tr("t = %1 s").arg(num(m_cursorTime, 'f', 4));
     const auto& series = m_specs[std::size_t(i)].series;
     for (std::size_t s = 0; s < series.size(); ++s)
         text += (s % 3 == 0 ? QStringLiteral("\n") : QStringLiteral("   ")) +
-                QStringLiteral("%1 %2").arg(series[s].name).arg(valueAt(plotId, int(s), m_cursorTime), 0, 'g', 6);
+                QStringLiteral("%1 %2").arg(series[s].name).arg(num(valueAt(plotId, int(s), m_cursorTime), 'g', 6));
     return text;
 }
 
@@ -708,7 +720,7 @@ void PlotDock::updateViewLegend() {
         const ViewInfo& info = m_views[std::size_t(v)];
         // Short: five entries share a legend row. The cross and time say where it failed.
         QString text = QStringLiteral("%1 %2").arg(v + 1).arg(info.integrator);
-        if (info.failedAt) text += tr(" ✕ %1 s").arg(*info.failedAt, 0, 'f', 2);
+        if (info.failedAt) text += tr(" ✕ %1 s").arg(num(*info.failedAt, 'f', 2));
         return text;
     };
     if (multi)

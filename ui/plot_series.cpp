@@ -20,19 +20,19 @@ std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
     const QColor inner = layerColor(0), outer = layerColor(1);
     if (gas) {
         plots.push_back({QStringLiteral("volume"), flat ? QObject::tr("Area per layer") : QObject::tr("Volume per layer"),
-                         flat ? QStringLiteral("area [m²]") : QStringLiteral("volume [m³]"),
+                         flat ? QObject::tr("area [m²]") : QObject::tr("volume [m³]"),
                          {{"volume", QObject::tr("inner"), inner, [](const D& d) { return d.volume[0]; },
                            [](const D& d) { return d.errors.valid ? d.errors.volume[0] : none(); }},
                           {"volume", QObject::tr("outer"), outer, [](const D& d) { return d.volume[1]; },
                            [](const D& d) { return d.errors.valid ? d.errors.volume[1] : none(); }}}});
         plots.push_back({QStringLiteral("pressure"), QObject::tr("Pressure per layer"),
-                         flat ? QStringLiteral("pressure [N/m]") : QStringLiteral("pressure [Pa]"),
+                         flat ? QObject::tr("pressure [N/m]") : QObject::tr("pressure [Pa]"),
                          {{"pressure", QObject::tr("inner"), inner, [](const D& d) { return d.pressure[0]; },
                            [](const D& d) { return d.errors.valid ? d.errors.pressure[0] : none(); }},
                           {"pressure", QObject::tr("outer"), outer, [](const D& d) { return d.pressure[1]; },
                            [](const D& d) { return d.errors.valid ? d.errors.pressure[1] : none(); }}}});
     }
-    PlotSpec energy{QStringLiteral("energy"), QObject::tr("Energy"), QStringLiteral("energy [J]"), {}};
+    PlotSpec energy{QStringLiteral("energy"), QObject::tr("Energy"), QObject::tr("energy [J]"), {}};
     using T = EnergyTerm;
     energy.series.push_back({"energy", QObject::tr("kinetic"), energyColor(T::Kinetic), [](const D& d) { return d.kinetic; }});
     energy.series.push_back({"energy", QObject::tr("spring"), energyColor(T::Spring), [](const D& d) { return d.springTotal(); }});

@@ -12,6 +12,7 @@
 
 #include "qcustomplot.h"
 #include "simcore/scenes.h"
+#include "ui/language.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_dock.h"
 #include "ui/plot_series.h"
@@ -45,6 +46,8 @@ PvDock::PvDock(QWidget* parent) : QDockWidget(tr("P–V diagram"), parent) {
     for (int layer = 0; layer < 2; ++layer) {
         auto* plot = new QCustomPlot(m_plotHost);
         plot->setObjectName(layer == 0 ? QStringLiteral("pv_inner") : QStringLiteral("pv_outer"));
+        plot->setAccessibleName(tr("Pressure against volume, %1").arg(layerNames[layer]));
+        plot->setAccessibleDescription(tr("The trail of the layer's gas in the P-V plane and its isotherm"));
         plot->setMinimumSize(240, 170);
         plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
         plot->plotLayout()->insertRow(0);
@@ -110,7 +113,7 @@ void PvDock::setParameters(const simcore::ParameterSet& params) {
     if (c == m_c) return;
     m_c = c;
     for (int layer = 0; layer < 2; ++layer)
-        m_isotherms[std::size_t(layer)]->setName(tr("P = nRT/V, nRT = %1 J").arg(c[std::size_t(layer)]));
+        m_isotherms[std::size_t(layer)]->setName(tr("P = nRT/V, nRT = %1 J").arg(num(c[std::size_t(layer)])));
     scheduleReplot();
 }
 

@@ -17,7 +17,9 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
+#include "ui/accessibility.h"
 #include "ui/field_keys.h"
+#include "ui/language.h"
 #include "ui/parameter_dock.h"
 
 namespace elui {
@@ -47,16 +49,18 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {
         m_integrator->addItem(toQString(info.name));
         m_integrator->setItemData(m_integrator->count() - 1,
-                                  QStringLiteral("order %1: %2").arg(info.order).arg(toQString(info.description)),
+                                  tr("order %1: %2").arg(info.order).arg(simcoreText(info.description)),
                                   Qt::ToolTipRole);
     }
     m_integrator->setPlaceholderText(tr("side by side (see each view)"));
     form->addRow(tr("Integrator"), m_integrator);
+    m_integrator->setToolTip(tr("The method that advances the body in time; each one's order and idea are in its "
+                                "item's tooltip and in Help"));
+    m_integrator->setAccessibleName(tr("Integrator"));
     m_dt = new QLineEdit(host);
     m_dt->setObjectName(QStringLiteral("dtEdit"));
     const simcore::ParamSpec* dtSpec = &simcore::paramSpec(simcore::Param::Dt);
-    m_dtTip = toQString(dtSpec->meaning) + QStringLiteral("; allowed ") + QString::fromStdString(dtSpec->rangeText()) +
-              QStringLiteral(" s");
+    m_dtTip = tr("%1; allowed %2 s").arg(simcoreText(dtSpec->meaning), QString::fromStdString(dtSpec->rangeText()));
     m_dt->setToolTip(m_dtTip);
     form->addRow(tr("DT [s]"), m_dt);
     // The adaptive methods' tolerances (rk45, cvode-bdf, cvode-adams): the CLI's --rtol and
@@ -78,6 +82,8 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     tolerances->setToolTip(m_tolTip);
     m_rtol->setToolTip(m_tolTip);
     m_atol->setToolTip(m_tolTip);
+    m_rtol->setAccessibleName(tr("Relative tolerance rtol"));
+    m_atol->setAccessibleName(tr("Absolute tolerance atol"));
     form->addRow(tr("Tolerance"), tolerances);
     m_speed = new QComboBox(host);
     m_speed->setObjectName(QStringLiteral("speedCombo"));
@@ -85,13 +91,17 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
         m_speed->addItem(speedName(s), int(s));
     m_speed->setToolTip(tr("How fast simulated time runs against the wall clock"));
     form->addRow(tr("Speed"), m_speed);
+    m_speed->setAccessibleName(tr("Speed"));
     layout->addLayout(form);
 
     auto* buttons = new QHBoxLayout;
-    m_run = new QPushButton(tr("Run"), host);
+    m_run = new QPushButton(tr("Run", "button: start the simulation"), host);
     m_run->setObjectName(QStringLiteral("runButton"));
+    m_run->setToolTip(tr("Run or pause the simulation (Space)"));
     m_step = new QPushButton(tr("Step"), host);
+    m_step->setToolTip(tr("One step DT forward (S)"));
     m_reset = new QPushButton(tr("Reset"), host);
+    m_reset->setToolTip(tr("Back to the start state with the same parameters (Ctrl+R)"));
     buttons->addWidget(m_run);
     buttons->addWidget(m_step);
     buttons->addWidget(m_reset);
@@ -110,6 +120,10 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     mono.setStyleHint(QFont::Monospace);
     m_readout->setFont(mono);
     layout->addWidget(m_readout);
+    // Tab reaches it; a screen reader reads its text, and again when it changes (at most once a
+    // second: it changes every frame).
+    makeLive(m_readout, tr("Readout"));
+    m_readout->setAccessibleDescription(tr("Time, steps, energies and the energy balance of the run"));
     layout->addStretch(1);
     setWidget(host);
 
@@ -130,13 +144,13 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     connect(m_dt, &QLineEdit::editingFinished, this, commitDt);
     // Enter commits and leaves the field, Escape puts back the DT in use (field_keys.h).
     installFieldKeys(m_dt, commitDt, [this] {
-        m_dt->setText(QString::number(m_shownDt, 'g', 10));
+        m_dt->setText(num(m_shownDt, 'g', 10));
         markField(m_dt, {}, m_dtTip);
     });
     auto commitTolerances = [this] {
         bool okR = false, okA = false;
-        const double rtol = m_rtol->text().trimmed().toDouble(&okR);
-        const double atol = m_atol->text().trimmed().toDouble(&okA);
+        const double rtol = toCNumber(m_rtol->text()).trimmed().toDouble(&okR);
+        const double atol = toCNumber(m_atol->text()).trimmed().toDouble(&okA);
         const bool goodR = okR && rtol > 0.0 && rtol <= 1.0, goodA = okA && atol >= 0.0 && atol <= 1.0;
         markField(m_rtol, goodR ? QString() : tr("rtol: '%1' is not a number in (0, 1]").arg(m_rtol->text()), m_tolTip);
         markField(m_atol, goodA ? QString() : tr("atol: '%1' is not a number in [0, 1]").arg(m_atol->text()), m_tolTip);
@@ -150,8 +164,8 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     for (QLineEdit* edit : {m_rtol, m_atol}) {
         connect(edit, &QLineEdit::editingFinished, this, commitTolerances);
         installFieldKeys(edit, commitTolerances, [this] {
-            m_rtol->setText(QString::number(m_shownRtol, 'g', 6));
-            m_atol->setText(QString::number(m_shownAtol, 'g', 6));
+            m_rtol->setText(num(m_shownRtol, 'g', 6));
+            m_atol->setText(num(m_shownAtol, 'g', 6));
             markField(m_rtol, {}, m_tolTip);
             markField(m_atol, {}, m_tolTip);
         });
@@ -181,18 +195,19 @@ QString RunDock::viewTable(const Frame& frame) {
         return QStringLiteral("<b>%1 %2</b>").arg(v + 1).arg(l.integrator.toHtmlEscaped());
     });
     html += cells(tr("time"), [](const LaneFrame& l, std::size_t) {
-        return l.failure ? QStringLiteral("<span style='color:#c0392b'>✕ %1 s</span>").arg(l.failure->time, 0, 'f', 3)
-                         : QStringLiteral("%1 s").arg(l.diagnostics.time, 0, 'f', 3);
+        return l.failure ? QStringLiteral("<span style='color:#c0392b'>✕ %1 s</span>").arg(num(l.failure->time, 'f', 3))
+                         : QStringLiteral("%1 s").arg(num(l.diagnostics.time, 'f', 3));
     });
-    html += cells(tr("steps"), [](const LaneFrame& l, std::size_t) { return QString::number(l.diagnostics.step); });
+    html += cells(tr("steps"), [](const LaneFrame& l, std::size_t) { return num(static_cast<long long>(l.diagnostics.step)); });
     html += cells(tr("energy drift"), [](const LaneFrame& l, std::size_t) {
-        return QStringLiteral("%1 J").arg(l.diagnostics.energyDrift(), 0, 'g', 3);
+        return QStringLiteral("%1 J").arg(num(l.diagnostics.energyDrift(), 'g', 3));
     });
     const int reference = lanes.size() > 1 ? lanes[1].divergenceReference : 0;
-    html += cells(tr("distance to view %1").arg(reference + 1), [&](const LaneFrame& l, std::size_t v) {
+    // On two lines: the longest label would otherwise set the dock's width.
+    html += cells(tr("distance<br>to view %1").arg(reference + 1), [&](const LaneFrame& l, std::size_t v) {
         if (int(v) == reference) return QStringLiteral("—");
         if (l.failure) return tr("failed");
-        return QStringLiteral("%1 m").arg(l.divergence, 0, 'e', 2);
+        return QStringLiteral("%1 m").arg(num(l.divergence, 'g', 3));
     });
     return html + QStringLiteral("</table>");
 }
@@ -201,7 +216,7 @@ void RunDock::showFrame(const FramePtr& frame) {
     if (!frame || frame->lanes.empty()) return;
     m_updating = true;
     m_running = frame->running;
-    m_run->setText(m_running ? tr("Pause") : tr("Run"));
+    m_run->setText(m_running ? tr("Pause") : tr("Run", "button: start the simulation"));
     const LaneFrame& lane = frame->lanes.front();
     const bool single = frame->lanes.size() == 1;
     // Side by side each view names its own integrator: the combo is not one lane's, so it shows
@@ -214,7 +229,7 @@ void RunDock::showFrame(const FramePtr& frame) {
     }
     const double dt = frame->parameters.get(simcore::Param::Dt);
     if (dt != m_shownDt && !m_dt->hasFocus()) {
-        m_dt->setText(QString::number(dt, 'g', 10));
+        m_dt->setText(num(dt, 'g', 10));
         markField(m_dt, {}, m_dtTip);  // the DT in use: nothing refused
     }
     m_shownDt = dt;
@@ -222,8 +237,8 @@ void RunDock::showFrame(const FramePtr& frame) {
     for (const LaneFrame& l : frame->lanes) adaptive = adaptive || isAdaptive(l.integrator);
     m_rtol->parentWidget()->setEnabled(adaptive);
     if ((frame->atol != m_shownAtol || frame->rtol != m_shownRtol) && !m_rtol->hasFocus() && !m_atol->hasFocus()) {
-        m_rtol->setText(QString::number(frame->rtol, 'g', 6));
-        m_atol->setText(QString::number(frame->atol, 'g', 6));
+        m_rtol->setText(num(frame->rtol, 'g', 6));
+        m_atol->setText(num(frame->atol, 'g', 6));
         markField(m_rtol, {}, m_tolTip);
         markField(m_atol, {}, m_tolTip);
     }
@@ -242,20 +257,25 @@ void RunDock::showFrame(const FramePtr& frame) {
         return QStringLiteral("<tr><td>%1&nbsp;</td><td align=right>%2</td></tr>").arg(name, value);
     };
     QString html = QStringLiteral("<table cellspacing=0>");
-    html += row(tr("simulated time"), QStringLiteral("%1 s").arg(d.time, 0, 'f', 3));
-    html += row(tr("wall time"), QStringLiteral("%1 s").arg(frame->wallSeconds, 0, 'f', 2));
-    html += row(tr("steps"), QString::number(d.step));
-    html += row(tr("steps/s"), frame->running ? QString::number(std::lround(frame->stepsPerSecond)) : tr("paused"));
-    html += row(tr("step taken"), QStringLiteral("%1 s").arg(d.dt, 0, 'g', 3));
-    html += row(tr("error estimate"),
-                d.errorEstimate >= 0 ? QStringLiteral("%1 m").arg(d.errorEstimate, 0, 'e', 2) : tr("off"));
-    html += row(tr("contact energy"), QStringLiteral("%1 J").arg(d.contact, 0, 'g', 4));
-    html += row(tr("removed by contact"),
-                QStringLiteral("%1 J").arg(d.removedContact + d.removedCollisions, 0, 'g', 4));
-    html += row(tr("energy drift"), QStringLiteral("%1 J").arg(d.energyDrift(), 0, 'e', 2));
+    // Side by side the first table holds what the views share (the clock, the common step);
+    // each view's own numbers are in the Each view table under it, not view 1's twice over
+    // (which also kept the dock within a 1280 px projector at presentation size).
+    if (single) html += row(tr("simulated time"), QStringLiteral("%1 s").arg(num(d.time, 'f', 3)));
+    html += row(tr("wall time"), QStringLiteral("%1 s").arg(num(frame->wallSeconds, 'f', 2)));
+    if (single) html += row(tr("steps"), num(static_cast<long long>(d.step)));
+    html += row(tr("steps/s"), frame->running ? num(static_cast<long long>(std::lround(frame->stepsPerSecond))) : tr("paused"));
+    html += row(tr("step taken"), QStringLiteral("%1 s").arg(num(d.dt, 'g', 3)));
+    if (single) {
+        html += row(tr("error estimate"),
+                    d.errorEstimate >= 0 ? QStringLiteral("%1 m").arg(num(d.errorEstimate, 'e', 2)) : tr("off"));
+        html += row(tr("contact energy"), QStringLiteral("%1 J").arg(num(d.contact, 'g', 4)));
+        html += row(tr("removed by contact"),
+                    QStringLiteral("%1 J").arg(num(d.removedContact + d.removedCollisions, 'g', 4)));
+        html += row(tr("energy drift"), QStringLiteral("%1 J").arg(num(d.energyDrift(), 'e', 2)));
+    }
     if (d.hasSolverCounters) {  // CVODE's own counters (issue 13)
         const simcore::SolverCounters& c = d.solver;
-        html += row(tr("force evaluations"), QString::number(d.forceEvaluations));
+        html += row(tr("force evaluations"), num(static_cast<long long>(d.forceEvaluations)));
         html += row(tr("CVODE steps / RHS"), QStringLiteral("%1 / %2").arg(c.steps).arg(c.rhsEvaluations));
         html += row(tr("Jv products / linear it."), QStringLiteral("%1 / %2").arg(c.jacobianProducts).arg(c.linearIterations));
         html += row(tr("error-test / conv. failures"),

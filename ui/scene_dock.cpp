@@ -7,6 +7,8 @@
 #include <QVBoxLayout>
 
 #include "simcore/scenes.h"
+#include "ui/accessibility.h"
+#include "ui/language.h"
 #include "ui/parameter_dock.h"
 
 namespace elui {
@@ -18,6 +20,7 @@ SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     layout->setContentsMargins(4, 4, 4, 4);
     m_scene = new QComboBox(host);
     m_scene->setObjectName(QStringLiteral("sceneCombo"));
+    setAccessibleText(m_scene, tr("Scene"), tr("The body to build: a spring, a two-layer ring or a two-layer sphere"));
     for (const simcore::SceneInfo& s : simcore::sceneTable())
         m_scene->addItem(toQString(s.name), int(s.kind));
     layout->addWidget(m_scene);
@@ -34,6 +37,7 @@ SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     m_bodyValues->setObjectName(QStringLiteral("bodyValues"));
     m_bodyValues->setWordWrap(true);
     m_bodyValues->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    makeLive(m_bodyValues, tr("Body values"));
     m_bodyValues->setToolTip(tr("What the parameters mean for the body that runs: under scaling=physical the "
                                 "values hold at the scene's default resolution and a finer mesh keeps the "
                                 "body's totals; under scaling=thesis they are per particle and per spring"));
@@ -42,6 +46,8 @@ SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
     // Scrolls when the screen is short (a projector, presentation mode) instead of holding the
     // window taller than the screen; the Parameters dock beside it does the same.
     auto* scroll = new QScrollArea(this);
+    scroll->setAccessibleName(tr("Scene"));
+    scroll->setAccessibleDescription(tr("The body to build, its shape and what its parameters mean"));
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(host);
@@ -60,7 +66,7 @@ void SceneDock::rebuildForm(simcore::SceneKind kind) {
     m_form = new ParameterForm(kind, {simcore::ParamGroup::Shape}, widget());
     m_formHost->addWidget(m_form);
     connect(m_form, &ParameterForm::rejected, this, &SceneDock::shapeRejected);
-    m_description->setText(toQString(simcore::sceneInfo(kind).description));
+    m_description->setText(simcoreText(simcore::sceneInfo(kind).description));
 }
 
 simcore::ParameterSet SceneDock::requestedShape() const { return m_form->values(); }

@@ -10,6 +10,7 @@
 #include <QVBoxLayout>
 
 #include "qcustomplot.h"
+#include "ui/language.h"
 #include "ui/mailbox.h"
 
 namespace elui {
@@ -28,7 +29,7 @@ simcore::ParameterSet withoutDt(const simcore::ParameterSet& p) {
     return q;
 }
 
-QString seconds(double s) { return QString::number(s, 'g', 3); }
+QString seconds(double s) { return num(s, 'g', 3); }
 
 // A view's colour on the map (its edge, when it is not the primary one).
 QColor viewColor(int view) {
@@ -54,6 +55,9 @@ StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability 
 
     m_plot = new QCustomPlot(host);
     m_plot->setObjectName(QStringLiteral("stabilityMapPlot"));
+    m_plot->setAccessibleName(tr("Stability map"));
+    m_plot->setAccessibleDescription(tr("The integrator's stability region and the body's eigenvalues times DT; the "
+                                        "margin is written below the map"));
     m_plot->setMinimumSize(260, 240);
     m_plot->xAxis->setLabel(tr("Re(hλ)"));
     m_plot->yAxis->setLabel(tr("Im(hλ)"));
@@ -281,7 +285,7 @@ void StabilityMapDock::present(const Result& r) {
     else m_limiting->removeFromLegend();
 
     const QString name = QString::fromStdString(r.integrator);
-    m_plot->xAxis->setLabel(tr("Re(hλ), h = DT = %1 s").arg(m_shownDt));
+    m_plot->xAxis->setLabel(tr("Re(hλ), h = DT = %1 s").arg(num(m_shownDt)));
     if (r.views.size() <= 1) {
         m_marginLabel->setText(QStringLiteral("%1: %2").arg(name, QString::fromStdString(m_margin.text)));
     } else {

@@ -29,9 +29,11 @@
 #include "simlab/refinement.h"
 #include "simlab/request.h"
 #include "ui/export.h"
+#include "ui/language.h"
 #include "ui/mailbox.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_series.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
 
@@ -43,13 +45,7 @@ QColor integratorColor(const QString& name) { return QColor(QString::fromLatin1(
 QString number(double v) { return QString::number(v, 'g', 4); }
 
 void setupLogAxis(QCPAxis* axis, const QString& label) {
-    axis->setScaleType(QCPAxis::stLogarithmic);
-    axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-    // Three significant digits: over less than 1.6 decades QCustomPlot's log ticker falls back
-    // to linear steps (0.008, 0.01, 0.012), which a one-digit mantissa printed as "10⁻²" three
-    // times. Powers of ten still read 0.001, 0.01, 1e+05 (beautified to 10⁵).
-    axis->setNumberFormat(QStringLiteral("gb"));
-    axis->setNumberPrecision(3);
+    setLogTicks(axis);
     axis->setLabel(label);
 }
 
@@ -106,6 +102,10 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
         auto* box = new QCheckBox(toQString(info.name), integrators);
         const QString name = toQString(info.name);
         box->setChecked(name == "euler" || name == "midpoint" || name == "rk4" || name == "verlet");
+        box->setToolTip(tr("Include %1 (order %2) in the study: %3")
+                            .arg(name)
+                            .arg(info.order)
+                            .arg(simcoreText(info.description)));
         grid->addWidget(box, i / 4, i % 4);
         m_integrators.push_back(box);
         ++i;
@@ -119,9 +119,12 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
 
     auto* controls = new QHBoxLayout;
     m_run = new QPushButton(tr("Run"), this);
+    m_run->setToolTip(tr("Run the study on a worker thread; the window stays usable"));
     m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setToolTip(tr("Stop the study; the rows finished so far stay"));
     m_cancel->setEnabled(false);
     m_export = new QPushButton(tr("Export..."), this);
+    m_export->setToolTip(tr("Write the table as CSV, or the plot as SVG, PNG or PDF"));
     m_export->setEnabled(false);
     m_progress = new QProgressBar(this);
     m_status = new QLabel(this);
@@ -134,10 +137,14 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
 
     auto* split = new QSplitter(Qt::Vertical, this);
     m_plot = new QCustomPlot(split);
+    m_plot->setAccessibleName(tr("Study plot"));
+    m_plot->setAccessibleDescription(tr("The study's results drawn; the same numbers are in the table"));
     m_plot->setMinimumHeight(260);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     m_table = new QTableWidget(split);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setAccessibleName(tr("Results"));
+    m_table->setAccessibleDescription(tr("One row per run of the study; the arrow keys move between the cells"));
     split->addWidget(m_plot);
     split->addWidget(m_table);
     split->setStretchFactor(0, 3);
@@ -257,8 +264,12 @@ WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QW
     m_dts = new QLineEdit(QStringLiteral("0.01 0.005 0.0025 0.00125"), m_options);
     m_dts->setToolTip(tr("Fixed steps DT [s], separated by spaces; T must be a multiple of each"));
     m_duration = new QLineEdit(QStringLiteral("1"), m_options);
+    m_duration->setToolTip(tr("Simulated time of every run [s]"));
     m_reference = new QComboBox(m_options);
     m_reference->addItems({"auto", "exact", "rk4", "rk45"});
+    m_reference->setToolTip(tr("What the errors are measured against: the closed form where there is one (exact), "
+                               "or a run of rk4 or rk45 with a much smaller step; auto chooses"));
+    m_reference->setAccessibleName(tr("Reference"));
     m_repeats = new QSpinBox(m_options);
     m_repeats->setRange(1, 100);
     m_repeats->setValue(3);
@@ -362,8 +373,8 @@ void WorkPrecisionDialog::present() {
         if (fit.points >= 2)
             summary += tr(" %1: order %2 (RMS %3).")
                            .arg(QString::fromStdString(fit.integrator))
-                           .arg(fit.order, 0, 'f', 2)
-                           .arg(fit.orderRms, 0, 'f', 2);
+                           .arg(num(fit.order, 'f', 2))
+                           .arg(num(fit.orderRms, 'f', 2));
     m_summary->setText(summary);
 }
 
@@ -521,7 +532,7 @@ void ConservationDialog::present() {
     QList<QStringList> cells;
     for (const simlab::ConservationRow& row : m_result.rows)
         cells.append({QString::fromStdString(row.integrator), row.ok ? QString::number(row.alpha, 'f', 3) : QString(),
-                      row.ok ? QStringLiteral("[%1, %2]").arg(row.alphaLo, 0, 'f', 3).arg(row.alphaHi, 0, 'f', 3) : QString(),
+                      row.ok ? QStringLiteral("[%1, %2]").arg(num(row.alphaLo, 'f', 3)).arg(num(row.alphaHi, 'f', 3)) : QString(),
                       QString::fromStdString(row.growth), row.ok ? number(row.finalError) : QString(),
                       row.ok ? number(row.relativeError) : QString(), QString::number(row.steps),
                       QString::fromStdString(row.status())});
@@ -531,7 +542,7 @@ void ConservationDialog::present() {
         QCPGraph* graph = m_plot->addGraph();
         const QString name = QString::fromStdString(row.integrator);
         graph->setPen(QPen(integratorColor(name), 1.8));
-        graph->setName(row.ok ? tr("%1: %2, α = %3").arg(name, QString::fromStdString(row.growth)).arg(row.alpha, 0, 'f', 2)
+        graph->setName(row.ok ? tr("%1: %2, α = %3").arg(name, QString::fromStdString(row.growth)).arg(num(row.alpha, 'f', 2))
                               : tr("%1: failed").arg(name));
         for (auto [t, e] : row.curve)
             if (t > 0 && e > 0) graph->addData(t, e);
@@ -599,6 +610,7 @@ RefinementDialog::RefinementDialog(const simcore::ParameterSet& params, QWidget*
     m_dt->setToolTip(tr("Fixed step DT [s] for every level; it must divide 0.01 s and be stable at the finest "
                         "level. Empty: a quarter of the smaller of the scene's DT and the finest level's stable step"));
     m_duration = new QLineEdit(QStringLiteral("0.5"), m_options);
+    m_duration->setToolTip(tr("Simulated time of every run [s]"));
     form->addRow(key.empty() ? tr("Levels") : tr("Levels (%1)").arg(QString::fromStdString(key)), m_levels);
     form->addRow(tr("DT [s]"), m_dt);
     form->addRow(tr("Duration T [s]"), m_duration);
@@ -705,7 +717,7 @@ void RefinementDialog::present() {
                        .arg(m_result.temporalValue)
                        .arg(number(m_result.timeErrorVolume), number(m_result.timeErrorCom));
     for (const simlab::SpatialOrder& fit : simlab::fitSpatialOrders(m_result))
-        summary += fit.points >= 2 ? tr("Spatial order (%1): %2. ").arg(QString::fromStdString(fit.observable)).arg(fit.order, 0, 'f', 2)
+        summary += fit.points >= 2 ? tr("Spatial order (%1): %2. ").arg(QString::fromStdString(fit.observable)).arg(num(fit.order, 'f', 2))
                                    : tr("Spatial order (%1): not resolved. ").arg(QString::fromStdString(fit.observable));
     m_summary->setText(summary);
 }

@@ -1,19 +1,23 @@
 #include "ui/timeline_dock.h"
 
+#include <algorithm>
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QSlider>
 #include <QVBoxLayout>
 
+#include "ui/language.h"
+
 namespace elui {
 
 QString byteText(std::size_t bytes) {
     const double b = double(bytes);
     if (b >= 1024.0 * 1024.0 * 1024.0)
-        return QStringLiteral("%1 GiB").arg(b / (1024.0 * 1024.0 * 1024.0), 0, 'f', 2);
-    if (b >= 1024.0 * 1024.0) return QStringLiteral("%1 MiB").arg(b / (1024.0 * 1024.0), 0, 'f', 1);
-    if (b >= 1024.0) return QStringLiteral("%1 KiB").arg(b / 1024.0, 0, 'f', 0);
+        return QStringLiteral("%1 GiB").arg(num(b / (1024.0 * 1024.0 * 1024.0), 'f', 2));
+    if (b >= 1024.0 * 1024.0) return QStringLiteral("%1 MiB").arg(num(b / (1024.0 * 1024.0), 'f', 1));
+    if (b >= 1024.0) return QStringLiteral("%1 KiB").arg(num(b / 1024.0, 'f', 0));
     return QStringLiteral("%1 B").arg(bytes);
 }
 
@@ -29,10 +33,14 @@ TimelineDock::TimelineDock(QWidget* parent) : QDockWidget(tr("Timeline"), parent
     m_back->setToolTip(tr("One step back (Shift+S); S steps forward"));
     m_slider = new QSlider(Qt::Horizontal, host);
     m_slider->setObjectName(QStringLiteral("timelineSlider"));
-    m_slider->setToolTip(
-        tr("Every moment of the run: drag to travel back in time (the run pauses)"));
+    m_slider->setToolTip(tr("Every moment of the run: drag, or Tab to it and press the arrow keys (Page Up and Page "
+                            "Down: a twentieth of the run), to travel back in time (the run pauses)"));
     m_slider->setRange(0, 0);
-    m_slider->setFocusPolicy(Qt::ClickFocus);  // Home / End belong to the window's actions
+    m_slider->setAccessibleName(tr("Timeline"));
+    // Reached by Tab like every control; the arrow keys move one recorded moment. Home and End
+    // stay the window's actions (Timeline start, newest), which do the same as the slider's.
+    m_slider->setFocusPolicy(Qt::StrongFocus);
+    m_slider->setSingleStep(1);
     m_end = new QPushButton(tr("Newest ▶|"), host);
     m_end->setToolTip(tr("The newest recorded moment (End)"));
     m_clear = new QPushButton(tr("Clear abandoned"), host);
@@ -70,6 +78,7 @@ void TimelineDock::showFrame(const FramePtr& frame) {
     const TimelineInfo& t = frame->timeline;
     m_updating = true;
     m_slider->setRange(int(t.first), int(t.last));
+    m_slider->setPageStep(std::max(1, int((t.last - t.first) / 20)));
     // While the user drags, the slider is where the hand is; the frame follows it.
     if (!m_slider->isSliderDown()) m_slider->setValue(int(t.moment));
     m_updating = false;
@@ -77,14 +86,14 @@ void TimelineDock::showFrame(const FramePtr& frame) {
     if (t.scrubbed())
         m_where->setText(
             tr("<b>Back in time</b>: t = %1 s, step %2 of %3 · a change, Run or Step branches here")
-                .arg(time, 0, 'f', 4)
+                .arg(num(time, 'f', 4))
                 .arg(t.moment)
                 .arg(t.last));
     else
         m_where->setText(tr("t = %1 s, step %2 (newest) · recorded from t = %3 s")
-                             .arg(time, 0, 'f', 4)
+                             .arg(num(time, 'f', 4))
                              .arg(t.moment)
-                             .arg(t.firstTime, 0, 'f', 3));
+                             .arg(num(t.firstTime, 'f', 3)));
     m_info->setText(tr("%1 checkpoints / %2 steps · %3 of %4")
                         .arg(t.checkpoints)
                         .arg(t.interval)

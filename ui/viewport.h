@@ -14,6 +14,9 @@
 // once) selects the particle under the cursor: its free-body diagram, one arrow per force part
 // from the particle and the total, and a panel of their magnitudes (frames carry the
 // breakdown, the worker computes it). A click away from the body clears it.
+//
+// Keyboard (with focus, shown by a frame): arrow keys and Page Up/Down choose a particle (its
+// forces as for a click), Enter grabs it and the arrows drag it, Enter or Escape let go.
 
 #include <array>
 #include <memory>
@@ -29,6 +32,7 @@
 #include "ui/frame.h"
 #include "ui/view_options.h"
 
+class QFrame;
 class QLabel;
 
 namespace elui {
@@ -63,6 +67,15 @@ public:
     FramePtr frame() const { return m_frame; }
     // Frames drawn since creation (for frame-rate measurements).
     quint64 paintCount() const { return m_paints; }
+    // The particle drawn nearest a pixel, within 28 px (any layer), or -1.
+    int particleAt(const QPointF& pixel) const;
+    // The ruler (ViewOptions::ruler): its length [m] (0: none drawn), and the label shown.
+    double rulerLength() const;
+    QString rulerText() const;
+    QString overlayText() const;  // the text over the view (title, time, distance, failure)
+
+    // High contrast (View menu): black background, white structural springs, yellow focus frame.
+    void setHighContrast(bool on);
 
 public slots:
     void showFrame(const elui::FramePtr& frame);
@@ -75,7 +88,11 @@ signals:
     void releaseRequested();
     // A click without a drag: select the particle nearest the ray (none near it: clear).
     void selectRequested(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    // A right click (no drag) at a global position, on a particle (its index) or not (-1).
+    void contextRequested(const QPoint& globalPosition, int particle);
     void cameraChanged(const elui::Camera& camera);
+    // The keyboard chose a particle (arrow keys, Page Up/Down), or none (-1, Escape).
+    void particleSelected(int particle);
 
 protected:
     void initializeGL() override;
@@ -85,6 +102,9 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
 
 private:
@@ -106,8 +126,16 @@ private:
     bool nearBody(const QPointF& pixel) const;
     // The selected particle's force arrows, and the panel that names them.
     void drawForceBreakdown(const LaneFrame& lane);
+    // Arrows from every particle along `vectors` (3N), the 90th percentile 0.4 body radii long.
+    void drawArrows(const std::vector<float>& x, const std::vector<float>& vectors, const QVector4D& color);
+    void drawRuler();
+    void updateRulerLabel();
+    QPointF toPixel(const QVector3D& point) const;
+    QVector3D onViewPlane(const QPointF& pixel) const;
     void updateForcesPanel(const LaneFrame& lane);
     QVector3D anchorUnder(const QPointF& pixel) const;
+    QPointF pixelOf(int particle) const;  // where a particle of the shown lane is drawn
+    void resizeEventFrame();
 
     FramePtr m_frame;
     std::shared_ptr<const SceneData> m_uploadedScene;
@@ -121,6 +149,9 @@ private:
     QLabel* m_info = nullptr;
     StrainLegend* m_legend = nullptr;
     QLabel* m_forcesPanel = nullptr;  // the selected particle's forces (objectName "forcesPanel")
+    QLabel* m_rulerLabel = nullptr;   // the ruler's length (objectName "rulerLabel")
+    bool m_hasRuler = false;
+    QVector3D m_rulerA, m_rulerB;     // the ruler's ends [m], on the view's plane
     double m_arrowScale = 0.0;        // of the force arrows drawn last [m per N]
 
     // GL objects (made in initializeGL, freed on aboutToBeDestroyed).
@@ -136,14 +167,20 @@ private:
     int m_particleCount = 0;
 
     // Mouse.
-    enum class Drag { None, Orbit, Pan, Grab };
+    enum class Drag { None, Orbit, Pan, Grab, Ruler };
     Drag m_drag = Drag::None;
     QPointF m_lastPixel;
     QPointF m_pressPixel;     // where the left button went down
     bool m_clickCandidate = false;  // left press not (yet) moved beyond the slop: a click
+    bool m_contextCandidate = false;  // the same for the right button: a context menu
     bool m_grabbed = false;
     QVector3D m_planePoint;   // the drag plane passes through here, facing the camera
     QVector3D m_planeNormal;
+
+    // Keyboard (issue 30): the particle chosen with the arrow keys (-1: none), the focus frame.
+    int m_keyboardParticle = -1;
+    QFrame* m_focusFrame = nullptr;
+    bool m_highContrast = false;
 };
 
 }  // namespace elui

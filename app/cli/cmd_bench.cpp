@@ -102,10 +102,11 @@ Command addBenchCommand(CLI::App& app) {
     addSceneOptions(*sub, args->scene);
     sub->add_option("--steps", args->steps, "steps timed")->type_name("N")->check(wholeIn(1, 100000000L))->capture_default_str();
     sub->add_option("--warmup", args->warmup, "steps run before timing")->type_name("N")->check(wholeIn(0, 1000000L))->capture_default_str();
+    // The default is said in words, never as this machine's number: the man page is made from
+    // this text at build time and must not carry the build machine's CPU count.
     sub->add_option("--threads", args->threads, "threads (default: all CPUs this process may use: its affinity mask and cgroup CPU quota)")
         ->type_name("K")
-        ->check(wholeIn(1, 256))
-        ->capture_default_str();
+        ->check(wholeIn(1, 256));
     sub->add_option("--kernels", args->kernels, "force kernels (default: the widest this CPU runs; a narrower set is "
                                                 "used and named when the CPU lacks the one asked for)")
         ->type_name("SET")

@@ -6,7 +6,9 @@
 #include "app/cli/cli.h"
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
+#include "simcore/params.h"
 #include "simcore/scenes.h"
+#include "simlab/output.h"
 
 namespace cli {
 
@@ -24,9 +26,17 @@ std::string valueCompletion(const CLI::Option& option) {
     const std::string name = option.get_lnames().empty() ? "" : option.get_lnames().front();
     const std::string type = option.get_type_name();
     if (name == "scene")
-        return "COMPREPLY=($(compgen -W \"" + words(simcore::sceneNames()) + "\" -- \"$cur\") $(compgen -f -X '!*.json' -- \"$cur\"))";
+        return "COMPREPLY=($(compgen -W \"" + words(simcore::sceneNames()) + "\" -- \"$cur\") $(compgen -f -X '!*.json' -- \"$cur\") $(compgen -d -- \"$cur\"))";
     if (name == "integrator" || name == "integrators")
         return "COMPREPLY=($(compgen -W \"" + words(simcore::integratorNames()) + "\" -- \"$cur\"))";
+    if (name == "set") {
+        // Every parameter key of every scene as "key=", the value typed after it.
+        std::string keys;
+        for (const simcore::ParamSpec& p : simcore::parameterTable()) keys += (keys.empty() ? "" : " ") + std::string(p.key) + "=";
+        return "compopt -o nospace 2>/dev/null; COMPREPLY=($(compgen -W \"" + keys + "\" -- \"$cur\"))";
+    }
+    if (name == "csv-dialect") return "COMPREPLY=($(compgen -W \"" + words(std::string(simlab::kCsvDialectNames)) + "\" -- \"$cur\"))";
+    if (type.find(".xlsx") != std::string::npos) return "COMPREPLY=($(compgen -f -X '!*.xlsx' -- \"$cur\") $(compgen -d -- \"$cur\"))";
     if (name == "kernels") return "COMPREPLY=($(compgen -W \"portable avx2 avx512\" -- \"$cur\"))";
     if (type.find("FILE") != std::string::npos) return "COMPREPLY=($(compgen -f -- \"$cur\"))";
     return "COMPREPLY=()";

@@ -10,6 +10,7 @@
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simlab/output.h"
+#include "simlab/timeseries.h"
 
 namespace cli {
 
@@ -99,7 +100,9 @@ struct RunArgs {
     double duration = 5.0;
     long every = 1;
     double maxSteps = kMaxSteps;
-    std::string csv, state, saveScene;
+    std::string csv, state, saveScene, xlsx;
+    std::string dialectName = "plain";
+    simlab::CsvDialect dialect = simlab::CsvDialect::Plain;  // after check()
     bool quiet = false, json = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
@@ -107,13 +110,33 @@ struct RunArgs {
 
 void checkRun(RunArgs& args) {
     checkFiles({{"scene", sceneFileOf(args.scene)}},
-               {{"csv", args.csv}, {"state", args.state}, {"save-scene", args.saveScene}});
+               {{"csv", args.csv}, {"xlsx", args.xlsx}, {"state", args.state}, {"save-scene", args.saveScene}});
+    const auto dialect = simlab::csvDialectNamed(args.dialectName);
+    if (!dialect) throw UsageError("--csv-dialect: " + simlab::unknownCsvDialectMessage(args.dialectName));
+    args.dialect = *dialect;
     args.setup = sceneSetup(args.scene);
-    simlab::RunRequest request;
+    simlab::RunRequest request;  // the front door: steps, duration
     request.duration = args.duration;
     request.maxSteps = args.maxSteps;
     request.options = args.integrator;
     simlab::checkRun(args.setup, request);
+    if (!simcore::makeIntegrator(args.setup.integrator)->adaptive() || args.integrator.fixedStep) {
+        const double dt = args.setup.params.get(simcore::Param::Dt);
+        const double steps = std::ceil(args.duration / dt - 1e-9);
+        // A workbook's sheet has room for 1048575 rows of data: the start, every N-th step and
+        // the last must fit, or the run is refused before it starts (an adaptive run that
+        // outgrows the sheet is told at the end, its CSV still written).
+        const double rows = std::floor(steps / static_cast<double>(args.every)) + 2;
+        if (!args.xlsx.empty() && rows > static_cast<double>(simlab::kXlsxMaxDataRows)) {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "--xlsx: %.0f rows (%.0f steps, a row every %ld) do not fit a sheet of %ld rows; use "
+                          "--every %.0f or more",
+                          rows, steps, args.every, simlab::kXlsxMaxDataRows,
+                          std::ceil(steps / static_cast<double>(simlab::kXlsxMaxDataRows - 2)));
+            throw UsageError(text);
+        }
+    }
 }
 
 int run(const RunArgs& args) {
@@ -121,8 +144,8 @@ int run(const RunArgs& args) {
     const double duration = args.duration;
     const long every = args.every;
     // Open every output before running: an unwritable path is bad input, found at once.
-    std::unique_ptr<simlab::AtomicFile> csv, state, sceneOut;
-    for (auto [path, file] : {std::pair{&args.csv, &csv}, {&args.state, &state}, {&args.saveScene, &sceneOut}}) {
+    std::unique_ptr<simlab::AtomicFile> state, sceneOut;
+    for (auto [path, file] : {std::pair{&args.state, &state}, {&args.saveScene, &sceneOut}}) {
         if (path->empty()) continue;
         *file = std::make_unique<simlab::AtomicFile>(*path);
         if (!(*file)->ok()) throw UsageError((*file)->error());
@@ -135,11 +158,12 @@ int run(const RunArgs& args) {
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
-    const auto columns = simlab::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters);
-    if (csv) {
-        csv->write(simlab::csvHeader(columns));
-        csv->write(simlab::csvRow(columns, sim.diagnostics()));
-    }
+    simlab::TimeSeriesWriter series(setup.params.kind(),
+                                     simlab::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters),
+                                     {args.csv, args.dialect, args.xlsx});
+    if (!series.ok()) throw UsageError(series.error());
+    const bool recording = !args.csv.empty() || !args.xlsx.empty();
+    if (recording) series.add(sim.diagnostics());
     const auto start = std::chrono::steady_clock::now();
     const double tStart = sim.time();
     const double tEnd = tStart + duration;  // a resumed run continues from its saved time
@@ -153,8 +177,7 @@ int run(const RunArgs& args) {
         if (signals.caught()) break;
         if (!sim.step(tEnd)) break;
         const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
-        if (csv && (sim.stepCount() % every == 0 || last))
-            csv->write(simlab::csvRow(columns, sim.diagnostics()));
+        if (recording && (sim.stepCount() % every == 0 || last)) series.add(sim.diagnostics());
         if (static_cast<double>(sim.stepCount() - firstStep) >= args.maxSteps && !last) {
             tooManySteps = true;
             break;
@@ -164,11 +187,20 @@ int run(const RunArgs& args) {
     progress.clear();
     const int stoppedBy = signals.caught();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (state) state->write(simlab::stateTable(sim));
+    if (state) state->write(simlab::inDialect(simlab::stateTable(sim), args.dialect, true));
     if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
 
-    // All or none: every output complete before the first replaces its file.
-    if (auto error = simlab::commitAll({csv.get(), state.get(), sceneOut.get()})) {
+    // All or none: every output (CSV, workbook, state, scene) complete before the first
+    // replaces its file.
+    std::optional<std::string> error;
+    if (!series.finish()) error = series.error();
+    if (!error) {
+        std::vector<simlab::AtomicFile*> outputs = series.files();
+        outputs.push_back(state.get());
+        outputs.push_back(sceneOut.get());
+        error = simlab::commitAll(outputs);
+    }
+    if (error) {
         std::fprintf(stderr, "error: %s\n", error->c_str());
         return kExitBadInput;
     }
@@ -216,7 +248,15 @@ Command addRunCommand(CLI::App& app) {
         ->check(finiteIn(0.0, 1e7, true))
         ->capture_default_str();
     addCsvOption(*sub, args->csv, "write the time series (one row per --every steps and the last)");
-    sub->add_option("--every", args->every, "CSV row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
+    sub->add_option("--xlsx", args->xlsx, "write the time series as an .xlsx workbook: the table with units on one "
+                                          "sheet, charts of energy, volume and pressure against t on another")
+        ->type_name("FILE.xlsx");
+    sub->add_option("--csv-dialect", args->dialectName, "how --csv and --state are spelled: plain (comma, decimal point) "
+                                                        "or excel-semicolon (semicolon, decimal comma, CRLF, UTF-8 "
+                                                        "byte-order mark, for spreadsheets in decimal-comma locales)")
+        ->type_name("NAME")
+        ->capture_default_str();
+    sub->add_option("--every", args->every, "CSV and .xlsx row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
     sub->add_option("--state", args->state, "write the final state: index, layer, position, velocity")->type_name("FILE");
     sub->add_option("--save-scene", args->saveScene, "save the experiment with its final state as a scene file")
         ->type_name("FILE.json");

@@ -1,17 +1,20 @@
 // elastic-lab: the GUI.
 //
-//   elastic-lab [--scene S|FILE.json] [--set key=value]... [--integrator NAME] [--compare A,B,C]
+//   elastic-lab [FILE.json | --scene S|FILE.json] [--set key=value]... [--integrator NAME] [--compare A,B,C]
 //               [--preset ID | --lesson ID] [--experiments] [--docks LIST]
 //               [--screenshot FILE --after SECONDS [--travel-back SECONDS [--branch key=value]]]
 //
-// --screenshot runs (as fast as possible) to the given simulated time, renders the main
+// A scene file may also be given alone (the desktop entry's Exec=elastic-lab %f, a file manager's
+// "Open with"). --screenshot runs (as fast as possible) to the given simulated time, renders the main
 // window, writes the PNG and exits: used by the tests and for the README's screenshots.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 #include <cmath>
 
@@ -22,6 +25,8 @@
 #include <QImageWriter>
 #include <QElapsedTimer>
 #include <QIcon>
+#include <QLocale>
+#include <QSettings>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -37,7 +42,9 @@
 #include "simlab/scenefile.h"
 #include "ui/export.h"
 #include "ui/gl_format.h"
+#include "ui/language.h"
 #include "ui/lessons.h"
+#include "ui/lesson_dock.h"
 #include "ui/lessons_dialog.h"
 #include "ui/main_window.h"
 #include "ui/parameter_dock.h"
@@ -60,6 +67,37 @@ QString quoted(const QString& value, std::size_t limit = 40) {
     return QString::fromStdString(simcore::quoteShort(value.toStdString(), limit));
 }
 
+// Started where no window can be shown (no DISPLAY nor WAYLAND_DISPLAY, a display that refuses
+// the connection, no platform plugin), Qt ends in a fatal message of several lines whose advice
+// ("Reinstalling the application may fix this problem") is wrong. Qt's messages are held while
+// the application starts: on the fatal one a single line says what to do, exit 2 (bad input, as
+// for every refusal); when the start succeeds, the held messages are printed as Qt would have.
+QStringList g_heldMessages;
+void startupMessageHandler(QtMsgType type, const QMessageLogContext&, const QString& message) {
+    if (type != QtFatalMsg) {
+        g_heldMessages << message;
+        return;
+    }
+    const QByteArray display = qgetenv("DISPLAY"), wayland = qgetenv("WAYLAND_DISPLAY");
+    const QString where = display.isEmpty() && wayland.isEmpty()
+                              ? QStringLiteral("DISPLAY and WAYLAND_DISPLAY are not set")
+                              : QStringLiteral("display '%1' cannot be reached")
+                                    .arg(QString::fromLocal8Bit(display.isEmpty() ? wayland : display));
+    std::fprintf(stderr,
+                 "elastic-lab: no display to open the window on (%s); start it from a desktop session, or without "
+                 "a screen as xvfb-run -a elastic-lab ..., or use elastic-lab-cli for headless runs\n",
+                 qPrintable(where));
+    std::fflush(stderr);
+    std::_Exit(2);
+}
+
+// "en, de, fr, es, ar": the languages built in.
+QString languageCodes() {
+    QStringList codes;
+    for (const elui::Language& l : elui::languages()) codes << l.code;
+    return codes.join(QStringLiteral(", "));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -75,7 +113,10 @@ int main(int argc, char** argv) {
             !qEnvironmentVariableIsSet("QT_QPA_PLATFORM"))
             qputenv("QT_QPA_PLATFORM", "offscreen");
     }
+    const QtMessageHandler qtHandler = qInstallMessageHandler(startupMessageHandler);
     QApplication app(argc, argv);
+    qInstallMessageHandler(qtHandler);
+    for (const QString& message : std::exchange(g_heldMessages, {})) std::fprintf(stderr, "%s\n", qPrintable(message));
     QApplication::setOrganizationName(QStringLiteral("ElasticLab"));
     QApplication::setApplicationName(QStringLiteral("elastic-lab"));
     QApplication::setApplicationVersion(QString::fromLatin1(elastic_lab::kVersion));
@@ -89,6 +130,9 @@ int main(int argc, char** argv) {
     parser.setApplicationDescription(QStringLiteral("Elastic Lab: two-layer elastic bodies, for teaching."));
     parser.addHelpOption();
     parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("FILE.json"),
+                                 QStringLiteral("A scene file to open (as --scene FILE.json; what the desktop entry passes)."),
+                                 QStringLiteral("[FILE.json]"));
     const QCommandLineOption sceneOpt(QStringLiteral("scene"), QStringLiteral("Scene: %1, or a scene file (.json).").arg(elui::toQString(simcore::sceneNames())),
                                       QStringLiteral("S"), QStringLiteral("ring2d"));
     const QCommandLineOption setOpt(QStringLiteral("set"), QStringLiteral("Set a parameter (repeatable)."),
@@ -112,8 +156,8 @@ int main(int argc, char** argv) {
     const QCommandLineOption afterOpt(QStringLiteral("after"), QStringLiteral("Simulated time before the screenshot."),
                                       QStringLiteral("SECONDS"), QStringLiteral("0"));
     const QCommandLineOption optionsOpt(QStringLiteral("show"),
-                                        QStringLiteral("Display switches, comma separated: strain, forces, normals, noparticles, "
-                                                       "nofaces, nostructural, noradius, noshear, nobox, errorband."),
+                                        QStringLiteral("Display switches, comma separated: strain, forces, velocities, normals, noparticles, "
+                                                       "nofaces, nostructural, noradius, noshear, nobox, errorband, reference."),
                                         QStringLiteral("LIST"));
     const QCommandLineOption docksOpt(QStringLiteral("docks"),
                                       QStringLiteral("Open these docks, comma separated: %1.")
@@ -137,23 +181,44 @@ int main(int argc, char** argv) {
                                        QStringLiteral("With --travel-back: branch there with key=value (a parameter, or "
                                                       "integrator=NAME), run on to --after and travel back again."),
                                        QStringLiteral("key=value"));
+    const QCommandLineOption contrastOpt(QStringLiteral("high-contrast"),
+                                         QStringLiteral("Start in high contrast (View > High contrast): white on black, "
+                                                        "yellow focus."));
+    const QCommandLineOption langOpt(QStringLiteral("lang"),
+                                     QStringLiteral("The language of the window: %1 (View > Language; without it, the one "
+                                                    "chosen there, else the system's).")
+                                         .arg(languageCodes()),
+                                     QStringLiteral("CODE"));
     const QCommandLineOption scaleOpt(QStringLiteral("ui-scale"),
                                       QStringLiteral("Presentation mode at start: every text SCALE times larger (1 to 2; "
                                                      "View > Presentation mode, Ctrl+= / Ctrl+-)."),
                                       QStringLiteral("SCALE"));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt,
-                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, scaleOpt});
+                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, scaleOpt, contrastOpt, langOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
     if (parser.isSet(QStringLiteral("version"))) parser.showVersion();
-    if (!parser.positionalArguments().isEmpty())
-        return fail(QStringLiteral("unexpected argument %1; elastic-lab --help lists the options")
-                        .arg(quoted(parser.positionalArguments().front())));
+    // The language before any widget or translated text is made (ui/language.h): --lang, else
+    // View > Language's choice (not for screenshots, which keep no settings), else the system's.
+    const QString lang = parser.value(langOpt);
+    if (!lang.isEmpty() && !elui::isLanguage(lang))
+        return fail(QStringLiteral("--lang %1 is not one of %2").arg(quoted(lang), languageCodes()));
+    elui::applyLanguage(elui::chooseLanguage(
+        lang, parser.isSet(shotOpt) ? QString() : QSettings().value(QStringLiteral("language")).toString(),
+        QLocale::system().uiLanguages()));
+    // One scene, given alone (a file from the desktop) or by --scene, not both.
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() > 1)
+        return fail(QStringLiteral("unexpected argument %1: one scene file at most; elastic-lab --help lists the options")
+                        .arg(quoted(positional.at(1))));
+    if (!positional.isEmpty() && parser.isSet(sceneOpt))
+        return fail(QStringLiteral("%1 and --scene both choose the scene; give one").arg(quoted(positional.front())));
+    const bool sceneGiven = parser.isSet(sceneOpt) || !positional.isEmpty();
     // A value-taking option given twice would silently lose one of the values.
     for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &lessonOpt, &shotOpt, &afterOpt,
                                            &optionsOpt, &docksOpt, &fpsOpt, &travelOpt, &branchOpt,
-                                           &selectOpt, &scaleOpt})
+                                           &selectOpt, &scaleOpt, &langOpt})
         if (parser.values(*once).size() > 1)
             return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
     if (parser.isSet(afterOpt) && !parser.isSet(shotOpt))
@@ -176,11 +241,12 @@ int main(int argc, char** argv) {
         preset = &lesson->preset;
     }
     // The scene through the front door (simlab::resolveScene), as the CLI takes it: a name or a
-    // scene file, --set (each key once), --integrator; a preset's values when no --scene is given.
-    const QString sceneArg = parser.value(sceneOpt);
+    // scene file (--scene or the one positional argument a file manager hands over: an existing
+    // file by any name), --set (each key once), --integrator; a preset's values when no scene is given.
+    const QString sceneArg = positional.isEmpty() ? parser.value(sceneOpt) : positional.front();
     simlab::SceneRequest request;
     request.scene = sceneArg.toStdString();
-    if (preset && !parser.isSet(sceneOpt)) {
+    if (preset && !sceneGiven) {
         request.base = preset->parameters();
         request.scene = simcore::sceneInfo(request.base->kind()).name;
     }
@@ -304,6 +370,7 @@ int main(int argc, char** argv) {
         elui::Viewport::setSamples(0);
     }
     elui::MainWindow window(!screenshot);
+    if (parser.isSet(contrastOpt)) window.setHighContrast(true);
     if (uiScale != 1.0) window.setUiScale(uiScale);
     if (parser.isSet(optionsOpt)) {
         elui::ViewOptions o = window.viewOptions();
@@ -313,6 +380,7 @@ int main(int argc, char** argv) {
             const QString s = QString::fromStdString(item);
             if (s == QLatin1String("strain")) o.strain = true;
             else if (s == QLatin1String("forces")) o.forces = true;
+            else if (s == QLatin1String("velocities")) o.velocities = true;
             else if (s == QLatin1String("normals")) o.normals = true;
             else if (s == QLatin1String("noparticles")) o.particles = false;
             else if (s == QLatin1String("nofaces")) o.faces = false;
@@ -321,6 +389,7 @@ int main(int argc, char** argv) {
             else if (s == QLatin1String("noshear")) o.springs[2] = false;
             else if (s == QLatin1String("nobox")) o.box = false;
             else if (s == QLatin1String("errorband")) window.plotDock()->setBandsShown(true);
+            else if (s == QLatin1String("reference")) window.plotDock()->setReferenceShown(true);
             else return fail(QStringLiteral("unknown --show switch %1").arg(quoted(s)));
         }
         window.setViewOptions(o);
@@ -339,7 +408,11 @@ int main(int argc, char** argv) {
     if (selected >= 0) controller->selectParticle(selected);  // after the scene: a rebuild clears it
     window.show();
     // After show(): the docks take their share of a laid-out window.
-    if (lesson) docks = lesson->docks + docks;
+    if (lesson) {
+        docks = lesson->docks + docks;
+        window.lessonDock()->setLesson(lesson);
+        docks << QStringLiteral("lesson");
+    }
     for (const QString& dock : docks) window.openDock(dock);
     if (parser.isSet(experimentsOpt)) {
         elui::LessonsDialog* dialog = window.showLessons();
@@ -388,7 +461,8 @@ int main(int argc, char** argv) {
         // up to a few seconds for a large body); the two-minute guard below still holds.
         std::function<void()> grabWhenReady = [&window, &app, path, &exitCode, &grabWhenReady] {
             const elui::StabilityMapDock* map = window.stabilityMapDock();
-            if (map->isVisible() && map->computing()) {
+            // ... and for a lesson's "Measure" (below) to fill its figures.
+            if ((map->isVisible() && map->computing()) || window.lessonDock()->measuring()) {
                 QTimer::singleShot(50, &window, grabWhenReady);
                 return;
             }
@@ -409,7 +483,10 @@ int main(int argc, char** argv) {
         const QString branchIntegrator = parser.value(branchOpt).mid(parser.value(branchOpt).indexOf(QLatin1Char('=')) + 1).trimmed();
         auto branched = std::make_shared<bool>(branchKey.isEmpty());
         QObject::connect(controller, &elui::SimulationController::reachedTime, &window,
-                         [=] {
+                         [=, &window] {
+                             // A lesson's screenshot shows its figures: those of the run, and
+                             // the ones "Measure" gives on these parameters.
+                             if (lesson) window.lessonDock()->measure();
                              if (travelBack <= 0.0) return shoot();
                              controller->scrubToTime(after - travelBack);
                              if (!*branched) {

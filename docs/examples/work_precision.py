@@ -9,7 +9,9 @@ SVG (csv=, plot=); here matplotlib draws them.
 
     PYTHONPATH=build/release/python python3 docs/examples/work_precision.py [out.png]
 
-Writes docs/images/python-work-precision.png by default.
+Writes work-precision.png in the current folder by default (the installed copy of this file sits
+in a folder a user cannot write to); the docs' picture is made with
+docs/examples/work_precision.py docs/images/python-work-precision.png.
 """
 
 import os
@@ -22,8 +24,7 @@ import matplotlib.pyplot as plt
 
 import elasticlab as el
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "images", "python-work-precision.png")
+out = sys.argv[1] if len(sys.argv) > 1 else "work-precision.png"
 
 # kd = 1: lightly damped, so the error does not die out before T; box = 1000: no wall is ever
 # reached, so the closed form holds. Velocity Verlet is first order with damping (docs/numerics.md).

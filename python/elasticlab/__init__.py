@@ -143,7 +143,9 @@ class Simulation(_core.Simulation):
     @_door
     def run(self, duration: float, *, every: Optional[float] = None, t_eval: Optional[Sequence[float]] = None,
             every_steps: Optional[int] = None,
-            progress: Union[None, bool, Callable[[float], Any]] = None) -> np.ndarray:
+            progress: Union[None, bool, Callable[[float], Any]] = None,
+            csv: Optional[PathLike] = None, xlsx: Optional[PathLike] = None,
+            csv_dialect: str = "plain") -> np.ndarray:
         """Runs for `duration` seconds of simulated time and returns the rows it sampled.
 
         Parameters
@@ -161,6 +163,15 @@ class Simulation(_core.Simulation):
         progress : callable or bool, optional
             ``progress(t)`` is called with the simulated time [s] a few times a second while it
             runs; True shows a tqdm bar where tqdm is installed.
+        csv, xlsx : path, optional
+            Also write the sampled rows as the CLI's ``run --csv`` / ``run --xlsx`` files (its
+            columns; the workbook with units in the header and charts of energy, volume and
+            pressure against t). Without a sampling option a row is written every step, as the
+            CLI's ``--every 1``, and the returned array holds the same rows. The files hold the
+            run so far also when it fails.
+        csv_dialect : str
+            ``"plain"`` (comma, decimal point) or ``"excel-semicolon"`` (semicolon, decimal
+            comma, CRLF, UTF-8 byte-order mark: spreadsheets in decimal-comma locales).
 
         Returns
         -------
@@ -192,11 +203,14 @@ class Simulation(_core.Simulation):
                     raise ValueError("t_eval: expected finite times in ascending order [s]")
                 if times and (times[0] < start - 1e-12 * max(1.0, abs(start)) or times[-1] > end * (1 + 1e-12) + 1e-12):
                     raise ValueError(f"t_eval: times must lie within [{start:g}, {end:g}] s, the run's span")
-            else:
+            elif csv is None and xlsx is None:
                 times = [start]
+            else:
+                every_steps = 1  # files without a sampling option: every step, as the CLI's
         callback = _progress_callback(progress, start, float(duration) if np.isfinite(duration) else 0.0)
         try:
-            table = super().run(duration, every=every_steps, times=times, progress=callback, every_seconds=every)
+            table = super().run(duration, every=every_steps, times=times, progress=callback, csv=csv, xlsx=xlsx,
+                                csv_dialect=csv_dialect, every_seconds=every)
         except SimulationFailed as e:
             if getattr(e, "rows", None) is not None:
                 e.rows = self._named(e.rows)
