@@ -22,6 +22,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,6 +42,7 @@
 #include "simlab/conservation.h"
 #include "simlab/output.h"
 #include "simlab/refinement.h"
+#include "simlab/request.h"
 #include "simlab/scenefile.h"
 #include "simlab/stability.h"
 #include "simlab/study.h"
@@ -74,43 +76,28 @@ double numberOf(const py::handle& value, const std::string& key, const char* exp
     return py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>();
 }
 
-// A scene as the CLI's sceneSetup builds it: a built-in name or a scene file (.json), then the
-// keyword parameters in the order given, each through the table (ValueError: its message).
-struct Scene {
-    std::string name;
-    simcore::ParameterSet params;
-    std::string integrator = "rk4";
-    std::optional<simlab::SceneFile::State> state;  // a scene file's saved state
-};
+// A scene through the front door (simlab::resolveScene), as the CLI's --scene, --set and
+// --integrator give it: the keyword parameters in the order given, each as `key=value` text
+// (a number as its shortest text, as `--set key=value` would give it, nan and inf included).
+// Its refusals are RequestError, a std::invalid_argument: ValueError with the CLI's text.
+using Scene = simlab::SceneSetup;
 
-void assignParameter(simcore::ParameterSet& params, const std::string& key, const py::handle& value) {
-    std::optional<std::string> error;
-    if (py::isinstance<py::str>(value))
-        error = params.setFromText(key, value.cast<std::string>());  // a number or a choice's name
-    else  // as its shortest text, as `--set key=value` would give it (nan, inf included)
-        error = params.setFromText(key, py::repr(py::float_(numberOf(value, key, "a number or a name"))).cast<std::string>());
-    if (error) throw py::value_error(*error);
+std::string parameterText(const std::string& key, const py::handle& value) {
+    if (py::isinstance<py::str>(value)) return value.cast<std::string>();  // a number or a choice's name
+    return py::repr(py::float_(numberOf(value, key, "a number or a name"))).cast<std::string>();
 }
 
-Scene sceneFrom(const py::object& scene, const py::kwargs& parameters) {
-    Scene s;
-    s.name = pathText(scene);
-    const simcore::SceneInfo* info = simcore::findScene(s.name);
-    if (!info && s.name.size() > 5 && s.name.ends_with(".json")) {
-        simlab::SceneFileResult read = simlab::readSceneFile(s.name);
-        if (!read.file) throw py::value_error(read.error);
-        s.name = read.file->sceneName;
-        s.params = read.file->params;
-        s.integrator = read.file->integrator;
-        s.state = read.file->state;
-    } else if (!info) {
-        throw py::value_error(simcore::unknownSceneMessage(s.name) + ", or a scene file (.json)");
-    } else {
-        s.params = simcore::ParameterSet(info->kind);
+Scene sceneFrom(const py::object& scene, const py::kwargs& parameters, const py::object& integrator = py::none()) {
+    simlab::SceneRequest request;
+    request.scene = pathText(scene);
+    for (const auto& [k, value] : parameters) {
+        const std::string key = py::str(k).cast<std::string>();
+        if (key.find('=') != std::string::npos)
+            throw py::value_error("unknown parameter " + simlab::quoted(key) + " (a keyword holds no '=')");
+        request.set.push_back(key + "=" + parameterText(key, value));
     }
-    for (const auto& [key, value] : parameters) assignParameter(s.params, py::str(key).cast<std::string>(), value);
-    if (auto error = simcore::validateShape(s.params)) throw py::value_error(*error);
-    return s;
+    if (!integrator.is_none()) request.integrator = integrator.cast<std::string>();
+    return simlab::resolveScene(request);
 }
 
 void checkIntegrator(const std::string& name) {
@@ -153,8 +140,8 @@ simcore::IntegratorOptions integratorOptions(const py::object& options, simcore:
         else if (key == "cg_tolerance") o.cgTolerance = checkedNumber(v, key, 0.0, 1.0, true);
         else if (key == "cg_max_iterations") o.cgMaxIterations = static_cast<int>(checkedNumber(v, key, 1, 1e6, false, true));
         else
-            throw py::value_error("unknown integrator option '" + key +
-                                  "'; allowed: atol, rtol, newton, fixed_step, error_estimate, min_step, max_step, "
+            throw py::value_error("unknown integrator option " + simlab::quoted(key) +
+                                  "; allowed: atol, rtol, newton, fixed_step, error_estimate, min_step, max_step, "
                                   "cg_tolerance, cg_max_iterations");
     }
     return o;
@@ -226,20 +213,20 @@ class PySimulation {
 public:
     PySimulation(const py::object& scene, const py::object& integrator, const py::object& options,
                  const py::object& threads, const py::kwargs& parameters) {
-        Scene s = sceneFrom(scene, parameters);
-        if (!integrator.is_none()) s.integrator = integrator.cast<std::string>();
-        checkIntegrator(s.integrator);
-        // The chosen integrator's memory too (the CVODE methods hold more), as the CLI checks it.
-        if (auto error = simcore::validateShape(s.params, s.integrator)) throw py::value_error(*error);
-        m_scene = s.name;
+        const Scene s = sceneFrom(scene, parameters, integrator);  // the integrator's memory too, as the CLI
+        m_scene = s.sceneName;
         m_sim = std::make_unique<simcore::Simulation>(s.params, s.integrator);
         m_sim->setIntegratorOptions(integratorOptions(options));
         if (!threads.is_none()) m_sim->setThreads(static_cast<int>(checkedNumber(threads, "threads", 1, 256, false, true)));
         if (s.state)
             if (auto error = simlab::applyState(*m_sim, *s.state)) throw py::value_error(*error);
         m_columns = simlab::timeSeriesColumns(s.params.kind());
+        constructed().insert(this);
         publish();
     }
+    ~PySimulation() { constructed().erase(this); }
+    PySimulation(const PySimulation&) = delete;
+    PySimulation& operator=(const PySimulation&) = delete;
 
     // Pickling (through the scene file format): the scene file with the state, the integrator
     // options and the thread count. A restored simulation goes on bit for bit (the state, the
@@ -260,17 +247,26 @@ public:
             if (auto error = simlab::applyState(*self->m_sim, *read.file->state)) throw py::value_error(*error);
         self->m_columns = simlab::timeSeriesColumns(read.file->params.kind());
         self->publish();
+        constructed().insert(self.get());
         return self;
     }
 
     // Simulated time and step count as the stepping thread last published them: readable from
     // any thread at any moment (a progress bar beside a running run).
-    double time() const { return m_time.load(std::memory_order_relaxed); }
-    long stepCount() const { return m_steps.load(std::memory_order_relaxed); }
+    double time() const { return initialised().m_time.load(std::memory_order_relaxed); }
+    long stepCount() const { return initialised().m_steps.load(std::memory_order_relaxed); }
+
+    // Simulation.__new__(Simulation) without __init__: pybind11 hands the methods raw,
+    // never-constructed memory; only objects whose constructor ran are in the set.
+    const PySimulation& initialised() const {
+        if (!constructed().contains(this)) throw std::runtime_error("this Simulation was not initialised; create it with Simulation(scene, ...)");
+        return *this;
+    }
 
     // For reading: refused while another thread steps (a look, not a claim: a reader never
     // makes a stepping thread fail).
     const simcore::Simulation& sim() const {
+        initialised();
         if (m_busy.load(std::memory_order_acquire))
             throw std::runtime_error("this Simulation is being stepped by another thread");
         return *m_sim;
@@ -279,6 +275,7 @@ public:
     // Steps n times; SimulationFailed when a step fails.
     void step(const py::handle& count) {
         const long n = static_cast<long>(checkedNumber(count, "n", 1, 1e12, false, true));
+        sim();
         Busy busy(m_busy);
         long done = 0;
         inSlices([&] {
@@ -298,21 +295,44 @@ public:
     // the same rows in the CLI's `run --csv/--xlsx` formats (its columns), the CSV in csv_dialect.
     py::object run(const py::handle& durationArg, const py::object& everyArg, const py::object& timesArg,
                    const py::object& progress, const py::object& csvPath, const py::object& xlsxPath,
-                   const std::string& dialectName) {
+                   const std::string& dialectName, const py::object& everySecondsArg) {
         const double duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
         const long every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
-        const std::vector<double> times = timesArg.is_none() ? std::vector<double>{} : timesArg.cast<std::vector<double>>();
-        const bool sampled = every || !timesArg.is_none();
+        const double everySeconds =
+            everySecondsArg.is_none() ? 0.0 : checkedNumber(everySecondsArg, "every", 0.0, 1e7, true, false, "s");
+        // The front door's bounds: the steps of a fixed-step run, the rows held in memory.
+        simlab::SceneSetup setup;
+        setup.params = sim().parameters();
+        setup.integrator = std::string(sim().integrator().name());
+        simlab::RunRequest request;
+        request.duration = duration;
+        request.rowsEvery = every;
+        request.sampleEvery = everySeconds;
+        request.rowColumns = static_cast<int>(m_columns.size());
+        request.options = sim().integratorOptions();
+        simlab::checkRun(setup, request);
+        std::vector<double> times = timesArg.is_none() ? std::vector<double>{} : timesArg.cast<std::vector<double>>();
+        if (everySeconds > 0.0) {  // the start, every so many seconds, within the bound just checked
+            const double start = m_sim->time();
+            const auto count = static_cast<long>(std::floor(duration / everySeconds + 1e-9));
+            times.clear();
+            for (long k = 0; k <= count; ++k) times.push_back(start + static_cast<double>(k) * everySeconds);
+        }
+        const bool sampled = every || everySeconds > 0.0 || !timesArg.is_none();
         const auto dialect = simlab::csvDialectNamed(dialectName);
         if (!dialect) throw py::value_error(simlab::unknownCsvDialectMessage(dialectName));
         simlab::TimeSeriesFiles files{csvPath.is_none() ? "" : pathText(csvPath), *dialect,
                                        xlsxPath.is_none() ? "" : pathText(xlsxPath)};
-        if (auto clash = simlab::fileClash({{"csv", files.csv}, {"xlsx", files.xlsx}})) throw py::value_error(*clash);
+        // The outputs through the front door (an empty name, a FIFO, one over the other).
+        if (!csvPath.is_none()) simlab::checkOutputNamed("csv", files.csv);
+        if (!xlsxPath.is_none()) simlab::checkOutputNamed("xlsx", files.xlsx);
+        simlab::checkFiles({}, {{"csv", files.csv}, {"xlsx", files.xlsx}});
         const simcore::SceneKind kind = m_sim->parameters().kind();
         simlab::TimeSeriesWriter writer(kind, simlab::timeSeriesColumns(kind, m_sim->diagnostics().hasSolverCounters),
                                          files);
         if (!writer.ok()) throw py::value_error(writer.error());
         Busy busy(m_busy);
+        const long firstStep = m_sim->stepCount();
         std::vector<double> rows;
         auto record = [&] {
             for (const simlab::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
@@ -338,6 +358,10 @@ public:
                 const bool sample = due();
                 if ((every && (m_sim->stepCount() % every == 0 || last)) || sample || (last && sampled && !every))
                     record();
+                // An adaptive run stops at the bound, as the CLI's (its rows up to there kept).
+                if (!last && static_cast<double>(m_sim->stepCount() - firstStep) >= simlab::kMaxSteps)
+                    throw std::runtime_error("run stopped at step " + std::to_string(m_sim->stepCount()) + ": " +
+                                             simlab::number(simlab::kMaxSteps) + " steps taken, the most one run may take");
                 return !last;
             }, between);
         py::object table = py::none();
@@ -354,6 +378,7 @@ public:
     }
 
     void reset() {
+        sim();
         Busy busy(m_busy);
         m_sim->reset();
         publish();
@@ -383,6 +408,7 @@ public:
         return row;
     }
     std::vector<std::string> columns() const {
+        sim();
         std::vector<std::string> names;
         for (const simlab::CsvColumn& c : m_columns) names.push_back(c.name);
         return names;
@@ -416,7 +442,7 @@ public:
     }
     void setIntegrator(const std::string& name, const py::object& options) {
         checkIntegrator(name);
-        const simcore::IntegratorOptions o = integratorOptions(options, m_sim->integratorOptions());
+        const simcore::IntegratorOptions o = integratorOptions(options, sim().integratorOptions());
         Busy busy(m_busy);
         if (auto error = m_sim->setIntegrator(name)) throw py::value_error(*error);
         m_sim->setIntegratorOptions(o);
@@ -426,7 +452,7 @@ public:
     py::tuple exact() {
         const simcore::Simulation& s = sim();
         if (!simlab::hasClosedForm(s.parameters()))
-            throw py::value_error("no closed form for scene '" + m_scene + "'; spring1d has one");
+            throw py::value_error("no closed form for scene " + simlab::quoted(m_scene) + "; spring1d has one");
         Eigen::Matrix3Xd x, v;
         simlab::spring1dExact(s.parameters(), s.time(), x, v);
         auto table = [](const Eigen::Matrix3Xd& m) {
@@ -439,13 +465,18 @@ public:
 
     void saveScene(const py::object& path) {
         const std::string text = simlab::sceneFileText(sim(), m_scene, true);
+        simlab::checkFiles({}, {{"save-scene", pathText(path)}});
         simlab::AtomicFile file(pathText(path));
         if (!file.ok() || !file.write(text) || !file.commit()) throw py::value_error(file.error());
     }
 
-    const std::string& scene() const { return m_scene; }
+    const std::string& scene() const {
+        sim();
+        return m_scene;
+    }
 
     std::string repr() const {
+        if (!constructed().contains(this)) return "<elasticlab.Simulation, not initialised>";
         if (m_busy.load(std::memory_order_acquire)) return "<elasticlab.Simulation '" + m_scene + "', stepping>";
         char text[160];
         std::snprintf(text, sizeof text, ", %d particles, step %ld, t = %g s%s>", m_sim->particleCount(),
@@ -458,6 +489,11 @@ private:
     void publish() {
         m_time.store(m_sim->time(), std::memory_order_relaxed);
         m_steps.store(m_sim->stepCount(), std::memory_order_relaxed);
+    }
+    // The Simulations whose constructor completed (read and changed with the GIL held).
+    static std::set<const PySimulation*>& constructed() {
+        static std::set<const PySimulation*> live;
+        return live;
     }
 
     // SimulationFailed("simulation failed at step S, t = T s: reason") with .reason, .step,
@@ -498,8 +534,28 @@ void commit(simlab::AtomicFile& file) {
 }
 
 std::vector<std::string> integratorList(const std::vector<std::string>& names) {
-    for (const std::string& name : names) checkIntegrator(name);
+    // As the CLI's --integrators a,b,c: the same list rules and the same words.
+    std::string joined;
+    for (const std::string& name : names) {
+        if (name.find(',') != std::string::npos) throw py::value_error("integrator " + simlab::quoted(name) + " holds a comma");
+        joined += (joined.empty() ? "" : ",") + name;
+    }
+    if (names.size() == 1 && names.front().empty()) joined = ",";  // [""]: an empty item, not an empty list
+    const simcore::NameList list = simcore::parseNameList("integrators", joined);
+    if (!list.error.empty()) throw py::value_error(list.error);
+    simlab::checkIntegrators(names);
     return names;
+}
+
+// The outputs against the scene file read and each other (the front door's checkFiles).
+void checkOutputs(const Scene& scene, const std::vector<std::pair<std::string, py::object>>& outputs) {
+    std::vector<simlab::NamedPath> named;
+    for (const auto& [option, path] : outputs) {
+        if (path.is_none()) continue;
+        named.emplace_back(option, pathText(path));
+        simlab::checkOutputNamed(option, named.back().second);
+    }
+    simlab::checkFiles({{"scene", scene.sceneFile}}, named);
 }
 
 double nanIfFailed(bool ok, double v) { return ok ? v : std::nan(""); }
@@ -527,7 +583,8 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
     spec.compensated = compensated;
     spec.reference = reference;
     spec.options.fixedStep = fixedStep;
-    if (auto error = simlab::validateStudy(spec)) throw py::value_error(*error);
+    simlab::checkStudy(spec);
+    checkOutputs(s, {{"csv", csvPath}, {"plot", plotPath}});
     auto csv = openOutput(csvPath);
     auto timings = openOutput(timingsPath);
     auto plot = openOutput(plotPath);
@@ -579,7 +636,7 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
     }
     const double scale = simlab::referenceScale(result.reference);
     if (plot) {
-        const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simlab::formatDouble(spec.duration) + " s"
+        const std::string t = title.is_none() ? s.sceneName + ": error against cost, T = " + simlab::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
         plot->write(simlab::studySvg(result.rows, t, scale, spec.duration));
         commit(*plot);
@@ -604,7 +661,8 @@ py::dict conservation(const py::object& scene, const std::vector<std::string>& i
     spec.dt = dt.is_none() ? s.params.get(simcore::Param::Dt) : checkedNumber(dt, "dt", 0.0, 1.0, true, false, "s");
     spec.samples = static_cast<int>(checkedNumber(samples, "samples", 10, 100000, false, true));
     spec.precision = precision;
-    if (auto error = simlab::validateConservation(spec)) throw py::value_error(*error);
+    simlab::checkConservation(spec);
+    checkOutputs(s, {{"csv", csvPath}, {"plot", plotPath}});
     auto csv = openOutput(csvPath);
     auto plot = openOutput(plotPath);
     const simlab::ConservationResult result = cancellable(
@@ -630,7 +688,7 @@ py::dict conservation(const py::object& scene, const std::vector<std::string>& i
         commit(*csv);
     }
     if (plot) {
-        const std::string t = title.is_none() ? s.name + ": |energy error| over " + simlab::formatDouble(spec.periods) + " periods"
+        const std::string t = title.is_none() ? s.sceneName + ": |energy error| over " + simlab::formatDouble(spec.periods) + " periods"
                                               : title.cast<std::string>();
         plot->write(simlab::conservationSvg(result, t));
         commit(*plot);
@@ -650,7 +708,9 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e5, true, false, "s");
     spec.perturb = checkedNumber(perturb, "perturb", 0.0, 1e3, false, false, "m");
     spec.hMin = checkedNumber(hmin, "hmin", 0.0, 1.0, true, false, "s");
-    spec.hMax = checkedNumber(hmax, "hmax", spec.hMin, 1.0, false, false, "s");
+    spec.hMax = checkedNumber(hmax, "hmax", 0.0, 1.0, true, false, "s");
+    simlab::checkStability(spec);
+    checkOutputs(s, {{"csv", csvPath}});
     auto csv = openOutput(csvPath);
 
     // The one verdict's linearisation (simlab::stabilityModes: the rest shape, as the CLI's
@@ -700,7 +760,8 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
     spec.interval = checkedNumber(interval, "interval", 0.0, 1e6, true, false, "s");
     spec.temporalRuns = static_cast<int>(checkedNumber(temporalRuns, "temporal_runs", 0, 10, false, true));
     spec.options.fixedStep = fixedStep;
-    if (auto error = simlab::validateRefinement(spec)) throw py::value_error(*error);
+    simlab::checkRefinement(spec);
+    checkOutputs(s, {{"csv", csvPath}, {"plot", plotPath}});
     auto csv = openOutput(csvPath);
     auto plot = openOutput(plotPath);
 
@@ -730,7 +791,7 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
         commit(*csv);
     }
     if (plot) {
-        const std::string t = title.is_none() ? s.name + ": mesh error and step error against run time, T = " +
+        const std::string t = title.is_none() ? s.sceneName + ": mesh error and step error against run time, T = " +
                                                     simlab::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
         plot->write(simlab::refinementSvg(spec, result, t));
@@ -763,13 +824,13 @@ py::tuple sweepPlan(const py::object& scene, const std::vector<std::string>& key
                     const py::kwargs& fixed) {
     const Scene s = sceneFrom(scene, fixed);
     simlab::SweepSpec spec;
-    spec.sceneName = s.name;
+    spec.sceneName = s.sceneName;
     spec.params = s.params;
     spec.integrator = integrator.is_none() ? s.integrator : integrator.cast<std::string>();
     spec.state = s.state;
     spec.options = integratorOptions(options);
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e7, true, false, "s");
-    if (!maxSteps.is_none()) spec.maxSteps = checkedNumber(maxSteps, "max_steps", 1, 1e12, false);
+    if (!maxSteps.is_none()) spec.maxSteps = checkedNumber(maxSteps, "max_steps", 1, simlab::kMaxSteps, false);
     spec.keys = keys;
     auto values = [&](const py::handle& list, std::size_t k) {
         std::vector<double> out;
@@ -786,7 +847,7 @@ py::tuple sweepPlan(const py::object& scene, const std::vector<std::string>& key
             spec.points.push_back(std::move(v));
         }
     if (!metrics.is_none()) spec.metrics = metrics.cast<std::vector<std::string>>();
-    if (auto error = simlab::validateSweep(spec)) throw py::value_error(*error);
+    simlab::checkSweep(spec);
     return py::make_tuple(simlab::sweepSpecText(spec), simlab::sweepColumns(spec), simlab::sweepPointCount(spec));
 }
 
@@ -884,11 +945,13 @@ PYBIND11_MODULE(_core, m) {
         .def("run", &PySimulation::run, py::arg("duration"), py::arg("every") = py::none(),
              py::arg("times") = py::none(), py::arg("progress") = py::none(), py::kw_only(),
              py::arg("csv") = py::none(), py::arg("xlsx") = py::none(), py::arg("csv_dialect") = "plain",
+             py::arg("every_seconds") = py::none(),
              "Runs for duration seconds [s]; with every=N (steps) or times=[t...] (absolute simulated times [s], "
              "ascending) returns the diagnostics rows (start, then every N steps or the first step at or past each "
              "time, end) as an array, columns as diagnostics_columns; progress(t) is called between slices. "
              "csv= and xlsx= write the same rows as the CLI's `run --csv/--xlsx` files; csv_dialect='excel-semicolon' "
-             "spells the CSV for spreadsheets in decimal-comma locales (semicolon, decimal comma, CRLF, byte-order mark).")
+             "spells the CSV for spreadsheets in decimal-comma locales (semicolon, decimal comma, CRLF, byte-order mark); "
+             "every_seconds=S samples every S seconds from the start (the rows held bounded before it starts).")
         .def("reset", &PySimulation::reset, "Back to the start state, same parameters.")
         .def("set_integrator", &PySimulation::setIntegrator, py::arg("name"), py::arg("options") = py::none(),
              "Changes the integrator between steps (options as in the constructor, added to the current ones).")

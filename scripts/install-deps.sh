@@ -20,7 +20,7 @@ packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev lib
           pkgconf libxlsxwriter-dev python3-openpyxl
           qt6-tools-dev qt6-l10n-tools qt6-translations-l10n
           python3-pandas python3-dask python3-distributed python3-tqdm python3-venv python3-setuptools python3-wheel
-          libbullet-dev)
+          libbullet-dev qt6-svg-dev)
 missing=()
 for p in "${packages[@]}" "${packaging[@]}" "${optional[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -271,7 +271,7 @@ std::optional<std::string> ParameterSet::setFromText(std::string_view key, std::
 std::optional<std::string> ParameterSet::assign(std::string_view assignment) {
     const auto eq = assignment.find('=');
     if (eq == std::string_view::npos || eq == 0)
-        return "expected key=value, got '" + std::string(assignment) + "'";
+        return "expected key=value, got " + quoteShort(assignment);
     return setFromText(assignment.substr(0, eq), assignment.substr(eq + 1));
 }
 

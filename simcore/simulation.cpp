@@ -15,8 +15,7 @@ namespace simcore {
 Simulation::Simulation(const ParameterSet& params, std::string_view integrator)
     : m_params(params), m_integrator(makeIntegrator(integrator)) {
     if (!m_integrator)
-        throw std::invalid_argument("unknown integrator '" + std::string(integrator) +
-                                    "'; allowed: " + integratorNames());
+        throw std::invalid_argument("unknown integrator " + quoteShort(integrator) + "; allowed: " + integratorNames());
     m_ode = std::make_unique<BodyOde>(m_body, m_forces, m_invMass3);
     build();
 }
@@ -607,7 +606,7 @@ void Simulation::restore(const SimulationSnapshot& s) {
     applyForceParams();
     if (m_integrator->name() != s.integrator) {
         auto next = makeIntegrator(s.integrator);
-        if (!next) throw std::invalid_argument("unknown integrator '" + s.integrator + "'");
+        if (!next) throw std::invalid_argument("unknown integrator " + quoteShort(s.integrator));
         m_integrator = std::move(next);
         m_integrator->prepare(m_ode->layout());
     }
@@ -634,7 +633,7 @@ void Simulation::restore(const SimulationSnapshot& s) {
 
 std::optional<std::string> Simulation::setIntegrator(std::string_view name) {
     auto next = makeIntegrator(name);
-    if (!next) return "unknown integrator '" + std::string(name) + "'; allowed: " + integratorNames();
+    if (!next) return "unknown integrator " + quoteShort(name) + "; allowed: " + integratorNames();
     m_integrator = std::move(next);
     m_ode->dropEnd();
     m_lastError = nullptr;

@@ -5,16 +5,19 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simlab/output.h"
 #include "simlab/reference_problem.h"
+#include "simlab/bounds.h"
 #include "simlab/stability.h"
 #include "simlab/study.h"
 
 namespace simlab {
 
+using simcore::quoteShort;
 using simcore::Diagnostics;
 using simcore::Param;
 using simcore::ParameterSet;
@@ -117,14 +120,14 @@ std::optional<std::string> validateConservation(const ConservationSpec& spec) {
         const auto method = makeIntegrator(name);
         if (method->adaptive())
             return name + " chooses its own steps; the conservation study runs fixed steps (--dt)";
-        if (std::count(spec.integrators.begin(), spec.integrators.end(), name) > 1) return "'" + name + "' is listed twice";
+        if (std::count(spec.integrators.begin(), spec.integrators.end(), name) > 1) return quoteShort(name) + " is listed twice";
     }
     if (!(spec.periods >= 20.0) || spec.periods > 1e7)
         return "periods must be in [20, 1e7] (the growth is fitted from 10 periods on)";
     if (!(spec.dt > 0.0) || spec.dt > 1.0) return "the step --dt must be in (0, 1] s";
     if (spec.samples < 10 || spec.samples > 100000) return "samples must be in [10, 100000]";
     if (spec.precision != "double" && spec.precision != "float")
-        return "unknown precision '" + spec.precision + "'; allowed: double, float";
+        return "unknown precision " + quoteShort(spec.precision) + "; allowed: double, float";
     if (spec.precision == "float") {
         if (const std::string refusal = referenceProblemRefusal(spec.params); !refusal.empty()) return refusal;
         for (const std::string& name : spec.integrators)
@@ -209,10 +212,12 @@ ConservationResult runConservation(const ConservationSpec& spec, const Conservat
     if (!(result.omegaMax > 0.0)) throw std::runtime_error("the scene has no oscillating mode (omega_max = 0)");
     result.period = 2.0 * std::numbers::pi / result.omegaMax;
     const double wanted = std::ceil(spec.periods * result.period / spec.dt - 1e-9);
-    if (wanted > 1e9)
-        throw std::runtime_error(shortNumber(spec.periods) + " periods of " + shortNumber(result.period) + " s at dt = " +
+    // A refusal before any step, as the front door's (std::invalid_argument, the base of its
+    // RequestError: exit 2 in the CLI, ValueError in Python).
+    if (wanted > kMaxSteps)
+        throw std::invalid_argument(shortNumber(spec.periods) + " periods of " + shortNumber(result.period) + " s at dt = " +
                                  shortNumber(spec.dt) + " s would take " + shortNumber(wanted) +
-                                 " steps; at most 1e9 (fewer periods or a larger step)");
+                                 " steps; at most " + shortNumber(kMaxSteps) + " (fewer periods or a larger step)");
     const long total = std::max(1L, static_cast<long>(wanted));
     result.duration = static_cast<double>(total) * spec.dt;
     const long perPeriod = std::max(1L, std::lround(result.period / spec.dt));

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <random>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -20,17 +21,63 @@ using simcore::hasGas;
 using simcore::layerName;
 using simcore::quoteShort;
 
+std::optional<int> standardStream(const std::string& path) {
+    if (path == "/dev/stdout") return 1;
+    if (path == "/dev/stderr") return 2;
+    for (std::string_view prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+        if (path.rfind(prefix, 0) != 0) continue;
+        const std::string_view digits = std::string_view(path).substr(prefix.size());
+        int fd = -1;
+        const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), fd);
+        if (ec != std::errc() || end != digits.data() + digits.size() || fd < 0) return std::nullopt;
+        if (::fcntl(fd, F_GETFD) < 0) return std::nullopt;  // not open: an ordinary (failing) path
+        return fd;
+    }
+    return std::nullopt;
+}
+
+namespace {
+
+// A temporary name in `folder` that no file has: ".elastic-lab-" and 16 random hex digits
+// (30 bytes, so it fits beside a target of any legal name length), never derived from the pid
+// (as pid 1 in a container, a pid-derived name is the same in every run).
+std::string randomSibling(const std::string& folder) {
+    static std::mt19937_64 rng{std::random_device{}() ^ static_cast<std::uint64_t>(::getpid()) << 32};
+    char name[40];
+    std::snprintf(name, sizeof name, ".elastic-lab-%016llx.tmp", static_cast<unsigned long long>(rng()));
+    return ((folder.empty() ? std::filesystem::path(".") : std::filesystem::path(folder)) / name).string();
+}
+
+}  // namespace
+
 AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
     if (m_path.empty()) {
         fail("empty file name");
         return;
     }
+    // A standard stream (/dev/stdout, /dev/fd/N, /proc/self/fd/N) is written in place through
+    // its open descriptor: never followed to the file behind it (`>> log.txt` would be
+    // replaced), never truncated.
+    if (const auto fd = standardStream(m_path)) {
+        const int copy = ::fcntl(*fd, F_DUPFD_CLOEXEC, 3);
+        m_file = copy >= 0 ? ::fdopen(copy, "wb") : nullptr;
+        if (!m_file) {
+            if (copy >= 0) ::close(copy);
+            fail(std::strerror(errno));
+        }
+        return;
+    }
     namespace fs = std::filesystem;
     std::error_code ec;
-    const fs::file_status status = fs::status(m_path, ec);
-    if (fs::exists(status) && !fs::is_regular_file(status)) {
-        // A device or pipe (/dev/stdout, /dev/full, a FIFO) cannot be replaced by a rename:
-        // write straight to it; errors still surface at flush and are reported.
+    struct stat st {};
+    if (::stat(m_path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (!S_ISCHR(st.st_mode)) {  // a FIFO would block, a folder or socket holds no table
+            fail(S_ISDIR(st.st_mode) ? "is a folder" : S_ISFIFO(st.st_mode) ? "is a FIFO; an output is a regular file or a device"
+                                                                            : "not a regular file or a device");
+            return;
+        }
+        // A device (/dev/null, /dev/full, a terminal) cannot be replaced by a rename: written in
+        // place; errors still surface at flush and are reported.
         m_file = std::fopen(m_path.c_str(), "wb");
         if (!m_file) fail(std::strerror(errno));
         return;
@@ -40,29 +87,44 @@ AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
     if (fs::is_symlink(fs::symlink_status(m_path, ec))) target = fs::canonical(m_path, ec).string();
     if (ec || target.empty()) target = m_path;
     m_target = target;
-    m_tempPath = target + ".tmp-" + std::to_string(::getpid());
+    m_folder = fs::path(target).parent_path().string();
     // An unnamed file in the target's folder (O_TMPFILE): if the process is killed before the
-    // commit, the kernel drops it and nothing is left behind. It gets its temporary name only
-    // at the commit, just before the rename. Filesystems without O_TMPFILE get the named
-    // temporary file from the start (removed on any failure we live through).
-    const fs::path parent = fs::path(target).parent_path();
-    const int fd = ::open(parent.empty() ? "." : parent.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    // commit, the kernel drops it and nothing is left behind. It gets a temporary name only at
+    // the commit, just before the rename. Filesystems without O_TMPFILE get a named temporary
+    // file from the start, created with O_EXCL under a fresh random name (removed on any
+    // failure we live through).
+    const int fd = ::open(m_folder.empty() ? "." : m_folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
     if (fd >= 0) {
         m_file = ::fdopen(fd, "wb");
         if (!m_file) ::close(fd);
         m_unnamed = m_file != nullptr;
     }
-    if (!m_file) m_file = std::fopen(m_tempPath.c_str(), "wb");
+    for (int attempt = 0; !m_file && attempt < 100; ++attempt) {
+        m_tempPath = randomSibling(m_folder);
+        const int named = ::open(m_tempPath.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0666);
+        if (named < 0) {
+            m_tempPath.clear();
+            if (errno == EEXIST) continue;
+            break;
+        }
+        m_file = ::fdopen(named, "wb");
+        if (!m_file) {
+            ::close(named);
+            std::remove(m_tempPath.c_str());
+            m_tempPath.clear();
+            break;
+        }
+    }
     if (!m_file) fail(std::strerror(errno));
 }
 
 AtomicFile::~AtomicFile() {
     if (m_file) std::fclose(m_file);
-    if (!m_committed && !m_tempPath.empty() && !m_unnamed) std::remove(m_tempPath.c_str());
+    if (!m_committed && !m_tempPath.empty()) std::remove(m_tempPath.c_str());
 }
 
 void AtomicFile::fail(const std::string& what) {
-    if (m_error.empty()) m_error = "cannot write '" + m_path + "': " + what;
+    if (m_error.empty()) m_error = "cannot write " + quoteShort(m_path, 200) + ": " + what;
 }
 
 bool AtomicFile::write(std::string_view text) {
@@ -74,36 +136,42 @@ bool AtomicFile::write(std::string_view text) {
     return true;
 }
 
-bool AtomicFile::commit() {
+bool AtomicFile::prepare() {
+    if (m_prepared) return true;
     if (!ok() || !m_file) return false;
-    if (std::fflush(m_file) != 0 || std::ferror(m_file) ||
-        (!m_tempPath.empty() && ::fsync(::fileno(m_file)) != 0)) {
+    const bool inPlace = m_target.empty();
+    if (std::fflush(m_file) != 0 || std::ferror(m_file) || (!inPlace && ::fsync(::fileno(m_file)) != 0)) {
         fail(std::strerror(errno));
         return false;
     }
-    if (m_unnamed) {
-        // Give the unnamed file its temporary name (through /proc, which needs no privilege);
-        // a stale file of that name from a killed run of the same pid is replaced.
-        const std::string self = "/proc/self/fd/" + std::to_string(::fileno(m_file));
-        int linked = ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, m_tempPath.c_str(), AT_SYMLINK_FOLLOW);
-        if (linked != 0 && errno == EEXIST && std::remove(m_tempPath.c_str()) == 0)
-            linked = ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, m_tempPath.c_str(), AT_SYMLINK_FOLLOW);
-        if (linked != 0) {
-            fail(std::strerror(errno));
-            return false;
-        }
-        m_unnamed = false;  // from here on a failure removes the named file
-    }
-    if (!m_tempPath.empty()) {
-        // A replaced file keeps its permissions (a 600 file stays 600) and, where the process
-        // may set them (root, or the file's own group), its owner and group.
+    if (!inPlace) {
+        // A replaced file keeps its owner and group where the process may set them (root, or
+        // its own group), then its mode: in that order, since a change of owner clears the
+        // setuid and setgid bits (a 4755 program stays 4755, a 600 file stays 600).
         struct stat old {};
         if (::stat(m_target.c_str(), &old) == 0 && S_ISREG(old.st_mode)) {
+            [[maybe_unused]] const int owned = ::fchown(::fileno(m_file), old.st_uid, old.st_gid);  // EPERM: keep ours
             if (::fchmod(::fileno(m_file), old.st_mode & 07777) != 0) {
                 fail(std::strerror(errno));
                 return false;
             }
-            [[maybe_unused]] const int owned = ::fchown(::fileno(m_file), old.st_uid, old.st_gid);  // EPERM: keep ours
+        }
+        // Give the unnamed file a temporary name (through /proc, which needs no privilege): a
+        // fresh random one, again on EEXIST; an existing file is never removed or replaced.
+        if (m_unnamed) {
+            const std::string self = "/proc/self/fd/" + std::to_string(::fileno(m_file));
+            int linked = -1;
+            for (int attempt = 0; attempt < 100 && linked != 0; ++attempt) {
+                m_tempPath = randomSibling(m_folder);
+                linked = ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, m_tempPath.c_str(), AT_SYMLINK_FOLLOW);
+                if (linked != 0 && errno != EEXIST) break;
+            }
+            if (linked != 0) {
+                m_tempPath.clear();
+                fail(std::strerror(errno));
+                return false;
+            }
+            m_unnamed = false;  // from here on a failure removes the named file
         }
     }
     const int closed = std::fclose(m_file);
@@ -112,11 +180,13 @@ bool AtomicFile::commit() {
         fail(std::strerror(errno));
         return false;
     }
-    if (m_tempPath.empty()) {  // written in place (device or pipe)
-        m_committed = true;
-        return true;
-    }
-    if (std::rename(m_tempPath.c_str(), m_target.c_str()) != 0) {
+    m_prepared = true;
+    return true;
+}
+
+bool AtomicFile::publish() {
+    if (!prepare()) return false;
+    if (!m_tempPath.empty() && std::rename(m_tempPath.c_str(), m_target.c_str()) != 0) {
         fail(std::strerror(errno));
         return false;
     }
@@ -124,8 +194,41 @@ bool AtomicFile::commit() {
     return true;
 }
 
+bool AtomicFile::commit() { return publish(); }
+
+std::string xmlEscaped(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') out += "\xEF\xBF\xBD";
+                else out += c;
+        }
+    }
+    return out;
+}
+
+std::optional<std::string> commitAll(const std::vector<AtomicFile*>& files) {
+    // Every file complete, synced and named beside its target before the first rename: a
+    // failure up to here leaves every existing file as it was (the destructors remove the
+    // temporary names).
+    for (AtomicFile* file : files)
+        if (file && !file->prepare()) return file->error();
+    for (AtomicFile* file : files)
+        if (file && !file->publish()) return file->error();
+    return std::nullopt;
+}
+
 std::string formatDouble(double value) {
-    if (!std::isfinite(value)) return "0";  // never reached: failures stop before output
+    // Non-finite values as such (a diverged run's last row, a failed fit), never as 0.
+    if (std::isnan(value)) return "nan";
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
     char buffer[64];
     auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
     return ec == std::errc() ? std::string(buffer, end) : std::string("0");

@@ -4,8 +4,10 @@
 // A file is written to a temporary sibling and renamed over the target only when complete
 // (POSIX rename is atomic): a failed or interrupted write leaves any existing file untouched
 // and no partial file behind. The sibling is an unnamed O_TMPFILE file until the commit, so
-// even a killed process (SIGKILL, power loss before the commit) leaves nothing behind. A target that is not a regular file (a device such as
-// /dev/stdout or /dev/full, a pipe) is written in place, since it cannot be renamed over.
+// even a killed process (SIGKILL, power loss before the commit) leaves nothing behind; at the
+// commit it gets a random name (never pid-derived, never one that exists, 30 bytes whatever
+// the target's length). A standard stream (/dev/stdout, /dev/fd/N) and a character device
+// (/dev/full, a terminal) are written in place; a FIFO, socket or folder is refused.
 
 #include <cstdio>
 #include <functional>
@@ -30,19 +32,40 @@ public:
     const std::string& error() const { return m_error; }
     const std::string& path() const { return m_path; }
     bool write(std::string_view text);
-    // Flushes, syncs and renames into place. False (with error()) on any failure.
+    // Flushes, syncs and renames into place. False (with error()) on any failure. A command
+    // with several outputs commits them together (commitAll).
     bool commit();
+    // The two halves of commit: prepare flushes, syncs, sets owner then mode and gives the
+    // file its temporary name beside the target; publish renames it over the target.
+    bool prepare();
+    bool publish();
 
 private:
     void fail(const std::string& what);
     std::string m_path;
-    std::string m_target;    // the file renamed over (m_path, or what its symlink points to)
-    std::string m_tempPath;  // empty when writing in place to a device or pipe
+    std::string m_target;    // the file renamed over (m_path, or what its symlink points to); empty: in place
+    std::string m_folder;    // the target's folder
+    std::string m_tempPath;  // the named temporary file, once it has a name
     bool m_unnamed = false;  // writing an O_TMPFILE file that has no name yet
+    bool m_prepared = false;
     std::FILE* m_file = nullptr;
     std::string m_error;
     bool m_committed = false;
 };
+
+// All or none: every file is prepared (complete, synced, named beside its target) before the
+// first is renamed into place, so a failure of any (a full disk, /dev/full) leaves every
+// existing file byte-identical. Null entries are skipped. Returns the first failure's message.
+std::optional<std::string> commitAll(const std::vector<AtomicFile*>& files);
+
+// Text for XML (SVG titles, labels, legends): & < > " ' as entities, control bytes XML does not
+// allow (all below 0x20 but tab, newline, return) as U+FFFD. A title with "&" or "<" broke the
+// plot before.
+std::string xmlEscaped(std::string_view text);
+
+// A path that names an open standard stream or descriptor (/dev/stdout, /dev/stderr,
+// /dev/fd/N, /proc/self/fd/N): its descriptor, written in place; otherwise nullopt.
+std::optional<int> standardStream(const std::string& path);
 
 // Outputs never overwrite an input or each other (issue 18): the files named, as (option, path)
 // pairs with inputs first and empty paths skipped, compared by identity, not by spelling (device

@@ -14,6 +14,7 @@
 
 namespace simlab {
 
+using simcore::quoteShort;
 using simcore::Body;
 using simcore::IntegratorOptions;
 using simcore::Param;
@@ -162,7 +163,7 @@ std::optional<std::string> validateRefinement(const RefinementSpec& spec) {
     const std::string key = refinementKey(spec.params.kind());
     if (key.empty()) return "this scene has no mesh to refine (the 1D spring is two particles)";
     if (spec.key != key)
-        return "'" + spec.key + "' is not this scene's resolution; refine it with " + key +
+        return quoteShort(spec.key) + " is not this scene's resolution; refine it with " + key +
                "=v1,v2,... (ring2d: particles, sphere3d: subdivisions, sphere3d-latlong: slices)";
     const std::vector<int> levels = sortedLevels(spec);
     if (levels.size() < 2) return "a refinement needs at least two different levels";
@@ -171,7 +172,7 @@ std::optional<std::string> validateRefinement(const RefinementSpec& spec) {
         if (auto error = setLevel(p, spec.key, value)) return *error;
     }
     if (!makeIntegrator(spec.integrator))
-        return "unknown integrator '" + spec.integrator + "'; allowed: " + integratorNames();
+        return "unknown integrator " + quoteShort(spec.integrator) + "; allowed: " + integratorNames();
     if (!(spec.duration > 0.0)) return "the duration must be positive";
     if (!(spec.interval > 0.0) || spec.interval > spec.duration || !isWholeMultiple(spec.duration, spec.interval))
         return "the duration " + shortNumber(spec.duration) + " s must be a whole multiple of the output interval " +

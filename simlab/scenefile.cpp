@@ -101,13 +101,32 @@ int lineOfKey(const std::string& text, const std::string& key, int occurrence) {
     return 0;
 }
 
+struct TooLarge {
+    std::string what;
+};
+
 // Everything but the exception boundary (parseSceneFile).
 SceneFileResult parseSceneJson(const std::string& text) {
     Json root;
     try {
         std::vector<std::set<std::string>> open;  // the keys of each object being parsed
         std::map<std::string, int> occurrences;
-        root = Json::parse(text, [&](int, Json::parse_event_t event, Json& parsed) {
+        // Bounded for any accepted size: the nesting (a scene file needs 4 levels; 64 MiB of
+        // '[' reached 4.9 GB) and the memory the parsed tree takes, estimated as it grows
+        // (a container ~128 B, a value 32 B, a key its length and 96 B): refused past the bound.
+        double estimated = 0.0;
+        root = Json::parse(text, [&](int depth, Json::parse_event_t event, Json& parsed) {
+            if (event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start) {
+                if (depth >= kMaxSceneDepth) throw TooLarge{"nested deeper than " + std::to_string(kMaxSceneDepth) + " levels"};
+                estimated += 128.0;
+            } else if (event == Json::parse_event_t::value) {
+                estimated += 32.0;
+            } else if (event == Json::parse_event_t::key) {
+                estimated += 96.0 + static_cast<double>(parsed.get_ref<const std::string&>().size());
+            }
+            if (estimated > kMaxSceneParseBytes)
+                throw TooLarge{"reading it would take more than " + std::to_string(kMaxSceneParseBytes >> 20) +
+                               " MiB of memory (more values than any body within the 1 GiB limit has)"};
             if (event == Json::parse_event_t::object_start) {
                 open.emplace_back();
             } else if (event == Json::parse_event_t::object_end) {
@@ -119,6 +138,8 @@ SceneFileResult parseSceneJson(const std::string& text) {
             }
             return true;
         });
+    } catch (const TooLarge& t) {
+        return failure("not a scene file this program reads: " + t.what);
     } catch (const DuplicateKey& d) {
         return failure("duplicate key " + quoteShort(d.key) + " at line " +
                        std::to_string(lineOfKey(text, d.key, d.occurrence)) + ": a key may appear once per object");
@@ -135,22 +156,25 @@ SceneFileResult parseSceneJson(const std::string& text) {
         return failure("format: expected \"elastic-lab-scene\"");
     if (!root.contains("version") || !root["version"].is_number_integer())
         return failure("version: expected a whole number");
-    const int version = root["version"].get<int>();
-    if (version > kSceneFormatVersion)
-        return failure("version " + std::to_string(version) + " is newer than this program reads (up to " +
+    // Read as 64 bits (2^32 + 2 is not version 2), unsigned ones above 2^63 too.
+    const Json& v = root["version"];
+    if (v.is_number_unsigned() ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(kSceneFormatVersion)
+                               : v.get<std::int64_t>() > kSceneFormatVersion)
+        return failure("version " + v.dump() + " is newer than this program reads (up to " +
                        std::to_string(kSceneFormatVersion) + "); update Elastic Lab");
+    const int version = static_cast<int>(v.get<std::int64_t>());
     if (version < 1) return failure("version: must be 1 or more");
     if (!root.contains("scene") || !root["scene"].is_string()) return failure("scene: expected a scene name");
     SceneFile file;
     file.sceneName = root["scene"].get<std::string>();
     const SceneInfo* scene = findScene(file.sceneName);
-    if (!scene) return failure("scene: unknown scene '" + file.sceneName + "'; allowed: " + sceneNames());
+    if (!scene) return failure("scene: unknown scene " + quoteShort(file.sceneName) + "; allowed: " + sceneNames());
     file.params = ParameterSet(scene->kind);
     if (root.contains("integrator")) {
         if (!root["integrator"].is_string()) return failure("integrator: expected a name");
         file.integrator = root["integrator"].get<std::string>();
         if (!makeIntegrator(file.integrator))
-            return failure("integrator: unknown '" + file.integrator + "'; allowed: " + integratorNames());
+            return failure("integrator: unknown " + quoteShort(file.integrator) + "; allowed: " + integratorNames());
     }
     if (root.contains("parameters")) {
         const Json& params = root["parameters"];
@@ -181,9 +205,12 @@ SceneFileResult parseSceneJson(const std::string& text) {
             return failure(*error);
         SceneFile::State s;
         if (state.contains("step")) {
-            if (!state["step"].is_number_integer() || state["step"].get<long>() < 0)
-                return failure("state.step: expected a whole number >= 0");
-            s.step = state["step"].get<long>();
+            // 64 bits, and room left to run on: a step count near 2^63 would overflow.
+            const Json& step = state["step"];
+            if (!step.is_number_integer() || (step.is_number_unsigned() ? step.get<std::uint64_t>() > kMaxSavedStep
+                                                                        : step.get<std::int64_t>() < 0))
+                return failure("state.step: expected a whole number in [0, " + std::to_string(kMaxSavedStep) + "]");
+            s.step = static_cast<long>(step.get<std::int64_t>());
         }
         if (state.contains("time")) {
             if (!state["time"].is_number() || !std::isfinite(state["time"].get<double>()) || state["time"].get<double>() < 0)

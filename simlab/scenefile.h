@@ -19,6 +19,7 @@
 // wrong types, out-of-range values and a newer format version are refused with a message that
 // names the key and, for syntax errors, the line.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -60,6 +61,13 @@ SceneFileResult parseSceneFile(const std::string& text);
 // waiting on it or reading it to the end. `what` names the file in messages ("a scene file").
 inline constexpr long long kMaxInputFileBytes = 256LL * 1024 * 1024;
 inline constexpr long long kMaxSceneFileBytes = kMaxInputFileBytes;
+// The reader's other bounds, for any accepted size: nesting depth (the format needs 4), the
+// memory of the parsed tree (estimated while parsing; a body at the 1 GiB limit, ~700,000
+// particles, takes ~280 MiB), and a saved step count (2^53: exact in any JSON reader, and
+// billions of years of steps left before a 64-bit counter overflows).
+inline constexpr int kMaxSceneDepth = 16;
+inline constexpr long long kMaxSceneParseBytes = 768LL * 1024 * 1024;
+inline constexpr std::uint64_t kMaxSavedStep = 1ULL << 53;
 struct InputFile {
     std::string text;
     std::string error;  // set when nothing was read

@@ -15,6 +15,7 @@
 
 namespace simlab {
 
+using simcore::quoteShort;
 using simcore::IntegratorOptions;
 using simcore::Param;
 using simcore::ParameterSet;
@@ -190,7 +191,7 @@ std::vector<StudyItem> shardItems(const std::vector<StudyItem>& items, int shard
 std::optional<std::string> validateStudy(const StudySpec& spec) {
     if (spec.integrators.empty()) return "no integrators given";
     for (const std::string& name : spec.integrators)
-        if (!makeIntegrator(name)) return "unknown integrator '" + name + "'; allowed: " + integratorNames();
+        if (!makeIntegrator(name)) return "unknown integrator " + quoteShort(name) + "; allowed: " + integratorNames();
     if (!(spec.duration > 0.0)) return "the duration must be positive";
     bool needsSteps = false;
     for (const std::string& name : spec.integrators) needsSteps |= !isAdaptiveItem(spec, name);
@@ -208,9 +209,9 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
     if (spec.precisions.empty()) return "no precision given (double, float)";
     for (const std::string& precision : spec.precisions) {
         if (precision != "double" && precision != "float")
-            return "unknown precision '" + precision + "'; allowed: double, float";
+            return "unknown precision " + quoteShort(precision) + "; allowed: double, float";
         if (std::count(spec.precisions.begin(), spec.precisions.end(), precision) > 1)
-            return "precision '" + precision + "' is listed twice";
+            return "precision " + quoteShort(precision) + " is listed twice";
         if (precision != "float") continue;
         if (const std::string refusal = referenceProblemRefusal(spec.params); !refusal.empty()) return refusal;
         for (const std::string& name : spec.integrators)
@@ -226,7 +227,7 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
         return "shard must be K/N with 1 <= K <= N";
     if (spec.reference != "auto" && spec.reference != "exact" && spec.reference != "rk4" && spec.reference != "rk45" &&
         spec.reference != "cvode-bdf")
-        return "unknown reference '" + spec.reference + "'; allowed: auto, exact, rk4, rk45, cvode-bdf";
+        return "unknown reference " + quoteShort(spec.reference) + "; allowed: auto, exact, rk4, rk45, cvode-bdf";
     if (spec.reference == "exact" && !closedFormApplies(spec))
         return "this scene has no closed form (only spring1d without perturbation and without "
                "reaching a wall has one); use --reference rk4, rk45 or cvode-bdf";
@@ -249,6 +250,11 @@ std::vector<double> studyGrid(const StudySpec& spec) {
     return grid;
 }
 
+double studyReferenceStep(const StudySpec& spec) {
+    const bool rk4 = spec.reference == "rk4" || (spec.reference == "auto" && !closedFormApplies(spec));
+    return rk4 ? smallestFixedStep(spec) / 16.0 : 0.0;
+}
+
 StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* cancel) {
     StudyReference ref;
     ref.times = studyGrid(spec);
@@ -266,6 +272,14 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
     IntegratorOptions options = spec.options;
     options.stepDoubling = false;
     options.fixedStep = false;
+    // Cancelled part-way: no positions, nothing to compare with (a trajectory cut short has
+    // fewer samples than the grid, none at all when cancelled before the first).
+    auto cancelledReference = [&] {
+        StudyReference none;
+        none.cancelled = true;
+        none.times = ref.times;
+        return none;
+    };
     // An adaptive reference at a tight tolerance, its error estimated against a run at a
     // looser one: rk45 at 1e-12 (1e-10), or the stiff-capable cvode-bdf at 1e-11 (1e-9; BDF's
     // cost grows gently with the tolerance and is not limited by the stiff modes' stability,
@@ -280,6 +294,7 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
         IntegratorOptions coarse = fineOptions;
         coarse.atol = coarse.rtol = loose;
         Trajectory check = runTrajectory(spec.params, method, smallestFixedStep(spec), coarse, ref.times, cancel);
+        if (fine.cancelled || check.cancelled) return cancelledReference();
         if (fine.failed) throw std::runtime_error("the " + method + " reference failed: " + fine.failure + why);
         ref.description = method + " at atol = rtol = " + formatShort(tight) + " (" + std::to_string(fine.steps) + " steps)" + why;
         ref.positions = fine.positions;
@@ -291,13 +306,15 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
     if (spec.reference == "rk45" || spec.reference == "cvode-bdf") return adaptiveReference(spec.reference, "");
     const double h = smallestFixedStep(spec) / 16.0;
     Trajectory fine = runTrajectory(spec.params, "rk4", h, options, ref.times, cancel);
-    if (fine.failed && spec.reference == "auto" && !fine.cancelled)
+    if (fine.cancelled) return cancelledReference();
+    if (fine.failed && spec.reference == "auto")
         // Stiff: rk4 16x below the smallest studied step is still unstable. The most accurate
         // reference left is the stiff solver at a tight tolerance.
         return adaptiveReference("cvode-bdf", ", because rk4 at dt = " + formatShort(h) + " s failed (" + fine.failure + ")");
     if (fine.failed)
         throw std::runtime_error("the rk4 reference at dt = " + formatShort(h) + " s failed: " + fine.failure);
     Trajectory check = runTrajectory(spec.params, "rk4", 2.0 * h, options, ref.times, cancel);
+    if (check.cancelled) return cancelledReference();
     ref.description = "rk4 at dt = " + formatShort(h) + " s (16x below the smallest studied step)";
     ref.positions = fine.positions;
     // The difference to the run at 2h bounds the error for any convergent method; for a
@@ -315,6 +332,11 @@ StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyR
     if (item.tolerance > 0.0) options.atol = options.rtol = item.tolerance;
     StudyRow row;
     row.item = item;
+    if (reference.cancelled || reference.positions.size() != reference.times.size()) {
+        row.ok = false;  // no reference to measure against (it was cancelled)
+        row.failure = "cancelled";
+        return row;
+    }
     // A run over the budget is stopped there; its time (at least the budget) is kept. The point
     // is not reached when most of its runs are (the median is over the budget): one run slowed
     // by a neighbour on a shared machine does not stop a curve.
@@ -422,6 +444,11 @@ StudyResult runStudy(const StudySpec& spec, const StudyProgressFn& progress, con
     const int total = static_cast<int>(items.size()) + 1;
     if (progress) progress({0, total, "reference"});
     result.reference = computeReference(spec, cancel);
+    if (result.reference.cancelled) {
+        result.cancelled = true;
+        if (progress) progress({total, total, "cancelled"});
+        return result;
+    }
     for (std::size_t i = 0; i < items.size(); ++i) {
         if (cancel && cancel->load()) {
             result.cancelled = true;
@@ -677,7 +704,7 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
     svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
         << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-        << "<text x=\"" << left << "\" y=\"24\" font-size=\"15\">" << title << "</text>\n";
+        << "<text x=\"" << left << "\" y=\"24\" font-size=\"15\">" << xmlEscaped(title) << "</text>\n";
     auto drawable = [](std::pair<double, double> pt) {
         return pt.first > 0.0 && pt.second > 0.0 && std::isfinite(pt.first) && std::isfinite(pt.second);
     };
@@ -711,9 +738,9 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
                 << "\" text-anchor=\"end\">1e" << static_cast<int>(d) << "</text>\n";
         }
         svg << "<text x=\"" << x0 + panelW / 2 << "\" y=\"" << y0 + panelH + 36 << "\" text-anchor=\"middle\">"
-            << panel.xLabel << "</text>\n";
+            << xmlEscaped(panel.xLabel) << "</text>\n";
         svg << "<text transform=\"translate(" << x0 - 48 << "," << y0 + panelH / 2
-            << ") rotate(-90)\" text-anchor=\"middle\">" << panel.yLabel << "</text>\n";
+            << ") rotate(-90)\" text-anchor=\"middle\">" << xmlEscaped(panel.yLabel) << "</text>\n";
         for (const SvgSeries& s : panel.series) {
             std::vector<std::pair<double, double>> pts;
             for (auto pt : s.points)
@@ -748,7 +775,7 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
                 svg << "<circle cx=\"" << px(x) << "\" cy=\"" << py(y) << "\" r=\"3\" fill=\"" << s.colour << "\"/>\n";
                 if (i < s.labels.size() && !s.labels[i].empty())
                     svg << "<text x=\"" << px(x) + 5 << "\" y=\"" << py(y) - 5 << "\" font-size=\"10\" fill=\"" << s.colour
-                        << "\">" << s.labels[i] << "</text>\n";
+                        << "\">" << xmlEscaped(s.labels[i]) << "</text>\n";
             }
             for (auto pt : s.rings)
                 if (drawable(pt))
@@ -762,7 +789,7 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
         svg << "<line x1=\"" << lx << "\" y1=\"" << y << "\" x2=\"" << lx + 20 << "\" y2=\"" << y << "\" stroke=\""
             << legend[i]->colour << "\" stroke-width=\"2\"";
         if (!legend[i]->dash.empty()) svg << " stroke-dasharray=\"" << legend[i]->dash << "\"";
-        svg << "/><text x=\"" << lx + 26 << "\" y=\"" << y + 4 << "\">" << legend[i]->name << "</text>\n";
+        svg << "/><text x=\"" << lx + 26 << "\" y=\"" << y + 4 << "\">" << xmlEscaped(legend[i]->name) << "</text>\n";
     }
     svg << "</svg>\n";
     return svg.str();

@@ -97,6 +97,7 @@ double wallQuantile(std::vector<double> walls, double q);
 void summariseWalls(StudyRow& row);
 
 struct StudyReference {
+    bool cancelled = false;       // stopped before it was complete: nothing else is set
     std::string description;      // e.g. "closed form", "rk4 at dt = 6.25e-05 s"
     double estimatedError = 0.0;  // RMS position error estimate of the reference at T [m]
     std::vector<double> times;    // the output grid (last = T)
@@ -142,6 +143,9 @@ std::vector<StudyItem> shardItems(const std::vector<StudyItem>& items, int shard
 std::optional<std::string> validateStudy(const StudySpec& spec);
 // The output grid: G <= samples points k T / G such that T / G is a multiple of every dt.
 std::vector<double> studyGrid(const StudySpec& spec);
+// The step of the rk4 reference (16x below the smallest studied step, 1e-3 s without fixed
+// steps), or 0 when the reference is not rk4 (closed form, rk45, cvode-bdf).
+double studyReferenceStep(const StudySpec& spec);
 
 StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* cancel = nullptr);
 StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyReference& reference,

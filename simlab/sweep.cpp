@@ -15,6 +15,7 @@
 #include "simcore/scenes.h"
 #include "simcore/simulation.h"
 #include "simlab/output.h"
+#include "simlab/bounds.h"
 
 namespace simlab {
 
@@ -205,8 +206,9 @@ std::optional<std::string> validateSweep(SweepSpec& spec) {
     if (auto error = unknownIntegrator(spec.integrator)) return error;
     if (!std::isfinite(spec.duration) || !(spec.duration > 0.0) || spec.duration > 1e7)
         return "duration = " + numberText(spec.duration) + " is out of range; allowed (0, 1e+07] s";
-    if (!std::isfinite(spec.maxSteps) || spec.maxSteps < 1.0 || spec.maxSteps > 1e12)
-        return "max_steps = " + numberText(spec.maxSteps) + " is out of range; allowed [1, 1e+12]";
+    // At most the front door's bound per run (simlab/request.h).
+    if (!std::isfinite(spec.maxSteps) || spec.maxSteps < 1.0 || spec.maxSteps > kMaxSteps)
+        return "max_steps = " + numberText(spec.maxSteps) + " is out of range; allowed [1, " + numberText(kMaxSteps) + "]";
     std::set<std::string> seen;
     bool shapeSwept = false;
     for (const std::string& key : spec.keys) {

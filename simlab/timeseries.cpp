@@ -73,7 +73,18 @@ public:
         m_rows = row;
     }
 
-    bool commit() {
+    bool commit() { return finish() && commitTarget(); }
+    bool commitTarget() {
+        if (!m_target.commit()) {
+            m_error = m_target.error();
+            return false;
+        }
+        return true;
+    }
+    AtomicFile& target() { return m_target; }
+    bool finish() {
+        if (m_finished) return m_error.empty();
+        m_finished = true;
         if (!m_error.empty()) return false;
         addCharts();
         errno = 0;
@@ -91,7 +102,7 @@ public:
             m_error = "cannot write '" + m_target.path() + "': the temporary workbook could not be read";
             return false;
         }
-        if (!m_target.write(bytes) || !m_target.commit()) {
+        if (!m_target.write(bytes)) {
             m_error = m_target.error();
             return false;
         }
@@ -143,6 +154,7 @@ private:
     lxw_worksheet* m_sheet = nullptr;
     long m_rows = 0;
     std::string m_error;
+    bool m_finished = false;
 };
 
 TimeSeriesWriter::TimeSeriesWriter(simcore::SceneKind kind, std::vector<CsvColumn> columns, TimeSeriesFiles files)
@@ -173,11 +185,23 @@ void TimeSeriesWriter::add(const simcore::Diagnostics& d) {
     }
 }
 
-bool TimeSeriesWriter::commit() {
+bool TimeSeriesWriter::finish() {
     if (!ok()) return false;
     // The workbook first: it is the one that can still refuse (too many rows were found in add()).
-    if (m_xlsx && !m_xlsx->commit()) fail(m_xlsx->error());
-    if (ok() && m_csv && !m_csv->commit()) fail(m_csv->error());
+    if (m_xlsx && !m_xlsx->finish()) fail(m_xlsx->error());
+    return ok();
+}
+
+std::vector<AtomicFile*> TimeSeriesWriter::files() {
+    std::vector<AtomicFile*> out;
+    if (m_xlsx) out.push_back(&m_xlsx->target());
+    if (m_csv) out.push_back(m_csv.get());
+    return out;
+}
+
+bool TimeSeriesWriter::commit() {
+    if (!finish()) return false;
+    if (auto error = commitAll(files())) fail(*error);
     return ok();
 }
 

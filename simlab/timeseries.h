@@ -54,6 +54,10 @@ public:
     // Finishes and renames every file into place. False (with error()) on any failure, and then
     // no file named is replaced by a partial one.
     bool commit();
+    // The two halves of commit, for a command with other outputs (commitAll): finish completes
+    // the workbook into its file (nothing renamed); files() are then the files to commit.
+    bool finish();
+    std::vector<AtomicFile*> files();
 
 private:
     class Xlsx;

@@ -6,6 +6,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QXmlStreamReader>
 
 #include "simcore/scenes.h"
 #include "simlab/output.h"
@@ -978,6 +979,7 @@ private slots:
         dock.setScene(SceneKind::Ring2d);
         const auto rows = runRows(SceneKind::Ring2d, 30);
         dock.appendRows(rows, 0, int(rows.size()));
+        dock.plots().front()->yAxis->setLabel("E & <J>");  // text the SVG must escape
         dock.replotNow();
         const QList<QPair<QString, QByteArray>> formats = {
             {"p.png", QByteArray("\x89PNG")}, {"p.svg", QByteArray("<?xml")}, {"p.pdf", QByteArray("%PDF")}};
@@ -989,7 +991,13 @@ private slots:
             const QByteArray data = f.readAll();
             QVERIFY2(data.startsWith(magic), qPrintable(name));
             QVERIFY(data.size() > 1000);
-            if (name.endsWith("svg")) QVERIFY(data.count("<polyline") == 2 + 2 + 8);  // energy: 8 lines with contact
+            if (name.endsWith("svg")) {  // through Qt SVG: well-formed, every text escaped, the curves drawn
+                QXmlStreamReader xml(data);
+                while (!xml.atEnd()) xml.readNext();
+                QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+                QVERIFY2(data.contains("E &amp; &lt;J&gt;"), data.left(2000).constData());
+                QVERIFY(data.count("<polyline") >= 2 + 2 + 8);  // energy: 8 lines with contact
+            }
         }
     }
 };

@@ -48,7 +48,7 @@ double verdictLimit(const ParameterSet& p, const std::string& integrator) {
 std::map<QString, double> cliPredicted(const QStringList& sets, const QString& integrators) {
     QTemporaryDir dir;
     const QString csv = dir.filePath("st.csv");
-    QStringList args = {"stability", "--integrators", integrators, "--duration", "0.02", "--hmin", "0.001",
+    QStringList args = {"stability", "--integrators", integrators, "--duration", "0.02", "--hmin", "0.0002",
                         "--quiet", "--csv", csv};
     args += sets;
     const CliResult r = runCli(args);

@@ -2112,6 +2112,10 @@ Plots, parameters and exports still work.</source>
         <source>Highest mode of the linearised body: ω = %1 rad/s (damping %2 1/s), %3 free coordinates. A method is stable at DT when no mode grows; measured by bisection over %4 s runs.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Duration must be a positive number of seconds</source>
+        <translation>يجب أن تكون المدة عددًا موجبًا من الثواني</translation>
+    </message>
 </context>
 <context>
     <name>elui::StabilityMapDock</name>

@@ -2114,6 +2114,10 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <source>Highest mode of the linearised body: ω = %1 rad/s (damping %2 1/s), %3 free coordinates. A method is stable at DT when no mode grows; measured by bisection over %4 s runs.</source>
         <translation>Höchste Mode des linearisierten Körpers: ω = %1 rad/s (Dämpfung %2 1/s), %3 freie Koordinaten. Ein Verfahren ist bei DT stabil, wenn keine Mode wächst; gemessen durch Bisektion über Läufe von %4 s.</translation>
     </message>
+    <message>
+        <source>Duration must be a positive number of seconds</source>
+        <translation>Die Dauer muss eine positive Zahl von Sekunden sein</translation>
+    </message>
 </context>
 <context>
     <name>elui::StabilityMapDock</name>

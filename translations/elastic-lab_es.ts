@@ -2114,6 +2114,10 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <source>Highest mode of the linearised body: ω = %1 rad/s (damping %2 1/s), %3 free coordinates. A method is stable at DT when no mode grows; measured by bisection over %4 s runs.</source>
         <translation>Modo más alto del cuerpo linealizado: ω = %1 rad/s (amortiguamiento %2 1/s), %3 coordenadas libres. Un método es estable con DT cuando ningún modo crece; medido por bisección con ejecuciones de %4 s.</translation>
     </message>
+    <message>
+        <source>Duration must be a positive number of seconds</source>
+        <translation>La duración debe ser un número positivo de segundos</translation>
+    </message>
 </context>
 <context>
     <name>elui::StabilityMapDock</name>

@@ -2114,6 +2114,10 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <source>Highest mode of the linearised body: ω = %1 rad/s (damping %2 1/s), %3 free coordinates. A method is stable at DT when no mode grows; measured by bisection over %4 s runs.</source>
         <translation>Mode le plus haut du corps linéarisé : ω = %1 rad/s (amortissement %2 1/s), %3 coordonnées libres. Une méthode est stable à DT quand aucun mode ne croît ; mesuré par dichotomie sur des simulations de %4 s.</translation>
     </message>
+    <message>
+        <source>Duration must be a positive number of seconds</source>
+        <translation>La durée doit être un nombre positif de secondes</translation>
+    </message>
 </context>
 <context>
     <name>elui::StabilityMapDock</name>

@@ -12,6 +12,7 @@
 #include <QPainter>
 #include <QPdfWriter>
 #include <QSaveFile>
+#include <QSvgGenerator>
 
 #include "qcustomplot.h"
 #include "simlab/output.h"
@@ -108,64 +109,6 @@ QByteArray encodedImage(const QImage& image, const char* format) {
     return bytes;
 }
 
-// A plain SVG of the plots (polylines over a simple frame): no QtSvg needed.
-QByteArray plotsSvg(const std::vector<QCustomPlot*>& plots, const std::vector<PlotSpec>& specs, int width,
-                    int heightEach) {
-    QString svg;
-    const int height = heightEach * int(plots.size());
-    svg += QStringLiteral("<?xml version='1.0' encoding='UTF-8'?>\n<svg xmlns='http://www.w3.org/2000/svg' "
-                          "width='%1' height='%2' font-family='sans-serif' font-size='12'>\n")
-               .arg(width)
-               .arg(height);
-    svg += QStringLiteral("<rect width='100%' height='100%' fill='white'/>\n");
-    for (std::size_t p = 0; p < plots.size(); ++p) {
-        QCustomPlot* plot = plots[p];
-        const double top = double(p) * heightEach, left = 70, right = width - 20, bottom = top + heightEach - 40;
-        const double plotTop = top + 30;
-        const QCPRange xr = plot->xAxis->range(), yr = plot->yAxis->range();
-        auto sx = [&](double x) { return left + (x - xr.lower) / (xr.upper - xr.lower) * (right - left); };
-        auto sy = [&](double y) { return bottom - (y - yr.lower) / (yr.upper - yr.lower) * (bottom - plotTop); };
-        svg += QStringLiteral("<text x='%1' y='%2' font-weight='bold'>%3</text>\n")
-                   .arg(left).arg(top + 18).arg(specs[p].title.toHtmlEscaped());
-        svg += QStringLiteral("<rect x='%1' y='%2' width='%3' height='%4' fill='none' stroke='black'/>\n")
-                   .arg(left).arg(plotTop).arg(right - left).arg(bottom - plotTop);
-        for (int i = 0; i <= 4; ++i) {
-            const double yv = yr.lower + (yr.upper - yr.lower) * i / 4.0;
-            const double xv = xr.lower + (xr.upper - xr.lower) * i / 4.0;
-            svg += QStringLiteral("<text x='%1' y='%2' text-anchor='end'>%3</text>\n")
-                       .arg(left - 4).arg(sy(yv) + 4).arg(QString::number(yv, 'g', 4));
-            svg += QStringLiteral("<text x='%1' y='%2' text-anchor='middle'>%3</text>\n")
-                       .arg(sx(xv)).arg(bottom + 16).arg(QString::number(xv, 'g', 4));
-        }
-        svg += QStringLiteral("<text x='%1' y='%2' text-anchor='middle'>t [s]</text>\n")
-                   .arg((left + right) / 2).arg(bottom + 32);
-        svg += QStringLiteral("<text x='14' y='%1' transform='rotate(-90 14 %1)' text-anchor='middle'>%2</text>\n")
-                   .arg((plotTop + bottom) / 2).arg(specs[p].yLabel.toHtmlEscaped());
-        svg += QStringLiteral("<clipPath id='c%1'><rect x='%2' y='%3' width='%4' height='%5'/></clipPath>\n")
-                   .arg(p).arg(left).arg(plotTop).arg(right - left).arg(bottom - plotTop);
-        // The series themselves (not the faint abandoned future after them).
-        const int series = std::min(plot->graphCount(), int(specs[p].series.size()));
-        for (int g = 0; g < series; ++g) {
-            QCPGraph* graph = plot->graph(g);
-            QString points;
-            // At most ~2000 points per series: enough for any printed width.
-            auto data = graph->data();
-            auto begin = data->findBegin(xr.lower), end = data->findEnd(xr.upper);
-            const int n = int(end - begin);
-            const int stride = std::max(1, n / 2000);
-            for (auto it = begin; it < end; it += stride)
-                if (std::isfinite(it->value)) points += QStringLiteral("%1,%2 ").arg(sx(it->key), 0, 'f', 1).arg(sy(it->value), 0, 'f', 1);
-            svg += QStringLiteral("<polyline clip-path='url(#c%1)' fill='none' stroke='%2' stroke-width='%3' points='%4'/>\n")
-                       .arg(p).arg(graph->pen().color().name()).arg(graph->pen().widthF()).arg(points);
-            svg += QStringLiteral("<text x='%1' y='%2' fill='%3'>%4</text>\n")
-                       .arg(left + 8 + 80 * g).arg(plotTop + 16).arg(graph->pen().color().name())
-                       .arg(graph->name().toHtmlEscaped());
-        }
-    }
-    svg += QStringLiteral("</svg>\n");
-    return svg.toUtf8();
-}
-
 }  // namespace
 
 QString writeCsv(const QString& path, simcore::SceneKind kind, const std::vector<simcore::Diagnostics>& rows,
@@ -212,16 +155,11 @@ QString writePlots(const QString& path, const std::vector<QCustomPlot*>& plots, 
     if (plots.empty()) return QObject::tr("No plot to export");
     const QString suffix = QFileInfo(path).suffix().toLower();
     QByteArray bytes;
-    if (suffix == QLatin1String("svg")) {
-        bytes = plotsSvg(plots, specs, width, heightEach);
-    } else if (suffix == QLatin1String("pdf")) {
-        QBuffer buffer(&bytes);
-        buffer.open(QIODevice::WriteOnly);
-        QPdfWriter writer(&buffer);
-        writer.setPageSize(QPageSize(QSizeF(width, heightEach * double(plots.size())), QPageSize::Point));
-        writer.setPageMargins(QMarginsF(0, 0, 0, 0));
-        writer.setResolution(72);
-        QCPPainter painter(&writer);
+    // SVG and PDF: the plots as drawn on screen, through Qt's own vector painters (Qt SVG's
+    // generator escapes every text it writes; the hand-written SVG it replaces broke on a
+    // title or legend with "&" or "<").
+    auto paint = [&](QPaintDevice* device) {
+        QCPPainter painter(device);
         for (std::size_t i = 0; i < plots.size(); ++i) {
             painter.save();
             painter.translate(0, double(i) * heightEach);
@@ -229,6 +167,27 @@ QString writePlots(const QString& path, const std::vector<QCustomPlot*>& plots, 
             painter.restore();
         }
         painter.end();
+    };
+    if (suffix == QLatin1String("svg")) {
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        QSvgGenerator generator;
+        generator.setOutputDevice(&buffer);
+        generator.setSize(QSize(width, heightEach * int(plots.size())));
+        generator.setViewBox(QRect(0, 0, width, heightEach * int(plots.size())));
+        QStringList titles;
+        for (const PlotSpec& spec : specs) titles << spec.title;
+        generator.setTitle(titles.join(QStringLiteral(", ")));
+        generator.setDescription(QStringLiteral("Elastic Lab plots"));
+        paint(&generator);
+    } else if (suffix == QLatin1String("pdf")) {
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        QPdfWriter writer(&buffer);
+        writer.setPageSize(QPageSize(QSizeF(width, heightEach * double(plots.size())), QPageSize::Point));
+        writer.setPageMargins(QMarginsF(0, 0, 0, 0));
+        writer.setResolution(72);
+        paint(&writer);
     } else {
         QImage image(width, heightEach * int(plots.size()), QImage::Format_ARGB32);
         image.fill(Qt::white);

@@ -27,6 +27,7 @@
 #include "simcore/scenes.h"
 #include "simlab/output.h"
 #include "simlab/refinement.h"
+#include "simlab/request.h"
 #include "ui/export.h"
 #include "ui/language.h"
 #include "ui/mailbox.h"
@@ -326,7 +327,11 @@ simlab::StudySpec WorkPrecisionDialog::spec() const {
 }
 
 QString WorkPrecisionDialog::validate() const {
-    if (auto problem = simlab::validateStudy(spec())) return QString::fromStdString(*problem);
+    try {
+        simlab::checkStudy(spec());  // the front door: the CLI's and Python's checks and bounds
+    } catch (const simlab::RequestError& e) {
+        return QString::fromStdString(e.what());
+    }
     return {};
 }
 
@@ -497,7 +502,11 @@ simlab::ConservationSpec ConservationDialog::spec() const {
 }
 
 QString ConservationDialog::validate() const {
-    if (auto problem = simlab::validateConservation(spec())) return QString::fromStdString(*problem);
+    try {
+        simlab::checkConservation(spec());  // the front door, as the CLI's and Python's
+    } catch (const simlab::RequestError& e) {
+        return QString::fromStdString(e.what());
+    }
     return {};
 }
 
@@ -634,7 +643,11 @@ QString RefinementDialog::validate() const {
         t.toInt(&ok);
         if (!ok) return tr("Levels are whole numbers separated by spaces, got '%1'").arg(t);
     }
-    if (auto problem = simlab::validateRefinement(spec())) return QString::fromStdString(*problem);
+    try {
+        simlab::checkRefinement(spec());
+    } catch (const simlab::RequestError& e) {
+        return QString::fromStdString(e.what());
+    }
     return {};
 }
 
@@ -737,12 +750,25 @@ StabilityDialog::StabilityDialog(const simcore::ParameterSet& params, QWidget* p
 
 void StabilityDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
 
-void StabilityDialog::prepare() {
-    m_spec = simlab::StabilitySpec{};
-    m_spec.params = m_params;
-    for (const QString& name : chosenIntegrators()) m_spec.integrators.push_back(name.toStdString());
-    m_spec.duration = m_duration->text().toDouble() > 0 ? m_duration->text().toDouble() : 2.0;
+simlab::StabilitySpec StabilityDialog::spec() const {
+    simlab::StabilitySpec s;
+    s.params = m_params;
+    for (const QString& name : chosenIntegrators()) s.integrators.push_back(name.toStdString());
+    s.duration = simcore::parseNumber(m_duration->text().trimmed().toStdString()).value_or(0.0);
+    return s;
 }
+
+QString StabilityDialog::validate() const {
+    if (!(spec().duration > 0.0)) return tr("Duration must be a positive number of seconds");
+    try {
+        simlab::checkStability(spec());
+    } catch (const simlab::RequestError& e) {
+        return QString::fromStdString(e.what());
+    }
+    return {};
+}
+
+void StabilityDialog::prepare() { m_spec = spec(); }
 
 void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));

@@ -200,12 +200,14 @@ public:
     void setDuration(double seconds);
 
 protected:
+    QString validate() const override;
     void prepare() override;
     void compute(const std::atomic<bool>* cancel) override;
     void present() override;
     QString csv() const override;
 
 private:
+    simlab::StabilitySpec spec() const;
     QLineEdit* m_duration = nullptr;
     simlab::StabilitySpec m_spec;
     simlab::LinearModes m_modes;

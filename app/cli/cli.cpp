@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -64,45 +66,10 @@ void addSceneOptions(CLI::App& app, SceneArgs& args, bool withDt, bool withInteg
     if (withDt)
         app.add_option("--dt", args.dt, "time step [s] (same as --set dt=H; default: the scene's)")->type_name("H");
     if (withIntegrator)
-        app.add_option("--integrator", args.integrator, "integration method (default: the scene file's, else rk4)")
-            ->type_name("NAME")
-            ->check(CLI::Validator(
-                [](std::string& name) { return simcore::unknownIntegrator(name).value_or(std::string()); },
-                "{" + simcore::integratorNames() + "}"));
-}
-
-std::string sceneFileOf(const SceneArgs& args) {
-    return !simcore::findScene(args.scene) && args.scene.size() > 5 && args.scene.ends_with(".json") ? args.scene
-                                                                                                      : std::string();
-}
-
-SceneSetup sceneSetup(const SceneArgs& args) {
-    SceneSetup setup;
-    setup.sceneName = args.scene;
-    const simcore::SceneInfo* scene = simcore::findScene(setup.sceneName);
-    std::string fileIntegrator;
-    if (!sceneFileOf(args).empty()) {
-        // A scene file wherever a scene name is taken; --set, --dt, --integrator override it.
-        simlab::SceneFileResult read = simlab::readSceneFile(setup.sceneName);
-        if (!read.file) throw UsageError(read.error);
-        setup.sceneName = read.file->sceneName;
-        scene = simcore::findScene(setup.sceneName);
-        setup.params = read.file->params;
-        fileIntegrator = read.file->integrator;
-        setup.state = read.file->state;
-    } else if (!scene) {
-        throw UsageError(simcore::unknownSceneMessage(setup.sceneName) + ", or a scene file (.json)");
-    } else {
-        setup.params = simcore::ParameterSet(scene->kind);
-    }
-    for (const std::string& assignment : args.set)
-        if (auto error = setup.params.assign(assignment)) throw UsageError("--set " + *error);
-    if (args.dt)
-        if (auto error = setup.params.setFromText("dt", *args.dt)) throw UsageError("--" + *error);
-    setup.integrator = args.integrator.value_or(fileIntegrator.empty() ? "rk4" : fileIntegrator);
-    if (auto error = simcore::unknownIntegrator(setup.integrator)) throw UsageError(*error);
-    if (auto error = simcore::validateShape(setup.params, setup.integrator)) throw UsageError(*error);
-    return setup;
+        // Checked by the front door (simlab::resolveScene), in the words every door uses.
+        app.add_option("--integrator", args.integrator, "integration method (default: the scene file's, else rk4): " +
+                                                            simcore::integratorNames())
+            ->type_name("NAME");
 }
 
 void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& o) {
@@ -162,10 +129,67 @@ CLI::Option* addCsvOption(CLI::App& app, std::string& path, const std::string& h
             ""));
 }
 
-// --- Files -------------------------------------------------------------------------------------
+// --- Long commands: signals and progress ------------------------------------------------------
 
-void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs) {
-    if (auto clash = simlab::fileClash(inputsThenOutputs)) throw UsageError(*clash);
+namespace {
+volatile std::sig_atomic_t g_stopSignal = 0;
+extern "C" void onStopSignal(int signal) { g_stopSignal = signal; }
+struct sigaction g_previous[2];
+constexpr int kStopSignals[2] = {SIGINT, SIGTERM};
+}  // namespace
+
+StopSignals::StopSignals() {
+    g_stopSignal = 0;
+    for (int i = 0; i < 2; ++i) {
+        struct sigaction action {};
+        action.sa_handler = onStopSignal;
+        sigemptyset(&action.sa_mask);
+        ::sigaction(kStopSignals[i], nullptr, &g_previous[i]);
+        if (g_previous[i].sa_handler == SIG_IGN) continue;  // started ignoring it: keep ignoring
+        ::sigaction(kStopSignals[i], &action, nullptr);
+    }
+}
+
+StopSignals::~StopSignals() {
+    for (int i = 0; i < 2; ++i) ::sigaction(kStopSignals[i], &g_previous[i], nullptr);
+}
+
+int StopSignals::caught() const { return g_stopSignal; }
+
+const char* StopSignals::name(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"; }
+
+namespace {
+double wallNow() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
+}  // namespace
+
+ProgressLine::ProgressLine(bool quiet) : m_enabled(!quiet && ::isatty(2) == 1), m_start(wallNow()) {}
+
+ProgressLine::~ProgressLine() { clear(); }
+
+void ProgressLine::update(double done, double total, const char* unit, long steps) {
+    if (!m_enabled || (m_calls++ & 63u) != 0) return;
+    const double now = wallNow();
+    if (m_last >= 0.0 && now - m_last < 0.25) return;
+    m_last = now;
+    const double elapsed = now - m_start;
+    const double fraction = total > 0.0 ? std::clamp(done / total, 0.0, 1.0) : 0.0;
+    char line[160];
+    int n = std::snprintf(line, sizeof line, "%.4g / %.4g %s (%.0f %%), step %ld, %.0f s", done, total, unit,
+                          100.0 * fraction, steps, elapsed);
+    if (fraction > 0.01 && elapsed > 1.0)
+        n += std::snprintf(line + n, sizeof line - static_cast<std::size_t>(n), ", about %.0f s left",
+                           elapsed * (1.0 - fraction) / fraction);
+    const std::size_t width = static_cast<std::size_t>(std::max(n, 0));
+    std::fprintf(stderr, "\r%s%*s", line, static_cast<int>(m_width > width ? m_width - width : 0), "");
+    std::fflush(stderr);
+    m_width = std::max(m_width, width);
+}
+
+void ProgressLine::clear() {
+    if (!m_enabled || m_width == 0) return;
+    std::fprintf(stderr, "\r%*s\r", static_cast<int>(m_width), "");
+    std::fflush(stderr);
+    m_width = 0;
 }
 
 // --- Lists -------------------------------------------------------------------------------------
@@ -239,7 +263,27 @@ std::string parseErrorText(const CLI::ParseError& e, const CLI::App& app, const 
     if (dynamic_cast<const CLI::ExtrasError*>(&e))
         text += chosen.empty() ? "; allowed: --help, --version, or a command: " + commandNames(app)
                                : "; " + chosen.front()->get_name() + " takes " + optionNames(*chosen.front());
-    return text;
+    // CLI11 echoes the values it refuses raw: every argument it quoted is quoted and cut by the
+    // one helper (a 100 kB value with escape sequences stays one short, inert line).
+    std::vector<std::string> longest = args;
+    std::sort(longest.begin(), longest.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    for (const std::string& arg : longest) {
+        const std::string value = arg.substr(arg.find('=') == std::string::npos || !arg.starts_with("--") ? 0 : arg.find('=') + 1);
+        const bool plain = value.size() <= 40 && std::all_of(value.begin(), value.end(), [](char c) {
+                               return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+                           });
+        if (plain || value.empty()) continue;
+        for (std::size_t at = 0; (at = text.find(value, at)) != std::string::npos;) {
+            const std::string q = simcore::quoteShort(value);
+            text.replace(at, value.size(), q);
+            at += q.size();
+        }
+    }
+    // Whatever is left (a value CLI11 altered) still never reaches the terminal raw or whole.
+    const bool inert = text.size() <= 1000 && std::all_of(text.begin(), text.end(), [](char c) {
+                           return static_cast<unsigned char>(c) >= 0x20 && c != 0x7f;
+                       });
+    return inert ? text : simcore::quoteShort(text, 1000);
 }
 
 bool stdoutWritten() {
@@ -282,13 +326,32 @@ int runCommandLine(const std::vector<std::string>& argsIn, Mode mode) {
     for (const Command& command : commands) {
         if (!command.app->parsed()) continue;
         try {
-            command.check();
+            // A file option given with an empty name ('' from an unset shell variable) is a
+            // mistake, never "no file": refused before anything else.
+            for (const CLI::Option* option : command.app->get_options())
+                if (option->count() > 0 && option->get_type_name().find("FILE") != std::string::npos)
+                    for (const std::string& value : option->results())
+                        simlab::checkOutputNamed(option->get_lnames().front(), value);
+            try {
+                command.check();
+            } catch (const std::bad_alloc&) {  // a request too large to even check
+                std::fprintf(stderr, "error: out of memory while checking the request; ask for less (a smaller body, "
+                                     "fewer samples, a smaller file)\n");
+                return kExitBadInput;
+            }
             if (mode == Mode::CheckOnly) return kExitOk;
             if (g_csvStdout >= 0) {  // --csv -: the report to standard error
                 std::fflush(stdout);
                 ::dup2(2, 1);
             }
-            const int status = command.run();
+            int status = kExitFailed;
+            try {
+                status = command.run();
+            } catch (const std::bad_alloc&) {  // the work ran out of memory: a failed run, exit 3
+                std::fprintf(stderr, "error: out of memory during the run (the machine or its limits gave less than "
+                                     "the request needs; docs/reliability.md)\n");
+                return kExitFailed;
+            }
             return stdoutWritten() ? status : kExitBadInput;
         } catch (const UsageError& e) {
             std::fprintf(stderr, "error: %s\n", e.what());

@@ -18,6 +18,7 @@
 
 #include "simcore/integrators.h"
 #include "simcore/params.h"
+#include "simlab/request.h"
 #include "simlab/scenefile.h"
 
 namespace cli {
@@ -25,14 +26,12 @@ namespace cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitBadInput = 2;
 inline constexpr int kExitFailed = 3;
-// The most steps one fixed-step run may take (1e9: about 3 days for the default ring on this
-// machine): more is a mistake in --dt or --duration, refused before it runs.
-inline constexpr double kMaxSteps = 1e9;
+// The most steps one fixed-step run may take: the front door's bound (simlab/request.h).
+inline constexpr double kMaxSteps = simlab::kMaxSteps;
 
-// Bad input: reported on one line, exit status 2.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+// Bad input: reported on one line, exit status 2. The front door's refusal (simlab/request.h),
+// so that a check made there and one made here read and exit alike.
+using UsageError = simlab::RequestError;
 
 // One command of the tool. `check` is the validation layer: it decides, before anything is
 // written or run, that the work is well formed and finite (throws UsageError); `run` does it.
@@ -55,24 +54,15 @@ std::unique_ptr<CLI::App> makeApp(std::vector<Command>& commands);
 
 // --- Option groups shared by several commands --------------------------------------------------
 
-// --scene S|FILE.json, --set key=value..., and optionally --dt H and --integrator NAME.
-struct SceneArgs {
-    std::string scene = "ring2d";
-    std::vector<std::string> set;
-    std::optional<std::string> dt;          // validated by the parameter table
-    std::optional<std::string> integrator;  // default: the scene file's, else rk4
-};
+// --scene S|FILE.json, --set key=value..., and optionally --dt H and --integrator NAME: the
+// front door's scene request, resolved and checked by simlab::resolveScene.
+using SceneArgs = simlab::SceneRequest;
 void addSceneOptions(CLI::App& app, SceneArgs& args, bool withDt = true, bool withIntegrator = true);
 
-struct SceneSetup {
-    simcore::ParameterSet params;
-    std::string sceneName;
-    std::string integrator = "rk4";
-    std::optional<simlab::SceneFile::State> state;  // from a scene file that saved one
-};
-SceneSetup sceneSetup(const SceneArgs& args);
+using SceneSetup = simlab::SceneSetup;
+inline SceneSetup sceneSetup(const SceneArgs& args) { return simlab::resolveScene(args); }
 // The scene file named by --scene, or empty when it names a built-in scene.
-std::string sceneFileOf(const SceneArgs& args);
+inline std::string sceneFileOf(const SceneArgs& args) { return simlab::sceneFileOf(args.scene); }
 
 // Integrator tunables: --atol, --rtol, --newton, --fixed-step, --error-estimate.
 void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& options);
@@ -95,13 +85,46 @@ CLI::Validator wholeIn(long min, long max);
 // The pre-run warning: dt above the explicit stability estimate (empty when none applies).
 std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator);
 
-// Outputs never overwrite an input or each other (issue 18): the files named, as (option, path)
-// pairs with inputs first and empty paths skipped, are compared by identity, not by spelling
-// (device and inode of an existing file, or of the folder a new one goes in and its name, so
-// links, "./" and ".." count). A clash is a UsageError naming both options, before anything is
-// written.
-using NamedPath = std::pair<std::string, std::string>;
-void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs);
+// Outputs never overwrite an input or each other, never a FIFO (simlab::checkFiles): a clash
+// is a UsageError naming both options, before anything is written.
+using NamedPath = simlab::NamedPath;
+inline void checkFiles(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs) {
+    simlab::checkFiles(inputs, outputs);
+}
+
+// Ctrl+C (SIGINT) and SIGTERM (a Slurm time limit, a container stop) during a long command:
+// while one of these lives, the signal only sets a flag the command polls between whole steps;
+// the command then writes its outputs so far and exits 128 + the signal (130, 143). A signal
+// the tool was started ignoring (a background job's SIGINT) stays ignored. The previous
+// handlers come back at destruction.
+class StopSignals {
+public:
+    StopSignals();
+    ~StopSignals();
+    StopSignals(const StopSignals&) = delete;
+    StopSignals& operator=(const StopSignals&) = delete;
+    // The signal caught, or 0.
+    int caught() const;
+    static const char* name(int signal);
+};
+
+// A progress line on standard error, rewritten in place ("\r"), only on a terminal and unless
+// quiet; cleared at the end. update() is cheap: it looks at the clock every 64 calls and writes
+// at most 4 times a second.
+class ProgressLine {
+public:
+    explicit ProgressLine(bool quiet);
+    ~ProgressLine();
+    bool enabled() const { return m_enabled; }
+    void update(double done, double total, const char* unit, long steps);
+    void clear();
+
+private:
+    bool m_enabled = false;
+    unsigned m_calls = 0;
+    double m_start = 0.0, m_last = -1.0;
+    std::size_t m_width = 0;
+};
 
 // Comma-separated lists: both refuse an empty list, an empty item and an item listed twice.
 std::vector<double> numberList(const std::string& option, const std::string& text);

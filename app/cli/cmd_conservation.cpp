@@ -24,7 +24,7 @@ struct ConservationArgs {
 };
 
 void check(ConservationArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"curves", args.curves}, {"plot", args.plot}});
+    checkFiles({{"scene", sceneFileOf(args.scene)}}, {{"csv", args.csv}, {"curves", args.curves}, {"plot", args.plot}});
     args.setup = sceneSetup(args.scene);
     simlab::ConservationSpec& spec = args.spec;
     spec.params = args.setup.params;
@@ -33,7 +33,7 @@ void check(ConservationArgs& args) {
     spec.dt = spec.params.get(simcore::Param::Dt);
     spec.samples = args.samples;
     spec.precision = args.precision;
-    if (auto error = simlab::validateConservation(spec)) throw UsageError(*error);
+    simlab::checkConservation(spec);
 }
 
 bool writeOutput(const std::string& path, const std::string& text) {

@@ -18,11 +18,10 @@ struct RestitutionArgs {
 };
 
 void checkRestitution(RestitutionArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}});
+    checkFiles({{"scene", sceneFileOf(args.scene)}}, {{"csv", args.csv}});
     args.setup = sceneSetup(args.scene);
     args.speedList = numberList("speeds", args.speeds);
-    for (double speed : args.speedList)
-        if (!(speed > 0.0 && speed <= 1e4)) throw UsageError("--speeds: every speed must be in (0, 10000] m/s, got " + simlab::formatDouble(speed));
+    simlab::checkRestitution(args.setup.params, args.speedList);
 }
 
 int runRestitution(const RestitutionArgs& args) {

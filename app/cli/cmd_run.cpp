@@ -134,8 +134,8 @@ struct RunArgs {
 };
 
 void checkRun(RunArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"xlsx", args.xlsx},
-                        {"state", args.state}, {"save-scene", args.saveScene}});
+    checkFiles({{"scene", sceneFileOf(args.scene)}},
+               {{"csv", args.csv}, {"xlsx", args.xlsx}, {"state", args.state}, {"save-scene", args.saveScene}});
     const auto dialect = simlab::csvDialectNamed(args.dialectName);
     if (!dialect) throw UsageError("--csv-dialect: " + simlab::unknownCsvDialectMessage(args.dialectName));
     args.dialect = *dialect;
@@ -143,19 +143,14 @@ void checkRun(RunArgs& args) {
     if (args.precision == "float" && !simcore::floatPathSupports(args.setup.integrator))
         throw UsageError("--precision float is built for the explicit integrators " + simcore::floatPathIntegrators() +
                          ", not " + args.setup.integrator);
-    // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
-    // refused at once instead of running for ever.
+    simlab::RunRequest request;  // the front door: steps, duration
+    request.duration = args.duration;
+    request.maxSteps = args.maxSteps;
+    request.options = args.integrator;
+    simlab::checkRun(args.setup, request);
     if (!simcore::makeIntegrator(args.setup.integrator)->adaptive() || args.integrator.fixedStep) {
         const double dt = args.setup.params.get(simcore::Param::Dt);
         const double steps = std::ceil(args.duration / dt - 1e-9);
-        if (steps > args.maxSteps) {
-            char text[300];
-            std::snprintf(text, sizeof text,
-                          "--duration %g s at dt %g s would take %.3g steps; at most %.0f per run (use a larger --dt, "
-                          "a shorter --duration, or an adaptive integrator; --max-steps raises the limit)",
-                          args.duration, dt, steps, args.maxSteps);
-            throw UsageError(text);
-        }
         // A workbook's sheet has room for 1048575 rows of data: the start, every N-th step and
         // the last must fit, or the run is refused before it starts (an adaptive run that
         // outgrows the sheet is told at the end, its CSV still written).
@@ -206,12 +201,16 @@ int run(const RunArgs& args) {
     const bool recording = !args.csv.empty() || !args.xlsx.empty();
     if (recording) series.add(diagnostics());
     const auto start = std::chrono::steady_clock::now();
-    const double tEnd = time() + duration;  // a resumed run continues from its saved time
+    const double tStart = time();
+    const double tEnd = tStart + duration;  // a resumed run continues from its saved time
     // An adaptive method chooses its own steps: the same bound holds while it runs (a
     // tolerance it cannot meet ends the run, exit 3, instead of creeping on for ever).
     const long firstStep = stepCount();
     bool tooManySteps = false;
+    const StopSignals signals;  // Ctrl+C, SIGTERM: stop after a whole step, write the run so far
+    ProgressLine progress(args.quiet || args.json);
     while (time() < tEnd - 1e-9 * sim.dt()) {
+        if (signals.caught()) break;
         if (!(single ? single->step() : sim.step(tEnd))) break;
         const bool last = time() >= tEnd - 1e-9 * sim.dt();
         if (recording && (stepCount() % every == 0 || last)) series.add(diagnostics());
@@ -219,7 +218,10 @@ int run(const RunArgs& args) {
             tooManySteps = true;
             break;
         }
+        progress.update(time() - tStart, duration, "s", stepCount() - firstStep);
     }
+    progress.clear();
+    const int stoppedBy = signals.caught();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (single) {
         // The state table and the scene file from the float state, in double (a saved scene
@@ -232,23 +234,34 @@ int run(const RunArgs& args) {
     if (state) state->write(simlab::inDialect(simlab::stateTable(sim), args.dialect, true));
     if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
 
-    if (!series.commit()) {
-        std::fprintf(stderr, "error: %s\n", series.error().c_str());
+    // All or none: every output (CSV, workbook, state, scene) complete before the first
+    // replaces its file.
+    std::optional<std::string> error;
+    if (!series.finish()) error = series.error();
+    if (!error) {
+        std::vector<simlab::AtomicFile*> outputs = series.files();
+        outputs.push_back(state.get());
+        outputs.push_back(sceneOut.get());
+        error = simlab::commitAll(outputs);
+    }
+    if (error) {
+        std::fprintf(stderr, "error: %s\n", error->c_str());
         return kExitBadInput;
     }
-    for (auto* file : {state.get(), sceneOut.get()})
-        if (file && !file->commit()) {
-            std::fprintf(stderr, "error: %s\n", file->error().c_str());
-            return kExitBadInput;
-        }
     const RunView view = single ? viewOf(*single) : viewOf(sim);
+    if (stoppedBy) {
+        if (args.json) printSummaryJson(view, setup, wall, "stopped");
+        std::fprintf(stderr, "run stopped by %s at step %ld, t = %g s; the files hold the run so far\n",
+                     StopSignals::name(stoppedBy), stepCount(), time());
+        return 128 + stoppedBy;
+    }
     if (args.json)
         printSummaryJson(view, setup, wall, failed() ? "failed" : tooManySteps ? "stopped" : "ok");
     else if (!args.quiet)
         printSummary(view, setup, wall);
     // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a
     // duration that is not a multiple of dt ends past it; it is said, never silent.
-    if (!failed() && time() > tEnd + 1e-9 * sim.dt())
+    if (!args.quiet && !failed() && time() > tEnd + 1e-9 * sim.dt())
         std::fprintf(stderr,
                      "note: --duration %g s is not a multiple of dt %g s: the run took whole steps and ended at "
                      "t = %g s, %g s past the end asked for\n",
@@ -302,7 +315,7 @@ Command addRunCommand(CLI::App& app) {
                     "midpoint, rk4, symplectic-euler, verlet; no contact: the run stops where a particle reaches a wall)")
         ->check(CLI::IsMember({"double", "float"}))
         ->capture_default_str();
-    sub->add_flag("--quiet", args->quiet, "no summary on standard output");
+    sub->add_flag("--quiet", args->quiet, "no summary on standard output, no progress line and no notes on standard error");
     addJsonFlag(*sub, args->json);
     addIntegratorOptions(*sub, args->integrator);
     return {sub, [args] { checkRun(*args); }, [args] { return run(*args); }};

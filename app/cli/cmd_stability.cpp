@@ -31,25 +31,17 @@ struct StabilityArgs {
 };
 
 void checkStability(StabilityArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}});
+    checkFiles({{"scene", sceneFileOf(args.scene)}}, {{"csv", args.csv}});
     args.setup = sceneSetup(args.scene);
     simlab::StabilitySpec& spec = args.spec;
     spec.params = args.setup.params;
     spec.integrators = nameList("integrators", args.integrators);
-    for (const auto& name : spec.integrators)
-        if (auto error = simcore::unknownIntegrator(name)) throw UsageError(*error);
     spec.duration = args.duration;
     spec.perturb = args.perturb;
     spec.hMin = args.hMin;
     spec.hMax = args.hMax;
-    if (spec.hMax < spec.hMin)
-        throw UsageError("--hmax " + simlab::formatDouble(spec.hMax) + " is below --hmin " + simlab::formatDouble(spec.hMin));
     std::tie(spec.shardIndex, spec.shardCount) = parseShard(args.shard);
-    // Bounded work: a trial at the smallest step takes duration / hmin steps.
-    if (spec.duration / spec.hMin > kMaxSteps)
-        throw UsageError("--duration " + simlab::formatDouble(spec.duration) + " s at --hmin " + simlab::formatDouble(spec.hMin) +
-                         " s would take " + simlab::formatDouble(spec.duration / spec.hMin) + " steps per trial; at most " +
-                         simlab::formatDouble(kMaxSteps) + " (raise --hmin or shorten --duration)");
+    simlab::checkStability(spec);
 }
 
 int runStability(const StabilityArgs& args) {

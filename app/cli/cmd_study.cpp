@@ -105,7 +105,7 @@ void checkRefinement(StudyArgs& args) {
     spec.interval = args.interval;
     spec.temporalRuns = args.temporalRuns;
     spec.options.fixedStep = args.fixedStep;
-    if (auto error = simlab::validateRefinement(spec)) throw UsageError(*error);
+    simlab::checkRefinement(spec);
 }
 
 int runRefinement(const StudyArgs& args) {
@@ -201,11 +201,8 @@ int runFromCsv(const StudyArgs& args) {
 }
 
 void checkStudy(StudyArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)},
-                        {"from-csv", args.fromCsv},
-                        {"csv", args.csv},
-                        {"plot", args.plot},
-                        {"timings", args.timings}});
+    checkFiles({{"scene", sceneFileOf(args.scene)}, {"from-csv", args.fromCsv}},
+               {{"csv", args.csv}, {"plot", args.plot}, {"timings", args.timings}});
     if (args.refine) return checkRefinement(args);
     if (!args.fromCsv.empty()) return;
     args.setup = sceneSetup(args.scene);
@@ -223,21 +220,7 @@ void checkStudy(StudyArgs& args) {
     spec.reference = args.reference.value_or("auto");
     spec.options.fixedStep = args.fixedStep;
     std::tie(spec.shardIndex, spec.shardCount) = parseShard(args.shard.value_or(""));
-    if (auto error = simlab::validateStudy(spec)) throw UsageError(*error);
-    // Bounded work: the smallest step, and the RK4 reference 16x below it, take at most
-    // kMaxSteps steps each (--dts 1e-300 is refused, not run for ever or counted as 0 steps).
-    if (!spec.dts.empty()) {
-        const double smallest = *std::min_element(spec.dts.begin(), spec.dts.end());
-        const double steps = spec.duration / smallest * 16.0;
-        if (steps > kMaxSteps) {
-            char text[300];
-            std::snprintf(text, sizeof text,
-                          "--dts %g over --duration %g s: its reference (16x smaller steps) would take %.3g steps; "
-                          "at most %.0f (use larger steps or a shorter --duration)",
-                          smallest, spec.duration, steps, kMaxSteps);
-            throw UsageError(text);
-        }
-    }
+    simlab::checkStudy(spec);
 }
 
 int runStudy(const StudyArgs& args) {

@@ -92,7 +92,7 @@ void addGridAxis(simlab::SweepSpec& spec, const std::string& text) {
 void checkSweep(SweepArgs& args) {
     if (args.csv.empty()) throw UsageError("--csv is required: the file the rows go to, or - for standard output");
     if (args.resume && args.csv == "-") throw UsageError("--resume needs a file for --csv (the journal lives beside it)");
-    if (args.csv != "-") checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}});
+    if (args.csv != "-") checkFiles({{"scene", sceneFileOf(args.scene)}}, {{"csv", args.csv}});
     const SceneSetup setup = sceneSetup(args.scene);
     simlab::SweepSpec& spec = args.spec;
     spec.sceneName = setup.sceneName;
@@ -104,7 +104,7 @@ void checkSweep(SweepArgs& args) {
     spec.maxSteps = args.maxSteps;
     for (const std::string& g : args.grid) addGridAxis(spec, g);
     if (args.metrics) spec.metrics = nameList("metrics", *args.metrics);
-    if (auto error = simlab::validateSweep(spec)) throw UsageError(*error);
+    simlab::checkSweep(spec);
     if (args.shard) args.shardOf = parseShard(*args.shard);
 }
 
@@ -272,7 +272,7 @@ Command addSweepCommand(CLI::App& app) {
         ->type_name("LIST");
     sub->add_option("--max-steps", args->maxSteps, "a point needing more steps is 'over budget' (not run, or stopped)")
         ->type_name("N")
-        ->check(finiteIn(1.0, 1e12, false))
+        ->check(finiteIn(1.0, simlab::kMaxSteps, false))
         ->default_str("1e8");
     sub->add_option("--shard", args->shard, "run only block K of N of the grid (an array job); the shards' rows "
                                             "concatenate into the whole sweep's")

@@ -1,6 +1,7 @@
 // elastic-lab-cli: the headless tool. Scripts depend on its options, columns and exit codes;
 // the commands and their options are in cli.h and the cmd_*.cpp files.
 #include <cstdio>
+#include <new>
 #include <exception>
 #include <string>
 #include <vector>
@@ -10,6 +11,9 @@
 int main(int argc, char** argv) {
     try {
         return cli::runCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const std::bad_alloc&) {  // the exit contract: never 1
+        std::fprintf(stderr, "error: out of memory\n");
+        return 3;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "internal error: %s\n", e.what());
         return 1;

@@ -38,6 +38,7 @@
 #include "simcore/scaling.h"
 #include "simcore/scenes.h"
 #include "simlab/output.h"
+#include "simlab/request.h"
 #include "simlab/scenefile.h"
 #include "ui/export.h"
 #include "ui/gl_format.h"
@@ -239,33 +240,28 @@ int main(int argc, char** argv) {
                             .arg(quoted(parser.value(lessonOpt)), elui::lessonIds().join(QStringLiteral(", "))));
         preset = &lesson->preset;
     }
-    // --scene takes a scene name or a scene file (.json), as the CLI does; --set, --integrator
-    // and --compare override what the file holds.
+    // The scene through the front door (simlab::resolveScene), as the CLI takes it: a name or a
+    // scene file (--scene or the one positional argument a file manager hands over: an existing
+    // file by any name), --set (each key once), --integrator; a preset's values when no scene is given.
     const QString sceneArg = positional.isEmpty() ? parser.value(sceneOpt) : positional.front();
-    const simcore::SceneInfo* scene = simcore::findScene(sceneArg.toStdString());
-    std::optional<simlab::SceneFile> file;
-    // A file manager may hand over a scene file by any name: an existing file is read as one.
-    if (!scene && (sceneArg.endsWith(QLatin1String(".json")) || QFileInfo(sceneArg).isFile())) {
-        simlab::SceneFileResult read = simlab::readSceneFile(sceneArg.toStdString());
-        if (!read.file) return fail(QString::fromStdString(read.error));
-        file = std::move(read.file);
-        scene = &simcore::sceneInfo(file->params.kind());
+    simlab::SceneRequest request;
+    request.scene = sceneArg.toStdString();
+    if (preset && !sceneGiven) {
+        request.base = preset->parameters();
+        request.scene = simcore::sceneInfo(request.base->kind()).name;
     }
-    if (!scene)
-        return fail(QString::fromStdString(simcore::unknownSceneMessage(sceneArg.toStdString())) +
-                    QStringLiteral(", or a scene file (.json)"));
-    simcore::ParameterSet params = file                                 ? file->params
-                                   : preset && !sceneGiven ? preset->parameters()
-                                                                       : simcore::ParameterSet(scene->kind);
-    for (const QString& assignment : parser.values(setOpt))
-        if (auto error = params.assign(assignment.toStdString())) return fail(QStringLiteral("--set ") + QString::fromStdString(*error));
-    if (auto error = simcore::validateShape(params)) return fail(QString::fromStdString(*error));
-    if (file && file->state && simcore::buildBody(params).topology.particleCount() != file->state->positions.cols())
-        return fail(QStringLiteral("--set changes the shape of the body in %1, so its saved state no longer fits")
-                        .arg(quoted(sceneArg, 200)));
-    QStringList integrators{parser.value(integratorOpt)};
-    if (preset && !parser.isSet(integratorOpt)) integrators = preset->integrators;
-    if (file && !parser.isSet(integratorOpt)) integrators = {QString::fromStdString(file->integrator)};
+    for (const QString& assignment : parser.values(setOpt)) request.set.push_back(assignment.toStdString());
+    if (parser.isSet(integratorOpt)) request.integrator = parser.value(integratorOpt).toStdString();
+    simlab::SceneSetup setup;
+    try {
+        setup = simlab::resolveScene(request);
+    } catch (const simlab::RequestError& e) {
+        return fail(QString::fromStdString(e.what()));
+    }
+    const std::optional<simlab::SceneFile>& file = setup.file;
+    const simcore::ParameterSet& params = setup.params;
+    QStringList integrators{QString::fromStdString(setup.integrator)};
+    if (preset && !parser.isSet(integratorOpt) && !file) integrators = preset->integrators;
     if (parser.isSet(compareOpt)) {
         // The CLI's list rules: no empty item, none twice.
         const simcore::NameList list = simcore::parseNameList("compare", parser.value(compareOpt).toStdString());
@@ -273,12 +269,12 @@ int main(int argc, char** argv) {
         integrators.clear();
         for (const std::string& name : list.items) integrators << QString::fromStdString(name);
     }
-    if (integrators.size() > 3)
-        return fail(QStringLiteral("--compare takes one to three integrators, got %1").arg(integrators.size()));
-    for (const QString& name : integrators) {
-        if (auto error = simcore::unknownIntegrator(name.toStdString())) return fail(QString::fromStdString(*error));
-        // Each lane's memory with its integrator (the CVODE methods hold more).
-        if (auto error = simcore::validateShape(params, name.toStdString())) return fail(QString::fromStdString(*error));
+    std::vector<std::string> lanes;
+    for (const QString& name : integrators) lanes.push_back(name.toStdString());
+    try {
+        simlab::checkLanes(params, lanes);
+    } catch (const simlab::RequestError& e) {
+        return fail(QString::fromStdString(e.what()));
     }
     // --docks: the CLI's list rules, and only docks this build has (refused like any unknown name).
     QStringList docks;
@@ -332,9 +328,12 @@ int main(int argc, char** argv) {
         // The screenshot is an output like the CLI's: never the scene file it was given, in a
         // format this build writes, and a place that can be written, all known before it runs.
         const QString shotPath = parser.value(shotOpt);
-        if (auto clash = simlab::fileClash({{"scene", file ? sceneArg.toStdString() : std::string()},
-                                             {"screenshot", shotPath.toStdString()}}))
-            return fail(QString::fromStdString(*clash));
+        try {
+            simlab::checkOutputNamed("screenshot", shotPath.toStdString());
+            simlab::checkFiles({{"scene", setup.sceneFile}}, {{"screenshot", shotPath.toStdString()}});
+        } catch (const simlab::RequestError& e) {
+            return fail(QString::fromStdString(e.what()));
+        }
         const QByteArray suffix = QFileInfo(shotPath).suffix().toLower().toLatin1();
         if (!suffix.isEmpty() && !QImageWriter::supportedImageFormats().contains(suffix))
             return fail(QStringLiteral("--screenshot %1: this build cannot write .%2 images; use .png")

@@ -17,6 +17,7 @@ See docs/python.md and docs/sweeps.md.
 
 from __future__ import annotations
 
+import functools
 import os
 from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 
@@ -32,6 +33,28 @@ __all__ = [
 ]
 
 PathLike = Union[str, "os.PathLike[str]"]
+
+
+def _inert(text: str, limit: int = 1000) -> str:
+    """A message as inert text: control characters as \\xNN, at most `limit` characters."""
+    out = "".join(c if c.isprintable() or c == "\n" else f"\\x{ord(c):02x}" for c in text)
+    return out if len(out) <= limit else out[:limit] + f"... ({len(text)} characters)"
+
+
+def _door(function):
+    """pybind11's TypeError for arguments of the wrong type echoes every argument whole and raw
+    (a 5,000-character name, an escape sequence that retitles the terminal): that message is
+    escaped and cut like every other message of the front door (issue 31)."""
+    @functools.wraps(function)
+    def checked(*args, **kwargs):
+        try:
+            return function(*args, **kwargs)
+        except TypeError as e:
+            text = str(e)
+            if _inert(text) == text:
+                raise
+            raise TypeError(_inert(text)) from None
+    return checked
 
 # The integrator options, as keywords of Simulation, set_integrator and sweep: name -> meaning.
 # None (the default) leaves the method's own default.
@@ -99,6 +122,7 @@ class Simulation(_core.Simulation):
 
     __slots__ = ()
 
+    @_door
     def __init__(self, scene: PathLike = "ring2d", *, integrator: Optional[str] = None,
                  rtol: Optional[float] = None, atol: Optional[float] = None, min_step: Optional[float] = None,
                  max_step: Optional[float] = None, fixed_step: Optional[bool] = None,
@@ -116,6 +140,7 @@ class Simulation(_core.Simulation):
 
     # --- running ---
 
+    @_door
     def run(self, duration: float, *, every: Optional[float] = None, t_eval: Optional[Sequence[float]] = None,
             every_steps: Optional[int] = None,
             progress: Union[None, bool, Callable[[float], Any]] = None,
@@ -170,8 +195,7 @@ class Simulation(_core.Simulation):
             if every is not None:
                 if isinstance(every, bool) or not np.isfinite(every) or not 0 < every <= 1e7:
                     raise ValueError(f"every = {every!r} is out of range; allowed (0, 1e+07] s")
-                count = int(np.floor(float(duration) / every + 1e-9)) if np.isfinite(duration) and duration > 0 else 0
-                times = [start + k * every for k in range(count + 1)]
+                times = None  # built by the core after the front door has bounded the rows
             elif t_eval is not None:
                 times = [float(t) for t in np.asarray(t_eval, dtype=float).ravel()]
                 end = start + float(duration)
@@ -186,7 +210,7 @@ class Simulation(_core.Simulation):
         callback = _progress_callback(progress, start, float(duration) if np.isfinite(duration) else 0.0)
         try:
             table = super().run(duration, every=every_steps, times=times, progress=callback, csv=csv, xlsx=xlsx,
-                                csv_dialect=csv_dialect)
+                                csv_dialect=csv_dialect, every_seconds=every)
         except SimulationFailed as e:
             if getattr(e, "rows", None) is not None:
                 e.rows = self._named(e.rows)
@@ -206,6 +230,7 @@ class Simulation(_core.Simulation):
             out["error_estimate"][out["error_estimate"] < 0] = np.nan  # none: NaN, not -1
         return out
 
+    @_door
     def step(self, n: int = 1) -> None:
         """Takes `n` steps (SimulationFailed when one fails)."""
         super().step(n)
@@ -214,6 +239,7 @@ class Simulation(_core.Simulation):
         """Back to the start state, same parameters and integrator."""
         super().reset()
 
+    @_door
     def set_integrator(self, name: str, *, rtol: Optional[float] = None, atol: Optional[float] = None,
                        min_step: Optional[float] = None, max_step: Optional[float] = None,
                        fixed_step: Optional[bool] = None, error_estimate: Optional[bool] = None,
@@ -231,6 +257,7 @@ class Simulation(_core.Simulation):
         """spring1d: the closed-form (positions [m], velocities [m/s]) at the current time, N x 3."""
         return super().exact()
 
+    @_door
     def save_scene(self, path: PathLike) -> None:
         """Writes the scene, its parameters, integrator and exact state as a scene file (atomically)."""
         super().save_scene(path)
@@ -283,6 +310,7 @@ def _progress_callback(progress, start: float, duration: float):
     return Bar()
 
 
+@_door
 def study(scene: PathLike, *, integrators: Sequence[str] = ("euler", "midpoint", "rk4"),
           dts: Optional[Sequence[float]] = None, tolerances: Optional[Sequence[float]] = None,
           duration: float = 2.0, repeat: int = 1, reference: str = "auto", samples: int = 20,
@@ -303,6 +331,7 @@ def study(scene: PathLike, *, integrators: Sequence[str] = ("euler", "midpoint",
                        timings=timings, plot=plot, title=title, **parameters)
 
 
+@_door
 def refinement(scene: PathLike, *, levels: Sequence[int], key: Optional[str] = None, integrator: str = "rk4",
                tolerance: Optional[float] = None, duration: float = 1.0, interval: float = 0.01,
                temporal_runs: int = 4, fixed_step: bool = False, csv: Optional[PathLike] = None,
@@ -315,6 +344,7 @@ def refinement(scene: PathLike, *, levels: Sequence[int], key: Optional[str] = N
                             fixed_step=fixed_step, csv=csv, plot=plot, title=title, **parameters)
 
 
+@_door
 def conservation(scene: PathLike, *, integrators: Sequence[str] = ("verlet", "yoshida4", "rk4"),
                  periods: float = 1000.0, dt: Optional[float] = None, samples: int = 120,
                  precision: str = "double", csv: Optional[PathLike] = None, plot: Optional[PathLike] = None,
@@ -327,6 +357,7 @@ def conservation(scene: PathLike, *, integrators: Sequence[str] = ("verlet", "yo
                               precision=precision, csv=csv, plot=plot, title=title)
 
 
+@_door
 def stability(scene: PathLike, *, integrators: Sequence[str] = ("euler", "midpoint", "rk4", "symplectic-euler",
                                                                "verlet", "rk45", "implicit-euler"),
               duration: float = 2.0, perturb: float = 0.01, hmin: float = 1e-5, hmax: float = 1.0,
