@@ -82,17 +82,21 @@ void ReferenceRun::work(simcore::SimulationSnapshot start, std::shared_ptr<Share
         return shared->cancel;
     };
     flush();
+    // Whether time t is reached, with advanceTo's own round-off guard: a time it counts as
+    // reached must not be asked for again (it would return at once, for ever).
+    auto reached = [&](double t) { return sim.time() >= t - 1e-9 * std::min(sim.dt(), sim.nextStep()); };
     for (;;) {
         double target;
         {
             std::unique_lock<std::mutex> lock(shared->mutex);
-            shared->wake.wait(lock, [&] { return shared->cancel || shared->target > sim.time(); });
+            shared->wake.wait(lock, [&] { return shared->cancel || !reached(shared->target); });
             if (shared->cancel) return;
             target = shared->target;
         }
-        while (sim.time() < target) {
+        while (!reached(target)) {
             const double grid = t0 + double(gridIndex) * kSampleInterval;
-            const double next = std::min(target, grid);
+            const double next = reached(grid) ? target : std::min(target, grid);
+            const double before = sim.time();
             if (!sim.advanceTo(next)) {
                 flush();
                 m_mailbox->post([this, serial, failure = *sim.failure()] {
@@ -102,8 +106,9 @@ void ReferenceRun::work(simcore::SimulationSnapshot start, std::shared_ptr<Share
                 });
                 return;
             }
+            if (sim.time() == before) break;  // nothing left to step: reached within round-off
             batch.push_back(sim.diagnostics());
-            while (t0 + double(gridIndex) * kSampleInterval <= sim.time()) ++gridIndex;
+            while (reached(t0 + double(gridIndex) * kSampleInterval)) ++gridIndex;
             if (batch.size() >= 64) {
                 flush();
                 if (cancelled()) return;
