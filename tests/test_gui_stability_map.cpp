@@ -190,6 +190,12 @@ private slots:
     // the filled one. The stiff-springs lesson (implicit Euler beside rk4 at ks = 1e6, DT 0.01)
     // must show rk4, the view that turns red, not implicit Euler.
     void sideBySideMapsEveryView() {
+#if defined(__SANITIZE_THREAD__)
+        // A shown main window (as mainWindowOpensTheDockAndFeedsIt): Qt Gui converts its backing
+        // image on Qt's own pool threads, which ThreadSanitizer cannot see synchronised. Runs in
+        // Release and under ASan.
+        QSKIP("Qt's threaded image conversion is invisible to ThreadSanitizer");
+#endif
         const Lesson* lesson = findLesson("stiff-springs");
         QVERIFY(lesson);
         const ParameterSet p = lesson->preset.parameters();
