@@ -109,6 +109,18 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
     setValues(simcore::ParameterSet(kind));
 }
 
+// The ↺ at the end of a row: the key back to the scene's default.
+QToolButton* ParameterForm::addDefaultButton(QHBoxLayout* row, const QString& key, const QString& tip) {
+    auto* back = new QToolButton(row->parentWidget());
+    back->setObjectName(QStringLiteral("default_") + key);
+    back->setText(QStringLiteral("↺"));
+    back->setToolTip(tip);
+    connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
+    row->addWidget(back);
+    m_defaults[key] = back;
+    return back;
+}
+
 // A choice: its names, in the table's order (index = the parameter's value), and ↺.
 void ParameterForm::addChoiceRow(const simcore::ParamSpec& param, QFormLayout* form) {
     const simcore::ParamSpec* spec = &param;
@@ -128,13 +140,8 @@ void ParameterForm::addChoiceRow(const simcore::ParamSpec& param, QFormLayout* f
     auto* ch = new QHBoxLayout(choiceRow);
     ch->setContentsMargins(0, 0, 0, 0);
     ch->addWidget(box, 1);
-    auto* back = new QToolButton(choiceRow);
-    back->setObjectName(QStringLiteral("default_") + key);
-    back->setText(QStringLiteral("↺"));
-    back->setToolTip(tr("Back to the default: %1").arg(QString::fromStdString(spec->choiceName(spec->defaultFor(kind)))));
-    connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
-    ch->addWidget(back);
-    m_defaults[key] = back;
+    addDefaultButton(ch, key,
+                     tr("Back to the default: %1").arg(QString::fromStdString(spec->choiceName(spec->defaultFor(kind)))));
     form->addRow(label, choiceRow);
     m_choices[key] = box;
     connect(box, &QComboBox::activated, this, [this, key, id = spec->id](int index) {
@@ -177,14 +184,8 @@ void ParameterForm::addFieldRow(const simcore::ParamSpec& param, QFormLayout* fo
     auto* unitLabel = new QLabel(unit, row);
     unitLabel->setMinimumWidth(44);
     h->addWidget(unitLabel);
-    auto* back = new QToolButton(row);
-    back->setObjectName(QStringLiteral("default_") + key);
-    back->setText(QStringLiteral("↺"));
-    back->setToolTip(tr("Back to the default: %1 %2").arg(formatValue(spec->defaultFor(kind)), unit));
-    back->setEnabled(spec->id != simcore::Param::Dt);
-    connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
-    h->addWidget(back);
-    m_defaults[key] = back;
+    addDefaultButton(h, key, tr("Back to the default: %1 %2").arg(formatValue(spec->defaultFor(kind)), unit))
+        ->setEnabled(spec->id != simcore::Param::Dt);
     auto* label = new QLabel(fieldLabel(*spec), this);
     label->setObjectName(QStringLiteral("label_") + key);
     if (label->text() != key) tip += QStringLiteral("<br>") + tr("key: %1").arg(key);

@@ -17,6 +17,7 @@
 
 class QComboBox;
 class QFormLayout;
+class QHBoxLayout;
 class QLineEdit;
 class QPushButton;
 class QSlider;
@@ -56,6 +57,7 @@ signals:
     void rejected(const QString& key, const QString& message);
 
 private:
+    QToolButton* addDefaultButton(QHBoxLayout* row, const QString& key, const QString& tip);
     void addChoiceRow(const simcore::ParamSpec& spec, QFormLayout* form);
     void addFieldRow(const simcore::ParamSpec& spec, QFormLayout* form);
     void addSliderRow(const simcore::ParamSpec& spec, double lo, double hi, bool log, QFormLayout* form);
