@@ -1,5 +1,7 @@
 #include "cli.h"
 
+#include "world.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -86,6 +88,9 @@ SceneSetup sceneSetup(const SceneArgs& args) {
         setup.params = read.file->params;
         fileIntegrator = read.file->integrator;
         setup.state = read.file->state;
+    } else if (!scene && simcore::worldScene(setup.sceneName)) {
+        throw UsageError(setup.sceneName + " is a scene of several bodies: `run` and `params` take it; this command "
+                                           "studies one body (" + simcore::sceneNames() + ")");
     } else if (!scene) {
         throw UsageError(simcore::unknownSceneMessage(setup.sceneName) + ", or a scene file (.json)");
     } else {

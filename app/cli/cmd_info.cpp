@@ -7,6 +7,7 @@
 #include "integrators.h"
 #include "scaling.h"
 #include "scenes.h"
+#include "world.h"
 
 namespace cli {
 
@@ -14,6 +15,8 @@ Command addScenesCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("scenes", "list the built-in scenes");
     return {sub, [] {}, [] {
                 for (const simcore::SceneInfo& s : simcore::sceneTable())
+                    std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
+                for (const simcore::WorldSceneInfo& s : simcore::worldSceneTable())
                     std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
                 return kExitOk;
             }};
@@ -36,7 +39,33 @@ struct ParamsArgs {
     std::vector<std::string> set;
     std::optional<simcore::SceneKind> kind;
     std::optional<simcore::ParameterSet> params;  // the scene's, after --set
+    std::optional<simcore::WorldSpec> world;      // a scene of several bodies, after --set
 };
+
+// A scene of several bodies: the world's shared values, then what each body uses.
+int listWorldParams(const simcore::WorldSpec& spec) {
+    const simcore::ParameterSet& lead = spec.bodies.front().params;
+    std::printf("%s: %zu bodies; world parameters (shared by every body; --set key=value):\n", spec.name.c_str(),
+                spec.bodies.size());
+    for (const simcore::ParamSpec* s : simcore::parametersFor(lead.kind()))
+        if (simcore::isWorldParameter(s->id))
+            std::printf("  %-17s %-12g %-7s %s\n", std::string(s->key).c_str(), lead.get(s->id),
+                        s->unit.empty() ? "-" : std::string(s->unit).c_str(), std::string(s->meaning).c_str());
+    for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+        const simcore::WorldBodySpec& b = spec.bodies[k];
+        std::printf("\nbody%zu: %s (--set body%zu.key=value)\n", k + 1,
+                    std::string(simcore::sceneInfo(b.params.kind()).name).c_str(), k + 1);
+        std::printf("  %-17s (%g, %g, %g) m\n  %-17s (%g, %g, %g) m/s\n", "position_x/y/z", b.position.x(),
+                    b.position.y(), b.position.z(), "velocity_x/y/z", b.velocity.x(), b.velocity.y(), b.velocity.z());
+        for (const simcore::ParamSpec* s : simcore::parametersFor(b.params.kind()))
+            if (!simcore::isWorldParameter(s->id))
+                std::printf("  %-17s %-12g %-7s %s\n", std::string(s->key).c_str(), b.params.get(s->id),
+                            s->unit.empty() ? "-" : std::string(s->unit).c_str(), std::string(s->meaning).c_str());
+        std::printf("  this body uses:\n%s\n",
+                    simcore::bodyValuesText(b.params, simcore::bodyValues(b.params)).c_str());
+    }
+    return kExitOk;
+}
 
 int listParams(const ParamsArgs& args) {
     std::vector<const simcore::ParamSpec*> specs;
@@ -91,6 +120,13 @@ Command addParamsCommand(CLI::App& app) {
     return {sub,
             [args] {
                 if (!args->scene) return;
+                if (auto world = simcore::worldScene(*args->scene)) {
+                    for (const std::string& assignment : args->set)
+                        if (auto error = simcore::assignWorld(*world, assignment)) throw UsageError("--set " + *error);
+                    if (auto error = simcore::validateWorld(*world)) throw UsageError(*error);
+                    args->world = std::move(world);
+                    return;
+                }
                 const simcore::SceneInfo* info = simcore::findScene(*args->scene);
                 if (!info)
                     throw UsageError(simcore::unknownSceneMessage(*args->scene));
@@ -101,7 +137,7 @@ Command addParamsCommand(CLI::App& app) {
                 if (auto error = simcore::validateShape(params)) throw UsageError(*error);
                 args->params = std::move(params);
             },
-            [args] { return listParams(*args); }};
+            [args] { return args->world ? listWorldParams(*args->world) : listParams(*args); }};
 }
 
 }  // namespace cli

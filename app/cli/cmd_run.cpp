@@ -1,5 +1,8 @@
 // `run`: one headless simulation, with a CSV time series and the final state.
+#include <array>
 #include <chrono>
+#include <optional>
+#include <stdexcept>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -7,6 +10,7 @@
 #include "cli.h"
 #include "output.h"
 #include "simulation.h"
+#include "world.h"
 
 namespace cli {
 
@@ -57,39 +61,164 @@ struct RunArgs {
     bool quiet = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
+    // A scene of several bodies (collide2d, collide3d, stack3d), after check().
+    std::optional<simcore::WorldSpec> world;
 };
+
+// The run's fixed-step bound: a fixed-step run takes duration / dt steps, refused at once when
+// that is more than --max-steps (a typo such as --dt 1e-300 would otherwise run for ever).
+void checkStepBound(const RunArgs& args, std::string_view integrator, double dt) {
+    if (simcore::makeIntegrator(integrator)->adaptive() && !args.integrator.fixedStep) return;
+    const double steps = std::ceil(args.duration / dt - 1e-9);
+    if (steps > args.maxSteps) {
+        char text[300];
+        std::snprintf(text, sizeof text,
+                      "--duration %g s at dt %g s would take %.3g steps; at most %.0f per run (use a larger --dt, "
+                      "a shorter --duration, or an adaptive integrator; --max-steps raises the limit)",
+                      args.duration, dt, steps, args.maxSteps);
+        throw UsageError(text);
+    }
+}
+
+// A scene of several bodies: its description with every --set applied (bodyN.key=value for
+// one body, key=value for all), checked as a whole (simcore::validateWorld).
+void checkWorld(RunArgs& args, simcore::WorldSpec spec) {
+    for (const std::string& assignment : args.scene.set)
+        if (auto error = simcore::assignWorld(spec, assignment)) throw UsageError("--set " + *error);
+    if (args.scene.dt)
+        if (auto error = simcore::assignWorld(spec, "dt=" + *args.scene.dt)) throw UsageError("--" + *error);
+    args.setup.sceneName = spec.name;
+    args.setup.integrator = args.scene.integrator.value_or("rk4");
+    if (auto error = simcore::unknownIntegrator(args.setup.integrator)) throw UsageError(*error);
+    if (auto error = simcore::validateWorld(spec)) throw UsageError(*error);
+    if (!args.saveScene.empty())
+        throw UsageError("--save-scene: scene files of several bodies are not written yet; --csv and --state are");
+    checkStepBound(args, args.setup.integrator, simcore::resolve(spec.bodies.front().params).time.dt);
+    args.world = std::move(spec);
+}
 
 void checkRun(RunArgs& args) {
     checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}, {"state", args.state},
                         {"save-scene", args.saveScene}});
-    args.setup = sceneSetup(args.scene);
-    // A fixed-step run takes duration / dt steps: bounded, so that a typo (--dt 1e-300) is
-    // refused at once instead of running for ever.
-    if (!simcore::makeIntegrator(args.setup.integrator)->adaptive() || args.integrator.fixedStep) {
-        const double dt = args.setup.params.get(simcore::Param::Dt);
-        const double steps = std::ceil(args.duration / dt - 1e-9);
-        if (steps > args.maxSteps) {
-            char text[300];
-            std::snprintf(text, sizeof text,
-                          "--duration %g s at dt %g s would take %.3g steps; at most %.0f per run (use a larger --dt, "
-                          "a shorter --duration, or an adaptive integrator; --max-steps raises the limit)",
-                          args.duration, dt, steps, args.maxSteps);
-            throw UsageError(text);
-        }
+    if (auto world = simcore::worldScene(args.scene.scene)) {
+        checkWorld(args, std::move(*world));
+        return;
     }
+    args.setup = sceneSetup(args.scene);
+    checkStepBound(args, args.setup.integrator, args.setup.params.get(simcore::Param::Dt));
+}
+
+// Steps until the end of the run, handing each step's state to `row` every --every steps and
+// at the last; returns whether the run stopped at --max-steps.
+template <class Sim, class Row>
+bool stepThrough(Sim& sim, const RunArgs& args, double tEnd, Row&& row) {
+    // An adaptive method chooses its own steps: the same bound holds while it runs (a
+    // tolerance it cannot meet ends the run, exit 3, instead of creeping on for ever).
+    const long firstStep = sim.stepCount();
+    while (sim.time() < tEnd - 1e-9 * sim.dt()) {
+        if (!sim.step(tEnd)) break;
+        const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
+        if (sim.stepCount() % args.every == 0 || last) row();
+        if (static_cast<double>(sim.stepCount() - firstStep) >= args.maxSteps && !last) return true;
+    }
+    return false;
+}
+
+// Opens every output before running: an unwritable path is bad input, found at once.
+using Outputs = std::array<std::unique_ptr<simcore::AtomicFile>, 3>;  // csv, state, scene
+Outputs openOutputs(const RunArgs& args) {
+    Outputs files;
+    const std::array<const std::string*, 3> paths = {&args.csv, &args.state, &args.saveScene};
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+        if (paths[k]->empty()) continue;
+        files[k] = std::make_unique<simcore::AtomicFile>(*paths[k]);
+        if (!files[k]->ok()) throw UsageError(files[k]->error());
+    }
+    return files;
+}
+
+// Commits the outputs; false (reported) when one cannot be written.
+bool commitOutputs(const Outputs& files) {
+    for (const auto& file : files)
+        if (file && !file->commit()) {
+            std::fprintf(stderr, "error: %s\n", file->error().c_str());
+            return false;
+        }
+    return true;
+}
+
+void printWorldSummary(const simcore::World& world, double wallSeconds) {
+    const simcore::WorldDiagnostics& d = world.diagnostics();
+    std::printf("scene        %s (%d bodies, %d particles)\n", world.spec().name.c_str(), world.bodyCount(),
+                world.particleCount());
+    std::printf("integrator   %s, dt %g s, %ld steps, t = %g s\n", std::string(world.integrator().name()).c_str(),
+                world.dt(), d.step, d.time);
+    std::printf("energy       kinetic %.6g J, spring %.6g J, gravity %.6g J, gas %.6g J, contact %.6g J (between "
+                "bodies %.6g J), total %.6g J\n",
+                d.kinetic, d.springTotal(), d.gravity, d.gas, d.contact, d.contactPairs, d.total());
+    std::printf("removed      damping %.6g J, contact %.6g J; balance drift %.3g J\n", d.removedDamping,
+                d.removedContact, d.energyDrift());
+    for (int k = 0; k < world.bodyCount(); ++k) {
+        const simcore::BodyDiagnostics& b = d.bodies[static_cast<std::size_t>(k)];
+        std::printf("body %-7d mass %.6g kg, centre (%.6g, %.6g, %.6g) m, velocity (%.6g, %.6g, %.6g) m/s, volume "
+                    "inner %.6g, outer %.6g\n",
+                    k + 1, b.mass, b.com.x(), b.com.y(), b.com.z(), b.velocity.x(), b.velocity.y(), b.velocity.z(),
+                    b.volume[0], b.volume[1]);
+    }
+    std::printf("momentum     (%.9g, %.9g, %.9g) kg m/s; min gap %.6g m\n", d.momentum.x(), d.momentum.y(),
+                d.momentum.z(), d.minGap);
+    std::printf("cost         %llu force evaluations, %.3f s wall, %.0f steps/s\n",
+                static_cast<unsigned long long>(d.forceEvaluations), wallSeconds,
+                wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0);
+}
+
+int runWorld(const RunArgs& args) {
+    const Outputs files = openOutputs(args);
+    std::optional<simcore::World> built;
+    try {
+        built.emplace(*args.world, args.setup.integrator);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    simcore::World& world = *built;
+    world.setIntegratorOptions(args.integrator);
+    const auto columns = simcore::worldColumns(world);
+    auto& csv = files[0];
+    if (csv) {
+        csv->write(simcore::csvHeader(columns));
+        csv->write(simcore::csvRow(columns, world.diagnostics()));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const double tEnd = args.duration;
+    const bool tooManySteps = stepThrough(world, args, tEnd, [&] {
+        if (csv) csv->write(simcore::csvRow(columns, world.diagnostics()));
+    });
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (files[1]) files[1]->write(simcore::stateTable(world));
+    if (!commitOutputs(files)) return kExitBadInput;
+    if (!args.quiet) printWorldSummary(world, wall);
+    if (tooManySteps) {
+        std::fprintf(stderr, "run stopped at step %ld, t = %g s: %.0f steps taken, the most one run may take "
+                             "(--max-steps); the files hold the run so far\n",
+                     world.stepCount(), world.time(), args.maxSteps);
+        return kExitFailed;
+    }
+    if (world.failed()) {
+        std::fprintf(stderr, "simulation failed at step %ld, t = %g s: %s\n", world.failedStep(), world.failedTime(),
+                     world.failure()->c_str());
+        return kExitFailed;
+    }
+    return kExitOk;
 }
 
 int run(const RunArgs& args) {
+    if (args.world) return runWorld(args);
     const SceneSetup& setup = args.setup;
     const double duration = args.duration;
-    const long every = args.every;
-    // Open every output before running: an unwritable path is bad input, found at once.
-    std::unique_ptr<simcore::AtomicFile> csv, state, sceneOut;
-    for (auto [path, file] : {std::pair{&args.csv, &csv}, {&args.state, &state}, {&args.saveScene, &sceneOut}}) {
-        if (path->empty()) continue;
-        *file = std::make_unique<simcore::AtomicFile>(*path);
-        if (!(*file)->ok()) throw UsageError((*file)->error());
-    }
+    const Outputs files = openOutputs(args);
+    auto& csv = files[0];
+    auto& state = files[1];
+    auto& sceneOut = files[2];
 
     simcore::Simulation sim(setup.params, setup.integrator);
     sim.setIntegratorOptions(args.integrator);
@@ -105,29 +234,13 @@ int run(const RunArgs& args) {
     }
     const auto start = std::chrono::steady_clock::now();
     const double tEnd = sim.time() + duration;  // a resumed run continues from its saved time
-    // An adaptive method chooses its own steps: the same bound holds while it runs (a
-    // tolerance it cannot meet ends the run, exit 3, instead of creeping on for ever).
-    const long firstStep = sim.stepCount();
-    bool tooManySteps = false;
-    while (sim.time() < tEnd - 1e-9 * sim.dt()) {
-        if (!sim.step(tEnd)) break;
-        const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
-        if (csv && (sim.stepCount() % every == 0 || last))
-            csv->write(simcore::csvRow(columns, sim.diagnostics()));
-        if (static_cast<double>(sim.stepCount() - firstStep) >= args.maxSteps && !last) {
-            tooManySteps = true;
-            break;
-        }
-    }
+    const bool tooManySteps = stepThrough(sim, args, tEnd, [&] {
+        if (csv) csv->write(simcore::csvRow(columns, sim.diagnostics()));
+    });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (state) state->write(simcore::stateTable(sim));
     if (sceneOut) sceneOut->write(simcore::sceneFileText(sim, setup.sceneName, true));
-
-    for (auto* file : {csv.get(), state.get(), sceneOut.get()})
-        if (file && !file->commit()) {
-            std::fprintf(stderr, "error: %s\n", file->error().c_str());
-            return kExitBadInput;
-        }
+    if (!commitOutputs(files)) return kExitBadInput;
     if (!args.quiet) printSummary(sim, setup, wall);
     // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a
     // duration that is not a multiple of dt ends past it; it is said, never silent.
@@ -156,7 +269,9 @@ int run(const RunArgs& args) {
 Command addRunCommand(CLI::App& app) {
     auto args = std::make_shared<RunArgs>();
     CLI::App* sub = app.add_subcommand("run", "run one scene headless: a CSV row every N steps, the final state table, "
-                                              "a summary of energy, volume and cost");
+                                              "a summary of energy, volume and cost. Scenes of several bodies "
+                                              "(collide2d, collide3d, stack3d) take --set bodyN.key=value for body N "
+                                              "(from 1; key=value sets every body) and position_x/y/z, velocity_x/y/z");
     addSceneOptions(*sub, args->scene);
     sub->add_option("--duration", args->duration, "simulated time to run [s] (a resumed scene file runs on from its time)")
         ->type_name("T")
