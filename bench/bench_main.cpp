@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "forces.h"
-#include "simulation.h"
+#include "simcore/forces.h"
+#include "simcore/simulation.h"
 
 namespace {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "cli.h"
+#include "app/cli/cli.h"
 
 namespace {
 

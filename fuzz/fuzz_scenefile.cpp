@@ -4,12 +4,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "scenefile.h"
-#include "simulation.h"
+#include "simcore/simulation.h"
+#include "simlab/scenefile.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
-    const simcore::SceneFileResult read = simcore::parseSceneFile(text);
+    const simlab::SceneFileResult read = simlab::parseSceneFile(text);
     if (!read.file) {
         if (read.error.empty()) std::abort();  // a refusal always says why
         return 0;
@@ -17,10 +17,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Keep iterations quick: large bodies are valid but only slow the search down.
     if (simcore::buildBody(read.file->params).topology.particleCount() > 2000) return 0;
     simcore::Simulation sim(read.file->params, read.file->integrator);
-    if (read.file->state) simcore::applyState(sim, *read.file->state);
+    if (read.file->state) simlab::applyState(sim, *read.file->state);
     for (int i = 0; i < 3; ++i) sim.step();
     if (!sim.state().allFinite()) std::abort();  // never a NaN, failed or not
-    const simcore::SceneFileResult again = simcore::parseSceneFile(simcore::sceneFileText(sim, read.file->sceneName, true));
+    const simlab::SceneFileResult again = simlab::parseSceneFile(simlab::sceneFileText(sim, read.file->sceneName, true));
     if (!again.file) std::abort();
     return 0;
 }

@@ -27,18 +27,19 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "analytic.h"
-#include "body.h"
 #include "elastic_lab_version.h"
-#include "integrators.h"
-#include "output.h"
-#include "params.h"
-#include "refinement.h"
-#include "scenefile.h"
-#include "scenes.h"
-#include "simulation.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/body.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simcore/scenes.h"
+#include "simcore/simulation.h"
+#include "simlab/analytic.h"
+#include "simlab/output.h"
+#include "simlab/refinement.h"
+#include "simlab/scenefile.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
 namespace py = pybind11;
 
@@ -73,7 +74,7 @@ struct Scene {
     std::string name;
     simcore::ParameterSet params;
     std::string integrator = "rk4";
-    std::optional<simcore::SceneFile::State> state;  // a scene file's saved state
+    std::optional<simlab::SceneFile::State> state;  // a scene file's saved state
 };
 
 void assignParameter(simcore::ParameterSet& params, const std::string& key, const py::handle& value) {
@@ -90,7 +91,7 @@ Scene sceneFrom(const py::object& scene, const py::kwargs& parameters) {
     s.name = pathText(scene);
     const simcore::SceneInfo* info = simcore::findScene(s.name);
     if (!info && s.name.size() > 5 && s.name.ends_with(".json")) {
-        simcore::SceneFileResult read = simcore::readSceneFile(s.name);
+        simlab::SceneFileResult read = simlab::readSceneFile(s.name);
         if (!read.file) throw py::value_error(read.error);
         s.name = read.file->sceneName;
         s.params = read.file->params;
@@ -227,8 +228,8 @@ public:
         m_sim->setIntegratorOptions(integratorOptions(options));
         if (!threads.is_none()) m_sim->setThreads(static_cast<int>(checkedNumber(threads, "threads", 1, 256, false, true)));
         if (s.state)
-            if (auto error = simcore::applyState(*m_sim, *s.state)) throw py::value_error(*error);
-        m_columns = simcore::timeSeriesColumns(s.params.kind());
+            if (auto error = simlab::applyState(*m_sim, *s.state)) throw py::value_error(*error);
+        m_columns = simlab::timeSeriesColumns(s.params.kind());
     }
 
     // For reading: refused while another thread steps (a look, not a claim: a reader never
@@ -258,7 +259,7 @@ public:
         Busy busy(m_busy);
         std::vector<double> rows;
         auto record = [&] {
-            for (const simcore::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
+            for (const simlab::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
         };
         if (every) record();
         const double tEnd = m_sim->time() + duration;
@@ -300,7 +301,7 @@ public:
     py::dict diagnostics() {
         const simcore::Diagnostics& d = sim().diagnostics();
         py::dict out;
-        for (const simcore::CsvColumn& c : m_columns) out[py::str(c.name)] = c.value(d);
+        for (const simlab::CsvColumn& c : m_columns) out[py::str(c.name)] = c.value(d);
         return out;
     }
     py::array_t<double> diagnosticsRow() {
@@ -311,7 +312,7 @@ public:
     }
     std::vector<std::string> columns() const {
         std::vector<std::string> names;
-        for (const simcore::CsvColumn& c : m_columns) names.push_back(c.name);
+        for (const simlab::CsvColumn& c : m_columns) names.push_back(c.name);
         return names;
     }
 
@@ -352,10 +353,10 @@ public:
     // The closed-form positions and velocities at the current time (spring1d only).
     py::tuple exact() {
         const simcore::Simulation& s = sim();
-        if (!simcore::hasClosedForm(s.parameters()))
+        if (!simlab::hasClosedForm(s.parameters()))
             throw py::value_error("no closed form for scene '" + m_scene + "'; spring1d has one");
         Eigen::Matrix3Xd x, v;
-        simcore::spring1dExact(s.parameters(), s.time(), x, v);
+        simlab::spring1dExact(s.parameters(), s.time(), x, v);
         auto table = [](const Eigen::Matrix3Xd& m) {
             py::array_t<double> a({static_cast<py::ssize_t>(m.cols()), py::ssize_t{3}});
             std::copy(m.data(), m.data() + m.size(), a.mutable_data());
@@ -365,8 +366,8 @@ public:
     }
 
     void saveScene(const py::object& path) {
-        const std::string text = simcore::sceneFileText(sim(), m_scene, true);
-        simcore::AtomicFile file(pathText(path));
+        const std::string text = simlab::sceneFileText(sim(), m_scene, true);
+        simlab::AtomicFile file(pathText(path));
         if (!file.ok() || !file.write(text) || !file.commit()) throw py::value_error(file.error());
     }
 
@@ -399,20 +400,20 @@ private:
 
     std::string m_scene;
     std::unique_ptr<simcore::Simulation> m_sim;
-    std::vector<simcore::CsvColumn> m_columns;
+    std::vector<simlab::CsvColumn> m_columns;
     std::atomic<bool> m_busy{false};
 };
 
 // --- studies -----------------------------------------------------------------------------------
 
 // Output files are opened before any work, as the CLI does: an unwritable path costs nothing.
-std::unique_ptr<simcore::AtomicFile> openOutput(const py::object& path) {
+std::unique_ptr<simlab::AtomicFile> openOutput(const py::object& path) {
     if (path.is_none()) return nullptr;
-    auto file = std::make_unique<simcore::AtomicFile>(pathText(path));
+    auto file = std::make_unique<simlab::AtomicFile>(pathText(path));
     if (!file->ok()) throw py::value_error(file->error());
     return file;
 }
-void commit(simcore::AtomicFile& file) {
+void commit(simlab::AtomicFile& file) {
     if (!file.commit()) throw py::value_error(file.error());
 }
 
@@ -431,7 +432,7 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
                const py::handle& samples, bool fixedStep, const py::object& csvPath, const py::object& plotPath,
                const py::object& title, const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
-    simcore::StudySpec spec;
+    simlab::StudySpec spec;
     spec.params = s.params;
     spec.integrators = integratorList(integrators);
     if (dts) spec.dts = *dts;
@@ -441,15 +442,15 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
     spec.samples = static_cast<int>(checkedNumber(samples, "samples", 1, 100000, false, true));
     spec.reference = reference;
     spec.options.fixedStep = fixedStep;
-    if (auto error = simcore::validateStudy(spec)) throw py::value_error(*error);
+    if (auto error = simlab::validateStudy(spec)) throw py::value_error(*error);
     auto csv = openOutput(csvPath);
     auto plot = openOutput(plotPath);
 
-    const simcore::StudyResult result =
-        cancellable([&](const std::atomic<bool>* cancel) { return simcore::runStudy(spec, {}, cancel); });
+    const simlab::StudyResult result =
+        cancellable([&](const std::atomic<bool>* cancel) { return simlab::runStudy(spec, {}, cancel); });
 
     py::list rows;
-    for (const simcore::StudyRow& r : result.rows)
+    for (const simlab::StudyRow& r : result.rows)
         rows.append(py::dict(py::arg("integrator") = r.item.integrator, py::arg("dt") = r.dt,
                              py::arg("tolerance") = toleranceOrNone(r.item.tolerance),
                              py::arg("steps") = r.steps, py::arg("force_evals") = r.forceEvaluations,
@@ -458,17 +459,17 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
                              py::arg("error_energy") = nanIfFailed(r.ok, r.errorEnergy), py::arg("status") = r.status(),
                              py::arg("failure") = r.failure));
     py::dict orders;
-    for (const simcore::OrderFit& fit : simcore::fitOrders(result.rows, result.reference.estimatedError))
+    for (const simlab::OrderFit& fit : simlab::fitOrders(result.rows, result.reference.estimatedError))
         orders[py::str(fit.integrator)] = fit.order;
     if (csv) {
-        csv->write(simcore::studyCsvHeader());
-        for (const simcore::StudyRow& r : result.rows) csv->write(simcore::studyCsvRow(r));
+        csv->write(simlab::studyCsvHeader());
+        for (const simlab::StudyRow& r : result.rows) csv->write(simlab::studyCsvRow(r));
         commit(*csv);
     }
     if (plot) {
-        const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simcore::formatDouble(spec.duration) + " s"
+        const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simlab::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
-        plot->write(simcore::studySvg(result.rows, t));
+        plot->write(simlab::studySvg(result.rows, t));
         commit(*plot);
     }
     return py::dict(py::arg("rows") = rows, py::arg("orders") = orders,
@@ -480,7 +481,7 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
                    const py::handle& perturb, const py::handle& hmin, const py::handle& hmax, const py::object& csvPath,
                    const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
-    simcore::StabilitySpec spec;
+    simlab::StabilitySpec spec;
     spec.params = s.params;
     spec.integrators = integratorList(integrators);
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e5, true, false, "s");
@@ -493,25 +494,25 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
     simcore::ParameterSet linearised = spec.params;
     if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
     struct Outcome {
-        simcore::LinearModes modes;
-        std::vector<simcore::StabilityRow> rows;
+        simlab::LinearModes modes;
+        std::vector<simlab::StabilityRow> rows;
     };
     const Outcome out = cancellable([&](const std::atomic<bool>* cancel) {
-        Outcome o{simcore::linearModes(linearised), {}};
-        if (!*cancel) o.rows = simcore::runStability(spec, o.modes, {}, cancel);
+        Outcome o{simlab::linearModes(linearised), {}};
+        if (!*cancel) o.rows = simlab::runStability(spec, o.modes, {}, cancel);
         return o;
     });
 
     py::list rows;
-    for (const simcore::StabilityRow& r : out.rows)
+    for (const simlab::StabilityRow& r : out.rows)
         rows.append(py::dict(py::arg("integrator") = r.integrator, py::arg("dt_stable") = r.stable,
                              py::arg("dt_unstable") = r.unstable, py::arg("dt_predicted") = r.predicted,
                              py::arg("h_omega_stable") = r.stable * out.modes.omegaMax,
                              py::arg("h_omega_predicted") = r.predicted * out.modes.omegaMax,
                              py::arg("reason") = r.reasonAbove, py::arg("runs") = r.runs));
     if (csv) {
-        csv->write(simcore::stabilityCsvHeader());
-        for (const simcore::StabilityRow& r : out.rows) csv->write(simcore::stabilityCsvRow(r, out.modes));
+        csv->write(simlab::stabilityCsvHeader());
+        for (const simlab::StabilityRow& r : out.rows) csv->write(simlab::stabilityCsvRow(r, out.modes));
         commit(*csv);
     }
     return py::dict(py::arg("rows") = rows, py::arg("omega_max") = out.modes.omegaMax,
@@ -525,9 +526,9 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
                     const py::object& csvPath, const py::object& plotPath, const py::object& title,
                     const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
-    simcore::RefinementSpec spec;
+    simlab::RefinementSpec spec;
     spec.params = s.params;
-    spec.key = keyArg.is_none() ? simcore::refinementKey(s.params.kind()) : keyArg.cast<std::string>();
+    spec.key = keyArg.is_none() ? simlab::refinementKey(s.params.kind()) : keyArg.cast<std::string>();
     spec.values = levels;
     checkIntegrator(integrator);
     spec.integrator = integrator;
@@ -537,15 +538,15 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
     spec.interval = checkedNumber(interval, "interval", 0.0, 1e6, true, false, "s");
     spec.temporalRuns = static_cast<int>(checkedNumber(temporalRuns, "temporal_runs", 0, 10, false, true));
     spec.options.fixedStep = fixedStep;
-    if (auto error = simcore::validateRefinement(spec)) throw py::value_error(*error);
+    if (auto error = simlab::validateRefinement(spec)) throw py::value_error(*error);
     auto csv = openOutput(csvPath);
     auto plot = openOutput(plotPath);
 
-    const simcore::RefinementResult result =
-        cancellable([&](const std::atomic<bool>* cancel) { return simcore::runRefinement(spec, {}, cancel); });
+    const simlab::RefinementResult result =
+        cancellable([&](const std::atomic<bool>* cancel) { return simlab::runRefinement(spec, {}, cancel); });
 
     py::list rows;
-    for (const simcore::RefinementRow& r : result.rows)
+    for (const simlab::RefinementRow& r : result.rows)
         rows.append(py::dict(py::arg("key") = spec.key, py::arg("value") = r.value, py::arg("particles") = r.particles,
                              py::arg("springs") = r.springs, py::arg("h") = r.h, py::arg("dt") = r.dt,
                              py::arg("steps") = r.steps, py::arg("wall_seconds") = r.wallSeconds,
@@ -553,24 +554,24 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
                              py::arg("error_com") = nanIfFailed(r.ok, r.errorCom), py::arg("reference") = r.reference,
                              py::arg("status") = r.status()));
     py::list temporal;
-    for (const simcore::TemporalPoint& p : result.temporal)
+    for (const simlab::TemporalPoint& p : result.temporal)
         temporal.append(py::dict(py::arg("dt") = p.dt,
                                  py::arg("tolerance") = toleranceOrNone(p.tolerance),
                                  py::arg("steps") = p.steps, py::arg("wall_seconds") = p.wallSeconds,
                                  py::arg("error_volume") = nanIfFailed(p.ok, p.errorVolume),
                                  py::arg("error_com") = nanIfFailed(p.ok, p.errorCom), py::arg("failure") = p.failure));
     py::dict orders;
-    for (const simcore::SpatialOrder& fit : simcore::fitSpatialOrders(result)) orders[py::str(fit.observable)] = fit.order;
+    for (const simlab::SpatialOrder& fit : simlab::fitSpatialOrders(result)) orders[py::str(fit.observable)] = fit.order;
     if (csv) {
-        csv->write(simcore::refinementCsvHeader());
-        for (const simcore::RefinementRow& r : result.rows) csv->write(simcore::refinementCsvRow(spec.key, r));
+        csv->write(simlab::refinementCsvHeader());
+        for (const simlab::RefinementRow& r : result.rows) csv->write(simlab::refinementCsvRow(spec.key, r));
         commit(*csv);
     }
     if (plot) {
         const std::string t = title.is_none() ? s.name + ": mesh error and step error against run time, T = " +
-                                                    simcore::formatDouble(spec.duration) + " s"
+                                                    simlab::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
-        plot->write(simcore::refinementSvg(spec, result, t));
+        plot->write(simlab::refinementSvg(spec, result, t));
         commit(*plot);
     }
     return py::dict(py::arg("rows") = rows, py::arg("orders") = orders, py::arg("temporal") = temporal,
@@ -581,6 +582,7 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
 
 }  // namespace
 
+// Kept whole: the module's table of bindings, one definition after another.
 PYBIND11_MODULE(elasticlab, m) {
     m.doc() = "Elastic Lab: two-layer elastic bodies (particles, springs, gas pressure) from Python. "
               "See docs/python.md.";

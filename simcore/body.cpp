@@ -1,5 +1,4 @@
-#include "body.h"
-#include "scaling.h"
+#include "simcore/body.h"
 
 #include <algorithm>
 #include <cmath>
@@ -379,10 +378,8 @@ std::optional<std::string> validateShape(const ParameterSet& params, std::string
     return os.str();
 }
 
-namespace {
-Body buildUnscaled(const ParameterSet& params) {
-    const Params::Shape s = resolve(params).shape;
-    switch (params.kind()) {
+Body buildShape(SceneKind kind, const Params::Shape& s) {
+    switch (kind) {
         case SceneKind::Spring1d:
             return buildSpring1d({s.length, s.initialLength, s.fixedEnd}, s.mass);
         case SceneKind::Ring2d:
@@ -393,15 +390,6 @@ Body buildUnscaled(const ParameterSet& params) {
             return buildLatLongSphere({s.slices, s.stacks, s.radiusInner, s.radiusOuter}, s.massInner, s.massOuter);
     }
     throw std::invalid_argument("unknown scene kind");
-}
-}  // namespace
-
-Body buildBody(const ParameterSet& params) {
-    if (auto error = validateShape(params)) throw std::invalid_argument(*error);
-    Body body = buildUnscaled(params);
-    // scaling=physical: each layer keeps its total mass when refined (scaling.h).
-    if (const double factor = bodyScale(params, body).mass; factor != 1.0) body.mass *= factor;
-    return body;
 }
 
 double enclosedVolume(const Surface& surface, const double* positions, int dimension) {

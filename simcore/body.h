@@ -1,6 +1,6 @@
 #pragma once
 // Bodies: topology (who is connected to whom, rest lengths, closed surfaces) and the start
-// state, built procedurally for each scene (thesis ch. 3, MODEL.md "Bodies").
+// state, built procedurally for each scene (thesis ch. 3, docs/model.md "Bodies").
 //
 // Particle numbering: 1D has particles 0 (top) and 1. Layered bodies store the inner layer
 // first, [0, n), then the outer layer, [n, 2n), vertex k of one layer paired with vertex k
@@ -16,7 +16,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "params.h"
+#include "simcore/params.h"
 
 namespace simcore {
 
@@ -147,9 +147,10 @@ double memoryBoundBytes(const BodySize& size, std::string_view integrator);
 // the CVODE methods hold more). The message says what is allowed.
 std::optional<std::string> validateShape(const ParameterSet& params, std::string_view integrator = {});
 
-// The body a scene describes, from its parameters; throws std::invalid_argument with
-// validateShape's message for a shape it refuses.
-Body buildBody(const ParameterSet& params);
+// The body of a scene's shape as the table's values describe it, per particle and per spring
+// (unscaled: scaling.h's buildBody makes the body a scene's parameters describe). The shape is
+// not checked (validateShape does that).
+Body buildShape(SceneKind kind, const Params::Shape& shape);
 
 // Exact enclosed measure of a closed layer at the given positions: shoelace area (2D) or
 // divergence-theorem volume V = sum x_a.(x_b x x_c)/6 (3D).

@@ -1,11 +1,11 @@
-#include "body_ode.h"
+#include "simcore/internal/body_ode.h"
 
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-#include "jacobians.h"
-#include "parallel.h"
+#include "simcore/internal/jacobians.h"
+#include "simcore/parallel.h"
 
 namespace simcore {
 

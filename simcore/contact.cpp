@@ -1,4 +1,4 @@
-#include "contact.h"
+#include "simcore/contact.h"
 
 #include <algorithm>
 #include <cmath>

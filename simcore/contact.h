@@ -1,5 +1,5 @@
 #pragma once
-// Contact as a force inside the equations of motion (MODEL.md "Contact"; thesis 4.6, which
+// Contact as a force inside the equations of motion (docs/model.md "Contact"; thesis 4.6, which
 // calls its collision response a penalty method). Free functions on flat arrays, testable
 // without a world; ForceModel calls them in every force evaluation, so every stage of every
 // integrator sees them, the energy ledger books them and the Jacobians include them.

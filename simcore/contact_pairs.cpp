@@ -1,4 +1,4 @@
-#include "contact_pairs.h"
+#include "simcore/contact_pairs.h"
 
 #include <algorithm>
 #include <climits>

@@ -43,8 +43,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "body.h"
-#include "contact.h"
+#include "simcore/body.h"
+#include "simcore/contact.h"
 
 namespace simcore {
 

@@ -29,7 +29,7 @@
 // CVODE keeps a history between steps (the Nordsieck array); restart() marks it stale and
 // the next step calls CVodeReInit from the current state (counted).
 
-#include "cvode_integrators.h"
+#include "simcore/internal/cvode_integrators.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,7 +43,7 @@
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
-#include "implicit_operator.h"
+#include "simcore/internal/implicit_operator.h"
 
 namespace simcore {
 

@@ -1,4 +1,4 @@
-#include "force_kernels.h"
+#include "simcore/force_kernels.h"
 
 #include <algorithm>
 #include <atomic>
@@ -8,8 +8,6 @@
 #include <cstring>
 #include <new>
 #include <type_traits>
-
-#include "forces.h"  // kDegenerateLength
 
 // The kernels are written once (force_kernels_body.h) over simd.h's width-generic vectors and
 // compiled here once per instruction set, each copy in a namespace of its own and under
@@ -59,8 +57,8 @@ QuadSums combineQuadLanes(const double (&power)[2][4], const double (&square)[2]
 
 #define SIMCORE_SIMD_ISA 0
 #define SIMCORE_SIMD_NS portable
-#include "simd.h"
-#include "force_kernels_body.h"
+#include "simcore/internal/simd.h"
+#include "simcore/internal/force_kernels_body.h"
 #undef SIMCORE_SIMD_ISA
 #undef SIMCORE_SIMD_NS
 
@@ -69,8 +67,8 @@ QuadSums combineQuadLanes(const double (&power)[2][4], const double (&square)[2]
 #pragma GCC target("avx2")
 #define SIMCORE_SIMD_ISA 2
 #define SIMCORE_SIMD_NS avx2
-#include "simd.h"
-#include "force_kernels_body.h"
+#include "simcore/internal/simd.h"
+#include "simcore/internal/force_kernels_body.h"
 #undef SIMCORE_SIMD_ISA
 #undef SIMCORE_SIMD_NS
 #pragma GCC pop_options
@@ -81,8 +79,8 @@ QuadSums combineQuadLanes(const double (&power)[2][4], const double (&square)[2]
 #pragma GCC target("avx512f,avx2")
 #define SIMCORE_SIMD_ISA 3
 #define SIMCORE_SIMD_NS avx512
-#include "simd.h"
-#include "force_kernels_body.h"
+#include "simcore/internal/simd.h"
+#include "simcore/internal/force_kernels_body.h"
 #undef SIMCORE_SIMD_ISA
 #undef SIMCORE_SIMD_NS
 #pragma GCC pop_options

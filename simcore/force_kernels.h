@@ -23,7 +23,13 @@
 #include <memory>
 #include <vector>
 
-#include "body.h"
+#include "simcore/body.h"
+
+namespace simcore {
+// A spring shorter than this has no direction: it adds no force (never a NaN) and is counted
+// as degenerate (docs/model.md, "Forces").
+inline constexpr double kDegenerateLength = 1e-12;  // [m]
+}  // namespace simcore
 
 namespace simcore::kernels {
 

@@ -1,4 +1,4 @@
-#include "forces.h"
+#include "simcore/forces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <initializer_list>
 #include <unordered_map>
 
-#include "parallel.h"
+#include "simcore/parallel.h"
 
 namespace simcore {
 

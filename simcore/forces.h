@@ -1,5 +1,5 @@
 #pragma once
-// Force terms (thesis ch. 4, MODEL.md "Forces"), each a separate kernel over flat arrays.
+// Force terms (thesis ch. 4, docs/model.md "Forces"), each a separate kernel over flat arrays.
 //
 // Positions, velocities and forces are flat arrays of 3N doubles (x0 y0 z0 x1 ...). A scene
 // declares the terms it has (TermSet); a term it does not have is never evaluated, and the
@@ -11,10 +11,10 @@
 
 #include <Eigen/Core>
 
-#include "body.h"
-#include "contact.h"
-#include "force_kernels.h"
-#include "parallel.h"
+#include "simcore/body.h"
+#include "simcore/contact.h"
+#include "simcore/force_kernels.h"
+#include "simcore/parallel.h"
 
 namespace simcore {
 
@@ -56,8 +56,6 @@ struct ForceExtras {
     double contactEnergy = 0.0;        // wall contact + layer barrier energy [J] (contact = force)
     double contactPower = 0.0;         // power removed by contact dissipation and friction [W], >= 0
 };
-
-inline constexpr double kDegenerateLength = 1e-12;  // [m]
 
 // One particle's force split by where it comes from (a free-body diagram): the force terms,
 // with the springs per family, the gas per layer and contact per kind.

@@ -1,32 +1,17 @@
-#include "integrators.h"
+#include "simcore/integrators.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
-#include "cvode_integrators.h"
-#include "implicit_operator.h"
-#include "params.h"
+#include "simcore/internal/integrator_makers.h"
+#include "simcore/params.h"
 
 namespace simcore {
 
 namespace {
 
-// clang-format off
-constexpr std::array kIntegrators = {
-    IntegratorInfo{"euler", 1, "explicit Euler: x and v both from the old state (thesis eq. 22)"},
-    IntegratorInfo{"midpoint", 2, "the thesis's midpoint (eq. 31-33), i.e. Heun's RK2: two force evaluations"},
-    IntegratorInfo{"rk4", 4, "classical Runge-Kutta 4 (eq. 35-40): four force evaluations"},
-    IntegratorInfo{"symplectic-euler", 1, "semi-implicit Euler: v from the old forces, then x from the new v"},
-    IntegratorInfo{"verlet", 2, "velocity Verlet (order 1 when damping is on: damping is taken at the half-step velocity)"},
-    IntegratorInfo{"rk45", 5, "Dormand-Prince 5(4): adaptive step from atol/rtol, embedded error estimate every step"},
-    IntegratorInfo{"implicit-euler", 1, "linearised backward Euler (Baraff-Witkin 1998): spring and gas Jacobians, matrix-free CG"},
-    IntegratorInfo{"cvode-bdf", 5, "SUNDIALS CVODE, variable-order BDF 1-5: Newton, matrix-free GMRES on the analytic Jacobian, implicit-euler's solve as preconditioner; adaptive from atol/rtol"},
-    IntegratorInfo{"xpbd", 1, "extended position-based dynamics (Macklin et al. 2016, small steps 2019): springs as compliant distance constraints, `substeps` substeps of one iteration per step"},
-    IntegratorInfo{"cvode-adams", 12, "SUNDIALS CVODE, variable-order Adams-Moulton 1-12 with fixed-point iteration (non-stiff); adaptive from atol/rtol"},
-};
-// clang-format on
 
 // Base with the stage vectors every explicit method shares.
 class ExplicitBase : public Integrator {
@@ -228,135 +213,6 @@ private:
     bool m_hasError = false;  // m_err holds the last accepted step's estimate
 };
 
-// Linearised backward Euler (Baraff & Witkin, "Large steps in cloth simulation", 1998).
-// Backward Euler on M v' = F(x, v), x' = v, linearised once at the start of the step:
-//
-//   (M - h D - h^2 K) dv = h (F0 + h K v0),   v1 = v0 + dv,   x1 = x0 + h v1
-//
-// with K = dF/dx, D = dF/dv at (x0, v0). The matrix is never formed: CG only needs its
-// product with a vector, which the system computes spring by spring plus, for each gas layer,
-// the rank-one term -(c/V^2) g g^T (g = dV/dx) that couples the whole layer (see
-// implicit_operator.h). Constrained coordinates (fixed particles, absent axes) are filtered:
-// the operator is the identity there and the right-hand side zero, so they never move.
-// The integrated damping energy (aux) takes the explicit rate at the start of the step.
-// With the clamped spring Jacobian (compressed springs drop their indefinite part) this is
-// a W-method: first order whatever the approximation, and stable for stiff springs at any h.
-class ImplicitEuler final : public Integrator {
-public:
-    std::string_view name() const override { return "implicit-euler"; }
-    int order() const override { return 1; }
-    int evaluationsPerStep() const override { return 1 + m_options.newtonIterations; }
-    bool implicit() const override { return true; }
-    void prepare(const StateLayout& layout) override {
-        m_layout = layout;
-        const Eigen::Index n = layout.positions;
-        m_k1.setZero(layout.size());
-        m_yk.setZero(layout.size());
-        m_kk.setZero(layout.size());
-        for (auto* v : {&m_rhs, &m_dv, &m_kv, &m_zero, &m_v, &m_v1, &m_z, &m_rhs2, &m_target}) v->setZero(n);
-        m_operator.resize(n);
-    }
-    StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
-        StepReport report;
-        if (!system.hasForceJacobian()) {
-            report.failure = "implicit-euler: this system provides no force Jacobian";
-            return report;
-        }
-        const Eigen::Index n = m_layout.positions, m = m_layout.aux;
-        system.derivative(t, y, m_k1);
-        report.evaluations = 1;
-        m_v = y.segment(n, n);
-        m_target.setConstant(std::numeric_limits<double>::quiet_NaN());
-        const int iterations = std::max(1, m_options.newtonIterations);
-        for (int it = 0;; ++it) {
-            // Contact forces (k d^3) have no stiffness where a step starts out of contact and a
-            // large one where it ends in contact: linearised once, a large step lands deep in
-            // the wall and the next one throws the body out with energy it never had. While the
-            // end state is in contact, Newton continues (at most kContactNewton iterations).
-            if (it >= iterations && (it >= kContactNewton || !system.stronglyNonlinear(h, y, m_v))) break;
-            const Eigen::VectorXd& mass = system.coordinateMass();
-            if (it == 0) {
-                // Baraff-Witkin: linearised at (x0, v0); rhs = h (F0 + h K v0), F0 = M a0.
-                system.linearize(t, y);
-                system.forceJacobianProduct(y.segment(n, n), m_zero, m_kv);
-                m_rhs = h * (mass.cwiseProduct(m_k1.segment(n, n)) + h * m_kv);
-            } else {
-                // Newton on G(v) = M (v - v0) - h F(x0 + h v, v) = 0 at the current iterate.
-                m_yk = y;
-                m_yk.head(n) = y.head(n) + h * m_v;
-                m_yk.segment(n, n) = m_v;
-                system.derivative(t + h, m_yk, m_kk);
-                ++report.evaluations;
-                system.linearize(t + h, m_yk);
-                m_rhs = h * mass.cwiseProduct(m_kk.segment(n, n)) - mass.cwiseProduct(m_v - y.segment(n, n));
-            }
-            for (Eigen::Index i = 0; i < n; ++i)
-                if (mass[i] == 0.0) m_rhs[i] = 0.0;
-            m_operator.set(system, h);
-            if (!solve(system, y, h, report)) {
-                report.failure = "implicit-euler: the linear solve (conjugate gradient) did not "
-                                 "converge; the linearised system is not positive definite at this "
-                                 "step (the body is too deformed or the step too large)";
-                return report;
-            }
-            m_v += m_dv;
-            if (it > 0 && m_dv.norm() <= 1e-10 * (1.0 + m_v.norm())) break;
-        }
-        // The integrated diagnostics (aux: energy removed by damping) take the rate at the end
-        // of the step, as backward Euler does: with the rate at the start a large step would
-        // book far more damping than the implicit step actually removes. One more evaluation.
-        m_yk.head(n) = y.head(n) + h * m_v;
-        m_yk.segment(n, n) = m_v;
-        m_yk.tail(m) = y.tail(m);
-        system.derivative(t + h, m_yk, m_kk);
-        ++report.evaluations;
-        y.head(2 * n) = m_yk.head(2 * n);
-        y.tail(m) += h * m_kk.tail(m);
-        report.h = h;
-        report.hNext = h;
-        return report;
-    }
-
-private:
-    static constexpr int kContactNewton = 12;
-    // Solves A dv = rhs for the current iterate m_v, with wall contacts inside the solve: a
-    // coordinate that would end beyond a wall gets the velocity that lands it on the wall and
-    // the solve is repeated with that velocity prescribed, so the springs feel the stop in the
-    // same step (with contacts only handled after the step, a large step lets the rest of the
-    // body crash through the stopped particles). A prescribed dv = z moves to the right-hand
-    // side: rhs - A z on the free rows.
-    bool solve(OdeSystem& system, const Eigen::VectorXd& y, double h, StepReport& report) {
-        const Eigen::Index n = m_layout.positions;
-        auto prescribe = [&] {
-            for (Eigen::Index i = 0; i < n; ++i) m_z[i] = std::isfinite(m_target[i]) ? m_target[i] - m_v[i] : 0.0;
-            m_operator.constrain(&m_target);
-            const Eigen::VectorXd& coupled = m_operator.coupling(m_z);
-            for (Eigen::Index i = 0; i < n; ++i) m_rhs2[i] = m_operator.isFree(i) ? m_rhs[i] - coupled[i] : 0.0;
-        };
-        prescribe();  // contacts found by earlier iterations stay prescribed
-        m_solver.setTolerance(m_options.cgTolerance);
-        m_solver.setMaxIterations(m_options.cgMaxIterations);
-        for (int pass = 0;; ++pass) {
-            m_solver.compute(m_operator);
-            m_dv = m_solver.solve(m_rhs2);
-            report.linearIterations += static_cast<int>(m_solver.iterations());
-            if (m_solver.info() != Eigen::Success || !m_dv.allFinite()) return false;
-            m_dv += m_z;
-            if (pass == 12) return true;
-            m_v1 = m_v + m_dv;
-            if (system.contactVelocities(h, y, m_v1, m_target) == 0) return true;
-            prescribe();
-        }
-    }
-
-    StateLayout m_layout;
-    Eigen::VectorXd m_k1, m_yk, m_kk;
-    Eigen::VectorXd m_rhs, m_dv, m_kv, m_zero, m_v, m_v1, m_z, m_rhs2, m_target;
-    ImplicitOperator m_operator;
-    Eigen::ConjugateGradient<ImplicitOperator, Eigen::Lower | Eigen::Upper, JacobiPreconditioner> m_solver;
-};
-
-
 // Extended position-based dynamics (Macklin, Mueller & Chentanez, "XPBD: position-based
 // simulation of compliant constrained dynamics", MIG 2016) with the "small steps" scheme
 // (Macklin, Storey, Lu, Terdiman, Chentanez, Jeschke & Mueller, SCA 2019): the step h is cut
@@ -429,7 +285,7 @@ public:
     }
 
 private:
-    // The springs' forces at (x, v) into m_springs (MODEL.md: F_i = [ks (L - L0) + kd (v_j - v_i).u] u,
+    // The springs' forces at (x, v) into m_springs (docs/model.md: F_i = [ks (L - L0) + kd (v_j - v_i).u] u,
     // u = (x_j - x_i) / L).
     void springForces(const DistanceConstraints& c, const Eigen::VectorXd& y) {
         const Eigen::Index n = m_layout.positions;
@@ -497,54 +353,16 @@ private:
 };
 }  // namespace
 
-std::span<const IntegratorInfo> integratorTable() { return kIntegrators; }
-
-std::unique_ptr<Integrator> makeIntegrator(std::string_view name) {
+std::unique_ptr<Integrator> makeExplicitIntegrator(std::string_view name) {
     if (name == "euler") return std::make_unique<Euler>();
     if (name == "midpoint") return std::make_unique<Midpoint>();
     if (name == "rk4") return std::make_unique<Rk4>();
     if (name == "symplectic-euler") return std::make_unique<SymplecticEuler>();
     if (name == "verlet") return std::make_unique<VelocityVerlet>();
     if (name == "rk45") return std::make_unique<DormandPrince>();
-    if (name == "implicit-euler") return std::make_unique<ImplicitEuler>();
-    if (name == "cvode-bdf") return makeCvodeIntegrator(true);
-    if (name == "cvode-adams") return makeCvodeIntegrator(false);
-    if (name == "xpbd") return std::make_unique<Xpbd>();
     return nullptr;
 }
 
-bool hasStabilityFunction(std::string_view name) {
-    return name == "euler" || name == "midpoint" || name == "rk4" || name == "rk45" ||
-           name == "implicit-euler";
-}
-
-std::complex<double> stabilityFunction(std::string_view name, std::complex<double> z) {
-    // Truncated exponential series for the explicit Runge-Kutta methods; Dormand-Prince's
-    // 5th-order solution adds z^6/600 (its 6 stages cannot match e^z to 6th order).
-    const std::complex<double> one(1.0, 0.0);
-    if (name == "euler") return one + z;
-    if (name == "midpoint") return one + z + z * z / 2.0;
-    if (name == "rk4") return one + z * (one + z / 2.0 * (one + z / 3.0 * (one + z / 4.0)));
-    if (name == "rk45")
-        return one + z * (one + z / 2.0 * (one + z / 3.0 * (one + z / 4.0 * (one + z / 5.0)))) +
-               std::pow(z, 6) / 600.0;
-    if (name == "implicit-euler") return one / (one - z);
-    return {std::nan(""), 0.0};
-}
-
-std::optional<std::string> unknownIntegrator(std::string_view name) {
-    for (const auto& info : integratorTable())
-        if (info.name == name) return std::nullopt;
-    return "unknown integrator " + quoteShort(name) + "; allowed: " + integratorNames();
-}
-
-std::string integratorNames() {
-    std::string names;
-    for (const auto& info : integratorTable()) {
-        if (!names.empty()) names += ", ";
-        names += info.name;
-    }
-    return names;
-}
+std::unique_ptr<Integrator> makeXpbd() { return std::make_unique<Xpbd>(); }
 
 }  // namespace simcore

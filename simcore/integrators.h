@@ -1,5 +1,5 @@
 #pragma once
-// Time integrators (thesis ch. 5, MODEL.md "Integrators") behind one interface.
+// Time integrators (thesis ch. 5, docs/model.md "Integrators") behind one interface.
 //
 // The state is one flat, contiguous vector y = [x (n) | v (n) | aux (m)] with
 // dy/dt = [v | a(x, v, t) | aux'], where aux holds integrated diagnostics (the energy
@@ -28,7 +28,6 @@
 // steps must be announced with restart(), which re-initialises them (CVodeReInit).
 
 #include <array>
-#include <complex>
 #include <memory>
 #include <optional>
 #include <span>
@@ -38,7 +37,7 @@
 
 #include <Eigen/Core>
 
-#include "parallel.h"
+#include "simcore/parallel.h"
 
 namespace simcore {
 
@@ -215,25 +214,5 @@ public:
 protected:
     IntegratorOptions m_options;
 };
-
-struct IntegratorInfo {
-    std::string_view name;
-    int order;
-    std::string_view description;
-};
-
-std::span<const IntegratorInfo> integratorTable();
-// nullptr when the name is unknown.
-std::unique_ptr<Integrator> makeIntegrator(std::string_view name);
-std::string integratorNames();  // "euler, midpoint, ..." for messages
-// The one message for a name that is not an integrator (CLI, GUI, Python); nothing when it is one.
-std::optional<std::string> unknownIntegrator(std::string_view name);
-
-// Stability function of a linear one-step method applied to y' = lambda y with z = h lambda:
-// y_{n+1} = R(z) y_n. Defined for euler, midpoint, rk4, rk45 (fixed step, 5th-order
-// solution) and implicit-euler; the partitioned methods (symplectic-euler, verlet) have no
-// scalar R and are treated per oscillator mode in stability.h.
-bool hasStabilityFunction(std::string_view name);
-std::complex<double> stabilityFunction(std::string_view name, std::complex<double> z);
 
 }  // namespace simcore

@@ -1,4 +1,4 @@
-#include "jacobians.h"
+#include "simcore/internal/jacobians.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "params.h"
+#include "simcore/params.h"
 
 #include <algorithm>
 #include <array>
@@ -11,7 +11,7 @@ namespace simcore {
 
 namespace {
 
-// The thesis's defaults (§7.2.1) where it gives one; MODEL.md for the rest.
+// The thesis's defaults (§7.2.1) where it gives one; docs/model.md for the rest.
 // clang-format off
 constexpr std::array kTable = {
     //        key             unit     default  min    max     >min   int    scenes         group

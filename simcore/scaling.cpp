@@ -1,7 +1,8 @@
-#include "scaling.h"
+#include "simcore/scaling.h"
 
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 namespace simcore {
 
@@ -67,6 +68,10 @@ std::string resolutionText(const ParameterSet& params) {
 }
 
 BodyScale bodyScale(const ParameterSet& params, const Body& body) {
+    return bodyScale(params, resolve(params).shape, body);
+}
+
+BodyScale bodyScale(const ParameterSet& params, const Params::Shape& shape, const Body& body) {
     BodyScale scale;
     if (scalingOf(params) == Scaling::Thesis) return scale;
     // At the reference resolution every factor is 1 by definition (no arithmetic at all).
@@ -76,9 +81,14 @@ BodyScale bodyScale(const ParameterSet& params, const Body& body) {
             atReference = false;
     if (atReference) return scale;
 
-    ParameterSet referenceParams = referenceShape(params);
-    referenceParams.set(Param::Scaling, 1.0);  // the reference body's own values are unscaled
-    const Body reference = buildBody(referenceParams);
+    // The reference body: this shape at the scene's default resolution, unscaled.
+    const ParameterSet referenceParams = referenceShape(params);
+    Params::Shape referenceShape = shape;
+    referenceShape.particles = referenceParams.getInt(Param::Particles);
+    referenceShape.subdivisions = referenceParams.getInt(Param::Subdivisions);
+    referenceShape.slices = referenceParams.getInt(Param::Slices);
+    referenceShape.stacks = referenceParams.getInt(Param::Stacks);
+    const Body reference = buildShape(params.kind(), referenceShape);
     const Topology& topology = body.topology;
 
     const double n = particlesPerLayer(topology), nRef = particlesPerLayer(reference.topology);
@@ -106,6 +116,17 @@ BodyScale bodyScale(const ParameterSet& params, const Body& body) {
                               orientation(body, SpringFamily::Shear).tangential;
     return scale;
 }
+
+ScaledBody buildScaledBody(const ParameterSet& params, const Params& resolved) {
+    if (auto error = validateShape(params)) throw std::invalid_argument(*error);
+    ScaledBody scaled{buildShape(params.kind(), resolved.shape), {}};
+    scaled.scale = bodyScale(params, resolved.shape, scaled.body);
+    // scaling=physical: each layer keeps its total mass when refined.
+    if (scaled.scale.mass != 1.0) scaled.body.mass *= scaled.scale.mass;
+    return scaled;
+}
+
+Body buildBody(const ParameterSet& params) { return buildScaledBody(params, resolve(params)).body; }
 
 BodyValues bodyValues(const ParameterSet& params, const Body& body) {
     const Topology& topology = body.topology;

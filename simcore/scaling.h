@@ -1,5 +1,5 @@
 #pragma once
-// Resolution scaling (MODEL.md "Resolution"): what the per-particle and per-spring values of
+// Resolution scaling (docs/model.md "Resolution"): what the per-particle and per-spring values of
 // the parameter table mean when the mesh is refined.
 //
 // scaling=thesis: MASS is per particle and KS/KD/RKS/RKD per spring at every resolution, as in
@@ -30,11 +30,10 @@
 #include <array>
 #include <string>
 
-#include "body.h"
-#include "params.h"
+#include "simcore/body.h"
+#include "simcore/params.h"
 
 namespace simcore {
-
 
 // The `scaling` parameter of a scene (a scene without layers, the 1D spring, is Thesis).
 Scaling scalingOf(const ParameterSet& params);
@@ -52,8 +51,20 @@ ParameterSet referenceShape(const ParameterSet& params);
 // The name and value(s) of a scene's resolution, e.g. "subdivisions=4" ("" for the 1D spring).
 std::string resolutionText(const ParameterSet& params);
 
-// The factors for `body` built from `params` (all 1 under scaling=thesis).
+// The factors for `body` built from `params` (all 1 under scaling=thesis); `shape` is
+// resolve(params).shape when the caller has it.
 BodyScale bodyScale(const ParameterSet& params, const Body& body);
+BodyScale bodyScale(const ParameterSet& params, const Params::Shape& shape, const Body& body);
+
+// The body a scene's parameters describe: its shape (body.h's buildShape) with the factors
+// applied to the mass (the springs' and contact's factors are applied by the force model).
+// Throws std::invalid_argument with validateShape's message for a shape it refuses.
+struct ScaledBody {
+    Body body;
+    BodyScale scale;
+};
+ScaledBody buildScaledBody(const ParameterSet& params, const Params& resolved);
+Body buildBody(const ParameterSet& params);
 
 // The per-particle and per-spring values a body built from params actually uses.
 struct BodyValues {

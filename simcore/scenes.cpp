@@ -1,9 +1,9 @@
-#include "scenes.h"
+#include "simcore/scenes.h"
 
 #include <array>
 #include <stdexcept>
 
-#include "params.h"
+#include "simcore/params.h"
 
 namespace simcore {
 

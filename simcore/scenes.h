@@ -4,8 +4,8 @@
 #include <span>
 #include <string_view>
 
-#include "forces.h"
-#include "params.h"
+#include "simcore/forces.h"
+#include "simcore/params.h"
 
 namespace simcore {
 

@@ -1,4 +1,4 @@
-#include "simulation.h"
+#include "simcore/simulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,9 @@
 #include <stdexcept>
 #include <utility>
 
-#include "body_ode.h"
-#include "world_body.h"
+#include "simcore/integrator_table.h"
+#include "simcore/internal/body_ode.h"
+#include "simcore/internal/world_body.h"
 
 namespace simcore {
 
@@ -56,8 +57,9 @@ Eigen::Map<const Eigen::Matrix3Xd> Simulation::velocities() const {
 
 void Simulation::build() {
     m_p = resolve(m_params);
-    m_body = buildBody(m_params);
-    m_scale = bodyScale(m_params, m_body);
+    ScaledBody scaled = buildScaledBody(m_params, m_p);
+    m_body = std::move(scaled.body);
+    m_scale = scaled.scale;
     m_n = 3 * m_body.topology.particleCount();
     m_forces = ForceModel(&m_body.topology, &m_body.mass, sceneTerms(m_params.kind()));
     setThreads(m_threads);
@@ -82,7 +84,6 @@ void Simulation::setThreads(int threads) {
 }
 
 void Simulation::applyForceParams() {
-    m_p = resolve(m_params);
     m_contactProjection =
         configureForces(m_forces, m_params, m_p, m_scale, m_body.topology.dimension, m_boxCentre);
     m_ode->configure(m_contactProjection, m_p.time.substeps);
@@ -491,6 +492,7 @@ std::optional<std::string> Simulation::setParameter(Param id, double value) {
     // stretch, a heavier particle more kinetic energy): book the jump as work by the edit.
     const double before = totalEnergyNow();
     m_params = next;
+    m_p = resolve(m_params);
     m_ode->dropEnd();
     m_restartIntegrator = true;
     if (spec.group == ParamGroup::Mass) applyMasses();
@@ -501,7 +503,7 @@ std::optional<std::string> Simulation::setParameter(Param id, double value) {
 }
 
 void Simulation::applyMasses() {
-    const Params::Shape shape = resolve(m_params).shape;
+    const Params::Shape& shape = m_p.shape;
     const Topology& topo = m_body.topology;
     for (int i = 0; i < topo.particleCount(); ++i) {
         const Layer l = topo.layer[static_cast<std::size_t>(i)];
@@ -551,6 +553,7 @@ void Simulation::restore(const SimulationSnapshot& s) {
     if (s.y.size() != m_y.size()) throw std::invalid_argument("the snapshot is of another body");
     // Parameters (live edits only: a shape edit rebuilds the body, and a new run begins).
     m_params = s.params;
+    m_p = resolve(m_params);
     applyMasses();
     applyForceParams();
     if (m_integrator->name() != s.integrator) {

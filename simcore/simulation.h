@@ -41,14 +41,14 @@
 
 #include <Eigen/Core>
 
-#include "body.h"
-#include "forces.h"
-#include "scaling.h"
-#include "integrators.h"
-#include "parallel.h"
-#include "params.h"
-#include "scenes.h"
-#include "step_doubling.h"
+#include "simcore/body.h"
+#include "simcore/forces.h"
+#include "simcore/integrators.h"
+#include "simcore/parallel.h"
+#include "simcore/params.h"
+#include "simcore/scaling.h"
+#include "simcore/scenes.h"
+#include "simcore/step_doubling.h"
 
 namespace simcore {
 
@@ -377,7 +377,7 @@ private:
                          const std::array<double, 2>& volume, double contact, const Scan& scan) const;
 
     ParameterSet m_params;
-    Params m_p;                   // m_params resolved (applyForceParams keeps them together)
+    Params m_p;                   // m_params resolved, once each time m_params changes
     int m_threads = hardwareThreads();
     std::unique_ptr<ThreadPool> m_pool;  // declared before m_forces, which points to it
     Body m_body;

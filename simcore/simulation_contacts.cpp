@@ -1,14 +1,14 @@
 // The contact stages of a step with contact = projection (the thesis program's collision
-// response, MODEL.md "Contact"): the box planes (collide) and the layer pairs (constrain),
+// response, docs/model.md "Contact"): the box planes (collide) and the layer pairs (constrain),
 // and the contact design point of the stability estimates. Contact as a force inside the
 // ODE is contact.h; its Jacobians are in body_ode.cpp.
-#include "simulation.h"
+#include "simcore/simulation.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "body_ode.h"
+#include "simcore/internal/body_ode.h"
 
 namespace simcore {
 
@@ -47,7 +47,7 @@ bool Simulation::constrain(StepWork& w) {
 }
 
 bool Simulation::collideWalls(bool apply) {
-    // Axis-aligned box planes (thesis 4.6; MODEL.md): a particle outside is projected back
+    // Axis-aligned box planes (thesis 4.6; docs/model.md): a particle outside is projected back
     // and its normal velocity becomes -e v_n; friction scales the tangential velocity by
     // (1 - mu). Only the axes the body moves in are bounded. Particles are independent: the
     // pieces run in parallel.

@@ -1,4 +1,4 @@
-#include "step_doubling.h"
+#include "simcore/step_doubling.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 
 #include <Eigen/Core>
 
-#include "integrators.h"
+#include "simcore/integrators.h"
 
 namespace simcore {
 

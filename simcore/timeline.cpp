@@ -1,4 +1,4 @@
-#include "timeline.h"
+#include "simcore/timeline.h"
 
 #include <algorithm>
 

@@ -15,7 +15,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "simulation.h"
+#include "simcore/simulation.h"
 
 namespace simcore {
 

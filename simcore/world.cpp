@@ -1,13 +1,15 @@
-#include "world.h"
+#include "simcore/world.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
-#include "contact.h"
-#include "scenes.h"
-#include "world_ode.h"
+#include "simcore/contact.h"
+#include "simcore/integrator_table.h"
+#include "simcore/internal/world_body.h"
+#include "simcore/internal/world_ode.h"
+#include "simcore/scenes.h"
 
 namespace simcore {
 
@@ -237,7 +239,7 @@ World::World(const WorldSpec& spec, std::string_view integrator) : m_spec(spec),
     if (auto error = validateWorld(spec)) throw std::invalid_argument(*error);
     int first = 0;
     for (const WorldBodySpec& b : spec.bodies) {
-        m_bodies.push_back(std::make_unique<WorldBody>(b, first, Eigen::Vector3d::Zero()));
+        m_bodies.push_back(std::make_unique<WorldBody>(b.params, b.position, b.velocity, first, Eigen::Vector3d::Zero()));
         first += m_bodies.back()->count();
     }
     m_n = 3 * Eigen::Index{first};
@@ -272,13 +274,17 @@ World::World(const WorldSpec& spec, std::string_view integrator) : m_spec(spec),
 
 World::~World() = default;
 
+const Body& World::body(int k) const { return m_bodies[static_cast<std::size_t>(k)]->body(); }
+int World::firstParticle(int k) const { return m_bodies[static_cast<std::size_t>(k)]->first(); }
+int World::bodyParticles(int k) const { return m_bodies[static_cast<std::size_t>(k)]->count(); }
+
 Eigen::Map<const Eigen::Matrix3Xd> World::positions(int k) const {
-    const WorldBody& b = body(k);
+    const WorldBody& b = *m_bodies[static_cast<std::size_t>(k)];
     return {m_y.data() + 3 * b.first(), 3, b.count()};
 }
 
 Eigen::Map<const Eigen::Matrix3Xd> World::velocities(int k) const {
-    const WorldBody& b = body(k);
+    const WorldBody& b = *m_bodies[static_cast<std::size_t>(k)];
     return {m_y.data() + m_n + 3 * b.first(), 3, b.count()};
 }
 
@@ -297,7 +303,7 @@ void World::reset() {
         Eigen::Map<Eigen::Matrix3Xd>(m_y.data() + at, 3, b->count()) = b->body().positions;
         perturbStart(b->params().start, b->inverseMass3(), m_y.data() + at);
         for (Eigen::Index k = 0; k < nb; ++k)
-            m_y[m_n + at + k] = b->inverseMass3()[k] != 0.0 ? b->spec().velocity[k % 3] : 0.0;
+            m_y[m_n + at + k] = b->inverseMass3()[k] != 0.0 ? b->startVelocity()[k % 3] : 0.0;
     }
     m_integrator->prepare(m_ode->layout());
     if (m_options.stepDoubling) m_doubling.prepare(m_y.size());

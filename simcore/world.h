@@ -3,9 +3,9 @@
 // (MODEL.md "Several bodies"; the thesis's future work, section 8.3).
 //
 // Where the parts live:
-//   world_body.h     one body: its parameters, its built body placed at its start, its force
+//   internal/world_body.h  one body: its parameters, its built body placed at its start, its force
 //                    model and BodyOde (the one-body simulation's pieces)
-//   world_ode.h      the bodies side by side as one ODE, with the pairs' forces and Jacobians
+//   internal/world_ode.h   the bodies side by side as one ODE, with the pairs' forces and Jacobians
 //   contact_pairs.h  body-body and self contact: the barrier force, the broad phase, gaps and
 //                    the exact intersection test
 //   world.h          (this) the world's description (WorldSpec: built-in scenes, bodyN.key
@@ -32,15 +32,23 @@
 
 #include <Eigen/Core>
 
-#include "contact_pairs.h"
-#include "integrators.h"
-#include "params.h"
-#include "step_doubling.h"
-#include "world_body.h"
+#include "simcore/body.h"
+#include "simcore/contact_pairs.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simcore/step_doubling.h"
 
 namespace simcore {
 
+class WorldBody;
 class WorldOde;
+
+// What a world's body is made of before it is built.
+struct WorldBodySpec {
+    ParameterSet params{SceneKind::Sphere3d};
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  // start centre (centroid) [m]
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // start velocity of every particle [m/s]
+};
 
 // The most bodies a world may hold (the CLI refuses more before anything is built).
 inline constexpr int kMaxBodies = 16;
@@ -146,7 +154,11 @@ public:
 
     const WorldSpec& spec() const { return m_spec; }
     int bodyCount() const { return static_cast<int>(m_bodies.size()); }
-    const WorldBody& body(int k) const { return *m_bodies[static_cast<std::size_t>(k)]; }
+    // Body k (from 0) as built and placed at its start, its first particle in the world's
+    // numbering and its particle count.
+    const Body& body(int k) const;
+    int firstParticle(int k) const;
+    int bodyParticles(int k) const;
     int dimension() const { return m_dimension; }
     int particleCount() const { return static_cast<int>(m_n / 3); }
     const Eigen::VectorXd& state() const { return m_y; }
@@ -159,7 +171,6 @@ public:
     // non-adjacent elements of one layer, about an edge, it would cost more than the forces).
     double gapRange() const { return 2.0 * m_contact.skin; }
     ContactPairs& pairs() { return m_pairs; }
-    WorldOde& ode() { return *m_ode; }
 
     // Measures the current state into d (everything but the accounts and counters).
     void measure(WorldDiagnostics& d);

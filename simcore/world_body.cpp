@@ -1,10 +1,11 @@
-#include "world_body.h"
+#include "simcore/internal/world_body.h"
 
 #include <limits>
 #include <random>
 
-#include "contact.h"
-#include "scenes.h"
+#include "simcore/contact.h"
+#include "simcore/scaling.h"
+#include "simcore/scenes.h"
 
 namespace simcore {
 
@@ -71,18 +72,21 @@ void perturbStart(const Params::Start& start, const Eigen::VectorXd& inverseMass
         if (inverseMass3[k] != 0.0) x[k] += uniform(rng);
 }
 
-WorldBody::WorldBody(const WorldBodySpec& spec, int first, const Eigen::Vector3d& boxCentre)
-    : m_spec(spec), m_p(resolve(spec.params)), m_body(buildBody(spec.params)), m_first(first) {
-    m_scale = bodyScale(spec.params, m_body);
+WorldBody::WorldBody(const ParameterSet& params, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                     int first, const Eigen::Vector3d& boxCentre)
+    : m_params(params), m_velocity(velocity), m_p(resolve(params)), m_first(first) {
+    ScaledBody scaled = buildScaledBody(params, m_p);
+    m_body = std::move(scaled.body);
+    m_scale = scaled.scale;
     // Placed: its centroid at the start position.
-    const Eigen::Vector3d shift = spec.position - centroid(m_body.positions);
+    const Eigen::Vector3d shift = position - centroid(m_body.positions);
     m_body.positions.colwise() += shift;
-    m_forces = ForceModel(&m_body.topology, &m_body.mass, sceneTerms(spec.params.kind()));
+    m_forces = ForceModel(&m_body.topology, &m_body.mass, sceneTerms(params.kind()));
     m_forces.prepareContact(m_body.positions.data(), m_body.fixed);
     m_invMass3 = inverseMasses(m_body);
     m_ode = std::make_unique<BodyOde>(m_body, m_forces, m_invMass3);
     m_contactProjection =
-        configureForces(m_forces, spec.params, m_p, m_scale, m_body.topology.dimension, boxCentre);
+        configureForces(m_forces, params, m_p, m_scale, m_body.topology.dimension, boxCentre);
     m_ode->configure(m_contactProjection, m_p.time.substeps);
     m_totalMass = 0.0;
     for (int i = 0; i < count(); ++i)

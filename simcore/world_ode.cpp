@@ -1,4 +1,4 @@
-#include "world_ode.h"
+#include "simcore/internal/world_ode.h"
 
 #include <algorithm>
 #include <cmath>

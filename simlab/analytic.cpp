@@ -1,9 +1,13 @@
-#include "analytic.h"
+#include "simlab/analytic.h"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::SceneKind;
 
 Eigen::Vector2d dampedOscillator(double w0, double gamma, double z0, double v0, double t) {
     const double e = std::exp(-gamma * t);
@@ -57,4 +61,4 @@ void spring1dExact(const ParameterSet& params, double t, Eigen::Matrix3Xd& x, Ei
     v(1, 1) = vc - 0.5 * ds;
 }
 
-}  // namespace simcore
+}  // namespace simlab

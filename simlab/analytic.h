@@ -9,18 +9,18 @@
 
 #include <Eigen/Core>
 
-#include "params.h"
+#include "simcore/params.h"
 
-namespace simcore {
+namespace simlab {
 
 // Solution of z'' + 2 gamma z' + w0^2 z = 0, z(0) = z0, z'(0) = v0: under-, critically
 // and over-damped. Returns (z, z').
 Eigen::Vector2d dampedOscillator(double w0, double gamma, double z0, double v0, double t);
 
 // Whether the closed form applies: spring1d (collisions must not occur; the caller checks).
-bool hasClosedForm(const ParameterSet& params);
+bool hasClosedForm(const simcore::ParameterSet& params);
 // Positions and velocities (3 x 2 each) of spring1d at time t, from its start state
 // (no perturbation). Requires hasClosedForm(params).
-void spring1dExact(const ParameterSet& params, double t, Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& v);
+void spring1dExact(const simcore::ParameterSet& params, double t, Eigen::Matrix3Xd& x, Eigen::Matrix3Xd& v);
 
-}  // namespace simcore
+}  // namespace simlab

@@ -1,16 +1,21 @@
-#include "gallery.h"
+#include "simlab/gallery.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "simulation.h"
-#include "stability.h"
+#include "simcore/simulation.h"
+#include "simlab/stability.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::SceneKind;
+using simcore::Simulation;
 
 namespace {
 
-using Sets = std::vector<std::pair<std::string, double>>;
+using Sets = std::vector<std::pair<Param, double>>;
 
 GalleryCase make(std::string name, std::string description, SceneKind scene, Sets set, std::string integrator,
                  double duration, bool stable, std::string reason = "") {
@@ -26,46 +31,47 @@ GalleryCase make(std::string name, std::string description, SceneKind scene, Set
     return c;
 }
 
+// Kept whole: a table, one case (or one loop of cases) after another, read top to bottom.
 std::vector<GalleryCase> buildCases() {
     std::vector<GalleryCase> cases;
     const auto ring = SceneKind::Ring2d;
     // --- stiff springs: KS 1e5 - 1e7 with small masses ---
     cases.push_back(make("stiff-1e5-rk4-small-step", "KS=RKS=1e5, mass 0.1 kg, rk4 at dt 1e-4 (below its limit)", ring,
-                         {{"ks", 1e5}, {"rks", 1e5}, {"mass", 0.1}, {"dt", 1e-4}}, "rk4", 0.5, true));
+                         {{Param::Ks, 1e5}, {Param::Rks, 1e5}, {Param::Mass, 0.1}, {Param::Dt, 1e-4}}, "rk4", 0.5, true));
     {
         GalleryCase c = make("stiff-1e5-rk4-too-large", "KS=RKS=1e5, mass 0.1 kg, rk4 at dt 0.003: detected", ring,
-                             {{"ks", 1e5}, {"rks", 1e5}, {"mass", 0.1}, {"dt", 0.003}}, "rk4", 0.5, false, "runaway");
+                             {{Param::Ks, 1e5}, {Param::Rks, 1e5}, {Param::Mass, 0.1}, {Param::Dt, 0.003}}, "rk4", 0.5, false, "runaway");
         c.expectWarning = true;
         cases.push_back(c);
     }
     {
         GalleryCase c = make("stiff-1e6-rk4-fails", "KS 1e6 at dt 0.01: every explicit method fails; rk4 shown", ring,
-                             {{"ks", 1e6}, {"dt", 0.01}}, "rk4", 1.0, false, "runaway");
+                             {{Param::Ks, 1e6}, {Param::Dt, 0.01}}, "rk4", 1.0, false, "runaway");
         c.expectWarning = true;
         cases.push_back(c);
     }
     {
         GalleryCase c = make("stiff-1e6-implicit", "KS 1e6 at dt 0.01: implicit-euler stays stable", ring,
-                             {{"ks", 1e6}, {"dt", 0.01}}, "implicit-euler", 5.0, true);
+                             {{Param::Ks, 1e6}, {Param::Dt, 0.01}}, "implicit-euler", 5.0, true);
         c.lossAllowed = true;
         c.driftTolerance = 0.1;
         cases.push_back(c);
     }
     {
         GalleryCase c = make("stiff-1e7-light-implicit", "KS=RKS=1e7, mass 0.01 kg at dt 0.01: implicit-euler", ring,
-                             {{"ks", 1e7}, {"rks", 1e7}, {"mass", 0.01}, {"dt", 0.01}}, "implicit-euler", 2.0, true);
+                             {{Param::Ks, 1e7}, {Param::Rks, 1e7}, {Param::Mass, 0.01}, {Param::Dt, 0.01}}, "implicit-euler", 2.0, true);
         c.lossAllowed = true;
         c.driftTolerance = 0.1;
         cases.push_back(c);
     }
     {
         GalleryCase c = make("stiff-1e7-light-euler-fails", "KS=RKS=1e7, mass 0.01 kg at dt 0.01: euler", ring,
-                             {{"ks", 1e7}, {"rks", 1e7}, {"mass", 0.01}, {"dt", 0.01}}, "euler", 1.0, false, "runaway");
+                             {{Param::Ks, 1e7}, {Param::Rks, 1e7}, {Param::Mass, 0.01}, {Param::Dt, 0.01}}, "euler", 1.0, false, "runaway");
         c.expectWarning = true;
         cases.push_back(c);
     }
     // --- the thesis's stability experiment (§7.2.2) on the two-layer ring, thesis defaults ---
-    // Outcomes measured on this model (MODEL.md): the two-layer ring's highest mode is far
+    // Outcomes measured on this model (docs/model.md): the two-layer ring's highest mode is far
     // above the single ring's ~55 rad/s, so even rk4 fails at DT 0.03.
     struct Thesis {
         const char* integrator;
@@ -92,7 +98,7 @@ std::vector<GalleryCase> buildCases() {
         char text[160];
         std::snprintf(text, sizeof text, "thesis defaults, two-layer ring, DT %g, %s%s", t.dt, t.integrator,
                       std::string(t.integrator) == "rk45" ? " (adaptive: dt is only its first step)" : "");
-        GalleryCase c = make(name, text, ring, {{"dt", t.dt}}, t.integrator, 5.0, t.stable, t.reason);
+        GalleryCase c = make(name, text, ring, {{Param::Dt, t.dt}}, t.integrator, 5.0, t.stable, t.reason);
         c.expectWarning = !t.stable;
         if (std::string(t.integrator) == "implicit-euler") c.lossAllowed = true, c.driftTolerance = 0.1;
         // First order at 0.003: explicit Euler gains ~27% of the energy scale over 5 s (its
@@ -101,16 +107,16 @@ std::vector<GalleryCase> buildCases() {
         if (std::string(t.integrator) == "symplectic-euler") c.driftTolerance = 0.25;
         cases.push_back(c);
     }
-    // --- MODEL.md's single pressurised ring (w ~ 55 rad/s): the two layers decoupled
+    // --- docs/model.md's single pressurised ring (w ~ 55 rad/s): the two layers decoupled
     // (RKS = RKD = 0), weightless, perturbed. Euler fails at DT 0.03 but not 0.003, midpoint
     // and rk4 survive 0.03, no explicit method survives 0.3. ---
-    const Sets single = {{"rks", 0.0}, {"rkd", 0.0}, {"gravity", 0.0}, {"perturb", 0.01}};
+    const Sets single = {{Param::Rks, 0.0}, {Param::Rkd, 0.0}, {Param::Gravity, 0.0}, {Param::Perturb, 0.01}};
     auto singleRing = [&](const char* integrator, double dt, bool stable) {
         Sets set = single;
-        set.emplace_back("dt", dt);
+        set.emplace_back(Param::Dt, dt);
         char name[64], text[160];
         std::snprintf(name, sizeof name, "single-rings-dt%g-%s", dt, integrator);
-        std::snprintf(text, sizeof text, "decoupled single rings (MODEL.md, w ~ 55 rad/s), DT %g, %s", dt, integrator);
+        std::snprintf(text, sizeof text, "decoupled single rings (docs/model.md, w ~ 55 rad/s), DT %g, %s", dt, integrator);
         GalleryCase c = make(name, text, ring, set, integrator, 3.0, stable, "");
         // The energy scale here is only the perturbation's (~1.4 J): midpoint's start-up error
         // of 0.94 J then stays constant (checked to 30 s), i.e. bounded.
@@ -127,68 +133,68 @@ std::vector<GalleryCase> buildCases() {
     // sinks through and collapses. Physics, detected with its reason, whatever the method.
     cases.push_back(make("heavy-inner-collapses-rk4", "inner 100 kg, outer 1 kg per particle, gravity on: the inner "
                          "layer collapses under its weight (detected)", ring,
-                         {{"mass_inner", 100.0}, {"mass_outer", 1.0}, {"dt", 0.003}}, "rk4", 3.0, false, "collapsed"));
+                         {{Param::MassInner, 100.0}, {Param::MassOuter, 1.0}, {Param::Dt, 0.003}}, "rk4", 3.0, false, "collapsed"));
     cases.push_back(make("heavy-inner-weightless-rk4", "inner 100 kg, outer 1 kg, no gravity, perturbed: rk4 at dt 0.003",
-                         ring, {{"mass_inner", 100.0}, {"mass_outer", 1.0}, {"gravity", 0.0}, {"perturb", 0.05}, {"dt", 0.003}},
+                         ring, {{Param::MassInner, 100.0}, {Param::MassOuter, 1.0}, {Param::Gravity, 0.0}, {Param::Perturb, 0.05}, {Param::Dt, 0.003}},
                          "rk4", 3.0, true));
     {
         // Mass ratio 100:1 the other way: 10 g outer particles make the fastest mode 10x faster.
         GalleryCase c = make("light-outer-rk4-fails", "inner 1 kg, outer 0.01 kg: rk4 at dt 0.003 is above its limit",
-                             ring, {{"mass_inner", 1.0}, {"mass_outer", 0.01}, {"dt", 0.003}}, "rk4", 2.0, false, "");
+                             ring, {{Param::MassInner, 1.0}, {Param::MassOuter, 0.01}, {Param::Dt, 0.003}}, "rk4", 2.0, false, "");
         c.expectWarning = true;
         cases.push_back(c);
     }
     {
         GalleryCase c = make("light-outer-implicit", "inner 1 kg, outer 0.01 kg: implicit-euler at dt 0.003", ring,
-                             {{"mass_inner", 1.0}, {"mass_outer", 0.01}, {"dt", 0.003}}, "implicit-euler", 2.0, true);
+                             {{Param::MassInner, 1.0}, {Param::MassOuter, 0.01}, {Param::Dt, 0.003}}, "implicit-euler", 2.0, true);
         c.lossAllowed = true;
         c.driftTolerance = 0.1;
         cases.push_back(c);
     }
     // --- pressure extremes ---
     cases.push_back(make("pressure-high-rk4", "nRT = 2000 J (100x the default), rk4 at dt 0.001", ring,
-                         {{"pressure", 2000.0}, {"dt", 0.001}}, "rk4", 2.0, true));
+                         {{Param::Pressure, 2000.0}, {Param::Dt, 0.001}}, "rk4", 2.0, true));
     // The ring bursts into the walls at ~130 m/s: the contact force's stiffness and damping at
     // that depth (k d^3 alpha ~ 1e5 1/s per particle) need dt 0.00025; the projection of the
     // thesis program took any impact in one step (contact = force since issue 11).
     cases.push_back(make("pressure-extreme-rk4", "nRT = 1e5 J (5000x): the ring inflates into the walls, rk4 at dt 0.00025",
-                         ring, {{"pressure", 1e5}, {"dt", 0.00025}}, "rk4", 2.0, true));
+                         ring, {{Param::Pressure, 1e5}, {Param::Dt, 0.00025}}, "rk4", 2.0, true));
     {
         GalleryCase c = make("pressure-extreme-implicit", "nRT = 1e5 J, implicit-euler at dt 0.003", ring,
-                             {{"pressure", 1e5}, {"dt", 0.003}}, "implicit-euler", 2.0, true);
+                             {{Param::Pressure, 1e5}, {Param::Dt, 0.003}}, "implicit-euler", 2.0, true);
         c.lossAllowed = true;
         c.driftTolerance = 0.1;
         cases.push_back(c);
     }
     // Without gas the 2D ring's springs alone cannot hold it up on the floor: it folds.
     cases.push_back(make("pressure-zero-collapses-rk4", "no gas (nRT = 0): the 2D ring folds on the floor (detected)",
-                         ring, {{"pressure", 0.0}, {"dt", 0.003}}, "rk4", 3.0, false, "collapsed"));
+                         ring, {{Param::Pressure, 0.0}, {Param::Dt, 0.003}}, "rk4", 3.0, false, "collapsed"));
     cases.push_back(make("pressure-zero-weightless-rk4", "no gas, no gravity, perturbed: rk4 at dt 0.003", ring,
-                         {{"pressure", 0.0}, {"gravity", 0.0}, {"perturb", 0.05}, {"dt", 0.003}}, "rk4", 3.0, true));
+                         {{Param::Pressure, 0.0}, {Param::Gravity, 0.0}, {Param::Perturb, 0.05}, {Param::Dt, 0.003}}, "rk4", 3.0, true));
     cases.push_back(make("pressure-zero-3d-rk4", "3D sphere without gas, rk4 at dt 0.003", SceneKind::Sphere3d,
-                         {{"pressure", 0.0}, {"subdivisions", 1.0}, {"dt", 0.003}}, "rk4", 2.0, true));
+                         {{Param::Pressure, 0.0}, {Param::Subdivisions, 1.0}, {Param::Dt, 0.003}}, "rk4", 2.0, true));
     // --- high-speed impact ---
     {
         GalleryCase c = make("impact-5mps-rk4", "launched at 5 m/s onto the floor (1.6x the default drop speed), rk4 at dt 0.001", ring,
-                             {{"dt", 0.001}}, "rk4", 1.0, true);
+                             {{Param::Dt, 0.001}}, "rk4", 1.0, true);
         c.launch = Eigen::Vector3d(0.0, -5.0, 0.0);
         cases.push_back(c);
     }
     {
         GalleryCase c = make("impact-30mps-rk4", "launched at 30 m/s onto the floor: crushed (detected; already at 10 m/s the inner layer folds)", ring,
-                             {{"dt", 0.001}}, "rk4", 1.0, false, "inner layer");
+                             {{Param::Dt, 0.001}}, "rk4", 1.0, false, "inner layer");
         c.launch = Eigen::Vector3d(0.0, -30.0, 0.0);
         cases.push_back(c);
     }
     {
         GalleryCase c = make("impact-300mps-rk4", "launched at 300 m/s onto the floor, rk4 at dt 0.003: detected",
-                             ring, {{"dt", 0.003}}, "rk4", 1.0, false, "");
+                             ring, {{Param::Dt, 0.003}}, "rk4", 1.0, false, "");
         c.launch = Eigen::Vector3d(0.0, -300.0, 0.0);
         cases.push_back(c);
     }
     {
         GalleryCase c = make("impact-10mps-implicit", "launched at 10 m/s, implicit-euler at dt 0.01: survives where rk4 folds, by numerical damping", ring,
-                             {{"dt", 0.01}}, "implicit-euler", 1.0, true);
+                             {{Param::Dt, 0.01}}, "implicit-euler", 1.0, true);
         c.launch = Eigen::Vector3d(0.0, -10.0, 0.0);
         c.lossAllowed = true;
         c.driftTolerance = 0.1;
@@ -196,24 +202,24 @@ std::vector<GalleryCase> buildCases() {
     }
     // --- nearly coincident particles ---
     cases.push_back(make("near-coincident-layers", "radius_inner 1.999, radius_outer 2: radius springs 1 mm long, rk4",
-                         ring, {{"radius_inner", 1.999}, {"dt", 0.001}}, "rk4", 1.0, true));
+                         ring, {{Param::RadiusInner, 1.999}, {Param::Dt, 0.001}}, "rk4", 1.0, true));
     cases.push_back(make("near-coincident-spring1d", "1D spring of rest length 1 um starting at 1 um, rk4 at dt 1e-4",
-                         SceneKind::Spring1d, {{"length", 1e-6}, {"initial_length", 1e-6}, {"dt", 1e-4}}, "rk4", 0.5,
+                         SceneKind::Spring1d, {{Param::Length, 1e-6}, {Param::InitialLength, 1e-6}, {Param::Dt, 1e-4}}, "rk4", 0.5,
                          true));
     // --- restitution extremes ---
     // e = 0 as a contact force would need unbounded damping (alpha = zeta(e) / v_ref with
     // zeta -> infinity, docs/numerics.md): perfectly inelastic walls are the projection's.
     cases.push_back(make("restitution-0", "perfectly inelastic walls (e = 0, contact = projection), rk4 at dt 0.003", ring,
-                         {{"restitution", 0.0}, {"dt", 0.003}, {"contact", 1.0}}, "rk4", 3.0, true));
+                         {{Param::Restitution, 0.0}, {Param::Dt, 0.003}, {Param::Contact, 1.0}}, "rk4", 3.0, true));
     cases.push_back(make("restitution-1", "perfectly elastic walls (e = 1), rk4 at dt 0.003", ring,
-                         {{"restitution", 1.0}, {"dt", 0.003}}, "rk4", 3.0, true));
+                         {{Param::Restitution, 1.0}, {Param::Dt, 0.003}}, "rk4", 3.0, true));
     // --- production solvers (issue 13): CVODE's BDF and XPBD on the two kinds of stiffness ---
     // Dissipative stiffness (overdamped springs: real eigenvalues down to -2 kd / m): BDF's
     // steps follow the slow motion (measured at atol = rtol = 1e-4: 80 steps, 6,903 force
     // evaluations with the Jacobian products, against rk45's 329,791). BDF wins.
     cases.push_back(make("stiff-dissipative-cvode-bdf",
                          "KS=KD=RKS=RKD=1e4, weightless, perturbed: cvode-bdf takes steps of the slow motion", ring,
-                         {{"ks", 1e4}, {"kd", 1e4}, {"rks", 1e4}, {"rkd", 1e4}, {"gravity", 0.0}, {"perturb", 0.1}},
+                         {{Param::Ks, 1e4}, {Param::Kd, 1e4}, {Param::Rks, 1e4}, {Param::Rkd, 1e4}, {Param::Gravity, 0.0}, {Param::Perturb, 0.1}},
                          "cvode-bdf", 2.0, true));
     // Oscillatory stiffness (stiff, lightly damped springs: eigenvalues near the imaginary
     // axis): to be accurate BDF must follow every oscillation, and BDF 3-5 are not stable on
@@ -221,12 +227,12 @@ std::vector<GalleryCase> buildCases() {
     // products against rk45's 7,602). BDF loses.
     cases.push_back(make("stiff-oscillatory-cvode-bdf",
                          "KS=RKS=1e6, weightless, perturbed 0.05: cvode-bdf must resolve the oscillation", ring,
-                         {{"ks", 1e6}, {"rks", 1e6}, {"gravity", 0.0}, {"perturb", 0.05}}, "cvode-bdf", 0.5, true));
+                         {{Param::Ks, 1e6}, {Param::Rks, 1e6}, {Param::Gravity, 0.0}, {Param::Perturb, 0.05}}, "cvode-bdf", 0.5, true));
     {
         // The same stiff ring at a game's DT 1/60 (RK4 fails: stiff-1e6-rk4-fails): XPBD with
         // its default 8 substeps stays stable, dissipating (one-sided drift).
         GalleryCase c = make("stiff-1e6-xpbd-60hz", "KS=RKS=1e6, weightless, perturbed 0.05, xpbd at dt 1/60 (8 substeps)",
-                             ring, {{"ks", 1e6}, {"rks", 1e6}, {"gravity", 0.0}, {"perturb", 0.05}, {"dt", 1.0 / 60.0}},
+                             ring, {{Param::Ks, 1e6}, {Param::Rks, 1e6}, {Param::Gravity, 0.0}, {Param::Perturb, 0.05}, {Param::Dt, 1.0 / 60.0}},
                              "xpbd", 5.0, true);
         c.lossAllowed = true;
         cases.push_back(c);
@@ -249,8 +255,8 @@ const GalleryCase* findGalleryCase(const std::string& name) {
 
 ParameterSet galleryParameters(const GalleryCase& c) {
     ParameterSet p(c.scene);
-    for (const auto& [key, value] : c.set)
-        if (auto error = p.set(key, value)) throw std::invalid_argument("gallery case " + c.name + ": " + *error);
+    for (const auto& [id, value] : c.set)
+        if (auto error = p.set(id, value)) throw std::invalid_argument("gallery case " + c.name + ": " + *error);
     return p;
 }
 
@@ -301,4 +307,4 @@ GalleryOutcome runGalleryCase(const GalleryCase& c) {
     return o;
 }
 
-}  // namespace simcore
+}  // namespace simlab

@@ -3,7 +3,7 @@
 //
 // An outcome is either "stays stable and within tolerance" (no failure, finite state, the
 // energy balance within a stated fraction of the energy the body can convert) or "is detected
-// as failed with a clear reason" (Simulation's checks: a named cause, the last good state
+// as failed with a clear reason" (simcore::Simulation's checks: a named cause, the last good state
 // kept). Never a NaN, a hang or a crash: every case has a bounded number of steps.
 // Each case is a CTest test (tests/CMakeLists.txt, gallery_<name>) and `elastic-lab-cli
 // gallery --run NAME` runs it by hand. Expectations were measured on the reference machine
@@ -15,15 +15,15 @@
 
 #include <Eigen/Core>
 
-#include "params.h"
+#include "simcore/params.h"
 
-namespace simcore {
+namespace simlab {
 
 struct GalleryCase {
     std::string name;
     std::string description;
-    SceneKind scene = SceneKind::Ring2d;
-    std::vector<std::pair<std::string, double>> set;  // parameters (key, value)
+    simcore::SceneKind scene = simcore::SceneKind::Ring2d;
+    std::vector<std::pair<simcore::Param, double>> set;  // parameters (id, value)
     std::string integrator = "rk4";
     double duration = 2.0;                            // [s]
     Eigen::Vector3d launch = Eigen::Vector3d::Zero(); // start velocity of every particle [m/s]
@@ -49,7 +49,7 @@ struct GalleryOutcome {
 
 const std::vector<GalleryCase>& galleryCases();
 const GalleryCase* findGalleryCase(const std::string& name);
-ParameterSet galleryParameters(const GalleryCase& c);
+simcore::ParameterSet galleryParameters(const GalleryCase& c);
 GalleryOutcome runGalleryCase(const GalleryCase& c);
 
-}  // namespace simcore
+}  // namespace simlab

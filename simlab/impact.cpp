@@ -1,11 +1,16 @@
-#include "impact.h"
+#include "simlab/impact.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "simulation.h"
+#include "simcore/simulation.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::SceneKind;
+using simcore::Simulation;
 
 namespace {
 
@@ -89,4 +94,4 @@ ImpactRow measureImpact(const ParameterSet& params, const std::string& integrato
     return row;
 }
 
-}  // namespace simcore
+}  // namespace simlab

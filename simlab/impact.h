@@ -7,9 +7,9 @@
 
 #include <string>
 
-#include "params.h"
+#include "simcore/params.h"
 
-namespace simcore {
+namespace simlab {
 
 struct ImpactRow {
     double speed = 0.0;     // impact speed [m/s]
@@ -23,6 +23,6 @@ struct ImpactRow {
 // params: the scene (its contact, restitution, stiffness, mass and box are used; gravity is
 // set to 0). The step: dt(speed) = min(params dt, 3e-4 s / speed) (contact lasts longer than
 // ~0.01 s / speed^(1/2) here; tested to converge).
-ImpactRow measureImpact(const ParameterSet& params, const std::string& integrator, double speed);
+ImpactRow measureImpact(const simcore::ParameterSet& params, const std::string& integrator, double speed);
 
-}  // namespace simcore
+}  // namespace simlab

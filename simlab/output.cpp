@@ -1,4 +1,4 @@
-#include "output.h"
+#include "simlab/output.h"
 
 #include <sys/stat.h>
 
@@ -11,7 +11,14 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Diagnostics;
+using simcore::SceneKind;
+using simcore::Simulation;
+using simcore::hasGas;
+using simcore::layerName;
+using simcore::quoteShort;
 
 AtomicFile::AtomicFile(std::string path) : m_path(std::move(path)) {
     if (m_path.empty()) {
@@ -262,8 +269,8 @@ std::optional<std::string> fileClash(const std::vector<std::pair<std::string, st
     return std::nullopt;
 }
 
-std::vector<WorldCsvColumn> worldColumns(const World& world) {
-    using D = WorldDiagnostics;
+std::vector<WorldCsvColumn> worldColumns(const simcore::World& world) {
+    using D = simcore::WorldDiagnostics;
     const bool three = world.dimension() == 3;
     std::vector<WorldCsvColumn> c = {
         {"step", [](const D& d) { return static_cast<double>(d.step); }},
@@ -312,15 +319,15 @@ std::vector<WorldCsvColumn> worldColumns(const World& world) {
 
 std::string csvHeader(const std::vector<WorldCsvColumn>& columns) { return headerOf(columns); }
 
-std::string csvRow(const std::vector<WorldCsvColumn>& columns, const WorldDiagnostics& d) { return rowOf(columns, d); }
+std::string csvRow(const std::vector<WorldCsvColumn>& columns, const simcore::WorldDiagnostics& d) { return rowOf(columns, d); }
 
-std::string stateTable(const World& world) {
+std::string stateTable(const simcore::World& world) {
     std::string text = "index,body,layer,x,y,z,vx,vy,vz\n";
     for (int k = 0; k < world.bodyCount(); ++k) {
         const auto x = world.positions(k);
         const auto v = world.velocities(k);
-        const auto& layers = world.body(k).body().topology.layer;
-        for (int i = 0; i < world.body(k).count(); ++i) {
+        const auto& layers = world.body(k).topology.layer;
+        for (int i = 0; i < world.bodyParticles(k); ++i) {
             text += std::to_string(i);
             text += ',';
             text += std::to_string(k + 1);
@@ -334,4 +341,4 @@ std::string stateTable(const World& world) {
     return text;
 }
 
-}  // namespace simcore
+}  // namespace simlab

@@ -15,10 +15,10 @@
 #include <string_view>
 #include <vector>
 
-#include "simulation.h"
-#include "world.h"
+#include "simcore/simulation.h"
+#include "simcore/world.h"
 
-namespace simcore {
+namespace simlab {
 
 class AtomicFile {
 public:
@@ -54,39 +54,39 @@ std::optional<std::string> fileClash(const std::vector<std::pair<std::string, st
 // One CSV column: its header name and how to read it from the diagnostics.
 struct CsvColumn {
     std::string name;
-    std::function<double(const Diagnostics&)> value;
+    std::function<double(const simcore::Diagnostics&)> value;
 };
 
 // The time-series columns of a scene: only what the scene has (no gas columns in 1D). With
-// solverCounters (a CVODE integrator: Diagnostics::hasSolverCounters) the solver's cumulative
+// solverCounters (a CVODE integrator: simcore::Diagnostics::hasSolverCounters) the solver's cumulative
 // counters follow: force_evals (every force evaluation and every Jacobian-vector product),
 // solver_steps, rhs_evals, jac_products, linear_iterations, precond_iterations,
 // nonlinear_iterations, error_test_failures, convergence_failures, reinits, order, step_size.
-std::vector<CsvColumn> timeSeriesColumns(SceneKind kind, bool solverCounters = false);
+std::vector<CsvColumn> timeSeriesColumns(simcore::SceneKind kind, bool solverCounters = false);
 std::string csvHeader(const std::vector<CsvColumn>& columns);
-std::string csvRow(const std::vector<CsvColumn>& columns, const Diagnostics& d);
+std::string csvRow(const std::vector<CsvColumn>& columns, const simcore::Diagnostics& d);
 // Shortest text that reads back to the same double.
 std::string formatDouble(double value);
 
 // index,layer,x,y,z,vx,vy,vz: one row per particle.
-std::string stateTable(const Simulation& sim);
+std::string stateTable(const simcore::Simulation& sim);
 
-// The time series of a world of several bodies (world.h): step, t, dt, the energies of the
-// whole world and its ledger, the error estimate; then per body N (from 1) volume_inner_N,
+// The time series of a world of several bodies (simcore/world.h): step, t, dt, the energies of
+// the whole world and its ledger, the error estimate; then per body N (from 1) volume_inner_N,
 // volume_outer_N, pressure_inner_N, pressure_outer_N, com_x_N, com_y_N[, com_z_N],
 // velocity_x_N, velocity_y_N[, velocity_z_N] (the centre of mass and its velocity; z only in
-// 3D); then momentum_x, momentum_y[, momentum_z], angular_momentum_z (3D: _x, _y, _z too) and
+// 3D); then momentum_x, momentum_y[, momentum_z], angular_momentum_z (3D: _x, _y, _z) and
 // min_gap, the smallest distance between two bodies' outer surfaces or two non-adjacent
-// elements of one [m].
+// elements of one [m] (exact up to simcore::World::gapRange()).
 struct WorldCsvColumn {
     std::string name;
-    std::function<double(const WorldDiagnostics&)> value;
+    std::function<double(const simcore::WorldDiagnostics&)> value;
 };
-std::vector<WorldCsvColumn> worldColumns(const World& world);
+std::vector<WorldCsvColumn> worldColumns(const simcore::World& world);
 std::string csvHeader(const std::vector<WorldCsvColumn>& columns);
-std::string csvRow(const std::vector<WorldCsvColumn>& columns, const WorldDiagnostics& d);
+std::string csvRow(const std::vector<WorldCsvColumn>& columns, const simcore::WorldDiagnostics& d);
 // index,body,layer,x,y,z,vx,vy,vz: one row per particle, the body numbered from 1 and the
 // index the particle's within its body.
-std::string stateTable(const World& world);
+std::string stateTable(const simcore::World& world);
 
-}  // namespace simcore
+}  // namespace simlab

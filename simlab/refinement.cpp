@@ -1,17 +1,36 @@
-#include "refinement.h"
+#include "simlab/refinement.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
-#include "body.h"
-#include "forces.h"
-#include "output.h"
-#include "simulation.h"
-#include "stability.h"
+#include "simcore/body.h"
+#include "simcore/forces.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
+#include "simlab/stability.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Body;
+using simcore::IntegratorOptions;
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::SceneKind;
+using simcore::Simulation;
+using simcore::SpringFamily;
+using simcore::SpringSet;
+using simcore::Surface;
+using simcore::Topology;
+using simcore::buildBody;
+using simcore::enclosedVolume;
+using simcore::integratorNames;
+using simcore::layerSlot;
+using simcore::makeIntegrator;
+using simcore::paramSpec;
+using simcore::validateShape;
 
 namespace {
 
@@ -118,14 +137,19 @@ std::string RefinementRow::status() const {
     return "failed@" + formatDouble(failedAt) + (reason.empty() ? "" : ": " + reason);
 }
 
-std::string refinementKey(SceneKind kind) {
+std::optional<Param> refinementParam(SceneKind kind) {
     switch (kind) {
-        case SceneKind::Ring2d: return "particles";
-        case SceneKind::Sphere3d: return "subdivisions";
-        case SceneKind::Sphere3dLatLong: return "slices";
+        case SceneKind::Ring2d: return Param::Particles;
+        case SceneKind::Sphere3d: return Param::Subdivisions;
+        case SceneKind::Sphere3dLatLong: return Param::Slices;
         case SceneKind::Spring1d: break;
     }
-    return "";
+    return std::nullopt;
+}
+
+std::string refinementKey(SceneKind kind) {
+    const std::optional<Param> id = refinementParam(kind);
+    return id ? std::string(paramSpec(*id).key) : std::string();
 }
 
 ParameterSet refinementLevel(const RefinementSpec& spec, int value) {
@@ -382,4 +406,4 @@ std::string refinementSvg(const RefinementSpec& spec, const RefinementResult& re
     return logLogSvg(panels, title);
 }
 
-}  // namespace simcore
+}  // namespace simlab

@@ -46,14 +46,14 @@
 #include <string>
 #include <vector>
 
-#include "integrators.h"
-#include "params.h"
-#include "study.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simlab/study.h"
 
-namespace simcore {
+namespace simlab {
 
 struct RefinementSpec {
-    ParameterSet params{SceneKind::Ring2d};  // the body; its resolution key is set per level
+    simcore::ParameterSet params{simcore::SceneKind::Ring2d};  // the body; its resolution key is set per level
     std::string key;                 // the scene's resolution key: particles, subdivisions or slices
                                      // (lat/long: stacks = slices / 2 at every level)
     std::vector<int> values;         // the levels (at least two); the one with most particles is the reference
@@ -63,7 +63,7 @@ struct RefinementSpec {
     double duration = 1.0;           // T [s]
     double interval = 0.01;          // output grid spacing [s]; T must be a whole multiple
     int temporalRuns = 4;            // runs of the temporal curve (2^k dt or 10^k tol, k = 1..), 0 = none
-    IntegratorOptions options;       // base options (rk45's tolerances are overridden)
+    simcore::IntegratorOptions options;       // base options (rk45's tolerances are overridden)
 };
 
 // One resolution.
@@ -113,12 +113,14 @@ struct SpatialOrder {
     int points = 0;
 };
 
-// The keys a scene refines with ("particles" for ring2d, ...); empty for the 1D spring.
-std::string refinementKey(SceneKind kind);
+// The parameter a scene refines with (Param::Particles for ring2d, ...); none for the 1D spring.
+std::optional<simcore::Param> refinementParam(simcore::SceneKind kind);
+// Its key, for messages and the command line ("particles"); empty for the 1D spring.
+std::string refinementKey(simcore::SceneKind kind);
 // Validates the spec (key, levels, step, tolerances, grid): a message naming the problem, or nothing.
 std::optional<std::string> validateRefinement(const RefinementSpec& spec);
 // The parameters of one level (the key set; lat/long: stacks = slices / 2).
-ParameterSet refinementLevel(const RefinementSpec& spec, int value);
+simcore::ParameterSet refinementLevel(const RefinementSpec& spec, int value);
 // The step of the study and one line saying how it was chosen (header comment).
 std::pair<double, std::string> refinementStep(const RefinementSpec& spec);
 
@@ -139,4 +141,4 @@ std::string refinementCsvRow(const std::string& key, const RefinementRow& row);
 // spatial curve) and for the steps of the temporal curve, side by side on the same axes.
 std::string refinementSvg(const RefinementSpec& spec, const RefinementResult& result, const std::string& title);
 
-}  // namespace simcore
+}  // namespace simlab

@@ -1,4 +1,4 @@
-#include "scenefile.h"
+#include "simlab/scenefile.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -12,11 +12,27 @@
 
 #include <nlohmann/json.hpp>
 
-#include "output.h"
-#include "scenes.h"
-#include "simulation.h"
+#include "simcore/integrator_table.h"
+#include "simcore/scenes.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Param;
+using simcore::ParamSpec;
+using simcore::ParameterSet;
+using simcore::SceneInfo;
+using simcore::Simulation;
+using simcore::bodySize;
+using simcore::findParam;
+using simcore::findScene;
+using simcore::integratorNames;
+using simcore::makeIntegrator;
+using simcore::parametersFor;
+using simcore::quoteShort;
+using simcore::sceneNames;
+using simcore::validateShape;
 
 namespace {
 
@@ -305,4 +321,4 @@ std::optional<std::string> applyState(Simulation& sim, const SceneFile::State& s
     return std::nullopt;
 }
 
-}  // namespace simcore
+}  // namespace simlab

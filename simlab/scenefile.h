@@ -25,17 +25,19 @@
 
 #include <Eigen/Core>
 
-#include "params.h"
+#include "simcore/params.h"
 
 namespace simcore {
-
 class Simulation;
+}  // namespace simcore
+
+namespace simlab {
 
 inline constexpr int kSceneFormatVersion = 3;
 
 struct SceneFile {
     std::string sceneName;
-    ParameterSet params;
+    simcore::ParameterSet params;
     std::string integrator = "rk4";
     struct State {
         long step = 0;
@@ -66,8 +68,8 @@ InputFile readInputFile(const std::string& path, const std::string& what);
 SceneFileResult readSceneFile(const std::string& path);
 
 // The JSON text of a simulation (with its state when withState).
-std::string sceneFileText(const Simulation& sim, const std::string& sceneName, bool withState);
+std::string sceneFileText(const simcore::Simulation& sim, const std::string& sceneName, bool withState);
 // Restores a saved state into a simulation built from the same file; error text or nothing.
-std::optional<std::string> applyState(Simulation& sim, const SceneFile::State& state);
+std::optional<std::string> applyState(simcore::Simulation& sim, const SceneFile::State& state);
 
-}  // namespace simcore
+}  // namespace simlab

@@ -1,4 +1,4 @@
-#include "stability.h"
+#include "simlab/stability.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,11 +7,24 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "integrators.h"
-#include "output.h"
-#include "simulation.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/simulation.h"
+#include "simlab/output.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::Diagnostics;
+using simcore::Integrator;
+using simcore::IntegratorOptions;
+using simcore::OdeSystem;
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::Simulation;
+using simcore::Term;
+using simcore::hasStabilityFunction;
+using simcore::kExplicitStabilityLimit;
+using simcore::stabilityFunction;
 
 namespace {
 
@@ -443,4 +456,4 @@ std::string stabilityCsvRow(const StabilityRow& row, const LinearModes& modes) {
            num(row.stable * modes.omegaMax) + ',' + num(row.predicted * modes.omegaMax) + ',' + reason + '\n';
 }
 
-}  // namespace simcore
+}  // namespace simlab

@@ -2,7 +2,7 @@
 // Stability: the largest stable step, measured and predicted, side by side.
 //
 // Measured: bisection on dt per integrator. A run is stable when it does not fail (NaN,
-// runaway speed or energy, collapsed layer: Simulation's checks) and its energy stays bounded
+// runaway speed or energy, collapsed layer: simcore::Simulation's checks) and its energy stays bounded
 // over T, from a seeded small perturbation of the rest state: the energy balance is unbounded
 // when its gain exceeds half the energy the body can plausibly convert (gravity over the box
 // height + the start's kinetic and elastic energy + 1 J) and its largest gain in the second
@@ -33,9 +33,13 @@
 #include <string>
 #include <vector>
 
-#include "params.h"
+#include "simcore/params.h"
 
 namespace simcore {
+class Simulation;
+}  // namespace simcore
+
+namespace simlab {
 
 struct LinearModes {
     int freeCoordinates = 0;
@@ -69,7 +73,7 @@ inline constexpr int kDenseModeLimit = 1200;
 // (a dense non-symmetric eigen-solve of twice that size: ~1 s at 400). denseLimit: up to this
 // many, all modes (dense symmetric eigen-solve); above it the highest mode alone, by power
 // iteration on the Jacobian products (dense = false).
-LinearModes linearModes(const ParameterSet& params, int exactEigenLimit = kExactEigenLimit,
+LinearModes linearModes(const simcore::ParameterSet& params, int exactEigenLimit = kExactEigenLimit,
                         int denseLimit = kDenseModeLimit);
 
 // Spectral radius of one step of `integrator` on x'' + c x' + w^2 x = 0.
@@ -79,7 +83,7 @@ double modeAmplification(const std::string& integrator, double h, double omega, 
 double predictedStableStep(const std::string& integrator, const LinearModes& modes, double hMax = 10.0);
 
 struct StabilitySpec {
-    ParameterSet params{SceneKind::Ring2d};
+    simcore::ParameterSet params{simcore::SceneKind::Ring2d};
     std::vector<std::string> integrators;
     double duration = 2.0;      // T [s]
     double perturb = 0.01;      // used when params has no explicit perturb [m]
@@ -121,11 +125,10 @@ std::vector<std::string> shardNames(const std::vector<std::string>& names, int s
 // The pre-run check: for an explicit fixed-step method, dt above an estimate of its largest
 // stable step gives a warning text. Bodies up to kWarningDenseLimit free coordinates use the
 // method's linearised prediction (predictedStableStep: all modes, well under 0.1 s); larger
-// ones the per-particle rate of Simulation::estimatedFastestRate against
+// ones the per-particle rate of simcore::Simulation::estimatedFastestRate against
 // kExplicitStabilityLimit. Adaptive rk45 and implicit-euler never warn.
 inline constexpr int kWarningDenseLimit = 600;
-class Simulation;
-std::optional<std::string> preRunStabilityWarning(const Simulation& sim);
+std::optional<std::string> preRunStabilityWarning(const simcore::Simulation& sim);
 // The same check with what to do about it: the warning and a step that the same estimate
 // predicts stable (0.9 of the limit, rounded down to two significant digits), for the GUI's
 // one-click offer and the CLI's advice. Nothing when the current dt is fine.
@@ -133,16 +136,16 @@ struct StabilityAdvice {
     std::string message;
     double suggestedDt = 0.0;  // [s]
 };
-std::optional<StabilityAdvice> stabilityAdvice(const Simulation& sim);
+std::optional<StabilityAdvice> stabilityAdvice(const simcore::Simulation& sim);
 // x rounded down to two significant digits (0.000734 -> 0.00073).
 double roundDownTwoDigits(double x);
 
 // The energy a body can plausibly convert from its current state [J]: 1 J + its kinetic and
 // elastic energy + its weight falling the box height + each gas expanding 100-fold (c ln 100).
 // The yardstick of "bounded energy" here and of the gallery's tolerances.
-double convertibleEnergy(const Simulation& sim);
+double convertibleEnergy(const simcore::Simulation& sim);
 
 std::string stabilityCsvHeader();  // integrator,dt_stable,dt_unstable,dt_predicted,h_omega_stable,reason
 std::string stabilityCsvRow(const StabilityRow& row, const LinearModes& modes);
 
-}  // namespace simcore
+}  // namespace simlab

@@ -1,4 +1,4 @@
-#include "stability_region.h"
+#include "simlab/stability_region.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,13 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "integrators.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::hasStabilityFunction;
+using simcore::stabilityFunction;
 
 namespace {
 
@@ -373,4 +377,4 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
     return margin;
 }
 
-}  // namespace simcore
+}  // namespace simlab

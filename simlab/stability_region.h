@@ -35,9 +35,9 @@
 #include <string>
 #include <vector>
 
-#include "stability.h"
+#include "simlab/stability.h"
 
-namespace simcore {
+namespace simlab {
 
 enum class RegionKind {
     StabilityFunction,  // |R(z)| <= 1, R rational: euler, midpoint, rk4, rk45, implicit-euler
@@ -92,4 +92,4 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
 // The first exit factor of s·z from the region along its ray, up to sMax (inf beyond).
 double rayExit(const std::string& integrator, std::complex<double> z, double sMax = 1e6);
 
-}  // namespace simcore
+}  // namespace simlab

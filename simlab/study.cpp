@@ -1,4 +1,4 @@
-#include "study.h"
+#include "simlab/study.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,11 +7,20 @@
 #include <sstream>
 #include <tuple>
 
-#include "analytic.h"
-#include "output.h"
-#include "simulation.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/analytic.h"
+#include "simlab/output.h"
 
-namespace simcore {
+namespace simlab {
+
+using simcore::IntegratorOptions;
+using simcore::Param;
+using simcore::ParameterSet;
+using simcore::Simulation;
+using simcore::integratorNames;
+using simcore::makeIntegrator;
+using simcore::parseNumber;
 
 namespace {
 
@@ -539,4 +548,4 @@ const char* studyColour(std::string_view integrator) {
     return it == colours.end() ? "#7f7f7f" : it->second;
 }
 
-}  // namespace simcore
+}  // namespace simlab

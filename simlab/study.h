@@ -15,7 +15,7 @@
 //   error_energy  largest |energy balance drift| over all steps                        [J]
 //
 // Adaptive rk45, cvode-bdf and cvode-adams are swept over tolerances (atol = rtol = tol)
-// instead of steps; their dt is then the mean step T / steps. With IntegratorOptions::fixedStep
+// instead of steps; their dt is then the mean step T / steps. With simcore::IntegratorOptions::fixedStep
 // rk45 takes the steps given (the CVODE methods are always adaptive).
 // Qt-free: the CLI (`elastic-lab-cli study`) and the GUI call the same code.
 
@@ -29,15 +29,17 @@
 
 #include <Eigen/Core>
 
-#include "integrators.h"
-#include "params.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
 
 namespace simcore {
-
 class Simulation;
+}  // namespace simcore
+
+namespace simlab {
 
 struct StudySpec {
-    ParameterSet params{SceneKind::Spring1d};  // the scene; its dt is ignored
+    simcore::ParameterSet params{simcore::SceneKind::Spring1d};  // the scene; its dt is ignored
     std::vector<std::string> integrators;
     std::vector<double> dts;                   // fixed steps [s]; T must be a multiple of each
     std::vector<double> tolerances{1e-4, 1e-6, 1e-8, 1e-10};  // adaptive rk45 sweep
@@ -45,7 +47,7 @@ struct StudySpec {
     int repeat = 1;                            // timing: median of this many runs
     std::string reference = "auto";            // auto | exact | rk4 | rk45 | cvode-bdf
     int samples = 20;                          // output grid size for error_max (at most)
-    IntegratorOptions options;                 // base options (tolerances are overridden)
+    simcore::IntegratorOptions options;                 // base options (tolerances are overridden)
     int shardIndex = 0;                        // 0-based shard of shardCount
     int shardCount = 1;
 };
@@ -155,9 +157,9 @@ struct SampledRun {
     double wallSeconds = 0.0;    // stepping only [s]
     double maxDrift = 0.0;       // largest |energy balance drift| over the steps [J]
 };
-SampledRun runSampled(const ParameterSet& params, const std::string& integrator, double dt,
-                      const IntegratorOptions& options, const std::vector<double>& grid,
-                      const std::function<void(const Simulation&)>& sample,
+SampledRun runSampled(const simcore::ParameterSet& params, const std::string& integrator, double dt,
+                      const simcore::IntegratorOptions& options, const std::vector<double>& grid,
+                      const std::function<void(const simcore::Simulation&)>& sample,
                       const std::atomic<bool>* cancel = nullptr);
 
 // Log-log line plots side by side as SVG (each panel its own decades). A series is a polyline
@@ -176,4 +178,4 @@ struct SvgPanel {
 };
 std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& title);
 
-}  // namespace simcore
+}  // namespace simlab

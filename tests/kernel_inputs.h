@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "force_kernels.h"
-#include "forces.h"
+#include "simcore/force_kernels.h"
+#include "simcore/forces.h"
 
 namespace kernel_inputs {
 

@@ -6,7 +6,7 @@
 #include <initializer_list>
 #include <utility>
 
-#include "params.h"
+#include "simcore/params.h"
 
 namespace testsupport {
 

@@ -1,4 +1,4 @@
-// Body builders: counts, uniqueness, orientation and exact rest volumes (MODEL.md "Bodies").
+// Body builders: counts, uniqueness, orientation and exact rest volumes (docs/model.md "Bodies").
 #include <QtTest>
 
 #include <cmath>
@@ -6,7 +6,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "body.h"
+#include "simcore/body.h"
+#include "simcore/scaling.h"
 
 using namespace simcore;
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "camera.h"
+#include "ui/camera.h"
 
 using elui::Camera;
 

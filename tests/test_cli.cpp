@@ -12,8 +12,8 @@
 #include <cmath>
 #include <csignal>
 
-#include "params.h"
-#include "scenes.h"
+#include "simcore/params.h"
+#include "simcore/scenes.h"
 
 namespace {
 

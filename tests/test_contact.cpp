@@ -7,16 +7,17 @@
 
 #include <cmath>
 
-#include "contact.h"
-#include "impact.h"
-#include "scenefile.h"
-#include "simulation.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/contact.h"
+#include "simcore/simulation.h"
+#include "simlab/impact.h"
+#include "simlab/scenefile.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
 #include "sim_test_support.h"
 
 using namespace simcore;
+using namespace simlab;
 
 namespace {
 

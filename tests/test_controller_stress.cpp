@@ -10,9 +10,9 @@
 
 #include <malloc.h>
 
-#include "sim_worker.h"
-#include "simulation_controller.h"
 #include "test_support.h"
+#include "ui/sim_worker.h"
+#include "ui/simulation_controller.h"
 
 using namespace elui;
 

@@ -4,12 +4,14 @@
 
 #include <cmath>
 
-#include "analytic.h"
 #include "cli_process.h"
 #include "sim_test_support.h"
-#include "simulation.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/analytic.h"
 
 using namespace simcore;
+using namespace simlab;
 
 namespace {
 

@@ -9,9 +9,9 @@
 #include <cstring>
 #include <random>
 
-#include "force_kernels.h"
-#include "forces.h"
 #include "kernel_inputs.h"
+#include "simcore/force_kernels.h"
+#include "simcore/forces.h"
 
 using namespace simcore;
 namespace kernels = simcore::kernels;

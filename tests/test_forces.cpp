@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "forces.h"
-#include "simulation.h"
+#include "simcore/forces.h"
+#include "simcore/simulation.h"
 
 using namespace simcore;
 

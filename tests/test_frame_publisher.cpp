@@ -5,8 +5,8 @@
 
 #include <memory>
 
-#include "frame_publisher.h"
-#include "simulation.h"
+#include "simcore/simulation.h"
+#include "ui/frame_publisher.h"
 
 using namespace elui;
 

@@ -5,9 +5,10 @@
 
 #include <cmath>
 
-#include "gallery.h"
+#include "simlab/gallery.h"
 
 using namespace simcore;
+using namespace simlab;
 
 class TestGallery : public QObject {
     Q_OBJECT

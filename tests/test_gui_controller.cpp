@@ -6,9 +6,9 @@
 #include <atomic>
 #include <cmath>
 
-#include "sim_worker.h"
-#include "simulation_controller.h"
 #include "test_support.h"
+#include "ui/sim_worker.h"
+#include "ui/simulation_controller.h"
 
 using namespace elui;
 

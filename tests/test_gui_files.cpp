@@ -32,20 +32,20 @@
 #include <sys/sysmacros.h>
 #include <unistd.h>
 
-#include "export.h"
-#include "main_window.h"
-#include "parameter_dock.h"
-#include "scenefile.h"
-#include "scene_dock.h"
-#include "stability.h"
-#include "plot_dock.h"
-#include "presets.h"
-#include "recent_files.h"
-#include "run_dock.h"
-#include "scenefile.h"
-#include "scenes.h"
-#include "simulation_controller.h"
+#include "simcore/scenes.h"
+#include "simlab/scenefile.h"
+#include "simlab/scenefile.h"
+#include "simlab/stability.h"
 #include "test_support.h"
+#include "ui/export.h"
+#include "ui/main_window.h"
+#include "ui/parameter_dock.h"
+#include "ui/plot_dock.h"
+#include "ui/presets.h"
+#include "ui/recent_files.h"
+#include "ui/run_dock.h"
+#include "ui/scene_dock.h"
+#include "ui/simulation_controller.h"
 
 using namespace elui;
 
@@ -124,7 +124,7 @@ QString writeWith(Writer writer, const QString& path) {
     switch (writer) {
         case Writer::Scene: {
             simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Sphere3d), "rk4");
-            return writeFile(path, QByteArray::fromStdString(simcore::sceneFileText(sim, "sphere3d", true)));
+            return writeFile(path, QByteArray::fromStdString(simlab::sceneFileText(sim, "sphere3d", true)));
         }
         case Writer::Csv: return writeCsv(path, simcore::SceneKind::Ring2d, rows);
         case Writer::PlotsPng:
@@ -223,7 +223,7 @@ private slots:
         QCOMPARE(readAll(path), QByteArray::fromStdString(saved.text));
 
         // Reopened in another controller: the same state, step and time.
-        const simcore::SceneFileResult read = simcore::readSceneFile(path.toStdString());
+        const simlab::SceneFileResult read = simlab::readSceneFile(path.toStdString());
         QVERIFY2(read.file, read.error.c_str());
         QVERIFY(read.file->state);
         QCOMPARE(read.file->state->step, 40L);
@@ -260,7 +260,7 @@ private slots:
         QVERIFY(waitForFrame(c, [](const Frame& f) { return f.running && f.lanes[0].diagnostics.time > 0.05; }));
         for (int i = 0; i < 5; ++i) {
             const SceneCapture capture = c.captureScene();
-            const simcore::SceneFileResult read = simcore::parseSceneFile(capture.text);
+            const simlab::SceneFileResult read = simlab::parseSceneFile(capture.text);
             QVERIFY2(read.file, read.error.c_str());
             // A step boundary: the time is exactly the step count times the fixed DT.
             const auto& s = *read.file->state;
@@ -277,7 +277,7 @@ private slots:
     void sideBySideOpensWithTheStateInEveryLane() {
         simcore::Simulation sim(sceneParams("ring2d"), "rk4");
         QVERIFY(sim.advanceTo(0.3));
-        const simcore::SceneFileResult read = simcore::parseSceneFile(simcore::sceneFileText(sim, "ring2d", true));
+        const simlab::SceneFileResult read = simlab::parseSceneFile(simlab::sceneFileText(sim, "ring2d", true));
         QVERIFY(read.file);
         SimulationController c;
         c.openScene(*read.file, {"rk4", "verlet"});
@@ -299,10 +299,10 @@ private slots:
         c.run();
         QVERIFY(waitForFrame(c, [](const Frame& f) { return f.running && f.lanes[0].diagnostics.time > 0.05; }));
         const auto scene = c.latest()->scene;
-        simcore::SceneFile file;
+        simlab::SceneFile file;
         file.sceneName = "sphere3d";
         file.params = simcore::ParameterSet(simcore::SceneKind::Sphere3d);
-        file.state = simcore::SceneFile::State{};
+        file.state = simlab::SceneFile::State{};
         file.state->positions = Eigen::Matrix3Xd::Zero(3, 5);
         file.state->velocities = Eigen::Matrix3Xd::Zero(3, 5);
         c.openScene(file);
@@ -324,7 +324,7 @@ private slots:
         QTest::newRow("syntax error") << "\"kd\": 15," << "\"kd\": 15,," << "line 8";
         QTest::newRow("unknown key") << "\"ks\":" << "\"kss\":" << "kss";
         QTest::newRow("out of range") << "\"restitution\": 0.5" << "\"restitution\": 2" << "restitution";
-        QTest::newRow("newer version") << QString("\"version\": %1").arg(simcore::kSceneFormatVersion)
+        QTest::newRow("newer version") << QString("\"version\": %1").arg(simlab::kSceneFormatVersion)
                                        << "\"version\": 99" << "newer";
         QTest::newRow("wrong state size") << "\"positions\": [[" << "\"positions\": [[0, 0, 0], [" << "positions";
         QTest::newRow("missing file") << "" << "" << "no such file";
@@ -343,7 +343,7 @@ private slots:
             path = dir.filePath("folder.json");
         } else {
             simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Ring2d), "rk4");
-            const std::string text = edited(simcore::sceneFileText(sim, "ring2d", true), from.toStdString(), to.toStdString());
+            const std::string text = edited(simlab::sceneFileText(sim, "ring2d", true), from.toStdString(), to.toStdString());
             QCOMPARE(writeFile(path, QByteArray::fromStdString(text)), QString());
         }
 
@@ -379,7 +379,7 @@ private slots:
         simcore::ParameterSet p(simcore::SceneKind::Ring2d);
         p.set(simcore::Param::Particles, 96);
         simcore::Simulation probe(p, "rk4");
-        const auto advice = simcore::stabilityAdvice(probe);
+        const auto advice = simlab::stabilityAdvice(probe);
         QVERIFY(advice);
         MainWindow window(false);
         SimulationController* c = window.controller();
@@ -407,7 +407,7 @@ private slots:
         p.set(simcore::Param::Dt, 0.002);
         simcore::Simulation sim(p, "verlet");
         QVERIFY(sim.advanceTo(0.25));
-        QCOMPARE(writeFile(path, QByteArray::fromStdString(simcore::sceneFileText(sim, "sphere3d", true))), QString());
+        QCOMPARE(writeFile(path, QByteArray::fromStdString(simlab::sceneFileText(sim, "sphere3d", true))), QString());
 
         MainWindow window(false);
         SimulationController* c = window.controller();
@@ -445,7 +445,7 @@ private slots:
         QVERIFY(!window.isWindowModified());
         QVERIFY(window.windowTitle().startsWith("copy.json[*]"));
         QCOMPARE(window.recentFiles().paths(), (QStringList{copy, path}));
-        const simcore::SceneFileResult reread = simcore::readSceneFile(copy.toStdString());
+        const simlab::SceneFileResult reread = simlab::readSceneFile(copy.toStdString());
         QVERIFY2(reread.file, reread.error.c_str());
         QCOMPARE(reread.file->integrator, std::string("rk4"));
         QVERIFY(reread.file->state->time > sim.time());
@@ -462,10 +462,10 @@ private slots:
         simcore::ParameterSet p(simcore::SceneKind::Ring2d);
         p.set(simcore::Param::Ks, 950);
         const simcore::Simulation sim(p, "rk4");
-        QCOMPARE(writeFile(path, QByteArray::fromStdString(simcore::sceneFileText(sim, "ring2d", true))), QString());
+        QCOMPARE(writeFile(path, QByteArray::fromStdString(simlab::sceneFileText(sim, "ring2d", true))), QString());
         const QByteArray original = readAll(path);
         auto savedKs = [&] {
-            const simcore::SceneFileResult read = simcore::readSceneFile(path.toStdString());
+            const simlab::SceneFileResult read = simlab::readSceneFile(path.toStdString());
             return read.file ? read.file->params.get(simcore::Param::Ks) : -1.0;
         };
 
@@ -517,7 +517,7 @@ private slots:
         QCOMPARE(window.saveSceneFile(path), QString());
         QVERIFY2(window.statusBar()->currentMessage().contains("first view (euler)"),
                  qPrintable(window.statusBar()->currentMessage()));
-        const simcore::SceneFileResult read = simcore::readSceneFile(path.toStdString());
+        const simlab::SceneFileResult read = simlab::readSceneFile(path.toStdString());
         QVERIFY(read.file);
         QCOMPARE(read.file->integrator, std::string("euler"));
         QCOMPARE(read.file->state->step, 10L);

@@ -8,12 +8,13 @@
 #include <QFileInfo>
 #include <QUrl>
 
-#include "help_dialog.h"
-#include "integrators.h"
-#include "parameter_dock.h"
-#include "presets.h"
-#include "scene_dock.h"
-#include "scenes.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/scenes.h"
+#include "ui/help_dialog.h"
+#include "ui/parameter_dock.h"
+#include "ui/presets.h"
+#include "ui/scene_dock.h"
 
 using namespace elui;
 using simcore::ParamGroup;
@@ -174,8 +175,8 @@ private slots:
             const simcore::SceneInfo* scene = simcore::findScene(p.scene.toStdString());
             QVERIFY2(scene, qPrintable(p.id));
             simcore::ParameterSet params(scene->kind);
-            for (const auto& [key, value] : p.values)
-                QVERIFY2(!params.set(key.toStdString(), value), qPrintable(p.id + ": " + key));
+            for (const auto& [id, value] : p.values)
+                QVERIFY2(!params.set(id, value), qPrintable(p.id + ": " + QString::fromUtf8(simcore::paramSpec(id).key.data())));
             QVERIFY(!p.integrators.isEmpty() && p.integrators.size() <= 3);
             for (const QString& name : p.integrators) QVERIFY(simcore::makeIntegrator(name.toStdString()) != nullptr);
             QCOMPARE(findPreset(p.id), findPreset(p.id));

@@ -4,16 +4,16 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "energy_bars_dock.h"
-#include "export.h"
-#include "main_window.h"
-#include "output.h"
-#include "plot_dock.h"
-#include "pv_dock.h"
-#include "scenes.h"
-#include "simulation_controller.h"
-#include "studies_dialog.h"
+#include "simcore/scenes.h"
+#include "simlab/output.h"
 #include "test_support.h"
+#include "ui/energy_bars_dock.h"
+#include "ui/export.h"
+#include "ui/main_window.h"
+#include "ui/plot_dock.h"
+#include "ui/pv_dock.h"
+#include "ui/simulation_controller.h"
+#include "ui/studies_dialog.h"
 
 #include <QComboBox>
 #include <QLabel>
@@ -23,9 +23,9 @@
 #include <QStandardPaths>
 #include <QTableWidget>
 
-#include "run_dock.h"
-#include "scene_dock.h"
 #include "qcustomplot.h"
+#include "ui/run_dock.h"
+#include "ui/scene_dock.h"
 
 using namespace elui;
 using simcore::SceneKind;
@@ -287,9 +287,9 @@ private slots:
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = f.readAll().split('\n');
-        const auto columns = simcore::timeSeriesColumns(SceneKind::Ring2d);
-        QCOMPARE(lines[0] + '\n', QByteArray::fromStdString(simcore::csvHeader(columns)));
-        QCOMPARE(lines[3] + '\n', QByteArray::fromStdString(simcore::csvRow(columns, rows[2])));
+        const auto columns = simlab::timeSeriesColumns(SceneKind::Ring2d);
+        QCOMPARE(lines[0] + '\n', QByteArray::fromStdString(simlab::csvHeader(columns)));
+        QCOMPARE(lines[3] + '\n', QByteArray::fromStdString(simlab::csvRow(columns, rows[2])));
         QCOMPARE(lines.size(), 1 + 6 + 1);  // header, 6 rows, trailing newline
         // 1D: no gas columns.
         QCOMPARE(writeCsv(path, SceneKind::Spring1d, runRows(SceneKind::Spring1d, 2)), QString());

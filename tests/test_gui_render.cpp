@@ -14,15 +14,15 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "export.h"
-#include "main_window.h"
-#include "presets.h"
-#include "run_dock.h"
-#include "scenefile.h"
-#include "scenes.h"
-#include "simulation_controller.h"
+#include "simcore/scenes.h"
+#include "simlab/scenefile.h"
 #include "test_support.h"
-#include "viewport.h"
+#include "ui/export.h"
+#include "ui/main_window.h"
+#include "ui/presets.h"
+#include "ui/run_dock.h"
+#include "ui/simulation_controller.h"
+#include "ui/viewport.h"
 
 using namespace elui;
 using simcore::SceneKind;
@@ -406,7 +406,7 @@ private slots:
         QTemporaryDir dir;
         const QString scene = dir.filePath("exp.json"), shot = dir.filePath("shot.png");
         simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Ring2d), "rk4");
-        QCOMPARE(elui::writeFile(scene, QByteArray::fromStdString(simcore::sceneFileText(sim, "ring2d", true))), QString());
+        QCOMPARE(elui::writeFile(scene, QByteArray::fromStdString(simlab::sceneFileText(sim, "ring2d", true))), QString());
         QVERIFY(QFile::link(scene, dir.filePath("link.png")));
         const QList<QPair<QStringList, QString>> refusals = {
             {{"--bogus"}, "bogus"},
@@ -458,7 +458,7 @@ private slots:
         const QString scene = dir.filePath("ring.json"), shot = dir.filePath("shot.png");
         simcore::Simulation sim(simcore::ParameterSet(simcore::SceneKind::Ring2d), "midpoint");
         QVERIFY(sim.advanceTo(0.3));
-        QCOMPARE(elui::writeFile(scene, QByteArray::fromStdString(simcore::sceneFileText(sim, "ring2d", true))),
+        QCOMPARE(elui::writeFile(scene, QByteArray::fromStdString(simlab::sceneFileText(sim, "ring2d", true))),
                  QString());
         QProcess p;
         p.start(ELASTIC_LAB_GUI, {"--scene", scene, "--set", "kd=20", "--screenshot", shot, "--after", "0.5"});

@@ -7,12 +7,12 @@
 
 #include <QPushButton>
 
-#include "main_window.h"
-#include "simulation_controller.h"
-#include "stability.h"
-#include "stability_map_dock.h"
-#include "stability_region.h"
+#include "simlab/stability.h"
+#include "simlab/stability_region.h"
 #include "test_support.h"
+#include "ui/main_window.h"
+#include "ui/simulation_controller.h"
+#include "ui/stability_map_dock.h"
 
 using namespace elui;
 using simcore::ParameterSet;
@@ -49,7 +49,7 @@ private slots:
         // The fixed spring: one free coordinate, the pair lambda = -c/2 ± i sqrt(w^2 - c^2/4).
         QCOMPARE(dock.pointCount(), 2);
         QVERIFY(dock.boundaryPointCount() > 200);
-        const simcore::LinearModes modes = simcore::linearModes(spring(0.001));
+        const simlab::LinearModes modes = simlab::linearModes(spring(0.001));
         for (int i = 0; i < 2; ++i) {
             const Complex z = dock.point(i);
             double nearest = 1e300;

@@ -3,11 +3,13 @@
 
 #include <cmath>
 
-#include "analytic.h"
-#include "simulation.h"
-#include "step_doubling.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simcore/step_doubling.h"
+#include "simlab/analytic.h"
 
 using namespace simcore;
+using namespace simlab;
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "lanes.h"
+#include "ui/lanes.h"
 
 using namespace elui;
 

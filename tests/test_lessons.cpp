@@ -23,16 +23,17 @@
 #include <QTextBrowser>
 #include <QTextDocument>
 
-#include "energy_bars_dock.h"
-#include "impact.h"
-#include "lessons.h"
-#include "lessons_dialog.h"
-#include "main_window.h"
-#include "pv_dock.h"
-#include "simulation.h"
-#include "simulation_controller.h"
-#include "stability.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simlab/impact.h"
+#include "simlab/stability.h"
 #include "test_support.h"
+#include "ui/energy_bars_dock.h"
+#include "ui/lessons.h"
+#include "ui/lessons_dialog.h"
+#include "ui/main_window.h"
+#include "ui/pv_dock.h"
+#include "ui/simulation_controller.h"
 
 using namespace elui;
 using simcore::ParameterSet;
@@ -69,13 +70,13 @@ double failureTime(const ParameterSet& p, const std::string& integrator, double 
 }
 
 // `elastic-lab-cli stability`'s row for one integrator on these parameters (perturb 0.01 m).
-simcore::StabilityRow scan(const ParameterSet& p, const std::string& integrator) {
-    simcore::StabilitySpec spec;
+simlab::StabilityRow scan(const ParameterSet& p, const std::string& integrator) {
+    simlab::StabilitySpec spec;
     spec.params = p;
     spec.integrators = {integrator};
     ParameterSet linearised = p;
     if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
-    return simcore::scanIntegrator(spec, integrator, simcore::linearModes(linearised));
+    return simlab::scanIntegrator(spec, integrator, simlab::linearModes(linearised));
 }
 
 // Mean height of the outer layer's particles minus that of the inner layer's [m].
@@ -127,7 +128,7 @@ QMap<QString, QMap<QString, Measure>> measurements() {
         };
     m["refine-sphere"]["suggested-level3"] = [=] {
         const Simulation sim(with(sphere, {{"subdivisions", 3}}), "rk4");
-        const auto advice = simcore::stabilityAdvice(sim);
+        const auto advice = simlab::stabilityAdvice(sim);
         return advice ? advice->suggestedDt : -1.0;
     };
 
@@ -146,12 +147,12 @@ QMap<QString, QMap<QString, Measure>> measurements() {
 
     // 6. `restitution --scene ring2d --set restitution=E --speeds 1,3`.
     const ParameterSet bounce = lesson("restitution").preset.parameters();
-    m["restitution"]["particle-e0.9"] = [=] { return simcore::measureImpact(bounce, "rk4", 3.0).particle; };
-    m["restitution"]["body-e0.9"] = [=] { return simcore::measureImpact(bounce, "rk4", 3.0).body; };
+    m["restitution"]["particle-e0.9"] = [=] { return simlab::measureImpact(bounce, "rk4", 3.0).particle; };
+    m["restitution"]["body-e0.9"] = [=] { return simlab::measureImpact(bounce, "rk4", 3.0).body; };
     m["restitution"]["body-e0.2"] = [=] {
-        return simcore::measureImpact(with(bounce, {{"restitution", 0.2}}), "rk4", 3.0).body;
+        return simlab::measureImpact(with(bounce, {{"restitution", 0.2}}), "rk4", 3.0).body;
     };
-    m["restitution"]["particle-1mps"] = [=] { return simcore::measureImpact(bounce, "rk4", 1.0).particle; };
+    m["restitution"]["particle-1mps"] = [=] { return simlab::measureImpact(bounce, "rk4", 1.0).particle; };
 
     // 7. `stability --scene ring2d --set ks=1e6 --integrators rk4`; `run ... implicit-euler
     // --dt 0.01 --duration 3` (300 steps).
@@ -187,9 +188,10 @@ private slots:
             // Valid presets: the scene exists, every value passes the parameter table.
             QVERIFY2(simcore::findScene(l.preset.scene.toStdString()), qPrintable(l.id));
             ParameterSet p(simcore::findScene(l.preset.scene.toStdString())->kind);
-            for (const auto& [key, value] : l.preset.values) {
-                const auto error = p.set(key.toStdString(), value);
-                QVERIFY2(!error, qPrintable(l.id + ": " + key + ": " + QString::fromStdString(error.value_or(""))));
+            for (const auto& [id, value] : l.preset.values) {
+                const auto error = p.set(id, value);
+                QVERIFY2(!error, qPrintable(l.id + ": " + QString::fromUtf8(simcore::paramSpec(id).key.data()) + ": " +
+                                            QString::fromStdString(error.value_or(""))));
             }
             for (const QString& name : l.preset.integrators)
                 QVERIFY2(!simcore::unknownIntegrator(name.toStdString()), qPrintable(l.id + ": " + name));
@@ -373,7 +375,7 @@ private slots:
             for (std::size_t i = 0; i < f->lanes.size(); ++i)
                 QCOMPARE(f->lanes[i].integrator, l.preset.integrators.at(int(i)));
             QCOMPARE(window.controller()->integrators(), l.preset.integrators);
-            for (const auto& [key, value] : l.preset.values) QCOMPARE(f->parameters.get(simcore::findParam(key.toStdString())->id), value);
+            for (const auto& [id, value] : l.preset.values) QCOMPARE(f->parameters.get(id), value);
             for (const QString& dock : l.docks)
                 QVERIFY2(window.dock(dock) && !window.dock(dock)->isHidden(), qPrintable(l.id + ": " + dock));
             QVERIFY(window.currentFile().isEmpty());

@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "mailbox.h"
 #include "test_support.h"
+#include "ui/mailbox.h"
 
 using elui::Latch;
 using elui::Mailbox;

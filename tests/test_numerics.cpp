@@ -7,22 +7,24 @@
 #include <numbers>
 #include <set>
 
-#include "analytic.h"
-#include "jacobians.h"
-#include "simulation.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/integrator_table.h"
+#include "simcore/internal/jacobians.h"
+#include "simcore/simulation.h"
+#include "simlab/analytic.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
 #include "sim_test_support.h"
 
 using namespace simcore;
+using namespace simlab;
 
 namespace {
 
 using testsupport::params;
 
 // Two free 1 kg masses on a 800 N/m spring, no damping, no gravity, walls far away:
-// one mode, w = sqrt(k (1/m1 + 1/m2)) = 40 rad/s (MODEL.md). Stretched by 1% only, so that
+// one mode, w = sqrt(k (1/m1 + 1/m2)) = 40 rad/s (docs/model.md). Stretched by 1% only, so that
 // a growing solution is seen long before the particles could cross (a 1D spring whose ends
 // pass through each other is no longer linear).
 ParameterSet freePair(double kd = 0.0) {
@@ -129,13 +131,13 @@ private slots:
                  qPrintable(QString("%1: order %2, expected [%3, %4]").arg(integrator).arg(fits[0].order).arg(low).arg(high)));
     }
 
-    // --- stability facts (MODEL.md, issue 3 notes) ---
+    // --- stability facts (docs/model.md, issue 3 notes) ---
     void everyIntegratorHasItsOwnStudyColour() {
         // The study diagrams tell the curves apart by colour: a new integrator needs its own
         // (cvode-bdf, cvode-adams and xpbd were all drawn grey when they arrived).
         std::set<std::string> colours;
         for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {
-            const std::string colour = simcore::studyColour(info.name);
+            const std::string colour = simlab::studyColour(info.name);
             QVERIFY2(colour != "#7f7f7f", std::string(info.name).c_str());
             QVERIFY2(colours.insert(colour).second, std::string(info.name).c_str());
         }

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "pacer.h"
+#include "ui/pacer.h"
 
 using namespace elui;
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "params.h"
-#include "scenes.h"
+#include "simcore/params.h"
+#include "simcore/scenes.h"
 
 using namespace simcore;
 

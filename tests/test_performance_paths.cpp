@@ -10,9 +10,10 @@
 #include <new>
 #include <random>
 
-#include "forces.h"
-#include "integrators.h"
-#include "simulation.h"
+#include "simcore/forces.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/simulation.h"
 
 using namespace simcore;
 

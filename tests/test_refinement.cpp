@@ -7,13 +7,14 @@
 #include <atomic>
 #include <cmath>
 
-#include "refinement.h"
-#include "simulation.h"
-#include "stability.h"
+#include "simcore/simulation.h"
+#include "simlab/refinement.h"
+#include "simlab/stability.h"
 
 #include "sim_test_support.h"
 
 using namespace simcore;
+using namespace simlab;
 
 namespace {
 

@@ -7,14 +7,15 @@
 
 #include <cmath>
 
-#include "scaling.h"
-#include "scenefile.h"
-#include "simulation.h"
-#include "stability.h"
+#include "simcore/scaling.h"
+#include "simcore/simulation.h"
+#include "simlab/scenefile.h"
+#include "simlab/stability.h"
 
 #include "sim_test_support.h"
 
 using namespace simcore;
+using namespace simlab;
 
 namespace {
 

@@ -7,11 +7,12 @@
 
 #include <sys/stat.h>
 
-#include "scenefile.h"
-#include "simulation.h"
+#include "simcore/simulation.h"
+#include "simlab/scenefile.h"
 #include "test_support.h"
 
 using namespace simcore;
+using namespace simlab;
 
 namespace {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <functional>
 
-#include "simulation.h"
+#include "simcore/simulation.h"
 
 #include "sim_test_support.h"
 

@@ -9,12 +9,14 @@
 #include <limits>
 #include <numbers>
 
-#include "integrators.h"
 #include "sim_test_support.h"
-#include "stability.h"
-#include "stability_region.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simlab/stability.h"
+#include "simlab/stability_region.h"
 
 using namespace simcore;
+using namespace simlab;
 using testsupport::params;
 using Complex = std::complex<double>;
 

@@ -10,15 +10,15 @@
 #include <map>
 #include <vector>
 
-#include "main_window.h"
-#include "plot_dock.h"
 #include "sim_test_support.h"
-#include "sim_worker.h"
-#include "simulation.h"
-#include "simulation_controller.h"
+#include "simcore/simulation.h"
+#include "simcore/timeline.h"
 #include "test_support.h"
-#include "timeline.h"
-#include "timeline_dock.h"
+#include "ui/main_window.h"
+#include "ui/plot_dock.h"
+#include "ui/sim_worker.h"
+#include "ui/simulation_controller.h"
+#include "ui/timeline_dock.h"
 
 using namespace simcore;
 using elui::FramePtr;

@@ -10,9 +10,8 @@
 
 #include <cmath>
 
-#include "contact_pairs.h"
-#include "world.h"
-#include "world_ode.h"
+#include "simcore/contact_pairs.h"
+#include "simcore/world.h"
 
 using namespace simcore;
 
@@ -47,10 +46,10 @@ std::array<int, 2> intersectingByAllPairs(const World& world) {
     };
     std::vector<Face> faces;
     for (int k = 0; k < world.bodyCount(); ++k) {
-        const WorldBody& b = world.body(k);
-        const Surface* outer = b.body().topology.surface(Layer::Outer);
-        for (auto [a, c] : outer->edges) faces.push_back({k, {b.first() + a, b.first() + c, -1}});
-        for (auto [a, c, d] : outer->triangles) faces.push_back({k, {b.first() + a, b.first() + c, b.first() + d}});
+        const int first = world.firstParticle(k);
+        const Surface* outer = world.body(k).topology.surface(Layer::Outer);
+        for (auto [a, c] : outer->edges) faces.push_back({k, {first + a, first + c, -1}});
+        for (auto [a, c, d] : outer->triangles) faces.push_back({k, {first + a, first + c, first + d}});
     }
     for (std::size_t i = 0; i < faces.size(); ++i)
         for (std::size_t j = i + 1; j < faces.size(); ++j) {
@@ -77,22 +76,22 @@ std::array<int, 2> intersectingByAllPairs(const World& world) {
 // edge-edge distance has no gradient), then moves it along x until the gap between the bodies
 // is `gap`.
 void pressTogether(World& world, Eigen::VectorXd& y, double gap) {
-    const WorldBody& b = world.body(1);
+    const int first = world.firstParticle(1), count = world.bodyParticles(1);
     const Eigen::Matrix3d turn = (Eigen::AngleAxisd(0.13, Eigen::Vector3d::UnitZ()) *
                                   Eigen::AngleAxisd(0.21, Eigen::Vector3d::UnitY()))
                                      .toRotationMatrix();
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (int i = 0; i < b.count(); ++i) centre += y.segment(3 * (b.first() + i), 3);
-    centre /= b.count();
-    for (int i = 0; i < b.count(); ++i) {
-        const Eigen::Vector3d p = y.segment(3 * (b.first() + i), 3);
+    for (int i = 0; i < count; ++i) centre += y.segment(3 * (first + i), 3);
+    centre /= count;
+    for (int i = 0; i < count; ++i) {
+        const Eigen::Vector3d p = y.segment(3 * (first + i), 3);
         Eigen::Vector3d q = centre + turn * (p - centre);
         if (world.dimension() == 2) q = centre + Eigen::AngleAxisd(0.13, Eigen::Vector3d::UnitZ()).toRotationMatrix() * (p - centre);
-        y.segment(3 * (b.first() + i), 3) = q;
+        y.segment(3 * (first + i), 3) = q;
     }
     for (int round = 0; round < 4; ++round) {
         const double now = world.pairs().minimumGap(y.data(), 0.01, 100.0).gap;
-        for (int i = 0; i < b.count(); ++i) y[3 * (b.first() + i)] -= now - gap;
+        for (int i = 0; i < count; ++i) y[3 * (first + i)] -= now - gap;
     }
 }
 

@@ -1,4 +1,4 @@
-#include "camera.h"
+#include "ui/camera.h"
 
 #include <algorithm>
 #include <cmath>

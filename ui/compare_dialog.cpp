@@ -1,4 +1,4 @@
-#include "compare_dialog.h"
+#include "ui/compare_dialog.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -6,8 +6,9 @@
 #include <QLabel>
 #include <QVBoxLayout>
 
-#include "integrators.h"
-#include "parameter_dock.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "ui/parameter_dock.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "energy_bars_dock.h"
+#include "ui/energy_bars_dock.h"
 
 #include <algorithm>
 #include <cmath>

@@ -22,8 +22,8 @@
 
 #include <QDockWidget>
 
-#include "frame.h"
-#include "plot_series.h"
+#include "ui/frame.h"
+#include "ui/plot_series.h"
 
 class QCustomPlot;
 class QCPBars;

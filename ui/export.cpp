@@ -1,4 +1,4 @@
-#include "export.h"
+#include "ui/export.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -13,9 +13,9 @@
 #include <QPdfWriter>
 #include <QSaveFile>
 
-#include "output.h"
-#include "plot_series.h"
 #include "qcustomplot.h"
+#include "simlab/output.h"
+#include "ui/plot_series.h"
 
 namespace elui {
 
@@ -171,11 +171,11 @@ QString writeCsv(const QString& path, simcore::SceneKind kind, const std::vector
     // Streamed row by row (a long history is hundreds of MB).
     Output file(path);
     if (QString e = file.open(); !e.isEmpty()) return e;
-    const auto columns = simcore::timeSeriesColumns(kind);
-    const std::string header = simcore::csvHeader(columns);
+    const auto columns = simlab::timeSeriesColumns(kind);
+    const std::string header = simlab::csvHeader(columns);
     file.write(header.data(), qint64(header.size()));
     for (const simcore::Diagnostics& d : rows) {
-        const std::string row = simcore::csvRow(columns, d);
+        const std::string row = simlab::csvRow(columns, d);
         file.write(row.data(), qint64(row.size()));
     }
     return file.commit();

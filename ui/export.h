@@ -9,8 +9,8 @@
 #include <QImage>
 #include <QString>
 
-#include "params.h"
-#include "simulation.h"
+#include "simcore/params.h"
+#include "simcore/simulation.h"
 
 class QCustomPlot;
 

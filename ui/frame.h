@@ -20,11 +20,11 @@
 #include <QString>
 #include <QVector3D>
 
-#include "body.h"
-#include "forces.h"
-#include "params.h"
-#include "scenefile.h"
-#include "simulation.h"
+#include "simcore/body.h"
+#include "simcore/forces.h"
+#include "simcore/params.h"
+#include "simcore/simulation.h"
+#include "simlab/scenefile.h"
 
 namespace elui {
 
@@ -39,7 +39,7 @@ struct SceneData {
     // What the table's values mean for this body: per-particle and per-spring values at its
     // resolution under its scaling (simcore::bodyValuesText).
     QString bodyValues;
-    // The pre-run check of lane 0's explicit method at the current DT (simcore::stabilityAdvice):
+    // The pre-run check of lane 0's explicit method at the current DT (simlab::stabilityAdvice):
     // the warning and a step predicted stable; empty / 0 when DT is fine.
     QString stabilityWarning;
     double suggestedDt = 0.0;             // [s]
@@ -113,7 +113,7 @@ struct FrameBatch {
 
 // A scene file captured on the worker thread between two steps (SimulationController::captureScene).
 struct SceneCapture {
-    std::string text;                     // simcore::sceneFileText of lane 0, with its exact state
+    std::string text;                     // simlab::sceneFileText of lane 0, with its exact state
     simcore::ParameterSet parameters;     // what the text holds
     QString integrator;                   // lane 0's
     int lanes = 0;                        // views running (side by side: > 1; only lane 0 is in text)
@@ -123,5 +123,5 @@ struct SceneCapture {
 }  // namespace elui
 
 Q_DECLARE_METATYPE(elui::FramePtr)
-Q_DECLARE_METATYPE(simcore::SceneFile)
+Q_DECLARE_METATYPE(simlab::SceneFile)
 Q_DECLARE_METATYPE(simcore::ParameterSet)

@@ -1,4 +1,4 @@
-#include "frame_publisher.h"
+#include "ui/frame_publisher.h"
 
 namespace elui {
 

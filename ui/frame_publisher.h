@@ -13,7 +13,7 @@
 #include <mutex>
 #include <vector>
 
-#include "frame.h"
+#include "ui/frame.h"
 
 namespace elui {
 

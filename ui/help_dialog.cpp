@@ -1,4 +1,4 @@
-#include "help_dialog.h"
+#include "ui/help_dialog.h"
 
 #include <QDialogButtonBox>
 #include <QDir>
@@ -6,9 +6,10 @@
 #include <QUrl>
 #include <QVBoxLayout>
 
-#include "integrators.h"
-#include "parameter_dock.h"
-#include "presets.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "ui/parameter_dock.h"
+#include "ui/presets.h"
 
 namespace elui {
 

@@ -1,10 +1,10 @@
-#include "lanes.h"
+#include "ui/lanes.h"
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
-#include "stability.h"
+#include "simlab/stability.h"
 
 namespace elui {
 

@@ -17,8 +17,8 @@
 
 #include <QStringList>
 
-#include "frame.h"
-#include "timeline.h"
+#include "simcore/timeline.h"
+#include "ui/frame.h"
 
 namespace elui {
 

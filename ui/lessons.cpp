@@ -1,4 +1,4 @@
-#include "lessons.h"
+#include "ui/lessons.h"
 
 #include <QFile>
 #include <QObject>
@@ -16,7 +16,7 @@ static void initLessonResources() {
 namespace elui {
 
 namespace {
-Lesson make(const QString& id, const QString& title, const QString& scene, QList<QPair<QString, double>> values,
+Lesson make(const QString& id, const QString& title, const QString& scene, QList<QPair<simcore::Param, double>> values,
             QStringList integrators, QStringList docks) {
     Lesson l;
     l.id = id;
@@ -40,21 +40,21 @@ QList<Lesson> lessons() {
         // The perturbation is the stability scan's (0.01 m, seed 1): the run in the window is
         // the scan's trial run at the DT the student sets.
         make(QStringLiteral("euler-limit"), QObject::tr("1. How large may DT be for Euler?"), QStringLiteral("ring2d"),
-             {{"perturb", 0.01}, {"dt", 0.007}}, {QStringLiteral("euler")}, {bars, map}),
+             {{simcore::Param::Perturb, 0.01}, {simcore::Param::Dt, 0.007}}, {QStringLiteral("euler")}, {bars, map}),
         make(QStringLiteral("energy-drift"), QObject::tr("2. Energy drift: Euler, midpoint, RK4"),
-             QStringLiteral("ring2d"), {{"dt", 0.003}},
+             QStringLiteral("ring2d"), {{simcore::Param::Dt, 0.003}},
              {QStringLiteral("euler"), QStringLiteral("midpoint"), QStringLiteral("rk4")}, {bars}),
         make(QStringLiteral("heavy-inner"), QObject::tr("3. A heavy inner layer: liquid motion"),
-             QStringLiteral("sphere3d"), {{"subdivisions", 2}, {"mass_inner", 5.0}}, {QStringLiteral("rk4")}, {bars}),
+             QStringLiteral("sphere3d"), {{simcore::Param::Subdivisions, 2}, {simcore::Param::MassInner, 5.0}}, {QStringLiteral("rk4")}, {bars}),
         make(QStringLiteral("refine-sphere"), QObject::tr("4. A finer sphere needs a smaller DT"),
-             QStringLiteral("sphere3d"), {{"subdivisions", 1}, {"perturb", 0.01}, {"dt", 0.01}},
+             QStringLiteral("sphere3d"), {{simcore::Param::Subdivisions, 1}, {simcore::Param::Perturb, 0.01}, {simcore::Param::Dt, 0.01}},
              {QStringLiteral("rk4")}, {map}),
         make(QStringLiteral("pv-isotherm"), QObject::tr("5. Pressure and volume on the isotherm"),
              QStringLiteral("ring2d"), {}, {QStringLiteral("rk4")}, {pv}),
         make(QStringLiteral("restitution"), QObject::tr("6. Restitution: a particle and a body"),
-             QStringLiteral("ring2d"), {{"restitution", 0.9}}, {QStringLiteral("rk4")}, {bars}),
+             QStringLiteral("ring2d"), {{simcore::Param::Restitution, 0.9}}, {QStringLiteral("rk4")}, {bars}),
         make(QStringLiteral("stiff-springs"), QObject::tr("7. Stiff springs: explicit against implicit"),
-             QStringLiteral("ring2d"), {{"ks", 1e6}, {"dt", 0.01}},
+             QStringLiteral("ring2d"), {{simcore::Param::Ks, 1e6}, {simcore::Param::Dt, 0.01}},
              {QStringLiteral("implicit-euler"), QStringLiteral("rk4")}, {map}),
     };
 }

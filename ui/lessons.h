@@ -13,7 +13,7 @@
 #include <QString>
 #include <QStringList>
 
-#include "presets.h"
+#include "ui/presets.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "lessons_dialog.h"
+#include "ui/lessons_dialog.h"
 
 #include <QDialogButtonBox>
 #include <QDir>
@@ -11,7 +11,7 @@
 #include <QUrl>
 #include <QVBoxLayout>
 
-#include "lessons.h"
+#include "ui/lessons.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "main_window.h"
+#include "ui/main_window.h"
 
 #include <QAction>
 #include <QApplication>
@@ -17,24 +17,24 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
-#include "compare_dialog.h"
-#include "energy_bars_dock.h"
-#include "export.h"
-#include "help_dialog.h"
-#include "lessons.h"
-#include "lessons_dialog.h"
-#include "parameter_dock.h"
-#include "plot_dock.h"
-#include "presets.h"
-#include "pv_dock.h"
-#include "run_dock.h"
-#include "scene_dock.h"
-#include "scenes.h"
-#include "stability_map_dock.h"
-#include "simulation_controller.h"
-#include "studies_dialog.h"
-#include "timeline_dock.h"
-#include "viewport.h"
+#include "simcore/scenes.h"
+#include "ui/compare_dialog.h"
+#include "ui/energy_bars_dock.h"
+#include "ui/export.h"
+#include "ui/help_dialog.h"
+#include "ui/lessons.h"
+#include "ui/lessons_dialog.h"
+#include "ui/parameter_dock.h"
+#include "ui/plot_dock.h"
+#include "ui/presets.h"
+#include "ui/pv_dock.h"
+#include "ui/run_dock.h"
+#include "ui/scene_dock.h"
+#include "ui/simulation_controller.h"
+#include "ui/stability_map_dock.h"
+#include "ui/studies_dialog.h"
+#include "ui/timeline_dock.h"
+#include "ui/viewport.h"
 
 namespace elui {
 
@@ -683,9 +683,9 @@ QString MainWindow::openSceneFile(const QString& path) {
         error = tr("Could not open %1: %2 bytes is too large for a scene file").arg(path).arg(file.size());
     else if (!file.open(QIODevice::ReadOnly))
         error = tr("Could not open %1: %2").arg(path, file.errorString());
-    simcore::SceneFileResult read;
+    simlab::SceneFileResult read;
     if (error.isEmpty()) {
-        read = simcore::parseSceneFile(file.readAll().toStdString());
+        read = simlab::parseSceneFile(file.readAll().toStdString());
         if (!read.file) error = tr("%1 is not a scene this program can open:\n%2").arg(path, QString::fromStdString(read.error));
     }
     if (!error.isEmpty()) {
@@ -696,9 +696,9 @@ QString MainWindow::openSceneFile(const QString& path) {
     return {};
 }
 
-void MainWindow::openScene(const simcore::SceneFile& file, const QStringList& integrators, const QString& path,
-                           const simcore::SceneFile* onDisk) {
-    const simcore::SceneFile& saved = onDisk ? *onDisk : file;
+void MainWindow::openScene(const simlab::SceneFile& file, const QStringList& integrators, const QString& path,
+                           const simlab::SceneFile* onDisk) {
+    const simlab::SceneFile& saved = onDisk ? *onDisk : file;
     m_pending = PendingOpen{path, saved.params, QString::fromStdString(saved.integrator), file.state.has_value(),
                             file.state ? file.state->time : 0.0};
     m_controller->openScene(file, integrators);

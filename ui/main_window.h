@@ -8,9 +8,9 @@
 
 #include <QMainWindow>
 
-#include "frame.h"
-#include "recent_files.h"
-#include "view_options.h"
+#include "ui/frame.h"
+#include "ui/recent_files.h"
+#include "ui/view_options.h"
 
 class QAction;
 class QDockWidget;
@@ -82,8 +82,8 @@ public slots:
     // A scene file already read (e.g. by main()): integrators empty = the file's own. The file
     // becomes the window's current file once its scene runs. onDisk: what the file holds when
     // `file` was changed after reading (main()'s --set), so the title marks it modified.
-    void openScene(const simcore::SceneFile& file, const QStringList& integrators, const QString& path,
-                   const simcore::SceneFile* onDisk = nullptr);
+    void openScene(const simlab::SceneFile& file, const QStringList& integrators, const QString& path,
+                   const simlab::SceneFile* onDisk = nullptr);
     void openSceneDialog();  // asks first when the current file has unsaved changes
     // Whether the window may drop its scene (quit, open another file): true when nothing is
     // unsaved; otherwise asks Save / Discard / Cancel (window-modal) and says whether to go on

@@ -1,4 +1,4 @@
-#include "pacer.h"
+#include "ui/pacer.h"
 
 #include <chrono>
 

@@ -16,7 +16,7 @@
 #include <functional>
 #include <limits>
 
-#include "frame.h"
+#include "ui/frame.h"
 
 namespace elui {
 

@@ -1,4 +1,4 @@
-#include "parameter_dock.h"
+#include "ui/parameter_dock.h"
 
 #include <QComboBox>
 #include <QFormLayout>

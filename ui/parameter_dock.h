@@ -13,7 +13,7 @@
 #include <QDockWidget>
 #include <QWidget>
 
-#include "params.h"
+#include "simcore/params.h"
 
 class QComboBox;
 class QLineEdit;

@@ -1,4 +1,4 @@
-#include "plot_dock.h"
+#include "ui/plot_dock.h"
 
 #include <algorithm>
 #include <cmath>

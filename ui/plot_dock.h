@@ -18,7 +18,7 @@
 
 #include <QDockWidget>
 
-#include "plot_series.h"
+#include "ui/plot_series.h"
 
 class QCustomPlot;
 class QCPGraph;

@@ -1,10 +1,10 @@
-#include "plot_series.h"
+#include "ui/plot_series.h"
 
 #include <limits>
 
 #include <QObject>
 
-#include "scenes.h"
+#include "simcore/scenes.h"
 
 namespace elui {
 

@@ -9,8 +9,8 @@
 #include <QColor>
 #include <QString>
 
-#include "params.h"
-#include "simulation.h"
+#include "simcore/params.h"
+#include "simcore/simulation.h"
 
 namespace elui {
 

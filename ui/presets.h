@@ -6,7 +6,7 @@
 #include <QString>
 #include <QStringList>
 
-#include "params.h"
+#include "simcore/params.h"
 
 namespace elui {
 
@@ -15,7 +15,7 @@ struct Preset {
     QString title;         // menu text
     QString description;   // what to look at (status bar, help)
     QString scene;         // scene name
-    QList<QPair<QString, double>> values;
+    QList<QPair<simcore::Param, double>> values;  // parameters the preset sets (id, value)
     QStringList integrators;       // one: normal view; two or three: side by side
     double kickInner = 0.0;        // start velocity along x of inner / outer particles [m/s]
     double kickOuter = 0.0;

@@ -1,4 +1,4 @@
-#include "pv_dock.h"
+#include "ui/pv_dock.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,11 +10,11 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
-#include "parameter_dock.h"
-#include "plot_dock.h"
-#include "plot_series.h"
 #include "qcustomplot.h"
-#include "scenes.h"
+#include "simcore/scenes.h"
+#include "ui/parameter_dock.h"
+#include "ui/plot_dock.h"
+#include "ui/plot_series.h"
 
 namespace elui {
 

@@ -2,7 +2,7 @@
 // PvDock: the P–V diagram of each gas layer (inner, outer), a trail over the run.
 //
 //   P │ ·.                 the isotherm P = c / V, c = nRT of the layer: the parameter
-//     │   ·.                 pressure_inner / pressure_outer [J] (MODEL.md: P = nRT / V,
+//     │   ·.                 pressure_inner / pressure_outer [J] (docs/model.md: P = nRT / V,
 //     │     ══●               n R T constant; the engine computes P = c / V from the same c)
 //     │         ··..       ══ the trail: (V, P) of every recorded step of lane 0
 //     └──────────── V      ●  the newest point
@@ -19,7 +19,7 @@
 #include <QDockWidget>
 #include <QPointF>
 
-#include "frame.h"
+#include "ui/frame.h"
 
 class QCustomPlot;
 class QCPCurve;

@@ -1,4 +1,4 @@
-#include "run_dock.h"
+#include "ui/run_dock.h"
 
 #include <cmath>
 
@@ -13,8 +13,9 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "integrators.h"
-#include "parameter_dock.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "ui/parameter_dock.h"
 
 namespace elui {
 

@@ -5,7 +5,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 
-#include "frame.h"
+#include "ui/frame.h"
 
 class QCheckBox;
 class QComboBox;

@@ -1,12 +1,12 @@
-#include "scene_dock.h"
+#include "ui/scene_dock.h"
 
 #include <QComboBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "parameter_dock.h"
-#include "scenes.h"
+#include "simcore/scenes.h"
+#include "ui/parameter_dock.h"
 
 namespace elui {
 

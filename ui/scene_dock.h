@@ -6,7 +6,7 @@
 
 #include <QDockWidget>
 
-#include "params.h"
+#include "simcore/params.h"
 
 class QComboBox;
 class QLabel;

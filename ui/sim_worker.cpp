@@ -1,4 +1,4 @@
-#include "sim_worker.h"
+#include "ui/sim_worker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,10 @@
 #include <QThread>
 #include <QTimer>
 
-#include "scaling.h"
-#include "scenes.h"
-#include "stability.h"
+#include "simcore/integrator_table.h"
+#include "simcore/scaling.h"
+#include "simcore/scenes.h"
+#include "simlab/stability.h"
 
 namespace elui {
 
@@ -39,12 +40,12 @@ void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList&
     afterRebuild();
 }
 
-void SimWorker::openScene(const simcore::SceneFile& file, const QStringList& integrators) {
+void SimWorker::openScene(const simlab::SceneFile& file, const QStringList& integrators) {
     auto lanes = buildLanes(file.params, integrators);
     if (lanes.empty()) return;
     if (file.state)
         for (auto& sim : lanes)
-            if (auto error = simcore::applyState(*sim, *file.state)) {
+            if (auto error = simlab::applyState(*sim, *file.state)) {
                 emit sceneRejected(QString::fromStdString(*error));
                 return;
             }
@@ -59,7 +60,7 @@ SceneCapture SimWorker::captureScene() const {
     SceneCapture capture;
     if (m_lanes.empty()) return capture;
     const simcore::Simulation& sim = m_lanes.front();
-    capture.text = simcore::sceneFileText(sim, std::string(simcore::sceneInfo(sim.parameters().kind()).name), true);
+    capture.text = simlab::sceneFileText(sim, std::string(simcore::sceneInfo(sim.parameters().kind()).name), true);
     capture.parameters = sim.parameters();
     capture.integrator = integratorName(sim);
     capture.lanes = int(m_lanes.size());
@@ -85,7 +86,7 @@ void SimWorker::afterRebuild() {
         QString::fromStdString(simcore::bodyValuesText(m_params, simcore::bodyValues(m_params, sim.body())));
     // A rebuild can make the current DT unstable for the chosen method (a finer mesh has faster
     // modes): say so before it runs, with a step the same estimate predicts stable.
-    if (auto advice = simcore::stabilityAdvice(sim)) {
+    if (auto advice = simlab::stabilityAdvice(sim)) {
         scene->stabilityWarning = QString::fromStdString(advice->message);
         scene->suggestedDt = advice->suggestedDt;
     }

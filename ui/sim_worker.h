@@ -34,11 +34,11 @@
 #include <QStringList>
 #include <QVector3D>
 
-#include "frame.h"
-#include "frame_publisher.h"
-#include "lanes.h"
-#include "pacer.h"
-#include "timeline.h"
+#include "simcore/timeline.h"
+#include "ui/frame.h"
+#include "ui/frame_publisher.h"
+#include "ui/lanes.h"
+#include "ui/pacer.h"
 
 class QTimer;
 
@@ -66,7 +66,7 @@ public:
     // Builds the lanes from a scene file and, if it holds one, gives every lane its saved state
     // (time and step counter included), so the run resumes exactly. No start kick. A file that
     // cannot be built keeps the old scene and reports sceneRejected.
-    void openScene(const simcore::SceneFile& file, const QStringList& integrators);
+    void openScene(const simlab::SceneFile& file, const QStringList& integrators);
     // Changes lane 0's integrator in place (single mode: the run continues from here).
     void setIntegrator(const QString& name);
     void setParameter(simcore::Param id, double value);

@@ -1,6 +1,6 @@
-#include "simulation_controller.h"
+#include "ui/simulation_controller.h"
 
-#include "sim_worker.h"
+#include "ui/sim_worker.h"
 
 namespace elui {
 
@@ -138,7 +138,7 @@ void SimulationController::setScene(const simcore::ParameterSet& params, const Q
     toWorker(&SimWorker::setScene, params, integrators);
 }
 void SimulationController::setScene(const simcore::ParameterSet& params) { setScene(params, m_integrators); }
-void SimulationController::openScene(const simcore::SceneFile& file, const QStringList& integrators) {
+void SimulationController::openScene(const simlab::SceneFile& file, const QStringList& integrators) {
     m_params = file.params;
     m_integrators = integrators.isEmpty() ? QStringList{QString::fromStdString(file.integrator)} : integrators;
     toWorker(&SimWorker::openScene, file, m_integrators);

@@ -18,9 +18,9 @@
 #include <QThread>
 #include <QVector3D>
 
-#include "frame.h"
-#include "mailbox.h"
-#include "sim_worker.h"
+#include "ui/frame.h"
+#include "ui/mailbox.h"
+#include "ui/sim_worker.h"
 
 namespace elui {
 
@@ -55,7 +55,7 @@ public:
     void setScene(const simcore::ParameterSet& params);  // keeps the integrators
     // A scene file (already read and validated): its scene, parameters and exact state, in one
     // lane with the file's integrator, or side by side with the given integrators.
-    void openScene(const simcore::SceneFile& file, const QStringList& integrators = {});
+    void openScene(const simlab::SceneFile& file, const QStringList& integrators = {});
     // Lane 0 as a scene file with its exact state. Blocks until the worker has applied every
     // command sent before and is between two steps (at most one tick, ~15 ms); the GUI never
     // reads the simulation itself.

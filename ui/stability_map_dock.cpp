@@ -1,4 +1,4 @@
-#include "stability_map_dock.h"
+#include "ui/stability_map_dock.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "mailbox.h"
 #include "qcustomplot.h"
+#include "ui/mailbox.h"
 
 namespace elui {
 
@@ -172,10 +172,10 @@ void StabilityMapDock::startJob(Job job) {
         Result r;
         r.params = job.params;
         r.integrator = job.integrator;
-        r.modes = job.modes ? job.modes : std::make_shared<const simcore::LinearModes>(simcore::linearModes(job.params));
-        r.points = simcore::spectrumPoints(*r.modes);
-        r.margin = simcore::stepMargin(job.integrator, *r.modes, r.points, job.params.get(simcore::Param::Dt));
-        r.boundary = simcore::regionBoundary(job.integrator);
+        r.modes = job.modes ? job.modes : std::make_shared<const simlab::LinearModes>(simlab::linearModes(job.params));
+        r.points = simlab::spectrumPoints(*r.modes);
+        r.margin = simlab::stepMargin(job.integrator, *r.modes, r.points, job.params.get(simcore::Param::Dt));
+        r.boundary = simlab::regionBoundary(job.integrator);
         m_fromWorker->post([this, r] {
             m_jobRunning = false;
             present(r);
@@ -195,7 +195,7 @@ void StabilityMapDock::present(const Result& r) {
     m_spectrum = r.points;
     m_margin = r.margin;
     m_curves = r.boundary;
-    const bool hasRegion = simcore::regionKind(r.integrator) != simcore::RegionKind::None;
+    const bool hasRegion = simlab::regionKind(r.integrator) != simlab::RegionKind::None;
 
     for (QCPCurve* c : m_boundary) m_plot->removePlottable(c);
     m_boundary.clear();
@@ -206,7 +206,7 @@ void StabilityMapDock::present(const Result& r) {
         for (std::size_t i = 0; i < curve.size(); ++i) points.append(QCPCurveData(double(i), curve[i].real(), curve[i].imag()));
         c->data()->set(points, true);
         c->setPen(QPen(QColor(30, 110, 40), 2.0));
-        if (m_boundary.empty()) c->setName(simcore::regionKind(r.integrator) == simcore::RegionKind::Oscillator ? tr("edge (radius 1)") : tr("edge |R| = 1"));
+        if (m_boundary.empty()) c->setName(simlab::regionKind(r.integrator) == simlab::RegionKind::Oscillator ? tr("edge (radius 1)") : tr("edge |R| = 1"));
         else c->removeFromLegend();
         m_boundary.push_back(c);
     }
@@ -232,7 +232,7 @@ void StabilityMapDock::present(const Result& r) {
     m_plot->xAxis->setLabel(tr("Re(hλ), h = DT = %1 s").arg(m_shownDt));
     m_marginLabel->setText(QStringLiteral("%1: %2").arg(name, QString::fromStdString(m_margin.text)));
     m_methodLabel->setText(tr("Eigenvalues: %1.\n%2")
-                               .arg(QString::fromStdString(m_spectrum.methodText), QString::fromStdString(simcore::regionNote(r.integrator))));
+                               .arg(QString::fromStdString(m_spectrum.methodText), QString::fromStdString(simlab::regionNote(r.integrator))));
     m_try->setEnabled(hasRegion || m_scanRunning);
     m_try->setToolTip(hasRegion ? tryTip() : tr("%1 has no fixed stability limit to measure").arg(name));
     // A measured limit holds for the body and the method, whatever DT is now.
@@ -250,7 +250,7 @@ void StabilityMapDock::showMeasured() {
     m_measured->data()->clear();
     m_measuredMark.reset();
     if (m_scanRow) {
-        const simcore::StabilityRow& row = *m_scanRow;
+        const simlab::StabilityRow& row = *m_scanRow;
         QString text;
         if (row.stable <= 0.0) {
             text = tr("Measured: no stable DT down to 1e-5 s.");
@@ -330,7 +330,7 @@ void StabilityMapDock::drawRegion() {
         for (int j = 0; j < kFillCells; ++j) {
             double x = 0.0, y = 0.0;
             cells->cellToCoord(i, j, &x, &y);
-            cells->setCell(i, j, simcore::regionContains(m_shownIntegrator, Complex(x, y)) ? 1.0 : 0.0);
+            cells->setCell(i, j, simlab::regionContains(m_shownIntegrator, Complex(x, y)) ? 1.0 : 0.0);
         }
 }
 
@@ -350,7 +350,7 @@ void StabilityMapDock::tryIt() {
         m_measuredLabel->setText(tr("Cancelling…"));
         return;
     }
-    if (!m_modes || simcore::regionKind(m_shownIntegrator) == simcore::RegionKind::None) return;
+    if (!m_modes || simlab::regionKind(m_shownIntegrator) == simlab::RegionKind::None) return;
     m_scanRunning = true;
     m_scanParams = m_shownParams;
     m_scanIntegrator = m_shownIntegrator;
@@ -360,18 +360,18 @@ void StabilityMapDock::tryIt() {
     showMeasured();
     m_plot->replot(QCustomPlot::rpQueuedReplot);
     m_scanCancel = std::make_shared<std::atomic<bool>>(false);
-    simcore::StabilitySpec spec;
+    simlab::StabilitySpec spec;
     spec.params = m_scanParams;
     spec.integrators = {m_scanIntegrator};
     spec.duration = kScanDuration;
     if (m_scanThread.joinable()) m_scanThread.join();  // the last scan ended (its end was delivered)
     m_scanThread = std::thread([this, spec, modes = m_modes, cancel = m_scanCancel, name = m_scanIntegrator] {
-        simcore::StabilityRow row = simcore::scanIntegrator(spec, name, *modes, cancel.get());
+        simlab::StabilityRow row = simlab::scanIntegrator(spec, name, *modes, cancel.get());
         const bool cancelled = cancel->load();
         m_fromWorker->post([this, row, cancelled] {
             m_scanRunning = false;
             m_try->setText(tr("Try it"));
-            m_try->setEnabled(simcore::regionKind(m_shownIntegrator) != simcore::RegionKind::None);
+            m_try->setEnabled(simlab::regionKind(m_shownIntegrator) != simlab::RegionKind::None);
             if (cancelled) m_measuredText = tr("Measurement cancelled.");
             else m_scanRow = row;
             // The body or the method may have changed meanwhile: the row is kept only for its own.

@@ -12,10 +12,10 @@
 //   "DT can grow 2.3× before the fastest mode leaves the region."
 //
 // Inputs arrive with every frame (setState: parameters and lane 0's integrator); the dock
-// works only while visible. The linearisation (simcore::linearModes: up to ~1 s for a large
+// works only while visible. The linearisation (simlab::linearModes: up to ~1 s for a large
 // body) and the margin run on a worker std::thread, one job at a time; a change during a job
 // queues one more (the newest wins). A DT change alone reuses the modes. "Try it" runs the
-// stability scan's bisection (simcore::scanIntegrator) for the current integrator on another
+// stability scan's bisection (simlab::scanIntegrator) for the current integrator on another
 // std::thread, with Cancel. Results come back through a Mailbox (mailbox.h: no Qt hand-over
 // across threads, so ThreadSanitizer sees it).
 
@@ -28,9 +28,9 @@
 
 #include <QDockWidget>
 
-#include "params.h"
-#include "stability.h"
-#include "stability_region.h"
+#include "simcore/params.h"
+#include "simlab/stability.h"
+#include "simlab/stability_region.h"
 
 class QCustomPlot;
 class QCPColorMap;
@@ -81,14 +81,14 @@ private:
     struct Job {
         simcore::ParameterSet params;
         std::string integrator;
-        std::shared_ptr<const simcore::LinearModes> modes;  // reused when only DT changed
+        std::shared_ptr<const simlab::LinearModes> modes;  // reused when only DT changed
     };
     struct Result {
         simcore::ParameterSet params;
         std::string integrator;
-        std::shared_ptr<const simcore::LinearModes> modes;
-        simcore::SpectrumPoints points;
-        simcore::StepMargin margin;
+        std::shared_ptr<const simlab::LinearModes> modes;
+        simlab::SpectrumPoints points;
+        simlab::StepMargin margin;
         std::vector<std::vector<std::complex<double>>> boundary;
     };
     void request();
@@ -116,9 +116,9 @@ private:
     simcore::ParameterSet m_shownParams;
     std::string m_shownIntegrator;
     double m_shownDt = 0.0;
-    std::shared_ptr<const simcore::LinearModes> m_modes;
-    simcore::SpectrumPoints m_spectrum;
-    simcore::StepMargin m_margin;
+    std::shared_ptr<const simlab::LinearModes> m_modes;
+    simlab::SpectrumPoints m_spectrum;
+    simlab::StepMargin m_margin;
     std::vector<std::vector<std::complex<double>>> m_curves;
     quint64 m_resultSerial = 0;
 
@@ -134,7 +134,7 @@ private:
     bool m_scanRunning = false;
     simcore::ParameterSet m_scanParams;
     std::string m_scanIntegrator;
-    std::optional<simcore::StabilityRow> m_scanRow;
+    std::optional<simlab::StabilityRow> m_scanRow;
     std::optional<std::complex<double>> m_measuredMark;
     QString m_measuredText;
 };

@@ -1,4 +1,4 @@
-#include "studies_dialog.h"
+#include "ui/studies_dialog.h"
 
 #include <cmath>
 
@@ -18,15 +18,16 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
-#include "export.h"
-#include "integrators.h"
-#include "mailbox.h"
-#include "output.h"
-#include "parameter_dock.h"
-#include "plot_series.h"
 #include "qcustomplot.h"
-#include "refinement.h"
-#include "scenes.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/scenes.h"
+#include "simlab/output.h"
+#include "simlab/refinement.h"
+#include "ui/export.h"
+#include "ui/mailbox.h"
+#include "ui/parameter_dock.h"
+#include "ui/plot_series.h"
 
 namespace elui {
 
@@ -268,8 +269,8 @@ WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QW
 void WorkPrecisionDialog::setSteps(const QString& dts) { m_dts->setText(dts); }
 void WorkPrecisionDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
 
-simcore::StudySpec WorkPrecisionDialog::spec() const {
-    simcore::StudySpec s;
+simlab::StudySpec WorkPrecisionDialog::spec() const {
+    simlab::StudySpec s;
     s.params = m_params;
     for (const QString& name : chosenIntegrators()) s.integrators.push_back(name.toStdString());
     for (const QString& t : m_dts->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) s.dts.push_back(t.toDouble());
@@ -279,15 +280,15 @@ simcore::StudySpec WorkPrecisionDialog::spec() const {
 }
 
 QString WorkPrecisionDialog::validate() const {
-    if (auto problem = simcore::validateStudy(spec())) return QString::fromStdString(*problem);
+    if (auto problem = simlab::validateStudy(spec())) return QString::fromStdString(*problem);
     return {};
 }
 
 void WorkPrecisionDialog::prepare() { m_spec = spec(); }
 
 void WorkPrecisionDialog::compute(const std::atomic<bool>* cancel) {
-    m_result = simcore::runStudy(
-        m_spec, [this](const simcore::StudyProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
+    m_result = simlab::runStudy(
+        m_spec, [this](const simlab::StudyProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
         cancel);
 }
 
@@ -296,7 +297,7 @@ void WorkPrecisionDialog::present() {
     const QStringList headers = {tr("integrator"), tr("DT [s]"), tr("steps"), tr("force evals"), tr("run time [s]"),
                                  tr("error at T [m]"), tr("max error [m]"), tr("energy error [J]"), tr("status")};
     QList<QStringList> cells;
-    for (const simcore::StudyRow& row : rows)
+    for (const simlab::StudyRow& row : rows)
         cells.append({QString::fromStdString(row.item.integrator), number(row.dt), QString::number(row.steps),
                       QString::number(row.forceEvaluations), number(row.wallSeconds),
                       row.ok ? number(row.errorFinal) : QString(), row.ok ? number(row.errorMax) : QString(),
@@ -307,7 +308,7 @@ void WorkPrecisionDialog::present() {
     QCPAxisRect* left = m_plot->axisRect(0);
     QCPAxisRect* right = m_plot->axisRect(1);
     std::map<QString, std::pair<QCPGraph*, QCPGraph*>> graphs;
-    for (const simcore::StudyRow& row : rows) {
+    for (const simlab::StudyRow& row : rows) {
         if (!row.ok || !(row.errorMax > 0) || !(row.wallSeconds > 0)) continue;
         const QString name = QString::fromStdString(row.item.integrator);
         auto& g = graphs[name];
@@ -330,20 +331,20 @@ void WorkPrecisionDialog::present() {
     QString summary = tr("Reference: %1 (its own error about %2 m).")
                           .arg(QString::fromStdString(m_result.reference.description))
                           .arg(number(m_result.reference.estimatedError));
-    for (const simcore::OrderFit& fit : simcore::fitOrders(rows, m_result.reference.estimatedError))
+    for (const simlab::OrderFit& fit : simlab::fitOrders(rows, m_result.reference.estimatedError))
         if (fit.points >= 2)
             summary += tr(" %1: order %2.").arg(QString::fromStdString(fit.integrator)).arg(fit.order, 0, 'f', 2);
     m_summary->setText(summary);
 }
 
 QString WorkPrecisionDialog::csv() const {
-    std::string text = simcore::studyCsvHeader();
-    for (const simcore::StudyRow& row : m_result.rows) text += simcore::studyCsvRow(row);
+    std::string text = simlab::studyCsvHeader();
+    for (const simlab::StudyRow& row : m_result.rows) text += simlab::studyCsvRow(row);
     return QString::fromStdString(text);
 }
 
 QString WorkPrecisionDialog::svg() const {
-    return QString::fromStdString(simcore::studySvg(m_result.rows, "work-precision: " +
+    return QString::fromStdString(simlab::studySvg(m_result.rows, "work-precision: " +
                                                                        std::string(simcore::sceneInfo(m_params.kind()).name)));
 }
 
@@ -353,7 +354,7 @@ RefinementDialog::RefinementDialog(const simcore::ParameterSet& params, QWidget*
     : StudyDialogBase(tr("Refinement study"), params, parent) {
     setChosenIntegrators({QStringLiteral("rk4")});
     auto* form = static_cast<QFormLayout*>(m_options->layout());
-    const std::string key = simcore::refinementKey(params.kind());
+    const std::string key = simlab::refinementKey(params.kind());
     // The scene's current resolution and two finer ones (the sphere: one coarser, one finer,
     // each level 4x the particles).
     QString levels;
@@ -380,10 +381,10 @@ void RefinementDialog::setLevels(const QString& values) { m_levels->setText(valu
 void RefinementDialog::setStep(const QString& dt) { m_dt->setText(dt); }
 void RefinementDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
 
-simcore::RefinementSpec RefinementDialog::spec() const {
-    simcore::RefinementSpec s;
+simlab::RefinementSpec RefinementDialog::spec() const {
+    simlab::RefinementSpec s;
     s.params = m_params;
-    s.key = simcore::refinementKey(m_params.kind());
+    s.key = simlab::refinementKey(m_params.kind());
     for (const QString& t : m_levels->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) s.values.push_back(t.toInt());
     const QStringList names = chosenIntegrators();
     if (!names.isEmpty()) s.integrator = names.front().toStdString();
@@ -401,7 +402,7 @@ QString RefinementDialog::validate() const {
         t.toInt(&ok);
         if (!ok) return tr("Levels are whole numbers separated by spaces, got '%1'").arg(t);
     }
-    if (auto problem = simcore::validateRefinement(spec())) return QString::fromStdString(*problem);
+    if (auto problem = simlab::validateRefinement(spec())) return QString::fromStdString(*problem);
     return {};
 }
 
@@ -412,11 +413,11 @@ void RefinementDialog::prepare() {
 
 void RefinementDialog::compute(const std::atomic<bool>* cancel) {
     try {
-        m_result = simcore::runRefinement(
-            m_spec, [this](const simcore::StudyProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
+        m_result = simlab::runRefinement(
+            m_spec, [this](const simlab::StudyProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
             cancel);
     } catch (const std::exception& e) {
-        m_result = simcore::RefinementResult{};
+        m_result = simlab::RefinementResult{};
         m_error = QString::fromStdString(e.what());
     }
 }
@@ -427,7 +428,7 @@ void RefinementDialog::present() {
     const QStringList headers = {tr("level (%1)").arg(key), tr("particles"), tr("springs"), tr("h [m]"), tr("DT [s]"), tr("steps"),
                                  tr("run time [s]"), tr("volume error"), tr("centre-of-mass error [m]"), tr("status")};
     QList<QStringList> cells;
-    for (const simcore::RefinementRow& row : rows)
+    for (const simlab::RefinementRow& row : rows)
         cells.append({QString::number(row.value), QString::number(row.particles), QString::number(row.springs), number(row.h),
                       number(row.dt), QString::number(row.steps), number(row.wallSeconds),
                       row.ok ? number(row.errorVolume) : QString(), row.ok ? number(row.errorCom) : QString(),
@@ -443,14 +444,14 @@ void RefinementDialog::present() {
         mesh->setName(tr("mesh (%1)").arg(key));
         mesh->setPen(QPen(QColor(30, 120, 200), 1.6));
         mesh->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 6));
-        for (const simcore::RefinementRow& row : rows)
+        for (const simlab::RefinementRow& row : rows)
             if (row.ok && !row.reference && value(row.errorVolume, row.errorCom) > 0 && row.wallSeconds > 0)
                 mesh->addData(row.wallSeconds, value(row.errorVolume, row.errorCom));
         QCPGraph* step = m_plot->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
         step->setName(tr("step (%1=%2, coarser DT)").arg(key).arg(m_result.temporalValue));
         step->setPen(QPen(QColor(200, 30, 30), 1.6, Qt::DashLine));
         step->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssSquare, 6));
-        for (const simcore::TemporalPoint& p : m_result.temporal)
+        for (const simlab::TemporalPoint& p : m_result.temporal)
             if (p.ok && value(p.errorVolume, p.errorCom) > 0 && p.wallSeconds > 0)
                 step->addData(p.wallSeconds, value(p.errorVolume, p.errorCom));
         if (panel == 0) {
@@ -470,20 +471,20 @@ void RefinementDialog::present() {
                        .arg(key)
                        .arg(m_result.temporalValue)
                        .arg(number(m_result.timeErrorVolume), number(m_result.timeErrorCom));
-    for (const simcore::SpatialOrder& fit : simcore::fitSpatialOrders(m_result))
+    for (const simlab::SpatialOrder& fit : simlab::fitSpatialOrders(m_result))
         summary += fit.points >= 2 ? tr("Spatial order (%1): %2. ").arg(QString::fromStdString(fit.observable)).arg(fit.order, 0, 'f', 2)
                                    : tr("Spatial order (%1): not resolved. ").arg(QString::fromStdString(fit.observable));
     m_summary->setText(summary);
 }
 
 QString RefinementDialog::csv() const {
-    std::string text = simcore::refinementCsvHeader();
-    for (const simcore::RefinementRow& row : m_result.rows) text += simcore::refinementCsvRow(m_spec.key, row);
+    std::string text = simlab::refinementCsvHeader();
+    for (const simlab::RefinementRow& row : m_result.rows) text += simlab::refinementCsvRow(m_spec.key, row);
     return QString::fromStdString(text);
 }
 
 QString RefinementDialog::svg() const {
-    return QString::fromStdString(simcore::refinementSvg(
+    return QString::fromStdString(simlab::refinementSvg(
         m_spec, m_result, "refinement: " + std::string(simcore::sceneInfo(m_params.kind()).name)));
 }
 
@@ -505,7 +506,7 @@ StabilityDialog::StabilityDialog(const simcore::ParameterSet& params, QWidget* p
 void StabilityDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
 
 void StabilityDialog::prepare() {
-    m_spec = simcore::StabilitySpec{};
+    m_spec = simlab::StabilitySpec{};
     m_spec.params = m_params;
     for (const QString& name : chosenIntegrators()) m_spec.integrators.push_back(name.toStdString());
     m_spec.duration = m_duration->text().toDouble() > 0 ? m_duration->text().toDouble() : 2.0;
@@ -515,10 +516,10 @@ void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));
     m_rows.clear();
     if (cancel->load()) return;
-    m_modes = simcore::linearModes(m_params);
-    m_rows = simcore::runStability(
+    m_modes = simlab::linearModes(m_params);
+    m_rows = simlab::runStability(
         m_spec, m_modes,
-        [this](const simcore::StabilityProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
+        [this](const simlab::StabilityProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },
         cancel);
 }
 
@@ -531,7 +532,7 @@ void StabilityDialog::present() {
         return number(v);
     };
     QList<QStringList> cells;
-    for (const simcore::StabilityRow& row : m_rows)
+    for (const simlab::StabilityRow& row : m_rows)
         cells.append({QString::fromStdString(row.integrator), dt(row.stable), dt(row.unstable), dt(row.predicted),
                       number(row.stable * m_modes.omegaMax), QString::fromStdString(row.reasonAbove)});
     fillTable(headers, cells);
@@ -549,7 +550,7 @@ void StabilityDialog::present() {
     predicted->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QColor(30, 90, 200), 12));
     double lo = 1.0, hi = 1e-5;
     for (int r = 0; r < int(m_rows.size()); ++r) {
-        const simcore::StabilityRow& row = m_rows[std::size_t(r)];
+        const simlab::StabilityRow& row = m_rows[std::size_t(r)];
         ticker->addTick(r, QString::fromStdString(row.integrator));
         const double shownMax = m_spec.hMax;
         const double s = std::isinf(row.stable) ? shownMax : row.stable;
@@ -577,8 +578,8 @@ void StabilityDialog::present() {
 }
 
 QString StabilityDialog::csv() const {
-    std::string text = simcore::stabilityCsvHeader();
-    for (const simcore::StabilityRow& row : m_rows) text += simcore::stabilityCsvRow(row, m_modes);
+    std::string text = simlab::stabilityCsvHeader();
+    for (const simlab::StabilityRow& row : m_rows) text += simlab::stabilityCsvRow(row, m_modes);
     return QString::fromStdString(text);
 }
 

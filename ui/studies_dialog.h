@@ -14,10 +14,10 @@
 
 #include <QDialog>
 
-#include "params.h"
-#include "refinement.h"
-#include "stability.h"
-#include "study.h"
+#include "simcore/params.h"
+#include "simlab/refinement.h"
+#include "simlab/stability.h"
+#include "simlab/study.h"
 
 class QCheckBox;
 class QCustomPlot;
@@ -94,7 +94,7 @@ class WorkPrecisionDialog : public StudyDialogBase {
 public:
     WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
     ~WorkPrecisionDialog() override { stopAndWait(); }
-    const simcore::StudyResult& result() const { return m_result; }
+    const simlab::StudyResult& result() const { return m_result; }
     void setSteps(const QString& dts);
     void setDuration(double seconds);
 
@@ -107,12 +107,12 @@ protected:
     QString validate() const override;
 
 private:
-    simcore::StudySpec spec() const;
+    simlab::StudySpec spec() const;
     QLineEdit* m_dts = nullptr;
     QLineEdit* m_duration = nullptr;
     QComboBox* m_reference = nullptr;
-    simcore::StudySpec m_spec;
-    simcore::StudyResult m_result;
+    simlab::StudySpec m_spec;
+    simlab::StudyResult m_result;
 };
 
 // The refinement study: one integrator (rk4 checked at first), the levels of the scene's
@@ -123,7 +123,7 @@ class RefinementDialog : public StudyDialogBase {
 public:
     RefinementDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
     ~RefinementDialog() override { stopAndWait(); }
-    const simcore::RefinementResult& result() const { return m_result; }
+    const simlab::RefinementResult& result() const { return m_result; }
     void setLevels(const QString& values);  // e.g. "12 24 48"
     void setStep(const QString& dt);        // "" = chosen automatically
     void setDuration(double seconds);
@@ -137,12 +137,12 @@ protected:
     QString validate() const override;
 
 private:
-    simcore::RefinementSpec spec() const;
+    simlab::RefinementSpec spec() const;
     QLineEdit* m_levels = nullptr;
     QLineEdit* m_dt = nullptr;
     QLineEdit* m_duration = nullptr;
-    simcore::RefinementSpec m_spec;
-    simcore::RefinementResult m_result;
+    simlab::RefinementSpec m_spec;
+    simlab::RefinementResult m_result;
     QString m_error;  // the reference failed: why (no rows then)
 };
 
@@ -151,7 +151,7 @@ class StabilityDialog : public StudyDialogBase {
 public:
     StabilityDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
     ~StabilityDialog() override { stopAndWait(); }
-    const std::vector<simcore::StabilityRow>& rows() const { return m_rows; }
+    const std::vector<simlab::StabilityRow>& rows() const { return m_rows; }
     void setDuration(double seconds);
 
 protected:
@@ -162,9 +162,9 @@ protected:
 
 private:
     QLineEdit* m_duration = nullptr;
-    simcore::StabilitySpec m_spec;
-    simcore::LinearModes m_modes;
-    std::vector<simcore::StabilityRow> m_rows;
+    simlab::StabilitySpec m_spec;
+    simlab::LinearModes m_modes;
+    std::vector<simlab::StabilityRow> m_rows;
 };
 
 }  // namespace elui

@@ -1,4 +1,4 @@
-#include "timeline_dock.h"
+#include "ui/timeline_dock.h"
 
 #include <QHBoxLayout>
 #include <QLabel>

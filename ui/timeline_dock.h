@@ -10,7 +10,7 @@
 
 #include <QDockWidget>
 
-#include "frame.h"
+#include "ui/frame.h"
 
 class QLabel;
 class QPushButton;

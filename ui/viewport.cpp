@@ -1,4 +1,4 @@
-#include "viewport.h"
+#include "ui/viewport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include <QTextDocument>
 #include <QWheelEvent>
 
-#include "plot_series.h"
+#include "ui/plot_series.h"
 
 static void initElasticLabResources() { Q_INIT_RESOURCE(elastic_lab); }
 

@@ -24,9 +24,9 @@
 #include <QOpenGLVertexArrayObject>
 #include <QOpenGLWidget>
 
-#include "camera.h"
-#include "frame.h"
-#include "view_options.h"
+#include "ui/camera.h"
+#include "ui/frame.h"
+#include "ui/view_options.h"
 
 class QLabel;
 

@@ -1,6 +1,4 @@
-#include "cli.h"
-
-#include "world.h"
+#include "app/cli/cli.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -10,20 +8,22 @@
 #include <iostream>
 
 #include "elastic_lab_version.h"
-#include "integrators.h"
-#include "output.h"
-#include "scenefile.h"
-#include "scenes.h"
-#include "simulation.h"
-#include "stability.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/scenes.h"
+#include "simcore/simulation.h"
+#include "simcore/world.h"
+#include "simlab/output.h"
+#include "simlab/scenefile.h"
+#include "simlab/stability.h"
 
 namespace cli {
 
 // --- Validators --------------------------------------------------------------------------------
 
 CLI::Validator finiteIn(double min, double max, bool minExclusive) {
-    const std::string range = std::string(minExclusive ? "(" : "[") + simcore::formatDouble(min) + ", " +
-                              simcore::formatDouble(max) + "]";
+    const std::string range = std::string(minExclusive ? "(" : "[") + simlab::formatDouble(min) + ", " +
+                              simlab::formatDouble(max) + "]";
     return CLI::Validator(
         [=](std::string& text) -> std::string {
             const auto v = simcore::parseNumber(text);
@@ -81,7 +81,7 @@ SceneSetup sceneSetup(const SceneArgs& args) {
     std::string fileIntegrator;
     if (!sceneFileOf(args).empty()) {
         // A scene file wherever a scene name is taken; --set, --dt, --integrator override it.
-        simcore::SceneFileResult read = simcore::readSceneFile(setup.sceneName);
+        simlab::SceneFileResult read = simlab::readSceneFile(setup.sceneName);
         if (!read.file) throw UsageError(read.error);
         setup.sceneName = read.file->sceneName;
         scene = simcore::findScene(setup.sceneName);
@@ -123,7 +123,7 @@ void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& o) {
 
 std::string stabilityWarning(const simcore::ParameterSet& params, std::string_view integrator) {
     simcore::Simulation sim(params, integrator);
-    const auto advice = simcore::stabilityAdvice(sim);
+    const auto advice = simlab::stabilityAdvice(sim);
     if (!advice) return {};
     char suggestion[64];
     std::snprintf(suggestion, sizeof suggestion, " (predicted stable: --dt %g)", advice->suggestedDt);
@@ -133,7 +133,7 @@ std::string stabilityWarning(const simcore::ParameterSet& params, std::string_vi
 // --- Files -------------------------------------------------------------------------------------
 
 void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs) {
-    if (auto clash = simcore::fileClash(inputsThenOutputs)) throw UsageError(*clash);
+    if (auto clash = simlab::fileClash(inputsThenOutputs)) throw UsageError(*clash);
 }
 
 // --- Lists -------------------------------------------------------------------------------------

@@ -16,9 +16,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "integrators.h"
-#include "params.h"
-#include "scenefile.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simlab/scenefile.h"
 
 namespace cli {
 
@@ -68,7 +68,7 @@ struct SceneSetup {
     simcore::ParameterSet params;
     std::string sceneName;
     std::string integrator = "rk4";
-    std::optional<simcore::SceneFile::State> state;  // from a scene file that saved one
+    std::optional<simlab::SceneFile::State> state;  // from a scene file that saved one
 };
 SceneSetup sceneSetup(const SceneArgs& args);
 // The scene file named by --scene, or empty when it names a built-in scene.

@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <string>
 
-#include "cli.h"
-#include "force_kernels.h"
-#include "params.h"
-#include "simulation.h"
+#include "app/cli/cli.h"
+#include "simcore/force_kernels.h"
+#include "simcore/params.h"
+#include "simcore/simulation.h"
 
 namespace cli {
 

@@ -3,9 +3,10 @@
 #include <cstdio>
 #include <string>
 
-#include "cli.h"
-#include "integrators.h"
-#include "scenes.h"
+#include "app/cli/cli.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/scenes.h"
 
 namespace cli {
 

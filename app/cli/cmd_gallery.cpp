@@ -1,8 +1,8 @@
 // `gallery`: the stiff and extreme presets (simlab/gallery.h) and their expected outcomes.
 #include <cstdio>
 
-#include "cli.h"
-#include "gallery.h"
+#include "app/cli/cli.h"
+#include "simlab/gallery.h"
 
 namespace cli {
 
@@ -10,14 +10,14 @@ namespace {
 
 int runGallery(const std::string& which, bool list) {
     if (which.empty() || list) {
-        for (const simcore::GalleryCase& c : simcore::galleryCases())
+        for (const simlab::GalleryCase& c : simlab::galleryCases())
             std::printf("%-34s %-8s %s\n", c.name.c_str(), c.expectStable ? "stable" : "fails", c.description.c_str());
         return kExitOk;
     }
     int bad = 0;
-    for (const simcore::GalleryCase& c : simcore::galleryCases()) {
+    for (const simlab::GalleryCase& c : simlab::galleryCases()) {
         if (which != "all" && which != c.name) continue;
-        const simcore::GalleryOutcome o = simcore::runGalleryCase(c);
+        const simlab::GalleryOutcome o = simlab::runGalleryCase(c);
         std::printf("%-34s %-4s %s\n", c.name.c_str(), o.asExpected ? "ok" : "FAIL", o.summary.c_str());
         std::fflush(stdout);
         bad += o.asExpected ? 0 : 1;
@@ -40,7 +40,7 @@ Command addGalleryCommand(CLI::App& app) {
     return {sub,
             [args] {
                 if (args->run.empty() || args->run == "all") return;
-                for (const simcore::GalleryCase& c : simcore::galleryCases())
+                for (const simlab::GalleryCase& c : simlab::galleryCases())
                     if (c.name == args->run) return;
                 throw UsageError("unknown gallery case " + simcore::quoteShort(args->run) +
                                  "; see elastic-lab-cli gallery --list");

@@ -3,11 +3,12 @@
 #include <iostream>
 #include <memory>
 
-#include "cli.h"
-#include "integrators.h"
-#include "scaling.h"
-#include "scenes.h"
-#include "world.h"
+#include "app/cli/cli.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/scaling.h"
+#include "simcore/scenes.h"
+#include "simcore/world.h"
 
 namespace cli {
 

@@ -2,9 +2,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli.h"
-#include "impact.h"
-#include "output.h"
+#include "app/cli/cli.h"
+#include "simlab/impact.h"
+#include "simlab/output.h"
 
 namespace cli {
 
@@ -22,14 +22,14 @@ void checkRestitution(RestitutionArgs& args) {
     args.setup = sceneSetup(args.scene);
     args.speedList = numberList("speeds", args.speeds);
     for (double speed : args.speedList)
-        if (!(speed > 0.0 && speed <= 1e4)) throw UsageError("--speeds: every speed must be in (0, 10000] m/s, got " + simcore::formatDouble(speed));
+        if (!(speed > 0.0 && speed <= 1e4)) throw UsageError("--speeds: every speed must be in (0, 10000] m/s, got " + simlab::formatDouble(speed));
 }
 
 int runRestitution(const RestitutionArgs& args) {
     const SceneSetup& setup = args.setup;
-    std::unique_ptr<simcore::AtomicFile> csv;
+    std::unique_ptr<simlab::AtomicFile> csv;
     if (!args.csv.empty()) {
-        csv = std::make_unique<simcore::AtomicFile>(args.csv);
+        csv = std::make_unique<simlab::AtomicFile>(args.csv);
         if (!csv->ok()) throw UsageError(csv->error());
     }
     const simcore::ParameterSet& p = setup.params;
@@ -40,12 +40,12 @@ int runRestitution(const RestitutionArgs& args) {
     std::printf("%-12s %-12s %-12s %-14s %-10s\n", "speed_m/s", "particle", "body", "body_depth_m", "dt_s");
     std::string text = "speed,e_set,particle,body,body_depth,dt\n";  // -1: no rebound
     for (double speed : args.speedList) {
-        const simcore::ImpactRow row = simcore::measureImpact(p, setup.integrator, speed);
+        const simlab::ImpactRow row = simlab::measureImpact(p, setup.integrator, speed);
         std::printf("%-12g %-12.4f %-12.4f %-14.4g %-10.3g %s\n", row.speed, row.particle, row.body, row.depth, row.dt,
                     row.note.c_str());
-        text += simcore::formatDouble(row.speed) + ',' + simcore::formatDouble(p.get(simcore::Param::Restitution)) + ',' +
-                simcore::formatDouble(row.particle) + ',' + simcore::formatDouble(row.body) + ',' +
-                simcore::formatDouble(row.depth) + ',' + simcore::formatDouble(row.dt) + '\n';
+        text += simlab::formatDouble(row.speed) + ',' + simlab::formatDouble(p.get(simcore::Param::Restitution)) + ',' +
+                simlab::formatDouble(row.particle) + ',' + simlab::formatDouble(row.body) + ',' +
+                simlab::formatDouble(row.depth) + ',' + simlab::formatDouble(row.dt) + '\n';
     }
     if (csv) {
         csv->write(text);

@@ -7,10 +7,11 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli.h"
-#include "output.h"
-#include "simulation.h"
-#include "world.h"
+#include "app/cli/cli.h"
+#include "simcore/integrator_table.h"
+#include "simcore/simulation.h"
+#include "simcore/world.h"
+#include "simlab/output.h"
 
 namespace cli {
 
@@ -125,13 +126,13 @@ bool stepThrough(Sim& sim, const RunArgs& args, double tEnd, Row&& row) {
 }
 
 // Opens every output before running: an unwritable path is bad input, found at once.
-using Outputs = std::array<std::unique_ptr<simcore::AtomicFile>, 3>;  // csv, state, scene
+using Outputs = std::array<std::unique_ptr<simlab::AtomicFile>, 3>;  // csv, state, scene
 Outputs openOutputs(const RunArgs& args) {
     Outputs files;
     const std::array<const std::string*, 3> paths = {&args.csv, &args.state, &args.saveScene};
     for (std::size_t k = 0; k < paths.size(); ++k) {
         if (paths[k]->empty()) continue;
-        files[k] = std::make_unique<simcore::AtomicFile>(*paths[k]);
+        files[k] = std::make_unique<simlab::AtomicFile>(*paths[k]);
         if (!files[k]->ok()) throw UsageError(files[k]->error());
     }
     return files;
@@ -182,19 +183,19 @@ int runWorld(const RunArgs& args) {
     }
     simcore::World& world = *built;
     world.setIntegratorOptions(args.integrator);
-    const auto columns = simcore::worldColumns(world);
+    const auto columns = simlab::worldColumns(world);
     auto& csv = files[0];
     if (csv) {
-        csv->write(simcore::csvHeader(columns));
-        csv->write(simcore::csvRow(columns, world.diagnostics()));
+        csv->write(simlab::csvHeader(columns));
+        csv->write(simlab::csvRow(columns, world.diagnostics()));
     }
     const auto start = std::chrono::steady_clock::now();
     const double tEnd = args.duration;
     const bool tooManySteps = stepThrough(world, args, tEnd, [&] {
-        if (csv) csv->write(simcore::csvRow(columns, world.diagnostics()));
+        if (csv) csv->write(simlab::csvRow(columns, world.diagnostics()));
     });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (files[1]) files[1]->write(simcore::stateTable(world));
+    if (files[1]) files[1]->write(simlab::stateTable(world));
     if (!commitOutputs(files)) return kExitBadInput;
     if (!args.quiet) printWorldSummary(world, wall);
     if (tooManySteps) {
@@ -223,23 +224,23 @@ int run(const RunArgs& args) {
     simcore::Simulation sim(setup.params, setup.integrator);
     sim.setIntegratorOptions(args.integrator);
     if (setup.state)  // resume a saved experiment
-        if (auto error = simcore::applyState(sim, *setup.state)) throw UsageError(*error);
+        if (auto error = simlab::applyState(sim, *setup.state)) throw UsageError(*error);
     if (const std::string warning = stabilityWarning(setup.params, setup.integrator); !warning.empty())
         std::fprintf(stderr, "%s\n", warning.c_str());
 
-    const auto columns = simcore::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters);
+    const auto columns = simlab::timeSeriesColumns(setup.params.kind(), sim.diagnostics().hasSolverCounters);
     if (csv) {
-        csv->write(simcore::csvHeader(columns));
-        csv->write(simcore::csvRow(columns, sim.diagnostics()));
+        csv->write(simlab::csvHeader(columns));
+        csv->write(simlab::csvRow(columns, sim.diagnostics()));
     }
     const auto start = std::chrono::steady_clock::now();
     const double tEnd = sim.time() + duration;  // a resumed run continues from its saved time
     const bool tooManySteps = stepThrough(sim, args, tEnd, [&] {
-        if (csv) csv->write(simcore::csvRow(columns, sim.diagnostics()));
+        if (csv) csv->write(simlab::csvRow(columns, sim.diagnostics()));
     });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (state) state->write(simcore::stateTable(sim));
-    if (sceneOut) sceneOut->write(simcore::sceneFileText(sim, setup.sceneName, true));
+    if (state) state->write(simlab::stateTable(sim));
+    if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
     if (!commitOutputs(files)) return kExitBadInput;
     if (!args.quiet) printSummary(sim, setup, wall);
     // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a

@@ -3,9 +3,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli.h"
-#include "output.h"
-#include "stability.h"
+#include "app/cli/cli.h"
+#include "simcore/integrator_table.h"
+#include "simlab/output.h"
+#include "simlab/stability.h"
 
 namespace cli {
 
@@ -25,14 +26,14 @@ struct StabilityArgs {
     double duration = 2.0, perturb = 0.01, hMin = 1e-5, hMax = 1.0;
     std::string csv, shard;
     bool quiet = false;
-    simcore::StabilitySpec spec;  // after check()
+    simlab::StabilitySpec spec;  // after check()
     SceneSetup setup;
 };
 
 void checkStability(StabilityArgs& args) {
     checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"csv", args.csv}});
     args.setup = sceneSetup(args.scene);
-    simcore::StabilitySpec& spec = args.spec;
+    simlab::StabilitySpec& spec = args.spec;
     spec.params = args.setup.params;
     spec.integrators = nameList("integrators", args.integrators);
     for (const auto& name : spec.integrators)
@@ -42,26 +43,26 @@ void checkStability(StabilityArgs& args) {
     spec.hMin = args.hMin;
     spec.hMax = args.hMax;
     if (spec.hMax < spec.hMin)
-        throw UsageError("--hmax " + simcore::formatDouble(spec.hMax) + " is below --hmin " + simcore::formatDouble(spec.hMin));
+        throw UsageError("--hmax " + simlab::formatDouble(spec.hMax) + " is below --hmin " + simlab::formatDouble(spec.hMin));
     std::tie(spec.shardIndex, spec.shardCount) = parseShard(args.shard);
     // Bounded work: a trial at the smallest step takes duration / hmin steps.
     if (spec.duration / spec.hMin > kMaxSteps)
-        throw UsageError("--duration " + simcore::formatDouble(spec.duration) + " s at --hmin " + simcore::formatDouble(spec.hMin) +
-                         " s would take " + simcore::formatDouble(spec.duration / spec.hMin) + " steps per trial; at most " +
-                         simcore::formatDouble(kMaxSteps) + " (raise --hmin or shorten --duration)");
+        throw UsageError("--duration " + simlab::formatDouble(spec.duration) + " s at --hmin " + simlab::formatDouble(spec.hMin) +
+                         " s would take " + simlab::formatDouble(spec.duration / spec.hMin) + " steps per trial; at most " +
+                         simlab::formatDouble(kMaxSteps) + " (raise --hmin or shorten --duration)");
 }
 
 int runStability(const StabilityArgs& args) {
-    const simcore::StabilitySpec& spec = args.spec;
+    const simlab::StabilitySpec& spec = args.spec;
     const SceneSetup& setup = args.setup;
-    std::unique_ptr<simcore::AtomicFile> csv;
+    std::unique_ptr<simlab::AtomicFile> csv;
     if (!args.csv.empty()) {
-        csv = std::make_unique<simcore::AtomicFile>(args.csv);
+        csv = std::make_unique<simlab::AtomicFile>(args.csv);
         if (!csv->ok()) throw UsageError(csv->error());
     }
     simcore::ParameterSet linearised = spec.params;
     if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
-    const simcore::LinearModes modes = simcore::linearModes(linearised);
+    const simlab::LinearModes modes = simlab::linearModes(linearised);
     const bool quiet = args.quiet;
     if (!quiet) {
         std::printf("scene        %s, T = %g s, start perturbed by %g m (seed %g)\n", setup.sceneName.c_str(),
@@ -81,26 +82,26 @@ int runStability(const StabilityArgs& args) {
         // purely damped one (real axis), computed from the same functions as the prediction.
         std::printf("regions      limit of h*w on an undamped mode / of h*c on a pure decay rate c:");
         for (const std::string& name : spec.integrators) {
-            simcore::LinearModes one;
+            simlab::LinearModes one;
             one.omega2 = {1.0};
             one.damping = {0.0};
             one.omegaMax = 1.0;
-            const double undamped = simcore::predictedStableStep(name, one, 100.0);
+            const double undamped = simlab::predictedStableStep(name, one, 100.0);
             // real axis: the overdamped limit c -> infinity has rates c and w^2/c -> a decay rate
             // of 1 alone is the mode w^2 = 0, c = 1.
-            simcore::LinearModes decay;
+            simlab::LinearModes decay;
             decay.omega2 = {0.0};
             decay.damping = {1.0};
-            const double real = simcore::predictedStableStep(name, decay, 100.0);
+            const double real = simlab::predictedStableStep(name, decay, 100.0);
             std::printf(" %s %s/%s", name.c_str(), stepText(undamped).c_str(), stepText(real).c_str());
         }
         std::printf("\n             (damping moves the undamped limits; see docs/numerics.md)\n\n");
         std::printf("%-17s %12s %12s %12s %9s %9s  %s\n", "integrator", "measured", "(unstable)", "predicted",
                     "h*w meas", "h*w pred", "what happens just above the measured limit");
     }
-    std::vector<simcore::StabilityRow> rows;
-    for (const std::string& name : simcore::shardNames(spec.integrators, spec.shardIndex, spec.shardCount)) {
-        simcore::StabilityRow row = simcore::scanIntegrator(spec, name, modes);
+    std::vector<simlab::StabilityRow> rows;
+    for (const std::string& name : simlab::shardNames(spec.integrators, spec.shardIndex, spec.shardCount)) {
+        simlab::StabilityRow row = simlab::scanIntegrator(spec, name, modes);
         if (!quiet) {
             std::string meas = row.stable <= 0.0 ? "< " + stepText(spec.hMin) : stepText(row.stable);
             if (std::isinf(row.unstable)) meas = ">= " + stepText(row.stable);
@@ -113,8 +114,8 @@ int runStability(const StabilityArgs& args) {
         rows.push_back(std::move(row));
     }
     if (csv) {
-        if (spec.shardIndex == 0) csv->write(simcore::stabilityCsvHeader());
-        for (const auto& row : rows) csv->write(simcore::stabilityCsvRow(row, modes));
+        if (spec.shardIndex == 0) csv->write(simlab::stabilityCsvHeader());
+        for (const auto& row : rows) csv->write(simlab::stabilityCsvRow(row, modes));
         if (!csv->commit()) {
             std::fprintf(stderr, "error: %s\n", csv->error().c_str());
             return kExitBadInput;

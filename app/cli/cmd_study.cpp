@@ -5,12 +5,13 @@
 #include <cstdio>
 #include <memory>
 
-#include "cli.h"
-#include "output.h"
-#include "refinement.h"
-#include "scaling.h"
-#include "scenefile.h"
-#include "study.h"
+#include "app/cli/cli.h"
+#include "simcore/integrator_table.h"
+#include "simcore/scaling.h"
+#include "simlab/output.h"
+#include "simlab/refinement.h"
+#include "simlab/scenefile.h"
+#include "simlab/study.h"
 
 namespace cli {
 
@@ -26,13 +27,13 @@ struct StudyArgs {
     bool fixedStep = false, quiet = false;
     // After check():
     SceneSetup setup;
-    simcore::StudySpec study;
-    simcore::RefinementSpec refinement;
+    simlab::StudySpec study;
+    simlab::RefinementSpec refinement;
 };
 
-void printOrders(const std::vector<simcore::StudyRow>& rows, double referenceError) {
+void printOrders(const std::vector<simlab::StudyRow>& rows, double referenceError) {
     std::printf("fitted convergence order (slope of log error_max against log dt over the 3 smallest resolved steps):\n");
-    for (const simcore::OrderFit& fit : simcore::fitOrders(rows, referenceError)) {
+    for (const simlab::OrderFit& fit : simlab::fitOrders(rows, referenceError)) {
         auto method = simcore::makeIntegrator(fit.integrator);
         const int nominal = method ? method->order() : 0;
         if (std::isfinite(fit.order))
@@ -43,7 +44,7 @@ void printOrders(const std::vector<simcore::StudyRow>& rows, double referenceErr
 }
 
 bool writeFile(const std::string& path, const std::string& text) {
-    simcore::AtomicFile file(path);
+    simlab::AtomicFile file(path);
     if (!file.ok() || !file.write(text) || !file.commit()) {
         std::fprintf(stderr, "error: %s\n", file.error().c_str());
         return false;
@@ -52,9 +53,9 @@ bool writeFile(const std::string& path, const std::string& text) {
 }
 
 // Opens --csv before any work: an unwritable path is bad input, found first.
-std::unique_ptr<simcore::AtomicFile> openCsv(const std::string& path) {
+std::unique_ptr<simlab::AtomicFile> openCsv(const std::string& path) {
     if (path.empty()) return nullptr;
-    auto csv = std::make_unique<simcore::AtomicFile>(path);
+    auto csv = std::make_unique<simlab::AtomicFile>(path);
     if (!csv->ok()) throw UsageError(csv->error());
     return csv;
 }
@@ -62,14 +63,14 @@ std::unique_ptr<simcore::AtomicFile> openCsv(const std::string& path) {
 // --refine KEY=v1,v2,...: the same body at several resolutions against the finest.
 void checkRefinement(StudyArgs& args) {
     args.setup = sceneSetup(args.scene);
-    simcore::RefinementSpec& spec = args.refinement;
+    simlab::RefinementSpec& spec = args.refinement;
     spec.params = args.setup.params;
     const std::string& refine = *args.refine;
     const auto eq = refine.find('=');
     if (eq == std::string::npos) throw UsageError("--refine: expected KEY=v1,v2,..., got " + simcore::quoteShort(refine));
     spec.key = refine.substr(0, eq);
     for (double v : numberList("refine", refine.substr(eq + 1))) {
-        if (v != std::floor(v) || v < 0 || v > 1e6) throw UsageError("--refine: levels are whole numbers, got " + simcore::formatDouble(v));
+        if (v != std::floor(v) || v < 0 || v > 1e6) throw UsageError("--refine: levels are whole numbers, got " + simlab::formatDouble(v));
         spec.values.push_back(static_cast<int>(v));
     }
     const std::vector<std::string> integrators = nameList("integrators", args.integrators.value_or("rk4"));
@@ -85,21 +86,21 @@ void checkRefinement(StudyArgs& args) {
     spec.interval = args.interval;
     spec.temporalRuns = args.temporalRuns;
     spec.options.fixedStep = args.fixedStep;
-    if (auto error = simcore::validateRefinement(spec)) throw UsageError(*error);
+    if (auto error = simlab::validateRefinement(spec)) throw UsageError(*error);
 }
 
 int runRefinement(const StudyArgs& args) {
-    const simcore::RefinementSpec& spec = args.refinement;
+    const simlab::RefinementSpec& spec = args.refinement;
     const SceneSetup& setup = args.setup;
-    std::unique_ptr<simcore::AtomicFile> csv = openCsv(args.csv);
+    std::unique_ptr<simlab::AtomicFile> csv = openCsv(args.csv);
 
     const bool quiet = args.quiet;
-    auto progress = [&](const simcore::StudyProgress& p) {
+    auto progress = [&](const simlab::StudyProgress& p) {
         if (!quiet && p.done < p.total) std::fprintf(stderr, "[%d/%d] %s\n", p.done + 1, p.total, p.what.c_str());
     };
-    simcore::RefinementResult result;
+    simlab::RefinementResult result;
     try {
-        result = simcore::runRefinement(spec, progress);
+        result = simlab::runRefinement(spec, progress);
     } catch (const std::runtime_error& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return kExitFailed;
@@ -117,7 +118,7 @@ int runRefinement(const StudyArgs& args) {
                     "             of the mass-weighted centre of mass [m]; both over the grid, against the finest level\n\n");
         std::printf("%-14s %9s %8s %11s %10s %8s %10s %12s %12s  %s\n", "level", "particles", "springs", "h [m]", "dt [s]",
                     "steps", "wall_s", "error_volume", "error_com", "status");
-        for (const simcore::RefinementRow& row : result.rows) {
+        for (const simlab::RefinementRow& row : result.rows) {
             const std::string level = spec.key + "=" + std::to_string(row.value);
             std::printf("%-14s %9d %8d %11.4g %10.4g %8ld %10.4g ", level.c_str(), row.particles, row.springs, row.h, row.dt,
                         row.steps, row.wallSeconds);
@@ -131,7 +132,7 @@ int runRefinement(const StudyArgs& args) {
         if (!result.temporal.empty()) {
             std::printf("\ntemporal     %s=%d at coarser steps against itself at the study's step (the plot's step curve):\n",
                         spec.key.c_str(), result.temporalValue);
-            for (const simcore::TemporalPoint& p : result.temporal) {
+            for (const simlab::TemporalPoint& p : result.temporal) {
                 std::printf("  %-3s %-10.4g %8ld steps %10.4g s ", p.tolerance > 0 ? "tol" : "dt",
                             p.tolerance > 0 ? p.tolerance : p.dt, p.steps, p.wallSeconds);
                 if (p.ok) std::printf("%12.4g %12.4g\n", p.errorVolume, p.errorCom);
@@ -143,7 +144,7 @@ int runRefinement(const StudyArgs& args) {
         }
         std::printf("\nfitted spatial order (slope of log error against log h, h = mean structural rest length,\n"
                     "over the 3 finest resolved levels; measured against the finest, which steepens it slightly):\n");
-        for (const simcore::SpatialOrder& fit : simcore::fitSpatialOrders(result)) {
+        for (const simlab::SpatialOrder& fit : simlab::fitSpatialOrders(result)) {
             if (std::isfinite(fit.order))
                 std::printf("  %-8s %5.2f  (%d points)\n", fit.observable.c_str(), fit.order, fit.points);
             else
@@ -151,8 +152,8 @@ int runRefinement(const StudyArgs& args) {
         }
     }
     if (csv) {
-        csv->write(simcore::refinementCsvHeader());
-        for (const simcore::RefinementRow& row : result.rows) csv->write(simcore::refinementCsvRow(spec.key, row));
+        csv->write(simlab::refinementCsvHeader());
+        for (const simlab::RefinementRow& row : result.rows) csv->write(simlab::refinementCsvRow(spec.key, row));
         if (!csv->commit()) {
             std::fprintf(stderr, "error: %s\n", csv->error().c_str());
             return kExitBadInput;
@@ -160,21 +161,21 @@ int runRefinement(const StudyArgs& args) {
     }
     if (!args.plot.empty()) {
         const std::string title = args.title.value_or(
-            setup.sceneName + ": mesh error and step error against run time, T = " + simcore::formatDouble(spec.duration) + " s");
-        if (!writeFile(args.plot, simcore::refinementSvg(spec, result, title))) return kExitBadInput;
+            setup.sceneName + ": mesh error and step error against run time, T = " + simlab::formatDouble(spec.duration) + " s");
+        if (!writeFile(args.plot, simlab::refinementSvg(spec, result, title))) return kExitBadInput;
     }
     return kExitOk;
 }
 
 // Merge mode: fit and plot rows written earlier (e.g. the shards, concatenated).
 int runFromCsv(const StudyArgs& args) {
-    const simcore::InputFile input = simcore::readInputFile(args.fromCsv, "a study CSV");
+    const simlab::InputFile input = simlab::readInputFile(args.fromCsv, "a study CSV");
     if (!input.error.empty()) throw UsageError(input.error);
     std::string error;
-    const auto rows = simcore::parseStudyCsv(input.text, &error);
+    const auto rows = simlab::parseStudyCsv(input.text, &error);
     if (!rows) throw UsageError(simcore::quoteShort(args.fromCsv, 200) + ": " + error);
     printOrders(*rows, 0.0);
-    if (!args.plot.empty() && !writeFile(args.plot, simcore::studySvg(*rows, args.title.value_or("work-precision"))))
+    if (!args.plot.empty() && !writeFile(args.plot, simlab::studySvg(*rows, args.title.value_or("work-precision"))))
         return kExitBadInput;
     return kExitOk;
 }
@@ -184,7 +185,7 @@ void checkStudy(StudyArgs& args) {
     if (args.refine) return checkRefinement(args);
     if (!args.fromCsv.empty()) return;
     args.setup = sceneSetup(args.scene);
-    simcore::StudySpec& spec = args.study;
+    simlab::StudySpec& spec = args.study;
     spec.params = args.setup.params;
     spec.integrators = nameList("integrators", args.integrators.value_or("euler,midpoint,rk4"));
     if (args.dts) spec.dts = numberList("dts", *args.dts);
@@ -195,7 +196,7 @@ void checkStudy(StudyArgs& args) {
     spec.reference = args.reference.value_or("auto");
     spec.options.fixedStep = args.fixedStep;
     std::tie(spec.shardIndex, spec.shardCount) = parseShard(args.shard.value_or(""));
-    if (auto error = simcore::validateStudy(spec)) throw UsageError(*error);
+    if (auto error = simlab::validateStudy(spec)) throw UsageError(*error);
     // Bounded work: the smallest step, and the RK4 reference 16x below it, take at most
     // kMaxSteps steps each (--dts 1e-300 is refused, not run for ever or counted as 0 steps).
     if (!spec.dts.empty()) {
@@ -215,11 +216,11 @@ void checkStudy(StudyArgs& args) {
 int runStudy(const StudyArgs& args) {
     if (args.refine) return runRefinement(args);
     if (!args.fromCsv.empty()) return runFromCsv(args);
-    const simcore::StudySpec& spec = args.study;
+    const simlab::StudySpec& spec = args.study;
     const SceneSetup& setup = args.setup;
-    std::unique_ptr<simcore::AtomicFile> csv = openCsv(args.csv);
+    std::unique_ptr<simlab::AtomicFile> csv = openCsv(args.csv);
     const bool quiet = args.quiet;
-    const auto items = simcore::shardItems(simcore::studyItems(spec), spec.shardIndex, spec.shardCount);
+    const auto items = simlab::shardItems(simlab::studyItems(spec), spec.shardIndex, spec.shardCount);
     if (!quiet)
         std::printf("study        %s, T = %g s, %zu runs%s, timing: median of %d\n", setup.sceneName.c_str(),
                     spec.duration, items.size(),
@@ -227,9 +228,9 @@ int runStudy(const StudyArgs& args) {
                                            std::to_string(spec.shardCount) + ")").c_str()
                                         : "",
                     spec.repeat);
-    simcore::StudyReference reference;
+    simlab::StudyReference reference;
     try {
-        reference = simcore::computeReference(spec);
+        reference = simlab::computeReference(spec);
     } catch (const std::runtime_error& e) {
         std::fprintf(stderr, "error: %s\n", e.what());
         return kExitFailed;
@@ -241,9 +242,9 @@ int runStudy(const StudyArgs& args) {
         std::printf("%-17s %-11s %8s %11s %11s %11s %11s %11s  %s\n", "integrator", "dt", "steps", "force_evals",
                     "wall_s", "error_final", "error_max", "err_energy", "status");
     }
-    std::vector<simcore::StudyRow> rows;
-    for (const simcore::StudyItem& item : items) {
-        simcore::StudyRow row = simcore::runStudyItem(spec, item, reference);
+    std::vector<simlab::StudyRow> rows;
+    for (const simlab::StudyItem& item : items) {
+        simlab::StudyRow row = simlab::runStudyItem(spec, item, reference);
         if (!quiet) {
             std::printf("%-17s %-11.4g %8ld %11llu %11.4g ", item.integrator.c_str(), row.dt, row.steps,
                         static_cast<unsigned long long>(row.forceEvaluations), row.wallSeconds);
@@ -262,8 +263,8 @@ int runStudy(const StudyArgs& args) {
         printOrders(rows, reference.estimatedError);
     }
     if (csv) {
-        if (spec.shardIndex == 0) csv->write(simcore::studyCsvHeader());  // shards after the first append rows only
-        for (const auto& row : rows) csv->write(simcore::studyCsvRow(row));
+        if (spec.shardIndex == 0) csv->write(simlab::studyCsvHeader());  // shards after the first append rows only
+        for (const auto& row : rows) csv->write(simlab::studyCsvRow(row));
         if (!csv->commit()) {
             std::fprintf(stderr, "error: %s\n", csv->error().c_str());
             return kExitBadInput;
@@ -271,8 +272,8 @@ int runStudy(const StudyArgs& args) {
     }
     if (!args.plot.empty()) {
         const std::string title =
-            args.title.value_or(setup.sceneName + ": error against cost, T = " + simcore::formatDouble(spec.duration) + " s");
-        if (!writeFile(args.plot, simcore::studySvg(rows, title))) return kExitBadInput;
+            args.title.value_or(setup.sceneName + ": error against cost, T = " + simlab::formatDouble(spec.duration) + " s");
+        if (!writeFile(args.plot, simlab::studySvg(rows, title))) return kExitBadInput;
     }
     return kExitOk;
 }

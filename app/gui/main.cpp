@@ -25,24 +25,26 @@
 #include <QSurfaceFormat>
 #include <QTimer>
 
-#include "body.h"
 #include "elastic_lab_version.h"
-#include "export.h"
-#include "lessons.h"
-#include "lessons_dialog.h"
-#include "integrators.h"
-#include "output.h"
-#include "params.h"
-#include "main_window.h"
-#include "parameter_dock.h"
-#include "plot_dock.h"
-#include "run_dock.h"
-#include "presets.h"
-#include "scenefile.h"
-#include "scenes.h"
-#include "simulation_controller.h"
-#include "stability_map_dock.h"
-#include "viewport.h"
+#include "simcore/body.h"
+#include "simcore/integrator_table.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simcore/scaling.h"
+#include "simcore/scenes.h"
+#include "simlab/output.h"
+#include "simlab/scenefile.h"
+#include "ui/export.h"
+#include "ui/lessons.h"
+#include "ui/lessons_dialog.h"
+#include "ui/main_window.h"
+#include "ui/parameter_dock.h"
+#include "ui/plot_dock.h"
+#include "ui/presets.h"
+#include "ui/run_dock.h"
+#include "ui/simulation_controller.h"
+#include "ui/stability_map_dock.h"
+#include "ui/viewport.h"
 
 namespace {
 
@@ -177,9 +179,9 @@ int main(int argc, char** argv) {
     // and --compare override what the file holds.
     const QString sceneArg = parser.value(sceneOpt);
     const simcore::SceneInfo* scene = simcore::findScene(sceneArg.toStdString());
-    std::optional<simcore::SceneFile> file;
+    std::optional<simlab::SceneFile> file;
     if (!scene && sceneArg.endsWith(QLatin1String(".json"))) {
-        simcore::SceneFileResult read = simcore::readSceneFile(sceneArg.toStdString());
+        simlab::SceneFileResult read = simlab::readSceneFile(sceneArg.toStdString());
         if (!read.file) return fail(QString::fromStdString(read.error));
         file = std::move(read.file);
         scene = &simcore::sceneInfo(file->params.kind());
@@ -265,14 +267,14 @@ int main(int argc, char** argv) {
         // The screenshot is an output like the CLI's: never the scene file it was given, in a
         // format this build writes, and a place that can be written, all known before it runs.
         const QString shotPath = parser.value(shotOpt);
-        if (auto clash = simcore::fileClash({{"scene", file ? sceneArg.toStdString() : std::string()},
+        if (auto clash = simlab::fileClash({{"scene", file ? sceneArg.toStdString() : std::string()},
                                              {"screenshot", shotPath.toStdString()}}))
             return fail(QString::fromStdString(*clash));
         const QByteArray suffix = QFileInfo(shotPath).suffix().toLower().toLatin1();
         if (!suffix.isEmpty() && !QImageWriter::supportedImageFormats().contains(suffix))
             return fail(QStringLiteral("--screenshot %1: this build cannot write .%2 images; use .png")
                             .arg(quoted(shotPath, 200), QString::fromLatin1(suffix)));
-        const simcore::AtomicFile probe(shotPath.toStdString());  // discarded: nothing is written
+        const simlab::AtomicFile probe(shotPath.toStdString());  // discarded: nothing is written
         if (!probe.ok()) return fail(QStringLiteral("--screenshot ") + QString::fromStdString(probe.error()));
     }
     int selected = -1;
@@ -316,7 +318,7 @@ int main(int argc, char** argv) {
     elui::SimulationController* controller = window.controller();
     if (parser.isSet(doublingOpt)) window.runDock()->findChild<QCheckBox*>(QStringLiteral("stepDoubling"))->setChecked(true);
     if (file) {
-        simcore::SceneFile changed = *file;
+        simlab::SceneFile changed = *file;
         changed.params = params;
         changed.integrator = integrators.front().toStdString();
         window.openScene(changed, integrators, sceneArg, &*file);

@@ -31,15 +31,15 @@
 
 #include <Eigen/Core>
 
-#include "body.h"
-#include "contact.h"
-#include "force_kernels.h"
-#include "forces.h"
 #include "kernel_inputs.h"
-#include "parallel.h"
-#include "params.h"
-#include "scaling.h"
-#include "scenes.h"
+#include "simcore/body.h"
+#include "simcore/contact.h"
+#include "simcore/force_kernels.h"
+#include "simcore/forces.h"
+#include "simcore/parallel.h"
+#include "simcore/params.h"
+#include "simcore/scaling.h"
+#include "simcore/scenes.h"
 
 using namespace simcore;
 namespace kernels = simcore::kernels;

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "integrators.h"
+#include "simcore/integrators.h"
 
 namespace simcore {
 

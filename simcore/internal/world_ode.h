@@ -19,9 +19,9 @@
 
 #include <Eigen/Core>
 
-#include "contact_pairs.h"
-#include "integrators.h"
-#include "world_body.h"
+#include "simcore/contact_pairs.h"
+#include "simcore/integrators.h"
+#include "simcore/internal/world_body.h"
 
 namespace simcore {
 

@@ -19,8 +19,8 @@
 
 #include <Eigen/Core>
 
-#include "body.h"
-#include "forces.h"
+#include "simcore/body.h"
+#include "simcore/forces.h"
 
 namespace simcore {
 

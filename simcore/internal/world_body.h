@@ -12,11 +12,11 @@
 
 #include <Eigen/Core>
 
-#include "body.h"
-#include "body_ode.h"
-#include "forces.h"
-#include "params.h"
-#include "scaling.h"
+#include "simcore/body.h"
+#include "simcore/forces.h"
+#include "simcore/internal/body_ode.h"
+#include "simcore/params.h"
+#include "simcore/scaling.h"
 
 namespace simcore {
 
@@ -33,22 +33,17 @@ Eigen::VectorXd inverseMasses(const Body& body);
 // Adds the seeded start perturbation (parameter `perturb`, `seed`) to the moving coordinates.
 void perturbStart(const Params::Start& start, const Eigen::VectorXd& inverseMass3, double* x);
 
-// What a world's body is made of before it is built.
-struct WorldBodySpec {
-    ParameterSet params{SceneKind::Sphere3d};
-    Eigen::Vector3d position = Eigen::Vector3d::Zero();  // start centre (centroid) [m]
-    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // start velocity of every particle [m/s]
-};
-
 class WorldBody {
 public:
-    // Builds the body at its start; throws std::invalid_argument for a shape it refuses.
-    WorldBody(const WorldBodySpec& spec, int first, const Eigen::Vector3d& boxCentre);
+    // Builds the body with its centroid at `position`, every particle moving at `velocity`;
+    // throws std::invalid_argument for a shape it refuses.
+    WorldBody(const ParameterSet& params, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, int first,
+              const Eigen::Vector3d& boxCentre);
     WorldBody(const WorldBody&) = delete;
     WorldBody& operator=(const WorldBody&) = delete;
 
-    const WorldBodySpec& spec() const { return m_spec; }
-    const ParameterSet& parameters() const { return m_spec.params; }
+    const ParameterSet& parameters() const { return m_params; }
+    const Eigen::Vector3d& startVelocity() const { return m_velocity; }
     const Params& params() const { return m_p; }
     const Body& body() const { return m_body; }  // positions: the start, placed
     const BodyScale& scale() const { return m_scale; }
@@ -70,7 +65,8 @@ public:
     std::array<Eigen::VectorXd, 3>& scratch() { return m_scratch; }
 
 private:
-    WorldBodySpec m_spec;
+    ParameterSet m_params;
+    Eigen::Vector3d m_velocity;
     Params m_p;
     Body m_body;
     BodyScale m_scale;

@@ -14,7 +14,7 @@
 #include <Eigen/Core>
 #include <Eigen/IterativeLinearSolvers>
 
-#include "integrators.h"
+#include "simcore/integrators.h"
 
 namespace simcore {
 class ImplicitOperator;

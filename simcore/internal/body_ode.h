@@ -30,10 +30,10 @@
 
 #include <Eigen/Core>
 
-#include "body.h"
-#include "contact.h"
-#include "forces.h"
-#include "integrators.h"
+#include "simcore/body.h"
+#include "simcore/contact.h"
+#include "simcore/forces.h"
+#include "simcore/integrators.h"
 
 namespace simcore {
 
