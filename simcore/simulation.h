@@ -378,7 +378,7 @@ private:
 
     ParameterSet m_params;
     Params m_p;                   // m_params resolved, once each time m_params changes
-    int m_threads = hardwareThreads();
+    int m_threads = availableThreads();  // the CPUs this process may use (parallel.h)
     std::unique_ptr<ThreadPool> m_pool;  // declared before m_forces, which points to it
     Body m_body;
     std::unique_ptr<Integrator> m_integrator;

@@ -97,7 +97,7 @@ private:
     double m_dtLimit = 0.0;               // estimated explicit stability limit on DT [s]
     double m_kickInner = 0.0, m_kickOuter = 0.0;  // start kick along x [m/s]
     bool m_stepDoubling = false;
-    int m_threads = std::max(1, simcore::hardwareThreads() - 1);  // force-evaluation threads
+    int m_threads = std::max(1, simcore::availableThreads() - 1);  // force-evaluation threads
 };
 
 // Lane sim's integrator name, as the GUI shows it.

@@ -22,7 +22,7 @@ long peakResidentKiB() {
 
 struct BenchArgs {
     SceneArgs scene;
-    long steps = 200, warmup = 10, threads = simcore::hardwareThreads();
+    long steps = 200, warmup = 10, threads = simcore::availableThreads();
     std::string kernels;
     bool header = false;
     bool stages = false;
@@ -102,7 +102,7 @@ Command addBenchCommand(CLI::App& app) {
     addSceneOptions(*sub, args->scene);
     sub->add_option("--steps", args->steps, "steps timed")->type_name("N")->check(wholeIn(1, 100000000L))->capture_default_str();
     sub->add_option("--warmup", args->warmup, "steps run before timing")->type_name("N")->check(wholeIn(0, 1000000L))->capture_default_str();
-    sub->add_option("--threads", args->threads, "worker threads (default: the hardware's)")
+    sub->add_option("--threads", args->threads, "threads (default: all CPUs this process may use: its affinity mask and cgroup CPU quota)")
         ->type_name("K")
         ->check(wholeIn(1, 256))
         ->capture_default_str();
