@@ -60,7 +60,7 @@ bool substitute(std::string& arg) {
 }
 
 bool isCommand(const std::string& word) {
-    static const char* commands[] = {"scenes", "params", "integrators", "run", "study", "stability",
+    static const char* commands[] = {"scenes", "params", "integrators", "run", "study", "conservation", "stability",
                                      "restitution", "gallery", "bench", "completion", "help"};
     for (const char* c : commands)
         if (word == c) return true;

@@ -17,7 +17,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <future>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -35,11 +38,13 @@
 #include "simcore/scenes.h"
 #include "simcore/simulation.h"
 #include "simlab/analytic.h"
+#include "simlab/conservation.h"
 #include "simlab/output.h"
 #include "simlab/refinement.h"
 #include "simlab/scenefile.h"
 #include "simlab/stability.h"
 #include "simlab/study.h"
+#include "simlab/sweep.h"
 
 namespace py = pybind11;
 
@@ -159,8 +164,9 @@ simcore::IntegratorOptions integratorOptions(const py::object& options, simcore:
 // Calls stepOnce() (which returns whether to go on) until it says stop, with the GIL released,
 // taking the GIL back every kSlice to run pending signal handlers: a KeyboardInterrupt (or
 // any exception a handler raises) propagates from between two calls.
+// `between` (if any) runs with the GIL after every slice: a progress callback, which may raise.
 template <class StepOnce>
-void inSlices(StepOnce&& stepOnce) {
+void inSlices(StepOnce&& stepOnce, const std::function<void()>& between = {}) {
     for (bool more = true; more;) {
         {
             py::gil_scoped_release release;
@@ -169,6 +175,7 @@ void inSlices(StepOnce&& stepOnce) {
             while (more && std::chrono::steady_clock::now() - start < kSlice);
         }
         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        if (between) between();
     }
 }
 
@@ -230,7 +237,35 @@ public:
         if (s.state)
             if (auto error = simlab::applyState(*m_sim, *s.state)) throw py::value_error(*error);
         m_columns = simlab::timeSeriesColumns(s.params.kind());
+        publish();
     }
+
+    // Pickling (through the scene file format): the scene file with the state, the integrator
+    // options and the thread count. A restored simulation goes on bit for bit (the state, the
+    // step counter, time and an adaptive method's next step are in the scene file).
+    py::tuple getState() const {
+        return py::make_tuple(simlab::sceneFileText(sim(), m_scene, true), integratorOptionsDict(), sim().threads());
+    }
+    static std::unique_ptr<PySimulation> fromState(const py::tuple& state) {
+        if (state.size() != 3) throw std::runtime_error("not a pickled elasticlab.Simulation");
+        simlab::SceneFileResult read = simlab::parseSceneFile(state[0].cast<std::string>());
+        if (!read.file) throw py::value_error(read.error);
+        auto self = std::unique_ptr<PySimulation>(new PySimulation());
+        self->m_scene = read.file->sceneName;
+        self->m_sim = std::make_unique<simcore::Simulation>(read.file->params, read.file->integrator);
+        self->m_sim->setIntegratorOptions(integratorOptions(state[1]));
+        self->m_sim->setThreads(state[2].cast<int>());
+        if (read.file->state)
+            if (auto error = simlab::applyState(*self->m_sim, *read.file->state)) throw py::value_error(*error);
+        self->m_columns = simlab::timeSeriesColumns(read.file->params.kind());
+        self->publish();
+        return self;
+    }
+
+    // Simulated time and step count as the stepping thread last published them: readable from
+    // any thread at any moment (a progress bar beside a running run).
+    double time() const { return m_time.load(std::memory_order_relaxed); }
+    long stepCount() const { return m_steps.load(std::memory_order_relaxed); }
 
     // For reading: refused while another thread steps (a look, not a claim: a reader never
     // makes a stepping thread fail).
@@ -245,34 +280,55 @@ public:
         const long n = static_cast<long>(checkedNumber(count, "n", 1, 1e12, false, true));
         Busy busy(m_busy);
         long done = 0;
-        inSlices([&] { return m_sim->step() && ++done < n; });
+        inSlices([&] {
+            const bool more = m_sim->step() && ++done < n;
+            publish();
+            return more;
+        });
         raiseIfFailed(py::none());
     }
 
     // Runs for `duration` seconds of simulated time (whole steps; a fixed-step run ends at the
-    // first step at or past the end, as the CLI's run). With `every`, returns the diagnostics
-    // rows of the start, every `every` steps and the end (the CLI's --csv --every), one row per
-    // line, columns as diagnostics_columns.
-    py::object run(const py::handle& durationArg, const py::object& everyArg) {
+    // first step at or past the end, as the CLI's run). Rows of the diagnostics (columns as
+    // diagnostics_columns), one per line, are recorded at the start, every `every` steps and the
+    // end, or at `times` (absolute simulated times, ascending): the first step at or past each
+    // (an adaptive method shortens its step to land on it, as it does at the end). `progress`,
+    // when given, is called with the simulated time between slices of work.
+    py::object run(const py::handle& durationArg, const py::object& everyArg, const py::object& timesArg,
+                   const py::object& progress) {
         const double duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
         const long every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
+        const std::vector<double> times = timesArg.is_none() ? std::vector<double>{} : timesArg.cast<std::vector<double>>();
+        const bool sampled = every || !timesArg.is_none();
         Busy busy(m_busy);
         std::vector<double> rows;
         auto record = [&] {
             for (const simlab::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
         };
-        if (every) record();
+        std::size_t next = 0;  // the next of `times` not yet recorded
+        auto due = [&] {       // records one row for every sample time reached (one per step)
+            bool reached = false;
+            while (next < times.size() && m_sim->time() >= times[next] - 1e-9 * m_sim->dt()) ++next, reached = true;
+            return reached;
+        };
+        if (every || due()) record();
         const double tEnd = m_sim->time() + duration;
         auto reached = [&] { return m_sim->time() >= tEnd - 1e-9 * m_sim->dt(); };
+        std::function<void()> between;
+        if (!progress.is_none()) between = [&] { progress(m_sim->time()); };
         if (!reached())
             inSlices([&] {
-                if (!m_sim->step(tEnd)) return false;
+                const bool ok = m_sim->step(next < times.size() ? std::min(tEnd, times[next]) : tEnd);
+                publish();
+                if (!ok) return false;
                 const bool last = reached();
-                if (every && (m_sim->stepCount() % every == 0 || last)) record();
+                const bool sample = due();
+                if ((every && (m_sim->stepCount() % every == 0 || last)) || sample || (last && sampled && !every))
+                    record();
                 return !last;
-            });
+            }, between);
         py::object table = py::none();
-        if (every) {
+        if (sampled) {
             const auto width = static_cast<py::ssize_t>(m_columns.size());
             py::array_t<double> a({static_cast<py::ssize_t>(rows.size()) / width, width});
             std::copy(rows.begin(), rows.end(), a.mutable_data());
@@ -285,6 +341,7 @@ public:
     void reset() {
         Busy busy(m_busy);
         m_sim->reset();
+        publish();
     }
 
     // A read-only view of 3 x N doubles of the state (positions or velocities) as N x 3.
@@ -335,7 +392,7 @@ public:
         return out;
     }
 
-    py::dict integratorOptionsDict() {
+    py::dict integratorOptionsDict() const {
         const simcore::IntegratorOptions& o = sim().integratorOptions();
         return py::dict(py::arg("atol") = o.atol, py::arg("rtol") = o.rtol, py::arg("newton") = o.newtonIterations,
                         py::arg("fixed_step") = o.fixedStep, py::arg("error_estimate") = o.stepDoubling,
@@ -382,6 +439,12 @@ public:
     }
 
 private:
+    PySimulation() = default;
+    void publish() {
+        m_time.store(m_sim->time(), std::memory_order_relaxed);
+        m_steps.store(m_sim->stepCount(), std::memory_order_relaxed);
+    }
+
     // SimulationFailed("simulation failed at step S, t = T s: reason") with .reason, .step,
     // .time and, from run(every=...), .rows up to the last good step.
     void raiseIfFailed(const py::object& rows) {
@@ -402,6 +465,8 @@ private:
     std::unique_ptr<simcore::Simulation> m_sim;
     std::vector<simlab::CsvColumn> m_columns;
     std::atomic<bool> m_busy{false};
+    std::atomic<double> m_time{0.0};
+    std::atomic<long> m_steps{0};
 };
 
 // --- studies -----------------------------------------------------------------------------------
@@ -429,8 +494,10 @@ py::object toleranceOrNone(double tolerance) { return tolerance > 0 ? py::object
 py::dict study(const py::object& scene, const std::vector<std::string>& integrators,
                const std::optional<std::vector<double>>& dts, const std::optional<std::vector<double>>& tolerances,
                const py::handle& duration, const py::handle& repeat, const std::string& reference,
-               const py::handle& samples, bool fixedStep, const py::object& csvPath, const py::object& plotPath,
-               const py::object& title, const py::kwargs& parameters) {
+               const py::handle& samples, bool fixedStep, const py::handle& timeBudget,
+               const std::vector<std::string>& precision, bool compensated, const py::object& csvPath,
+               const py::object& timingsPath, const py::object& plotPath, const py::object& title,
+               const py::kwargs& parameters) {
     const Scene s = sceneFrom(scene, parameters);
     simlab::StudySpec spec;
     spec.params = s.params;
@@ -440,41 +507,122 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e6, true, false, "s");
     spec.repeat = static_cast<int>(checkedNumber(repeat, "repeat", 1, 1000, false, true));
     spec.samples = static_cast<int>(checkedNumber(samples, "samples", 1, 100000, false, true));
+    spec.timeBudget = checkedNumber(timeBudget, "time_budget", 0.0, 1e6, false, false, "s");
+    spec.precisions = precision;
+    spec.compensated = compensated;
     spec.reference = reference;
     spec.options.fixedStep = fixedStep;
     if (auto error = simlab::validateStudy(spec)) throw py::value_error(*error);
     auto csv = openOutput(csvPath);
+    auto timings = openOutput(timingsPath);
     auto plot = openOutput(plotPath);
 
     const simlab::StudyResult result =
         cancellable([&](const std::atomic<bool>* cancel) { return simlab::runStudy(spec, {}, cancel); });
 
     py::list rows;
-    for (const simlab::StudyRow& r : result.rows)
-        rows.append(py::dict(py::arg("integrator") = r.item.integrator, py::arg("dt") = r.dt,
-                             py::arg("tolerance") = toleranceOrNone(r.item.tolerance),
-                             py::arg("steps") = r.steps, py::arg("force_evals") = r.forceEvaluations,
-                             py::arg("wall_seconds") = r.wallSeconds, py::arg("error_final") = nanIfFailed(r.ok, r.errorFinal),
-                             py::arg("error_max") = nanIfFailed(r.ok, r.errorMax),
-                             py::arg("error_energy") = nanIfFailed(r.ok, r.errorEnergy), py::arg("status") = r.status(),
-                             py::arg("failure") = r.failure));
-    py::dict orders;
-    for (const simlab::OrderFit& fit : simlab::fitOrders(result.rows, result.reference.estimatedError))
+    for (const simlab::StudyRow& r : result.rows) {
+        py::dict row(py::arg("integrator") = r.item.integrator,
+                     py::arg("family") = std::string(simcore::integratorFamily(r.item.integrator)),
+                     py::arg("precision") = r.item.precision, py::arg("dt") = r.dt,
+                     py::arg("tolerance") = toleranceOrNone(r.item.tolerance), py::arg("steps") = r.steps,
+                     py::arg("force_evals") = r.forceEvaluations, py::arg("walls") = r.walls);
+        const bool timed = !r.walls.empty();
+        row["wall_min"] = nanIfFailed(timed, r.wallMin);
+        row["wall_q1"] = nanIfFailed(timed, r.wallQ1);
+        row["wall_median"] = nanIfFailed(timed, r.wallSeconds);
+        row["wall_q3"] = nanIfFailed(timed, r.wallQ3);
+        row["wall_seconds"] = nanIfFailed(timed, r.wallSeconds);  // the median, as before issue 28
+        row["error_final"] = nanIfFailed(r.ok, r.errorFinal);
+        row["error_max"] = nanIfFailed(r.ok, r.errorMax);
+        row["error_rms"] = nanIfFailed(r.ok, r.errorRms);
+        row["error_energy"] = nanIfFailed(r.ok, r.errorEnergy);
+        row["status"] = r.status();
+        row["failure"] = r.failure;
+        rows.append(row);
+    }
+    py::dict orders, ordersFinal, ordersRms;
+    for (const simlab::OrderFit& fit : simlab::fitOrders(result.rows, result.reference.estimatedError)) {
         orders[py::str(fit.integrator)] = fit.order;
+        ordersFinal[py::str(fit.integrator)] = fit.orderFinal;
+        ordersRms[py::str(fit.integrator)] = fit.orderRms;
+    }
+    py::list fastest;
+    for (const simlab::FamilyBest& b : simlab::fastestByFamily(result.rows))
+        fastest.append(py::dict(py::arg("family") = b.family, py::arg("error") = b.error,
+                                py::arg("integrator") = b.integrator, py::arg("wall_seconds") = b.wallSeconds,
+                                py::arg("force_evals") = b.forceEvaluations));
     if (csv) {
         csv->write(simlab::studyCsvHeader());
         for (const simlab::StudyRow& r : result.rows) csv->write(simlab::studyCsvRow(r));
         commit(*csv);
     }
+    if (timings) {
+        timings->write(simlab::studyTimingsCsvHeader());
+        for (const simlab::StudyRow& r : result.rows) timings->write(simlab::studyTimingsCsvRows(r));
+        commit(*timings);
+    }
+    const double scale = simlab::referenceScale(result.reference);
     if (plot) {
         const std::string t = title.is_none() ? s.name + ": error against cost, T = " + simlab::formatDouble(spec.duration) + " s"
                                               : title.cast<std::string>();
-        plot->write(simlab::studySvg(result.rows, t));
+        plot->write(simlab::studySvg(result.rows, t, scale, spec.duration));
         commit(*plot);
     }
-    return py::dict(py::arg("rows") = rows, py::arg("orders") = orders,
-                    py::arg("reference") = result.reference.description,
-                    py::arg("reference_error") = result.reference.estimatedError);
+    py::dict out(py::arg("rows") = rows, py::arg("orders") = orders, py::arg("orders_final") = ordersFinal,
+                 py::arg("orders_rms") = ordersRms, py::arg("fastest") = fastest,
+                 py::arg("reference") = result.reference.description,
+                 py::arg("reference_error") = result.reference.estimatedError);
+    out["roundoff_scale"] = scale;  // X of the floor eps X sqrt(T / h)
+    return out;
+}
+
+py::dict conservation(const py::object& scene, const std::vector<std::string>& integrators, const py::handle& periods,
+                      const py::handle& dt, const py::handle& samples, const std::string& precision,
+                      const py::object& csvPath, const py::object& plotPath, const py::object& title,
+                      const py::kwargs& parameters) {
+    const Scene s = sceneFrom(scene, parameters);
+    simlab::ConservationSpec spec;
+    spec.params = s.params;
+    spec.integrators = integratorList(integrators);
+    spec.periods = checkedNumber(periods, "periods", 20.0, 1e7, false, false);
+    spec.dt = dt.is_none() ? s.params.get(simcore::Param::Dt) : checkedNumber(dt, "dt", 0.0, 1.0, true, false, "s");
+    spec.samples = static_cast<int>(checkedNumber(samples, "samples", 10, 100000, false, true));
+    spec.precision = precision;
+    if (auto error = simlab::validateConservation(spec)) throw py::value_error(*error);
+    auto csv = openOutput(csvPath);
+    auto plot = openOutput(plotPath);
+    const simlab::ConservationResult result = cancellable(
+        [&](const std::atomic<bool>* cancel) { return simlab::runConservation(spec, {}, cancel); });
+    py::list rows;
+    for (const simlab::ConservationRow& r : result.rows) {
+        py::list t, e;
+        for (auto [time, error] : r.curve) t.append(time), e.append(error);
+        py::dict row(py::arg("integrator") = r.integrator, py::arg("alpha") = nanIfFailed(r.ok, r.alpha),
+                     py::arg("alpha_lo") = nanIfFailed(r.ok, r.alphaLo), py::arg("alpha_hi") = nanIfFailed(r.ok, r.alphaHi),
+                     py::arg("class") = r.growth, py::arg("final_error") = nanIfFailed(r.ok, r.finalError),
+                     py::arg("relative_error") = nanIfFailed(r.ok, r.relativeError), py::arg("steps") = r.steps);
+        row["wall_seconds"] = r.wallSeconds;
+        row["status"] = r.status();
+        row["failure"] = r.failure;
+        row["t"] = t;
+        row["energy_error"] = e;
+        rows.append(row);
+    }
+    if (csv) {
+        csv->write(simlab::conservationCsvHeader());
+        for (const simlab::ConservationRow& r : result.rows) csv->write(simlab::conservationCsvRow(r));
+        commit(*csv);
+    }
+    if (plot) {
+        const std::string t = title.is_none() ? s.name + ": |energy error| over " + simlab::formatDouble(spec.periods) + " periods"
+                                              : title.cast<std::string>();
+        plot->write(simlab::conservationSvg(result, t));
+        commit(*plot);
+    }
+    return py::dict(py::arg("rows") = rows, py::arg("omega_max") = result.omegaMax, py::arg("period") = result.period,
+                    py::arg("duration") = result.duration, py::arg("energy_scale") = result.energyScale,
+                    py::arg("undamped") = result.undamped);
 }
 
 py::dict stability(const py::object& scene, const std::vector<std::string>& integrators, const py::handle& duration,
@@ -490,15 +638,14 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
     spec.hMax = checkedNumber(hmax, "hmax", spec.hMin, 1.0, false, false, "s");
     auto csv = openOutput(csvPath);
 
-    // Linearised at the perturbed start the measured runs begin from (as the CLI's stability).
-    simcore::ParameterSet linearised = spec.params;
-    if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
+    // The one verdict's linearisation (simlab::stabilityModes: the rest shape, as the CLI's
+    // stability and the GUI's banners and map); the trials start perturbed.
     struct Outcome {
         simlab::LinearModes modes;
         std::vector<simlab::StabilityRow> rows;
     };
     const Outcome out = cancellable([&](const std::atomic<bool>* cancel) {
-        Outcome o{simlab::linearModes(linearised), {}};
+        Outcome o{simlab::stabilityModes(spec.params), {}};
         if (!*cancel) o.rows = simlab::runStability(spec, o.modes, {}, cancel);
         return o;
     });
@@ -580,10 +727,104 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
                     py::arg("time_error_com") = result.timeErrorCom);
 }
 
+// --- sweeps -----------------------------------------------------------------------------------
+// elasticlab.sweep (elasticlab/sweep.py) makes the grid and the table; here are the checked plan
+// (simlab's validateSweep: ValueError with the CLI's message, before anything runs) and one
+// point's run, which is what a worker process or a Dask worker executes.
+
+// A swept value: a number, or a choice parameter's name ("projection").
+double sweepValue(const simcore::ParameterSet& params, const std::string& key, const py::handle& value) {
+    if (!py::isinstance<py::str>(value)) return numberOf(value, key, "a number or a name");
+    const simcore::ParamSpec* p = simcore::findParam(key);
+    if (!p) return std::nan("");  // validateSweep names the unknown key
+    if (auto v = simcore::parseValue(*p, value.cast<std::string>())) return *v;
+    simcore::ParameterSet probe = params;
+    throw py::value_error("grid " + probe.setFromText(key, value.cast<std::string>()).value_or(key + ": not a value"));
+}
+
+py::tuple sweepPlan(const py::object& scene, const std::vector<std::string>& keys, const py::object& axes,
+                    const py::object& points, const py::handle& duration, const py::object& integrator,
+                    const py::object& options, const py::object& metrics, const py::object& maxSteps,
+                    const py::kwargs& fixed) {
+    const Scene s = sceneFrom(scene, fixed);
+    simlab::SweepSpec spec;
+    spec.sceneName = s.name;
+    spec.params = s.params;
+    spec.integrator = integrator.is_none() ? s.integrator : integrator.cast<std::string>();
+    spec.state = s.state;
+    spec.options = integratorOptions(options);
+    spec.duration = checkedNumber(duration, "duration", 0.0, 1e7, true, false, "s");
+    if (!maxSteps.is_none()) spec.maxSteps = checkedNumber(maxSteps, "max_steps", 1, 1e12, false);
+    spec.keys = keys;
+    auto values = [&](const py::handle& list, std::size_t k) {
+        std::vector<double> out;
+        for (const py::handle& v : list) out.push_back(sweepValue(spec.params, keys.at(k), v));
+        return out;
+    };
+    if (!axes.is_none())
+        for (std::size_t k = 0; k < py::len(axes); ++k) spec.axes.push_back(values(axes[py::int_(k)], k));
+    if (!points.is_none())
+        for (const py::handle& point : points) {
+            std::vector<double> v;
+            std::size_t k = 0;
+            for (const py::handle& x : point) v.push_back(sweepValue(spec.params, keys.at(std::min(k++, keys.size() - 1)), x));
+            spec.points.push_back(std::move(v));
+        }
+    if (!metrics.is_none()) spec.metrics = metrics.cast<std::vector<std::string>>();
+    if (auto error = simlab::validateSweep(spec)) throw py::value_error(*error);
+    return py::make_tuple(simlab::sweepSpecText(spec), simlab::sweepColumns(spec), simlab::sweepPointCount(spec));
+}
+
+// One point of a plan given as its text: a tuple in the order of the plan's columns.
+py::tuple sweepRun(const std::string& text, long index) {
+    static std::mutex mutex;  // the last plan parsed, kept: a worker runs many points of one plan
+    static std::string lastText;
+    static std::shared_ptr<const simlab::SweepSpec> last;
+    std::shared_ptr<const simlab::SweepSpec> spec;
+    {
+        std::lock_guard lock(mutex);
+        if (!last || text != lastText) {
+            simlab::SweepSpecResult parsed = simlab::parseSweepSpec(text);
+            if (!parsed.spec) throw py::value_error(parsed.error);
+            last = std::make_shared<const simlab::SweepSpec>(std::move(*parsed.spec));
+            lastText = text;
+        }
+        spec = last;
+    }
+    if (index < 0 || index >= simlab::sweepPointCount(*spec)) throw py::index_error("no point " + std::to_string(index));
+    const simlab::SweepRow row =
+        cancellable([&](const std::atomic<bool>* cancel) { return simlab::runSweepPoint(*spec, index, cancel); });
+    py::list out;
+    out.append(row.index);
+    for (std::size_t k = 0; k < row.values.size(); ++k) {
+        const simcore::ParamSpec* p = simcore::findParam(spec->keys[k]);
+        if (p && !p->choices.empty()) out.append(p->choiceName(row.values[k]));
+        else out.append(row.values[k]);
+    }
+    out.append(spec->integrator);
+    out.append(row.status);
+    out.append(row.reason);
+    for (std::size_t m = 0; m < row.metrics.size(); ++m) {
+        const std::string& name = spec->metrics[m];
+        if ((name == "steps" || name == "force_evals") && std::isfinite(row.metrics[m]))
+            out.append(static_cast<long long>(row.metrics[m]));
+        else
+            out.append(row.metrics[m]);
+    }
+    out.append(std::string(elastic_lab::kVersion));
+    return py::tuple(out);
+}
+
+std::vector<double> sweepRange(const std::string& kind, const py::handle& a, const py::handle& b, const py::handle& n) {
+    simlab::SweepRange r = simlab::sweepRange(kind, numberOf(a, "start"), numberOf(b, "stop"), numberOf(n, "num"));
+    if (!r.error.empty()) throw py::value_error(r.error);
+    return r.values;
+}
+
 }  // namespace
 
 // Kept whole: the module's table of bindings, one definition after another.
-PYBIND11_MODULE(elasticlab, m) {
+PYBIND11_MODULE(_core, m) {
     m.doc() = "Elastic Lab: two-layer elastic bodies (particles, springs, gas pressure) from Python. "
               "See docs/python.md.";
     m.attr("__version__") = elastic_lab::kVersion;
@@ -598,9 +839,11 @@ PYBIND11_MODULE(elasticlab, m) {
         py::list out;
         for (const simcore::IntegratorInfo& i : simcore::integratorTable())
             out.append(py::dict(py::arg("name") = std::string(i.name), py::arg("order") = i.order,
-                                py::arg("description") = std::string(i.description)));
+                                py::arg("description") = std::string(i.description),
+                                py::arg("family") = std::string(i.family)));
         return out;
-    }, "The integrators: name, order, description.");
+    }, "The integrators: name, order, description, family (explicit-rk, symplectic, implicit, adaptive, "
+       "production, constraint).");
     m.def("parameters", [](const std::string& scene) {
         const simcore::SceneInfo* info = simcore::findScene(scene);
         if (!info)
@@ -624,8 +867,10 @@ PYBIND11_MODULE(elasticlab, m) {
         .def("__repr__", &PySimulation::repr)
         .def("step", &PySimulation::step, py::arg("n") = 1, "Takes n steps (SimulationFailed when one fails).")
         .def("run", &PySimulation::run, py::arg("duration"), py::arg("every") = py::none(),
-             "Runs for duration seconds; with every=N returns the diagnostics rows (start, every N steps, end) "
-             "as an array, columns as diagnostics_columns.")
+             py::arg("times") = py::none(), py::arg("progress") = py::none(),
+             "Runs for duration seconds [s]; with every=N (steps) or times=[t...] (absolute simulated times [s], "
+             "ascending) returns the diagnostics rows (start, then every N steps or the first step at or past each "
+             "time, end) as an array, columns as diagnostics_columns; progress(t) is called between slices.")
         .def("reset", &PySimulation::reset, "Back to the start state, same parameters.")
         .def("set_integrator", &PySimulation::setIntegrator, py::arg("name"), py::arg("options") = py::none(),
              "Changes the integrator between steps (options as in the constructor, added to the current ones).")
@@ -644,8 +889,9 @@ PYBIND11_MODULE(elasticlab, m) {
         .def_property_readonly("integrator_options", &PySimulation::integratorOptionsDict)
         .def_property_readonly("scene", &PySimulation::scene)
         .def_property_readonly("integrator", [](PySimulation& s) { return std::string(s.sim().integrator().name()); })
-        .def_property_readonly("time", [](PySimulation& s) { return s.sim().time(); }, "Simulated time [s].")
-        .def_property_readonly("step_count", [](PySimulation& s) { return s.sim().stepCount(); })
+        .def_property_readonly("time", &PySimulation::time, "Simulated time [s] (readable while another thread runs it).")
+        .def_property_readonly("step_count", &PySimulation::stepCount, "Steps taken (readable while another thread runs it).")
+        .def(py::pickle([](const PySimulation& s) { return s.getState(); }, &PySimulation::fromState))
         .def_property_readonly("dt", [](PySimulation& s) { return s.sim().dt(); }, "The step [s].")
         .def_property_readonly("particle_count", [](PySimulation& s) { return s.sim().particleCount(); })
         .def_property_readonly("spring_count", [](PySimulation& s) { return s.sim().topology().springCount(); });
@@ -654,9 +900,23 @@ PYBIND11_MODULE(elasticlab, m) {
           py::arg("integrators") = std::vector<std::string>{"euler", "midpoint", "rk4"},
           py::arg("dts") = py::none(), py::arg("tolerances") = py::none(), py::arg("duration") = 2.0,
           py::arg("repeat") = 1, py::arg("reference") = "auto", py::arg("samples") = 20, py::arg("fixed_step") = false,
+          py::arg("time_budget") = 0.0, py::arg("precision") = std::vector<std::string>{"double"},
+          py::arg("compensated") = false, py::arg("csv") = py::none(), py::arg("timings") = py::none(),
+          py::arg("plot") = py::none(), py::arg("title") = py::none(),
+          "Work-precision study (the CLI's `study`): {'rows': [dict per point: walls (every repeat), wall_min, "
+          "wall_q1, wall_median, wall_q3, error_final, error_max, error_rms, ...], 'orders', 'orders_final', "
+          "'orders_rms': {curve: fitted order}, 'fastest': [the fastest of each family at each accuracy], "
+          "'reference', 'reference_error', 'roundoff_scale'}; time_budget= (s) records slower points as 'not "
+          "reached'; precision=['double', 'float'] adds the float build of spring1d (compensated= its Kahan "
+          "update); csv=, timings= and plot= write the CLI's CSV, raw timings and SVG.");
+    m.def("conservation", &conservation, py::arg("scene"), py::kw_only(),
+          py::arg("integrators") = std::vector<std::string>{"verlet", "yoshida4", "rk4"}, py::arg("periods") = 1000.0,
+          py::arg("dt") = py::none(), py::arg("samples") = 120, py::arg("precision") = "double",
           py::arg("csv") = py::none(), py::arg("plot") = py::none(), py::arg("title") = py::none(),
-          "Work-precision study (the CLI's `study`): {'rows': [dict per run], 'orders': {integrator: fitted "
-          "order}, 'reference', 'reference_error'}; csv= and plot= write the CLI's CSV and SVG.");
+          "Long-time energy (the CLI's `conservation`): the undamped scene for `periods` periods of its fastest "
+          "mode at dt (default: the scene's); {'rows': [dict per integrator: alpha, alpha_lo, alpha_hi, class "
+          "(bounded, random-walk, drift), final_error, t, energy_error, ...], 'omega_max', 'period', 'duration', "
+          "'energy_scale', 'undamped'}; csv= and plot= as the CLI.");
     m.def("refinement", &refinement, py::arg("scene"), py::kw_only(), py::arg("levels"),
           py::arg("key") = py::none(), py::arg("integrator") = "rk4", py::arg("tolerance") = py::none(),
           py::arg("duration") = 1.0, py::arg("interval") = 0.01, py::arg("temporal_runs") = 4,
@@ -665,6 +925,12 @@ PYBIND11_MODULE(elasticlab, m) {
           "Refinement study (the CLI's `study --refine`): the same body at several resolutions (levels of "
           "key, the scene's own by default) against the finest: {'rows', 'orders': {'volume', 'com'}, "
           "'temporal', 'dt', 'step_rule', ...}; dt= (a parameter) fixes the step; csv= and plot= as the CLI.");
+    m.def("_sweep_plan", &sweepPlan, py::arg("scene"), py::arg("keys"), py::arg("axes"), py::arg("points"),
+          py::arg("duration"), py::arg("integrator"), py::arg("options"), py::arg("metrics"), py::arg("max_steps"),
+          "The checked plan of a sweep: (text, columns, points); ValueError for a bad request (elasticlab.sweep).");
+    m.def("_sweep_run", &sweepRun, py::arg("plan"), py::arg("index"), "One point of a plan: its row (a tuple).");
+    m.def("_sweep_range", &sweepRange, py::arg("kind"), py::arg("start"), py::arg("stop"), py::arg("num"),
+          "linear, log or decades values (elasticlab.linear, log, decades).");
     m.def("stability", &stability, py::arg("scene"), py::kw_only(),
           py::arg("integrators") = std::vector<std::string>{"euler", "midpoint", "rk4", "symplectic-euler", "verlet",
                                                             "rk45", "implicit-euler"},

@@ -28,7 +28,9 @@ for line in sys.stdin:
     comment = []
     while i >= 0 and (src[i].lstrip().startswith("//") or src[i].lstrip().startswith("template")):
         comment.append(src[i].strip()); i -= 1
-    reason = next((c.split("Kept whole:", 1)[1].strip() for c in reversed(comment) if "Kept whole:" in c), None)
+    block = [c.lstrip("/").strip() for c in reversed(comment) if c.startswith("//")]
+    text = " ".join(block)
+    reason = text.split("Kept whole:", 1)[1].strip() if "Kept whole:" in text else None
     scope = ".".join(p if not p.startswith("__anon") else "(anonymous)" for p in t.get("scope", "").split("::"))
     name = (scope + "::" if scope else "") + t["name"]
     rows.append((t["path"], t["line"], n, name, reason))

@@ -243,17 +243,18 @@ SIMCORE_VECTOR_KERNEL PairScan scanPairedRanges(const ContactParams& c, const do
     return scan;
 }
 
-double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, const double* x, const double* g4,
-                          double* f4, bool screen) {
-    // A branch-free pass first: is any inner particle beyond its partner's tangent plane
-    // (w.g > 0)? Nearly never; then the pairs are gone through again.
+namespace {
+
+// A branch-free pass: is any inner particle beyond its partner's tangent plane (w.g > 0)?
+// Nearly never.
+bool anyBeyondTangentPlane(const LayerBarrierSet& set, const double* x, const double* g4) {
     const int* inner = set.inner.data();
     const int* outer = set.outer.data();
     const std::size_t count = set.size();
-    int any = screen ? 0 : 1;
+    int any = 0;
     const bool run = count > 0 && inner[count - 1] - inner[0] == static_cast<int>(count - 1) &&
                      outer[count - 1] - outer[0] == static_cast<int>(count - 1);
-    if (screen && run) {
+    if (run) {
         // A run (pairs k, k + n in order, as a layered body numbers them; checked at its ends,
         // the set being sorted): consecutive rows, no index loads.
         const double* xi = x + 3 * inner[0];
@@ -261,7 +262,7 @@ double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, c
         const double* g = g4 + 4 * outer[0];
         for (std::size_t p = 0; p < count; ++p, xi += 3, xo += 3, g += 4)
             any |= (xi[0] - xo[0]) * g[0] + (xi[1] - xo[1]) * g[1] + (xi[2] - xo[2]) * g[2] > 0.0;
-    } else if (screen) {
+    } else {
         for (std::size_t p = 0; p < count; ++p) {
             const double* xi = x + 3 * inner[p];
             const double* xo = x + 3 * outer[p];
@@ -269,7 +270,16 @@ double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, c
             any |= (xi[0] - xo[0]) * g[0] + (xi[1] - xo[1]) * g[1] + (xi[2] - xo[2]) * g[2] > 0.0;
         }
     }
-    if (!any) return 0.0;
+    return any != 0;
+}
+
+}  // namespace
+
+double layerBarrierForces(const LayerBarrierSet& set, int dimension, double k, const double* x, const double* g4,
+                          double* f4, bool screen) {
+    // The screen first (nearly always nothing to do); then the pairs are gone through again.
+    if (screen && !anyBeyondTangentPlane(set, x, g4)) return 0.0;
+    const std::size_t count = set.size();
     double energy = 0.0;
     for (std::size_t p = 0; p < count; ++p) {
         const int i = set.inner[p], o = set.outer[p];

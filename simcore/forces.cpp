@@ -216,8 +216,37 @@ void ForceModel::partition() {
         }
     }
     for (auto& part : m_parts) part = Part{};
-    // Edge quads (see kernels::QuadSet): an inner structural spring (a, b) whose outer copy
-    // (A, B) and shear springs (A, b), (B, a) all exist goes, with them, into one quad.
+    // Edge quads first (partitionQuads); the springs not in a quad go to their owners' lists.
+    const std::array<std::vector<bool>, kSpringFamilyCount> inQuad = partitionQuads();
+    for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
+        const SpringSet& springs = topo.springs[static_cast<std::size_t>(fam)];
+        for (std::size_t k = 0; k < springs.size(); ++k) {
+            if (inQuad[static_cast<std::size_t>(fam)][k]) continue;
+            const int oa = owner(springs.a[k]), ob = owner(springs.b[k]);
+            Part& part = m_parts[static_cast<std::size_t>(oa == ob ? oa : kChunks)];
+            part.springs[static_cast<std::size_t>(fam)].add(springs.a[k], springs.b[k], springs.rest[k]);
+        }
+    }
+    if (layered)
+        for (Part& part : m_parts) {
+            const SpringSet& radius = part.springs[static_cast<std::size_t>(SpringFamily::Radius)];
+            bool run = radius.size() > 0;
+            for (std::size_t k = 0; run && k < radius.size(); ++k)
+                run = radius.a[k] == radius.a[0] + static_cast<int>(k) && radius.b[k] == radius.a[k] + perLayer;
+            part.radiusRun = run;
+        }
+    partitionSurfaces();
+}
+
+// Edge quads (see kernels::QuadSet): an inner structural spring (a, b) whose outer copy (A, B)
+// and shear springs (A, b), (B, a) all exist goes, with them, into one quad, in the part of the
+// chunk that owns a and b (or the shared part). Returns which springs of each family are in one.
+std::array<std::vector<bool>, kSpringFamilyCount> ForceModel::partitionQuads() {
+    const Topology& topo = *m_topology;
+    const int n = topo.particleCount();
+    const bool layered = !topo.layerPairs.empty();
+    const int perLayer = layered ? n / 2 : n;
+    auto owner = [&](int p) { return ownerOf(p); };
     std::array<std::vector<bool>, kSpringFamilyCount> inQuad;
     for (int fam = 0; fam < kSpringFamilyCount; ++fam)
         inQuad[static_cast<std::size_t>(fam)].assign(topo.springs[static_cast<std::size_t>(fam)].size(), false);
@@ -249,23 +278,14 @@ void ForceModel::partition() {
                                   shear.rest[shearBa->second]});
         }
     }
-    for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
-        const SpringSet& springs = topo.springs[static_cast<std::size_t>(fam)];
-        for (std::size_t k = 0; k < springs.size(); ++k) {
-            if (inQuad[static_cast<std::size_t>(fam)][k]) continue;
-            const int oa = owner(springs.a[k]), ob = owner(springs.b[k]);
-            Part& part = m_parts[static_cast<std::size_t>(oa == ob ? oa : kChunks)];
-            part.springs[static_cast<std::size_t>(fam)].add(springs.a[k], springs.b[k], springs.rest[k]);
-        }
-    }
-    if (layered)
-        for (Part& part : m_parts) {
-            const SpringSet& radius = part.springs[static_cast<std::size_t>(SpringFamily::Radius)];
-            bool run = radius.size() > 0;
-            for (std::size_t k = 0; run && k < radius.size(); ++k)
-                run = radius.a[k] == radius.a[0] + static_cast<int>(k) && radius.b[k] == radius.a[k] + perLayer;
-            part.radiusRun = run;
-        }
+    return inQuad;
+}
+
+// Each closed surface's faces (3D triangles, 2D edges) to the chunk owning all their corners,
+// or to the shared part.
+void ForceModel::partitionSurfaces() {
+    const Topology& topo = *m_topology;
+    auto owner = [&](int p) { return ownerOf(p); };
     for (const Surface& surface : topo.surfaces) {
         for (auto& part : m_parts) {
             part.surfaces.push_back(Surface{});
@@ -537,6 +557,9 @@ void ForceModel::evaluateMotion(const double* x, const double* v, const double* 
     evaluateInto(x, v, invMass3, xdot, a, extras, count, then);
 }
 
+// Kept whole: the hot path, one force evaluation in its three stages (the chunks' terms, the
+// shared elements and the sums in a fixed order, pressure and unpadding) over the same padded
+// buffers and per-chunk sums; read top to bottom it is the algorithm of docs/architecture.md.
 void ForceModel::evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
                               double* out, ForceExtras& extras, bool count, const RangeWork* then) {
     const Topology& topo = *m_topology;

@@ -232,6 +232,8 @@ private:
         LayerBarrierSet barrier;
     };
     void partition();
+    std::array<std::vector<bool>, kSpringFamilyCount> partitionQuads();  // partition()'s steps
+    void partitionSurfaces();
     // What one part adds up besides forces: enclosed-volume sums (6V in 3D, 2A in 2D) per
     // layer, damping power, squared stretch per spring family, degenerate springs.
     struct Sums {

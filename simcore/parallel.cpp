@@ -177,10 +177,15 @@ void ThreadPool::run(int count, TaskRef task) {
         return;
     }
     const std::uint32_t run = ++m_runs;
-    m_task.store(&task, std::memory_order_relaxed);
-    m_count.store(count, std::memory_order_relaxed);
-    m_done.store(0, std::memory_order_relaxed);
-    // Release: the task, its count and the cleared counter are visible to whoever claims.
+    // Close the ticket first: a worker still holding the last run's ticket (it read it before
+    // this run began) must not claim an index of this run against this run's count. Its
+    // compare-and-swap fails once the ticket has moved, and a worker that sees the new count
+    // (released below) also sees the closed ticket.
+    m_ticket.store((static_cast<std::uint64_t>(run) << 32) | 0xffffffffu, std::memory_order_release);
+    m_task.store(&task, std::memory_order_release);
+    m_count.store(count, std::memory_order_release);
+    m_done.store(0, std::memory_order_release);
+    // Open it: the task, its count and the cleared counter are visible to whoever claims.
     m_ticket.store(static_cast<std::uint64_t>(run) << 32, std::memory_order_release);
     {
         // Under the mutex, so a worker about to sleep cannot miss the new run.

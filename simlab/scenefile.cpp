@@ -282,32 +282,63 @@ SceneFileResult readSceneFile(const std::string& path) {
     return result;
 }
 
-std::string sceneFileText(const Simulation& sim, const std::string& sceneName, bool withState) {
-    // Numbers go out with to_chars' shortest round-trip form, so a reload is bit-exact.
-    std::ostringstream os;
+namespace {
+
+// The writer of both forms: the parameters given (in the table's order), the state if any.
+// Numbers go out with to_chars' shortest round-trip form, so a reload is bit-exact.
+template <class Matrix>
+void writeVectors(std::ostream& os, const char* key, const Matrix& m) {
+    os << ",\n    \"" << key << "\": [";
+    for (Eigen::Index i = 0; i < m.cols(); ++i)
+        os << (i ? ", " : "") << "[" << formatDouble(m(0, i)) << ", " << formatDouble(m(1, i)) << ", "
+           << formatDouble(m(2, i)) << "]";
+    os << "]";
+}
+
+void writeHead(std::ostream& os, const std::string& sceneName, std::string_view integrator,
+               const std::vector<std::pair<const ParamSpec*, double>>& values) {
     os << "{\n  \"format\": \"elastic-lab-scene\",\n  \"version\": " << kSceneFormatVersion << ",\n"
-       << "  \"scene\": \"" << sceneName << "\",\n  \"integrator\": \"" << sim.integrator().name() << "\",\n"
+       << "  \"scene\": \"" << sceneName << "\",\n  \"integrator\": \"" << integrator << "\",\n"
        << "  \"parameters\": {";
     bool first = true;
-    for (const ParamSpec* spec : parametersFor(sim.parameters().kind())) {
-        const double value = sim.parameters().get(spec->id);
+    for (const auto& [spec, value] : values) {
         os << (first ? "\n" : ",\n") << "    \"" << spec->key << "\": ";
         if (spec->choices.empty()) os << formatDouble(value);
         else os << '"' << spec->choiceName(value) << '"';  // a choice by its name: "scaling": "physical"
         first = false;
     }
     os << "\n  }";
+}
+
+}  // namespace
+
+std::string sceneFileText(const Simulation& sim, const std::string& sceneName, bool withState) {
+    std::vector<std::pair<const ParamSpec*, double>> values;
+    for (const ParamSpec* spec : parametersFor(sim.parameters().kind())) values.emplace_back(spec, sim.parameters().get(spec->id));
+    std::ostringstream os;
+    writeHead(os, sceneName, sim.integrator().name(), values);
     if (withState) {
         os << ",\n  \"state\": {\n    \"step\": " << sim.stepCount() << ",\n    \"time\": " << formatDouble(sim.time());
         if (sim.integrator().adaptive()) os << ",\n    \"next_step\": " << formatDouble(sim.nextStep());
-        for (const char* key : {"positions", "velocities"}) {
-            const auto m = std::string(key) == "positions" ? sim.positions() : sim.velocities();
-            os << ",\n    \"" << key << "\": [";
-            for (Eigen::Index i = 0; i < m.cols(); ++i)
-                os << (i ? ", " : "") << "[" << formatDouble(m(0, i)) << ", " << formatDouble(m(1, i)) << ", "
-                   << formatDouble(m(2, i)) << "]";
-            os << "]";
-        }
+        writeVectors(os, "positions", sim.positions());
+        writeVectors(os, "velocities", sim.velocities());
+        os << "\n  }";
+    }
+    os << "\n}\n";
+    return os.str();
+}
+
+std::string sceneFileText(const SceneFile& file) {
+    std::vector<std::pair<const ParamSpec*, double>> values;
+    for (const auto& [id, value] : file.params.explicitValues()) values.emplace_back(&paramSpec(id), value);
+    std::ostringstream os;
+    writeHead(os, file.sceneName, file.integrator, values);
+    if (file.state) {
+        const SceneFile::State& s = *file.state;
+        os << ",\n  \"state\": {\n    \"step\": " << s.step << ",\n    \"time\": " << formatDouble(s.time);
+        if (s.nextStep) os << ",\n    \"next_step\": " << formatDouble(*s.nextStep);
+        writeVectors(os, "positions", s.positions);
+        writeVectors(os, "velocities", s.velocities);
         os << "\n  }";
     }
     os << "\n}\n";

@@ -69,6 +69,9 @@ SceneFileResult readSceneFile(const std::string& path);
 
 // The JSON text of a simulation (with its state when withState).
 std::string sceneFileText(const simcore::Simulation& sim, const std::string& sceneName, bool withState);
+// The JSON text of a scene file as read: only its explicitly set parameters (the rest stay the
+// table's, inherited values included), and its state when it has one.
+std::string sceneFileText(const SceneFile& file);
 // Restores a saved state into a simulation built from the same file; error text or nothing.
 std::optional<std::string> applyState(simcore::Simulation& sim, const SceneFile::State& state);
 

@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "simcore/compositions.h"
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
 #include "simcore/simulation.h"
@@ -15,6 +16,8 @@
 namespace simlab {
 
 using simcore::Diagnostics;
+using simcore::Failure;
+using simcore::SimulationSnapshot;
 using simcore::Integrator;
 using simcore::IntegratorOptions;
 using simcore::OdeSystem;
@@ -22,6 +25,7 @@ using simcore::Param;
 using simcore::ParameterSet;
 using simcore::Simulation;
 using simcore::Term;
+using simcore::compositionWeights;
 using simcore::hasStabilityFunction;
 using simcore::kExplicitStabilityLimit;
 using simcore::stabilityFunction;
@@ -45,18 +49,28 @@ std::pair<double, double> partitionedStep(const std::string& name, double h, dou
         const double v1 = v + h * acc(x, v);
         return {x + h * v1, v1};
     }
-    // velocity Verlet, damping at the half-step velocity (as the integrator does)
-    const double a0 = acc(x, v);
-    const double x1 = x + h * v + 0.5 * h * h * a0;
-    const double vh = v + 0.5 * h * a0;
-    return {x1, vh + 0.5 * h * acc(x1, vh)};
+    // velocity Verlet and its compositions, damping at the half-step velocity (as the
+    // integrators do): each substep's end acceleration starts the next
+    double a = acc(x, v);
+    for (double w : compositionWeights(name)) {
+        const double hw = w * h;
+        const double vh = v + 0.5 * hw * a;
+        x += hw * vh;
+        a = acc(x, vh);
+        v = vh + 0.5 * hw * a;
+    }
+    return {x, v};
 }
 
 }  // namespace
 
+bool isPartitioned(const std::string& integrator) {
+    return integrator == "symplectic-euler" || !compositionWeights(integrator).empty();
+}
+
 double modeAmplification(const std::string& integrator, double h, double omega, double c) {
     const double w2 = omega * omega;
-    if (integrator == "symplectic-euler" || integrator == "verlet") {
+    if (isPartitioned(integrator)) {
         const auto [a, cc] = partitionedStep(integrator, h, w2, c, 1.0, 0.0);
         const auto [b, d] = partitionedStep(integrator, h, w2, c, 0.0, 1.0);
         return radius2(a, b, cc, d);
@@ -68,7 +82,11 @@ double modeAmplification(const std::string& integrator, double h, double omega, 
 }
 
 LinearModes linearModes(const ParameterSet& params, int exactEigenLimit, int denseLimit) {
-    Simulation sim(params, "implicit-euler");
+    // At the rest shape: the perturbation is the trials' way to excite every mode, not part
+    // of the body (stabilityModes).
+    ParameterSet rest = params;
+    rest.set(Param::Perturb, 0.0);
+    Simulation sim(rest, "implicit-euler");
     // Contact as a force has no stiffness at the start (U'' = 3 k d^2 is 0 at d = 0): the
     // estimate adds it at the contact's design point (Simulation::contactDesign).
     sim.setContactDesignInJacobians(true);
@@ -191,13 +209,20 @@ double partitionedRadius(const std::string& name, double h, const Eigen::MatrixX
     if (name == "symplectic-euler") {
         const Eigen::MatrixXd vx = -h * A, vv = I - h * C;  // v1 = vx x + vv v
         S << I + h * vx, h * vv, vx, vv;
-    } else {  // velocity Verlet, damping at the half-step velocity
-        const Eigen::MatrixXd xx = I - 0.5 * h * h * A, xv = h * I - 0.5 * h * h * C;
-        const Eigen::MatrixXd hx = -0.5 * h * A, hv = I - 0.5 * h * C;  // v_half
-        // v1 = v_half + h/2 (-A x1 - C v_half)
-        const Eigen::MatrixXd vx = hx - 0.5 * h * (A * xx + C * hx);
-        const Eigen::MatrixXd vv = hv - 0.5 * h * (A * xv + C * hv);
-        S << xx, xv, vx, vv;
+    } else {  // velocity Verlet and its compositions, damping at the half-step velocity
+        // Rows of x and v as linear maps of the start state [x; v] (m x 2m each).
+        Eigen::MatrixXd X(m, 2 * m), V(m, 2 * m);
+        X << I, Eigen::MatrixXd::Zero(m, m);
+        V << Eigen::MatrixXd::Zero(m, m), I;
+        Eigen::MatrixXd a = -A * X - C * V;
+        for (double w : compositionWeights(name)) {
+            const double hw = w * h;
+            const Eigen::MatrixXd vh = V + 0.5 * hw * a;
+            X += hw * vh;
+            a = -A * X - C * vh;
+            V = vh + 0.5 * hw * a;
+        }
+        S << X, V;
     }
     Eigen::EigenSolver<Eigen::MatrixXd> eig(S, false);
     return eig.eigenvalues().cwiseAbs().maxCoeff();
@@ -205,55 +230,69 @@ double partitionedRadius(const std::string& name, double h, const Eigen::MatrixX
 
 }  // namespace
 
+namespace {
+
+// The largest h <= hMax with stable(h) (0: not even the smallest; inf: stable at hMax): a
+// geometric scan from h0 by `grow`, then bisection.
+double largestStable(const std::function<bool(double)>& stable, double hMax, double h0, double grow, int bisections) {
+    double lo = 0.0, h = h0;
+    if (!stable(h)) return 0.0;
+    while (h < hMax && stable(h)) lo = h, h *= grow;
+    if (h >= hMax && stable(hMax)) return std::numeric_limits<double>::infinity();
+    double hi = std::min(h, hMax);
+    for (int it = 0; it < bisections; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (stable(mid) ? lo : hi) = mid;
+    }
+    return lo;
+}
+
+}  // namespace
+
+const std::vector<std::complex<double>>& spectrumOf(const LinearModes& modes) {
+    return modes.eigenvalues.empty() ? modes.ritzValues : modes.eigenvalues;
+}
+
 double predictedStableStep(const std::string& integrator, const LinearModes& modes, double hMax) {
     if (integrator == "implicit-euler") return std::numeric_limits<double>::infinity();
-    // (With physically unstable modes the exact step matrix grows for every h; the modal path
-    // can leave them out.)
-    if ((integrator == "symplectic-euler" || integrator == "verlet") && modes.stiffness.rows() > 0 &&
-        modes.unstableModes == 0) {
+    const bool partitioned = isPartitioned(integrator);
+    // (With physically unstable modes the exact step matrix grows for every h; the spectrum
+    // and modal paths leave them out.)
+    if (partitioned && modes.stiffness.rows() > 0 && modes.unstableModes == 0) {
         // Rigid modes are Jordan blocks at 1, whose computed eigenvalues scatter by ~sqrt(eps):
         // hence the looser 1e-6.
-        auto stableExact = [&](double h) {
-            return partitionedRadius(integrator, h, modes.stiffness, modes.damping2) <= 1.0 + 1e-6;
-        };
-        double lo = 0.0, h = 1e-5;
-        if (!stableExact(h)) return 0.0;
-        while (h < hMax && stableExact(h)) lo = h, h *= 1.1;
-        if (h >= hMax && stableExact(hMax)) return std::numeric_limits<double>::infinity();
-        double hi = std::min(h, hMax);
-        for (int it = 0; it < 30; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (stableExact(mid) ? lo : hi) = mid;
-        }
-        return lo;
+        return largestStable(
+            [&](double h) { return partitionedRadius(integrator, h, modes.stiffness, modes.damping2) <= 1.0 + 1e-6; },
+            hMax, 1e-5, 1.1, 30);
     }
-    if (hasStabilityFunction(integrator) && !modes.eigenvalues.empty()) {
-        // Exact for the linear system: |R(h lambda)| <= 1 for every eigenvalue. Growing
-        // physical modes (Re lambda > 0) are excluded, as in the modal path.
+    const std::vector<std::complex<double>>& spectrum = spectrumOf(modes);
+    if ((hasStabilityFunction(integrator) || partitioned) && !spectrum.empty()) {
+        // The first-order spectrum, exact (dense eigen-solve) or its extreme part (Arnoldi's
+        // Ritz values, which converge first and are the ones that limit an explicit step):
+        // |R(h lambda)| <= 1 for every eigenvalue. The partitioned methods have no R: each
+        // eigenvalue is taken as one of the pair of a mode that decouples (w = |lambda|,
+        // c = -2 Re lambda), the oscillator's region of the stability map. Growing physical
+        // modes (Re lambda > 0) are excluded, as in the modal path.
         double scale = 0.0;
-        for (const auto& l : modes.eigenvalues) scale = std::max(scale, std::abs(l));
+        for (const auto& l : spectrum) scale = std::max(scale, std::abs(l));
         std::vector<std::complex<double>> lambdas;
         // Rigid-body modes (|lambda| ~ 0, with round-off of either sign) cannot limit a step.
-        for (const auto& l : modes.eigenvalues)
+        for (const auto& l : spectrum)
             if (std::abs(l) > 1e-6 * scale && l.real() <= 1e-9 * scale) lambdas.push_back(l);
         if (integrator == "euler" || integrator == "midpoint")
             for (const auto& l : lambdas)
                 if (std::abs(l.real()) <= 1e-9 * scale && std::abs(l.imag()) > 1e-6 * scale) return 0.0;
-        auto stableExact = [&](double h) {
-            for (const auto& l : lambdas)
-                if (std::abs(stabilityFunction(integrator, h * l)) > 1.0 + 1e-9) return false;
-            return true;
+        auto growth = [&](double h, std::complex<double> l) {
+            return partitioned ? modeAmplification(integrator, h, std::abs(l), -2.0 * l.real())
+                               : std::abs(stabilityFunction(integrator, h * l));
         };
-        double lo = 0.0, h = 1e-7;
-        if (!stableExact(h)) return 0.0;
-        while (h < hMax && stableExact(h)) lo = h, h *= 1.05;
-        if (h >= hMax && stableExact(hMax)) return std::numeric_limits<double>::infinity();
-        double hi = std::min(h, hMax);
-        for (int it = 0; it < 60; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            (stableExact(mid) ? lo : hi) = mid;
-        }
-        return lo;
+        return largestStable(
+            [&](double h) {
+                for (const auto& l : lambdas)
+                    if (growth(h, l) > 1.0 + 1e-9) return false;
+                return true;
+            },
+            hMax, 1e-7, 1.05, 60);
     }
     // Euler's and Heun's regions touch the imaginary axis only at 0: an undamped oscillating
     // mode grows for every h (too slowly near 0 to see in double precision, hence explicit).
@@ -261,23 +300,62 @@ double predictedStableStep(const std::string& integrator, const LinearModes& mod
         for (std::size_t i = 0; i < modes.omega2.size(); ++i)
             if (modes.omega2[i] > 1e-9 * modes.omegaMax * modes.omegaMax && modes.damping[i] <= 1e-12 * modes.omegaMax)
                 return 0.0;
-    auto stable = [&](double h) {
-        for (std::size_t i = 0; i < modes.omega2.size(); ++i) {
-            if (modes.omega2[i] < 0.0) continue;
-            if (modeAmplification(integrator, h, std::sqrt(modes.omega2[i]), modes.damping[i]) > 1.0 + 1e-9) return false;
-        }
-        return true;
-    };
-    double lo = 0.0, h = 1e-7;
-    if (!stable(h)) return 0.0;
-    while (h < hMax && stable(h)) lo = h, h *= 1.05;
-    if (h >= hMax && stable(hMax)) return std::numeric_limits<double>::infinity();
-    double hi = std::min(h, hMax);
-    for (int it = 0; it < 60; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        (stable(mid) ? lo : hi) = mid;
+    return largestStable(
+        [&](double h) {
+            for (std::size_t i = 0; i < modes.omega2.size(); ++i) {
+                if (modes.omega2[i] < 0.0) continue;
+                if (modeAmplification(integrator, h, std::sqrt(modes.omega2[i]), modes.damping[i]) > 1.0 + 1e-9)
+                    return false;
+            }
+            return true;
+        },
+        hMax, 1e-7, 1.05, 60);
+}
+
+LinearModes stabilityModes(const ParameterSet& params) {
+    return linearModes(params, kVerdictExactLimit, kVerdictExactLimit);
+}
+
+StabilityVerdict stabilityVerdict(const LinearModes& modes, const std::string& integrator, double dt, bool adaptive) {
+    StabilityVerdict v;
+    v.integrator = integrator;
+    v.dt = dt;
+    v.omegaMax = modes.omegaMax;
+    const auto& spectrum = spectrumOf(modes);
+    for (const auto& l : spectrum)
+        if (std::abs(l) > std::abs(v.fastest)) v.fastest = l;
+    const bool partitioned = isPartitioned(integrator);
+    if (!modes.eigenvalues.empty())
+        v.basis = "exact spectrum, " + std::to_string(modes.eigenvalues.size()) + " eigenvalues";
+    else if (!modes.ritzValues.empty())
+        v.basis = "Arnoldi, " + std::to_string(modes.ritzValues.size()) + " Ritz values of " +
+                  std::to_string(2 * modes.freeCoordinates);
+    else
+        v.basis = "modes of M^-1 K";
+    if (partitioned && modes.stiffness.rows() > 0 && modes.unstableModes == 0) v.basis = "exact step matrix";
+    if (adaptive || !(hasStabilityFunction(integrator) || partitioned)) {
+        v.ownStep = true;
+        v.limit = std::numeric_limits<double>::infinity();
+        return v;
     }
-    return lo;
+    v.limit = predictedStableStep(integrator, modes, std::max(10.0, 1e4 * dt));
+    return v;
+}
+
+std::string limitText(double limit) {
+    if (std::isinf(limit)) return "unlimited";
+    if (!(limit > 0.0)) return "none";
+    char text[40];
+    std::snprintf(text, sizeof text, "%.3g", limit);
+    return text;
+}
+
+std::string verdictText(const StabilityVerdict& v) {
+    if (v.ownStep) return v.integrator + " chooses its own step: no DT limit from stability";
+    if (std::isinf(v.limit)) return v.integrator + " is stable at every DT on this body";
+    if (!(v.limit > 0.0))
+        return v.integrator + " has no stable DT on this body: its undamped modes grow for every DT (" + v.basis + ")";
+    return v.integrator + " is stable up to DT = " + limitText(v.limit) + " s on this body (" + v.basis + ")";
 }
 
 std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt,
@@ -407,41 +485,78 @@ std::optional<StabilityAdvice> stabilityAdvice(const Simulation& sim) {
     if (method.implicit() || method.adaptive()) return std::nullopt;
     const std::string name(method.name());
     char text[500];
-    // Small bodies (up to kWarningDenseLimit free coordinates, well under 0.1 s): the
-    // linearised prediction of this very method, the same as `stability` prints.
-    ParameterSet p = sim.parameters();
-    const int free = 3 * sim.particleCount();
-    if (free <= kWarningDenseLimit) {
-        const LinearModes modes = linearModes(p, 150);  // cheap: exact eigenvalues for small bodies only
-        const double limit = predictedStableStep(name, modes, 10.0);
-        if (limit <= 0.0) {
-            // Euler and Heun grow on undamped modes for every dt; say so only when it matters
-            // (the growth rate ~ h w^2 / 2 per second is above 1/s).
-            if (sim.dt() * modes.omegaMax * modes.omegaMax / 2.0 < 1.0) return std::nullopt;
-            const double suggested = roundDownTwoDigits(0.9 * 2.0 / (modes.omegaMax * modes.omegaMax));
-            std::snprintf(text, sizeof text,
-                          "%s has no stable step on this body's undamped modes (highest w = %.3g rad/s): its "
-                          "energy grows for every dt, here by ~%.2g per second; use dt <= %.2g s (growth below 1 "
-                          "per second) or another method",
-                          name.c_str(), modes.omegaMax, sim.dt() * modes.omegaMax * modes.omegaMax / 2.0, suggested);
-            return StabilityAdvice{text, suggested};
-        }
-        if (sim.dt() <= limit) return std::nullopt;
+    // The one verdict (stabilityModes: exact spectrum for small bodies, Arnoldi above), the
+    // same figure the stability map, the failure banner and `stability` give.
+    const LinearModes modes = stabilityModes(sim.parameters());
+    const StabilityVerdict verdict = stabilityVerdict(modes, name, sim.dt());
+    if (verdict.stable()) return std::nullopt;
+    if (verdict.limit <= 0.0) {
+        // Euler and Heun grow on undamped modes for every dt; say so only when it matters
+        // (the growth rate ~ h w^2 / 2 per second is above 1/s).
+        if (sim.dt() * modes.omegaMax * modes.omegaMax / 2.0 < 1.0) return std::nullopt;
+        const double suggested = roundDownTwoDigits(0.9 * 2.0 / (modes.omegaMax * modes.omegaMax));
         std::snprintf(text, sizeof text,
-                      "dt = %g s is above the largest stable step of %s predicted from the linearised body, ~%.3g s "
-                      "(highest mode w = %.3g rad/s with damping c = %.3g 1/s); it will likely blow up "
-                      "(implicit-euler or rk45 will not)",
-                      sim.dt(), name.c_str(), limit, modes.omegaMax, modes.dampingAtMax);
-        return StabilityAdvice{text, roundDownTwoDigits(0.9 * limit)};
+                      "%s has no stable step on this body's undamped modes (highest w = %.3g rad/s): its "
+                      "energy grows for every dt, here by ~%.2g per second; use dt <= %.2g s (growth below 1 "
+                      "per second) or another method",
+                      name.c_str(), modes.omegaMax, sim.dt() * modes.omegaMax * modes.omegaMax / 2.0, suggested);
+        return StabilityAdvice{text, suggested};
     }
-    // Large bodies: the per-particle rate estimate against the largest explicit reach.
-    const double rate = sim.estimatedFastestRate();
-    if (!(rate * sim.dt() > kExplicitStabilityLimit)) return std::nullopt;
     std::snprintf(text, sizeof text,
-                  "dt = %g s is above the estimated explicit stability limit ~%.3g s (fastest spring rate ~%.3g "
-                  "1/s); an explicit integrator will likely blow up (implicit-euler or rk45 will not)",
-                  sim.dt(), kExplicitStabilityLimit / rate, rate);
-    return StabilityAdvice{text, roundDownTwoDigits(0.9 * kExplicitStabilityLimit / rate)};
+                  "dt = %g s is above %s's largest stable step on this body, %s s (linearised: %s; fastest "
+                  "|lambda| = %.3g 1/s); it will likely blow up (implicit-euler or rk45 will not)",
+                  sim.dt(), name.c_str(), limitText(verdict.limit).c_str(), verdict.basis.c_str(),
+                  std::abs(verdict.fastest));
+    return StabilityAdvice{text, roundDownTwoDigits(0.9 * verdict.limit)};
+}
+
+FailureCheck checkFailure(const SimulationSnapshot& start, const Failure& failure, const std::atomic<bool>* cancel) {
+    FailureCheck check;
+    check.integrator = start.integrator;
+    check.failedDt = start.params.get(Param::Dt);
+    Simulation sim(start.params, start.integrator);
+    sim.setThreads(1);
+    sim.restore(start);
+    check.verdict = stabilityVerdict(stabilityModes(start.params), start.integrator, check.failedDt,
+                                     sim.integrator().adaptive());
+    check.rerunDt = check.failedDt / 4.0;
+    if (check.verdict.limit > 0.0 && std::isfinite(check.verdict.limit))
+        check.rerunDt = std::min(check.rerunDt, 0.9 * check.verdict.limit);
+    check.from = start.diag.time;
+    check.until = failure.time + std::max(kFailureCheckMargin, 10.0 * check.failedDt);
+    if ((check.until - check.from) / check.rerunDt > double(kFailureCheckMaxSteps)) return check;
+    if (sim.setParameter(Param::Dt, check.rerunDt)) return check;
+    while (sim.time() < check.until - 1e-9 * check.rerunDt) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return check;
+        if (!sim.step()) {
+            check.rerunFailure = sim.failure();
+            break;
+        }
+    }
+    check.checked = true;
+    check.physical = check.rerunFailure.has_value();
+    if (!check.physical) check.workingDt = roundDownTwoDigits(check.rerunDt);
+    return check;
+}
+
+std::string failureCheckText(const FailureCheck& c) {
+    char text[900];
+    if (!c.checked) return "";
+    if (c.physical) {
+        std::snprintf(text, sizeof text,
+                      "The body itself collapses — no step size will save it: run again from t = %.3f s at a "
+                      "step of %.3g s (%s), it fails at t = %.3f s as well (%s). Change the body instead: lighter "
+                      "masses or less gravity, stiffer springs (ks, and the radial ones), more gas pressure, or "
+                      "more damping.",
+                      c.from, c.rerunDt, c.integrator.c_str(), c.rerunFailure->time, c.rerunFailure->reason.c_str());
+        return text;
+    }
+    const std::string verdict = verdictText(c.verdict);
+    std::snprintf(text, sizeof text,
+                  "The step was too large: run again from t = %.3f s at a step of %.3g s, the same stretch runs "
+                  "through t = %.3f s. The linearised body agrees: %s.",
+                  c.from, c.rerunDt, c.until, verdict.c_str());
+    return text;
 }
 
 std::string stabilityCsvHeader() {

@@ -21,7 +21,10 @@
 // symplectic Euler and Verlet use the spectral radius of their exact 2m x 2m step matrix up
 // to kExactStepLimit free coordinates (the modal damping is ambiguous for degenerate modes).
 //   undamped limits (h w):  euler none (grows for every h), midpoint none, rk4 2*sqrt(2),
-//   rk45 (fixed step) ~3.3, symplectic-euler 2, verlet 2, implicit-euler unlimited.
+//   rk45 (fixed step) ~3.3, symplectic-euler 2, verlet 2, yoshida4 1.57, yoshida8 (see
+//   docs/numerics.md), implicit-euler unlimited. The compositions of Verlet (yoshida4,
+//   yoshida8) are treated as Verlet is: their step matrix is the product of Verlet's over
+//   the substeps (integrators.h, compositionWeights).
 
 #include <atomic>
 
@@ -34,6 +37,7 @@
 #include <vector>
 
 #include "simcore/params.h"
+#include "simcore/simulation.h"
 
 namespace simcore {
 class Simulation;
@@ -65,7 +69,7 @@ struct LinearModes {
     int unstableModes = 0;         // w^2 < 0 (e.g. buckling under pressure): excluded from limits
 };
 
-// Linearised at the start state of the scene (with its perturbation).
+// Linearised at the start state of the scene without its perturbation (stabilityModes).
 inline constexpr int kExactEigenLimit = 400;
 inline constexpr int kExactStepLimit = 120;
 inline constexpr int kDenseModeLimit = 1200;
@@ -76,8 +80,50 @@ inline constexpr int kDenseModeLimit = 1200;
 LinearModes linearModes(const simcore::ParameterSet& params, int exactEigenLimit = kExactEigenLimit,
                         int denseLimit = kDenseModeLimit);
 
+// The one linearisation every door judges stability by (the pre-run banner, the failure
+// banner, the stability map, the `stability` command, Python's stability()): the scene's
+// start without its random perturbation (the rest shape the body is built in, which is the
+// GUI's start and does not depend on the seed; the trials of the scan still start perturbed,
+// to excite every mode). Exact first-order eigenvalues up to kVerdictExactLimit free
+// coordinates (a dense solve well under 0.1 s); above, the extreme eigenvalues by Arnoldi on
+// the Jacobian products (linearModes's iterative path) - never the modal approximation,
+// which misses the fastest pure decay of non-proportional damping.
+inline constexpr int kVerdictExactLimit = 150;
+LinearModes stabilityModes(const simcore::ParameterSet& params);
+
+// The spectrum the prediction uses: the exact eigenvalues, or else Arnoldi's Ritz values
+// (empty for a LinearModes built by hand from modes alone).
+const std::vector<std::complex<double>>& spectrumOf(const LinearModes& modes);
+
+// The verdict on one method at one step, from stabilityModes: the same figure everywhere.
+struct StabilityVerdict {
+    std::string integrator;
+    double dt = 0.0;              // the step judged [s]
+    // The method's largest stable step on this body [s]: 0 when none (Euler and Heun on
+    // undamped modes), +inf when unlimited (implicit Euler) or when the method picks its own
+    // step (adaptive rk45, CVODE, XPBD: `ownStep`).
+    double limit = 0.0;
+    bool ownStep = false;
+    std::string basis;            // "exact spectrum (N eigenvalues)", "Arnoldi (N Ritz values)", ...
+    double omegaMax = 0.0;        // highest frequency [rad/s]
+    std::complex<double> fastest{0.0, 0.0};  // the spectrum's eigenvalue of largest modulus [1/s]
+    bool stable() const { return dt <= limit; }
+};
+// `adaptive`: the method runs with its own error-controlled step (rk45 unless fixed), so no
+// DT limit applies; its fixed-step region is still what `limit` would be with adaptive false.
+StabilityVerdict stabilityVerdict(const LinearModes& modes, const std::string& integrator, double dt,
+                                  bool adaptive = false);
+// The verdict as one line: "rk4 is stable up to DT = 0.00888 s on this body (exact spectrum
+// ...)"; the figure printed with three significant digits, as every door prints it.
+std::string verdictText(const StabilityVerdict& verdict);
+// The limit as every door prints it: three significant digits ("0.00888"), "none", "unlimited".
+std::string limitText(double limit);
+
 // Spectral radius of one step of `integrator` on x'' + c x' + w^2 x = 0.
 double modeAmplification(const std::string& integrator, double h, double omega, double c);
+// The partitioned methods (symplectic-euler, verlet and its compositions): no scalar stability
+// function; their step matrix per mode (or for the whole linear body) decides.
+bool isPartitioned(const std::string& integrator);
 // Largest h with every mode's amplification <= 1 (+1e-9): 0 when there is none (grows for
 // every h), +infinity when unlimited (A-stable), searched up to hMax.
 double predictedStableStep(const std::string& integrator, const LinearModes& modes, double hMax = 10.0);
@@ -122,12 +168,9 @@ std::vector<StabilityRow> runStability(const StabilitySpec& spec, const LinearMo
                                        const std::atomic<bool>* cancel = nullptr);
 std::vector<std::string> shardNames(const std::vector<std::string>& names, int shardIndex, int shardCount);
 
-// The pre-run check: for an explicit fixed-step method, dt above an estimate of its largest
-// stable step gives a warning text. Bodies up to kWarningDenseLimit free coordinates use the
-// method's linearised prediction (predictedStableStep: all modes, well under 0.1 s); larger
-// ones the per-particle rate of simcore::Simulation::estimatedFastestRate against
-// kExplicitStabilityLimit. Adaptive rk45 and implicit-euler never warn.
-inline constexpr int kWarningDenseLimit = 600;
+// The pre-run check: for an explicit fixed-step method, dt above its verdict's limit
+// (stabilityVerdict on stabilityModes) gives a warning text. Adaptive rk45 and
+// implicit-euler never warn.
 std::optional<std::string> preRunStabilityWarning(const simcore::Simulation& sim);
 // The same check with what to do about it: the warning and a step that the same estimate
 // predicts stable (0.9 of the limit, rounded down to two significant digits), for the GUI's
@@ -137,6 +180,34 @@ struct StabilityAdvice {
     double suggestedDt = 0.0;  // [s]
 };
 std::optional<StabilityAdvice> stabilityAdvice(const simcore::Simulation& sim);
+// The failure banner's question: numerics or physics? A run failed at `failure.time`; the
+// stretch from `start` (a snapshot some time before it) is run again at a smaller step -
+// a quarter of the failed one, and no more than 0.9 of the method's verdict limit when that
+// is smaller - up to failure.time + kFailureCheckMargin (or 10 of the failed steps, if
+// longer). When the re-run fails too inside that window, the failure is the body's own (no
+// step size saves it: a layer collapses under its load, ...); when it runs through, the step
+// was too large. The verdict on the failed step comes with it (stabilityModes of the
+// snapshot's parameters), for the banner's figure.
+inline constexpr double kFailureCheckMargin = 0.1;  // [s]
+inline constexpr long kFailureCheckMaxSteps = 400000;
+struct FailureCheck {
+    bool checked = false;          // false: cancelled, or more than kFailureCheckMaxSteps steps
+    bool physical = false;         // the re-run failed as well
+    std::string integrator;
+    double failedDt = 0.0;         // [s]
+    double rerunDt = 0.0;          // [s]
+    double from = 0.0, until = 0.0;  // the stretch re-run [s]
+    std::optional<simcore::Failure> rerunFailure;
+    StabilityVerdict verdict;      // of the failed step
+    // What a class can do: for a physical failure the body's remedies, for a numerical one
+    // the step that ran through (rounded down to two digits) [s].
+    double workingDt = 0.0;
+};
+FailureCheck checkFailure(const simcore::SimulationSnapshot& start, const simcore::Failure& failure,
+                          const std::atomic<bool>* cancel = nullptr);
+// The banner's words for a check: one paragraph, plain text (no markup).
+std::string failureCheckText(const FailureCheck& check);
+
 // x rounded down to two significant digits (0.000734 -> 0.00073).
 double roundDownTwoDigits(double x);
 

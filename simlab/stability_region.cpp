@@ -136,9 +136,38 @@ Curve mirroredCurve(double x0, double x1, int samples, const std::function<doubl
 
 }  // namespace
 
+// The compositions of Verlet have no closed-form boundary: along each ray from 0 at angle
+// phi in [0, pi] (upper half plane, mirrored), the first exit from the region (rayExit), a
+// star-shaped curve: what DT scaling, which moves every point along its ray, can reach.
+// Rays that never leave within `extent` are clipped there.
+static std::string limitText(const std::string& integrator) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", rayExit(integrator, Complex(0.0, 1.0), 100.0));
+    return text;
+}
+
+static std::vector<Curve> rayBoundary(const std::string& integrator, double extent, int samples) {
+    Curve upper;
+    const int rays = std::max(90, samples / 4);
+    for (int i = 0; i <= rays; ++i) {
+        // phi from pi/2 (the imaginary axis) to pi (the negative real axis); the right half
+        // plane (growing modes) lies outside for every method drawn this way.
+        const double phi = std::numbers::pi * (0.5 + 0.5 * i / rays);
+        const Complex dir = std::polar(1.0, phi);
+        const double s = std::min(rayExit(integrator, dir, extent), extent);
+        upper.push_back(s * dir);
+    }
+    Curve curve;
+    for (auto it = upper.rbegin(); it != upper.rend(); ++it) curve.emplace_back(it->real(), -it->imag());
+    curve.insert(curve.end(), upper.begin() + 1, upper.end());
+    curve.push_back(Complex(0.0, upper.front().imag()));
+    curve.insert(curve.begin(), Complex(0.0, -upper.front().imag()));
+    return {curve};
+}
+
 RegionKind regionKind(const std::string& integrator) {
     if (hasStabilityFunction(integrator)) return RegionKind::StabilityFunction;
-    if (integrator == "symplectic-euler" || integrator == "verlet") return RegionKind::Oscillator;
+    if (isPartitioned(integrator)) return RegionKind::Oscillator;
     return RegionKind::None;
 }
 
@@ -171,6 +200,8 @@ std::vector<Curve> regionBoundary(const std::string& integrator, double extent, 
                                           extent);
                 arc.push_back(arc.front());
                 curves.push_back(std::move(arc));
+            } else if (integrator != "verlet") {
+                curves = rayBoundary(integrator, extent, samples);
             } else {
                 // W = 4 (1 + k^2) / (1 + k) (eigenvalue -1), k = 1 + x, from the axis at 2i to the
                 // line x = -2 (D = k^2 = 1), which the curve approaches from the right.
@@ -245,6 +276,13 @@ std::string regionNote(const std::string& integrator) {
         return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the "
                "half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). "
                "Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.";
+    if (integrator == "yoshida4" || integrator == "yoshida8")
+        return "Region: no scalar R; the step is a product of " + std::string(integrator == "yoshida4" ? "3" : "15") +
+               " Verlet substeps (some backwards), drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ "
+               "(damping at the half-kick velocity, as the integrator does), traced ray by ray from 0. Undamped "
+               "modes: hω ≤ " + limitText(integrator) +
+               " (a step costs " + std::string(integrator == "yoshida4" ? "4" : "16") +
+               " force evaluations). The margin uses the step matrix, not the picture.";
     if (integrator == "cvode-bdf")
         return "No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, "
                "BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT "
@@ -321,19 +359,11 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
             margin.hasLimiting = true;
         }
     }
-    // The factor: for R methods the smallest exit over the plotted points (the same rays as
-    // predictedStableStep on the exact or modal spectrum; on the Ritz values for large
-    // bodies). Euler's and Heun's regions touch the imaginary axis only at 0: an undamped
-    // mode grows for every h (too slowly near 0 to see in double precision, hence explicit).
-    // Oscillator methods: the stability scan's prediction (exact step matrix for small bodies).
-    if (regionKind(integrator) == RegionKind::StabilityFunction) {
-        margin.factor = smallest;
-        if (integrator == "euler" || integrator == "midpoint")
-            for (const Complex& l : points.lambda)
-                if (std::abs(l.real()) <= 1e-9 * scale && std::abs(l.imag()) > 1e-6 * scale) margin.factor = 0.0;
-    } else {
-        margin.factor = predictedStableStep(integrator, modes, std::max(10.0, 1e4 * h)) / h;
-    }
+    // The factor: the one verdict (stabilityVerdict: predictedStableStep on the exact or
+    // Arnoldi spectrum, the exact step matrix for small bodies' partitioned methods), so the
+    // map says what the banners and `stability` say; the rays above only name the point
+    // that leaves first.
+    margin.factor = stabilityVerdict(modes, integrator, h).limit / h;
     const double limit = margin.factor * h;
     const bool isFastest = margin.hasLimiting && std::abs(std::abs(margin.limiting) - fastest) <= 1e-9 * fastest;
     char mode[160] = "";

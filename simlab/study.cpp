@@ -11,6 +11,7 @@
 #include "simcore/simulation.h"
 #include "simlab/analytic.h"
 #include "simlab/output.h"
+#include "simlab/reference_problem.h"
 
 namespace simlab {
 
@@ -18,6 +19,8 @@ using simcore::IntegratorOptions;
 using simcore::Param;
 using simcore::ParameterSet;
 using simcore::Simulation;
+using simcore::integratorFamilies;
+using simcore::integratorFamily;
 using simcore::integratorNames;
 using simcore::makeIntegrator;
 using simcore::parseNumber;
@@ -43,12 +46,12 @@ struct Trajectory : SampledRun {
 
 Trajectory runTrajectory(const ParameterSet& base, const std::string& integrator, double dt,
                          const IntegratorOptions& options, const std::vector<double>& grid,
-                         const std::atomic<bool>* cancel) {
+                         const std::atomic<bool>* cancel, double wallBudget = 0.0) {
     Trajectory out;
     out.positions.reserve(grid.size());
     static_cast<SampledRun&>(out) = runSampled(
         base, integrator, dt, options, grid, [&](const Simulation& sim) { out.positions.emplace_back(sim.positions()); },
-        cancel);
+        cancel, wallBudget);
     return out;
 }
 
@@ -87,7 +90,8 @@ std::string formatShort(double v) {
 
 SampledRun runSampled(const ParameterSet& base, const std::string& integrator, double dt,
                       const IntegratorOptions& options, const std::vector<double>& grid,
-                      const std::function<void(const Simulation&)>& sample, const std::atomic<bool>* cancel) {
+                      const std::function<void(const Simulation&)>& sample, const std::atomic<bool>* cancel,
+                      double wallBudget) {
     ParameterSet p = base;
     if (auto error = p.set(Param::Dt, dt)) throw std::invalid_argument(*error);
     Simulation sim(p, integrator);
@@ -102,6 +106,7 @@ SampledRun runSampled(const ParameterSet& base, const std::string& integrator, d
         const long targetSteps = std::lround(target / dt);
         auto more = [&] { return adaptive ? sim.time() < target - 1e-12 * std::max(1.0, target) : sim.stepCount() < targetSteps; };
         const auto start = Clock::now();
+        long counted = 0;
         while (more()) {
             if (!sim.step(target)) break;
             out.maxDrift = std::max(out.maxDrift, std::abs(sim.diagnostics().energyDrift()));
@@ -109,9 +114,16 @@ SampledRun runSampled(const ParameterSet& base, const std::string& integrator, d
                 out.cancelled = true;
                 break;
             }
+            // The budget is read off the clock every 64 steps (a clock read costs ~20 ns).
+            if (wallBudget > 0.0 && (++counted & 63) == 0 &&
+                out.wallSeconds + std::chrono::duration<double>(Clock::now() - start).count() > wallBudget) {
+                out.overBudget = true;
+                break;
+            }
         }
         out.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
-        if (sim.failed() || out.cancelled) break;
+        if (wallBudget > 0.0 && out.wallSeconds > wallBudget) out.overBudget = true;
+        if (sim.failed() || out.cancelled || out.overBudget) break;
         sample(sim);
     }
     if (sim.failed()) {
@@ -129,18 +141,42 @@ bool isWholeMultiple(double T, double h) {
     return std::abs(q - std::round(q)) <= 1e-9 * std::max(1.0, q);
 }
 
-std::string StudyRow::status() const { return ok ? std::string("ok") : "failed@" + formatDouble(failedAt); }
+std::string StudyRow::status() const {
+    if (!reached) return "not reached";
+    return ok ? std::string("ok") : "failed@" + formatDouble(failedAt);
+}
+
+std::string StudyRow::label() const {
+    return item.precision == "float" ? item.integrator + " (float)" : item.integrator;
+}
+
+double wallQuantile(std::vector<double> walls, double q) {
+    if (walls.empty()) return 0.0;
+    std::sort(walls.begin(), walls.end());
+    const double pos = q * static_cast<double>(walls.size() - 1);
+    const auto i = static_cast<std::size_t>(std::floor(pos));
+    const double frac = pos - static_cast<double>(i);
+    return i + 1 < walls.size() ? walls[i] + frac * (walls[i + 1] - walls[i]) : walls[i];
+}
+
+void summariseWalls(StudyRow& row) {
+    row.wallMin = wallQuantile(row.walls, 0.0);
+    row.wallQ1 = wallQuantile(row.walls, 0.25);
+    row.wallSeconds = wallQuantile(row.walls, 0.5);
+    row.wallQ3 = wallQuantile(row.walls, 0.75);
+}
 
 std::vector<StudyItem> studyItems(const StudySpec& spec) {
     std::vector<StudyItem> items;
-    for (const std::string& name : spec.integrators) {
-        if (isAdaptiveItem(spec, name)) {
-            const double h0 = spec.dts.empty() ? 0.01 : *std::max_element(spec.dts.begin(), spec.dts.end());
-            for (double tol : spec.tolerances) items.push_back({name, h0, tol});
-        } else {
-            for (double dt : spec.dts) items.push_back({name, dt, -1.0});
+    for (const std::string& precision : spec.precisions)
+        for (const std::string& name : spec.integrators) {
+            if (isAdaptiveItem(spec, name)) {
+                const double h0 = spec.dts.empty() ? 0.01 : *std::max_element(spec.dts.begin(), spec.dts.end());
+                for (double tol : spec.tolerances) items.push_back({name, precision, h0, tol});
+            } else {
+                for (double dt : spec.dts) items.push_back({name, precision, dt, -1.0});
+            }
         }
-    }
     return items;
 }
 
@@ -168,6 +204,24 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
     for (double tol : spec.tolerances)
         if (!(tol > 0.0) || tol >= 1.0) return "every tolerance must be in (0, 1), got " + formatShort(tol);
     if (spec.repeat < 1) return "repeat must be at least 1";
+    if (!(spec.timeBudget >= 0.0) || !std::isfinite(spec.timeBudget)) return "the time budget must be 0 (none) or positive";
+    if (spec.precisions.empty()) return "no precision given (double, float)";
+    for (const std::string& precision : spec.precisions) {
+        if (precision != "double" && precision != "float")
+            return "unknown precision '" + precision + "'; allowed: double, float";
+        if (std::count(spec.precisions.begin(), spec.precisions.end(), precision) > 1)
+            return "precision '" + precision + "' is listed twice";
+        if (precision != "float") continue;
+        if (const std::string refusal = referenceProblemRefusal(spec.params); !refusal.empty()) return refusal;
+        for (const std::string& name : spec.integrators)
+            if (!referenceProblemSupports(name))
+                return "precision float: " + name +
+                       " has no float build (only euler, midpoint, rk4, symplectic-euler, verlet, yoshida4, yoshida8)";
+        if (!closedFormApplies(spec))
+            return "precision float: the body reaches a wall (the float build has no contact); use a larger box";
+    }
+    if (spec.compensated && std::find(spec.precisions.begin(), spec.precisions.end(), "float") == spec.precisions.end())
+        return "compensated summation is an option of the float build (--precision float)";
     if (spec.shardCount < 1 || spec.shardIndex < 0 || spec.shardIndex >= spec.shardCount)
         return "shard must be K/N with 1 <= K <= N";
     if (spec.reference != "auto" && spec.reference != "exact" && spec.reference != "rk4" && spec.reference != "rk45" &&
@@ -261,20 +315,56 @@ StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyR
     if (item.tolerance > 0.0) options.atol = options.rtol = item.tolerance;
     StudyRow row;
     row.item = item;
-    std::vector<double> walls;
-    Trajectory run;
+    // A run over the budget is stopped there; its time (at least the budget) is kept. The point
+    // is not reached when most of its runs are (the median is over the budget): one run slowed
+    // by a neighbour on a shared machine does not stop a curve.
+    Trajectory run, completed;
+    bool haveCompleted = false;
+    int over = 0;
     for (int r = 0; r < spec.repeat; ++r) {
-        run = runTrajectory(spec.params, item.integrator, item.dt, options, reference.times, cancel);
-        walls.push_back(run.wallSeconds);
-        if (run.failed || run.cancelled) break;
+        if (item.precision == "float") {
+            ReferenceProblemRun f = runReferenceProblem(spec.params, item.integrator, item.dt, reference.times, "float",
+                                                        spec.compensated, cancel, spec.timeBudget);
+            run = Trajectory{};
+            run.failed = f.failed, run.failedAt = f.failedAt, run.cancelled = f.cancelled, run.overBudget = f.overBudget;
+            run.steps = f.steps, run.evaluations = f.evaluations, run.wallSeconds = f.wallSeconds, run.maxDrift = f.maxDrift;
+            if (f.failed) run.failure = "the float state is no longer finite";
+            run.positions = std::move(f.positions);
+        } else {
+            run = runTrajectory(spec.params, item.integrator, item.dt, options, reference.times, cancel, spec.timeBudget);
+        }
+        row.walls.push_back(run.wallSeconds);
+        if (run.cancelled && !run.overBudget) {
+            completed = std::move(run);
+            haveCompleted = true;
+            break;
+        }
+        if (run.overBudget) {
+            if (2 * ++over > spec.repeat) break;
+            continue;
+        }
+        completed = std::move(run);
+        haveCompleted = true;
+        if (completed.failed) break;
     }
-    std::sort(walls.begin(), walls.end());
-    const std::size_t mid = walls.size() / 2;
-    row.wallSeconds = walls.size() % 2 ? walls[mid] : 0.5 * (walls[mid - 1] + walls[mid]);
+    if (!haveCompleted || 2 * over > spec.repeat) run.overBudget = true;
+    else run = std::move(completed);
+    summariseWalls(row);
     row.steps = run.steps;
     row.forceEvaluations = run.evaluations;
     row.dt = item.tolerance > 0.0 ? spec.duration / static_cast<double>(std::max(1L, run.steps)) : item.dt;
     row.errorEnergy = run.maxDrift;
+    if (run.overBudget) {
+        // Not reached: no error, and no timing of a run that was cut short.
+        row.ok = row.reached = false;
+        row.walls.clear();
+        summariseWalls(row);
+        row.dt = item.tolerance > 0.0 ? 0.0 : item.dt;
+        row.steps = 0;
+        row.forceEvaluations = 0;
+        row.failure = "over the time budget of " + formatShort(spec.timeBudget) + " s";
+        return row;
+    }
     if (run.failed) {
         row.ok = false;
         row.failedAt = run.failedAt;
@@ -286,10 +376,44 @@ StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyR
         row.failure = "cancelled";
         return row;
     }
-    for (std::size_t k = 0; k < run.positions.size(); ++k)
-        row.errorMax = std::max(row.errorMax, rmsDistance(run.positions[k], reference.positions[k]));
+    double sumSquares = 0.0;
+    for (std::size_t k = 0; k < run.positions.size(); ++k) {
+        const double e = rmsDistance(run.positions[k], reference.positions[k]);
+        row.errorMax = std::max(row.errorMax, e);
+        sumSquares += e * e;
+    }
+    row.errorRms = std::sqrt(sumSquares / static_cast<double>(std::max<std::size_t>(1, run.positions.size())));
     row.errorFinal = rmsDistance(run.positions.back(), reference.positions.back());
     return row;
+}
+
+namespace {
+
+// The costlier the point, the larger: 1/dt for fixed steps, 1/tolerance for adaptive runs.
+double itemCost(const StudyItem& item) { return item.tolerance > 0.0 ? 1.0 / item.tolerance : 1.0 / item.dt; }
+
+// A point of the same curve at least as costly as one that was not reached is not reached
+// either (the curve stops there): recorded without running it.
+std::optional<StudyRow> skippedByBudget(const StudySpec& spec, const StudyItem& item, const std::vector<StudyRow>& done) {
+    for (const StudyRow& r : done)
+        if (!r.reached && r.item.integrator == item.integrator && r.item.precision == item.precision &&
+            itemCost(item) >= itemCost(r.item)) {
+            StudyRow row;
+            row.item = item;
+            row.dt = item.tolerance > 0.0 ? 0.0 : item.dt;
+            row.ok = row.reached = false;
+            row.failure = "over the time budget of " + formatShort(spec.timeBudget) + " s (a cheaper point was)";
+            return row;
+        }
+    return std::nullopt;
+}
+
+}  // namespace
+
+StudyRow runStudyPoint(const StudySpec& spec, const StudyItem& item, const StudyReference& reference,
+                       const std::vector<StudyRow>& done, const std::atomic<bool>* cancel) {
+    if (auto skipped = skippedByBudget(spec, item, done)) return *skipped;
+    return runStudyItem(spec, item, reference, cancel);
 }
 
 StudyResult runStudy(const StudySpec& spec, const StudyProgressFn& progress, const std::atomic<bool>* cancel) {
@@ -308,7 +432,7 @@ StudyResult runStudy(const StudySpec& spec, const StudyProgressFn& progress, con
             progress({static_cast<int>(i) + 1, total,
                       item.integrator + (item.tolerance > 0 ? " tol=" + formatShort(item.tolerance)
                                                             : " dt=" + formatShort(item.dt))});
-        result.rows.push_back(runStudyItem(spec, item, result.reference, cancel));
+        result.rows.push_back(runStudyPoint(spec, item, result.reference, result.rows, cancel));
     }
     if (cancel && cancel->load()) result.cancelled = true;
     if (progress) progress({total, total, result.cancelled ? "cancelled" : "done"});
@@ -319,19 +443,89 @@ std::vector<OrderFit> fitOrders(const std::vector<StudyRow>& rows, double refere
     std::vector<OrderFit> fits;
     std::vector<std::string> names;
     for (const StudyRow& r : rows)
-        if (std::find(names.begin(), names.end(), r.item.integrator) == names.end()) names.push_back(r.item.integrator);
+        if (std::find(names.begin(), names.end(), r.label()) == names.end()) names.push_back(r.label());
     const double floor = std::isfinite(referenceError) ? 10.0 * referenceError : 0.0;
-    for (const std::string& name : names) {
-        // The asymptotic range: the three smallest steps whose error is resolved.
+    // The asymptotic range: the three smallest steps whose error is resolved.
+    auto fit = [&](const std::string& name, double StudyRow::*measure) -> std::pair<double, int> {
         std::vector<std::pair<double, double>> points;
-        for (const StudyRow& r : rows)
-            if (r.item.integrator == name && r.ok && r.errorMax > floor && r.errorMax > 0 && r.dt > 0)
-                points.emplace_back(r.dt, r.errorMax);
+        for (const StudyRow& r : rows) {
+            const double e = r.*measure;
+            if (r.label() == name && r.ok && e > floor && e > 0 && r.dt > 0) points.emplace_back(r.dt, e);
+        }
         std::sort(points.begin(), points.end());
         if (points.size() > 3) points.resize(3);
-        fits.push_back({name, logLogSlope(points), static_cast<int>(points.size())});
+        return {logLogSlope(points), static_cast<int>(points.size())};
+    };
+    for (const std::string& name : names) {
+        OrderFit f;
+        f.integrator = name;
+        std::tie(f.order, f.points) = fit(name, &StudyRow::errorMax);
+        std::tie(f.orderFinal, f.pointsFinal) = fit(name, &StudyRow::errorFinal);
+        std::tie(f.orderRms, f.pointsRms) = fit(name, &StudyRow::errorRms);
+        fits.push_back(f);
     }
     return fits;
+}
+
+namespace {
+
+// The integrator of a label ("rk4 (float)" -> "rk4").
+std::string integratorOf(const std::string& label) { return label.substr(0, label.find(' ')); }
+
+// Where a curve (points in order of refinement: error falling) first reaches `level`: the
+// cost log-log interpolated between the two points around it; nullopt if it never does.
+std::optional<double> costAt(const std::vector<std::pair<double, double>>& curve, double level) {
+    for (std::size_t i = 0; i < curve.size(); ++i) {
+        if (curve[i].second > level) continue;
+        if (i == 0) return curve[0].first;  // already there at its cheapest point
+        const auto [c0, e0] = curve[i - 1];
+        const auto [c1, e1] = curve[i];
+        const double u = (std::log(e0) - std::log(level)) / (std::log(e0) - std::log(e1));
+        return std::exp(std::log(c0) + u * (std::log(c1) - std::log(c0)));
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<FamilyBest> fastestByFamily(const std::vector<StudyRow>& rows) {
+    // Each curve in order of refinement (dt falling), ok points only.
+    std::map<std::string, std::vector<const StudyRow*>> curves;
+    double lo = 1e300, hi = 0.0;
+    for (const StudyRow& r : rows)
+        if (r.ok && r.errorMax > 0 && r.wallSeconds > 0) {
+            curves[r.label()].push_back(&r);
+            lo = std::min(lo, r.errorMax), hi = std::max(hi, r.errorMax);
+        }
+    std::vector<FamilyBest> best;
+    if (curves.empty()) return best;
+    for (auto& [label, points] : curves)
+        std::sort(points.begin(), points.end(), [](const StudyRow* a, const StudyRow* b) { return a->dt > b->dt; });
+    for (double d = std::floor(std::log10(hi)); d >= std::ceil(std::log10(lo)); d -= 1.0) {
+        const double level = std::pow(10.0, d);
+        for (std::string_view family : integratorFamilies()) {
+            FamilyBest b;
+            for (const auto& [label, points] : curves) {
+                if (integratorFamily(integratorOf(label)) != family) continue;
+                std::vector<std::pair<double, double>> wall, evals;
+                for (const StudyRow* r : points) {
+                    wall.emplace_back(r->wallSeconds, r->errorMax);
+                    evals.emplace_back(static_cast<double>(r->forceEvaluations), r->errorMax);
+                }
+                const auto cost = costAt(wall, level);
+                if (cost && (b.integrator.empty() || *cost < b.wallSeconds)) {
+                    b.integrator = label;
+                    b.wallSeconds = *cost;
+                    b.forceEvaluations = costAt(evals, level).value_or(0.0);
+                }
+            }
+            if (b.integrator.empty()) continue;
+            b.family = std::string(family);
+            b.error = level;
+            best.push_back(b);
+        }
+    }
+    return best;
 }
 
 double logLogSlope(const std::vector<std::pair<double, double>>& points) {
@@ -346,22 +540,39 @@ double logLogSlope(const std::vector<std::pair<double, double>>& points) {
 }
 
 std::string studyCsvHeader() {
-    return "integrator,dt,steps,force_evals,wall_seconds,error_final,error_max,error_energy,status\n";
+    return "integrator,family,precision,dt,steps,force_evals,repeats,wall_min,wall_q1,wall_median,wall_q3,error_final,"
+           "error_max,error_rms,error_energy,status\n";
 }
 
 std::string studyCsvRow(const StudyRow& row) {
     std::string line = row.item.integrator;
+    line += ',' + std::string(integratorFamily(row.item.integrator));
+    line += ',' + row.item.precision;
     line += ',' + formatDouble(row.dt);
     line += ',' + std::to_string(row.steps);
     line += ',' + std::to_string(row.forceEvaluations);
-    line += ',' + formatDouble(row.wallSeconds);
-    if (row.ok) {
-        line += ',' + formatDouble(row.errorFinal) + ',' + formatDouble(row.errorMax) + ',' +
-                formatDouble(row.errorEnergy);
+    line += ',' + std::to_string(row.walls.size());
+    if (row.walls.empty()) {
+        line += ",,,,";
     } else {
-        line += ",,,";
+        for (double w : {row.wallMin, row.wallQ1, row.wallSeconds, row.wallQ3}) line += ',' + formatDouble(w);
+    }
+    if (row.ok) {
+        for (double e : {row.errorFinal, row.errorMax, row.errorRms, row.errorEnergy}) line += ',' + formatDouble(e);
+    } else {
+        line += ",,,,";
     }
     return line + ',' + row.status() + '\n';
+}
+
+std::string studyTimingsCsvHeader() { return "integrator,precision,dt,repeat,wall_seconds\n"; }
+
+std::string studyTimingsCsvRows(const StudyRow& row) {
+    std::string out;
+    for (std::size_t r = 0; r < row.walls.size(); ++r)
+        out += row.item.integrator + ',' + row.item.precision + ',' + formatDouble(row.dt) + ',' + std::to_string(r + 1) +
+               ',' + formatDouble(row.walls[r]) + '\n';
+    return out;
 }
 
 std::optional<std::vector<StudyRow>> parseStudyCsv(const std::string& text, std::string* error) {
@@ -381,26 +592,53 @@ std::optional<std::vector<StudyRow>> parseStudyCsv(const std::string& text, std:
         std::string field;
         while (std::getline(ss, field, ',')) f.push_back(field);
         if (!line.empty() && line.back() == ',') f.emplace_back();
-        if (f.size() != 9) return fail("expected 9 fields, got " + std::to_string(f.size()));
+        const bool legacy = f.size() == 9;
+        if (legacy) {
+            // Written before issue 28: integrator,dt,steps,force_evals,wall_seconds (the median),
+            // error_final,error_max,error_energy,status. Read as one timing, no error_rms.
+            f = {f[0], std::string(integratorFamily(f[0])), "double", f[1], f[2], f[3], "1", f[4], f[4], f[4], f[4],
+                 f[5], f[6], "", f[7], f[8]};
+        }
+        if (f.size() != 16) return fail("expected 16 fields (or the 9 of an older study), got " + std::to_string(f.size()));
         StudyRow r;
         r.item.integrator = f[0];
-        const auto dt = parseNumber(f[1]), steps = parseNumber(f[2]), evals = parseNumber(f[3]), wall = parseNumber(f[4]);
-        if (!dt || !steps || !evals || !wall) return fail("bad number");
+        if (f[2] != "double" && f[2] != "float") return fail("precision must be double or float");
+        r.item.precision = f[2];
+        const auto dt = parseNumber(f[3]), steps = parseNumber(f[4]), evals = parseNumber(f[5]), repeats = parseNumber(f[6]);
+        if (!dt || !steps || !evals || !repeats) return fail("bad number");
         r.dt = r.item.dt = *dt;
         r.steps = static_cast<long>(*steps);
         r.forceEvaluations = static_cast<std::uint64_t>(*evals);
-        r.wallSeconds = *wall;
-        if (f[8] == "ok") {
-            const auto e1 = parseNumber(f[5]), e2 = parseNumber(f[6]), e3 = parseNumber(f[7]);
-            if (!e1 || !e2 || !e3) return fail("bad error value");
-            r.errorFinal = *e1, r.errorMax = *e2, r.errorEnergy = *e3;
-        } else if (f[8].rfind("failed@", 0) == 0) {
-            const auto t = parseNumber(f[8].substr(7));
+        if (*repeats > 0) {
+            // The raw times are in the timings CSV; the summary keeps the four statistics.
+            double* targets[4] = {&r.wallMin, &r.wallQ1, &r.wallSeconds, &r.wallQ3};
+            for (int k = 0; k < 4; ++k) {
+                const auto w = parseNumber(f[7 + static_cast<std::size_t>(k)]);
+                if (!w) return fail("bad wall time");
+                *targets[k] = *w;
+            }
+        }
+        const std::string& status = f[15];
+        if (status == "ok") {
+            double* targets[4] = {&r.errorFinal, &r.errorMax, &r.errorRms, &r.errorEnergy};
+            for (int k = 0; k < 4; ++k) {
+                if (legacy && k == 2) {
+                    r.errorRms = std::nan("");  // not measured then
+                    continue;
+                }
+                const auto e = parseNumber(f[11 + static_cast<std::size_t>(k)]);
+                if (!e) return fail("bad error value");
+                *targets[k] = *e;
+            }
+        } else if (status.rfind("failed@", 0) == 0) {
+            const auto t = parseNumber(status.substr(7));
             if (!t) return fail("bad failure time");
             r.ok = false;
             r.failedAt = *t;
+        } else if (status == "not reached") {
+            r.ok = r.reached = false;
         } else {
-            return fail("status must be ok or failed@<time>");
+            return fail("status must be ok, failed@<time> or not reached");
         }
         rows.push_back(r);
     }
@@ -424,8 +662,6 @@ Range decades(const std::vector<double>& values) {
     if (r.hi <= r.lo) r.hi = r.lo + 1.0;
     return r;
 }
-
-const char* colourFor(const std::string& name) { return studyColour(name); }
 
 }  // namespace
 
@@ -451,9 +687,12 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
         const SvgPanel& panel = panels[static_cast<std::size_t>(p)];
         const int x0 = left + p * (panelW + gap), y0 = top;
         std::vector<double> xs, ys;
-        for (const SvgSeries& s : panel.series)
+        for (const SvgSeries& s : panel.series) {
             for (auto pt : s.points)
                 if (drawable(pt)) xs.push_back(pt.first), ys.push_back(pt.second);
+            for (double x : s.bandLow) xs.push_back(x);
+            for (double x : s.bandHigh) xs.push_back(x);
+        }
         const Range xr = decades(xs), yr = decades(ys);
         auto px = [&](double v) { return x0 + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * panelW; };
         auto py = [&](double v) { return y0 + panelH - (std::log10(v) - yr.lo) / (yr.hi - yr.lo) * panelH; };
@@ -480,8 +719,25 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
             for (auto pt : s.points)
                 if (drawable(pt)) pts.push_back(pt);
             if (pts.empty()) continue;
-            if (std::none_of(legend.begin(), legend.end(), [&](const SvgSeries* l) { return l->name == s.name; }))
+            if (s.inLegend &&
+                std::none_of(legend.begin(), legend.end(), [&](const SvgSeries* l) { return l->name == s.name; }))
                 legend.push_back(&s);
+            // The band: along the low edge, back along the high edge (points with a band only).
+            if (!s.bandLow.empty() && s.bandLow.size() == s.points.size() && s.bandHigh.size() == s.points.size()) {
+                std::vector<std::pair<double, double>> low, high;
+                for (std::size_t i = 0; i < s.points.size(); ++i) {
+                    const double y = s.points[i].second;
+                    if (drawable({s.bandLow[i], y}) && drawable({s.bandHigh[i], y}))
+                        low.emplace_back(s.bandLow[i], y), high.emplace_back(s.bandHigh[i], y);
+                }
+                if (!low.empty()) {
+                    svg << "<polygon class=\"band\" fill=\"" << s.colour << "\" fill-opacity=\"0.18\" stroke=\"" << s.colour
+                        << "\" stroke-opacity=\"0.35\" stroke-width=\"0.8\" points=\"";
+                    for (auto [x, y] : low) svg << px(x) << ',' << py(y) << ' ';
+                    for (auto it = high.rbegin(); it != high.rend(); ++it) svg << px(it->first) << ',' << py(it->second) << ' ';
+                    svg << "\"/>\n";
+                }
+            }
             svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.5\"";
             if (!s.dash.empty()) svg << " stroke-dasharray=\"" << s.dash << "\"";
             svg << " points=\"";
@@ -494,6 +750,10 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
                     svg << "<text x=\"" << px(x) + 5 << "\" y=\"" << py(y) - 5 << "\" font-size=\"10\" fill=\"" << s.colour
                         << "\">" << s.labels[i] << "</text>\n";
             }
+            for (auto pt : s.rings)
+                if (drawable(pt))
+                    svg << "<circle class=\"fastest\" cx=\"" << px(pt.first) << "\" cy=\"" << py(pt.second)
+                        << "\" r=\"7\" fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\"/>\n";
         }
     }
     const int lx = left + count * panelW + (count - 1) * gap + 15;
@@ -508,43 +768,104 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
     return svg.str();
 }
 
-std::string studySvg(const std::vector<StudyRow>& rows, const std::string& title) {
+double roundoffFloor(const std::string& precision, double scale, double duration, double h) {
+    const double eps = precision == "float" ? 0x1p-24 : 0x1p-53;
+    return eps * scale * std::sqrt(duration / h);
+}
+
+double referenceScale(const StudyReference& reference) {
+    double scale = 0.0;
+    for (const Eigen::Matrix3Xd& x : reference.positions) scale = std::max(scale, x.cwiseAbs().maxCoeff());
+    return scale;
+}
+
+std::string studySvg(const std::vector<StudyRow>& rows, const std::string& title, double roundoffScale,
+                     double duration) {
     std::vector<std::string> names;
     for (const StudyRow& r : rows)
-        if (std::find(names.begin(), names.end(), r.item.integrator) == names.end()) names.push_back(r.item.integrator);
+        if (std::find(names.begin(), names.end(), r.label()) == names.end()) names.push_back(r.label());
     struct Axis {
         const char* label;
         std::function<double(const StudyRow&)> x;
     };
     const Axis axes[3] = {
-        {"wall time [s] (median, stepping only)", [](const StudyRow& r) { return r.wallSeconds; }},
+        {"wall time [s] (median, band q1-q3; stepping only)", [](const StudyRow& r) { return r.wallSeconds; }},
         {"force evaluations", [](const StudyRow& r) { return static_cast<double>(r.forceEvaluations); }},
         {"dt [s] (mean step for adaptive rk45)", [](const StudyRow& r) { return r.dt; }},
     };
+    const std::vector<FamilyBest> best = fastestByFamily(rows);
     std::vector<SvgPanel> panels;
-    for (const Axis& axis : axes) {
+    for (int a = 0; a < 3; ++a) {
+        const Axis& axis = axes[a];
         SvgPanel panel{axis.label, "error_max: largest RMS position error [m]", {}};
         for (const std::string& name : names) {
             // Joined in order of dt (timings are noisy; the line follows the refinement).
-            std::vector<std::tuple<double, double, double>> sorted;
+            std::vector<const StudyRow*> sorted;
             for (const StudyRow& r : rows)
-                if (r.ok && r.item.integrator == name) sorted.emplace_back(r.dt, axis.x(r), r.errorMax);
-            std::sort(sorted.begin(), sorted.end());
-            SvgSeries series{name, colourFor(name), "", {}, {}};
-            for (auto [dt, x, e] : sorted) series.points.emplace_back(x, e);
+                if (r.ok && r.label() == name) sorted.push_back(&r);
+            std::sort(sorted.begin(), sorted.end(), [](const StudyRow* p, const StudyRow* q) { return p->dt < q->dt; });
+            const std::string integrator = integratorOf(name);
+            const std::string family(integratorFamily(integrator));
+            SvgSeries series{name + (family.empty() ? "" : " [" + family + "]"), studyColour(integrator),
+                             name == integrator ? "" : "6,3", {}, {}};
+            for (const StudyRow* r : sorted) {
+                series.points.emplace_back(axis.x(*r), r->errorMax);
+                if (a == 0) series.bandLow.push_back(r->wallQ1), series.bandHigh.push_back(r->wallQ3);
+            }
+            if (a < 2)
+                for (const FamilyBest& b : best)
+                    if (b.integrator == name) series.rings.emplace_back(a == 0 ? b.wallSeconds : b.forceEvaluations, b.error);
             panel.series.push_back(std::move(series));
+        }
+        if (a == 2 && roundoffScale > 0.0 && duration > 0.0) {
+            // The predicted floor of each precision present, over the panel's steps.
+            std::vector<std::string> precisions;
+            double hMin = 1e300, hMax = 0.0;
+            for (const StudyRow& r : rows) {
+                if (std::find(precisions.begin(), precisions.end(), r.item.precision) == precisions.end())
+                    precisions.push_back(r.item.precision);
+                if (r.ok && r.dt > 0) hMin = std::min(hMin, r.dt), hMax = std::max(hMax, r.dt);
+            }
+            if (hMax > 0.0)
+                for (const std::string& precision : precisions) {
+                    SvgSeries floor{"round-off floor, " + precision + ": eps X sqrt(T/h)", "#555555",
+                                    precision == "float" ? "2,3" : "1,4", {}, {}};
+                    for (double h : {hMin, hMax}) floor.points.emplace_back(h, roundoffFloor(precision, roundoffScale, duration, h));
+                    panel.series.push_back(std::move(floor));
+                }
         }
         panels.push_back(std::move(panel));
     }
-    return logLogSvg(panels, title);
+    std::string svg = logLogSvg(panels, title);
+    if (!best.empty()) {
+        // A note under the panels: what the rings mean.
+        const std::string note = "<text x=\"70\" y=\"";
+        const auto end = svg.rfind("</svg>");
+        const auto heightPos = svg.find("height=\"") + 8;
+        const int height = std::stoi(svg.substr(heightPos));
+        svg.insert(end, note + std::to_string(height - 8) +
+                            "\" font-size=\"11\">rings: the fastest method of each family at each decade of error "
+                            "(wall time and force evaluations)</text>\n");
+    }
+    return svg;
 }
 
 const char* studyColour(std::string_view integrator) {
+    // Shades of the family's hue, darkest first (familyColour).
     static const std::map<std::string_view, const char*> colours = {
-        {"euler", "#d62728"},     {"midpoint", "#ff7f0e"},  {"rk4", "#1f77b4"},       {"symplectic-euler", "#9467bd"},
-        {"verlet", "#8c564b"},    {"rk45", "#2ca02c"},      {"implicit-euler", "#e377c2"}, {"cvode-bdf", "#17becf"},
-        {"cvode-adams", "#bcbd22"}, {"xpbd", "#393b79"}};
+        {"euler", "#08306b"},       {"midpoint", "#2171b5"},      {"rk4", "#6baed6"},
+        {"symplectic-euler", "#67000d"}, {"verlet", "#cb181d"},   {"yoshida4", "#ef6548"},
+        {"yoshida8", "#fc9272"},    {"rk45", "#238b45"},          {"implicit-euler", "#6a51a3"},
+        {"cvode-bdf", "#8c510a"},   {"cvode-adams", "#d8b365"},   {"xpbd", "#525252"}};
     auto it = colours.find(integrator);
+    return it == colours.end() ? "#7f7f7f" : it->second;
+}
+
+const char* familyColour(std::string_view family) {
+    static const std::map<std::string_view, const char*> colours = {
+        {"explicit-rk", "#08306b"}, {"symplectic", "#67000d"}, {"implicit", "#6a51a3"},
+        {"adaptive", "#238b45"},    {"production", "#8c510a"}, {"constraint", "#525252"}};
+    auto it = colours.find(family);
     return it == colours.end() ? "#7f7f7f" : it->second;
 }
 

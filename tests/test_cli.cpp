@@ -505,8 +505,8 @@ private slots:
         QCOMPARE(version.out.trimmed(), QString("elastic-lab-cli " ELASTIC_LAB_VERSION));
         const Result top = cli({"--help"});
         QCOMPARE(top.code, 0);
-        for (const char* command : {"scenes", "params", "integrators", "run", "study", "stability", "restitution", "gallery",
-                                    "bench", "completion"})
+        for (const char* command : {"scenes", "params", "integrators", "run", "study", "conservation", "stability",
+                                    "restitution", "gallery", "bench", "completion"})
             QVERIFY2(top.out.contains(QString("\n  %1 ").arg(command)), command);
         const Result run = cli({"run", "--help"});
         QCOMPARE(run.code, 0);

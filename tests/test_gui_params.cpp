@@ -8,13 +8,20 @@
 #include <QFileInfo>
 #include <QUrl>
 
+#include <QApplication>
+#include <QLabel>
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
 #include "simcore/scenes.h"
+#include "test_support.h"
+#include "ui/compare_dialog.h"
 #include "ui/help_dialog.h"
+#include "ui/main_window.h"
 #include "ui/parameter_dock.h"
 #include "ui/presets.h"
+#include "ui/run_dock.h"
 #include "ui/scene_dock.h"
+#include "ui/simulation_controller.h"
 
 using namespace elui;
 using simcore::ParamGroup;
@@ -61,6 +68,133 @@ private slots:
         // Keys a scene does not have are not shown: no gas for the 1D spring.
         QCOMPARE(dock.form()->field("pressure") != nullptr, kind != SceneKind::Spring1d);
         QCOMPARE(dock.form()->field("rks") != nullptr, kind != SceneKind::Spring1d);
+    }
+
+    void gasKeysAreShownAsNrt() {
+        // pressure, pressure_inner, pressure_outer hold nRT (J), not a pressure: named for it,
+        // the key in the tooltip (and in files, the CLI, Python) unchanged.
+        ParameterDock dock;
+        dock.showParameters(simcore::ParameterSet(SceneKind::Sphere3d));
+        const std::map<QString, QString> names = {
+            {"pressure", "gas nRT"}, {"pressure_inner", "gas nRT inner"}, {"pressure_outer", "gas nRT outer"}, {"ks", "ks"}};
+        for (const auto& [key, name] : names) {
+            auto* label = dock.findChild<QLabel*>("label_" + key);
+            QVERIFY2(label, qPrintable(key));
+            QCOMPARE(label->text(), name);
+            QVERIFY(dock.form()->field(key));
+        }
+        QVERIFY(dock.form()->field("pressure_inner")->toolTip().contains("key: pressure_inner"));
+        QVERIFY(dock.form()->field("pressure_inner")->toolTip().contains("[J]"));
+        QVERIFY(!dock.findChild<QLabel*>("label_ks")->toolTip().contains("key:"));
+    }
+
+    void sideBySideProposesDistinctIntegrators() {
+        for (const QString& single : {QString("rk4"), QString("euler"), QString("midpoint"), QString("verlet")}) {
+            const QStringList proposal = CompareDialog::proposal({single});
+            QCOMPARE(proposal.size(), 3);
+            QCOMPARE(proposal.front(), single);
+            QCOMPARE(QSet<QString>(proposal.begin(), proposal.end()).size(), 3);
+        }
+        QCOMPARE(CompareDialog::proposal({"rk4"}), (QStringList{"rk4", "euler", "midpoint"}));
+        QCOMPARE(CompareDialog::proposal({}), (QStringList{"euler", "midpoint", "rk4"}));
+        QCOMPARE(CompareDialog::proposal({"verlet", "rk45"}), (QStringList{"verlet", "rk45"}));  // the views running
+    }
+
+    void enterAndEscapeLeaveTheField() {
+        // After typing into a field, Enter (a valid value) or Escape (the value in use back,
+        // unmarked) leave it; then Space runs and S steps instead of typing into it.
+        MainWindow w(false);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        w.startScene(simcore::ParameterSet(SceneKind::Ring2d), {"rk4"});
+        SimulationController* c = w.controller();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest() && w.parameterDock()->form(); }));
+        w.parameterDock()->show();
+        w.parameterDock()->raise();
+        // Keys as the keyboard sends them: to the focused widget, or to the window.
+        auto press = [&](int key, const QString& text = {}) {
+            QWidget* target = QApplication::focusWidget() ? QApplication::focusWidget() : &w;
+            if (text.isEmpty()) QTest::keyClick(target, Qt::Key(key));
+            else QTest::keyClicks(target, text);
+        };
+        for (QLineEdit* field : {w.parameterDock()->form()->field("ks"), w.runDock()->dtEdit()}) {
+            const QString inUse = field->text();
+            field->setFocus();
+            QVERIFY(testsupport::waitUntil([&] { return field->hasFocus(); }));
+            field->selectAll();
+            press(0, "-3");
+            press(Qt::Key_Return);
+            QVERIFY2(field->property("refused").toBool(), "a refused value is marked red");
+            QVERIFY2(field->hasFocus(), "and stays to be corrected");
+            press(Qt::Key_Escape);
+            QCOMPARE(field->text(), inUse);
+            QVERIFY2(!field->property("refused").toBool() && field->styleSheet().isEmpty(),
+                     "Escape shows the value in use: no red mark");
+            QVERIFY(!field->hasFocus());
+            // Space runs and pauses, S steps: nothing is typed into the field.
+            press(Qt::Key_Space);
+            QVERIFY(testsupport::waitUntil([&] { return c->latest()->running; }));
+            press(Qt::Key_Space);
+            QVERIFY(testsupport::waitUntil([&] { return !c->latest()->running; }));
+            const long steps = c->latest()->lanes.front().diagnostics.step;
+            press(Qt::Key_S);
+            QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.front().diagnostics.step == steps + 1; }));
+            QCOMPARE(field->text(), inUse);
+            // Enter with a valid value applies it and leaves the field.
+            field->setFocus();
+            QVERIFY(testsupport::waitUntil([&] { return field->hasFocus(); }));
+            field->selectAll();
+            const bool isDt = field == w.runDock()->dtEdit();
+            press(0, isDt ? "0.002" : "2500");
+            press(Qt::Key_Return);
+            QVERIFY(!field->hasFocus());
+            QVERIFY(!field->property("refused").toBool());
+            const simcore::Param id = isDt ? simcore::Param::Dt : simcore::Param::Ks;
+            QVERIFY(testsupport::waitUntil([&] { return c->latest()->parameters.get(id) == (isDt ? 0.002 : 2500.0); }));
+            press(Qt::Key_S);
+            QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.front().diagnostics.step == steps + 2; }));
+        }
+    }
+
+    void tolerancesAreSetInTheRunDock() {
+        // rk45's rtol and atol (the CLI's --rtol, --atol) from the Run dock reach every lane;
+        // a tighter tolerance takes more, smaller steps over the same time (at 1e-6 the ring's
+        // steps are mostly held by the speed cap, a tenth of the box per step).
+        MainWindow w(false);
+        w.startScene(simcore::ParameterSet(SceneKind::Ring2d), {"rk45"});
+        SimulationController* c = w.controller();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest() != nullptr; }));
+        auto* rtol = w.runDock()->findChild<QLineEdit*>("rtolEdit");
+        auto* atol = w.runDock()->findChild<QLineEdit*>("atolEdit");
+        QVERIFY(rtol && atol);
+        QVERIFY(rtol->isEnabled());
+        QCOMPARE(rtol->text().toDouble(), 1e-6);
+        auto stepsTo = [&](double t) {
+            c->reset();
+            testsupport::waitUntil([&] { return c->latest()->lanes.front().diagnostics.time == 0.0; });
+            c->runUntil(t);
+            testsupport::waitUntil([&] {
+                return !c->latest()->running && c->latest()->lanes.front().diagnostics.time >= t - 1e-12;
+            });
+            return c->latest()->lanes.front().diagnostics.step;
+        };
+        const long standard = stepsTo(1.2);  // through the impact on the floor (t ≈ 1 s)
+        rtol->setText("1e-10");
+        atol->setText("1e-10");
+        emit atol->editingFinished();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest()->rtol == 1e-10 && c->latest()->atol == 1e-10; }));
+        const long tight = stepsTo(1.2);
+        QVERIFY2(tight > standard, qPrintable(QString("%1 steps at 1e-6, %2 at 1e-10").arg(standard).arg(tight)));
+        // Out of range: refused and marked, nothing sent.
+        rtol->setText("0");
+        emit rtol->editingFinished();
+        QVERIFY(rtol->property("refused").toBool());
+        QCOMPARE(c->latest()->rtol, 1e-10);
+        // A fixed-step method has no tolerance: the fields are greyed out.
+        c->setIntegrator("rk4");
+        QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.front().integrator == "rk4"; }));
+        QCoreApplication::processEvents();
+        QVERIFY(!rtol->isEnabled());
     }
 
     void valuesRoundTrip() {

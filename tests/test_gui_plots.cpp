@@ -1,4 +1,5 @@
 // Plot data per scene (only the quantities a scene has), and the file exports.
+#include <QApplication>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -6,11 +7,13 @@
 
 #include "simcore/scenes.h"
 #include "simlab/output.h"
+#include "qcustomplot.h"
 #include "test_support.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/export.h"
 #include "ui/main_window.h"
 #include "ui/plot_dock.h"
+#include "ui/plot_ticks.h"
 #include "ui/pv_dock.h"
 #include "ui/simulation_controller.h"
 #include "ui/studies_dialog.h"
@@ -33,6 +36,9 @@ using simcore::SceneKind;
 Q_DECLARE_METATYPE(simcore::SceneKind)
 
 namespace {
+// Lets queued deliveries (frames, rows, replots) run.
+void settleEvents() { QCoreApplication::processEvents(); }
+
 std::vector<simcore::Diagnostics> runRows(const simcore::ParameterSet& params, int steps, const char* integrator = "rk4") {
     simcore::Simulation sim(params, integrator);
     std::vector<simcore::Diagnostics> rows{sim.diagnostics()};
@@ -182,7 +188,44 @@ private slots:
         };
         const double loose = meanHalfWidth(rowsOf("rk45", 1e-4)), tight = meanHalfWidth(rowsOf("rk45", 1e-8));
         QVERIFY2(loose > 0.0 && tight < 0.1 * loose, qPrintable(QString("%1 -> %2").arg(loose).arg(tight)));
-        QVERIFY(dock.findChild<QLabel*>("errorBandNote")->text().isEmpty());
+        // The dock says what the band is, and why it cannot be seen: at rk45's tolerance 1e-8
+        // every band point is far under half a pixel of the autoscaled axes.
+        dock.resize(500, 700);
+        dock.show();
+        auto drawn = [&] {  // replotted and laid out, as the running dock is
+            dock.replotNow();
+            for (QCustomPlot* plot : dock.plots()) plot->replot();
+            dock.replotNow();
+        };
+        drawn();
+        QVERIFY(dock.bandsThinnerThanALine());
+        QVERIFY2(dock.bandNote().contains("thinner than a line"), qPrintable(dock.bandNote()));
+        // Implicit Euler at DT 0.1 with step doubling, through the impact: a band of many pixels,
+        // named a per-step estimate (docs/gui.md quotes its size against the converged peak).
+        {
+            simcore::ParameterSet p(SceneKind::Ring2d);
+            p.set(simcore::Param::Dt, 0.1);
+            simcore::Simulation sim(p, "implicit-euler");
+            simcore::IntegratorOptions o = sim.integratorOptions();
+            o.stepDoubling = true;
+            sim.setIntegratorOptions(o);
+            std::vector<simcore::Diagnostics> rows;
+            double peak = 0.0, bandAtPeak = 0.0;
+            while (sim.time() < 3.0 && sim.step()) {
+                rows.push_back(sim.diagnostics());
+                rows.back().errors = sim.observableErrors();
+                if (rows.back().pressure[0] > peak) {
+                    peak = rows.back().pressure[0];
+                    bandAtPeak = rows.back().errors.pressure[0];
+                }
+            }
+            qInfo("implicit-euler DT 0.1: inner pressure peak %.3g N/m, band +-%.3g N/m there", peak, bandAtPeak);
+            dock.clear();
+            dock.appendRows(rows, 0, int(rows.size()));
+            drawn();
+            QVERIFY(!dock.bandsThinnerThanALine());
+            QVERIFY2(dock.bandNote().contains("per-step estimate"), qPrintable(dock.bandNote()));
+        }
         // rk4: no estimate, no band, and a note that says why.
         const auto plain = rowsOf("rk4", 1e-6);
         dock.clear();
@@ -192,7 +235,7 @@ private slots:
         QCOMPARE(dock.bandPointCount("energy", total), 0);
         QVERIFY(dock.findChild<QLabel*>("errorBandNote")->text().contains("no error estimate"));
         dock.setBandsShown(false);
-        QVERIFY(dock.findChild<QLabel*>("errorBandNote")->text().isEmpty());
+        QVERIFY(dock.bandNote().isEmpty());
 
         // Through the worker: rk45's rows carry a band, rk4's none; none while not shown (the
         // worker does not measure it then).
@@ -307,6 +350,7 @@ private slots:
         WorkPrecisionDialog dialog(p);
         dialog.setSteps("0.01 0.005 0.0025");
         dialog.setDuration(0.5);
+        dialog.setRepeats(3);
         QSignalSpy finished(&dialog, &StudyDialogBase::finished);
         dialog.start();
         QVERIFY(dialog.busy());
@@ -314,7 +358,18 @@ private slots:
         const auto& rows = dialog.result().rows;
         QCOMPARE(int(rows.size()), 4 * 3);  // euler, midpoint, rk4, verlet x 3 steps
         QCOMPARE(dialog.table()->rowCount(), 12);
-        QCOMPARE(dialog.plot()->graphCount(), 2 * 4);  // error vs run time and vs DT, per integrator
+        QCOMPARE(dialog.table()->columnCount(), 13);  // with the run time's q1, median, q3 and the RMS error
+        for (const auto& r : rows) QCOMPARE(int(r.walls.size()), r.ok ? 3 : int(r.walls.size()));
+        // Error vs cost and vs DT per integrator (force evaluations by default: no band, no rings).
+        auto bands = [&] {
+            int n = 0;
+            for (int i = 0; i < dialog.plot()->plottableCount(); ++i)
+                if (auto* curve = qobject_cast<QCPCurve*>(dialog.plot()->plottable(i)); curve && curve->brush().style() != Qt::NoBrush)
+                    ++n;
+            return n;
+        };
+        QCOMPARE(dialog.plot()->graphCount(), 2 * 4);
+        QCOMPARE(bands(), 0);
         // RK4's error falls far faster with DT than Euler's.
         auto err = [&](const char* name, double dt) {
             for (const auto& r : rows)
@@ -322,8 +377,62 @@ private slots:
             return -1.0;
         };
         QVERIFY(err("rk4", 0.0025) < err("euler", 0.0025) * 1e-3);
+        // The cost axis: force evaluations by default (a count: RK4 spends 4 per step), or the
+        // median wall time when chosen.
+        QCOMPARE(dialog.cost(), WorkPrecisionDialog::Cost::ForceEvaluations);
+        auto leftAxisData = [&] {
+            QList<double> keys;
+            for (int g = 0; g < dialog.plot()->graphCount(); ++g)
+                if (dialog.plot()->graph(g)->keyAxis()->axisRect() == dialog.plot()->axisRect(0) &&
+                    dialog.plot()->graph(g)->name().startsWith("rk4 ["))
+                    for (auto it = dialog.plot()->graph(g)->data()->constBegin(); it != dialog.plot()->graph(g)->data()->constEnd(); ++it)
+                        keys << it->key;
+            std::sort(keys.begin(), keys.end());
+            return keys;
+        };
+        QList<double> expected;
+        for (const auto& r : rows)
+            if (r.item.integrator == "rk4") expected << double(r.forceEvaluations);
+        std::sort(expected.begin(), expected.end());
+        QCOMPARE(leftAxisData(), expected);
+        QVERIFY(dialog.plot()->axisRect(0)->axis(QCPAxis::atBottom)->label().contains("force evaluations"));
+        dialog.setCost(WorkPrecisionDialog::Cost::WallTime);
+        expected.clear();
+        for (const auto& r : rows)
+            if (r.item.integrator == "rk4") expected << r.wallSeconds;
+        std::sort(expected.begin(), expected.end());
+        QCOMPARE(leftAxisData(), expected);
+        QVERIFY(dialog.plot()->axisRect(0)->axis(QCPAxis::atBottom)->label().contains("run time"));
+        // On the run-time axis, per integrator with a drawn point: the q1-q3 band (a filled curve)
+        // and the line through the medians, and the rings of the fastest of each family.
+        QCOMPARE(dialog.plot()->graphCount(), 2 * 4 + 1);
+        QCOMPARE(bands(), 4);
+        // A request the study refuses (no DT) starts no work.
+        dialog.setSteps("");
+        dialog.start();
+        QVERIFY(!dialog.busy());
         if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
             dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/study.png");
+    }
+
+    void conservationStudyClassifiesTheGrowth() {
+        // simlab's long-time energy (the CLI's `conservation`) behind the dialog.
+        simcore::ParameterSet p(SceneKind::Spring1d);
+        ConservationDialog dialog(p);
+        dialog.setPeriods(100);
+        dialog.setStep(0.01);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, testsupport::kHangGuardMs);
+        const auto& rows = dialog.result().rows;
+        QCOMPARE(int(rows.size()), 3);  // rk4, verlet, yoshida4 checked at first (in the table's order)
+        for (const auto& row : rows)
+            QCOMPARE(row.growth, std::string(row.integrator == "rk4" ? "drift" : "bounded"));
+        QCOMPARE(dialog.table()->rowCount(), 3);
+        QCOMPARE(dialog.plot()->graphCount(), 3 + 2);  // a curve per integrator, slopes 1/2 and 1
+        QVERIFY(dialog.plot()->graph(0)->dataCount() > 10);
+        if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
+            dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/conservation.png");
     }
 
     void refinementStudyRunsAndCancels() {
@@ -409,6 +518,13 @@ private slots:
             if (r.integrator == "rk4") rk4 = r.stable;
         }
         QVERIFY2(rk4 > euler, "RK4 is stable at larger steps than explicit Euler");
+        // The log axis of DT names every tick once (over less than 1.6 decades QCustomPlot's
+        // log ticker takes linear steps, which a one-digit mantissa printed as 1e-02 thrice).
+        dialog.plot()->replot();
+        const QVector<QString> labels = dialog.plot()->yAxis->tickVectorLabels();
+        QVERIFY(labels.size() >= 2);
+        for (int i = 1; i < labels.size(); ++i)
+            QVERIFY2(!labels.mid(0, i).contains(labels[i]), qPrintable(QStringList(labels.begin(), labels.end()).join(" ")));
         if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
             dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/stability.png");
     }
@@ -512,6 +628,162 @@ private slots:
         bars.showFrame(frameOf(params, {lanes[2]}));
         QCOMPARE(bars.laneCount(), 1);
         QCOMPARE(bars.value(drift), fieldOf("drift", lanes[2].second));
+    }
+
+    // Side by side every plot shows every view (issue 25): euler blows up at t = 0.98 s at DT
+    // 0.01 and stops alone, its curves end with a cross, midpoint and rk4 run on to 2 s; the
+    // axes are not swamped by euler's blow-up; the drift plot, the Run dock and the stability
+    // map show each view.
+    void sideBySideComparesEveryView() {
+        MainWindow w(false);
+        w.resize(1280, 800);
+        w.show();
+        w.openDock("stability-map");
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set(simcore::Param::Dt, 0.01);
+        w.startScene(p, {"euler", "midpoint", "rk4"});
+        SimulationController* c = w.controller();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest() && c->latest()->lanes.size() == 3; }));
+        c->setSpeed(Speed::AsFastAsPossible);
+        c->runUntil(2.0);
+        QVERIFY(testsupport::waitUntil([&] {
+            const FramePtr& f = c->latest();
+            return f && !f->running && f->lanes[2].diagnostics.time >= 2.0 - 1e-9 && f->lanes[0].failure;
+        }));
+        settleEvents();
+        PlotDock* plots = w.plotDock();
+        plots->replotNow();  // the marks and the axes (else on the replot timer)
+        QCOMPARE(plots->viewCount(), 3);
+        const double failedAt = c->latest()->lanes[0].failure->time;
+        QVERIFY(failedAt > 0.5 && failedAt < 1.5);
+        const std::vector<PlotSpec> specs = plotSpecs(SceneKind::Ring2d);
+        for (const QString& id : plots->plotIds())
+            for (int s = 0; s < plots->seriesNames(id).size(); ++s) {
+                // The energy plot compares the total only.
+                if (id == "energy" && plots->seriesNames(id)[s] != "total") {
+                    QCOMPARE(plots->viewPointCount(id, 1, s), -1);
+                    continue;
+                }
+                QVERIFY(plots->viewLastTime(id, 0, s) <= failedAt + 1e-9);  // euler stopped
+                const SeriesSpec& spec = specs[std::size_t(plots->plotIds().indexOf(id))].series[std::size_t(s)];
+                for (int v = 1; v < 3; ++v) {
+                    QVERIFY2(plots->viewLastTime(id, v, s) >= 2.0 - 1e-6, qPrintable(id));  // the others ran on
+                    // Each view's own values.
+                    QCOMPARE(plots->viewLastValue(id, v, s), spec.value(c->viewHistory()[std::size_t(v - 1)].back()));
+                }
+            }
+        // The values are each view's own: the last total energy of view 3 is rk4's.
+        const int total = int(plots->seriesNames("energy").indexOf("total"));
+        QCOMPARE(plots->viewLastValue("energy", 2, total), c->viewHistory()[1].back().total());
+        QCOMPARE(c->viewHistory()[1].back().time, c->latest()->lanes[2].diagnostics.time);
+        // Every view in the legend, the failed one with its cross and time.
+        const QStringList legend = plots->legendNames("volume");
+        QVERIFY2(legend.contains(QStringLiteral("1 euler ✕ %1 s").arg(failedAt, 0, 'f', 2)), qPrintable(legend.join("|")));
+        QVERIFY(legend.contains("2 midpoint") && legend.contains("3 rk4"));
+        // Euler's curves end with a cross: one per curve of the view.
+        QCOMPARE(plots->failureMarkCount("volume"), plots->seriesNames("volume").size());
+        QCOMPARE(plots->failureMarkCount("drift"), 1);
+        // Robust autoscale: euler's blow-up (its energy far beyond the others') does not set the axis.
+        double eulerPeak = 0.0, othersPeak = 0.0;
+        for (const auto& d : c->history()) eulerPeak = std::max(eulerPeak, std::abs(d.total()));
+        for (const auto& rows : c->viewHistory())
+            for (const auto& d : rows) othersPeak = std::max(othersPeak, std::abs(d.total()));
+        QVERIFY(eulerPeak > 100.0 * othersPeak);
+        const int energy = int(plots->plotIds().indexOf("energy"));
+        const QCPRange y = plots->plots()[std::size_t(energy)]->yAxis->range();
+        QVERIFY2(std::max(std::abs(y.lower), std::abs(y.upper)) < 3.0 * othersPeak, qPrintable(QString::number(y.upper)));
+        // The drift plot: log axis, every view, the same drift as the rows.
+        QVERIFY(plots->driftPlot()->isVisibleTo(plots));
+        QCOMPARE(plots->driftPlot()->yAxis->scaleType(), QCPAxis::stLogarithmic);
+        QCOMPARE(plots->lastDrift(2), std::abs(c->viewHistory()[1].back().energyDrift()));
+        QVERIFY(plots->driftPointCount(0) > 10 && plots->driftPointCount(1) > 10);
+        // The Run dock: each view's time (euler's failure), drift, and the distance between views.
+        const QString readout = w.runDock()->readout()->text();
+        QVERIFY2(readout.contains(QStringLiteral("✕ %1 s").arg(failedAt, 0, 'f', 3)), qPrintable(readout));
+        for (int v = 1; v < 3; ++v)
+            QVERIFY2(readout.contains(QStringLiteral("%1 J").arg(c->latest()->lanes[std::size_t(v)].diagnostics.energyDrift(), 0, 'g', 3)),
+                     qPrintable(readout));
+        QVERIFY2(readout.contains("distance to view 2"), qPrintable(readout));  // euler failed: midpoint is the reference
+        QVERIFY(readout.contains(QStringLiteral("%1 m").arg(c->latest()->lanes[2].divergence, 0, 'e', 2)));
+        // Back to one view: the comparison goes.
+        w.startScene(p, {"rk4"});
+        QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.size() == 1 && plots->viewCount() == 1; }));
+        QVERIFY(!plots->driftPlot()->isVisibleTo(plots));
+        QCOMPARE(plots->viewPointCount("volume", 1, 0), -1);
+    }
+
+    // The energy-drift lesson's answers can be read in the Run dock: each view's drift at t = 3 s.
+    void energyDriftLessonReadsEachView() {
+        MainWindow w(false);
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set(simcore::Param::Dt, 0.003);
+        w.startScene(p, {"euler", "midpoint", "rk4"});
+        SimulationController* c = w.controller();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest() && c->latest()->lanes.size() == 3; }));
+        c->setSpeed(Speed::AsFastAsPossible);
+        c->runUntil(3.0);
+        QVERIFY(testsupport::waitUntil([&] {
+            const FramePtr& f = c->latest();
+            return f && !f->running && f->lanes[0].diagnostics.time >= 3.0 - 1e-9;
+        }));
+        settleEvents();
+        const QString readout = w.runDock()->readout()->text();
+        // The lesson's measured answers (test_lessons measures them with the CLI): midpoint
+        // 0.225 J, rk4 0.060 J; here each view's own number, printed to three digits.
+        const double midpoint = c->latest()->lanes[1].diagnostics.energyDrift();
+        const double rk4 = c->latest()->lanes[2].diagnostics.energyDrift();
+        QVERIFY(std::abs(midpoint - 0.225) < 0.01 && std::abs(rk4 - 0.060) < 0.005);
+        QVERIFY2(readout.contains(QStringLiteral("%1 J").arg(midpoint, 0, 'g', 3)), qPrintable(readout));
+        QVERIFY2(readout.contains(QStringLiteral("%1 J").arg(rk4, 0, 'g', 3)), qPrintable(readout));
+        QCOMPARE(w.plotDock()->lastDrift(1), std::abs(c->viewHistory()[0].back().energyDrift()));
+    }
+
+    void numbersAndTicksStayReadable_data() {
+        QTest::addColumn<int>("width");
+        QTest::addColumn<double>("fontScale");
+        QTest::newRow("narrow dock") << 240 << 1.0;
+        QTest::newRow("wide dock") << 520 << 1.0;
+        QTest::newRow("narrow, presentation 1.5x") << 300 << 1.5;
+        QTest::newRow("wide, presentation 2x") << 600 << 2.0;
+    }
+    void numbersAndTicksStayReadable() {
+        // The energy bars' numbers end inside the plot, and neither the bars' energy axis nor
+        // the P-V diagram's axes print labels into each other, in a narrow or wide dock and at
+        // presentation sizes. (The sphere after its fall: gravity's bar to the left, removed by
+        // damping long to the right, numbers of four digits.)
+        QFETCH(int, width);
+        QFETCH(double, fontScale);
+        simcore::ParameterSet params(SceneKind::Sphere3d);
+        params.set(simcore::Param::Subdivisions, 1);
+        const auto rows = runRows(params, 600);
+        QFont font = QApplication::font();
+        font.setPointSizeF(font.pointSizeF() * fontScale);
+        EnergyBarsDock bars;
+        bars.setFont(font);
+        bars.plot()->xAxis->setTickLabelFont(font);
+        bars.setScene(SceneKind::Sphere3d, familiesOf(params));
+        bars.resize(width, 420);
+        bars.show();
+        bars.showFrame(frameOf(params, {{"rk4", rows.back()}}));
+        bars.refreshText();
+        bars.plot()->replot();
+        bars.plot()->replot();  // the second draw: the axis as it grew to fit the numbers
+        QVERIFY2(bars.numbersInside(), "every number inside the plot");
+        QVERIFY(!tickLabelsOverlap(bars.plot()->xAxis));
+        PvDock pv;
+        pv.setScene(SceneKind::Sphere3d);
+        pv.setParameters(params);
+        pv.resize(width, 500);
+        pv.show();
+        for (QCustomPlot* plot : pv.findChildren<QCustomPlot*>())
+            for (QCPAxis* axis : {plot->xAxis, plot->yAxis}) axis->setTickLabelFont(font);
+        pv.appendRows(rows, 0, int(rows.size()));
+        pv.replotNow();
+        for (QCustomPlot* plot : pv.findChildren<QCustomPlot*>()) {
+            plot->replot();
+            QVERIFY2(!tickLabelsOverlap(plot->xAxis), qPrintable(plot->objectName() + " volume axis"));
+            QVERIFY2(!tickLabelsOverlap(plot->yAxis), qPrintable(plot->objectName() + " pressure axis"));
+        }
     }
 
     void pvTrailLiesOnTheIsotherm() {

@@ -18,6 +18,7 @@
 #include "simlab/scenefile.h"
 #include "test_support.h"
 #include "ui/export.h"
+#include "ui/gl_format.h"
 #include "ui/main_window.h"
 #include "ui/presets.h"
 #include "ui/run_dock.h"
@@ -490,12 +491,7 @@ private slots:
 };
 
 int main(int argc, char** argv) {
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    format.setStencilBufferSize(8);
-    QSurfaceFormat::setDefaultFormat(format);
+    setDefaultGlFormat();
     QApplication app(argc, argv);
     TestGuiRender test;
     return QTest::qExec(&test, argc, argv);

@@ -7,7 +7,12 @@
 
 #include <QPushButton>
 
+#include "qcustomplot.h"
+#include "ui/lessons.h"
+#include "ui/main_window.h"
+#include "ui/simulation_controller.h"
 #include "simlab/stability.h"
+#include "ui/stability_map_dock.h"
 #include "simlab/stability_region.h"
 #include "test_support.h"
 #include "ui/main_window.h"
@@ -41,6 +46,23 @@ void showState(StabilityMapDock& dock, const ParameterSet& p, const QString& int
 class TestGuiStabilityMap : public QObject {
     Q_OBJECT
 private slots:
+    void stabilityMapHasEqualScales() {
+        // Both axes of the complex plane have the same units per pixel in a dock of any shape,
+        // as drawn: Euler's disc is a circle.
+        for (const QSize size : {QSize(300, 700), QSize(700, 320), QSize(420, 420)}) {
+            StabilityMapDock map;
+            map.resize(size);
+            map.show();
+            map.setState(simcore::ParameterSet(SceneKind::Spring1d), "euler");
+            QVERIFY(testsupport::waitUntil([&] { return !map.computing() && map.resultSerial() > 0; }));
+            QCustomPlot* plot = map.plot();
+            plot->replot();
+            const QRect rect = plot->axisRect()->rect();
+            const double px = plot->xAxis->range().size() / rect.width(), py = plot->yAxis->range().size() / rect.height();
+            QVERIFY2(std::abs(px / py - 1.0) < 0.01, qPrintable(QString("%1x%2: %3 vs %4 per pixel").arg(size.width()).arg(size.height()).arg(px).arg(py)));
+        }
+    }
+
     void showsTheRegionAndThePointsAndFollowsDt() {
         StabilityMapDock dock;
         dock.resize(420, 520);
@@ -162,6 +184,41 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(dock->dt() == dt / 2.0 && dock->marginText() != text, testsupport::kHangGuardMs);
         window.controller()->setIntegrator("verlet");
         QTRY_VERIFY_WITH_TIMEOUT(dock->marginText().startsWith("verlet:"), testsupport::kHangGuardMs);
+    }
+
+    // Side by side (issue 25): every view on one picture; the view with the smallest margin is
+    // the filled one. The stiff-springs lesson (implicit Euler beside rk4 at ks = 1e6, DT 0.01)
+    // must show rk4, the view that turns red, not implicit Euler.
+    void sideBySideMapsEveryView() {
+        const Lesson* lesson = findLesson("stiff-springs");
+        QVERIFY(lesson);
+        const ParameterSet p = lesson->preset.parameters();
+        MainWindow window(false);
+        window.show();
+        QVERIFY(window.openDock("stability-map"));
+        window.applyLesson(*lesson);
+        StabilityMapDock* dock = window.stabilityMapDock();
+        QVERIFY(testsupport::waitUntil([&] {
+            return dock->resultSerial() > 0 && !dock->computing() && !dock->overlaidIntegrators().isEmpty();
+        }));
+        QCOMPARE(lesson->preset.integrators, (QStringList{"implicit-euler", "rk4"}));
+        QCOMPARE(dock->primaryIntegrator(), QString("rk4"));
+        QCOMPARE(dock->overlaidIntegrators(), QStringList{"implicit-euler"});
+        QVERIFY(dock->overlayCurveCount() >= 1);
+        QVERIFY(dock->marginFactor() < 1.0);  // rk4 is outside at DT 0.01
+        const QString text = dock->marginText();
+        QVERIFY2(text.startsWith("View 2, rk4 (filled): DT is already outside"), qPrintable(text));
+        QVERIFY2(text.contains("View 1, implicit-euler (dashed): No DT limit"), qPrintable(text));
+        // rk4's figure is the one verdict's.
+        const double limit = simlab::stabilityVerdict(simlab::stabilityModes(p), "rk4", p.get(simcore::Param::Dt)).limit;
+        QVERIFY(std::abs(dock->marginFactor() * p.get(simcore::Param::Dt) / limit - 1.0) < 1e-9);
+        // One view again: no overlay.
+        StabilityMapDock alone;
+        alone.resize(420, 520);
+        alone.show();
+        showState(alone, p, "implicit-euler");
+        QCOMPARE(alone.primaryIntegrator(), QString("implicit-euler"));
+        QCOMPARE(alone.overlayCurveCount(), 0);
     }
 };
 

@@ -171,21 +171,6 @@ private slots:
         QVERIFY(frames[1].breakdown.has_value());
         QVERIFY(!lanes.laneFrames(false, n).front().breakdown);  // out of range: none
     }
-
-    void theDtLimitFollowsLaneZero() {
-        Lanes lanes = lanesOf({"rk4"});
-        QCOMPARE(lanes.dtLimit(), 0.0);  // not estimated yet
-        lanes.updateDtLimit();
-        const double limit = lanes.dtLimit();
-        QVERIFY(limit > 0.0);
-        QCOMPARE(limit, simcore::kExplicitStabilityLimit / lanes.front().estimatedFastestRate());
-        // Other springs: another estimate, once asked for.
-        lanes.setParameter(simcore::Param::Ks, 4 * lanes.front().parameters().get(simcore::Param::Ks));
-        QCOMPARE(lanes.dtLimit(), limit);
-        lanes.updateDtLimit();
-        QVERIFY(lanes.dtLimit() != limit);
-        QCOMPARE(lanes.dtLimit(), simcore::kExplicitStabilityLimit / lanes.front().estimatedFastestRate());
-    }
 };
 
 QTEST_APPLESS_MAIN(TestLanes)

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <map>
 
 #include <QDir>
 #include <QDockWidget>
@@ -27,6 +28,7 @@
 #include "simcore/simulation.h"
 #include "simlab/impact.h"
 #include "simlab/stability.h"
+#include "simlab/conservation.h"
 #include "test_support.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/lessons.h"
@@ -74,9 +76,8 @@ simlab::StabilityRow scan(const ParameterSet& p, const std::string& integrator) 
     simlab::StabilitySpec spec;
     spec.params = p;
     spec.integrators = {integrator};
-    ParameterSet linearised = p;
-    if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
-    return simlab::scanIntegrator(spec, integrator, simlab::linearModes(linearised));
+    // The one verdict's linearisation, as the CLI's (the trials start perturbed).
+    return simlab::scanIntegrator(spec, integrator, simlab::stabilityModes(p));
 }
 
 // Mean height of the outer layer's particles minus that of the inner layer's [m].
@@ -161,6 +162,31 @@ QMap<QString, QMap<QString, Measure>> measurements() {
     m["stiff-springs"]["implicit-drift"] = [=] {
         return runSteps(stiff, "implicit-euler", 300)->diagnostics().energyDrift();
     };
+
+    // 8. `conservation --scene spring1d --dt 0.01 --periods 10000 (and 100) --integrators
+    // verlet,yoshida4,rk4`: each study runs once per test run, shared by the answers that read it.
+    const ParameterSet spring = lesson("why-symplectic").preset.parameters();
+    auto longRun = [=](double periods) {
+        return [=]() -> const simlab::ConservationResult& {
+            static std::map<double, simlab::ConservationResult> done;
+            if (!done.count(periods)) {
+                simlab::ConservationSpec spec;
+                spec.params = spring;
+                spec.integrators = {"verlet", "yoshida4", "rk4"};
+                spec.periods = periods;
+                spec.dt = spring.get(simcore::Param::Dt);
+                done[periods] = simlab::runConservation(spec);
+            }
+            return done[periods];
+        };
+    };
+    const auto long10000 = longRun(10000.0), long100 = longRun(100.0);
+    m["why-symplectic"]["verlet-error"] = [=] { return long10000().rows[0].finalError; };
+    m["why-symplectic"]["yoshida4-error"] = [=] { return long10000().rows[1].finalError; };
+    m["why-symplectic"]["rk4-error"] = [=] { return long10000().rows[2].finalError; };
+    m["why-symplectic"]["verlet-growth"] = [=] { return long10000().rows[0].finalError / long100().rows[0].finalError; };
+    m["why-symplectic"]["rk4-growth"] = [=] { return long10000().rows[2].finalError / long100().rows[2].finalError; };
+    m["why-symplectic"]["rk4-alpha"] = [=] { return long10000().rows[2].alpha; };
     return m;
 }
 

@@ -75,13 +75,14 @@ StudySpec oscillatorStudy(std::vector<std::string> integrators, double kd, std::
 }
 
 std::string withoutWallColumn(const std::string& csv) {
-    // wall_seconds (5th column) is the only field that differs between two identical runs.
+    // The wall times (wall_min, wall_q1, wall_median, wall_q3: columns 8 to 11) are the only
+    // fields that differ between two identical runs.
     std::string out;
     std::istringstream in(csv);
     std::string line;
     while (std::getline(in, line)) {
         QStringList f = QString::fromStdString(line).split(',');
-        if (f.size() > 4) f.removeAt(4);
+        if (f.size() > 10) f.remove(7, 4);
         out += f.join(',').toStdString() + "\n";
     }
     return out;
@@ -104,6 +105,7 @@ private slots:
         QTest::newRow("rk45 fixed step") << "rk45" << 0.0 << 4.7 << 5.3;
         QTest::newRow("symplectic-euler") << "symplectic-euler" << 1.0 << 0.9 << 1.1;
         QTest::newRow("verlet undamped") << "verlet" << 0.0 << 1.9 << 2.1;
+        QTest::newRow("yoshida4 undamped") << "yoshida4" << 0.0 << 3.9 << 4.1;
         // Damping taken at the half-step velocity: velocity Verlet drops to first order.
         QTest::newRow("verlet damped") << "verlet" << 5.0 << 0.85 << 1.15;
         QTest::newRow("implicit-euler") << "implicit-euler" << 1.0 << 0.85 << 1.1;
@@ -188,6 +190,10 @@ private slots:
         QTest::newRow("rk4") << "rk4" << 2.0 * std::numbers::sqrt2;
         QTest::newRow("symplectic-euler") << "symplectic-euler" << 2.0;
         QTest::newRow("verlet") << "verlet" << 2.0;
+        // The compositions: |trace| of the product of Verlet step matrices reaches 2 there
+        // (bisection on the 2x2 product, independently of the code).
+        QTest::newRow("yoshida4") << "yoshida4" << 1.5734019474;
+        QTest::newRow("yoshida8") << "yoshida8" << 2.3565081394;
     }
     void explicitLimitsOnUndampedOscillator() {
         QFETCH(QString, integrator);
@@ -405,8 +411,8 @@ private slots:
         QVERIFY(parsed && parsed->size() == 8);
     }
     void studyCsvFormat() {
-        QCOMPARE(studyCsvHeader(),
-                 std::string("integrator,dt,steps,force_evals,wall_seconds,error_final,error_max,error_energy,status\n"));
+        QCOMPARE(studyCsvHeader(), std::string("integrator,family,precision,dt,steps,force_evals,repeats,wall_min,wall_q1,"
+                                               "wall_median,wall_q3,error_final,error_max,error_rms,error_energy,status\n"));
         // A failing run: euler far above its limit on a stiff ring.
         StudySpec spec;
         spec.params = params(SceneKind::Ring2d, {{"ks", 1e5}});
@@ -416,14 +422,16 @@ private slots:
         spec.reference = "rk4";
         spec.samples = 5;
         const StudyReference ref = computeReference(spec);
-        const StudyRow row = runStudyItem(spec, spec.integrators.size() ? StudyItem{"euler", 0.01, -1.0} : StudyItem{}, ref);
+        const StudyRow row = runStudyItem(spec, spec.integrators.size() ? StudyItem{"euler", "double", 0.01, -1.0} : StudyItem{}, ref);
         QVERIFY(!row.ok);
         const QString line = QString::fromStdString(studyCsvRow(row)).trimmed();
         const QStringList f = line.split(',');
-        QCOMPARE(f.size(), 9);
-        QVERIFY(f[5].isEmpty() && f[6].isEmpty() && f[7].isEmpty());  // never an error value
-        QVERIFY2(f[8].startsWith("failed@"), qPrintable(line));
-        QVERIFY(f[8].mid(7).toDouble() >= 0.0 && f[8].mid(7).toDouble() < 0.5);
+        QCOMPARE(f.size(), 16);
+        QCOMPARE(f[1], QString("explicit-rk"));
+        QCOMPARE(f[2], QString("double"));
+        for (int k = 11; k <= 14; ++k) QVERIFY(f[k].isEmpty());  // never an error value
+        QVERIFY2(f[15].startsWith("failed@"), qPrintable(line));
+        QVERIFY(f[15].mid(7).toDouble() >= 0.0 && f[15].mid(7).toDouble() < 0.5);
         // The reference printed its own error estimate.
         QVERIFY(std::isfinite(ref.estimatedError) && ref.estimatedError >= 0.0);
         QVERIFY(ref.description.find("rk4") != std::string::npos);

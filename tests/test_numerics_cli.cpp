@@ -18,12 +18,13 @@ QString readAll(const QString& path) {
     return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
 }
 
-// The CSV without its wall_seconds column (the one field two identical runs do not share).
+// The CSV without its wall-time columns wall_min .. wall_q3 (the fields two identical runs do
+// not share).
 QString withoutWall(const QString& csv) {
     QStringList out;
     for (const QString& line : csv.split('\n', Qt::SkipEmptyParts)) {
         QStringList f = line.split(',');
-        f.removeAt(4);
+        f.remove(7, 4);
         out << f.join(',');
     }
     return out.join('\n');
@@ -53,14 +54,17 @@ private slots:
         QVERIFY(r.out.contains("fitted convergence order"));
         for (const char* name : {"euler", "midpoint", "rk4", "rk45"}) QVERIFY(r.out.contains(QString("  ") + name));
         const QStringList lines = readAll(path("full.csv")).split('\n', Qt::SkipEmptyParts);
-        QCOMPARE(lines.value(0), QString("integrator,dt,steps,force_evals,wall_seconds,error_final,error_max,error_energy,status"));
+        QCOMPARE(lines.value(0), QString("integrator,family,precision,dt,steps,force_evals,repeats,wall_min,wall_q1,"
+                                         "wall_median,wall_q3,error_final,error_max,error_rms,error_energy,status"));
         QCOMPARE(lines.size(), 1 + 3 * 2 + 2);
         for (int i = 1; i < lines.size(); ++i) {
             const QStringList f = lines[i].split(',');
-            QCOMPARE(f.size(), 9);
-            QCOMPARE(f[8], QString("ok"));
-            for (int k = 1; k < 8; ++k) QVERIFY2(std::isfinite(f[k].toDouble()), qPrintable(lines[i]));
+            QCOMPARE(f.size(), 16);
+            QCOMPARE(f[15], QString("ok"));
+            QCOMPARE(f[6], QString("3"));
+            for (int k = 3; k < 15; ++k) QVERIFY2(std::isfinite(f[k].toDouble()), qPrintable(lines[i]));
         }
+        QVERIFY(r.out.contains("fastest of each family at each accuracy"));
         const QString svg = readAll(path("full.svg"));
         QVERIFY(svg.startsWith("<svg") && svg.contains("force evaluations") && svg.contains("wall time"));
     }
@@ -93,9 +97,64 @@ private slots:
         QCOMPARE(r.code, 0);
         const QStringList lines = readAll(path("fail.csv")).split('\n', Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 5);
-        QVERIFY2(lines[1].startsWith("euler,0.01,") && lines[1].contains(",,,failed@"), qPrintable(lines[1]));
-        QVERIFY2(lines[4].startsWith("rk4,") && lines[4].split(',')[1].toDouble() == 0.0005 && lines[4].endsWith(",ok"),
+        QVERIFY2(lines[1].startsWith("euler,explicit-rk,double,0.01,") && lines[1].contains(",,,,failed@"),
+                 qPrintable(lines[1]));
+        QVERIFY2(lines[4].startsWith("rk4,") && lines[4].split(',')[3].toDouble() == 0.0005 && lines[4].endsWith(",ok"),
                  qPrintable(lines[4]));
+    }
+    void studyKeepsRawTimingsAndStopsAtTheBudget() {
+        // --timings: one row per run and repeat; --time-budget 1e-9: no run can meet it (every
+        // run takes longer than a nanosecond), so every point is "not reached", errors empty.
+        const Result r = cli({"study", "--scene", "spring1d", "--integrators", "rk4,yoshida4", "--dts", "0.01,0.005",
+                              "--duration", "1", "--repeat", "4", "--timings", path("timings.csv"), "--quiet"});
+        QCOMPARE(r.code, 0);
+        const QStringList timings = readAll(path("timings.csv")).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(timings.value(0), QString("integrator,precision,dt,repeat,wall_seconds"));
+        QCOMPARE(timings.size(), 1 + 2 * 2 * 4);
+        QVERIFY(timings[4].startsWith("rk4,double,0.01,4,"));
+        const Result over = cli({"study", "--scene", "spring1d", "--integrators", "rk4", "--dts", "0.01,0.005",
+                                 "--duration", "1", "--time-budget", "1e-9", "--csv", path("budget.csv")});
+        QCOMPARE(over.code, 0);
+        QVERIFY2(over.out.contains("not reached"), qPrintable(over.out));
+        const QStringList rows = readAll(path("budget.csv")).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(rows.size(), 3);
+        for (int i = 1; i < 3; ++i) QVERIFY2(rows[i].endsWith(",,,,,not reached"), qPrintable(rows[i]));
+        // The merge mode reads such rows back (and the 9-column rows of older studies).
+        QCOMPARE(cli({"study", "--from-csv", path("budget.csv")}).code, 0);
+        QFile old(path("old.csv"));
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        old.write("integrator,dt,steps,force_evals,wall_seconds,error_final,error_max,error_energy,status\n"
+                  "rk4,0.01,100,400,1e-4,1e-6,2e-6,1e-3,ok\nrk4,0.005,200,800,2e-4,6e-8,1.2e-7,1e-4,ok\n");
+        old.close();
+        const Result merged = cli({"study", "--from-csv", path("old.csv")});
+        QCOMPARE(merged.code, 0);
+        QVERIFY2(merged.out.contains("4.06 (2)"), qPrintable(merged.out));
+        QCOMPARE(cli({"study", "--scene", "spring1d", "--integrators", "rk4", "--dts", "0.01", "--time-budget", "-1"}).code, 2);
+    }
+    void floatPrecisionAndConservation() {
+        const Result f = cli({"study", "--scene", "spring1d", "--set", "kd=0", "--integrators", "rk4", "--dts",
+                              "0.005,3.90625e-05", "--duration", "2", "--precision", "double,float", "--plot",
+                              path("float.svg"), "--quiet"});
+        QCOMPARE(f.code, 0);
+        QVERIFY(readAll(path("float.svg")).contains("round-off floor, float"));
+        QCOMPARE(cli({"study", "--scene", "ring2d", "--integrators", "rk4", "--dts", "0.01", "--precision", "float"}).code, 2);
+        QCOMPARE(cli({"study", "--scene", "spring1d", "--integrators", "rk4", "--dts", "0.01", "--compensated"}).code, 2);
+        const Result c = cli({"conservation", "--scene", "spring1d", "--dt", "0.01", "--periods", "200", "--integrators",
+                              "verlet,rk4", "--csv", path("cons.csv"), "--curves", path("curves.csv"), "--plot",
+                              path("cons.svg")});
+        QCOMPARE(c.code, 0);
+        QVERIFY2(c.out.contains("undamped (kd = 0"), qPrintable(c.out));
+        const QStringList lines = readAll(path("cons.csv")).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 3);
+        QVERIFY(lines[0].startsWith("integrator,alpha,alpha_lo,alpha_hi,class,"));
+        QCOMPARE(lines[1].split(',')[4], QString("bounded"));
+        QCOMPARE(lines[2].split(',')[4], QString("drift"));
+        QVERIFY(readAll(path("curves.csv")).startsWith("integrator,t,energy_error\n"));
+        QVERIFY(readAll(path("cons.svg")).contains("slope 1 (drift)"));
+        QCOMPARE(cli({"conservation", "--scene", "spring1d", "--dt", "0.01", "--integrators", "rk45"}).code, 2);
+        QCOMPARE(cli({"conservation", "--scene", "spring1d", "--dt", "0.01", "--periods", "0.5"}).code, 2);
+        const Result list = cli({"integrators"});
+        QVERIFY(list.out.contains("yoshida8           order 8  symplectic"));
     }
     void autoReferenceTurnsToTheStiffSolver() {
         // Issue 13: on the stiff ring rk4 16x below the smallest step (1.25 ms) is unstable; `auto`

@@ -38,7 +38,7 @@ private:
 };
 
 const std::vector<std::string> kRegionMethods = {"euler", "midpoint", "rk4", "rk45", "implicit-euler",
-                                                 "symplectic-euler", "verlet"};
+                                                 "symplectic-euler", "verlet", "yoshida4", "yoshida8"};
 
 }  // namespace
 
@@ -122,6 +122,11 @@ private slots:
         // Undamped modes: rk4 to h w = 2 sqrt 2, the oscillator methods to 2; euler never.
         QVERIFY(regionContains("rk4", Complex(0, 2.8)) && !regionContains("rk4", Complex(0, 2.9)));
         QVERIFY(regionContains("verlet", Complex(0, 1.99)) && !regionContains("verlet", Complex(0, 2.01)));
+        // The compositions of Verlet: undamped to h w = 1.5734 (yoshida4), 2.3565 (yoshida8).
+        QVERIFY(regionContains("yoshida4", Complex(0, 1.573)) && !regionContains("yoshida4", Complex(0, 1.574)));
+        QVERIFY(regionContains("yoshida8", Complex(0, 2.356)) && !regionContains("yoshida8", Complex(0, 2.357)));
+        QCOMPARE(regionKind("yoshida4"), RegionKind::Oscillator);
+        QVERIFY(regionNote("yoshida4").find("1.57") != std::string::npos);
         // Damped: the disc (x - 2)^2 + y^2 <= 8, so damping lowers symplectic Euler's reach.
         QVERIFY(regionContains("symplectic-euler", Complex(-0.1, 1.8)) &&
                 !regionContains("symplectic-euler", Complex(-0.1, 1.9)));
@@ -200,7 +205,7 @@ private slots:
     }
     void marginAgreesWithTheMeasuredLimitOnTheSpring_data() {
         QTest::addColumn<QString>("integrator");
-        for (const char* name : {"euler", "rk4", "verlet"}) QTest::newRow(name) << name;
+        for (const char* name : {"euler", "rk4", "verlet", "yoshida4"}) QTest::newRow(name) << name;
     }
     void marginAgreesWithTheMeasuredLimitOnTheSpring() {
         // The 1D spring (w^2 = 800, c = 15): margin * DT is the predicted limit; the

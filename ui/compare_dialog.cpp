@@ -39,6 +39,14 @@ CompareDialog::CompareDialog(const QStringList& current, double dt, QWidget* par
     layout->addWidget(buttons);
 }
 
+QStringList CompareDialog::proposal(const QStringList& current) {
+    if (current.size() >= 2) return current;
+    QStringList out{current.value(0, QStringLiteral("euler"))};
+    for (const QString& name : {QStringLiteral("euler"), QStringLiteral("midpoint"), QStringLiteral("rk4")})
+        if (out.size() < 3 && !out.contains(name)) out << name;
+    return out;
+}
+
 QStringList CompareDialog::integrators() const {
     QStringList out;
     for (QComboBox* c : m_combo)

@@ -14,6 +14,10 @@ class CompareDialog : public QDialog {
 public:
     CompareDialog(const QStringList& current, double dt, QWidget* parent = nullptr);
     QStringList integrators() const;  // one to three names
+    // What Compare > Side by side proposes: the views running now when there are several;
+    // from a single view, its integrator and then euler, midpoint, rk4 (the thesis's three),
+    // skipping the one already chosen: three distinct names.
+    static QStringList proposal(const QStringList& current);
 
 private:
     QComboBox* m_combo[3] = {};

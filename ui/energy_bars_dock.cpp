@@ -6,6 +6,7 @@
 #include <QTimer>
 
 #include "qcustomplot.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
 
@@ -38,7 +39,7 @@ EnergyBarsDock::EnergyBarsDock(QWidget* parent) : QDockWidget(tr("Energy bars"),
     setObjectName(QStringLiteral("EnergyBarsDock"));
     m_plot = new QCustomPlot(this);
     m_plot->setObjectName(QStringLiteral("energyBars"));
-    m_plot->setMinimumSize(260, 220);
+    m_plot->setMinimumSize(220, 200);
     m_plot->setPlottingHints(QCP::phCacheLabels);
     m_plot->plotLayout()->insertRow(0);
     m_title = new QCPTextElement(m_plot, tr("Energy book"), QFont(font().family(), font().pointSize(), QFont::Bold));
@@ -49,7 +50,18 @@ EnergyBarsDock::EnergyBarsDock(QWidget* parent) : QDockWidget(tr("Energy bars"),
     m_plot->yAxis->setTickLength(0, 0);
     m_plot->yAxis->setSubTicks(false);
     m_plot->xAxis->setLabel(tr("energy [J]"));
-    m_plot->xAxis->ticker()->setTickCount(3);  // a narrow dock: few, readable numbers
+    m_plot->xAxis->ticker()->setTickCount(4);
+    keepTickLabelsApart(m_plot->xAxis);  // a narrow dock: as many numbers as fit apart
+    // A row of text per bar (its name must not touch the next one), the two-line title and the
+    // energy axis below: the plot's minimum height, in the font of the moment.
+    connect(m_plot, &QCustomPlot::beforeReplot, this, [this] {
+        const QFontMetrics fm(m_plot->yAxis->tickLabelFont());
+        const double rows = m_keys.empty() ? 8.0 : m_keys.back() + 1.2;
+        const int needed = std::max(200, int(rows * (fm.height() + 2)) + 5 * fm.height() + 30);
+        if (m_plot->minimumHeight() != needed) m_plot->setMinimumHeight(needed);
+    });
+    // Every number beside its bar inside the plot, measured on the laid-out axis.
+    connect(m_plot, &QCustomPlot::afterLayout, this, &EnergyBarsDock::makeRoomForNumbers);
     // The zero line every bar starts from, negative to the left.
     m_plot->xAxis->grid()->setZeroLinePen(QPen(QColor(60, 60, 60), 1.2));
     setWidget(m_plot);
@@ -97,6 +109,7 @@ void EnergyBarsDock::rebuild() {
     }
     m_plot->yAxis->setTicker(ticker);
     m_plot->yAxis->setRange(-0.6, key - 0.4);
+
     const double width = 0.8 / m_lanes;
     for (std::size_t b = 0; b < m_bars.size(); ++b) {
         const QColor c = energyColor(m_bars[b].term);
@@ -161,6 +174,38 @@ void EnergyBarsDock::showFrame(const Frame& frame) {
         m_plot->xAxis->setRange(needLo, needHi);
     if (!m_textTimer->isActive()) m_textTimer->start();
     if (isVisible()) m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void EnergyBarsDock::makeRoomForNumbers() {
+    // A number starts at x (its bar's end, or the zero line) and is w pixels wide; with the axis
+    // [L, U] over W pixels it ends inside when (x - L) / (U - L) * W + w <= W, that is
+    // U >= L + (x - L) * W / (W - w). The upper end grows to the largest such U (never shrinks
+    // here: showFrame's rule shrinks it when the bars need far less).
+    const QCPRange range = m_plot->xAxis->range();
+    const double width = m_plot->axisRect()->width();
+    if (width < 40 || m_lanes != 1) return;
+    double upper = range.upper;
+    for (const QCPItemText* label : m_labels) {
+        if (!label->visible()) continue;
+        const QFontMetricsF fm(label->font());
+        const double w = fm.horizontalAdvance(label->text()) + label->padding().left() + label->padding().right() + 2.0;
+        if (w >= 0.8 * width) continue;  // cannot fit whatever the range: leave it
+        const double x = label->position->coords().x();
+        upper = std::max(upper, range.lower + (x - range.lower) * width / (width - w));
+    }
+    if (upper > range.upper) m_plot->xAxis->setRange(range.lower, upper);
+}
+
+bool EnergyBarsDock::numbersInside() const {
+    const QRect rect = m_plot->axisRect()->rect();
+    for (const QCPItemText* label : m_labels) {
+        if (!label->visible()) continue;
+        const QFontMetricsF fm(label->font());
+        const double left = m_plot->xAxis->coordToPixel(label->position->coords().x());
+        const double right = left + fm.horizontalAdvance(label->text()) + label->padding().left() + label->padding().right();
+        if (left < rect.left() - 1 || right > rect.right() + 1) return false;
+    }
+    return true;
 }
 
 void EnergyBarsDock::refreshText() {

@@ -54,12 +54,15 @@ public:
     QColor color(int bar, int lane = 0) const;
     QString title() const;
     QCustomPlot* plot() const { return m_plot; }
+    // Whether every number shown beside a bar lies inside the plot's axis rect (as drawn last).
+    bool numbersInside() const;
 
 public slots:
     void refreshText();  // numbers, title and axis range; then a replot
 
 private:
     void rebuild();
+    void makeRoomForNumbers();  // after the layout: the axis long enough for every number
     QCPBars* barAt(int bar, int lane) const { return m_items[std::size_t(bar * m_lanes + lane)]; }
 
     QCustomPlot* m_plot = nullptr;

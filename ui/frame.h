@@ -57,8 +57,15 @@ struct LaneFrame {
     std::vector<float> forces;            // 3N [N], only when force vectors are asked for
     simcore::Diagnostics diagnostics;
     std::optional<simcore::Failure> failure;
+    // A failed lane: its recorded state some time before the failure (the latest checkpoint at
+    // least kFailureStretch before it, or the run's first), for the failure banner's check
+    // (simlab::checkFailure re-runs the stretch from it at a smaller step). None otherwise.
+    std::shared_ptr<const simcore::SimulationSnapshot> stretchStart;
     simcore::PointerSpring pointer;
-    double divergence = 0.0;              // RMS distance to lane 0's particles [m]
+    double divergence = 0.0;              // RMS distance to the reference lane's particles [m]
+    // The lane the distance is measured to: lane 0, or the first live lane once lane 0 has
+    // failed (a failed lane's frozen state is no reference).
+    int divergenceReference = 0;
     // The selected particle's free-body diagram (a click on a particle selects it); none
     // when nothing is selected.
     std::optional<simcore::ForceBreakdown> breakdown;
@@ -90,7 +97,7 @@ struct Frame {
     // measured over the last half second or more.
     double stepsPerSecond = 0.0;
     bool fallingBehind = false;           // real-time mode could not keep up
-    double explicitDtLimit = 0.0;         // estimated largest stable DT of explicit methods [s]
+    double atol = 1e-6, rtol = 1e-6;      // the adaptive methods' tolerances in use [m, m/s] and [1]
     quint64 serial = 0;                   // increases with every published frame
     TimelineInfo timeline;
 };
@@ -101,6 +108,9 @@ using FramePtr = std::shared_ptr<const Frame>;
 struct FrameBatch {
     FramePtr frame;
     std::vector<simcore::Diagnostics> rows;
+    // Side by side: the other lanes' rows (lane i at index i - 1), recorded at the same
+    // common times; a failed lane's rows end where it failed.
+    std::vector<std::vector<simcore::Diagnostics>> laneRows;
     bool historyReset = false;            // a reset/rebuild happened: clear plots first
     // Branches (running on from a scrubbed moment) in the order they happened: the first
     // `rowsBefore` rows of `rows` precede it; the history after `time` became the abandoned future.

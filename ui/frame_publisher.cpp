@@ -13,8 +13,18 @@ void FramePublisher::recordRow(simcore::Simulation& lane0, bool errorBands) {
     if (errorBands) m_rows.back().errors = lane0.observableErrors();
 }
 
+void FramePublisher::recordLaneRows(const std::vector<const simcore::Simulation*>& lanes, double time) {
+    if (m_lastLaneRowTime >= 0.0 && time - m_lastLaneRowTime < kRowInterval * (1.0 - 1e-9)) return;
+    m_lastLaneRowTime = time;
+    if (m_laneRows.size() < lanes.size() - 1) m_laneRows.resize(lanes.size() - 1);
+    for (std::size_t i = 1; i < lanes.size(); ++i)
+        if (!lanes[i]->failed()) m_laneRows[i - 1].push_back(lanes[i]->diagnostics());
+}
+
 void FramePublisher::startHistory() {
     m_lastRowTime = -1.0;
+    m_lastLaneRowTime = -1.0;
+    m_laneRows.clear();
     m_rows.clear();
     m_historyReset = true;
 }
@@ -22,6 +32,7 @@ void FramePublisher::startHistory() {
 void FramePublisher::branch(double time) {
     m_branches.push_back({m_rows.size(), time});
     m_lastRowTime = -1.0;  // the branch's rows start at once
+    m_lastLaneRowTime = -1.0;
 }
 
 void FramePublisher::publish(std::shared_ptr<Frame> frame) {
@@ -31,6 +42,7 @@ void FramePublisher::publish(std::shared_ptr<Frame> frame) {
     if (m_historyReset) {
         // Rows not yet taken from before the reset belong to the old history: drop them.
         m_slot.rows.clear();
+        m_slot.laneRows.clear();
         m_slot.historyReset = true;
         m_slot.branches.clear();
         m_historyReset = false;
@@ -42,6 +54,11 @@ void FramePublisher::publish(std::shared_ptr<Frame> frame) {
     m_branches.clear();
     m_slot.rows.insert(m_slot.rows.end(), m_rows.begin(), m_rows.end());
     m_rows.clear();
+    if (m_slot.laneRows.size() < m_laneRows.size()) m_slot.laneRows.resize(m_laneRows.size());
+    for (std::size_t i = 0; i < m_laneRows.size(); ++i) {
+        m_slot.laneRows[i].insert(m_slot.laneRows[i].end(), m_laneRows[i].begin(), m_laneRows[i].end());
+        m_laneRows[i].clear();
+    }
     m_published.store(m_slot.frame->serial);
     if (!m_slotPending) {
         m_slotPending = true;
@@ -51,6 +68,7 @@ void FramePublisher::publish(std::shared_ptr<Frame> frame) {
 
 void FramePublisher::clear() {
     m_rows = {};
+    m_laneRows = {};
     m_branches = {};
     std::lock_guard lock(m_slotMutex);
     m_slot = FrameBatch{};

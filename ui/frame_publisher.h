@@ -30,6 +30,9 @@ public:
     // Records lane 0's row now, unless it failed or the last row is less than kRowInterval
     // ago; with its error bands (two measurements) when `errorBands`.
     void recordRow(simcore::Simulation& lane0, bool errorBands);
+    // Side by side: every other live lane's row at the common time `time` (at most one per
+    // kRowInterval of it), for the plots' other views.
+    void recordLaneRows(const std::vector<const simcore::Simulation*>& lanes, double time);
     // A new history begins: the rows not yet published are dropped, and the next batch tells
     // the GUI to clear (dropping the rows not yet taken too).
     void startHistory();
@@ -52,6 +55,8 @@ public:
 private:
     std::function<void()> m_announce;
     std::vector<simcore::Diagnostics> m_rows;  // recorded since the last publish
+    std::vector<std::vector<simcore::Diagnostics>> m_laneRows;  // lanes 1.. since the last publish
+    double m_lastLaneRowTime = -1.0;      // the common time at the last lane rows, < 0: none [s]
     double m_lastRowTime = -1.0;          // lane 0's time at the last row, < 0: none yet [s]
     bool m_historyReset = true;           // a new history began since the last publish
     std::vector<FrameBatch::Branch> m_branches;  // since the last publish

@@ -24,6 +24,8 @@ Lanes::List Lanes::build(const simcore::ParameterSet& params, const QStringList&
             sim->setIntegratorOptions([&] {
                 simcore::IntegratorOptions o = sim->integratorOptions();
                 o.stepDoubling = m_stepDoubling;
+                o.atol = m_atol;
+                o.rtol = m_rtol;
                 return o;
             }());
             lanes.push_back(std::move(sim));
@@ -90,6 +92,17 @@ void Lanes::setParameter(simcore::Param id, double value) {
     for (auto& sim : m_lanes) sim->setParameter(id, value);
 }
 
+void Lanes::setTolerances(double atol, double rtol) {
+    m_atol = atol;
+    m_rtol = rtol;
+    for (auto& sim : m_lanes) {
+        simcore::IntegratorOptions o = sim->integratorOptions();
+        o.atol = m_atol;
+        o.rtol = m_rtol;
+        sim->setIntegratorOptions(o);
+    }
+}
+
 void Lanes::setStepDoubling(bool on) {
     m_stepDoubling = on;
     for (auto& sim : m_lanes) {
@@ -126,14 +139,11 @@ void Lanes::applyKick() {
     }
 }
 
-void Lanes::updateDtLimit() {
-    const double rate = m_lanes.front()->estimatedFastestRate();
-    m_dtLimit = rate > 0.0 ? simcore::kExplicitStabilityLimit / rate : 0.0;
-}
-
 std::vector<LaneFrame> Lanes::laneFrames(bool forces, int selected) const {
     std::vector<LaneFrame> frames;
-    const auto x0 = m_lanes.front()->positions();
+    std::size_t reference = 0;
+    while (reference + 1 < m_lanes.size() && m_lanes[reference]->failed()) ++reference;
+    const auto x0 = m_lanes[reference]->positions();
     for (const auto& sim : m_lanes) {
         LaneFrame lane;
         lane.integrator = integratorName(*sim);
@@ -152,6 +162,7 @@ std::vector<LaneFrame> Lanes::laneFrames(bool forces, int selected) const {
         // Nine uncounted force evaluations (ForceModel::breakdown), only while one is selected.
         if (selected >= 0 && selected < sim->particleCount()) lane.breakdown = sim->forceBreakdown(selected);
         lane.divergence = std::sqrt((x - x0).colwise().squaredNorm().mean());
+        lane.divergenceReference = int(reference);
         frames.push_back(std::move(lane));
     }
     return frames;

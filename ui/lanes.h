@@ -4,8 +4,7 @@
 // In normal mode there is one lane; side by side there are up to three, every one built from
 // the same parameters, given the same start kick, the same edits and the same mouse input, and
 // advanced to the same simulated time (the common time) after every step of the common DT.
-// Lanes owns them and what holds for all of them together: the common time, the estimated
-// explicit stability limit on DT, the start kick, step doubling and the force-evaluation
+// Lanes owns them and what holds for all of them together: the common time, the start kick, step doubling and the force-evaluation
 // threads. SimWorker calls it, on the worker thread only, between two steps; what a lane
 // looks like in a frame comes from laneFrames().
 
@@ -69,8 +68,17 @@ public:
     void setParameter(simcore::Param id, double value);
     bool stepDoubling() const { return m_stepDoubling; }
     void setStepDoubling(bool on);
-    // Step doubling as lane 0 has it (after a checkpoint was restored).
-    void readStepDoubling() { m_stepDoubling = m_lanes.front()->integratorOptions().stepDoubling; }
+    // The adaptive methods' tolerances (IntegratorOptions::atol, rtol) of every lane.
+    double atol() const { return m_atol; }
+    double rtol() const { return m_rtol; }
+    void setTolerances(double atol, double rtol);
+    // Step doubling and the tolerances as lane 0 has them (after a checkpoint was restored).
+    void readOptions() {
+        const simcore::IntegratorOptions& o = m_lanes.front()->integratorOptions();
+        m_stepDoubling = o.stepDoubling;
+        m_atol = o.atol;
+        m_rtol = o.rtol;
+    }
     void grab(int particle, const Eigen::Vector3d& anchor);
     void moveAnchor(const Eigen::Vector3d& anchor);
     void release();
@@ -83,20 +91,16 @@ public:
     // Gives every lane the start kick (replacing its velocities), if there is one.
     void applyKick();
 
-    // Estimated explicit stability limit on DT from lane 0's fastest rate (0: none) [s].
-    double dtLimit() const { return m_dtLimit; }
-    void updateDtLimit();
-
     // Every lane as a frame shows it: positions, diagnostics, failure, pointer, divergence from
-    // lane 0, and (when wanted) the force vectors and the selected particle's breakdown.
+    // lane 0 (from the first live lane once lane 0 has failed), and (when wanted) the force vectors and the selected particle's breakdown.
     std::vector<LaneFrame> laneFrames(bool forces, int selected) const;
 
 private:
     List m_lanes;
     double m_commonTime = 0.0;            // the time every live lane has reached [s]
-    double m_dtLimit = 0.0;               // estimated explicit stability limit on DT [s]
     double m_kickInner = 0.0, m_kickOuter = 0.0;  // start kick along x [m/s]
     bool m_stepDoubling = false;
+    double m_atol = simcore::IntegratorOptions{}.atol, m_rtol = simcore::IntegratorOptions{}.rtol;
     int m_threads = std::max(1, simcore::availableThreads() - 1);  // force-evaluation threads
 };
 

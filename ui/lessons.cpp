@@ -56,6 +56,9 @@ QList<Lesson> lessons() {
         make(QStringLiteral("stiff-springs"), QObject::tr("7. Stiff springs: explicit against implicit"),
              QStringLiteral("ring2d"), {{simcore::Param::Ks, 1e6}, {simcore::Param::Dt, 0.01}},
              {QStringLiteral("implicit-euler"), QStringLiteral("rk4")}, {map}),
+        make(QStringLiteral("why-symplectic"), QObject::tr("8. Why symplectic? Energy over ten thousand periods"),
+             QStringLiteral("spring1d"), {{simcore::Param::Kd, 0.0}, {simcore::Param::Dt, 0.01}},
+             {QStringLiteral("verlet"), QStringLiteral("yoshida4"), QStringLiteral("rk4")}, {bars}),
     };
 }
 

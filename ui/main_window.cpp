@@ -1,5 +1,7 @@
 #include "ui/main_window.h"
 
+#include <algorithm>
+
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
@@ -12,15 +14,18 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+#include <QToolBar>
 #include <QVBoxLayout>
 
 #include "simcore/scenes.h"
 #include "ui/compare_dialog.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/export.h"
+#include "ui/failure_banner.h"
 #include "ui/help_dialog.h"
 #include "ui/lessons.h"
 #include "ui/lessons_dialog.h"
@@ -34,6 +39,7 @@
 #include "ui/stability_map_dock.h"
 #include "ui/studies_dialog.h"
 #include "ui/timeline_dock.h"
+#include "ui/ui_scale.h"
 #include "ui/viewport.h"
 
 namespace elui {
@@ -48,6 +54,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     createDocks();
     connectController();
     createTimeline();
+    createClassControls();
     readSettings();
 }
 
@@ -97,6 +104,23 @@ void MainWindow::createActions() {
     connect(m_resetView, &QAction::triggered, this, [this] {
         for (Viewport* v : m_viewports) v->resetView();
     });
+
+    // Presentation mode: the whole UI's text larger for a projector (ui_scale.h).
+    m_presentation = new QAction(tr("&Presentation mode"), this);
+    m_presentation->setCheckable(true);
+    m_presentation->setShortcut(Qt::Key_F5);
+    m_presentation->setToolTip(tr("Everything %1x larger, with large Run, Step, Back and Reset buttons: for a projector")
+                                   .arg(kPresentationScale));
+    connect(m_presentation, &QAction::triggered, this,
+            [this](bool on) { setUiScale(on ? std::max(kPresentationScale, uiScale()) : 1.0); });
+    m_zoomIn = new QAction(tr("&Larger text"), this);
+    // Ctrl+= (no Shift needed) and Ctrl++; not also QKeySequence::ZoomIn, which is Ctrl++ here:
+    // a sequence given twice is ambiguous and triggers nothing.
+    m_zoomIn->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Equal), QKeySequence(Qt::CTRL | Qt::Key_Plus)});
+    connect(m_zoomIn, &QAction::triggered, this, [this] { setUiScale(nextUiScale(uiScale(), +1)); });
+    m_zoomOut = new QAction(tr("S&maller text"), this);
+    m_zoomOut->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Minus));
+    connect(m_zoomOut, &QAction::triggered, this, [this] { setUiScale(nextUiScale(uiScale(), -1)); });
 
     struct Toggle {
         QString text;
@@ -170,6 +194,10 @@ void MainWindow::createMenus() {
     for (QAction* a : m_displayToggles) m_viewMenu->addAction(a);
     m_viewMenu->addAction(m_resetView);
     m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_presentation);
+    m_viewMenu->addAction(m_zoomIn);
+    m_viewMenu->addAction(m_zoomOut);
+    m_viewMenu->addSeparator();
 
     QMenu* compare = menuBar()->addMenu(tr("&Compare"));
     compare->addAction(m_sideBySide);
@@ -201,6 +229,11 @@ void MainWindow::createMenus() {
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
+    m_studiesMenu->addAction(tr("&Long-time energy..."), this, [this] {
+        auto* d = new ConservationDialog(m_controller->parameters(), this);
+        d->setAttribute(Qt::WA_DeleteOnClose);
+        d->show();
+    });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_help);
@@ -214,41 +247,34 @@ void MainWindow::createCentral() {
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
 
-    m_banner = new QFrame(central);
-    m_banner->setObjectName(QStringLiteral("failureBanner"));
-    m_banner->setStyleSheet(QStringLiteral("#failureBanner { background: #fbe3e1; border-bottom: 2px solid #c0392b; }"));
-    auto* bannerLayout = new QHBoxLayout(m_banner);
-    m_bannerText = new QLabel(m_banner);
-    m_bannerText->setWordWrap(true);
-    m_bannerText->setTextFormat(Qt::RichText);
-    bannerLayout->addWidget(m_bannerText, 1);
-    auto* smaller = new QPushButton(tr("Halve DT and reset"), m_banner);
-    connect(smaller, &QPushButton::clicked, this, [this] {
-        m_controller->setParameter(simcore::Param::Dt, m_controller->parameters().get(simcore::Param::Dt) * 0.5);
+    m_banner = new FailureBanner(central);
+    connect(m_banner, &FailureBanner::setDtAndReset, this, [this](double dt) {
+        m_controller->setParameter(simcore::Param::Dt, dt);
         m_controller->reset();
     });
-    auto* implicit = new QPushButton(tr("Use implicit-euler and reset"), m_banner);
-    connect(implicit, &QPushButton::clicked, this, [this] {
+    connect(m_banner, &FailureBanner::useImplicitAndReset, this, [this] {
         m_controller->setIntegrator(QStringLiteral("implicit-euler"));
         m_controller->reset();
     });
-    auto* reset = new QPushButton(tr("Reset"), m_banner);
-    connect(reset, &QPushButton::clicked, this, [this] { m_controller->reset(); });
-    bannerLayout->addWidget(smaller);
-    bannerLayout->addWidget(implicit);
-    bannerLayout->addWidget(reset);
-    m_banner->hide();
+    connect(m_banner, &FailureBanner::resetRequested, this, [this] { m_controller->reset(); });
     layout->addWidget(m_banner);
 
     m_stabilityBanner = new QFrame(central);
     m_stabilityBanner->setObjectName(QStringLiteral("stabilityBanner"));
     m_stabilityBanner->setStyleSheet(
         QStringLiteral("#stabilityBanner { background: #fdf0d5; border-bottom: 2px solid #d68910; }"));
-    auto* stabilityLayout = new QHBoxLayout(m_stabilityBanner);
+    // The text in lines across the view, the buttons in a row under it (FailureBanner's layout).
+    auto* stabilityColumn = new QVBoxLayout(m_stabilityBanner);
+    stabilityColumn->setContentsMargins(10, 6, 10, 6);
+    stabilityColumn->setSpacing(4);
     m_stabilityText = new QLabel(m_stabilityBanner);
     m_stabilityText->setWordWrap(true);
     m_stabilityText->setTextFormat(Qt::RichText);
-    stabilityLayout->addWidget(m_stabilityText, 1);
+    m_stabilityText->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Minimum);
+    stabilityColumn->addWidget(m_stabilityText);
+    auto* stabilityLayout = new QHBoxLayout;
+    stabilityLayout->addStretch(1);
+    stabilityColumn->addLayout(stabilityLayout);
     m_useSuggestedDt = new QPushButton(m_stabilityBanner);
     m_useSuggestedDt->setObjectName(QStringLiteral("useSuggestedDt"));
     connect(m_useSuggestedDt, &QPushButton::clicked, this, [this] {
@@ -309,6 +335,12 @@ void MainWindow::rebuildViewports(int count) {
         connect(m_controller, &SimulationController::grabbed, v, &Viewport::onGrabbed);
         m_viewports.push_back(v);
     }
+    // Three views need room: the docks beside the plots may have to share the plots' place
+    // (now for the minimum width; once laid out, for the views' share).
+    if (count > 1) {
+        keepMinimumWidth();
+        QTimer::singleShot(0, this, &MainWindow::keepMinimumWidth);
+    }
     // One camera for all: orbiting one view orbits the others.
     for (Viewport* v : m_viewports)
         connect(v, &Viewport::cameraChanged, this, [this, v](const Camera& c) {
@@ -349,6 +381,33 @@ void MainWindow::createDocks() {
     resizeDocks({m_runDock, m_plotDock}, {290, 420}, Qt::Horizontal);
 }
 
+// The widest minimum the window may have: a 1280 x 800 projector shows all of it.
+constexpr int kMaxMinimumWidth = 1280;
+
+void MainWindow::keepMinimumWidth() {
+    // A projector's 1280 px: while the docks beside each other (three views, the Run dock, the
+    // plots and the bars) would hold the window wider, the docks beside the plots become tabs
+    // of the Plots dock, one at a time.
+    // Also while the views, laid out, have less than 30 % of the window: a view is what the
+    // class looks at.
+    auto crowded = [this] {
+        if (minimumSizeHint().width() > kMaxMinimumWidth) return true;
+        return isVisible() && centralWidget() && centralWidget()->width() > 0 && centralWidget()->width() < 0.3 * width();
+    };
+    for (QDockWidget* d : {static_cast<QDockWidget*>(m_stabilityMapDock), static_cast<QDockWidget*>(m_pvDock),
+                           static_cast<QDockWidget*>(m_energyBarsDock)}) {
+        if (!crowded()) break;
+        if (d->isHidden() || d->isFloating() || tabifiedDockWidgets(m_plotDock).contains(d)) continue;
+        tabifyDockWidget(m_plotDock, d);
+        d->raise();
+        // The tabs take the plots' width, not the width the docks had side by side.
+        resizeDocks({m_plotDock}, {std::max(320, width() / 4)}, Qt::Horizontal);
+    }
+    // A window already grown past the screen comes back within it.
+    if (const QScreen* s = screen(); s && !isMaximized() && !isFullScreen() && !s->availableGeometry().contains(geometry()))
+        setGeometry(fitWithin(geometry(), s->availableGeometry()));
+}
+
 QStringList MainWindow::dockNames() {
     return {QStringLiteral("energy-bars"), QStringLiteral("pv"), QStringLiteral("stability-map"), QStringLiteral("timeline")};
 }
@@ -371,14 +430,24 @@ bool MainWindow::openDock(const QString& name) {
     if (!dock) return false;
     dock->show();
     dock->raise();
+    keepMinimumWidth();  // before the window grows for it
     // The right column: plots, then bars and P–V sharing what is left beside the view.
     // Sized once the window has laid the dock out (on the next event-loop pass).
     QTimer::singleShot(0, this, [this, dock] {
+        // A projector's 1280 px: when the docks beside each other would need more than that
+        // (three views, the Run dock, the plots and the bars), the new dock shares the plots'
+        // place as a tab instead of widening the window.
+        keepMinimumWidth();
+        if (tabifiedDockWidgets(m_plotDock).contains(dock)) {
+            dock->raise();
+            return;
+        }
         resizeDocks({m_plotDock, dock}, {380, 350}, Qt::Horizontal);
         if (!m_energyBarsDock->isHidden() && !m_pvDock->isHidden())
             resizeDocks({m_energyBarsDock, m_pvDock}, {360, 500}, Qt::Vertical);
         if (!m_energyBarsDock->isHidden() && !m_stabilityMapDock->isHidden())
             resizeDocks({m_energyBarsDock, m_stabilityMapDock}, {300, 560}, Qt::Vertical);
+        QTimer::singleShot(0, this, &MainWindow::keepMinimumWidth);  // laid out: the views' share
     });
     return true;
 }
@@ -398,6 +467,9 @@ void MainWindow::connectController() {
     connect(c, &SimulationController::rowsAppended, this, [this](int first, int count) {
         m_plotDock->appendRows(m_controller->history(), first, count);
         m_pvDock->appendRows(m_controller->history(), first, count);
+    });
+    connect(c, &SimulationController::viewRowsAppended, this, [this](int view, int first, int count) {
+        m_plotDock->appendViewRows(view, m_controller->viewHistory()[std::size_t(view - 1)], first, count);
     });
     connect(c, &SimulationController::parameterRejected, this,
             [this](const QString&, const QString& message) { status(message); });
@@ -432,15 +504,37 @@ void MainWindow::connectController() {
     connect(m_runDock, &RunDock::resetRequested, c, &SimulationController::reset);
     connect(m_runDock, &RunDock::speedChosen, c, &SimulationController::setSpeed);
     connect(m_runDock, &RunDock::stepDoublingToggled, c, &SimulationController::setStepDoubling);
+    connect(m_runDock, &RunDock::tolerancesEdited, c, &SimulationController::setTolerances);
     connect(m_runDock, &RunDock::message, this, &MainWindow::status);
 }
 
+QRect MainWindow::fitWithin(const QRect& wanted, const QRect& available) {
+    const QSize size = wanted.size().boundedTo(available.size());
+    const int x = std::clamp(wanted.x(), available.left(), available.left() + available.width() - size.width());
+    const int y = std::clamp(wanted.y(), available.top(), available.top() + available.height() - size.height());
+    return {QPoint(x, y), size};
+}
+
 void MainWindow::readSettings() {
-    resize(1500, 900);
+    // 1500 x 900 where the screen has room, centred; never larger than the screen's available
+    // area (a 1280 x 800 projector gets a window of its size, not one cut off at the edges).
+    const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
+    const QRect available = screen ? screen->availableGeometry() : QRect(0, 0, 1500, 900);
+    QRect wanted(QPoint(0, 0), QSize(1500, 900));
+    wanted.moveCenter(available.center());
+    setGeometry(fitWithin(wanted, available));
     if (!m_useSettings) return;
     QSettings settings;
-    if (settings.contains(QStringLiteral("geometry"))) restoreGeometry(settings.value("geometry").toByteArray());
+    if (settings.contains(QStringLiteral("geometry"))) {
+        restoreGeometry(settings.value("geometry").toByteArray());
+        // Saved on another (larger) screen: brought back within the one the window is on now.
+        const QScreen* now = QGuiApplication::screenAt(geometry().center());
+        if (!now) now = screen;
+        if (now && !isMaximized() && !isFullScreen()) setGeometry(fitWithin(geometry(), now->availableGeometry()));
+    }
     restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+    const double scale = settings.value(QStringLiteral("uiScale"), 1.0).toDouble();
+    if (scale > 1.0) setUiScale(scale);
 }
 
 void MainWindow::writeSettings() {
@@ -448,6 +542,35 @@ void MainWindow::writeSettings() {
     QSettings settings;
     settings.setValue(QStringLiteral("geometry"), saveGeometry());
     settings.setValue(QStringLiteral("windowState"), saveState());
+    settings.setValue(QStringLiteral("uiScale"), uiScale());
+}
+
+void MainWindow::createClassControls() {
+    // Large Run/Pause, Step, Back and Reset across the top, shown in presentation mode: the
+    // buttons a teacher presses in front of the class, readable and easy to hit.
+    m_classControls = new QToolBar(tr("Class controls"), this);
+    m_classControls->setObjectName(QStringLiteral("classControls"));
+    m_classControls->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    m_classControls->setMovable(false);
+    for (QAction* a : {m_runPause, m_step, m_stepBack, m_reset}) m_classControls->addAction(a);
+    addToolBar(Qt::TopToolBarArea, m_classControls);
+    m_classControls->hide();
+    m_classControls->toggleViewAction()->setVisible(false);  // it follows presentation mode
+}
+
+void MainWindow::setUiScale(double scale) {
+    elui::setUiScale(scale);
+    const double now = uiScale();
+    const bool presenting = now > 1.0;
+    m_presentation->setChecked(presenting);
+    // The class controls half as large again as the rest, bold.
+    QFont big = baseUiFont();
+    big.setPointSizeF(big.pointSizeF() * now * 1.5);
+    big.setBold(true);
+    m_classControls->setFont(big);
+    m_classControls->setVisible(presenting);
+    status(presenting ? tr("Presentation mode: text %1x (Ctrl+= larger, Ctrl+- smaller, F5 off)").arg(now)
+                      : tr("Normal text size"));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
@@ -536,8 +659,11 @@ void MainWindow::onFrame(const FramePtr& frame) {
     }
     m_runDock->showFrame(frame);
     m_plotDock->setLive(frame->running);
+    m_plotDock->setViews(*frame);
     m_energyBarsDock->showFrame(*frame);
-    m_stabilityMapDock->setState(frame->parameters, frame->lanes.front().integrator);
+    QStringList integrators;
+    for (const LaneFrame& lane : frame->lanes) integrators << lane.integrator;
+    m_stabilityMapDock->setState(frame->parameters, integrators);
     if (!m_paramsShown || !(m_shownParams == frame->parameters)) {
         m_shownParams = frame->parameters;
         m_paramsShown = true;
@@ -547,37 +673,10 @@ void MainWindow::onFrame(const FramePtr& frame) {
     }
     updateTitle(*frame);
     m_runPause->setText(frame->running ? tr("&Pause") : tr("&Run"));
-    showFailure(frame);
+    m_banner->showFrame(*frame);
 }
 
-void MainWindow::showFailure(const FramePtr& frame) {
-    const LaneFrame& lane = frame->lanes.front();
-    const bool failed = frame->lanes.size() == 1 && lane.failure.has_value();
-    if (failed == m_failureShown) return;
-    m_failureShown = failed;
-    if (!failed) {
-        m_banner->hide();
-        return;
-    }
-    const simcore::Failure& f = *lane.failure;
-    const double dt = frame->parameters.get(simcore::Param::Dt);
-    QString advice;
-    if (frame->explicitDtLimit > 0 && dt > 0.5 * frame->explicitDtLimit)
-        advice = tr("DT = %1 s is too large for this body with %2: explicit integrators need roughly DT below "
-                    "%3 s here. Try a smaller DT, or implicit-euler (stable at any DT).")
-                     .arg(dt).arg(lane.integrator).arg(frame->explicitDtLimit, 0, 'g', 2);
-    else
-        advice = tr("Try a smaller DT, a more stable integrator (rk4, or implicit-euler), softer springs or "
-                    "less pressure, then Reset.");
-    m_bannerText->setText(tr("<b>The simulation blew up</b> at t = %1 s (step %2): %3.<br>"
-                             "The run is paused and shows the last good state. %4")
-                              .arg(f.time, 0, 'f', 3)
-                              .arg(f.step)
-                              .arg(QString::fromStdString(f.reason).toHtmlEscaped(), advice.toHtmlEscaped()));
-    m_banner->show();
-}
-
-QString MainWindow::failureText() const { return m_banner->isVisible() ? m_bannerText->text() : QString(); }
+QString MainWindow::failureText() const { return m_banner->text(); }
 
 QString MainWindow::stabilityText() const {
     return m_stabilityBanner->isHidden() ? QString() : m_stabilityText->text();
@@ -809,9 +908,8 @@ void MainWindow::showHelp() {
 }
 
 void MainWindow::chooseSideBySide() {
-    QStringList current = m_controller->integrators();
-    if (current.size() < 2) current = {current.value(0, QStringLiteral("euler")), QStringLiteral("midpoint"), QStringLiteral("rk4")};
-    CompareDialog dialog(current, m_controller->parameters().get(simcore::Param::Dt), this);
+    CompareDialog dialog(CompareDialog::proposal(m_controller->integrators()),
+                         m_controller->parameters().get(simcore::Param::Dt), this);
     if (dialog.exec() != QDialog::Accepted) return;
     startScene(m_controller->parameters(), dialog.integrators());
 }
@@ -842,7 +940,7 @@ void MainWindow::createTimeline() {
         return a;
     };
     m_simulationMenu->addSeparator();
-    travel(tr("Step &back"), QKeySequence(Qt::SHIFT | Qt::Key_S), [c] { c->scrubBy(-1); });
+    m_stepBack = travel(tr("Step &back"), QKeySequence(Qt::SHIFT | Qt::Key_S), [c] { c->scrubBy(-1); });
     travel(tr("Timeline s&tart"), QKeySequence(Qt::Key_Home), [c] { c->scrubToStart(); });
     travel(tr("Timeline &newest"), QKeySequence(Qt::Key_End), [c] { c->scrubToEnd(); });
     m_simulationMenu->addAction(tr("&Clear abandoned future"), c, &SimulationController::clearAbandoned);
@@ -860,6 +958,10 @@ void MainWindow::createTimeline() {
     });
     connect(c, &SimulationController::historyBranched, this, [this] {
         m_plotDock->setHistory(m_controller->history());
+        for (std::size_t v = 0; v < m_controller->viewHistory().size(); ++v) {
+            const auto& rows = m_controller->viewHistory()[v];
+            m_plotDock->appendViewRows(int(v + 1), rows, 0, int(rows.size()));
+        }
         m_pvDock->clear();
         m_pvDock->appendRows(m_controller->history(), 0, int(m_controller->history().size()));
     });

@@ -19,6 +19,7 @@ class QLabel;
 class QPushButton;
 class QFrame;
 class QMenu;
+class QToolBar;
 
 namespace elui {
 
@@ -31,6 +32,7 @@ class PlotDock;
 class EnergyBarsDock;
 class PvDock;
 class StabilityMapDock;
+class FailureBanner;
 class TimelineDock;
 struct Preset;
 struct Lesson;
@@ -63,6 +65,7 @@ public:
     const ViewOptions& viewOptions() const { return m_options; }
     void setViewOptions(const ViewOptions& options);
     QString failureText() const;
+    FailureBanner* failureBanner() const { return m_banner; }
     // The pre-run stability warning after a rebuild (empty when none is shown), and its
     // one-click remedy: the button that sets the suggested DT.
     QString stabilityText() const;
@@ -71,6 +74,14 @@ public:
     QString currentFile() const { return m_currentFile; }
     const RecentFiles& recentFiles() const { return m_recent; }
     QMenu* recentMenu() const { return m_recentMenu; }
+    // Presentation mode (View menu, Ctrl+= / Ctrl+-): the whole UI's text at `scale` (1 = normal,
+    // 1.25 .. 2; ui_scale.h), and the large Run/Pause, Step, Back, Reset bar shown above 1.
+    void setUiScale(double scale);
+    QToolBar* classControls() const { return m_classControls; }
+    QAction* presentationAction() const { return m_presentation; }
+    // `wanted` moved and shrunk into `available` (a screen's available geometry): the window
+    // opens, and restores its saved geometry, within the screen it is on.
+    static QRect fitWithin(const QRect& wanted, const QRect& available);
 
 public slots:
     void startScene(const simcore::ParameterSet& params, const QStringList& integrators);
@@ -120,7 +131,6 @@ private:
     void onFrame(const FramePtr& frame);
     void rebuildViewports(int count);
     void rebuildFromSceneDock(const simcore::ParameterSet& shape);
-    void showFailure(const FramePtr& frame);
     void status(const QString& text);
     // A warning in a window-modal message box that does not block (the run goes on), and in
     // the status bar.
@@ -135,8 +145,7 @@ private:
     ViewOptions m_options;
 
     // Central area: failure banner above a row of one to three viewports.
-    QFrame* m_banner = nullptr;
-    QLabel* m_bannerText = nullptr;
+    FailureBanner* m_banner = nullptr;
     // Stability banner: a rebuild made DT unstable for the chosen explicit method.
     QFrame* m_stabilityBanner = nullptr;
     QLabel* m_stabilityText = nullptr;
@@ -158,7 +167,6 @@ private:
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;
-    bool m_failureShown = false;
 
     // Scene file: the path, and the parameters and integrator it holds (what "modified" is
     // measured against). An open waits in m_pending until its scene runs.
@@ -188,6 +196,15 @@ private:
     QAction* m_step = nullptr;
     QAction* m_reset = nullptr;
     QAction* m_resetView = nullptr;
+    QAction* m_stepBack = nullptr;
+    QAction* m_presentation = nullptr;
+    QAction* m_zoomIn = nullptr;
+    QAction* m_zoomOut = nullptr;
+    QToolBar* m_classControls = nullptr;
+    void createClassControls();
+    // Tabs the docks beside the plots into the Plots dock while the window's minimum width
+    // would exceed a projector's 1280 px.
+    void keepMinimumWidth();
     QAction* m_sideBySide = nullptr;
     QAction* m_single = nullptr;
     QAction* m_help = nullptr;

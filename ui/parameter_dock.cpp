@@ -9,6 +9,8 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
+#include "ui/field_keys.h"
+
 namespace elui {
 
 QString toQString(std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); }
@@ -27,6 +29,17 @@ QString groupName(simcore::ParamGroup group) {
         case G::Start: return QObject::tr("Start");
     }
     return {};
+}
+
+QString fieldLabel(const simcore::ParamSpec& spec) {
+    // The gas keys hold nRT (P = nRT / V), an energy in J, not a pressure: named for what they
+    // are beside the plots of pressure in N/m or Pa. The key (CLI, files, Python) stays.
+    switch (spec.id) {
+        case simcore::Param::Pressure: return QObject::tr("gas nRT");
+        case simcore::Param::PressureInner: return QObject::tr("gas nRT inner");
+        case simcore::Param::PressureOuter: return QObject::tr("gas nRT outer");
+        default: return toQString(spec.key);
+    }
 }
 
 static QString formatValue(double v) { return QString::number(v, 'g', 10); }
@@ -91,11 +104,22 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
         auto* unitLabel = new QLabel(unit, row);
         unitLabel->setMinimumWidth(44);
         h->addWidget(unitLabel);
-        auto* label = new QLabel(key, this);
+        auto* label = new QLabel(fieldLabel(*spec), this);
+        label->setObjectName(QStringLiteral("label_") + key);
+        if (label->text() != key) tip += QStringLiteral("<br>key: %1").arg(key);
+        edit->setToolTip(tip);
+        edit->setProperty("tip", tip);
         label->setToolTip(tip);
         form->addRow(label, row);
         m_fields[key] = edit;
         connect(edit, &QLineEdit::editingFinished, this, [this, key] { commit(key); });
+        // Enter commits and leaves the field, Escape puts back the value in use (field_keys.h).
+        installFieldKeys(
+            edit, [this, key] { return commit(key); },
+            [this, key, edit] {
+                if (m_shown.count(key)) edit->setText(formatValue(m_shown[key]));
+                markField(edit, {}, edit->property("tip").toString());
+            });
     }
     outer->addStretch(1);
     setValues(simcore::ParameterSet(kind));
@@ -147,9 +171,11 @@ void ParameterForm::setValues(const simcore::ParameterSet& params) {
     for (auto& [key, edit] : m_fields) {
         const double v = params.get(simcore::findParam(key.toStdString())->id);
         m_shown[key] = v;
-        if (!edit->hasFocus() || edit->text().isEmpty()) edit->setText(formatValue(v));
-        edit->setStyleSheet(QString());
-        edit->setToolTip(edit->property("tip").toString());
+        // A field being typed in keeps its text, and its red mark if the text was refused: the
+        // mark says the text is not the value in use.
+        if (edit->hasFocus() && !edit->text().isEmpty()) continue;
+        edit->setText(formatValue(v));
+        markField(edit, {}, edit->property("tip").toString());
     }
     for (auto& [key, box] : m_choices) {
         const double v = params.get(simcore::findParam(key.toStdString())->id);
@@ -159,24 +185,22 @@ void ParameterForm::setValues(const simcore::ParameterSet& params) {
     m_updating = false;
 }
 
-void ParameterForm::commit(const QString& key) {
-    if (m_updating) return;
+bool ParameterForm::commit(const QString& key) {
+    if (m_updating) return false;
     QLineEdit* edit = field(key);
     const simcore::ParamSpec* spec = simcore::findParam(key.toStdString());
-    if (!edit || !spec) return;
+    if (!edit || !spec) return false;
     double v = 0.0;
     const QString error = validate(*spec, edit->text(), &v);
+    markField(edit, error, edit->property("tip").toString());
     if (!error.isEmpty()) {
-        edit->setStyleSheet(QStringLiteral("background: #ffd6d6"));
-        edit->setToolTip(error);
         emit rejected(key, error);
-        return;
+        return false;
     }
-    edit->setStyleSheet(QString());
-    edit->setToolTip(edit->property("tip").toString());
-    if (m_shown.count(key) && m_shown[key] == v) return;  // nothing changed
+    if (m_shown.count(key) && m_shown[key] == v) return true;  // nothing changed
     m_shown[key] = v;
     emit edited(spec->id, v);
+    return true;
 }
 
 ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), parent) {

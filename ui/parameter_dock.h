@@ -43,7 +43,7 @@ signals:
     void rejected(const QString& key, const QString& message);
 
 private:
-    void commit(const QString& key);
+    bool commit(const QString& key);  // false: refused (the field is marked red)
 
     simcore::SceneKind m_kind;
     std::map<QString, QLineEdit*> m_fields;
@@ -73,6 +73,9 @@ private:
 };
 
 QString groupName(simcore::ParamGroup group);
+// A field's label: its key, except the gas keys (pressure, pressure_inner, pressure_outer),
+// which hold nRT in J and are shown as "gas nRT", "gas nRT inner", "gas nRT outer".
+QString fieldLabel(const simcore::ParamSpec& spec);
 QString toQString(std::string_view text);
 
 }  // namespace elui

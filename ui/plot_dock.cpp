@@ -7,12 +7,29 @@
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
 
 #include "qcustomplot.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
+
+namespace {
+
+// A view's line style: 1 solid, 2 dashed, 3 dotted.
+Qt::PenStyle viewStyle(int view) {
+    static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine};
+    return styles[view % 3];
+}
+// A view's colour in the drift plot (one curve per view).
+QColor viewColor(int view) {
+    static const QColor colors[] = {QColor(30, 30, 30), QColor(30, 90, 200), QColor(200, 60, 30)};
+    return colors[view % 3];
+}
+
+}  // namespace
 
 void legendUnderAxes(QCustomPlot* plot, const QFont& base) {
     plot->legend->setVisible(true);
@@ -24,9 +41,27 @@ void legendUnderAxes(QCustomPlot* plot, const QFont& base) {
     plot->plotLayout()->addElement(plot->plotLayout()->rowCount(), 0, plot->legend);
     plot->plotLayout()->setRowStretchFactor(plot->plotLayout()->rowCount() - 1, 0.001);
     plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
-    // At most five entries a row: the energy legend's eight in one row would hold the Plots
-    // dock at ~650 px and leave the view no room when the energy docks open beside it.
+    // At most five entries a row, fewer when the plot is narrow: the energy legend's eight in
+    // one row would hold the Plots dock at ~650 px, five at ~480 px, and leave the view no room
+    // on a 1280 px projector. The plot's own minimum width is set, so the legend's wish does
+    // not widen the dock; before each replot the wrap is the most entries that fit.
     plot->legend->setWrap(5);
+    plot->setMinimumWidth(220);
+    QObject::connect(plot, &QCustomPlot::beforeReplot, plot->legend, [plot] {
+        QCPLegend* legend = plot->legend;
+        const int room = plot->width() - 8;
+        const int current = legend->wrap();
+        int wrap = 5;
+        for (; wrap > 2; --wrap) {  // at least two a row: eight entries in four rows
+            legend->setWrap(wrap);
+            legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+            if (legend->minimumOuterSizeHint().width() <= room) break;
+        }
+        if (wrap != current) {
+            legend->setWrap(wrap);
+            legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+        }
+    });
     plot->legend->setBorderPen(Qt::NoPen);
     plot->legend->setMargins(QMargins(4, 0, 4, 0));
 }
@@ -47,23 +82,68 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_autoscale = new QCheckBox(tr("Autoscale"), host);
     m_autoscale->setChecked(true);
     m_autoscale->setToolTip(tr("Fit the axes to the data; off while you zoom (wheel) and pan (drag)"));
-    m_showBands = new QCheckBox(tr("Show error band"), host);
+    m_showBands = new QCheckBox(tr("Show per-step error band"), host);
     m_showBands->setObjectName(QStringLiteral("showErrorBand"));
     m_showBands->setToolTip(tr("A band around volume, pressure and total energy: the integrator's local error estimate "
-                               "of each step carried to them (|O(y + e) - O(y)|). rk45, CVODE and step doubling "
+                               "of each step carried to them (|O(y + e) - O(y)|): the error one step adds, not the "
+                               "error of the run so far, which can be far larger. rk45, CVODE and step doubling "
                                "have an estimate; other methods show no band."));
+    // What the band is, or why none is seen: its own line, wrapped (a narrow dock stays narrow).
     m_bandNote = new QLabel(host);
     m_bandNote->setObjectName(QStringLiteral("errorBandNote"));
     m_bandNote->setStyleSheet(QStringLiteral("QLabel { color: #806000; }"));
+    m_bandNote->setWordWrap(true);
+    m_bandNote->hide();
     bar->addWidget(new QLabel(tr("Show"), host));
     bar->addWidget(m_windowCombo);
     bar->addWidget(m_autoscale);
-    bar->addWidget(m_showBands);
-    bar->addWidget(m_bandNote);
     bar->addStretch(1);
     layout->addLayout(bar);
-    m_plotLayout = new QVBoxLayout;
-    layout->addLayout(m_plotLayout, 1);
+    // The band's switch on a line of its own: one long row would hold the dock (and with it
+    // the window) wider than a projector's 1280 px once the energy docks open beside it.
+    layout->addWidget(m_showBands);
+    layout->addWidget(m_bandNote);
+    // The plots scroll when the screen is too short for them (a projector in presentation
+    // mode): each keeps the height its axes and legend need instead of being squashed.
+    auto* scroll = new QScrollArea(host);
+    scroll->setObjectName(QStringLiteral("plotsScroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* plotHost = new QWidget(scroll);
+    m_plotLayout = new QVBoxLayout(plotHost);
+    m_plotLayout->setContentsMargins(0, 0, 0, 0);
+    scroll->setWidget(plotHost);
+    layout->addWidget(scroll, 1);
+    // Side by side: every view's energy drift on a log axis.
+    m_driftPlot = new QCustomPlot(host);
+    m_driftPlot->setObjectName(QStringLiteral("plot_drift"));
+    m_driftPlot->setMinimumHeight(plotMinimumHeight());
+    m_driftPlot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    m_driftPlot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
+    m_driftPlot->plotLayout()->insertRow(0);
+    m_driftPlot->plotLayout()->addElement(
+        0, 0, new QCPTextElement(m_driftPlot, tr("Energy drift per view"), QFont(font().family(), font().pointSize(), QFont::Bold)));
+    m_driftPlot->xAxis->setLabel(tr("t [s]"));
+    m_driftPlot->yAxis->setLabel(tr("|drift| [J]"));
+    m_driftPlot->yAxis->setScaleType(QCPAxis::stLogarithmic);
+    m_driftPlot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+    m_driftPlot->yAxis->setNumberFormat(QStringLiteral("eb"));
+    m_driftPlot->yAxis->setNumberPrecision(0);
+    legendUnderAxes(m_driftPlot, font());
+    m_driftMarks = m_driftPlot->addGraph();
+    m_driftMarks->setLineStyle(QCPGraph::lsNone);
+    m_driftMarks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QPen(QColor(210, 30, 30), 2.2), Qt::NoBrush, 11));
+    m_driftMarks->setName(tr("✕ a view failed"));
+    m_driftMarks->removeFromLegend();
+    m_viewOf.insert(m_driftMarks, -1);
+    connect(m_driftPlot, &QCustomPlot::mouseWheel, this, [this] { m_autoscale->setChecked(false); });
+    connect(m_driftPlot, &QCustomPlot::mousePress, this, [this] { m_autoscale->setChecked(false); });
+    m_driftPlot->hide();
+    m_plotLayout->addWidget(m_driftPlot, 1);
+    m_views.push_back({});
+    m_driftGraphs.push_back(m_driftPlot->addGraph());
+    m_driftGraphs[0]->setPen(QPen(viewColor(0), 1.6, viewStyle(0)));
     setWidget(host);
 
     m_replotTimer = new QTimer(this);
@@ -98,11 +178,18 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     for (QCustomPlot* p : m_plots) delete p;
     m_plots.clear();
     m_bands.clear();
+    m_viewGraphs.clear();
+    m_viewLegend.clear();
+    m_failMarks.clear();
+    // The plots' graphs went with them; the drift plot's stay.
+    m_viewOf.clear();
+    m_viewOf.insert(m_driftMarks, -1);
+    for (std::size_t v = 0; v < m_driftGraphs.size(); ++v) m_viewOf.insert(m_driftGraphs[v], int(v));
     m_specs = plotSpecs(kind);
     for (const PlotSpec& spec : m_specs) {
-        auto* plot = new QCustomPlot(widget());
+        auto* plot = new QCustomPlot(m_plotLayout->parentWidget());
         plot->setObjectName(QStringLiteral("plot_") + spec.id);
-        plot->setMinimumHeight(140);
+        plot->setMinimumHeight(plotMinimumHeight());
         plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
         // Live traces: fast polylines and cached labels keep a replot cheap on a busy machine.
         plot->setPlottingHints(QCP::phFastPolylines | QCP::phCacheLabels);
@@ -111,6 +198,9 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         plot->plotLayout()->addElement(0, 0, title);
         plot->xAxis->setLabel(tr("t [s]"));
         plot->yAxis->setLabel(spec.yLabel);
+        // A narrow dock or presentation mode: only as many numbers as fit apart (plot_ticks.h).
+        keepTickLabelsApart(plot->xAxis);
+        keepTickLabelsApart(plot->yAxis);
         legendUnderAxes(plot, font());
         for (const SeriesSpec& s : spec.series) {
             QCPGraph* g = plot->addGraph();
@@ -173,9 +263,39 @@ void PlotDock::setScene(simcore::SceneKind kind) {
         plot->setNotAntialiasedElements(m_live ? QCP::aePlottables : QCP::aeNone);
         m_plotLayout->addWidget(plot, 1);
         m_plots.push_back(plot);
+        // Where a view failed: a red cross at the end of its curves.
+        QCPGraph* marks = plot->addGraph();
+        marks->setLineStyle(QCPGraph::lsNone);
+        marks->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QPen(QColor(210, 30, 30), 2.2), Qt::NoBrush, 11));
+        marks->setName(tr("✕ a view failed"));
+        marks->removeFromLegend();
+        m_viewOf.insert(marks, -1);
+        m_failMarks.push_back(marks);
+        m_viewGraphs.emplace_back();
+        m_viewLegend.emplace_back();
     }
+    // The drift plot stays last, with the same share of the height as each plot.
+    m_plotLayout->removeWidget(m_driftPlot);
+    m_plotLayout->addWidget(m_driftPlot, 1);
+    // The views' graphs again for the new plots (the views stay until a frame says otherwise).
+    for (int v = 1; v < int(m_views.size()); ++v) addViewGraphs(v);
+    updateViewLegend();
     clear();
     updateCursor();
+}
+
+int PlotDock::plotMinimumHeight() const {
+    // Twelve lines of text: a title, tick labels, an axis label, up to four legend rows and
+    // room for the curves; grows with the font (presentation mode), the plots then scroll.
+    return std::max(140, 12 * QFontMetrics(font()).height());
+}
+
+void PlotDock::changeEvent(QEvent* event) {
+    QDockWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange) {
+        for (QCustomPlot* plot : m_plots) plot->setMinimumHeight(plotMinimumHeight());
+        m_driftPlot->setMinimumHeight(plotMinimumHeight());
+    }
 }
 
 QStringList PlotDock::plotIds() const {
@@ -231,12 +351,46 @@ double PlotDock::lastBandHalfWidth(const QString& plotId, int series) const {
     return 0.5 * ((b->upper->data()->constEnd() - 1)->value - (b->lower->data()->constEnd() - 1)->value);
 }
 
+QString PlotDock::bandNote() const { return m_bandNote->text(); }
 bool PlotDock::bandsShown() const { return m_showBands->isChecked(); }
 void PlotDock::setBandsShown(bool on) { m_showBands->setChecked(on); }
 
 void PlotDock::updateBandNote() {
-    const bool missing = m_showBands->isChecked() && !m_lastRowHasBand;
-    m_bandNote->setText(missing ? tr("(no error estimate: use rk45, CVODE or step doubling)") : QString());
+    QString note;
+    if (m_showBands->isChecked()) {
+        if (!m_lastRowHasBand)
+            note = tr("No band: this integrator gives no error estimate. Use rk45, CVODE, or tick \"Estimate error "
+                      "(step doubling)\" in the Run dock.");
+        else if (m_bandsThin)
+            note = tr("The band is there but thinner than a line: each step's error estimate is below half a pixel "
+                      "at this zoom (an adaptive method keeps it under its tolerance). Loosen rtol/atol in the Run "
+                      "dock, or use a fixed-step method at a larger DT with step doubling, to see it.");
+        else
+            note = tr("Band: the error each step adds (a per-step estimate), not the error of the run so far.");
+    }
+    if (note != m_bandNote->text()) m_bandNote->setText(note);
+    m_bandNote->setVisible(!note.isEmpty());
+}
+
+bool PlotDock::bandsThinnerThanALine() const {
+    // The widest band point in view, in pixels of its plot's value axis.
+    double widest = 0.0;
+    bool any = false;
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        const QCustomPlot* plot = m_plots[i];
+        if (plot->axisRect()->height() < 10) return false;  // not laid out yet: unknown
+        const double unitsPerPixel = plot->yAxis->range().size() / plot->axisRect()->height();
+        const QCPRange x = plot->xAxis->range();
+        for (const Band& b : m_bands[i]) {
+            auto up = b.upper->data()->findBegin(x.lower), lo = b.lower->data()->findBegin(x.lower);
+            for (; up != b.upper->data()->constEnd() && lo != b.lower->data()->constEnd() && up->key <= x.upper; ++up, ++lo) {
+                if (std::isnan(up->value) || std::isnan(lo->value)) continue;
+                any = true;
+                widest = std::max(widest, 0.5 * (up->value - lo->value) / unitsPerPixel);
+            }
+        }
+    }
+    return any && widest < 0.5;
 }
 
 void PlotDock::setWindow(double seconds) {
@@ -260,7 +414,11 @@ void PlotDock::clear() {
             b.upper->data()->clear();
             b.lower->data()->clear();
         }
+        for (const ViewGraph& g : m_viewGraphs[i]) g.graph->data()->clear();
+        m_failMarks[i]->data()->clear();
     }
+    for (QCPGraph* g : m_driftGraphs) g->data()->clear();
+    m_driftMarks->data()->clear();
     m_lastTime = 0.0;
     m_lastRowHasBand = false;
     updateBandNote();
@@ -375,8 +533,18 @@ void PlotDock::appendRows(const std::vector<simcore::Diagnostics>& history, int 
             b.lower->data()->add(lower, true);
         }
     }
+    {
+        QVector<QCPGraphData> drift;
+        drift.reserve(count);
+        for (int r = first; r < first + count; ++r) {
+            const simcore::Diagnostics& d = history[std::size_t(r)];
+            const double value = std::abs(d.energyDrift());
+            if (value > 0.0 && std::isfinite(value)) drift.append(QCPGraphData(d.time, value));
+        }
+        m_driftGraphs[0]->data()->add(drift, true);
+    }
     if (count > 0) {
-        m_lastTime = history[std::size_t(first + count - 1)].time;
+        m_lastTime = std::max(m_lastTime, history[std::size_t(first + count - 1)].time);
         m_lastRowHasBand = history[std::size_t(first + count - 1)].errors.valid;
         updateBandNote();
     }
@@ -393,7 +561,20 @@ void PlotDock::replotNow() {
     if (!m_dirty) return;
     m_dirty = false;
     const bool autoscale = m_autoscale->isChecked();
-    for (QCustomPlot* plot : m_plots) {
+    updateFailureMarks();
+    // Robust autoscale side by side: while any view runs, the failed ones are left out of the
+    // value range (their blow-up would flatten the others).
+    bool anyLive = false;
+    for (const ViewInfo& v : m_views) anyLive = anyLive || !v.failedAt;
+    auto counted = [&](const QCPGraph* g) {
+        const int view = m_viewOf.value(g, 0);
+        if (view < 0) return false;  // the failure marks sit on the curves' ends
+        return !(m_views.size() > 1 && anyLive && view < int(m_views.size()) && m_views[std::size_t(view)].failedAt);
+    };
+    std::vector<QCustomPlot*> plots = m_plots;
+    if (m_driftPlot->isVisible()) plots.push_back(m_driftPlot);
+    for (QCustomPlot* plot : plots) {
+        const bool log = plot == m_driftPlot;
         if (autoscale) {
             // The newest data, the abandoned future's end, and the cursor stay in view.
             const double end = std::max(m_lastTime, m_abandonedEnd);
@@ -405,13 +586,17 @@ void PlotDock::replotNow() {
             QCPRange y;
             for (int g = 0; g < plot->graphCount(); ++g) {
                 if (!plot->graph(g)->visible()) continue;  // a hidden error band
+                if (!log && !counted(plot->graph(g))) continue;
+                if (log && m_viewOf.value(plot->graph(g), 0) < 0) continue;
                 bool ok = false;
-                const QCPRange r = plot->graph(g)->getValueRange(ok, QCP::sdBoth, QCPRange(lo, hi));
+                const QCPRange r = plot->graph(g)->getValueRange(ok, log ? QCP::sdPositive : QCP::sdBoth, QCPRange(lo, hi));
                 if (!ok) continue;
                 y = found ? QCPRange(std::min(y.lower, r.lower), std::max(y.upper, r.upper)) : r;
                 found = true;
             }
-            if (found) {
+            if (found && log) {
+                plot->yAxis->setRange(y.lower / 2.0, y.upper * 2.0);
+            } else if (found) {
                 const double pad = std::max(1e-9, 0.06 * (y.upper - y.lower));
                 plot->yAxis->setRange(y.lower - pad, y.upper + pad);
             }
@@ -424,6 +609,236 @@ void PlotDock::replotNow() {
                 label->setPositionAlignment((right ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
         plot->replot(QCustomPlot::rpQueuedReplot);
     }
+    if (m_showBands->isChecked() && m_lastRowHasBand) {
+        const bool thin = bandsThinnerThanALine();
+        if (thin != m_bandsThin) {
+            m_bandsThin = thin;
+            updateBandNote();
+        }
+    }
+}
+
+// --- side by side ---
+
+bool PlotDock::compared(std::size_t plot, std::size_t series) const {
+    // The energy plot compares its total only (eight terms three times over would hide each other).
+    return m_specs[plot].id != QStringLiteral("energy") || m_specs[plot].series[series].name == tr("total");
+}
+
+QCPGraph* PlotDock::viewGraph(int plot, int view, int series) const {
+    if (plot < 0 || plot >= int(m_plots.size())) return nullptr;
+    if (view == 0) return series < int(m_specs[std::size_t(plot)].series.size()) ? m_plots[std::size_t(plot)]->graph(series) : nullptr;
+    for (const ViewGraph& g : m_viewGraphs[std::size_t(plot)])
+        if (g.view == view && g.series == series) return g.graph;
+    return nullptr;
+}
+
+void PlotDock::addViewGraphs(int view) {
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        const auto& series = m_specs[i].series;
+        for (std::size_t s = 0; s < series.size(); ++s) {
+            if (!compared(i, s)) continue;
+            QCPGraph* g = m_plots[i]->addGraph();
+            g->setPen(QPen(series[s].color, series[s].name == tr("total") ? 2.0 : 1.4, viewStyle(view)));
+            g->setName(QStringLiteral("%1, view %2").arg(series[s].name).arg(view + 1));
+            g->removeFromLegend();
+            m_viewOf.insert(g, view);
+            m_viewGraphs[i].push_back({view, int(s), g});
+        }
+    }
+    while (int(m_driftGraphs.size()) <= view) {
+        QCPGraph* g = m_driftPlot->addGraph();
+        const int v = int(m_driftGraphs.size());
+        g->setPen(QPen(viewColor(v), 1.6, viewStyle(v)));
+        m_viewOf.insert(g, v);
+        m_driftGraphs.push_back(g);
+    }
+}
+
+void PlotDock::ensureViews(int count) {
+    while (int(m_views.size()) < count) {
+        m_views.push_back({});
+        addViewGraphs(int(m_views.size()) - 1);
+    }
+    m_driftPlot->setVisible(m_views.size() > 1);
+}
+
+void PlotDock::dropViews(int count) {
+    count = std::max(count, 1);
+    if (int(m_views.size()) <= count) return;
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        auto& graphs = m_viewGraphs[i];
+        for (auto it = graphs.begin(); it != graphs.end();) {
+            if (it->view < count) {
+                ++it;
+                continue;
+            }
+            m_viewOf.remove(it->graph);
+            m_plots[i]->removeGraph(it->graph);
+            it = graphs.erase(it);
+        }
+    }
+    while (int(m_driftGraphs.size()) > count) {
+        m_viewOf.remove(m_driftGraphs.back());
+        m_driftPlot->removeGraph(m_driftGraphs.back());
+        m_driftGraphs.pop_back();
+    }
+    m_views.resize(std::size_t(count));
+    m_driftPlot->setVisible(m_views.size() > 1);
+}
+
+void PlotDock::updateViewLegend() {
+    // One line per view in each plot's legend: its line style and integrator (and when it failed).
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        for (QCPGraph* g : m_viewLegend[i]) m_plots[i]->removeGraph(g);
+        m_viewLegend[i].clear();
+    }
+    const bool multi = m_views.size() > 1;
+    // Side by side the energy plot is each view's total: view 1's other terms step aside (the
+    // energy bars compare every term, view by view).
+    for (std::size_t i = 0; i < m_plots.size(); ++i)
+        for (std::size_t s = 0; s < m_specs[i].series.size(); ++s) {
+            if (compared(i, s)) continue;
+            QCPGraph* g = m_plots[i]->graph(int(s));
+            g->setVisible(!multi);
+            if (multi) g->removeFromLegend();
+            else g->addToLegend();
+        }
+    auto name = [&](int v) {
+        const ViewInfo& info = m_views[std::size_t(v)];
+        // Short: five entries share a legend row. The cross and time say where it failed.
+        QString text = QStringLiteral("%1 %2").arg(v + 1).arg(info.integrator);
+        if (info.failedAt) text += tr(" ✕ %1 s").arg(*info.failedAt, 0, 'f', 2);
+        return text;
+    };
+    if (multi)
+        for (std::size_t i = 0; i < m_plots.size(); ++i)
+            for (int v = 0; v < int(m_views.size()); ++v) {
+                QCPGraph* g = m_plots[i]->addGraph();
+                g->setPen(QPen(QColor(60, 60, 60), 1.6, viewStyle(v)));
+                g->setName(name(v));
+                m_viewOf.insert(g, -1);
+                m_viewLegend[i].push_back(g);
+            }
+    for (int v = 0; v < int(m_driftGraphs.size()); ++v)
+        if (v < int(m_views.size())) m_driftGraphs[std::size_t(v)]->setName(name(v));
+}
+
+void PlotDock::setViews(const Frame& frame) {
+    const int count = int(frame.lanes.size());
+    bool changed = count != int(m_views.size());
+    if (count < int(m_views.size())) dropViews(count);
+    ensureViews(count);
+    for (int v = 0; v < count; ++v) {
+        const LaneFrame& lane = frame.lanes[std::size_t(v)];
+        const std::optional<double> failedAt =
+            lane.failure ? std::optional<double>(lane.failure->time) : std::nullopt;
+        ViewInfo& info = m_views[std::size_t(v)];
+        if (info.integrator != lane.integrator || info.failedAt != failedAt) {
+            info.integrator = lane.integrator;
+            info.failedAt = failedAt;
+            changed = true;
+        }
+    }
+    if (!changed) return;
+    updateViewLegend();
+    scheduleReplot();
+}
+
+void PlotDock::appendViewRows(int view, const std::vector<simcore::Diagnostics>& rows, int first, int count) {
+    if (view < 1 || count <= 0) return;
+    ensureViews(view + 1);
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        for (const ViewGraph& g : m_viewGraphs[i]) {
+            if (g.view != view) continue;
+            const SeriesSpec& spec = m_specs[i].series[std::size_t(g.series)];
+            QVector<QCPGraphData> points;
+            points.reserve(count);
+            for (int r = first; r < first + count; ++r) {
+                const simcore::Diagnostics& d = rows[std::size_t(r)];
+                points.append(QCPGraphData(d.time, spec.value(d)));
+            }
+            g.graph->data()->add(points, true);
+        }
+    }
+    QVector<QCPGraphData> drift;
+    for (int r = first; r < first + count; ++r) {
+        const simcore::Diagnostics& d = rows[std::size_t(r)];
+        const double value = std::abs(d.energyDrift());
+        if (value > 0.0 && std::isfinite(value)) drift.append(QCPGraphData(d.time, value));
+    }
+    m_driftGraphs[std::size_t(view)]->data()->add(drift, true);
+    m_lastTime = std::max(m_lastTime, rows[std::size_t(first + count - 1)].time);
+    scheduleReplot();
+}
+
+void PlotDock::updateFailureMarks() {
+    for (std::size_t i = 0; i < m_plots.size(); ++i) {
+        QVector<QCPGraphData> marks;
+        for (int v = 0; v < int(m_views.size()); ++v) {
+            if (!m_views[std::size_t(v)].failedAt) continue;
+            for (std::size_t s = 0; s < m_specs[i].series.size(); ++s) {
+                const QCPGraph* g = viewGraph(int(i), v, int(s));
+                if (g && !g->data()->isEmpty()) {
+                    const auto last = g->data()->constEnd() - 1;
+                    marks.append(QCPGraphData(last->key, last->value));
+                }
+            }
+        }
+        std::sort(marks.begin(), marks.end(), [](const QCPGraphData& a, const QCPGraphData& b) { return a.key < b.key; });
+        m_failMarks[i]->data()->set(marks, true);
+    }
+    QVector<QCPGraphData> marks;
+    for (int v = 0; v < int(m_views.size()) && v < int(m_driftGraphs.size()); ++v) {
+        const QCPGraph* g = m_driftGraphs[std::size_t(v)];
+        if (m_views[std::size_t(v)].failedAt && !g->data()->isEmpty()) {
+            const auto last = g->data()->constEnd() - 1;
+            marks.append(QCPGraphData(last->key, last->value));
+        }
+    }
+    std::sort(marks.begin(), marks.end(), [](const QCPGraphData& a, const QCPGraphData& b) { return a.key < b.key; });
+    m_driftMarks->data()->set(marks, true);
+}
+
+int PlotDock::viewPointCount(const QString& plotId, int view, int series) const {
+    const QCPGraph* g = viewGraph(plotIndex(plotId), view, series);
+    return g ? g->data()->size() : -1;
+}
+
+double PlotDock::viewLastValue(const QString& plotId, int view, int series) const {
+    const QCPGraph* g = viewGraph(plotIndex(plotId), view, series);
+    return g && !g->data()->isEmpty() ? (g->data()->constEnd() - 1)->value : qQNaN();
+}
+
+double PlotDock::viewLastTime(const QString& plotId, int view, int series) const {
+    const QCPGraph* g = viewGraph(plotIndex(plotId), view, series);
+    return g && !g->data()->isEmpty() ? (g->data()->constEnd() - 1)->key : qQNaN();
+}
+
+int PlotDock::driftPointCount(int view) const {
+    return view >= 0 && view < int(m_driftGraphs.size()) ? m_driftGraphs[std::size_t(view)]->data()->size() : -1;
+}
+
+double PlotDock::lastDrift(int view) const {
+    if (view < 0 || view >= int(m_driftGraphs.size()) || m_driftGraphs[std::size_t(view)]->data()->isEmpty()) return qQNaN();
+    return (m_driftGraphs[std::size_t(view)]->data()->constEnd() - 1)->value;
+}
+
+int PlotDock::failureMarkCount(const QString& plotId) const {
+    if (plotId == QStringLiteral("drift")) return m_driftMarks->data()->size();
+    const int i = plotIndex(plotId);
+    return i < 0 ? -1 : m_failMarks[std::size_t(i)]->data()->size();
+}
+
+QStringList PlotDock::legendNames(const QString& plotId) const {
+    const QCustomPlot* plot = plotId == QStringLiteral("drift") ? m_driftPlot
+                              : plotIndex(plotId) >= 0          ? m_plots[std::size_t(plotIndex(plotId))]
+                                                                : nullptr;
+    QStringList names;
+    if (!plot) return names;
+    for (int k = 0; k < plot->legend->itemCount(); ++k)
+        if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot->legend->item(k))) names << item->plottable()->name();
+    return names;
 }
 
 }  // namespace elui

@@ -17,11 +17,14 @@
 #include <vector>
 
 #include <QDockWidget>
+#include <QHash>
 
+#include "ui/frame.h"
 #include "ui/plot_series.h"
 
 class QCustomPlot;
 class QCPGraph;
+class QCPAbstractPlottable;
 class QLabel;
 class QComboBox;
 class QCheckBox;
@@ -30,6 +33,17 @@ class QVBoxLayout;
 
 namespace elui {
 
+// Side by side (views = lanes): every plot shows every view. View 1 draws the series as
+// before (solid); views 2 and 3 draw the same series in the same colours, dashed and dotted
+// (the energy plot then shows each view's total only: eight terms three times over would hide
+// each other; the energy bars compare every term); the
+// legend names each view with its line style. A fourth plot, "Energy drift per view", shows
+// |E_total + E_removed - E_0| of each view on a log axis (shown side by side only). A view
+// that fails stops alone: its curves end with a red cross and the legend says when; the other
+// views run on. Autoscale leaves failed views out of the value range while any view is still
+// running, so a blown-up view (euler's 9e5 J) does not flatten the others (its curve leaves
+// the top of the plot; the log drift plot shows it whole).
+//
 // The legend in rows of at most five under the axes (the plot's last layout row), not over
 // the newest data; its font a little smaller than `base`. For the docks' QCustomPlots.
 void legendUnderAxes(QCustomPlot* plot, const QFont& base);
@@ -51,6 +65,11 @@ public:
     int bandPointCount(const QString& plotId, int series) const;
     double lastBandHalfWidth(const QString& plotId, int series) const;
     bool bandsShown() const;
+    // What the dock says about the band: what it is, or why none is seen (no estimate, or
+    // thinner than a line at this zoom). Empty while the band is off.
+    QString bandNote() const;
+    // Whether every band point in view is narrower than half a pixel (the band "invisible").
+    bool bandsThinnerThanALine() const;
     void setBandsShown(bool on);
     std::vector<QCustomPlot*> plots() const { return m_plots; }
     const std::vector<PlotSpec>& specs() const { return m_specs; }
@@ -65,6 +84,19 @@ public:
     bool cursorVisible() const { return m_cursorVisible; }
     double cursorTime() const { return m_cursorTime; }
     QString cursorText(const QString& plotId) const;
+    // Side by side: the views (names, failures) from the frame; cheap when nothing changed.
+    void setViews(const Frame& frame);
+    int viewCount() const { return int(m_views.size()); }
+    // A view's curve of series `series` in plot `plotId` (view 0: the series' own graph):
+    // its points, and -1 when the view has no such curve.
+    int viewPointCount(const QString& plotId, int view, int series) const;
+    double viewLastValue(const QString& plotId, int view, int series) const;
+    double viewLastTime(const QString& plotId, int view, int series) const;  // [s], NaN: none
+    QCustomPlot* driftPlot() const { return m_driftPlot; }
+    int driftPointCount(int view) const;
+    double lastDrift(int view) const;        // [J], NaN: none
+    int failureMarkCount(const QString& plotId) const;  // "drift" for the drift plot
+    QStringList legendNames(const QString& plotId) const;
     // A series' plotted value at time t: the last point at or before t (NaN: none).
     double valueAt(const QString& plotId, int series, double t) const;
     int abandonedPointCount(const QString& plotId, int series) const;
@@ -75,13 +107,19 @@ signals:
 public slots:
     void clear();  // the series (the abandoned future stays until setAbandoned)
     void appendRows(const std::vector<simcore::Diagnostics>& history, int first, int count);
+    // View `view` (>= 1) side by side: its rows [first, first + count).
+    void appendViewRows(int view, const std::vector<simcore::Diagnostics>& rows, int first, int count);
     // Redraws the series from the whole history (after a branch cut it).
     void setHistory(const std::vector<simcore::Diagnostics>& history);
     void setAbandoned(const std::vector<simcore::Diagnostics>& rows);
     void setCursor(double time, bool visible);
     void replotNow();
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
+    int plotMinimumHeight() const;
     void scheduleReplot();
     void updateCursor();
     int plotIndex(const QString& plotId) const;
@@ -93,6 +131,31 @@ private:
         QCPGraph* lower = nullptr;
     };
     const Band* band(const QString& plotId, int series) const;
+    // Side by side.
+    struct ViewInfo {
+        QString integrator;
+        std::optional<double> failedAt;   // [s]
+    };
+    struct ViewGraph {
+        int view = 0;
+        int series = 0;
+        QCPGraph* graph = nullptr;
+    };
+    void ensureViews(int count);          // graphs for views [size, count)
+    void dropViews(int count);            // views >= count go
+    void addViewGraphs(int view);
+    void updateViewLegend();
+    void updateFailureMarks();
+    bool compared(std::size_t plot, std::size_t series) const;
+    QCPGraph* viewGraph(int plot, int view, int series) const;
+    std::vector<ViewInfo> m_views;
+    std::vector<std::vector<ViewGraph>> m_viewGraphs;   // per plot: views >= 1
+    std::vector<std::vector<QCPGraph*>> m_viewLegend;   // per plot: a legend line per view
+    std::vector<QCPGraph*> m_failMarks;                 // per plot
+    QHash<const QCPAbstractPlottable*, int> m_viewOf;   // graph -> view (-1: marks)
+    QCustomPlot* m_driftPlot = nullptr;
+    std::vector<QCPGraph*> m_driftGraphs;               // per view
+    QCPGraph* m_driftMarks = nullptr;
 
     simcore::SceneKind m_kind = simcore::SceneKind::Ring2d;
     std::vector<PlotSpec> m_specs;
@@ -104,6 +167,7 @@ private:
     QLabel* m_bandNote = nullptr;   // says why no band is drawn
     std::vector<std::vector<Band>> m_bands;  // per plot
     bool m_lastRowHasBand = false;
+    bool m_bandsThin = false;  // as of the last replot (bandsThinnerThanALine)
     QTimer* m_replotTimer = nullptr;
     double m_window = 10.0;
     double m_lastTime = 0.0;

@@ -15,6 +15,7 @@
 #include "ui/parameter_dock.h"
 #include "ui/plot_dock.h"
 #include "ui/plot_series.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
 
@@ -66,6 +67,9 @@ PvDock::PvDock(QWidget* parent) : QDockWidget(tr("P–V diagram"), parent) {
         m_now[std::size_t(layer)]->removeFromLegend();
         legendUnderAxes(plot, font());
         plot->xAxis->ticker()->setTickCount(4);
+        // A narrow dock: as many numbers as fit apart (plot_ticks.h).
+        keepTickLabelsApart(plot->xAxis);
+        keepTickLabelsApart(plot->yAxis);
         plotsLayout->addWidget(plot, 1);
         m_plots[std::size_t(layer)] = plot;
     }

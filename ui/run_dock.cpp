@@ -1,6 +1,8 @@
 #include "ui/run_dock.h"
 
 #include <cmath>
+#include <functional>
+#include <map>
 
 #include <QElapsedTimer>
 
@@ -15,9 +17,24 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
+#include "ui/field_keys.h"
 #include "ui/parameter_dock.h"
 
 namespace elui {
+
+namespace {
+// Whether the named integrator chooses its own steps (rk45, cvode-*): asked once per name.
+bool isAdaptive(const QString& name) {
+    static const std::map<QString, bool> table = [] {
+        std::map<QString, bool> t;
+        for (const simcore::IntegratorInfo& info : simcore::integratorTable())
+            if (auto integrator = simcore::makeIntegrator(info.name)) t[toQString(info.name)] = integrator->adaptive();
+        return t;
+    }();
+    const auto it = table.find(name);
+    return it != table.end() && it->second;
+}
+}  // namespace
 
 RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     setObjectName(QStringLiteral("RunDock"));
@@ -38,9 +55,30 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     m_dt = new QLineEdit(host);
     m_dt->setObjectName(QStringLiteral("dtEdit"));
     const simcore::ParamSpec* dtSpec = &simcore::paramSpec(simcore::Param::Dt);
-    m_dt->setToolTip(toQString(dtSpec->meaning) + QStringLiteral("; allowed ") +
-                     QString::fromStdString(dtSpec->rangeText()) + QStringLiteral(" s"));
+    m_dtTip = toQString(dtSpec->meaning) + QStringLiteral("; allowed ") + QString::fromStdString(dtSpec->rangeText()) +
+              QStringLiteral(" s");
+    m_dt->setToolTip(m_dtTip);
     form->addRow(tr("DT [s]"), m_dt);
+    // The adaptive methods' tolerances (rk45, cvode-bdf, cvode-adams): the CLI's --rtol and
+    // --atol, with their ranges. Greyed out while no view uses an adaptive method.
+    auto* tolerances = new QWidget(host);
+    auto* tolRow = new QHBoxLayout(tolerances);
+    tolRow->setContentsMargins(0, 0, 0, 0);
+    m_rtol = new QLineEdit(tolerances);
+    m_rtol->setObjectName(QStringLiteral("rtolEdit"));
+    m_atol = new QLineEdit(tolerances);
+    m_atol->setObjectName(QStringLiteral("atolEdit"));
+    m_tolTip = tr("rk45, cvode-bdf and cvode-adams choose their steps so that each step's error estimate stays "
+                  "below atol + rtol |y| (as elastic-lab-cli --atol, --rtol). rtol in (0, 1], atol in [0, 1] "
+                  "(m and m/s). Smaller: smaller steps, more force evaluations, a thinner error band.");
+    tolRow->addWidget(new QLabel(tr("rtol"), tolerances));
+    tolRow->addWidget(m_rtol, 1);
+    tolRow->addWidget(new QLabel(tr("atol"), tolerances));
+    tolRow->addWidget(m_atol, 1);
+    tolerances->setToolTip(m_tolTip);
+    m_rtol->setToolTip(m_tolTip);
+    m_atol->setToolTip(m_tolTip);
+    form->addRow(tr("Tolerance"), tolerances);
     m_speed = new QComboBox(host);
     m_speed->setObjectName(QStringLiteral("speedCombo"));
     for (Speed s : {Speed::RealTime, Speed::Quarter, Speed::Tenth, Speed::AsFastAsPossible})
@@ -78,17 +116,46 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     connect(m_integrator, &QComboBox::currentTextChanged, this, [this](const QString& name) {
         if (!m_updating) emit integratorChosen(name);
     });
-    connect(m_dt, &QLineEdit::editingFinished, this, [this] {
+    auto commitDt = [this] {
         double v = 0.0;
         const QString error = ParameterForm::validate(simcore::paramSpec(simcore::Param::Dt), m_dt->text(), &v);
+        markField(m_dt, error, m_dtTip);
         if (!error.isEmpty()) {
-            m_dt->setStyleSheet(QStringLiteral("background: #ffd6d6"));
             emit message(error);
-            return;
+            return false;
         }
-        m_dt->setStyleSheet(QString());
         if (v != m_shownDt) emit dtEdited(v);
+        return true;
+    };
+    connect(m_dt, &QLineEdit::editingFinished, this, commitDt);
+    // Enter commits and leaves the field, Escape puts back the DT in use (field_keys.h).
+    installFieldKeys(m_dt, commitDt, [this] {
+        m_dt->setText(QString::number(m_shownDt, 'g', 10));
+        markField(m_dt, {}, m_dtTip);
     });
+    auto commitTolerances = [this] {
+        bool okR = false, okA = false;
+        const double rtol = m_rtol->text().trimmed().toDouble(&okR);
+        const double atol = m_atol->text().trimmed().toDouble(&okA);
+        const bool goodR = okR && rtol > 0.0 && rtol <= 1.0, goodA = okA && atol >= 0.0 && atol <= 1.0;
+        markField(m_rtol, goodR ? QString() : tr("rtol: '%1' is not a number in (0, 1]").arg(m_rtol->text()), m_tolTip);
+        markField(m_atol, goodA ? QString() : tr("atol: '%1' is not a number in [0, 1]").arg(m_atol->text()), m_tolTip);
+        if (!goodR || !goodA) {
+            emit message(!goodR ? m_rtol->toolTip() : m_atol->toolTip());
+            return false;
+        }
+        if (atol != m_shownAtol || rtol != m_shownRtol) emit tolerancesEdited(atol, rtol);
+        return true;
+    };
+    for (QLineEdit* edit : {m_rtol, m_atol}) {
+        connect(edit, &QLineEdit::editingFinished, this, commitTolerances);
+        installFieldKeys(edit, commitTolerances, [this] {
+            m_rtol->setText(QString::number(m_shownRtol, 'g', 6));
+            m_atol->setText(QString::number(m_shownAtol, 'g', 6));
+            markField(m_rtol, {}, m_tolTip);
+            markField(m_atol, {}, m_tolTip);
+        });
+    }
     connect(m_run, &QPushButton::clicked, this, [this] {
         if (m_running) emit pauseRequested();
         else emit runRequested();
@@ -98,6 +165,36 @@ RunDock::RunDock(QWidget* parent) : QDockWidget(tr("Run"), parent) {
     connect(m_speed, &QComboBox::currentIndexChanged, this,
             [this] { emit speedChosen(Speed(m_speed->currentData().toInt())); });
     connect(m_doubling, &QCheckBox::toggled, this, &RunDock::stepDoublingToggled);
+}
+
+QString RunDock::viewTable(const Frame& frame) {
+    // Side by side: each view's own numbers, one column per view (the table above is view 1's).
+    const auto& lanes = frame.lanes;
+    auto cells = [&](const QString& name, const std::function<QString(const LaneFrame&, std::size_t)>& value) {
+        QString tr_ = QStringLiteral("<tr><td>%1&nbsp;</td>").arg(name);
+        for (std::size_t v = 0; v < lanes.size(); ++v)
+            tr_ += QStringLiteral("<td align=right>&nbsp;%1</td>").arg(value(lanes[v], v));
+        return tr_ + QStringLiteral("</tr>");
+    };
+    QString html = QStringLiteral("<p style='margin-top:6px'><b>%1</b></p><table cellspacing=0>").arg(tr("Each view"));
+    html += cells(tr("view"), [](const LaneFrame& l, std::size_t v) {
+        return QStringLiteral("<b>%1 %2</b>").arg(v + 1).arg(l.integrator.toHtmlEscaped());
+    });
+    html += cells(tr("time"), [](const LaneFrame& l, std::size_t) {
+        return l.failure ? QStringLiteral("<span style='color:#c0392b'>✕ %1 s</span>").arg(l.failure->time, 0, 'f', 3)
+                         : QStringLiteral("%1 s").arg(l.diagnostics.time, 0, 'f', 3);
+    });
+    html += cells(tr("steps"), [](const LaneFrame& l, std::size_t) { return QString::number(l.diagnostics.step); });
+    html += cells(tr("energy drift"), [](const LaneFrame& l, std::size_t) {
+        return QStringLiteral("%1 J").arg(l.diagnostics.energyDrift(), 0, 'g', 3);
+    });
+    const int reference = lanes.size() > 1 ? lanes[1].divergenceReference : 0;
+    html += cells(tr("distance to view %1").arg(reference + 1), [&](const LaneFrame& l, std::size_t v) {
+        if (int(v) == reference) return QStringLiteral("—");
+        if (l.failure) return tr("failed");
+        return QStringLiteral("%1 m").arg(l.divergence, 0, 'e', 2);
+    });
+    return html + QStringLiteral("</table>");
 }
 
 void RunDock::showFrame(const FramePtr& frame) {
@@ -118,8 +215,20 @@ void RunDock::showFrame(const FramePtr& frame) {
     const double dt = frame->parameters.get(simcore::Param::Dt);
     if (dt != m_shownDt && !m_dt->hasFocus()) {
         m_dt->setText(QString::number(dt, 'g', 10));
-        m_shownDt = dt;
+        markField(m_dt, {}, m_dtTip);  // the DT in use: nothing refused
     }
+    m_shownDt = dt;
+    bool adaptive = false;
+    for (const LaneFrame& l : frame->lanes) adaptive = adaptive || isAdaptive(l.integrator);
+    m_rtol->parentWidget()->setEnabled(adaptive);
+    if ((frame->atol != m_shownAtol || frame->rtol != m_shownRtol) && !m_rtol->hasFocus() && !m_atol->hasFocus()) {
+        m_rtol->setText(QString::number(frame->rtol, 'g', 6));
+        m_atol->setText(QString::number(frame->atol, 'g', 6));
+        markField(m_rtol, {}, m_tolTip);
+        markField(m_atol, {}, m_tolTip);
+    }
+    m_shownAtol = frame->atol;
+    m_shownRtol = frame->rtol;
     const int speedIndex = m_speed->findData(int(frame->speed));
     if (speedIndex != m_speed->currentIndex()) m_speed->setCurrentIndex(speedIndex);
     m_updating = false;
@@ -153,11 +262,8 @@ void RunDock::showFrame(const FramePtr& frame) {
                     QStringLiteral("%1 / %2").arg(c.errorTestFailures).arg(c.convergenceFailures));
         html += row(tr("order, re-initialisations"), QStringLiteral("%1, %2").arg(c.order).arg(c.reinitialisations));
     }
-    for (std::size_t i = 1; i < frame->lanes.size(); ++i)
-        html += row(tr("%1 vs %2").arg(frame->lanes[i].integrator, lane.integrator),
-                    frame->lanes[i].failure ? tr("blew up")
-                                            : QStringLiteral("%1 m").arg(frame->lanes[i].divergence, 0, 'e', 2));
     html += QStringLiteral("</table>");
+    if (!single) html += viewTable(*frame);
     if (frame->fallingBehind)
         html += tr("<p style='color:#b35900'>Cannot keep up with real time: showing as fast as it runs.</p>");
     if (m_readout->text() != html) m_readout->setText(html);

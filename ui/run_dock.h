@@ -22,9 +22,15 @@ public:
     QPushButton* runButton() const { return m_run; }
     QComboBox* integratorCombo() const { return m_integrator; }
     QLabel* readout() const { return m_readout; }
+    QLineEdit* dtEdit() const { return m_dt; }
 
 public slots:
     void showFrame(const elui::FramePtr& frame);
+
+public:
+    // Side by side: every view's time (✕ and when, for a failed one), steps, energy drift and
+    // distance to the reference view (view 1, or the first live one once view 1 failed).
+    static QString viewTable(const Frame& frame);
 
 signals:
     void integratorChosen(const QString& name);
@@ -35,6 +41,7 @@ signals:
     void resetRequested();
     void speedChosen(elui::Speed speed);
     void stepDoublingToggled(bool on);
+    void tolerancesEdited(double atol, double rtol);
     void message(const QString& text);
 
 private:
@@ -48,7 +55,12 @@ private:
     QLabel* m_readout = nullptr;
     bool m_running = false;
     bool m_updating = false;
-    double m_shownDt = -1.0;
+    double m_shownDt = -1.0;  // the DT in use (the last frame's)
+    QString m_dtTip;
+    QLineEdit* m_rtol = nullptr;
+    QLineEdit* m_atol = nullptr;
+    double m_shownAtol = -1.0, m_shownRtol = -1.0;  // the tolerances in use
+    QString m_tolTip;
     QElapsedTimer m_lastReadout;
 };
 

@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QVBoxLayout>
 
 #include "simcore/scenes.h"
@@ -38,7 +39,13 @@ SceneDock::SceneDock(QWidget* parent) : QDockWidget(tr("Scene"), parent) {
                                 "body's totals; under scaling=thesis they are per particle and per spring"));
     layout->addWidget(m_bodyValues);
     layout->addStretch(1);
-    setWidget(host);
+    // Scrolls when the screen is short (a projector, presentation mode) instead of holding the
+    // window taller than the screen; the Parameters dock beside it does the same.
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(host);
+    setWidget(scroll);
 
     connect(m_scene, &QComboBox::currentIndexChanged, this, [this] {
         if (m_updating) return;

@@ -92,7 +92,6 @@ void SimWorker::afterRebuild() {
     }
     const bool unstable = scene->suggestedDt > 0.0;
     m_scene = std::move(scene);
-    m_lanes.updateDtLimit();
     m_until = -1.0;
     startHistory();
     if (unstable && m_pacer.running()) pause();
@@ -137,13 +136,27 @@ void SimWorker::setParameter(simcore::Param id, double value) {
         return;
     }
     m_params = m_lanes.front().parameters();
-    m_lanes.updateDtLimit();
     afterRebuild();
 }
 
 void SimWorker::setSpeed(int speed) {
     m_pacer.setSpeed(static_cast<Speed>(std::clamp(speed, 0, 3)), m_lanes.commonTime());
     if (m_pacer.running()) m_timer->start(m_pacer.timerInterval());
+    publish(true);
+}
+
+void SimWorker::setTolerances(double atol, double rtol) {
+    // The CLI's ranges (--atol in [0, 1], --rtol in (0, 1]); anything else is not sent by the GUI.
+    if (!(atol >= 0.0 && atol <= 1.0 && rtol > 0.0 && rtol <= 1.0)) return;
+    if (m_lanes.empty()) {
+        m_lanes.setTolerances(atol, rtol);
+        return;
+    }
+    Input input;
+    input.kind = Input::Tolerances;
+    input.value = atol;
+    input.value2 = rtol;
+    logInput(std::move(input));
     publish(true);
 }
 
@@ -291,6 +304,7 @@ bool SimWorker::stepAll() {
 void SimWorker::recordRow() {
     if (m_replaying) return;
     m_publisher.recordRow(m_lanes.front(), m_bandsWanted);
+    if (m_lanes.size() > 1) m_publisher.recordLaneRows(m_lanes.views(), m_lanes.commonTime());
 }
 
 void SimWorker::tick() {
@@ -337,15 +351,38 @@ void SimWorker::publish(bool force) {
     frame->wallSeconds = m_pacer.wallSeconds();
     frame->stepsPerSecond = m_pacer.stepsPerSecond();
     frame->fallingBehind = m_pacer.fallingBehind();
-    frame->explicitDtLimit = m_lanes.dtLimit();
+    frame->atol = m_lanes.atol();
+    frame->rtol = m_lanes.rtol();
     frame->timeline = timelineInfo();
     frame->lanes = m_lanes.laneFrames(m_forcesWanted, m_selected);
+    for (std::size_t i = 0; i < frame->lanes.size(); ++i)
+        if (frame->lanes[i].failure) frame->lanes[i].stretchStart = stretchStart(i, *frame->lanes[i].failure);
     m_publisher.publish(std::move(frame));
+}
+
+std::shared_ptr<const simcore::SimulationSnapshot> SimWorker::stretchStart(std::size_t lane,
+                                                                          const simcore::Failure& failure) {
+    if (m_stretchStarts.size() != m_lanes.size()) m_stretchStarts.assign(m_lanes.size(), {});
+    auto& cached = m_stretchStarts[lane];
+    if (cached.first && cached.second == failure.step) return cached.first;
+    // The latest checkpoint of this lane, unfailed, at least kFailureStretch before the failure
+    // (else the first one: the run's start, or the moment the timeline began).
+    const simcore::SimulationSnapshot* best = nullptr;
+    for (const simcore::TimelineCheckpoint& c : m_recorder.checkpoints()) {
+        if (lane >= c.lanes.size() || c.lanes[lane].failure) continue;
+        const simcore::SimulationSnapshot& s = c.lanes[lane];
+        if (!best || s.diag.time <= failure.time - kFailureStretch) best = &s;
+        if (s.diag.time > failure.time - kFailureStretch) break;
+    }
+    if (!best) return {};
+    cached = {std::make_shared<const simcore::SimulationSnapshot>(*best), failure.step};
+    return cached.first;
 }
 
 // --- time travel ---
 
 void SimWorker::startTimeline() {
+    m_stretchStarts.clear();
     m_recorder.clear();
     m_inputs.clear();
     m_publisher.clearBranches();
@@ -386,13 +423,13 @@ void SimWorker::applyInput(const Input& input) {
         case Input::Parameter:
             m_lanes.setParameter(input.param, input.value);
             m_params = m_lanes.front().parameters();
-            m_lanes.updateDtLimit();
             break;
         case Input::Integrator:
             if (auto error = m_lanes.front().setIntegrator(input.key))
                 emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
             break;
         case Input::StepDoubling: m_lanes.setStepDoubling(input.value != 0.0); break;
+        case Input::Tolerances: m_lanes.setTolerances(input.value, input.value2); break;
         case Input::Grab: m_lanes.grab(input.particle, input.anchor); break;
         case Input::Move: m_lanes.moveAnchor(input.anchor); break;
         case Input::Release: m_lanes.release(); break;
@@ -454,9 +491,8 @@ void SimWorker::goTo(long target) {
     m_replaying = false;
     m_until = -1.0;  // shown paused
     m_params = m_lanes.front().parameters();
-    m_lanes.readStepDoubling();
+    m_lanes.readOptions();
     m_failureReported = m_lanes.front().failed();
-    m_lanes.updateDtLimit();
 }
 
 void SimWorker::scrubToTime(double t) {

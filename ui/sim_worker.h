@@ -72,6 +72,7 @@ public:
     void setParameter(simcore::Param id, double value);
     void setSpeed(int speed);
     void setStepDoubling(bool on);
+    void setTolerances(double atol, double rtol);
     void setForcesWanted(bool on);
     // Whether each recorded row gets its error bands (Simulation::observableErrors: two
     // measurements per row, so only while the plots show them).
@@ -130,15 +131,19 @@ private:
     void afterRebuild();
     void recordRow();                     // lane 0's row, unless re-simulating
     void publish(bool force);             // a frame, if one is due (always when forced)
+    // A failed lane's state some time before its failure (Frame's LaneFrame::stretchStart).
+    static constexpr double kFailureStretch = 0.2;  // [s]
+    std::shared_ptr<const simcore::SimulationSnapshot> stretchStart(std::size_t lane, const simcore::Failure& failure);
 
     // Time travel. What was done between two steps, replayed when a moment is re-simulated.
     struct Input {
-        enum Kind { Parameter, Integrator, StepDoubling, Grab, Move, Release, Until };
+        enum Kind { Parameter, Integrator, StepDoubling, Tolerances, Grab, Move, Release, Until };
         long moment = 0;                  // done at this moment (after its step)
         Kind kind = Parameter;
         simcore::Param param = simcore::Param::Count;  // Parameter
         std::string key;                  // Integrator: the name
-        double value = 0.0;               // Parameter, StepDoubling (0/1), Until
+        double value = 0.0;               // Parameter, StepDoubling (0/1), Until, Tolerances: atol
+        double value2 = 0.0;              // Tolerances: rtol
         int particle = -1;                // Grab
         Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // Grab, Move
     };
@@ -169,6 +174,8 @@ private:
     bool m_bandsWanted = false;
     int m_selected = -1;                  // the particle whose force breakdown frames carry
     bool m_failureReported = false;
+    // Per lane: the stretch start given for its failure, and that failure's step.
+    std::vector<std::pair<std::shared_ptr<const simcore::SimulationSnapshot>, long>> m_stretchStarts;
 
     simcore::TimelineRecorder m_recorder;
     std::vector<Input> m_inputs;          // by moment, in the order they were done

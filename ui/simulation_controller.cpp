@@ -78,6 +78,7 @@ void SimulationController::takeFrame() {
     if (newScene) emit sceneChanged(m_latest->scene);
     if (batch.historyReset) {
         m_history.clear();
+        m_viewHistory.clear();
         const bool hadAbandoned = !m_abandoned.empty();
         m_abandoned.clear();
         emit historyReset();
@@ -90,6 +91,20 @@ void SimulationController::takeFrame() {
         cutHistory(b.time);
     }
     appendRows(batch.rows, done, batch.rows.size());
+    if (m_viewHistory.size() < batch.laneRows.size()) m_viewHistory.resize(batch.laneRows.size());
+    for (std::size_t v = 0; v < batch.laneRows.size(); ++v) {
+        const auto& rows = batch.laneRows[v];
+        if (rows.empty()) continue;
+        auto& history = m_viewHistory[v];
+        if (history.size() + rows.size() > kMaxHistoryRows) {
+            std::size_t w = 0;
+            for (std::size_t r = 0; r < history.size(); r += 2) history[w++] = history[r];
+            history.resize(w);
+        }
+        const int first = int(history.size());
+        history.insert(history.end(), rows.begin(), rows.end());
+        emit viewRowsAppended(int(v + 1), first, int(rows.size()));
+    }
     emit frameArrived(m_latest);
 }
 
@@ -116,6 +131,10 @@ void SimulationController::cutHistory(double time) {
                                 [](double t, const simcore::Diagnostics& d) { return t < d.time; });
     m_abandoned.assign(cut, m_history.end());
     m_history.erase(cut, m_history.end());
+    for (auto& history : m_viewHistory)
+        history.erase(std::upper_bound(history.begin(), history.end(), time,
+                                       [](double t, const simcore::Diagnostics& d) { return t < d.time; }),
+                      history.end());
     emit historyBranched(time);
     emit abandonedChanged();
 }
@@ -167,6 +186,7 @@ void SimulationController::setParameter(const QString& key, double value) {
 }
 void SimulationController::setSpeed(Speed speed) { toWorker(&SimWorker::setSpeed, int(speed)); }
 void SimulationController::setStepDoubling(bool on) { toWorker(&SimWorker::setStepDoubling, on); }
+void SimulationController::setTolerances(double atol, double rtol) { toWorker(&SimWorker::setTolerances, atol, rtol); }
 void SimulationController::setForcesWanted(bool on) { toWorker(&SimWorker::setForcesWanted, on); }
 void SimulationController::setErrorBandsWanted(bool on) { toWorker(&SimWorker::setErrorBandsWanted, on); }
 void SimulationController::setStartKick(double innerVx, double outerVx) {

@@ -38,6 +38,9 @@ public:
     const FramePtr& latest() const { return m_latest; }
     // Lane 0's recorded rows since the last reset (every step, at most one per kRowInterval).
     const std::vector<simcore::Diagnostics>& history() const { return m_history; }
+    // Side by side: the other views' rows (view v >= 1 at index v - 1), at the same common
+    // times; a failed view's end where it failed. Cut at a branch as the history is.
+    const std::vector<std::vector<simcore::Diagnostics>>& viewHistory() const { return m_viewHistory; }
     // The abandoned future: lane 0's rows after the last branch's instant, as they were
     // before the branch (one level; empty when none or cleared).
     const std::vector<simcore::Diagnostics>& abandoned() const { return m_abandoned; }
@@ -69,6 +72,8 @@ public:
     void setParameter(const QString& key, double value);
     void setSpeed(Speed speed);
     void setStepDoubling(bool on);
+    // The adaptive methods' tolerances (rk45, cvode-bdf, cvode-adams), every lane; logged for time travel.
+    void setTolerances(double atol, double rtol);
     void setForcesWanted(bool on);
     void setErrorBandsWanted(bool on);  // fill the rows' error bands (Diagnostics::errors)
     void setStartKick(double innerVx, double outerVx);
@@ -96,6 +101,7 @@ signals:
     void frameArrived(const elui::FramePtr& frame);
     void historyReset();
     void rowsAppended(int first, int count);
+    void viewRowsAppended(int view, int first, int count);  // viewHistory()[view - 1] grew
     // A branch cut the history at `time`: what followed is now abandoned() (the history was
     // truncated: listeners redraw it whole).
     void historyBranched(double time);
@@ -124,6 +130,7 @@ private:
     FramePtr m_latest;
     std::vector<simcore::Diagnostics> m_history;
     std::vector<simcore::Diagnostics> m_abandoned;
+    std::vector<std::vector<simcore::Diagnostics>> m_viewHistory;
     void appendRows(const std::vector<simcore::Diagnostics>& rows, std::size_t begin, std::size_t end);
     void cutHistory(double time);
     simcore::ParameterSet m_params;

@@ -30,6 +30,12 @@ simcore::ParameterSet withoutDt(const simcore::ParameterSet& p) {
 
 QString seconds(double s) { return QString::number(s, 'g', 3); }
 
+// A view's colour on the map (its edge, when it is not the primary one).
+QColor viewColor(int view) {
+    static const QColor colors[] = {QColor(30, 110, 40), QColor(190, 90, 0), QColor(130, 40, 160)};
+    return colors[view % 3];
+}
+
 QString tryTip() {
     return StabilityMapDock::tr("Measure this integrator's largest stable DT on this body: the stability scan's "
                                 "bisection (%1 s runs; Studies → Stability scan does all integrators), marked on "
@@ -78,6 +84,9 @@ StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability 
     m_measured->setLineStyle(QCPGraph::lsNone);
     m_measured->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCross, QPen(QColor(210, 30, 30), 2.5), Qt::NoBrush, 14));
     m_measured->setName(tr("measured limit"));
+    // Equal scales, checked on the axis rect the plot is about to draw into (its size is known
+    // only once the layout has run: tick labels and the legend take their share first).
+    connect(m_plot, &QCustomPlot::afterLayout, this, &StabilityMapDock::keepEqualAspect);
     m_measured->removeFromLegend();
     m_plot->legend->setVisible(true);
     QFont small = font();
@@ -127,11 +136,24 @@ StabilityMapDock::~StabilityMapDock() {
 }
 
 void StabilityMapDock::setState(const simcore::ParameterSet& params, const QString& integrator) {
-    if (m_hasState && params == m_params && integrator == m_integrator) return;
+    setState(params, QStringList{integrator});
+}
+
+void StabilityMapDock::setState(const simcore::ParameterSet& params, const QStringList& integrators) {
+    if (integrators.isEmpty()) return;
+    if (m_hasState && params == m_params && integrators == m_integrators) return;
     m_params = params;
-    m_integrator = integrator;
+    m_integrators = integrators;
+    m_integrator = integrators.front();
     m_hasState = true;
     request();
+}
+
+QStringList StabilityMapDock::overlaidIntegrators() const {
+    QStringList names;
+    for (const std::string& n : m_shownIntegrators)
+        if (n != m_shownIntegrator) names << QString::fromStdString(n);
+    return names;
 }
 
 int StabilityMapDock::pointCount() const { return m_points->data()->size(); }
@@ -157,9 +179,10 @@ void StabilityMapDock::request() {
         m_jobPending = true;
         return;
     }
-    const std::string integrator = m_integrator.toStdString();
-    if (m_resultSerial > 0 && m_params == m_shownParams && integrator == m_shownIntegrator) return;
-    Job job{m_params, integrator, nullptr};
+    std::vector<std::string> integrators;
+    for (const QString& name : m_integrators) integrators.push_back(name.toStdString());
+    if (m_resultSerial > 0 && m_params == m_shownParams && integrators == m_shownIntegrators) return;
+    Job job{m_params, integrators, nullptr};
     if (m_modes && m_resultSerial > 0 && withoutDt(m_params) == withoutDt(m_shownParams)) job.modes = m_modes;
     startJob(std::move(job));
 }
@@ -171,11 +194,19 @@ void StabilityMapDock::startJob(Job job) {
     m_jobThread = std::thread([this, job = std::move(job)] {
         Result r;
         r.params = job.params;
-        r.integrator = job.integrator;
-        r.modes = job.modes ? job.modes : std::make_shared<const simlab::LinearModes>(simlab::linearModes(job.params));
+        r.integrators = job.integrators;
+        r.modes = job.modes ? job.modes : std::make_shared<const simlab::LinearModes>(simlab::stabilityModes(job.params));
         r.points = simlab::spectrumPoints(*r.modes);
-        r.margin = simlab::stepMargin(job.integrator, *r.modes, r.points, job.params.get(simcore::Param::Dt));
-        r.boundary = simlab::regionBoundary(job.integrator);
+        // Every view on the same points; the primary one is the first with the smallest margin.
+        for (const std::string& name : job.integrators)
+            r.views.push_back(View{name, simlab::stepMargin(name, *r.modes, r.points, job.params.get(simcore::Param::Dt)),
+                                   simlab::regionBoundary(name)});
+        std::size_t primary = 0;
+        for (std::size_t v = 1; v < r.views.size(); ++v)
+            if (r.views[v].margin.factor < r.views[primary].margin.factor) primary = v;
+        r.integrator = r.views[primary].integrator;
+        r.margin = r.views[primary].margin;
+        r.boundary = r.views[primary].boundary;
         m_fromWorker->post([this, r] {
             m_jobRunning = false;
             present(r);
@@ -190,6 +221,7 @@ void StabilityMapDock::startJob(Job job) {
 void StabilityMapDock::present(const Result& r) {
     m_shownParams = r.params;
     m_shownIntegrator = r.integrator;
+    m_shownIntegrators = r.integrators;
     m_shownDt = r.params.get(simcore::Param::Dt);
     m_modes = r.modes;
     m_spectrum = r.points;
@@ -211,6 +243,26 @@ void StabilityMapDock::present(const Result& r) {
         m_boundary.push_back(c);
     }
     m_fill->setVisible(hasRegion);
+    // The other views' edges: dashed, each in its view's colour, named in the legend.
+    for (QCPCurve* c : m_overlay) m_plot->removePlottable(c);
+    m_overlay.clear();
+    for (std::size_t v = 0; v < r.views.size(); ++v) {
+        if (r.views[v].integrator == r.integrator) continue;
+        bool named = false;
+        for (const auto& curve : r.views[v].boundary) {
+            auto* c = new QCPCurve(m_plot->xAxis, m_plot->yAxis);
+            QVector<QCPCurveData> points;
+            points.reserve(int(curve.size()));
+            for (std::size_t i = 0; i < curve.size(); ++i)
+                points.append(QCPCurveData(double(i), curve[i].real(), curve[i].imag()));
+            c->data()->set(points, true);
+            c->setPen(QPen(viewColor(int(v)), 2.0, Qt::DashLine));
+            if (!named) c->setName(tr("edge of view %1 (%2)").arg(v + 1).arg(QString::fromStdString(r.views[v].integrator)));
+            else c->removeFromLegend();
+            named = true;
+            m_overlay.push_back(c);
+        }
+    }
 
     QVector<double> xs, ys;
     for (const Complex& l : m_spectrum.lambda) {
@@ -230,7 +282,22 @@ void StabilityMapDock::present(const Result& r) {
 
     const QString name = QString::fromStdString(r.integrator);
     m_plot->xAxis->setLabel(tr("Re(hλ), h = DT = %1 s").arg(m_shownDt));
-    m_marginLabel->setText(QStringLiteral("%1: %2").arg(name, QString::fromStdString(m_margin.text)));
+    if (r.views.size() <= 1) {
+        m_marginLabel->setText(QStringLiteral("%1: %2").arg(name, QString::fromStdString(m_margin.text)));
+    } else {
+        // Side by side: every view's margin, the primary (smallest margin) first.
+        QStringList lines{tr("View %1, %2 (filled): %3")
+                              .arg(int(std::find_if(r.views.begin(), r.views.end(),
+                                                    [&](const View& v) { return v.integrator == r.integrator; }) -
+                                       r.views.begin()) + 1)
+                              .arg(name, QString::fromStdString(m_margin.text))};
+        for (std::size_t v = 0; v < r.views.size(); ++v)
+            if (r.views[v].integrator != r.integrator)
+                lines << tr("View %1, %2 (dashed): %3")
+                             .arg(v + 1)
+                             .arg(QString::fromStdString(r.views[v].integrator), QString::fromStdString(r.views[v].margin.text));
+        m_marginLabel->setText(lines.join(QLatin1Char('\n')));
+    }
     m_methodLabel->setText(tr("Eigenvalues: %1.\n%2")
                                .arg(QString::fromStdString(m_spectrum.methodText), QString::fromStdString(simlab::regionNote(r.integrator))));
     m_try->setEnabled(hasRegion || m_scanRunning);
@@ -291,7 +358,13 @@ void StabilityMapDock::fitView() {
         y0 = std::min(y0, z.imag());
         y1 = std::max(y1, z.imag());
     };
-    for (const auto& curve : m_curves)
+    std::vector<std::vector<Complex>> curves = m_curves;
+    for (const QCPCurve* c : m_overlay) {
+        std::vector<Complex> pts;
+        for (auto it = c->data()->constBegin(); it != c->data()->constEnd(); ++it) pts.emplace_back(it->key, it->value);
+        curves.push_back(std::move(pts));
+    }
+    for (const auto& curve : curves)
         for (const Complex& z : curve)
             if (std::abs(z) <= 4.0) take(z);
             else if (std::abs(z.real()) <= 4.0) take(Complex(z.real(), std::clamp(z.imag(), -3.0, 3.0)));  // Verlet's strip
@@ -317,6 +390,19 @@ void StabilityMapDock::fitView() {
     }
     m_plot->xAxis->setRange(x0, x1);
     m_plot->yAxis->setRange(y0, y1);
+    drawRegion();
+}
+
+void StabilityMapDock::keepEqualAspect() {
+    // Widen the axis with fewer units per pixel about its centre until both have the same: a
+    // circle (Euler's region) stays a circle whatever the dock's shape.
+    const QRect rect = m_plot->axisRect()->rect();
+    if (rect.width() < 10 || rect.height() < 10) return;
+    const QCPRange xr = m_plot->xAxis->range(), yr = m_plot->yAxis->range();
+    const double px = xr.size() / rect.width(), py = yr.size() / rect.height();
+    if (!(px > 0) || !(py > 0) || std::abs(px - py) <= 1e-9 * std::max(px, py)) return;
+    if (px < py) m_plot->xAxis->setRange(xr.center(), py * rect.width(), Qt::AlignCenter);
+    else m_plot->yAxis->setRange(yr.center(), px * rect.height(), Qt::AlignCenter);
     drawRegion();
 }
 

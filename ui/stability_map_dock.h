@@ -11,8 +11,12 @@
 //          └──────────────────────┘
 //   "DT can grow 2.3× before the fastest mode leaves the region."
 //
-// Inputs arrive with every frame (setState: parameters and lane 0's integrator); the dock
-// works only while visible. The linearisation (simlab::linearModes: up to ~1 s for a large
+// Inputs arrive with every frame (setState: parameters and every view's integrator); the dock
+// works only while visible. Side by side every view is mapped on the same picture (one body,
+// one DT: the same points hλ): the view with the smallest margin - the one that turns red
+// first - is the primary one (its region filled, its limiting mode ringed, "Try it" measures
+// it); each other view's edge is drawn dashed in its own colour, and the words give every
+// view's margin, one line each. The linearisation (simlab::stabilityModes: up to ~1 s for a large
 // body) and the margin run on a worker std::thread, one job at a time; a change during a job
 // queues one more (the newest wins). A DT change alone reuses the modes. "Try it" runs the
 // stability scan's bisection (simlab::scanIntegrator) for the current integrator on another
@@ -52,9 +56,14 @@ public:
     // The body and the method to map; cheap to call with every frame (nothing happens when
     // neither changed).
     void setState(const simcore::ParameterSet& params, const QString& integrator);
+    void setState(const simcore::ParameterSet& params, const QStringList& integrators);
 
     // What is shown (for tests and the screenshot).
-    QString integrator() const { return m_integrator; }
+    QString integrator() const { return m_integrator; }  // the first view's (as asked)
+    // The integrator shown as the primary one (the smallest margin), and the others overlaid.
+    QString primaryIntegrator() const { return QString::fromStdString(m_shownIntegrator); }
+    QStringList overlaidIntegrators() const;
+    int overlayCurveCount() const { return int(m_overlay.size()); }
     double dt() const { return m_shownDt; }
     int pointCount() const;                 // eigenvalue dots drawn
     int boundaryPointCount() const;         // points of the boundary curves
@@ -80,22 +89,31 @@ protected:
 private:
     struct Job {
         simcore::ParameterSet params;
-        std::string integrator;
+        std::vector<std::string> integrators;               // every view's
         std::shared_ptr<const simlab::LinearModes> modes;  // reused when only DT changed
+    };
+    // One view's margin and edge.
+    struct View {
+        std::string integrator;
+        simlab::StepMargin margin;
+        std::vector<std::vector<std::complex<double>>> boundary;
     };
     struct Result {
         simcore::ParameterSet params;
-        std::string integrator;
+        std::vector<std::string> integrators;  // as asked
+        std::string integrator;                // the primary view's
         std::shared_ptr<const simlab::LinearModes> modes;
         simlab::SpectrumPoints points;
         simlab::StepMargin margin;
         std::vector<std::vector<std::complex<double>>> boundary;
+        std::vector<View> views;               // every view, in order
     };
     void request();
     void startJob(Job job);
     void present(const Result& result);
     void fitView();
     void drawRegion();
+    void keepEqualAspect();
     void showMeasured();
 
     QCustomPlot* m_plot = nullptr;
@@ -112,7 +130,10 @@ private:
     // The wanted state (from setState) and what is shown.
     simcore::ParameterSet m_params;
     QString m_integrator;
+    QStringList m_integrators;
     bool m_hasState = false;
+    std::vector<std::string> m_shownIntegrators;
+    std::vector<QCPCurve*> m_overlay;      // the other views' edges
     simcore::ParameterSet m_shownParams;
     std::string m_shownIntegrator;
     double m_shownDt = 0.0;

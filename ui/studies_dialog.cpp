@@ -1,6 +1,8 @@
 #include "ui/studies_dialog.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -14,6 +16,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -32,25 +35,20 @@
 namespace elui {
 
 namespace {
-const QColor kPalette[] = {QColor(200, 30, 30), QColor(30, 120, 200), QColor(30, 150, 60), QColor(150, 60, 170),
-                           QColor(230, 130, 0), QColor(0, 150, 150), QColor(100, 100, 100)};
-
-QColor integratorColor(const QString& name) {
-    int i = 0;
-    for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {
-        if (toQString(info.name) == name) return kPalette[i % 7];
-        ++i;
-    }
-    return Qt::black;
-}
+// The study diagrams' colour (a shade of the integrator's family, simlab/study.h): the same in
+// the dialogs, the CLI's SVG and the Python example.
+QColor integratorColor(const QString& name) { return QColor(QString::fromLatin1(simlab::studyColour(name.toStdString()))); }
 
 QString number(double v) { return QString::number(v, 'g', 4); }
 
 void setupLogAxis(QCPAxis* axis, const QString& label) {
     axis->setScaleType(QCPAxis::stLogarithmic);
     axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-    axis->setNumberFormat(QStringLiteral("eb"));
-    axis->setNumberPrecision(0);
+    // Three significant digits: over less than 1.6 decades QCustomPlot's log ticker falls back
+    // to linear steps (0.008, 0.01, 0.012), which a one-digit mantissa printed as "10⁻²" three
+    // times. Powers of ten still read 0.001, 0.01, 1e+05 (beautified to 10⁵).
+    axis->setNumberFormat(QStringLiteral("gb"));
+    axis->setNumberPrecision(3);
     axis->setLabel(label);
 }
 
@@ -260,14 +258,49 @@ WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QW
     m_duration = new QLineEdit(QStringLiteral("1"), m_options);
     m_reference = new QComboBox(m_options);
     m_reference->addItems({"auto", "exact", "rk4", "rk45"});
+    m_repeats = new QSpinBox(m_options);
+    m_repeats->setRange(1, 100);
+    m_repeats->setValue(3);
+    m_repeats->setToolTip(tr("Each point is timed this many times; the plot shows the median run time with a band "
+                             "from the first to the third quartile (the same binary runs at two speeds on a shared "
+                             "machine)"));
+    m_budget = new QLineEdit(m_options);
+    m_budget->setPlaceholderText(tr("none"));
+    m_budget->setToolTip(tr("A run that takes longer [s] is recorded as not reached (no error), and so is every "
+                            "costlier point of its integrator: the curve stops there"));
     form->addRow(tr("DT values [s]"), m_dts);
     form->addRow(tr("Duration T [s]"), m_duration);
     form->addRow(tr("Reference"), m_reference);
-    twoLogPanels(m_plot, tr("run time [s]"), tr("max position error [m]"), tr("DT [s]"), tr("max position error [m]"));
+    form->addRow(tr("Timed runs per point"), m_repeats);
+    form->addRow(tr("Time budget per run [s]"), m_budget);
+    m_cost = new QComboBox(m_options);
+    m_cost->setObjectName(QStringLiteral("costAxis"));
+    m_cost->addItem(tr("force evaluations"), int(Cost::ForceEvaluations));
+    m_cost->addItem(tr("run time (median, band q1–q3)"), int(Cost::WallTime));
+    m_cost->setToolTip(tr("The cost of a run on the left panel: the force evaluations it took (a count: the same on "
+                          "every machine and every run), or its run time, the median over the timed runs with a band "
+                          "from q1 to q3 (on a busy machine a curve can zigzag backwards)"));
+    form->addRow(tr("Cost axis"), m_cost);
+    twoLogPanels(m_plot, tr("force evaluations"), tr("max position error [m]"), tr("DT [s]"), tr("max position error [m]"));
+    connect(m_cost, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_result.rows.empty()) {
+            plotResult();
+        } else {
+            m_plot->axisRect(0)->axis(QCPAxis::atBottom)->setLabel(cost() == Cost::WallTime
+                                                                      ? tr("run time [s] (median, band q1–q3)")
+                                                                      : tr("force evaluations"));
+            m_plot->replot();
+        }
+    });
 }
+
+void WorkPrecisionDialog::setCost(Cost cost) { m_cost->setCurrentIndex(m_cost->findData(int(cost))); }
+WorkPrecisionDialog::Cost WorkPrecisionDialog::cost() const { return Cost(m_cost->currentData().toInt()); }
 
 void WorkPrecisionDialog::setSteps(const QString& dts) { m_dts->setText(dts); }
 void WorkPrecisionDialog::setDuration(double seconds) { m_duration->setText(QString::number(seconds)); }
+void WorkPrecisionDialog::setRepeats(int repeats) { m_repeats->setValue(repeats); }
+void WorkPrecisionDialog::setTimeBudget(const QString& seconds) { m_budget->setText(seconds); }
 
 simlab::StudySpec WorkPrecisionDialog::spec() const {
     simlab::StudySpec s;
@@ -276,6 +309,8 @@ simlab::StudySpec WorkPrecisionDialog::spec() const {
     for (const QString& t : m_dts->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) s.dts.push_back(t.toDouble());
     s.duration = m_duration->text().toDouble();
     s.reference = m_reference->currentText().toStdString();
+    s.repeat = m_repeats->value();
+    s.timeBudget = m_budget->text().trimmed().isEmpty() ? 0.0 : m_budget->text().toDouble();
     return s;
 }
 
@@ -294,47 +329,110 @@ void WorkPrecisionDialog::compute(const std::atomic<bool>* cancel) {
 
 void WorkPrecisionDialog::present() {
     const auto& rows = m_result.rows;
-    const QStringList headers = {tr("integrator"), tr("DT [s]"), tr("steps"), tr("force evals"), tr("run time [s]"),
-                                 tr("error at T [m]"), tr("max error [m]"), tr("energy error [J]"), tr("status")};
+    const QStringList headers = {tr("integrator"),      tr("family"),          tr("DT [s]"),
+                                 tr("steps"),           tr("force evals"),     tr("run time q1 [s]"),
+                                 tr("median [s]"),      tr("q3 [s]"),          tr("error at T [m]"),
+                                 tr("max error [m]"),   tr("RMS error [m]"),   tr("energy error [J]"),
+                                 tr("status")};
     QList<QStringList> cells;
-    for (const simlab::StudyRow& row : rows)
-        cells.append({QString::fromStdString(row.item.integrator), number(row.dt), QString::number(row.steps),
-                      QString::number(row.forceEvaluations), number(row.wallSeconds),
-                      row.ok ? number(row.errorFinal) : QString(), row.ok ? number(row.errorMax) : QString(),
-                      row.ok ? number(row.errorEnergy) : QString(), QString::fromStdString(row.status())});
-    fillTable(headers, cells);
-
-    m_plot->clearPlottables();
-    QCPAxisRect* left = m_plot->axisRect(0);
-    QCPAxisRect* right = m_plot->axisRect(1);
-    std::map<QString, std::pair<QCPGraph*, QCPGraph*>> graphs;
     for (const simlab::StudyRow& row : rows) {
-        if (!row.ok || !(row.errorMax > 0) || !(row.wallSeconds > 0)) continue;
-        const QString name = QString::fromStdString(row.item.integrator);
-        auto& g = graphs[name];
-        if (!g.first) {
-            const QPen pen(integratorColor(name), 1.6);
-            g.first = m_plot->addGraph(left->axis(QCPAxis::atBottom), left->axis(QCPAxis::atLeft));
-            g.second = m_plot->addGraph(right->axis(QCPAxis::atBottom), right->axis(QCPAxis::atLeft));
-            for (QCPGraph* graph : {g.first, g.second}) {
-                graph->setPen(pen);
-                graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 6));
-                graph->setName(name);
-            }
-            g.first->removeFromLegend();
-        }
-        g.first->addData(row.wallSeconds, row.errorMax);
-        g.second->addData(row.dt, row.errorMax);
+        const bool timed = !row.walls.empty();
+        cells.append({QString::fromStdString(row.item.integrator),
+                      QString::fromStdString(std::string(simcore::integratorFamily(row.item.integrator))),
+                      number(row.dt), QString::number(row.steps), QString::number(row.forceEvaluations),
+                      timed ? number(row.wallQ1) : QString(), timed ? number(row.wallSeconds) : QString(),
+                      timed ? number(row.wallQ3) : QString(), row.ok ? number(row.errorFinal) : QString(),
+                      row.ok ? number(row.errorMax) : QString(), row.ok ? number(row.errorRms) : QString(),
+                      row.ok ? number(row.errorEnergy) : QString(), QString::fromStdString(row.status())});
     }
-    rescaleLogPanels(m_plot);
+    fillTable(headers, cells);
+    plotResult();
 
-    QString summary = tr("Reference: %1 (its own error about %2 m).")
+    QString summary = tr("Reference: %1 (its own error about %2 m). Run time: median of %3 timed runs per point, "
+                         "band q1–q3.")
                           .arg(QString::fromStdString(m_result.reference.description))
-                          .arg(number(m_result.reference.estimatedError));
+                          .arg(number(m_result.reference.estimatedError))
+                          .arg(m_spec.repeat);
     for (const simlab::OrderFit& fit : simlab::fitOrders(rows, m_result.reference.estimatedError))
         if (fit.points >= 2)
-            summary += tr(" %1: order %2.").arg(QString::fromStdString(fit.integrator)).arg(fit.order, 0, 'f', 2);
+            summary += tr(" %1: order %2 (RMS %3).")
+                           .arg(QString::fromStdString(fit.integrator))
+                           .arg(fit.order, 0, 'f', 2)
+                           .arg(fit.orderRms, 0, 'f', 2);
     m_summary->setText(summary);
+}
+
+void WorkPrecisionDialog::plotResult() {
+    const auto& rows = m_result.rows;
+    // The left panel's cost: force evaluations (a count) or the run time (median, band q1-q3).
+    const bool wallTime = cost() == Cost::WallTime;
+    auto costOf = [wallTime](const simlab::StudyRow& r) {
+        return wallTime ? r.wallSeconds : static_cast<double>(r.forceEvaluations);
+    };
+    m_plot->clearPlottables();
+    QCPAxisRect* left = m_plot->axisRect(0);
+    left->axis(QCPAxis::atBottom)->setLabel(wallTime ? tr("run time [s] (median, band q1–q3)") : tr("force evaluations"));
+    QCPAxisRect* right = m_plot->axisRect(1);
+    struct Curve {
+        std::vector<const simlab::StudyRow*> points;
+    };
+    std::map<QString, Curve> curves;
+    QStringList order;
+    for (const simlab::StudyRow& row : rows) {
+        if (!row.ok || !(row.errorMax > 0) || !(costOf(row) > 0)) continue;
+        const QString name = QString::fromStdString(row.item.integrator);
+        if (!curves.count(name)) order << name;
+        curves[name].points.push_back(&row);
+    }
+    for (const QString& name : order) {
+        auto& points = curves[name].points;
+        std::sort(points.begin(), points.end(), [](auto* a, auto* b) { return a->dt < b->dt; });
+        const QColor colour = integratorColor(name);
+        int k = 0;
+        if (wallTime) {
+            // The band: from q1 to q3 of the timed runs at each point's error, a filled polygon.
+            auto* band = new QCPCurve(left->axis(QCPAxis::atBottom), left->axis(QCPAxis::atLeft));
+            for (const auto* r : points) band->addData(k++, r->wallQ1, r->errorMax);
+            for (auto it = points.rbegin(); it != points.rend(); ++it) band->addData(k++, (*it)->wallQ3, (*it)->errorMax);
+            QColor fill = colour;
+            fill.setAlpha(50);
+            band->setBrush(fill);
+            band->setPen(QPen(fill, 0.8));
+            band->setName(name + tr(" q1–q3"));
+            band->removeFromLegend();
+        }
+        QCPGraph* wall = m_plot->addGraph(left->axis(QCPAxis::atBottom), left->axis(QCPAxis::atLeft));
+        QCPGraph* step = m_plot->addGraph(right->axis(QCPAxis::atBottom), right->axis(QCPAxis::atLeft));
+        for (QCPGraph* graph : {wall, step}) {
+            graph->setPen(QPen(colour, 1.6));
+            graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 6));
+            graph->setName(QStringLiteral("%1 [%2]").arg(name, QString::fromStdString(std::string(
+                                                                    simcore::integratorFamily(name.toStdString())))));
+            graph->setLineStyle(QCPGraph::lsNone);  // the connecting line follows DT, drawn below
+        }
+        wall->removeFromLegend();
+        // Joined in order of DT (a QCPGraph sorts by x; run times need not be ordered).
+        auto* line = new QCPCurve(left->axis(QCPAxis::atBottom), left->axis(QCPAxis::atLeft));
+        line->setPen(QPen(colour, 1.6));
+        line->removeFromLegend();
+        k = 0;
+        for (const auto* r : points) {
+            wall->addData(costOf(*r), r->errorMax);
+            step->addData(r->dt, r->errorMax);
+            line->addData(k++, costOf(*r), r->errorMax);
+        }
+        step->setLineStyle(QCPGraph::lsLine);
+    }
+    // The fastest method of each family at each decade of error: ringed on the run-time panel.
+    const std::vector<simlab::FamilyBest> best = wallTime ? simlab::fastestByFamily(rows) : std::vector<simlab::FamilyBest>{};
+    if (!best.empty()) {
+        QCPGraph* rings = m_plot->addGraph(left->axis(QCPAxis::atBottom), left->axis(QCPAxis::atLeft));
+        rings->setName(tr("fastest of its family"));
+        rings->setLineStyle(QCPGraph::lsNone);
+        rings->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(Qt::black, 1.5), Qt::NoBrush, 13));
+        for (const simlab::FamilyBest& b : best) rings->addData(b.wallSeconds, b.error);
+    }
+    rescaleLogPanels(m_plot);
 }
 
 QString WorkPrecisionDialog::csv() const {
@@ -344,8 +442,130 @@ QString WorkPrecisionDialog::csv() const {
 }
 
 QString WorkPrecisionDialog::svg() const {
-    return QString::fromStdString(simlab::studySvg(m_result.rows, "work-precision: " +
-                                                                       std::string(simcore::sceneInfo(m_params.kind()).name)));
+    return QString::fromStdString(simlab::studySvg(m_result.rows,
+                                                    "work-precision: " + std::string(simcore::sceneInfo(m_params.kind()).name),
+                                                    simlab::referenceScale(m_result.reference), m_spec.duration));
+}
+
+// ---------------------------------------------------------------- long-time energy
+
+ConservationDialog::ConservationDialog(const simcore::ParameterSet& params, QWidget* parent)
+    : StudyDialogBase(tr("Long-time energy"), params, parent) {
+    setChosenIntegrators({QStringLiteral("verlet"), QStringLiteral("yoshida4"), QStringLiteral("rk4")});
+    auto* form = static_cast<QFormLayout*>(m_options->layout());
+    m_periods = new QLineEdit(QStringLiteral("1000"), m_options);
+    m_periods->setToolTip(tr("Run length in periods of the body's fastest mode (damping switched off)"));
+    m_dt = new QLineEdit(QString::number(params.get(simcore::Param::Dt)), m_options);
+    m_dt->setToolTip(tr("The fixed step of every run [s]"));
+    m_precision = new QComboBox(m_options);
+    m_precision->addItems({QStringLiteral("double"), QStringLiteral("float")});
+    m_precision->setToolTip(tr("float: the float build of the 1D spring, where round-off shows as a random walk"));
+    form->addRow(tr("Periods"), m_periods);
+    form->addRow(tr("DT [s]"), m_dt);
+    form->addRow(tr("Precision"), m_precision);
+    auto* rect = m_plot->axisRect();
+    setupLogAxis(rect->axis(QCPAxis::atBottom), tr("t [s]"));
+    setupLogAxis(rect->axis(QCPAxis::atLeft), tr("|energy error| envelope [J]"));
+    m_plot->legend->setVisible(true);
+    rect->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+}
+
+void ConservationDialog::setPeriods(double periods) { m_periods->setText(QString::number(periods)); }
+void ConservationDialog::setStep(double dt) { m_dt->setText(QString::number(dt)); }
+void ConservationDialog::setPrecision(const QString& precision) { m_precision->setCurrentText(precision); }
+
+simlab::ConservationSpec ConservationDialog::spec() const {
+    simlab::ConservationSpec s;
+    s.params = m_params;
+    s.integrators.clear();
+    for (const QString& name : chosenIntegrators()) s.integrators.push_back(name.toStdString());
+    s.periods = m_periods->text().toDouble();
+    s.dt = m_dt->text().toDouble();
+    s.precision = m_precision->currentText().toStdString();
+    return s;
+}
+
+QString ConservationDialog::validate() const {
+    if (auto problem = simlab::validateConservation(spec())) return QString::fromStdString(*problem);
+    return {};
+}
+
+void ConservationDialog::prepare() {
+    m_spec = spec();
+    m_error.clear();
+}
+
+void ConservationDialog::compute(const std::atomic<bool>* cancel) {
+    try {
+        m_result = simlab::runConservation(
+            m_spec, [this](int done, int total, const std::string& what) { setProgress(done, total, QString::fromStdString(what)); },
+            cancel);
+    } catch (const std::exception& e) {
+        m_result = simlab::ConservationResult{};
+        m_error = QString::fromStdString(e.what());
+    }
+}
+
+void ConservationDialog::present() {
+    const QStringList headers = {tr("integrator"), tr("α"),       tr("95 % interval"), tr("class"),
+                                 tr("final |ΔE| [J]"), tr("relative"), tr("steps"),        tr("status")};
+    QList<QStringList> cells;
+    for (const simlab::ConservationRow& row : m_result.rows)
+        cells.append({QString::fromStdString(row.integrator), row.ok ? QString::number(row.alpha, 'f', 3) : QString(),
+                      row.ok ? QStringLiteral("[%1, %2]").arg(row.alphaLo, 0, 'f', 3).arg(row.alphaHi, 0, 'f', 3) : QString(),
+                      QString::fromStdString(row.growth), row.ok ? number(row.finalError) : QString(),
+                      row.ok ? number(row.relativeError) : QString(), QString::number(row.steps),
+                      QString::fromStdString(row.status())});
+    fillTable(headers, cells);
+    m_plot->clearPlottables();
+    for (const simlab::ConservationRow& row : m_result.rows) {
+        QCPGraph* graph = m_plot->addGraph();
+        const QString name = QString::fromStdString(row.integrator);
+        graph->setPen(QPen(integratorColor(name), 1.8));
+        graph->setName(row.ok ? tr("%1: %2, α = %3").arg(name, QString::fromStdString(row.growth)).arg(row.alpha, 0, 'f', 2)
+                              : tr("%1: failed").arg(name));
+        for (auto [t, e] : row.curve)
+            if (t > 0 && e > 0) graph->addData(t, e);
+    }
+    // Reference slopes 1/2 (random walk) and 1 (drift) from the middle curve's first point.
+    if (!m_result.rows.empty()) {
+        const simlab::ConservationRow& mid = m_result.rows[m_result.rows.size() / 2];
+        for (auto [t0, e0] : mid.curve) {
+            if (!(e0 > 0) || !(t0 > 0)) continue;
+            const double t1 = m_result.duration;
+            for (double slope : {0.5, 1.0}) {
+                QCPGraph* ref = m_plot->addGraph();
+                ref->setPen(QPen(Qt::gray, 1.0, slope == 0.5 ? Qt::DotLine : Qt::DashLine));
+                ref->setName(slope == 0.5 ? tr("slope 1/2 (random walk)") : tr("slope 1 (drift)"));
+                ref->addData(t0, e0);
+                ref->addData(t1, e0 * std::pow(t1 / t0, slope));
+            }
+            break;
+        }
+    }
+    rescaleLogPanels(m_plot);
+    if (!m_error.isEmpty()) {
+        m_summary->setText(tr("The study did not run: %1").arg(m_error));
+        return;
+    }
+    m_summary->setText(tr("Undamped (%1). Fastest mode ω = %2 rad/s, period %3 s; DT = %4 s (h·ω = %5); %6 periods = "
+                          "%7 s. α: slope of log |ΔE| against log t from 10 periods on; bounded < 0.25 ≤ random walk "
+                          "< 0.75 ≤ drift.")
+                           .arg(QString::fromStdString(m_result.undamped), number(m_result.omegaMax),
+                                number(m_result.period), number(m_spec.dt), number(m_spec.dt * m_result.omegaMax))
+                           .arg(m_spec.periods)
+                           .arg(number(m_result.duration)));
+}
+
+QString ConservationDialog::csv() const {
+    std::string text = simlab::conservationCsvHeader();
+    for (const simlab::ConservationRow& row : m_result.rows) text += simlab::conservationCsvRow(row);
+    return QString::fromStdString(text);
+}
+
+QString ConservationDialog::svg() const {
+    return QString::fromStdString(simlab::conservationSvg(
+        m_result, "long-time energy: " + std::string(simcore::sceneInfo(m_params.kind()).name)));
 }
 
 // ---------------------------------------------------------------- refinement study
@@ -516,7 +736,7 @@ void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));
     m_rows.clear();
     if (cancel->load()) return;
-    m_modes = simlab::linearModes(m_params);
+    m_modes = simlab::stabilityModes(m_params);
     m_rows = simlab::runStability(
         m_spec, m_modes,
         [this](const simlab::StabilityProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },

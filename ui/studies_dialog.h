@@ -15,6 +15,7 @@
 #include <QDialog>
 
 #include "simcore/params.h"
+#include "simlab/conservation.h"
 #include "simlab/refinement.h"
 #include "simlab/stability.h"
 #include "simlab/study.h"
@@ -27,6 +28,7 @@ class QProgressBar;
 class QPushButton;
 class QTableWidget;
 class QComboBox;
+class QSpinBox;
 
 namespace elui {
 
@@ -97,6 +99,14 @@ public:
     const simlab::StudyResult& result() const { return m_result; }
     void setSteps(const QString& dts);
     void setDuration(double seconds);
+    void setRepeats(int repeats);              // timed runs of each point (the band: q1 to q3)
+    void setTimeBudget(const QString& seconds);  // "" = none
+    // The left panel's cost axis: force evaluations (the default: a count, the same on every
+    // machine and every run) or the run time, the median over the repeats with its q1-q3 band
+    // (noisy on a shared machine, where one curve can run backwards).
+    enum class Cost { ForceEvaluations, WallTime };
+    void setCost(Cost cost);
+    Cost cost() const;
 
 protected:
     void prepare() override;
@@ -111,8 +121,43 @@ private:
     QLineEdit* m_dts = nullptr;
     QLineEdit* m_duration = nullptr;
     QComboBox* m_reference = nullptr;
+    void plotResult();
+    QSpinBox* m_repeats = nullptr;
+    QLineEdit* m_budget = nullptr;
+    QComboBox* m_cost = nullptr;
     simlab::StudySpec m_spec;
     simlab::StudyResult m_result;
+};
+
+// Long-time energy (simlab/conservation.h, the CLI's `conservation`): the undamped scene for P
+// periods of its fastest mode at DT, |energy error| against t on log-log axes, the fitted growth
+// exponent and its class per integrator.
+class ConservationDialog : public StudyDialogBase {
+    Q_OBJECT
+public:
+    ConservationDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    ~ConservationDialog() override { stopAndWait(); }
+    const simlab::ConservationResult& result() const { return m_result; }
+    void setPeriods(double periods);
+    void setStep(double dt);
+    void setPrecision(const QString& precision);  // double | float
+
+protected:
+    void prepare() override;
+    void compute(const std::atomic<bool>* cancel) override;
+    void present() override;
+    QString csv() const override;
+    QString svg() const override;
+    QString validate() const override;
+
+private:
+    simlab::ConservationSpec spec() const;
+    QLineEdit* m_periods = nullptr;
+    QLineEdit* m_dt = nullptr;
+    QComboBox* m_precision = nullptr;
+    simlab::ConservationSpec m_spec;
+    simlab::ConservationResult m_result;
+    QString m_error;
 };
 
 // The refinement study: one integrator (rk4 checked at first), the levels of the scene's

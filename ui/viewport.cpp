@@ -119,7 +119,7 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
         f.setSamples(g_samples);
         setFormat(f);
     }
-    setMinimumSize(240, 200);
+    setMinimumSize(150, 150);  // three side by side beside the docks on a 1280 px projector
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     m_info = new QLabel(this);
@@ -213,7 +213,14 @@ void Viewport::showFrame(const FramePtr& frame) {
         }
     }
     m_frame = frame;
-    updateOverlay();
+    // The text over the view (time, distance, failure) is rich text laid out anew whenever it
+    // changes: while running, ten times a second is readable and spares the GUI thread a
+    // layout per frame; a paused, stepped or failed frame shows at once.
+    const bool failed = std::any_of(frame->lanes.begin(), frame->lanes.end(), [](const LaneFrame& l) { return l.failure.has_value(); });
+    if (!frame->running || failed || newScene || !m_overlayClock.isValid() || m_overlayClock.elapsed() >= 100) {
+        m_overlayClock.start();
+        updateOverlay();
+    }
     update();
 }
 

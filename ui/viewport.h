@@ -18,6 +18,7 @@
 #include <array>
 #include <memory>
 
+#include <QElapsedTimer>
 #include <QOpenGLBuffer>
 #include <QOpenGLFunctions_3_3_Core>
 #include <QOpenGLShaderProgram>
@@ -99,6 +100,7 @@ private:
     void drawSurface(const Elements& e, const QVector4D& color, bool lit);
     void drawPolygonStencil(const Elements& fan, const QVector4D& color);
     void drawBox();
+    QElapsedTimer m_overlayClock;  // the overlay's last refresh while running
     void updateOverlay();
     void layoutInfo();
     bool nearBody(const QPointF& pixel) const;

@@ -7,6 +7,9 @@
 #include <cstring>
 #include <iostream>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include "elastic_lab_version.h"
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
@@ -130,6 +133,39 @@ std::string stabilityWarning(const simcore::ParameterSet& params, std::string_vi
     return "warning: " + advice->message + suggestion;
 }
 
+// --- Output forms ------------------------------------------------------------------------------
+
+void addJsonFlag(CLI::App& app, bool& json) {
+    app.add_flag("--json", json, "print the result as JSON on standard output instead of text");
+}
+
+void printJsonText(const std::string& text) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fputc('\n', stdout);
+}
+
+namespace {
+// `--csv -`: the CSV goes to the standard output the tool was started with, through a copy of
+// that descriptor taken when the option is parsed; before the command runs, standard output is
+// pointed at standard error, so that the command's report (run's summary, study's table) never
+// mixes with the rows.
+int g_csvStdout = -1;
+}  // namespace
+
+CLI::Option* addCsvOption(CLI::App& app, std::string& path, const std::string& help) {
+    return app.add_option("--csv", path, help + " (- for standard output; the report then goes to standard error)")
+        ->type_name("FILE|-")
+        ->transform(CLI::Validator(
+            [](std::string& text) {
+                if (text != "-") return std::string();
+                if (g_csvStdout < 0) g_csvStdout = ::fcntl(1, F_DUPFD_CLOEXEC, 3);
+                if (g_csvStdout < 0) return std::string("cannot use standard output: ") + std::strerror(errno);
+                text = "/dev/fd/" + std::to_string(g_csvStdout);  // a pipe or terminal: written in place
+                return std::string();
+            },
+            ""));
+}
+
 // --- Files -------------------------------------------------------------------------------------
 
 void checkDistinctFiles(const std::vector<NamedPath>& inputsThenOutputs) {
@@ -172,7 +208,7 @@ std::unique_ptr<CLI::App> makeApp(std::vector<Command>& commands) {
     app->get_formatter()->column_width(34);
     app->footer("`elastic-lab-cli COMMAND --help` lists a command's options with units and defaults.\n"
                 "Exit status: 0 success, 2 bad input (one line naming the problem), 3 the simulation failed.");
-    for (auto add : {addScenesCommand, addParamsCommand, addIntegratorsCommand, addRunCommand, addStudyCommand,
+    for (auto add : {addScenesCommand, addParamsCommand, addIntegratorsCommand, addRunCommand, addStudyCommand, addConservationCommand, addSweepCommand,
                      addStabilityCommand, addRestitutionCommand, addGalleryCommand, addBenchCommand,
                      addCompletionCommand})
         commands.push_back(add(*app));
@@ -230,6 +266,8 @@ int runCommandLine(const std::vector<std::string>& argsIn, Mode mode) {
         args.erase(args.begin());
         args.emplace_back("--help");
     }
+    if (g_csvStdout >= 0) ::close(g_csvStdout);  // a previous call's (the fuzz target calls again)
+    g_csvStdout = -1;
     std::vector<Command> commands;
     const std::unique_ptr<CLI::App> app = makeApp(commands);
     try {
@@ -250,6 +288,10 @@ int runCommandLine(const std::vector<std::string>& argsIn, Mode mode) {
         try {
             command.check();
             if (mode == Mode::CheckOnly) return kExitOk;
+            if (g_csvStdout >= 0) {  // --csv -: the report to standard error
+                std::fflush(stdout);
+                ::dup2(2, 1);
+            }
             const int status = command.run();
             return stdoutWritten() ? status : kExitBadInput;
         } catch (const UsageError& e) {

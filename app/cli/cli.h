@@ -77,6 +77,17 @@ std::string sceneFileOf(const SceneArgs& args);
 // Integrator tunables: --atol, --rtol, --newton, --fixed-step, --error-estimate.
 void addIntegratorOptions(CLI::App& app, simcore::IntegratorOptions& options);
 
+// --json: print the command's result as JSON on standard output (instead of text).
+void addJsonFlag(CLI::App& app, bool& json);
+// Writes a JSON value (nlohmann::ordered_json, passed as its text) and a newline to stdout.
+void printJsonText(const std::string& text);
+template <class Json>
+void printJson(const Json& value) {
+    printJsonText(value.dump(2));
+}
+// A CSV output option: FILE, or - for standard output (written in place, never replaced).
+CLI::Option* addCsvOption(CLI::App& app, std::string& path, const std::string& help);
+
 // Number validators for CLI11 options: finite numbers in a range, whole numbers in a range.
 CLI::Validator finiteIn(double min, double max, bool minExclusive);
 CLI::Validator wholeIn(long min, long max);
@@ -104,6 +115,8 @@ Command addParamsCommand(CLI::App& app);
 Command addIntegratorsCommand(CLI::App& app);
 Command addRunCommand(CLI::App& app);
 Command addStudyCommand(CLI::App& app);
+Command addConservationCommand(CLI::App& app);
+Command addSweepCommand(CLI::App& app);
 Command addStabilityCommand(CLI::App& app);
 Command addRestitutionCommand(CLI::App& app);
 Command addGalleryCommand(CLI::App& app);

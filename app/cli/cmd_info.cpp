@@ -3,6 +3,8 @@
 #include <iostream>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/cli.h"
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
@@ -14,21 +16,42 @@ namespace cli {
 
 Command addScenesCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("scenes", "list the built-in scenes");
-    return {sub, [] {}, [] {
-                for (const simcore::SceneInfo& s : simcore::sceneTable())
-                    std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
-                for (const simcore::WorldSceneInfo& s : simcore::worldSceneTable())
-                    std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
+    auto json = std::make_shared<bool>(false);
+    addJsonFlag(*sub, *json);
+    return {sub, [] {}, [json] {
+                nlohmann::ordered_json list = nlohmann::ordered_json::array();
+                for (const simcore::SceneInfo& s : simcore::sceneTable()) {
+                    if (*json)
+                        list.push_back({{"name", s.name}, {"description", s.description}, {"gas", simcore::hasGas(s.kind)}});
+                    else
+                        std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
+                }
+                for (const simcore::WorldSceneInfo& s : simcore::worldSceneTable()) {
+                    if (*json)
+                        list.push_back({{"name", s.name}, {"description", s.description}, {"gas", true},
+                                        {"bodies", simcore::worldScene(s.name)->bodies.size()}});
+                    else
+                        std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
+                }
+                if (*json) printJson(list);
                 return kExitOk;
             }};
 }
 
 Command addIntegratorsCommand(CLI::App& app) {
-    CLI::App* sub = app.add_subcommand("integrators", "list the integrators with their order");
-    return {sub, [] {}, [] {
-                for (const simcore::IntegratorInfo& i : simcore::integratorTable())
-                    std::printf("%-18s order %d  %s\n", std::string(i.name).c_str(), i.order,
-                                std::string(i.description).c_str());
+    CLI::App* sub = app.add_subcommand("integrators", "list the integrators with their order and family");
+    auto json = std::make_shared<bool>(false);
+    addJsonFlag(*sub, *json);
+    return {sub, [] {}, [json] {
+                nlohmann::ordered_json list = nlohmann::ordered_json::array();
+                for (const simcore::IntegratorInfo& i : simcore::integratorTable()) {
+                    if (*json)
+                        list.push_back({{"name", i.name}, {"order", i.order}, {"family", i.family}, {"description", i.description}});
+                    else
+                        std::printf("%-18s order %-2d %-12s %s\n", std::string(i.name).c_str(), i.order,
+                                    std::string(i.family).c_str(), std::string(i.description).c_str());
+                }
+                if (*json) printJson(list);
                 return kExitOk;
             }};
 }
@@ -41,6 +64,7 @@ struct ParamsArgs {
     std::optional<simcore::SceneKind> kind;
     std::optional<simcore::ParameterSet> params;  // the scene's, after --set
     std::optional<simcore::WorldSpec> world;      // a scene of several bodies, after --set
+    bool json = false;
 };
 
 // A scene of several bodies: the world's shared values, then what each body uses.
@@ -68,6 +92,57 @@ int listWorldParams(const simcore::WorldSpec& spec) {
     return kExitOk;
 }
 
+// --json for a scene of several bodies: {"world": {key: value}, "bodies": [{"kind", "position",
+// "velocity", key: value...}]}, the values after --set.
+int listWorldParamsJson(const simcore::WorldSpec& spec) {
+    const simcore::ParameterSet& lead = spec.bodies.front().params;
+    nlohmann::ordered_json world = nlohmann::ordered_json::object();
+    for (const simcore::ParamSpec* s : simcore::parametersFor(lead.kind()))
+        if (simcore::isWorldParameter(s->id)) world[std::string(s->key)] = lead.get(s->id);
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+    for (const simcore::WorldBodySpec& b : spec.bodies) {
+        nlohmann::ordered_json body = {{"kind", simcore::sceneInfo(b.params.kind()).name},
+                                       {"position", {b.position.x(), b.position.y(), b.position.z()}},
+                                       {"velocity", {b.velocity.x(), b.velocity.y(), b.velocity.z()}}};
+        for (const simcore::ParamSpec* s : simcore::parametersFor(b.params.kind()))
+            if (!simcore::isWorldParameter(s->id)) body[std::string(s->key)] = b.params.get(s->id);
+        bodies.push_back(body);
+    }
+    printJson(nlohmann::ordered_json{{"scene", spec.name}, {"world", world}, {"bodies", bodies}});
+    return kExitOk;
+}
+
+// --json: the same listing as a JSON array (defaults as numbers; an inherited default as null
+// with "inherits": the key it follows; choices as a list of names).
+int listParamsJson(const ParamsArgs& args, const std::vector<const simcore::ParamSpec*>& specs) {
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const simcore::ParamSpec* s : specs) {
+        nlohmann::ordered_json p = {{"key", s->key}, {"unit", s->unit}};
+        if (s->inherits != simcore::Param::Count) {
+            p["default"] = nullptr;
+            p["inherits"] = simcore::paramSpec(s->inherits).key;
+        } else {
+            p["default"] = args.kind ? s->defaultFor(*args.kind) : s->defaultValue;
+        }
+        p["min"] = s->minValue;
+        p["max"] = s->maxValue;
+        p["min_exclusive"] = s->minExclusive;
+        p["integer"] = s->integer;
+        nlohmann::ordered_json choices = nlohmann::ordered_json::array();
+        for (std::string_view rest = s->choices; !rest.empty();) {
+            const auto bar = rest.find('|');
+            choices.push_back(rest.substr(0, bar));
+            rest = bar == std::string_view::npos ? std::string_view{} : rest.substr(bar + 1);
+        }
+        p["choices"] = choices;
+        p["meaning"] = s->meaning;
+        if (args.kind) p["value"] = args.params->get(s->id);  // after --set
+        list.push_back(p);
+    }
+    printJson(list);
+    return kExitOk;
+}
+
 int listParams(const ParamsArgs& args) {
     std::vector<const simcore::ParamSpec*> specs;
     const std::optional<simcore::SceneKind> kind = args.kind;
@@ -76,6 +151,7 @@ int listParams(const ParamsArgs& args) {
     } else {
         for (const simcore::ParamSpec& s : simcore::parameterTable()) specs.push_back(&s);
     }
+    if (args.json) return listParamsJson(args, specs);
     std::printf("%-15s %-7s %-12s %-22s %s\n", "key", "unit", "default", "range", "meaning");
     for (const simcore::ParamSpec* s : specs) {
         std::string def;
@@ -118,6 +194,7 @@ Command addParamsCommand(CLI::App& app) {
         ->type_name("KEY=VALUE")
         ->allow_extra_args(false)
         ->needs(scene);
+    addJsonFlag(*sub, args->json);
     return {sub,
             [args] {
                 if (!args->scene) return;
@@ -138,7 +215,10 @@ Command addParamsCommand(CLI::App& app) {
                 if (auto error = simcore::validateShape(params)) throw UsageError(*error);
                 args->params = std::move(params);
             },
-            [args] { return args->world ? listWorldParams(*args->world) : listParams(*args); }};
+            [args] {
+                if (args->world) return args->json ? listWorldParamsJson(*args->world) : listWorldParams(*args->world);
+                return listParams(*args);
+            }};
 }
 
 }  // namespace cli

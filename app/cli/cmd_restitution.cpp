@@ -62,7 +62,7 @@ Command addRestitutionCommand(CLI::App& app) {
                                                       "impact speed (weightless), beside the restitution e");
     addSceneOptions(*sub, args->scene);
     sub->add_option("--speeds", args->speeds, "comma-separated impact speeds [m/s]")->type_name("v1,v2,...")->capture_default_str();
-    sub->add_option("--csv", args->csv, "write one row per speed")->type_name("FILE");
+    addCsvOption(*sub, args->csv, "write one row per speed");
     return {sub, [args] { checkRestitution(*args); }, [args] { return runRestitution(*args); }};
 }
 

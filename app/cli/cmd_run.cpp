@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/cli.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
@@ -53,13 +55,56 @@ void printSummary(const simcore::Simulation& sim, const SceneSetup& setup, doubl
     }
 }
 
+// --json: the summary as one JSON object (SI units, as the text's), whatever the run's end:
+// "status" is ok, failed (with "failure": reason, step, time) or stopped (--max-steps).
+void printSummaryJson(const simcore::Simulation& sim, const SceneSetup& setup, double wallSeconds, const std::string& status) {
+    const simcore::Diagnostics& d = sim.diagnostics();
+    const simcore::Topology& topo = sim.topology();
+    nlohmann::ordered_json j = {
+        {"scene", setup.sceneName},
+        {"particles", topo.particleCount()},
+        {"springs", topo.springCount()},
+        {"surfaces", topo.surfaces.size()},
+        {"integrator", sim.integrator().name()},
+        {"dt", sim.dt()},
+        {"steps", d.step},
+        {"t", d.time},
+        {"status", status},
+    };
+    if (sim.failure())
+        j["failure"] = {{"reason", sim.failure()->reason}, {"step", sim.failure()->step}, {"time", sim.failure()->time}};
+    nlohmann::ordered_json energy = {{"kinetic", d.kinetic}, {"spring", d.springTotal()}, {"gravity", d.gravity}};
+    if (d.hasGas) energy["gas"] = d.gas;
+    if (!sim.contactProjection()) energy["contact"] = d.contact;
+    energy["total"] = d.total();
+    j["energy"] = energy;
+    j["removed"] = sim.contactProjection()
+                       ? nlohmann::ordered_json{{"damping", d.removedDamping}, {"collisions", d.removedCollisions}}
+                       : nlohmann::ordered_json{{"damping", d.removedDamping}, {"contact", d.removedContact}};
+    j["energy_drift"] = d.energyDrift();
+    if (d.hasGas)
+        j["layers"] = {{"volume_inner", d.volume[0]}, {"volume_outer", d.volume[1]},
+                       {"pressure_inner", d.pressure[0]}, {"pressure_outer", d.pressure[1]}};
+    j["cost"] = {{"force_evaluations", d.forceEvaluations}, {"wall_seconds", wallSeconds},
+                 {"steps_per_second", wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0}};
+    if (d.hasSolverCounters) {
+        const simcore::SolverCounters& c = d.solver;
+        j["solver"] = {{"steps", c.steps}, {"rhs_evaluations", c.rhsEvaluations}, {"jacobian_products", c.jacobianProducts},
+                       {"linear_iterations", c.linearIterations}, {"preconditioner_iterations", c.preconditionerIterations},
+                       {"nonlinear_iterations", c.nonlinearIterations}, {"error_test_failures", c.errorTestFailures},
+                       {"convergence_failures", c.convergenceFailures}, {"reinitialisations", c.reinitialisations},
+                       {"order", c.order}, {"step", c.step}};
+    }
+    printJson(j);
+}
+
 struct RunArgs {
     SceneArgs scene;
     double duration = 5.0;
     long every = 1;
     double maxSteps = kMaxSteps;
     std::string csv, state, saveScene;
-    bool quiet = false;
+    bool quiet = false, json = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
     // A scene of several bodies (collide2d, collide3d, stack3d), after check().
@@ -173,6 +218,33 @@ void printWorldSummary(const simcore::World& world, double wallSeconds) {
                 wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0);
 }
 
+// --json for a scene of several bodies: the world's totals, then each body's.
+void printWorldSummaryJson(const simcore::World& world, double wallSeconds, const std::string& status) {
+    const simcore::WorldDiagnostics& d = world.diagnostics();
+    const auto vec = [](const Eigen::Vector3d& v) { return nlohmann::ordered_json{v.x(), v.y(), v.z()}; };
+    nlohmann::ordered_json j = {{"scene", world.spec().name}, {"bodies_count", world.bodyCount()},
+                                {"particles", world.particleCount()}, {"integrator", world.integrator().name()},
+                                {"dt", world.dt()}, {"steps", d.step}, {"t", d.time}, {"status", status}};
+    if (world.failed())
+        j["failure"] = {{"reason", *world.failure()}, {"step", world.failedStep()}, {"time", world.failedTime()}};
+    j["energy"] = {{"kinetic", d.kinetic}, {"spring", d.springTotal()}, {"gravity", d.gravity}, {"gas", d.gas},
+                   {"contact", d.contact}, {"contact_bodies", d.contactPairs}, {"total", d.total()}};
+    j["removed"] = {{"damping", d.removedDamping}, {"contact", d.removedContact}};
+    j["energy_drift"] = d.energyDrift();
+    j["momentum"] = vec(d.momentum);
+    j["angular_momentum"] = vec(d.angularMomentum);
+    j["min_gap"] = d.minGap;
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+    for (const simcore::BodyDiagnostics& b : d.bodies)
+        bodies.push_back({{"mass", b.mass}, {"com", vec(b.com)}, {"velocity", vec(b.velocity)},
+                          {"volume_inner", b.volume[0]}, {"volume_outer", b.volume[1]},
+                          {"pressure_inner", b.pressure[0]}, {"pressure_outer", b.pressure[1]}});
+    j["bodies"] = bodies;
+    j["cost"] = {{"force_evaluations", d.forceEvaluations}, {"wall_seconds", wallSeconds},
+                 {"steps_per_second", wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0}};
+    printJson(j);
+}
+
 int runWorld(const RunArgs& args) {
     const Outputs files = openOutputs(args);
     std::optional<simcore::World> built;
@@ -197,7 +269,10 @@ int runWorld(const RunArgs& args) {
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (files[1]) files[1]->write(simlab::stateTable(world));
     if (!commitOutputs(files)) return kExitBadInput;
-    if (!args.quiet) printWorldSummary(world, wall);
+    if (args.json)
+        printWorldSummaryJson(world, wall, world.failed() ? "failed" : tooManySteps ? "stopped" : "ok");
+    else if (!args.quiet)
+        printWorldSummary(world, wall);
     if (tooManySteps) {
         std::fprintf(stderr, "run stopped at step %ld, t = %g s: %.0f steps taken, the most one run may take "
                              "(--max-steps); the files hold the run so far\n",
@@ -242,7 +317,10 @@ int run(const RunArgs& args) {
     if (state) state->write(simlab::stateTable(sim));
     if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
     if (!commitOutputs(files)) return kExitBadInput;
-    if (!args.quiet) printSummary(sim, setup, wall);
+    if (args.json)
+        printSummaryJson(sim, setup, wall, sim.failed() ? "failed" : tooManySteps ? "stopped" : "ok");
+    else if (!args.quiet)
+        printSummary(sim, setup, wall);
     // The rule for the last step: a fixed-step run takes whole steps until t >= the end, so a
     // duration that is not a multiple of dt ends past it; it is said, never silent.
     if (!sim.failed() && sim.time() > tEnd + 1e-9 * sim.dt())
@@ -278,7 +356,7 @@ Command addRunCommand(CLI::App& app) {
         ->type_name("T")
         ->check(finiteIn(0.0, 1e7, true))
         ->capture_default_str();
-    sub->add_option("--csv", args->csv, "write the time series (one row per --every steps and the last)")->type_name("FILE");
+    addCsvOption(*sub, args->csv, "write the time series (one row per --every steps and the last)");
     sub->add_option("--every", args->every, "CSV row every N steps")->type_name("N")->check(wholeIn(1, 1000000000L))->capture_default_str();
     sub->add_option("--state", args->state, "write the final state: index, layer, position, velocity")->type_name("FILE");
     sub->add_option("--save-scene", args->saveScene, "save the experiment with its final state as a scene file")
@@ -289,6 +367,7 @@ Command addRunCommand(CLI::App& app) {
         ->check(finiteIn(1.0, 1e12, false))
         ->default_str("1e9");
     sub->add_flag("--quiet", args->quiet, "no summary on standard output");
+    addJsonFlag(*sub, args->json);
     addIntegratorOptions(*sub, args->integrator);
     return {sub, [args] { checkRun(*args); }, [args] { return run(*args); }};
 }

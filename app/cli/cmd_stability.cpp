@@ -62,22 +62,29 @@ int runStability(const StabilityArgs& args) {
     }
     simcore::ParameterSet linearised = spec.params;
     if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
-    const simlab::LinearModes modes = simlab::linearModes(linearised);
+    // The one verdict's linearisation (at the rest shape, as the GUI's banners and map): the
+    // trials below start perturbed, the prediction does not.
+    const simlab::LinearModes modes = simlab::stabilityModes(spec.params);
     const bool quiet = args.quiet;
     if (!quiet) {
-        std::printf("scene        %s, T = %g s, start perturbed by %g m (seed %g)\n", setup.sceneName.c_str(),
+        std::printf("scene        %s, T = %g s, trials start perturbed by %g m (seed %g); the prediction is "
+                    "linearised at the unperturbed rest shape\n", setup.sceneName.c_str(),
                     spec.duration, linearised.get(simcore::Param::Perturb), linearised.get(simcore::Param::Seed));
         std::printf("linearised   %d free coordinates (%s); highest frequency w_max = %.4g rad/s "
                     "(period %.4g s), its damping c = %.4g 1/s (zeta = %.3g); fastest modal damping %.4g 1/s",
-                    modes.freeCoordinates, modes.dense ? "all modes" : "power iteration, highest mode only",
+                    modes.freeCoordinates, modes.dense ? "all modes" : "power iteration, highest mode only; Arnoldi spectrum",
                     modes.omegaMax, modes.omegaMax > 0 ? 2 * M_PI / modes.omegaMax : 0.0, modes.dampingAtMax,
                     modes.omegaMax > 0 ? modes.dampingAtMax / (2 * modes.omegaMax) : 0.0, modes.fastestDamping);
         if (modes.unstableModes) std::printf("; %d physically unstable modes excluded", modes.unstableModes);
         std::printf("\n");
-        if (!modes.eigenvalues.empty())
-            std::printf("eigenvalues  exact for the first-order system (used for euler, midpoint, rk4, rk45; the "
-                        "partitioned methods use the modes): fastest lambda = %.4g %+.4gi 1/s\n",
-                        modes.fastest.real(), std::abs(modes.fastest.imag()));
+        {
+            // The verdict's spectrum (what every door predicts from).
+            const simlab::StabilityVerdict v = simlab::stabilityVerdict(modes, "rk4", 0.0);
+            std::printf("eigenvalues  %s of the first-order system (the prediction of every method; the "
+                        "partitioned ones use the exact step matrix up to %d coordinates): fastest lambda = %.4g "
+                        "%+.4gi 1/s\n",
+                        v.basis.c_str(), simlab::kExactStepLimit, v.fastest.real(), std::abs(v.fastest.imag()));
+        }
         // Each method's region, summarised by its limit on one undamped mode (w = 1) and on a
         // purely damped one (real axis), computed from the same functions as the prediction.
         std::printf("regions      limit of h*w on an undamped mode / of h*c on a pure decay rate c:");
@@ -143,7 +150,7 @@ Command addStabilityCommand(CLI::App& app) {
     sub->add_option("--hmin", args->hMin, "smallest dt scanned [s]")->type_name("H")->check(finiteIn(0.0, 1.0, true))->capture_default_str();
     sub->add_option("--hmax", args->hMax, "largest dt scanned [s]")->type_name("H")->check(finiteIn(0.0, 1.0, true))->capture_default_str();
     sub->add_option("--shard", args->shard, "scan the K-th of N equal parts of the integrators (1-based)")->type_name("K/N");
-    sub->add_option("--csv", args->csv, "write one row per integrator")->type_name("FILE");
+    addCsvOption(*sub, args->csv, "write one row per integrator");
     sub->add_flag("--quiet", args->quiet, "no table on standard output");
     return {sub, [args] { checkStability(*args); }, [args] { return runStability(*args); }};
 }

@@ -19,12 +19,12 @@ namespace {
 
 struct StudyArgs {
     SceneArgs scene;
-    std::optional<std::string> integrators, dts, tols, reference, shard, refine, title;
+    std::optional<std::string> integrators, dts, tols, reference, shard, refine, title, precision;
     std::optional<double> duration;
     int repeat = 1, samples = 20, temporalRuns = 4;
-    double interval = 0.01;
-    std::string csv, plot, fromCsv;
-    bool fixedStep = false, quiet = false;
+    double interval = 0.01, timeBudget = 0.0;
+    std::string csv, plot, fromCsv, timings;
+    bool fixedStep = false, quiet = false, compensated = false;
     // After check():
     SceneSetup setup;
     simlab::StudySpec study;
@@ -32,14 +32,33 @@ struct StudyArgs {
 };
 
 void printOrders(const std::vector<simlab::StudyRow>& rows, double referenceError) {
-    std::printf("fitted convergence order (slope of log error_max against log dt over the 3 smallest resolved steps):\n");
+    std::printf("fitted convergence order (slope of log error against log dt over the 3 smallest resolved steps),\n"
+                "per error measure:\n");
+    std::printf("  %-24s %10s %10s %10s  %s\n", "curve", "error_max", "error_fin", "error_rms", "nominal");
+    auto cell = [](double order, int points) {
+        char text[32];
+        if (std::isfinite(order)) std::snprintf(text, sizeof text, "%.2f (%d)", order, points);
+        else std::snprintf(text, sizeof text, "- (%d)", points);
+        return std::string(text);
+    };
     for (const simlab::OrderFit& fit : simlab::fitOrders(rows, referenceError)) {
-        auto method = simcore::makeIntegrator(fit.integrator);
+        auto method = simcore::makeIntegrator(fit.integrator.substr(0, fit.integrator.find(' ')));
         const int nominal = method ? method->order() : 0;
-        if (std::isfinite(fit.order))
-            std::printf("  %-17s %5.2f  (%d points; nominal %d)\n", fit.integrator.c_str(), fit.order, fit.points, nominal);
-        else
-            std::printf("  %-17s   -    (%d usable points; nominal %d)\n", fit.integrator.c_str(), fit.points, nominal);
+        std::printf("  %-24s %10s %10s %10s  %d\n", fit.integrator.c_str(), cell(fit.order, fit.points).c_str(),
+                    cell(fit.orderFinal, fit.pointsFinal).c_str(), cell(fit.orderRms, fit.pointsRms).c_str(), nominal);
+    }
+}
+
+void printFastest(const std::vector<simlab::StudyRow>& rows) {
+    const auto best = simlab::fastestByFamily(rows);
+    if (best.empty()) return;
+    std::printf("\nfastest of each family at each accuracy (error_max reached; median wall time, log-log interpolated):\n");
+    double level = -1.0;
+    for (const simlab::FamilyBest& b : best) {
+        if (b.error != level) std::printf("  error %-8.0e", b.error), level = b.error;
+        else std::printf("  %-14s", "");
+        std::printf(" %-12s %-22s %10.3g s %12.4g evals\n", b.family.c_str(), b.integrator.c_str(), b.wallSeconds,
+                    b.forceEvaluations);
     }
 }
 
@@ -175,13 +194,18 @@ int runFromCsv(const StudyArgs& args) {
     const auto rows = simlab::parseStudyCsv(input.text, &error);
     if (!rows) throw UsageError(simcore::quoteShort(args.fromCsv, 200) + ": " + error);
     printOrders(*rows, 0.0);
+    printFastest(*rows);
     if (!args.plot.empty() && !writeFile(args.plot, simlab::studySvg(*rows, args.title.value_or("work-precision"))))
         return kExitBadInput;
     return kExitOk;
 }
 
 void checkStudy(StudyArgs& args) {
-    checkDistinctFiles({{"scene", sceneFileOf(args.scene)}, {"from-csv", args.fromCsv}, {"csv", args.csv}, {"plot", args.plot}});
+    checkDistinctFiles({{"scene", sceneFileOf(args.scene)},
+                        {"from-csv", args.fromCsv},
+                        {"csv", args.csv},
+                        {"plot", args.plot},
+                        {"timings", args.timings}});
     if (args.refine) return checkRefinement(args);
     if (!args.fromCsv.empty()) return;
     args.setup = sceneSetup(args.scene);
@@ -192,6 +216,9 @@ void checkStudy(StudyArgs& args) {
     if (args.tols) spec.tolerances = numberList("tols", *args.tols);
     spec.duration = args.duration.value_or(2.0);
     spec.repeat = args.repeat;
+    spec.timeBudget = args.timeBudget;
+    if (args.precision) spec.precisions = nameList("precision", *args.precision);
+    spec.compensated = args.compensated;
     spec.samples = args.samples;
     spec.reference = args.reference.value_or("auto");
     spec.options.fixedStep = args.fixedStep;
@@ -219,15 +246,23 @@ int runStudy(const StudyArgs& args) {
     const simlab::StudySpec& spec = args.study;
     const SceneSetup& setup = args.setup;
     std::unique_ptr<simlab::AtomicFile> csv = openCsv(args.csv);
+    std::unique_ptr<simlab::AtomicFile> timings = openCsv(args.timings);
     const bool quiet = args.quiet;
     const auto items = simlab::shardItems(simlab::studyItems(spec), spec.shardIndex, spec.shardCount);
-    if (!quiet)
-        std::printf("study        %s, T = %g s, %zu runs%s, timing: median of %d\n", setup.sceneName.c_str(),
-                    spec.duration, items.size(),
+    if (!quiet) {
+        std::printf("study        %s, T = %g s, %zu runs%s, timing: %d run%s of each point (median, quartiles)\n",
+                    setup.sceneName.c_str(), spec.duration, items.size(),
                     spec.shardCount > 1 ? (" (shard " + std::to_string(spec.shardIndex + 1) + "/" +
                                            std::to_string(spec.shardCount) + ")").c_str()
                                         : "",
-                    spec.repeat);
+                    spec.repeat, spec.repeat == 1 ? "" : "s");
+        if (spec.timeBudget > 0)
+            std::printf("budget       a run longer than %g s is not reached, nor any costlier point of its curve\n",
+                        spec.timeBudget);
+        if (std::find(spec.precisions.begin(), spec.precisions.end(), "float") != spec.precisions.end())
+            std::printf("float        the float build of the reference problem (spring1d)%s\n",
+                        spec.compensated ? ", compensated (Kahan) state update" : "");
+    }
     simlab::StudyReference reference;
     try {
         reference = simlab::computeReference(spec);
@@ -239,19 +274,22 @@ int runStudy(const StudyArgs& args) {
         std::printf("reference    %s; its estimated error at T: %.3g m (errors below ~10x this are not resolved)\n",
                     reference.description.c_str(), reference.estimatedError);
         std::printf("grid         %zu output times for error_max\n\n", reference.times.size());
-        std::printf("%-17s %-11s %8s %11s %11s %11s %11s %11s  %s\n", "integrator", "dt", "steps", "force_evals",
-                    "wall_s", "error_final", "error_max", "err_energy", "status");
+        std::printf("%-24s %-11s %8s %11s %10s %10s %10s %11s %11s %11s %11s  %s\n", "integrator", "dt", "steps",
+                    "force_evals", "wall_q1", "wall_med", "wall_q3", "error_final", "error_max", "error_rms",
+                    "err_energy", "status");
     }
     std::vector<simlab::StudyRow> rows;
     for (const simlab::StudyItem& item : items) {
-        simlab::StudyRow row = simlab::runStudyItem(spec, item, reference);
+        simlab::StudyRow row = simlab::runStudyPoint(spec, item, reference, rows);
         if (!quiet) {
-            std::printf("%-17s %-11.4g %8ld %11llu %11.4g ", item.integrator.c_str(), row.dt, row.steps,
-                        static_cast<unsigned long long>(row.forceEvaluations), row.wallSeconds);
+            std::printf("%-24s %-11.4g %8ld %11llu ", row.label().c_str(), row.dt, row.steps,
+                        static_cast<unsigned long long>(row.forceEvaluations));
+            if (row.walls.empty()) std::printf("%10s %10s %10s ", "-", "-", "-");
+            else std::printf("%10.4g %10.4g %10.4g ", row.wallQ1, row.wallSeconds, row.wallQ3);
             if (row.ok)
-                std::printf("%11.4g %11.4g %11.4g  ok", row.errorFinal, row.errorMax, row.errorEnergy);
+                std::printf("%11.4g %11.4g %11.4g %11.4g  ok", row.errorFinal, row.errorMax, row.errorRms, row.errorEnergy);
             else
-                std::printf("%11s %11s %11s  %s (%s)", "-", "-", "-", row.status().c_str(), row.failure.c_str());
+                std::printf("%11s %11s %11s %11s  %s (%s)", "-", "-", "-", "-", row.status().c_str(), row.failure.c_str());
             if (item.tolerance > 0) std::printf("  [tol %g]", item.tolerance);
             std::printf("\n");
             std::fflush(stdout);
@@ -261,6 +299,7 @@ int runStudy(const StudyArgs& args) {
     if (!quiet) {
         std::printf("\n");
         printOrders(rows, reference.estimatedError);
+        printFastest(rows);
     }
     if (csv) {
         if (spec.shardIndex == 0) csv->write(simlab::studyCsvHeader());  // shards after the first append rows only
@@ -270,10 +309,19 @@ int runStudy(const StudyArgs& args) {
             return kExitBadInput;
         }
     }
+    if (timings) {
+        if (spec.shardIndex == 0) timings->write(simlab::studyTimingsCsvHeader());
+        for (const auto& row : rows) timings->write(simlab::studyTimingsCsvRows(row));
+        if (!timings->commit()) {
+            std::fprintf(stderr, "error: %s\n", timings->error().c_str());
+            return kExitBadInput;
+        }
+    }
     if (!args.plot.empty()) {
         const std::string title =
             args.title.value_or(setup.sceneName + ": error against cost, T = " + simlab::formatDouble(spec.duration) + " s");
-        if (!writeFile(args.plot, simlab::studySvg(rows, title))) return kExitBadInput;
+        if (!writeFile(args.plot, simlab::studySvg(rows, title, simlab::referenceScale(reference), spec.duration)))
+            return kExitBadInput;
     }
     return kExitOk;
 }
@@ -306,7 +354,8 @@ Command addStudyCommand(CLI::App& app) {
                                 ->type_name("T")
                                 ->check(finiteIn(0.0, 1e6, true))
                                 ->default_str("2; 1 with --refine");
-    CLI::Option* repeat = sub->add_option("--repeat", args->repeat, "time each run R times and keep the median wall time")
+    CLI::Option* repeat = sub->add_option("--repeat", args->repeat, "time each run R times: every wall time is kept "
+                                                                    "(--timings), each point reports min, quartiles, median")
                               ->type_name("R")
                               ->check(wholeIn(1, 1000))
                               ->capture_default_str();
@@ -322,7 +371,23 @@ Command addStudyCommand(CLI::App& app) {
     CLI::Option* shard = sub->add_option("--shard", args->shard, "run the K-th of N equal parts of the sweep (1-based); "
                                                                  "the parts' CSVs concatenate into the whole")
                              ->type_name("K/N");
-    CLI::Option* csv = sub->add_option("--csv", args->csv, "write one row per run")->type_name("FILE");
+    CLI::Option* budget = sub->add_option("--time-budget", args->timeBudget,
+                                          "a run that takes longer is recorded as 'not reached' (no error), and so is "
+                                          "every costlier point of its curve [s]; 0 = none")
+                              ->type_name("SECONDS")
+                              ->check(finiteIn(0.0, 1e6, false))
+                              ->capture_default_str();
+    CLI::Option* precision = sub->add_option("--precision", args->precision,
+                                             "double (the simulation), float (the float build of spring1d: the round-off "
+                                             "floor), or both: double,float")
+                                 ->type_name("P[,P]")
+                                 ->default_str("double");
+    CLI::Option* compensated = sub->add_flag("--compensated", args->compensated,
+                                             "float: compensated (Kahan) summation of the state update");
+    CLI::Option* timingsOption =
+        sub->add_option("--timings", args->timings, "write every raw wall time, one row per run and repeat")
+            ->type_name("FILE");
+    CLI::Option* csv = addCsvOption(*sub, args->csv, "write one row per point");
     sub->add_option("--plot", args->plot, "draw the diagram as SVG")->type_name("FILE.svg");
     sub->add_option("--title", args->title, "the plot's title")->type_name("TEXT");
     sub->add_option("--interval", args->interval, "with --refine: compare the levels every I s [s]")
@@ -340,10 +405,11 @@ Command addStudyCommand(CLI::App& app) {
     sub->add_flag("--quiet", args->quiet, "no table on standard output (the CSV and plot are still written)");
     sub->get_option("--dt")->description("with --refine: the time step of every level [s] (default: the stable "
                                          "step each level needs)")->needs(refine);
-    for (CLI::Option* temporalOnly : {dts, repeat, reference, samples, shard}) temporalOnly->excludes(refine);
+    for (CLI::Option* temporalOnly : {dts, repeat, reference, samples, shard, budget, precision, compensated, timingsOption})
+        temporalOnly->excludes(refine);
     // Merge mode runs nothing: an option that would change a run is a mistake, not ignored.
-    for (CLI::Option* notMerged : {integrators, dts, tols, duration, repeat, reference, samples, shard, csv, fixed,
-                                   sub->get_option("--scene"), sub->get_option("--set")})
+    for (CLI::Option* notMerged : {integrators, dts, tols, duration, repeat, reference, samples, shard, csv, fixed, budget,
+                                   precision, compensated, timingsOption, sub->get_option("--scene"), sub->get_option("--set")})
         notMerged->excludes(fromCsv);
     return {sub, [args] { checkStudy(*args); }, [args] { return runStudy(*args); }};
 }

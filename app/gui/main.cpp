@@ -35,6 +35,7 @@
 #include "simlab/output.h"
 #include "simlab/scenefile.h"
 #include "ui/export.h"
+#include "ui/gl_format.h"
 #include "ui/lessons.h"
 #include "ui/lessons_dialog.h"
 #include "ui/main_window.h"
@@ -62,14 +63,8 @@ QString quoted(const QString& value, std::size_t limit = 40) {
 
 int main(int argc, char** argv) {
     // The default format must be set before the application exists (QOpenGLWidget discipline).
-    QSurfaceFormat format;
-    format.setVersion(3, 3);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    format.setDepthBufferSize(24);
-    format.setStencilBufferSize(8);
     // Multisampling smooths edges; ELASTIC_LAB_MSAA=0 turns it off (software GL is faster so).
-    format.setSamples(qEnvironmentVariableIsSet("ELASTIC_LAB_MSAA") ? qEnvironmentVariableIntValue("ELASTIC_LAB_MSAA") : 4);
-    QSurfaceFormat::setDefaultFormat(format);
+    elui::setDefaultGlFormat(qEnvironmentVariableIsSet("ELASTIC_LAB_MSAA") ? qEnvironmentVariableIntValue("ELASTIC_LAB_MSAA") : 4);
 
     // --help and --version print and exit: they need no display (a headless build machine runs
     // them to make the man page), so they get the offscreen platform unless one is chosen.
@@ -141,8 +136,12 @@ int main(int argc, char** argv) {
                                        QStringLiteral("With --travel-back: branch there with key=value (a parameter, or "
                                                       "integrator=NAME), run on to --after and travel back again."),
                                        QStringLiteral("key=value"));
+    const QCommandLineOption scaleOpt(QStringLiteral("ui-scale"),
+                                      QStringLiteral("Presentation mode at start: every text SCALE times larger (1 to 2; "
+                                                     "View > Presentation mode, Ctrl+= / Ctrl+-)."),
+                                      QStringLiteral("SCALE"));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt,
-                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt});
+                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, scaleOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -153,7 +152,7 @@ int main(int argc, char** argv) {
     // A value-taking option given twice would silently lose one of the values.
     for (const QCommandLineOption* once : {&sceneOpt, &integratorOpt, &compareOpt, &presetOpt, &lessonOpt, &shotOpt, &afterOpt,
                                            &optionsOpt, &docksOpt, &fpsOpt, &travelOpt, &branchOpt,
-                                           &selectOpt})
+                                           &selectOpt, &scaleOpt})
         if (parser.values(*once).size() > 1)
             return fail(QStringLiteral("--%1 is given %2 times; give it once").arg(once->names().front()).arg(parser.values(*once).size()));
     if (parser.isSet(afterOpt) && !parser.isSet(shotOpt))
@@ -283,6 +282,12 @@ int main(int argc, char** argv) {
         selected = parser.value(selectOpt).toInt(&ok);
         if (!ok || selected < 0) return fail(QStringLiteral("--select needs a particle index, 0 or more"));
     }
+    double uiScale = 1.0;
+    if (parser.isSet(scaleOpt)) {
+        const auto v = simcore::parseNumber(parser.value(scaleOpt).toStdString());
+        if (!v || *v < 1.0 || *v > 2.0) return fail(QStringLiteral("--ui-scale needs a factor from 1 to 2"));
+        uiScale = *v;
+    }
     double fpsSeconds = 0.0;
     if (parser.isSet(fpsOpt)) {
         const auto v = simcore::parseNumber(parser.value(fpsOpt).toStdString());
@@ -291,10 +296,16 @@ int main(int argc, char** argv) {
     }
     // Interactive on a CPU renderer (Mesa llvmpipe): no multisampling, it costs more than half
     // the frame rate. Screenshots keep it (quality over speed); ELASTIC_LAB_MSAA decides if set.
+    // Not only the views: the window composes its widgets and the views' images with OpenGL in
+    // a surface of the default format, which had kept 4x samples (every frame rasterised the
+    // whole window four times over: docs/performance.md, "The GUI on a school PC").
     if (!screenshot && !qEnvironmentVariableIsSet("ELASTIC_LAB_MSAA") && elui::Viewport::openGLAvailable() &&
-        elui::Viewport::softwareRenderer())
+        elui::Viewport::softwareRenderer()) {
+        elui::setDefaultGlFormat(0);
         elui::Viewport::setSamples(0);
+    }
     elui::MainWindow window(!screenshot);
+    if (uiScale != 1.0) window.setUiScale(uiScale);
     if (parser.isSet(optionsOpt)) {
         elui::ViewOptions o = window.viewOptions();
         const simcore::NameList list = simcore::parseNameList("show", parser.value(optionsOpt).toStdString());

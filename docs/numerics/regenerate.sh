@@ -71,3 +71,4 @@ $CLI run --scene ring2d --set kd=0 --set rkd=0 --set restitution=1 --dt 0.0005 -
 # The thesis's experiment (§7.2.2) and the rest of the gallery.
 $CLI gallery --run all > "$OUT/gallery.txt"
 python3 "$OUT/plot-restitution.py"
+docs/numerics/course-bench.sh "$CLI"

@@ -78,7 +78,7 @@ def test_every_integrator_runs_and_converges(integrator):
     """Each integrator at two steps in its asymptotic range (undamped: velocity Verlet is
     second order only without damping): the error against the closed form shrinks by 2^order."""
     order = {i["name"]: i["order"] for i in el.integrators()}[integrator]
-    dts = {1: (4e-4, 2e-4), 2: (4e-3, 2e-3), 4: (1e-2, 5e-3), 5: (2e-2, 1e-2)}[order]
+    dts = {1: (4e-4, 2e-4), 2: (4e-3, 2e-3), 4: (1e-2, 5e-3), 5: (2e-2, 1e-2), 8: (2e-2, 1e-2)}[order]
     errors = []
     for dt in dts:
         sim = el.Simulation("spring1d", integrator=integrator, dt=dt, kd=0.0, options={"fixed_step": True})
@@ -103,14 +103,15 @@ def test_adaptive_integrator_options():
 
 def test_run_records_the_diagnostics_rows():
     sim = el.Simulation("ring2d", dt=0.002)
-    rows = sim.run(0.1, every=10)
+    rows = sim.run(0.1, every_steps=10)
     cols = sim.diagnostics_columns
-    assert rows.shape == (1 + 5, len(cols))  # start, every 10 steps, the end (50 steps)
-    step, t = rows[:, cols.index("step")], rows[:, cols.index("t")]
+    assert rows.dtype.names == tuple(cols) and rows.shape == (1 + 5,)  # start, every 10 steps, the end
+    step, t = rows["step"], rows["t"]
     assert list(step) == [0, 10, 20, 30, 40, 50]
     assert t[-1] == pytest.approx(0.1) and t[-1] == sim.time
-    assert np.array_equal(rows[-1], sim.diagnostics_row)
-    assert sim.diagnostics["volume_outer"] == rows[-1, cols.index("volume_outer")]
+    assert np.array_equal(np.array(rows[-1].tolist()), sim.diagnostics_row, equal_nan=True)
+    assert sim.diagnostics["error_estimate"] is None and np.isnan(rows["error_estimate"]).all()  # none: not -1
+    assert sim.diagnostics["volume_outer"] == rows["volume_outer"][-1]
     assert "volume_inner" in cols and "pressure_outer" in cols  # gas columns in 2D only
     assert "volume_inner" not in el.Simulation("spring1d").diagnostics_columns
 
@@ -230,13 +231,13 @@ def test_bad_integrator_and_options():
 def test_failure_raises_and_keeps_the_last_good_state():
     sim = el.Simulation("spring1d", integrator="euler", dt=0.09, kd=0)  # h w0 = 2.5: euler grows
     with pytest.raises(el.SimulationFailed) as e:
-        sim.run(100.0, every=1)
+        sim.run(100.0, every_steps=1)
     f = e.value
     assert isinstance(f, RuntimeError)
     assert f.reason and f.step >= 1 and str(e.value).startswith(f"simulation failed at step {f.step}")
     assert sim.failure == {"reason": f.reason, "step": f.step, "time": f.time}
     assert np.isfinite(sim.positions).all()
-    assert f.rows.shape[0] == sim.step_count + 1  # a row per good step and the start
+    assert len(f.rows) == sim.step_count + 1 and f.rows["step"][-1] == sim.step_count  # a row per good step
     with pytest.raises(el.SimulationFailed):
         sim.step()
 
@@ -285,6 +286,60 @@ def test_study_fits_the_nominal_orders_and_writes_the_clis_files(tmp_path):
     assert svg.lstrip().startswith("<") and "<svg" in svg and "rk4" in svg
 
 
+def test_study_keeps_every_timing_and_the_error_measures(tmp_path):
+    # issue 28: raw timings, quartiles, error_rms, orders per measure, the family, the budget.
+    result = el.study("spring1d", integrators=["yoshida4", "rk4"], dts=[0.01, 0.005, 0.0025], duration=2.0,
+                      kd=0.0, box=1000.0, repeat=3, timings=tmp_path / "t.csv", csv=tmp_path / "wp.csv")
+    for r in result["rows"]:
+        assert len(r["walls"]) == 3
+        assert r["wall_min"] <= r["wall_q1"] <= r["wall_median"] <= r["wall_q3"] <= max(r["walls"])
+        assert r["wall_seconds"] == r["wall_median"]
+        assert r["error_rms"] <= r["error_max"]
+        assert r["family"] == {"yoshida4": "symplectic", "rk4": "explicit-rk"}[r["integrator"]]
+    assert result["orders"]["yoshida4"] == pytest.approx(4.0, abs=0.15)
+    assert result["orders_rms"]["yoshida4"] == pytest.approx(4.0, abs=0.15)
+    assert set(result["orders_final"]) == {"yoshida4", "rk4"}
+    assert {b["family"] for b in result["fastest"]} == {"symplectic", "explicit-rk"}
+    with open(tmp_path / "t.csv") as f:
+        timings = list(csv.DictReader(f))
+    assert len(timings) == 3 * len(result["rows"])
+    assert [float(t["wall_seconds"]) for t in timings[:3]] == result["rows"][0]["walls"]
+    with open(tmp_path / "wp.csv") as f:
+        table = list(csv.DictReader(f))
+    assert float(table[0]["wall_q3"]) == result["rows"][0]["wall_q3"]
+    # A budget no run can meet: every point not reached, no error.
+    over = el.study("spring1d", integrators=["rk4"], dts=[0.01, 0.005], duration=2.0, time_budget=1e-9)
+    assert [r["status"] for r in over["rows"]] == ["not reached", "not reached"]
+    assert all(math.isnan(r["error_max"]) and r["walls"] == [] for r in over["rows"])
+
+
+def test_study_in_float_shows_the_round_off_floor():
+    dts = [0.00125, 0.000625, 0.0003125, 0.00015625, 7.8125e-05, 3.90625e-05]
+    result = el.study("spring1d", integrators=["rk4"], dts=dts, duration=2.0, kd=0.0, box=1000.0,
+                      precision=["double", "float"])
+    double = [r["error_max"] for r in result["rows"] if r["precision"] == "double"]
+    single = [r["error_max"] for r in result["rows"] if r["precision"] == "float"]
+    assert all(b < a for a, b in zip(double, double[1:]))  # double keeps falling
+    assert single[-1] > 4 * min(single)  # float stops and rises
+    assert set(result["orders"]) == {"rk4", "rk4 (float)"}
+    with pytest.raises(ValueError, match="no float build"):
+        el.study("spring1d", integrators=["rk45"], dts=[0.01], precision=["float"])
+
+
+def test_conservation_classifies_the_growth(tmp_path):
+    out = el.conservation("spring1d", integrators=["verlet", "rk4"], periods=300, dt=0.01, csv=tmp_path / "c.csv")
+    rows = {r["integrator"]: r for r in out["rows"]}
+    assert rows["verlet"]["class"] == "bounded" and rows["rk4"]["class"] == "drift"
+    assert rows["rk4"]["alpha_lo"] <= rows["rk4"]["alpha"] <= rows["rk4"]["alpha_hi"]
+    assert len(rows["rk4"]["t"]) == len(rows["rk4"]["energy_error"]) > 10
+    assert out["omega_max"] == pytest.approx(math.sqrt(800.0), rel=1e-6)
+    with open(tmp_path / "c.csv") as f:
+        assert f.readline().startswith("integrator,alpha,alpha_lo,alpha_hi,class,")
+    with pytest.raises(ValueError, match="chooses its own steps"):
+        el.conservation("spring1d", integrators=["rk45"], dt=0.01)
+    assert {i["name"]: i["family"] for i in el.integrators()}["yoshida8"] == "symplectic"
+
+
 def test_study_refuses_a_bad_spec():
     with pytest.raises(ValueError):
         el.study("spring1d", integrators=["rk4"], dts=[0.3], duration=1.0)  # T not a multiple of dt
@@ -327,10 +382,11 @@ def interrupt_when(condition, how):
 
 
 def stepping(sim):
-    """True once another thread is inside sim.run (reading then raises RuntimeError). That this
-    can be seen at all shows that the run released the GIL."""
+    """True once another thread is inside sim.run (reading the state then raises RuntimeError;
+    time and step_count stay readable). That this can be seen at all shows that the run released
+    the GIL."""
     try:
-        sim.step_count
+        sim.positions
         return False
     except RuntimeError:
         return True
@@ -400,3 +456,20 @@ def test_refinement_measures_second_order_in_space(tmp_path):
     assert "<svg" in (tmp_path / "ref.svg").read_text()
     with pytest.raises(ValueError):
         el.refinement("ring2d", levels=[12], duration=0.2)  # one level is not a study
+
+
+def test_stability_prediction_is_the_clis(tmp_path):
+    # One verdict (issue 25): Python's predicted step is the CLI's, on a body above the exact
+    # limit (the level-2 sphere: Arnoldi), linearised at the rest shape by both.
+    out = el.stability("sphere3d", integrators=["rk4", "euler"], duration=0.02, hmin=0.001, subdivisions=2, dt=0.01)
+    python = {r["integrator"]: r["dt_predicted"] for r in out["rows"]}
+    target = tmp_path / "cli.csv"
+    subprocess.run([os.environ["ELASTIC_LAB_CLI"], "stability", "--scene", "sphere3d", "--set", "subdivisions=2",
+                    "--set", "dt=0.01", "--integrators", "rk4,euler", "--duration", "0.02", "--hmin", "0.001",
+                    "--quiet", "--csv", str(target)], check=True, capture_output=True)
+    with open(target) as f:
+        cli = {row["integrator"]: float(row["dt_predicted"]) for row in csv.DictReader(f)}
+    assert python.keys() == cli.keys()
+    for name, predicted in cli.items():
+        assert python[name] == pytest.approx(predicted, rel=1e-12)
+    assert 0.005 < python["rk4"] < 0.01 and python["euler"] < 0.8 * python["rk4"]
