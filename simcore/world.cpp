@@ -318,6 +318,25 @@ void World::reset() {
     m_lastGood = m_y;
 }
 
+void World::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step, double time) {
+    if (x.cols() != particleCount() || v.cols() != particleCount())
+        throw std::invalid_argument("the state has " + std::to_string(x.cols()) + " particles; the world has " +
+                                    std::to_string(particleCount()));
+    m_y.head(m_n) = Eigen::Map<const Eigen::VectorXd>(x.data(), m_n);
+    m_y.segment(m_n, m_n) = Eigen::Map<const Eigen::VectorXd>(v.data(), m_n);
+    m_y.tail(WorldOde::kAux).setZero();
+    m_integrator->prepare(m_ode->layout());
+    m_failure.reset();
+    m_timeCarry = 0.0;
+    m_diag = WorldDiagnostics{};
+    m_diag.dt = m_dt;
+    m_diag.step = step;
+    m_diag.time = time;
+    measure(m_diag);
+    m_diag.initialEnergy = m_diag.total();
+    m_lastGood = m_y;
+}
+
 void World::measure(WorldDiagnostics& d) {
     const double* x = m_y.data();
     const double* v = m_y.data() + m_n;

@@ -139,6 +139,13 @@ public:
     bool step(double until = std::numeric_limits<double>::infinity());
     bool advanceTo(double tEnd);
     void reset();
+    // Restores a saved state (every particle in the world's numbering, 3 x particleCount()), at
+    // `step` and `time`: the accounts start again from it (as Simulation::setState), a failure
+    // is cleared. Throws std::invalid_argument when the sizes do not fit.
+    void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step, double time);
+    // An adaptive method's next proposed step [s] (saved with the state so a resume is exact).
+    double nextStep() const { return m_hNext; }
+    void setNextStep(double h) { m_hNext = h; }
 
     bool failed() const { return m_failure.has_value(); }
     const std::optional<std::string>& failure() const { return m_failure; }

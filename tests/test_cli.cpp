@@ -161,8 +161,10 @@ private slots:
                                                 << "body3 sticks out of the box";
         QTest::newRow("a world for one-body commands") << QStringList{"study", "--scene", "collide2d"}
                                                        << "collide2d is a scene of several bodies";
-        QTest::newRow("a world scene file") << QStringList{"run", "--scene", "collide2d", "--save-scene", "/tmp/x.json"}
-                                            << "scene files of several bodies";
+        QTest::newRow("more bodies than allowed")
+            << QStringList{"run", "--scene", QFINDTESTDATA("data/world-17-bodies.json")} << "at most 16";
+        QTest::newRow("an unknown body kind")
+            << QStringList{"run", "--scene", QFINDTESTDATA("data/world-unknown-kind.json")} << "body2.kind: unknown body kind 'torus'";
         QTest::newRow("beyond the memory limit")
             << QStringList{"run", "--scene", "sphere3d-latlong", "--set", "slices=1024", "--set", "stacks=512"}
             << "limit is 1 GiB";
@@ -286,6 +288,31 @@ private slots:
         QVERIFY(params.out.contains("body1: sphere3d"));
         QVERIFY(params.out.contains("body2: sphere3d"));
         QVERIFY(params.out.contains("(3, 0.5, 0) m"));  // body 2's start, offset across the line
+    }
+    // A scene file of several bodies: --save-scene writes the world with its exact state, and a
+    // run from it continues the trajectory bit for bit (the state tables of 0.06 s straight and
+    // of 0.03 s + 0.03 s from the file are the same text).
+    void worldSceneFileResumesExactly() {
+        const QStringList common = {"--set", "gravity=0", "--set", "body2.mass=4", "--set", "offset=0.5",
+                                    "--integrator", "rk4", "--quiet"};
+        QCOMPARE(cli(QStringList{"run", "--scene", "collide2d", "--duration", "0.06", "--state", path("straight.csv")} +
+                     common).code, 0);
+        const QString saved = path("half.json");
+        QCOMPARE(cli(QStringList{"run", "--scene", "collide2d", "--duration", "0.03", "--save-scene", saved} + common)
+                     .code, 0);
+        QFile file(saved);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray text = file.readAll();
+        QVERIFY(text.contains("\"version\": 4"));
+        QVERIFY(text.contains("\"bodies\": ["));
+        const Result resumed = cli({"run", "--scene", saved, "--duration", "0.03", "--state", path("resumed.csv"),
+                                    "--quiet"});
+        QVERIFY2(resumed.code == 0, qPrintable(resumed.err));
+        QCOMPARE(readLines(path("resumed.csv")), readLines(path("straight.csv")));
+        // A one-body command refuses it by what it is.
+        const Result study = cli({"study", "--scene", saved});
+        QCOMPARE(study.code, 2);
+        QVERIFY2(study.err.contains("a scene of several bodies"), qPrintable(study.err));
     }
     // Bodies thrown too fast for a fixed step: the run ends with exit 3 naming both bodies.
     void worldIntersectionExitsWithThree() {

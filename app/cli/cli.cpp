@@ -86,6 +86,9 @@ SceneSetup sceneSetup(const SceneArgs& args) {
         // A scene file wherever a scene name is taken; --set, --dt, --integrator override it.
         simlab::SceneFileResult read = simlab::readSceneFile(setup.sceneName);
         if (!read.file) throw UsageError(read.error);
+        if (read.file->world)
+            throw UsageError(setup.sceneName + " is a scene of several bodies: `run` takes it; this command studies "
+                                               "one body (" + simcore::sceneNames() + ")");
         setup.sceneName = read.file->sceneName;
         scene = simcore::findScene(setup.sceneName);
         setup.params = read.file->params;

@@ -107,8 +107,10 @@ struct RunArgs {
     bool quiet = false, json = false;
     simcore::IntegratorOptions integrator;
     SceneSetup setup;  // after check()
-    // A scene of several bodies (collide2d, collide3d, stack3d), after check().
+    // A scene of several bodies (collide2d, collide3d, stack3d, or a scene file of several), after
+    // check(), and the state a scene file saved with it.
     std::optional<simcore::WorldSpec> world;
+    std::optional<simlab::SceneFile::State> worldState;
 };
 
 // The run's fixed-step bound: a fixed-step run takes duration / dt steps, refused at once when
@@ -128,17 +130,15 @@ void checkStepBound(const RunArgs& args, std::string_view integrator, double dt)
 
 // A scene of several bodies: its description with every --set applied (bodyN.key=value for
 // one body, key=value for all), checked as a whole (simcore::validateWorld).
-void checkWorld(RunArgs& args, simcore::WorldSpec spec) {
+void checkWorld(RunArgs& args, simcore::WorldSpec spec, const std::string& fileIntegrator = "rk4") {
     for (const std::string& assignment : args.scene.set)
         if (auto error = simcore::assignWorld(spec, assignment)) throw UsageError("--set " + *error);
     if (args.scene.dt)
         if (auto error = simcore::assignWorld(spec, "dt=" + *args.scene.dt)) throw UsageError("--" + *error);
     args.setup.sceneName = spec.name;
-    args.setup.integrator = args.scene.integrator.value_or("rk4");
+    args.setup.integrator = args.scene.integrator.value_or(fileIntegrator);
     if (auto error = simcore::unknownIntegrator(args.setup.integrator)) throw UsageError(*error);
     if (auto error = simcore::validateWorld(spec)) throw UsageError(*error);
-    if (!args.saveScene.empty())
-        throw UsageError("--save-scene: scene files of several bodies are not written yet; --csv and --state are");
     checkStepBound(args, args.setup.integrator, simcore::resolve(spec.bodies.front().params).time.dt);
     args.world = std::move(spec);
 }
@@ -149,6 +149,15 @@ void checkRun(RunArgs& args) {
     if (auto world = simcore::worldScene(args.scene.scene)) {
         checkWorld(args, std::move(*world));
         return;
+    }
+    if (const std::string path = sceneFileOf(args.scene); !path.empty()) {
+        simlab::SceneFileResult read = simlab::readSceneFile(path);
+        if (!read.file) throw UsageError(read.error);
+        if (read.file->world) {  // a scene file of several bodies, perhaps with its state
+            args.worldState = read.file->state;
+            checkWorld(args, std::move(*read.file->world), read.file->integrator);
+            return;
+        }
     }
     args.setup = sceneSetup(args.scene);
     checkStepBound(args, args.setup.integrator, args.setup.params.get(simcore::Param::Dt));
@@ -255,6 +264,8 @@ int runWorld(const RunArgs& args) {
     }
     simcore::World& world = *built;
     world.setIntegratorOptions(args.integrator);
+    if (args.worldState)  // resume a saved experiment
+        if (auto error = simlab::applyState(world, *args.worldState)) throw UsageError(*error);
     const auto columns = simlab::worldColumns(world);
     auto& csv = files[0];
     if (csv) {
@@ -262,12 +273,13 @@ int runWorld(const RunArgs& args) {
         csv->write(simlab::csvRow(columns, world.diagnostics()));
     }
     const auto start = std::chrono::steady_clock::now();
-    const double tEnd = args.duration;
+    const double tEnd = world.time() + args.duration;  // a resumed run continues from its saved time
     const bool tooManySteps = stepThrough(world, args, tEnd, [&] {
         if (csv) csv->write(simlab::csvRow(columns, world.diagnostics()));
     });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (files[1]) files[1]->write(simlab::stateTable(world));
+    if (files[2]) files[2]->write(simlab::sceneFileText(world, true));
     if (!commitOutputs(files)) return kExitBadInput;
     if (args.json)
         printWorldSummaryJson(world, wall, world.failed() ? "failed" : tooManySteps ? "stopped" : "ok");
