@@ -613,26 +613,7 @@ int Simulation::nearestGrabbable(const Eigen::Vector3d& point) const {
 
 int Simulation::pickAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                              double maxDistance) const {
-    const auto& layers = m_body.topology.layer;
-    const auto x = positions();
-    int best = -1;
-    double bestDistance = maxDistance, bestDepth = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < particleCount(); ++i) {
-        if (layers[static_cast<std::size_t>(i)] == Layer::Inner) continue;
-        const Eigen::Vector3d r = x.col(i) - origin;
-        const double depth = r.dot(direction);
-        if (depth < 0.0) continue;
-        const double off = (r - depth * direction).norm();
-        // Within the pick radius the particle nearest the eye wins (the front surface).
-        if (off <= maxDistance && (depth < bestDepth - 1e-9 * (1.0 + depth))) {
-            if (best < 0 || off <= bestDistance || depth < bestDepth) {
-                best = i;
-                bestDepth = depth;
-                bestDistance = off;
-            }
-        }
-    }
-    return best;
+    return simcore::pickAlongRay(m_body.topology.layer, positions().data(), origin, direction, maxDistance);
 }
 
 void Simulation::grab(int particle, const Eigen::Vector3d& anchor) {

@@ -243,6 +243,10 @@ World::World(const WorldSpec& spec, std::string_view integrator) : m_spec(spec),
         first += m_bodies.back()->count();
     }
     m_n = 3 * Eigen::Index{first};
+    for (const auto& b : m_bodies) {
+        const auto& layer = b->body().topology.layer;
+        m_layers.insert(m_layers.end(), layer.begin(), layer.end());
+    }
     const WorldBody& lead = *m_bodies.front();
     m_dimension = lead.body().topology.dimension;
     m_dt = lead.params().time.dt;
@@ -296,6 +300,8 @@ void World::setIntegratorOptions(const IntegratorOptions& options) {
 }
 
 void World::reset() {
+    if (m_held >= 0) m_bodies[static_cast<std::size_t>(bodyOf(m_held))]->forces().pointer = PointerSpring{};
+    m_held = -1;
     m_y.setZero(2 * m_n + WorldOde::kAux);
     m_rate.setZero(m_y.size());
     for (const auto& b : m_bodies) {
@@ -316,6 +322,56 @@ void World::reset() {
     measure(m_diag);
     m_diag.initialEnergy = m_diag.total();
     m_lastGood = m_y;
+}
+
+int World::bodyOf(int particle) const {
+    for (std::size_t k = 0; k < m_bodies.size(); ++k)
+        if (particle >= m_bodies[k]->first() && particle < m_bodies[k]->first() + m_bodies[k]->count())
+            return static_cast<int>(k);
+    return -1;
+}
+
+int World::pickAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double maxDistance) const {
+    return simcore::pickAlongRay(m_layers, m_y.data(), origin, direction, maxDistance);
+}
+
+Eigen::Vector3d World::anchor() const {
+    if (m_held < 0) return Eigen::Vector3d::Zero();
+    return m_bodies[static_cast<std::size_t>(bodyOf(m_held))]->forces().pointer.anchor;
+}
+
+// The pointer spring of body k becomes `pointer`: the change of its energy is the pointer's
+// work (as Simulation::grab); the method restarts (the force changed between steps).
+void World::pointerChanged(const PointerSpring& pointer, int body) {
+    if (m_failure) return;
+    const double before = m_diag.pointer;
+    m_bodies[static_cast<std::size_t>(body)]->forces().pointer = pointer;
+    m_integrator->restart();
+    measure(m_diag);
+    m_diag.workPointer += m_diag.pointer - before;
+}
+
+void World::grab(int particle, const Eigen::Vector3d& anchor) {
+    const int body = bodyOf(particle);
+    if (body < 0 || m_failure) return;
+    if (m_held >= 0) release();
+    pointerChanged(PointerSpring{true, particle - m_bodies[static_cast<std::size_t>(body)]->first(), anchor}, body);
+    m_held = particle;
+}
+
+void World::moveAnchor(const Eigen::Vector3d& anchor) {
+    if (m_held < 0) return;
+    const int body = bodyOf(m_held);
+    PointerSpring pointer = m_bodies[static_cast<std::size_t>(body)]->forces().pointer;
+    pointer.anchor = anchor;
+    pointerChanged(pointer, body);
+}
+
+void World::release() {
+    if (m_held < 0) return;
+    const int body = bodyOf(m_held);
+    m_held = -1;
+    pointerChanged(PointerSpring{}, body);
 }
 
 void World::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step, double time) {
@@ -384,6 +440,9 @@ void World::measure(WorldDiagnostics& d) {
         out.velocity = mass > 0.0 ? Eigen::Vector3d(momentum / mass) : Eigen::Vector3d::Zero();
         d.kinetic += kinetic;
         d.momentum += momentum;
+        const PointerSpring& pointer = b.forces().pointer;
+        if (pointer.active)
+            d.pointer += pointerEnergy(pointer, b.forces().params.mks, b.forces().params.mouseRest, x + 3 * b.first());
     }
     d.contactPairs = m_ode->pairSums().energy;
     d.contact += d.contactPairs;

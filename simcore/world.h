@@ -34,6 +34,7 @@
 
 #include "simcore/body.h"
 #include "simcore/contact_pairs.h"
+#include "simcore/forces.h"
 #include "simcore/integrators.h"
 #include "simcore/params.h"
 #include "simcore/step_doubling.h"
@@ -106,7 +107,8 @@ struct WorldDiagnostics {
     double gas = 0.0;
     double contact = 0.0;                // walls, layer barriers and the pairs [J]
     double contactPairs = 0.0;           // the pairs' part of it [J]
-    double pointer = 0.0;
+    double pointer = 0.0;                // the mouse spring's energy [J]
+    double workPointer = 0.0;            // work done by moving the pointer [J]
     double removedDamping = 0.0;
     double removedContact = 0.0;
     double initialEnergy = 0.0;
@@ -125,7 +127,7 @@ struct WorldDiagnostics {
     double potential() const { return springTotal() + gravity + gas + pointer + contact; }
     double total() const { return kinetic + potential(); }
     double removed() const { return removedDamping + removedContact; }
-    double energyDrift() const { return total() + removed() - initialEnergy; }
+    double energyDrift() const { return total() + removed() - workPointer - initialEnergy; }
 };
 
 class World {
@@ -179,6 +181,20 @@ public:
     double gapRange() const { return 2.0 * m_contact.skin; }
     ContactPairs& pairs() { return m_pairs; }
 
+    // --- the pointer (the GUI's mouse drag): one spring from a particle of any body to an anchor
+    // (particles numbered as the world's; its energy and the work it does are in the ledger).
+    int pickAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double maxDistance) const;
+    void grab(int particle, const Eigen::Vector3d& anchor);
+    void moveAnchor(const Eigen::Vector3d& anchor);
+    void release();
+    // The held particle (world numbering; -1 when none) and its anchor.
+    int heldParticle() const { return m_held; }
+    Eigen::Vector3d anchor() const;
+    // The body (from 0) a world particle belongs to.
+    int bodyOf(int particle) const;
+    // Every particle's layer, the bodies side by side.
+    const std::vector<Layer>& layers() const { return m_layers; }
+
     // Measures the current state into d (everything but the accounts and counters).
     void measure(WorldDiagnostics& d);
 
@@ -203,6 +219,9 @@ private:
     double m_hNext = 0.003;
     std::uint64_t m_jacobianProducts = 0;  // counted as force evaluations (CVODE)
     std::optional<std::string> m_failure;
+    std::vector<Layer> m_layers;
+    int m_held = -1;
+    void pointerChanged(const PointerSpring& pointer, int body);
     long m_failedStep = 0;
     double m_failedTime = 0.0;
 };
