@@ -26,6 +26,7 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/impact.h"
 #include "simlab/stability.h"
 #include "simlab/conservation.h"
@@ -187,13 +188,58 @@ QMap<QString, QMap<QString, Measure>> measurements() {
     m["why-symplectic"]["verlet-growth"] = [=] { return long10000().rows[0].finalError / long100().rows[0].finalError; };
     m["why-symplectic"]["rk4-growth"] = [=] { return long10000().rows[2].finalError / long100().rows[2].finalError; };
     m["why-symplectic"]["rk4-alpha"] = [=] { return long10000().rows[2].alpha; };
+
+    // 9. `run --scene collide2d --set gravity=0 --set body2.mass=4 --duration 2.4` (800 steps).
+    const auto worldAt = [](const Lesson& l, long steps) {
+        return [spec = *l.preset.world(), steps]() -> simcore::WorldDiagnostics {
+            simcore::World world(spec, "rk4");
+            while (world.stepCount() < steps)
+                if (!world.step()) qFatal("the lesson's world failed: %s", world.failure()->c_str());
+            return world.diagnostics();
+        };
+    };
+    const auto balloons = worldAt(lesson("balloons-collide"), 800);
+    m["balloons-collide"]["v1-after"] = [=] { return balloons().bodies[0].velocity.x(); };
+    m["balloons-collide"]["v2-after"] = [=] { return balloons().bodies[1].velocity.x(); };
+    m["balloons-collide"]["momentum"] = [=] { return balloons().momentum.x(); };
+    m["balloons-collide"]["restitution"] = [=] {
+        const auto d = balloons();
+        return (d.bodies[1].velocity.x() - d.bodies[0].velocity.x()) / (2.0 - (-2.0));
+    };
+    m["balloons-collide"]["ke-kept"] = [=] {
+        const auto d = balloons();
+        double before = 0.0, after = 0.0;
+        for (const auto& b : d.bodies) {
+            before += 0.5 * b.mass * 4.0;
+            after += 0.5 * b.mass * b.velocity.squaredNorm();
+        }
+        return after / before;
+    };
+
+    // 10. `run --scene stack3d --set subdivisions=1 --set pressure=300 --set kd=40 --set rkd=120
+    // --duration 5` (1667 steps), run once and shared by its answers.
+    const auto stackRun = worldAt(lesson("soft-stack"), 1667);
+    const auto stack = [=]() -> const simcore::WorldDiagnostics& {
+        static const simcore::WorldDiagnostics done = stackRun();
+        return done;
+    };
+    const auto flattened = [=](int body) {
+        const simcore::BodyDiagnostics& b = stack().bodies[std::size_t(body)];
+        return b.volume[1] / b.restVolume[1];
+    };
+    m["soft-stack"]["bottom-volume"] = [=] { return flattened(0); };
+    m["soft-stack"]["middle-volume"] = [=] { return flattened(1); };
+    m["soft-stack"]["top-volume"] = [=] { return flattened(2); };
+    m["soft-stack"]["pressure-ratio"] = [=] { return stack().bodies[0].pressure[1] / stack().bodies[2].pressure[1]; };
     return m;
 }
 
 bool waitForLesson(MainWindow& w, const Lesson& l) {
     return testsupport::waitUntil([&] {
         const FramePtr f = w.controller()->latest();
-        return f && f->parameters == l.preset.parameters() && int(f->lanes.size()) == l.preset.integrators.size();
+        return f && f->parameters == l.preset.parameters() && int(f->lanes.size()) == l.preset.integrators.size() &&
+               (f->world != nullptr) == l.preset.world().has_value() &&
+               (!f->worldSpec || f->worldSpec->bodies.size() == l.preset.world()->bodies.size());
     });
 }
 
@@ -212,8 +258,15 @@ private slots:
             QCOMPARE(findLesson(l.id)->title, l.title);
             QVERIFY(!l.preset.integrators.isEmpty() && l.preset.integrators.size() <= 3);
             // Valid presets: the scene exists, every value passes the parameter table.
-            QVERIFY2(simcore::findScene(l.preset.scene.toStdString()), qPrintable(l.id));
-            ParameterSet p(simcore::findScene(l.preset.scene.toStdString())->kind);
+            if (const auto world = l.preset.world()) {  // a scene of several bodies: its --set, checked
+                simcore::WorldSpec spec = *simcore::worldScene(l.preset.scene.toStdString());
+                for (const QString& a : l.preset.worldSet)
+                    QVERIFY2(!simcore::assignWorld(spec, a.toStdString()), qPrintable(l.id + ": " + a));
+                QVERIFY2(!simcore::validateWorld(spec), qPrintable(l.id));
+                QCOMPARE(l.preset.integrators.size(), 1);  // a world runs alone
+            }
+            QVERIFY2(simcore::findScene(l.preset.scene.toStdString()) || l.preset.world(), qPrintable(l.id));
+            ParameterSet p(l.preset.parameters().kind());
             for (const auto& [id, value] : l.preset.values) {
                 const auto error = p.set(id, value);
                 QVERIFY2(!error, qPrintable(l.id + ": " + QString::fromUtf8(simcore::paramSpec(id).key.data()) + ": " +

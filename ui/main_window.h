@@ -31,6 +31,7 @@ class RunDock;
 class PlotDock;
 class EnergyBarsDock;
 class PvDock;
+class BodiesDock;
 class StabilityMapDock;
 class FailureBanner;
 class TimelineDock;
@@ -55,6 +56,7 @@ public:
     PvDock* pvDock() const { return m_pvDock; }
     TimelineDock* timelineDock() const { return m_timelineDock; }
     StabilityMapDock* stabilityMapDock() const { return m_stabilityMapDock; }
+    BodiesDock* bodiesDock() const { return m_bodiesDock; }
     // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv", "stability-map",
     // "timeline".
     static QStringList dockNames();
@@ -85,6 +87,8 @@ public:
 
 public slots:
     void startScene(const simcore::ParameterSet& params, const QStringList& integrators);
+    // A scene of several bodies (simcore::World), with one integrator; the Bodies dock opens.
+    void startWorld(const simcore::WorldSpec& spec, const QString& integrator = QStringLiteral("rk4"));
     // Scene files. Each returns the error shown to the user (non-blocking message box and
     // status bar), or empty on success; a refused file leaves the running scene as it is.
     QString openSceneFile(const QString& path);
@@ -164,6 +168,11 @@ private:
     PvDock* m_pvDock = nullptr;
     TimelineDock* m_timelineDock = nullptr;
     StabilityMapDock* m_stabilityMapDock = nullptr;
+    BodiesDock* m_bodiesDock = nullptr;
+    bool m_worldShown = false;            // the last frame was a world's
+    void showWorldMode(bool world);       // what a world has and has not (menus, docks)
+    // Studies of one body are not for a world: says so and returns true when one is shown.
+    bool refuseForWorld(const QString& what);
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;

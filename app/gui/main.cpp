@@ -32,6 +32,7 @@
 #include "simcore/params.h"
 #include "simcore/scaling.h"
 #include "simcore/scenes.h"
+#include "simcore/world.h"
 #include "simlab/output.h"
 #include "simlab/scenefile.h"
 #include "ui/export.h"
@@ -179,11 +180,26 @@ int main(int argc, char** argv) {
     const QString sceneArg = parser.value(sceneOpt);
     const simcore::SceneInfo* scene = simcore::findScene(sceneArg.toStdString());
     std::optional<simlab::SceneFile> file;
-    if (!scene && sceneArg.endsWith(QLatin1String(".json"))) {
+    // A scene of several bodies (collide2d, collide3d, stack3d, or a scene file of several):
+    // --set takes bodyN.key=value as the CLI's run does.
+    std::optional<simcore::WorldSpec> world = simcore::worldScene(sceneArg.toStdString());
+    if (!world && preset && !parser.isSet(sceneOpt)) world = preset->world();  // a lesson of several bodies
+    if (!scene && !world && sceneArg.endsWith(QLatin1String(".json"))) {
         simlab::SceneFileResult read = simlab::readSceneFile(sceneArg.toStdString());
         if (!read.file) return fail(QString::fromStdString(read.error));
         file = std::move(read.file);
+        if (file->world) world = file->world;
         scene = &simcore::sceneInfo(file->params.kind());
+    }
+    if (world) {
+        scene = &simcore::sceneInfo(world->bodies.front().params.kind());
+        for (const QString& assignment : parser.values(setOpt))
+            if (auto error = simcore::assignWorld(*world, assignment.toStdString()))
+                return fail(QStringLiteral("--set ") + QString::fromStdString(*error));
+        if (auto error = simcore::validateWorld(*world)) return fail(QString::fromStdString(*error));
+        if (parser.isSet(compareOpt) || parser.isSet(travelOpt))
+            return fail(QStringLiteral("--compare and --travel-back take scenes of one body (a world runs alone, "
+                                       "without a timeline yet)"));
     }
     if (!scene)
         return fail(QString::fromStdString(simcore::unknownSceneMessage(sceneArg.toStdString())) +
@@ -191,10 +207,11 @@ int main(int argc, char** argv) {
     simcore::ParameterSet params = file                                 ? file->params
                                    : preset && !parser.isSet(sceneOpt) ? preset->parameters()
                                                                        : simcore::ParameterSet(scene->kind);
-    for (const QString& assignment : parser.values(setOpt))
+    if (world) params = world->bodies.front().params;
+    for (const QString& assignment : world ? QStringList{} : parser.values(setOpt))
         if (auto error = params.assign(assignment.toStdString())) return fail(QStringLiteral("--set ") + QString::fromStdString(*error));
     if (auto error = simcore::validateShape(params)) return fail(QString::fromStdString(*error));
-    if (file && file->state && simcore::buildBody(params).topology.particleCount() != file->state->positions.cols())
+    if (!world && file && file->state && simcore::buildBody(params).topology.particleCount() != file->state->positions.cols())
         return fail(QStringLiteral("--set changes the shape of the body in %1, so its saved state no longer fits")
                         .arg(quoted(sceneArg, 200)));
     QStringList integrators{parser.value(integratorOpt)};
@@ -328,7 +345,16 @@ int main(int argc, char** argv) {
     }
     elui::SimulationController* controller = window.controller();
     if (parser.isSet(doublingOpt)) window.runDock()->findChild<QCheckBox*>(QStringLiteral("stepDoubling"))->setChecked(true);
-    if (file) {
+    if (world) {
+        if (file) {
+            simlab::SceneFile changed = *file;
+            changed.world = world;
+            changed.integrator = integrators.front().toStdString();
+            window.openScene(changed, integrators, sceneArg, &*file);
+        } else {
+            window.startWorld(*world, integrators.front());
+        }
+    } else if (file) {
         simlab::SceneFile changed = *file;
         changed.params = params;
         changed.integrator = integrators.front().toStdString();
