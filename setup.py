@@ -26,14 +26,20 @@ class CMakeExtension(Extension):
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
+        target = Path(self.get_ext_fullpath(ext.name)).resolve()
+        target.parent.mkdir(parents=True, exist_ok=True)
+        # A module already built by the project's own CMake build (the install test, packagers):
+        # copied as it is instead of building simcore and simlab again.
+        prebuilt = os.environ.get("ELASTIC_LAB_PREBUILT_CORE")
+        if prebuilt:
+            shutil.copyfile(prebuilt, target)
+            return
         build = Path(self.build_temp).resolve() / "cmake"
         build.mkdir(parents=True, exist_ok=True)
         subprocess.run(["cmake", "-S", str(ROOT), "-B", str(build), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
                         "-DELASTIC_LAB_BUILD_GUI=OFF", "-DELASTIC_LAB_BUILD_TESTS=OFF", "-DELASTIC_LAB_BUILD_BENCH=OFF",
                         "-DELASTIC_LAB_MAN_PAGES=OFF", f"-DPython3_EXECUTABLE={sys.executable}"], check=True)
         subprocess.run(["cmake", "--build", str(build), "--target", "elasticlab"], check=True)
-        target = Path(self.get_ext_fullpath(ext.name)).resolve()
-        target.parent.mkdir(parents=True, exist_ok=True)
         built = next((build / "python" / "elasticlab").glob("_core*.so"))
         shutil.copyfile(built, target)
 

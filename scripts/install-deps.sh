@@ -17,7 +17,7 @@ done
 packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev libqcustomplot-dev
           xvfb xauth libbenchmark-dev nlohmann-json3-dev libcli11-dev stress-ng ccache
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libsundials-dev
-          python3-pandas python3-dask python3-distributed python3-tqdm)
+          python3-pandas python3-dask python3-distributed python3-tqdm python3-venv python3-setuptools python3-wheel)
 missing=()
 for p in "${packages[@]}" "${packaging[@]}" "${optional[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -135,6 +135,71 @@ std::optional<std::string> validateConservation(const ConservationSpec& spec) {
     return std::nullopt;
 }
 
+namespace {
+
+// One integrator's run: the energy-error envelope at the sample steps (float: the float
+// build of the reference problem; double: the Simulation), its cost and largest kinetic
+// energy. Sets `cancelled` when the run was cancelled.
+ConservationRow conservationRun(const ConservationSpec& spec, const ParameterSet& params, const std::string& name,
+                                const std::vector<long>& steps, const std::atomic<bool>* cancel, bool& cancelled) {
+    ConservationRow row;
+    row.integrator = name;
+    if (spec.precision == "float") {
+        std::vector<double> grid;
+        for (long s : steps) grid.push_back(static_cast<double>(s) * spec.dt);
+        const ReferenceProblemRun run = runReferenceProblem(params, name, spec.dt, grid, "float", false, cancel, 0.0, true);
+        for (std::size_t k = 0; k < run.envelope.size(); ++k) row.curve.emplace_back(grid[k], run.envelope[k]);
+        row.steps = run.steps;
+        row.wallSeconds = run.wallSeconds;
+        row.kineticMax = run.maxKinetic;
+        if (run.cancelled) cancelled = true;
+        if (run.failed) row.ok = false, row.failedAt = run.failedAt, row.failure = "the float state is no longer finite";
+        return row;
+    }
+    ParameterSet p = params;
+    if (auto error = p.set(Param::Dt, spec.dt)) throw std::invalid_argument(*error);
+    Simulation sim(p, name);
+    sim.setThreads(1);
+    double envelope = 0.0, kineticMax = 0.0;
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    for (long target : steps) {
+        while (sim.stepCount() < target) {
+            if (!sim.step()) break;
+            const Diagnostics& d = sim.diagnostics();
+            envelope = std::max(envelope, std::abs(d.energyDrift()));
+            kineticMax = std::max(kineticMax, d.kinetic);
+            if (cancel && (sim.stepCount() & 1023) == 0 && cancel->load(std::memory_order_relaxed)) break;
+        }
+        if (sim.failed() || (cancel && cancel->load())) break;
+        row.curve.emplace_back(static_cast<double>(target) * spec.dt, envelope);
+    }
+    row.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    row.steps = sim.stepCount();
+    row.kineticMax = kineticMax;
+    if (cancel && cancel->load()) cancelled = true;
+    if (sim.failed()) row.ok = false, row.failedAt = sim.failure()->time, row.failure = sim.failure()->reason;
+    return row;
+}
+
+// The growth of a finished row's envelope: the log-log slope over t >= fitFrom and its class.
+void fitGrowth(ConservationRow& row, double fitFrom) {
+    std::vector<std::pair<double, double>> tail;
+    for (auto [t, e] : row.curve)
+        if (t >= fitFrom * (1.0 - 1e-12)) tail.emplace_back(t, e);
+    const SlopeFit fit = logLogSlopeInterval(tail);
+    row.alpha = fit.slope, row.alphaLo = fit.lo, row.alphaHi = fit.hi, row.fitPoints = fit.points;
+    row.growth = growthClass(fit.slope);
+    row.finalError = row.curve.empty() ? 0.0 : row.curve.back().second;
+    if (!std::isfinite(fit.slope)) {
+        // No growth to fit: the envelope stayed at 0 (exact to the last bit) or too few points.
+        row.growth = row.finalError == 0.0 ? "bounded" : "";
+        row.alpha = row.alphaLo = row.alphaHi = row.finalError == 0.0 ? 0.0 : std::nan("");
+    }
+}
+
+}  // namespace
+
 ConservationResult runConservation(const ConservationSpec& spec, const ConservationProgressFn& progress,
                                    const std::atomic<bool>* cancel) {
     ConservationResult result;
@@ -160,59 +225,9 @@ ConservationResult runConservation(const ConservationSpec& spec, const Conservat
             break;
         }
         if (progress) progress(done, static_cast<int>(spec.integrators.size()), name);
-        ConservationRow row;
-        row.integrator = name;
-        double kineticMax = 0.0;
-        if (spec.precision == "float") {
-            std::vector<double> grid;
-            for (long s : steps) grid.push_back(static_cast<double>(s) * spec.dt);
-            const ReferenceProblemRun run = runReferenceProblem(params, name, spec.dt, grid, "float", false, cancel, 0.0, true);
-            for (std::size_t k = 0; k < run.envelope.size(); ++k) row.curve.emplace_back(grid[k], run.envelope[k]);
-            row.steps = run.steps;
-            row.wallSeconds = run.wallSeconds;
-            kineticMax = run.maxKinetic;
-            if (run.cancelled) result.cancelled = true;
-            if (run.failed) row.ok = false, row.failedAt = run.failedAt, row.failure = "the float state is no longer finite";
-        } else {
-            ParameterSet p = params;
-            if (auto error = p.set(Param::Dt, spec.dt)) throw std::invalid_argument(*error);
-            Simulation sim(p, name);
-            sim.setThreads(1);
-            double envelope = 0.0;
-            using Clock = std::chrono::steady_clock;
-            const auto start = Clock::now();
-            for (long target : steps) {
-                while (sim.stepCount() < target) {
-                    if (!sim.step()) break;
-                    const Diagnostics& d = sim.diagnostics();
-                    envelope = std::max(envelope, std::abs(d.energyDrift()));
-                    kineticMax = std::max(kineticMax, d.kinetic);
-                    if (cancel && (sim.stepCount() & 1023) == 0 && cancel->load(std::memory_order_relaxed)) break;
-                }
-                if (sim.failed() || (cancel && cancel->load())) break;
-                row.curve.emplace_back(static_cast<double>(target) * spec.dt, envelope);
-            }
-            row.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-            row.steps = sim.stepCount();
-            if (cancel && cancel->load()) result.cancelled = true;
-            if (sim.failed()) row.ok = false, row.failedAt = sim.failure()->time, row.failure = sim.failure()->reason;
-        }
-        row.kineticMax = kineticMax;
+        ConservationRow row = conservationRun(spec, params, name, steps, cancel, result.cancelled);
         if (result.cancelled) break;
-        if (row.ok) {
-            std::vector<std::pair<double, double>> tail;
-            for (auto [t, e] : row.curve)
-                if (t >= fitFrom * (1.0 - 1e-12)) tail.emplace_back(t, e);
-            const SlopeFit fit = logLogSlopeInterval(tail);
-            row.alpha = fit.slope, row.alphaLo = fit.lo, row.alphaHi = fit.hi, row.fitPoints = fit.points;
-            row.growth = growthClass(fit.slope);
-            row.finalError = row.curve.empty() ? 0.0 : row.curve.back().second;
-            if (!std::isfinite(fit.slope)) {
-                // No growth to fit: the envelope stayed at 0 (exact to the last bit) or too few points.
-                row.growth = row.finalError == 0.0 ? "bounded" : "";
-                row.alpha = row.alphaLo = row.alphaHi = row.finalError == 0.0 ? 0.0 : std::nan("");
-            }
-        }
+        if (row.ok) fitGrowth(row, fitFrom);
         result.rows.push_back(std::move(row));
         ++done;
     }

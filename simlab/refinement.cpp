@@ -214,55 +214,108 @@ std::pair<double, std::string> refinementStep(const RefinementSpec& spec) {
     return {dt, rule};
 }
 
+namespace {
+
+std::string levelName(const RefinementSpec& spec, int value) { return spec.key + "=" + std::to_string(value); }
+
+// The row of one level (its samples when it ran to T) and whether the run was cancelled.
+std::pair<RefinementRow, bool> runLevelRow(const RefinementSpec& spec, int value, bool reference, double dt,
+                                           double tolerance, const std::vector<double>& grid,
+                                           const std::atomic<bool>* cancel, Samples* samples) {
+    const ParameterSet p = refinementLevel(spec, value);
+    const Body body = buildBody(p);
+    RefinementRow row;
+    row.value = value;
+    row.reference = reference;
+    row.particles = body.topology.particleCount();
+    row.springs = static_cast<int>(body.topology.springCount());
+    const SpringSet& structural = body.topology.family(SpringFamily::Structural);
+    for (double r : structural.rest) row.h += r;
+    row.h /= static_cast<double>(std::max<std::size_t>(1, structural.size()));
+    LevelRun level = runLevel(spec, p, dt, tolerance, grid, cancel);
+    row.steps = level.run.steps;
+    row.wallSeconds = level.run.wallSeconds;
+    row.dt = isAdaptive(spec) ? spec.duration / static_cast<double>(std::max(1L, level.run.steps)) : dt;
+    if (level.run.failed) {
+        row.ok = false;
+        row.failedAt = level.run.failedAt;
+        row.failure = level.run.failure;
+    }
+    *samples = std::move(level.samples);
+    return {row, level.run.cancelled};
+}
+
+// The temporal curve: the finest-but-one level at coarser steps (or looser tolerances),
+// against its own run at the study's step, on the grid times each coarser step reaches; then
+// the time error of the study's step from the first (2 dt or 10 tol) run.
+void temporalCurve(const RefinementSpec& spec, const std::vector<double>& grid, const Samples& base, int levelCount,
+                   int total, const StudyProgressFn& progress, const std::atomic<bool>* cancel,
+                   RefinementResult& result) {
+    const bool adaptive = isAdaptive(spec);
+    const ParameterSet p = refinementLevel(spec, result.temporalValue);
+    for (int k = 1; k <= spec.temporalRuns; ++k) {
+        const double factor = std::pow(adaptive ? 10.0 : 2.0, k);
+        TemporalPoint point;
+        point.dt = adaptive ? result.dt : result.dt * factor;
+        point.tolerance = adaptive ? std::min(0.1, spec.tolerance * factor) : -1.0;
+        if (progress)
+            progress({levelCount + k - 1, total,
+                      levelName(spec, result.temporalValue) +
+                          (adaptive ? " tol=" + shortNumber(point.tolerance) : " dt=" + shortNumber(point.dt))});
+        std::vector<double> times;
+        std::vector<std::size_t> index;
+        for (std::size_t g = 0; g < grid.size(); ++g)
+            if (adaptive || isWholeMultiple(grid[g], point.dt)) times.push_back(grid[g]), index.push_back(g);
+        if (times.empty()) break;  // the step no longer lands on any grid time
+        LevelRun run = runLevel(spec, p, point.dt, point.tolerance, times, cancel);
+        if (run.run.cancelled || (cancel && cancel->load())) {
+            result.cancelled = true;
+            break;
+        }
+        point.steps = run.run.steps;
+        point.wallSeconds = run.run.wallSeconds;
+        if (adaptive) point.dt = spec.duration / static_cast<double>(std::max(1L, run.run.steps));
+        point.ok = !run.run.failed;
+        point.failure = run.run.failure;
+        if (point.ok) {
+            const Errors e = compare(run.samples, base, index);
+            point.errorVolume = e.volume;
+            point.errorCom = e.com;
+        }
+        result.temporal.push_back(point);
+    }
+    if (!result.temporal.empty() && result.temporal.front().ok) {
+        const int order = makeIntegrator(spec.integrator)->order();
+        const double shrink = adaptive ? 1.0 : std::pow(2.0, order) - 1.0;
+        result.timeErrorVolume = result.temporal.front().errorVolume / shrink;
+        result.timeErrorCom = result.temporal.front().errorCom / shrink;
+    }
+}
+
+}  // namespace
+
 RefinementResult runRefinement(const RefinementSpec& spec, const StudyProgressFn& progress,
                                const std::atomic<bool>* cancel) {
     if (auto error = validateRefinement(spec)) throw std::invalid_argument(*error);
     RefinementResult result;
     const std::vector<double> grid = outputGrid(spec);
     const std::vector<int> levels = sortedLevels(spec);
-    const bool adaptive = isAdaptive(spec);
     std::tie(result.dt, result.stepRule) = refinementStep(spec);
-    const double tolerance = adaptive ? spec.tolerance : -1.0;
+    const double tolerance = isAdaptive(spec) ? spec.tolerance : -1.0;
     const int total = static_cast<int>(levels.size()) + spec.temporalRuns;
     auto cancelled = [&] { return cancel && cancel->load(); };
-    auto name = [&](int value) { return spec.key + "=" + std::to_string(value); };
-
-    // Row of one level; its samples when it ran to T.
-    auto runRow = [&](int value, bool reference, Samples* samples) {
-        const ParameterSet p = refinementLevel(spec, value);
-        const Body body = buildBody(p);
-        RefinementRow row;
-        row.value = value;
-        row.reference = reference;
-        row.particles = body.topology.particleCount();
-        row.springs = static_cast<int>(body.topology.springCount());
-        const SpringSet& structural = body.topology.family(SpringFamily::Structural);
-        for (double r : structural.rest) row.h += r;
-        row.h /= static_cast<double>(std::max<std::size_t>(1, structural.size()));
-        LevelRun level = runLevel(spec, p, result.dt, tolerance, grid, cancel);
-        row.steps = level.run.steps;
-        row.wallSeconds = level.run.wallSeconds;
-        row.dt = adaptive ? spec.duration / static_cast<double>(std::max(1L, level.run.steps)) : result.dt;
-        if (level.run.failed) {
-            row.ok = false;
-            row.failedAt = level.run.failedAt;
-            row.failure = level.run.failure;
-        }
-        *samples = std::move(level.samples);
-        return std::make_pair(row, level.run.cancelled);
-    };
 
     // The reference first: without it nothing can be measured.
-    if (progress) progress({0, total, name(levels.back()) + " (reference)"});
+    if (progress) progress({0, total, levelName(spec, levels.back()) + " (reference)"});
     Samples reference;
-    auto [finestRow, finestCancelled] = runRow(levels.back(), true, &reference);
+    auto [finestRow, finestCancelled] = runLevelRow(spec, levels.back(), true, result.dt, tolerance, grid, cancel, &reference);
     if (finestCancelled || cancelled()) {
         result.cancelled = true;
         if (progress) progress({total, total, "cancelled"});
         return result;
     }
     if (!finestRow.ok)
-        throw std::runtime_error("the finest level (" + name(levels.back()) + ") failed at t = " +
+        throw std::runtime_error("the finest level (" + levelName(spec, levels.back()) + ") failed at t = " +
                                  formatDouble(finestRow.failedAt) + " s: " + finestRow.failure);
     result.rows.push_back(finestRow);
 
@@ -270,9 +323,9 @@ RefinementResult runRefinement(const RefinementSpec& spec, const StudyProgressFn
     const int temporalValue = levels[levels.size() - 2];
     Samples temporalBase;
     for (std::size_t i = 0; i + 1 < levels.size(); ++i) {
-        if (progress) progress({static_cast<int>(i) + 1, total, name(levels[i])});
+        if (progress) progress({static_cast<int>(i) + 1, total, levelName(spec, levels[i])});
         Samples samples;
-        auto [row, rowCancelled] = runRow(levels[i], false, &samples);
+        auto [row, rowCancelled] = runLevelRow(spec, levels[i], false, result.dt, tolerance, grid, cancel, &samples);
         if (rowCancelled || cancelled()) {
             result.cancelled = true;
             break;
@@ -288,50 +341,9 @@ RefinementResult runRefinement(const RefinementSpec& spec, const StudyProgressFn
     std::sort(result.rows.begin(), result.rows.end(),
               [](const RefinementRow& a, const RefinementRow& b) { return a.particles < b.particles; });
 
-    // The temporal curve: the finest-but-one level at coarser steps (or looser tolerances),
-    // against its own run at the study's step, on the grid times each coarser step reaches.
     result.temporalValue = temporalValue;
-    if (!result.cancelled && !temporalBase.empty()) {
-        const ParameterSet p = refinementLevel(spec, temporalValue);
-        for (int k = 1; k <= spec.temporalRuns; ++k) {
-            const double factor = std::pow(adaptive ? 10.0 : 2.0, k);
-            TemporalPoint point;
-            point.dt = adaptive ? result.dt : result.dt * factor;
-            point.tolerance = adaptive ? std::min(0.1, spec.tolerance * factor) : -1.0;
-            if (progress)
-                progress({static_cast<int>(levels.size()) + k - 1, total,
-                          name(temporalValue) + (adaptive ? " tol=" + shortNumber(point.tolerance)
-                                                          : " dt=" + shortNumber(point.dt))});
-            std::vector<double> times;
-            std::vector<std::size_t> index;
-            for (std::size_t g = 0; g < grid.size(); ++g)
-                if (adaptive || isWholeMultiple(grid[g], point.dt)) times.push_back(grid[g]), index.push_back(g);
-            if (times.empty()) break;  // the step no longer lands on any grid time
-            LevelRun run = runLevel(spec, p, point.dt, point.tolerance, times, cancel);
-            if (run.run.cancelled || cancelled()) {
-                result.cancelled = true;
-                break;
-            }
-            point.steps = run.run.steps;
-            point.wallSeconds = run.run.wallSeconds;
-            if (adaptive) point.dt = spec.duration / static_cast<double>(std::max(1L, run.run.steps));
-            point.ok = !run.run.failed;
-            point.failure = run.run.failure;
-            if (point.ok) {
-                const Errors e = compare(run.samples, temporalBase, index);
-                point.errorVolume = e.volume;
-                point.errorCom = e.com;
-            }
-            result.temporal.push_back(point);
-        }
-        // The time error of the study's step, from the first (2 dt or 10 tol) run.
-        if (!result.temporal.empty() && result.temporal.front().ok) {
-            const int order = makeIntegrator(spec.integrator)->order();
-            const double shrink = adaptive ? 1.0 : std::pow(2.0, order) - 1.0;
-            result.timeErrorVolume = result.temporal.front().errorVolume / shrink;
-            result.timeErrorCom = result.temporal.front().errorCom / shrink;
-        }
-    }
+    if (!result.cancelled && !temporalBase.empty())
+        temporalCurve(spec, grid, temporalBase, static_cast<int>(levels.size()), total, progress, cancel, result);
     if (cancelled()) result.cancelled = true;
     if (progress) progress({total, total, result.cancelled ? "cancelled" : "done"});
     return result;

@@ -81,6 +81,126 @@ double modeAmplification(const std::string& integrator, double h, double omega, 
     return std::max(std::abs(stabilityFunction(integrator, h * l1)), std::abs(stabilityFunction(integrator, h * l2)));
 }
 
+namespace {
+
+// The body's linearisation on its free coordinates, mass-normalised:
+// apply(u, false) = A u and apply(u, true) = C u, with A = -M^-1/2 K M^-1/2 and
+// C = -M^-1/2 D M^-1/2 (K, D the force's Jacobians in position and velocity).
+class MassNormalised {
+public:
+    explicit MassNormalised(OdeSystem& system) : m_system(system) {
+        const Eigen::VectorXd& mass = system.coordinateMass();
+        for (Eigen::Index i = 0; i < mass.size(); ++i)
+            if (mass[i] > 0.0) m_free.push_back(i);
+        m_n = mass.size();
+        m_zero = Eigen::VectorXd::Zero(m_n);
+        m_out.resize(m_n);
+    }
+    Eigen::Index size() const { return static_cast<Eigen::Index>(m_free.size()); }
+    Eigen::VectorXd apply(const Eigen::VectorXd& u, bool damping) {
+        const Eigen::VectorXd& mass = m_system.coordinateMass();
+        const Eigen::Index m = size();
+        Eigen::VectorXd full = Eigen::VectorXd::Zero(m_n);
+        for (Eigen::Index j = 0; j < m; ++j) full[m_free[j]] = u[j] / std::sqrt(mass[m_free[j]]);
+        if (damping) m_system.forceJacobianProduct(m_zero, full, m_out);
+        else m_system.forceJacobianProduct(full, m_zero, m_out);
+        Eigen::VectorXd r(m);
+        for (Eigen::Index j = 0; j < m; ++j) r[j] = -m_out[m_free[j]] / std::sqrt(mass[m_free[j]]);
+        return r;
+    }
+
+private:
+    OdeSystem& m_system;
+    std::vector<Eigen::Index> m_free;
+    Eigen::Index m_n = 0;
+    Eigen::VectorXd m_zero, m_out;
+};
+
+// Small bodies: A and C column by column, every mode (and, up to exactEigenLimit coordinates,
+// the first-order system's exact spectrum).
+void denseModes(MassNormalised& op, int exactEigenLimit, LinearModes& modes) {
+    const Eigen::Index m = op.size();
+    Eigen::MatrixXd A(m, m), C(m, m);
+    Eigen::VectorXd unit = Eigen::VectorXd::Zero(m);
+    for (Eigen::Index j = 0; j < m; ++j) {
+        unit[j] = 1.0;
+        A.col(j) = op.apply(unit, false);
+        C.col(j) = op.apply(unit, true);
+        unit[j] = 0.0;
+    }
+    A = 0.5 * (A + A.transpose());
+    if (m <= kExactStepLimit) {
+        modes.stiffness = A;
+        modes.damping2 = C;
+    }
+    if (m <= exactEigenLimit) {
+        // y = [M^1/2 x, M^1/2 v]: y' = [[0, I], [-A, -C]] y (A, C as built are -M^-1/2 K M^-1/2
+        // and -M^-1/2 D M^-1/2), same eigenvalues as [[0, I], [M^-1 K, M^-1 D]].
+        Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2 * m, 2 * m);
+        J.topRightCorner(m, m).setIdentity();
+        J.bottomLeftCorner(m, m) = -A;
+        J.bottomRightCorner(m, m) = -C;
+        Eigen::EigenSolver<Eigen::MatrixXd> eig(J, false);
+        for (Eigen::Index i = 0; i < 2 * m; ++i) {
+            modes.eigenvalues.push_back(eig.eigenvalues()[i]);
+            if (std::abs(eig.eigenvalues()[i]) > std::abs(modes.fastest)) modes.fastest = eig.eigenvalues()[i];
+        }
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
+    const Eigen::MatrixXd& phi = solver.eigenvectors();
+    for (Eigen::Index i = 0; i < m; ++i) {
+        modes.omega2.push_back(solver.eigenvalues()[i]);
+        modes.damping.push_back(phi.col(i).dot(C * phi.col(i)));
+    }
+}
+
+// Large bodies: the highest mode by power iteration, and the first-order system's extreme
+// eigenvalues (damping included, which the stiffest mode alone misses when a heavily damped
+// mode is faster) by Arnoldi on J [p; q] = [q; -A p - C q], Gram-Schmidt done twice.
+void iterativeModes(MassNormalised& op, LinearModes& modes) {
+    const Eigen::Index m = op.size();
+    modes.dense = false;
+    Eigen::VectorXd x = Eigen::VectorXd::Ones(m).normalized();
+    double lambda = 0.0;
+    for (int it = 0; it < 300; ++it) {
+        Eigen::VectorXd y = op.apply(x, false);
+        lambda = x.dot(y);
+        if (y.norm() == 0.0) break;
+        x = y.normalized();
+    }
+    modes.omega2.push_back(lambda);
+    modes.damping.push_back(x.dot(op.apply(x, true)));
+    const Eigen::Index size = 2 * m;
+    const int steps = int(std::min<Eigen::Index>(size, 80));
+    Eigen::MatrixXd V = Eigen::MatrixXd::Zero(size, steps + 1);
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(steps + 1, steps);
+    for (Eigen::Index i = 0; i < size; ++i) V(i, 0) = std::sin(1.0 + 12.9898 * double(i)) + 0.5;  // fixed start
+    V.col(0).normalize();
+    int k = 0;
+    for (; k < steps; ++k) {
+        const Eigen::VectorXd p = V.col(k).head(m), q = V.col(k).tail(m);
+        Eigen::VectorXd w(size);
+        w.head(m) = q;
+        w.tail(m) = -op.apply(p, false) - op.apply(q, true);
+        for (int pass = 0; pass < 2; ++pass) {
+            const Eigen::VectorXd h = V.leftCols(k + 1).transpose() * w;
+            w -= V.leftCols(k + 1) * h;
+            H.col(k).head(k + 1) += h;
+        }
+        H(k + 1, k) = w.norm();
+        if (H(k + 1, k) <= 1e-12 * H.col(k).head(k + 1).norm()) {
+            ++k;  // an invariant subspace: its Ritz values are exact
+            break;
+        }
+        V.col(k + 1) = w / H(k + 1, k);
+    }
+    Eigen::EigenSolver<Eigen::MatrixXd> ritz(H.topLeftCorner(k, k), false);
+    for (Eigen::Index i = 0; i < k; ++i) modes.ritzValues.push_back(ritz.eigenvalues()[i]);
+    modes.arnoldiSteps = k;
+}
+
+}  // namespace
+
 LinearModes linearModes(const ParameterSet& params, int exactEigenLimit, int denseLimit) {
     // At the rest shape: the perturbation is the trials' way to excite every mode, not part
     // of the body (stabilityModes).
@@ -92,103 +212,12 @@ LinearModes linearModes(const ParameterSet& params, int exactEigenLimit, int den
     sim.setContactDesignInJacobians(true);
     OdeSystem& system = sim.odeSystem();
     system.linearize(0.0, sim.state());
-    const Eigen::VectorXd& mass = system.coordinateMass();
-    std::vector<Eigen::Index> free;
-    for (Eigen::Index i = 0; i < mass.size(); ++i)
-        if (mass[i] > 0.0) free.push_back(i);
-    const auto m = static_cast<Eigen::Index>(free.size());
+    MassNormalised op(system);
     LinearModes modes;
-    modes.freeCoordinates = static_cast<int>(m);
-    const Eigen::Index n = mass.size();
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(n), zero = Eigen::VectorXd::Zero(n), out(n);
-    // Mass-normalised stiffness and damping on the free coordinates: A = -M^-1/2 K M^-1/2.
-    auto applyK = [&](const Eigen::VectorXd& u, bool damping) {
-        Eigen::VectorXd full = Eigen::VectorXd::Zero(n);
-        for (Eigen::Index j = 0; j < m; ++j) full[free[j]] = u[j] / std::sqrt(mass[free[j]]);
-        if (damping) system.forceJacobianProduct(zero, full, out);
-        else system.forceJacobianProduct(full, zero, out);
-        Eigen::VectorXd r(m);
-        for (Eigen::Index j = 0; j < m; ++j) r[j] = -out[free[j]] / std::sqrt(mass[free[j]]);
-        return r;
-    };
-    if (m == 0) return modes;
-    if (m <= denseLimit) {
-        Eigen::MatrixXd A(m, m), C(m, m);
-        Eigen::VectorXd unit = Eigen::VectorXd::Zero(m);
-        for (Eigen::Index j = 0; j < m; ++j) {
-            unit[j] = 1.0;
-            A.col(j) = applyK(unit, false);
-            C.col(j) = applyK(unit, true);
-            unit[j] = 0.0;
-        }
-        A = 0.5 * (A + A.transpose());
-        if (m <= kExactStepLimit) {
-            modes.stiffness = A;
-            modes.damping2 = C;
-        }
-        if (m <= exactEigenLimit) {
-            // y = [M^1/2 x, M^1/2 v]: y' = [[0, I], [-A, -C]] y (A, C as built are -M^-1/2 K M^-1/2
-            // and -M^-1/2 D M^-1/2), same eigenvalues as [[0, I], [M^-1 K, M^-1 D]].
-            Eigen::MatrixXd J = Eigen::MatrixXd::Zero(2 * m, 2 * m);
-            J.topRightCorner(m, m).setIdentity();
-            J.bottomLeftCorner(m, m) = -A;
-            J.bottomRightCorner(m, m) = -C;
-            Eigen::EigenSolver<Eigen::MatrixXd> eig(J, false);
-            for (Eigen::Index i = 0; i < 2 * m; ++i) {
-                modes.eigenvalues.push_back(eig.eigenvalues()[i]);
-                if (std::abs(eig.eigenvalues()[i]) > std::abs(modes.fastest)) modes.fastest = eig.eigenvalues()[i];
-            }
-        }
-        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(A);
-        const Eigen::MatrixXd& phi = solver.eigenvectors();
-        for (Eigen::Index i = 0; i < m; ++i) {
-            modes.omega2.push_back(solver.eigenvalues()[i]);
-            modes.damping.push_back(phi.col(i).dot(C * phi.col(i)));
-        }
-    } else {
-        // Power iteration for the highest mode only.
-        modes.dense = false;
-        Eigen::VectorXd x = Eigen::VectorXd::Ones(m).normalized();
-        double lambda = 0.0;
-        for (int it = 0; it < 300; ++it) {
-            Eigen::VectorXd y = applyK(x, false);
-            lambda = x.dot(y);
-            if (y.norm() == 0.0) break;
-            x = y.normalized();
-        }
-        modes.omega2.push_back(lambda);
-        modes.damping.push_back(x.dot(applyK(x, true)));
-        // The first-order system's extreme eigenvalues (damping included, which the stiffest
-        // mode alone misses when a heavily damped mode is faster): Arnoldi on
-        // J [p; q] = [q; -A p - C q] (A, C as built above), with Gram-Schmidt done twice.
-        const Eigen::Index size = 2 * m;
-        const int steps = int(std::min<Eigen::Index>(size, 80));
-        Eigen::MatrixXd V = Eigen::MatrixXd::Zero(size, steps + 1);
-        Eigen::MatrixXd H = Eigen::MatrixXd::Zero(steps + 1, steps);
-        for (Eigen::Index i = 0; i < size; ++i) V(i, 0) = std::sin(1.0 + 12.9898 * double(i)) + 0.5;  // fixed start
-        V.col(0).normalize();
-        int k = 0;
-        for (; k < steps; ++k) {
-            const Eigen::VectorXd p = V.col(k).head(m), q = V.col(k).tail(m);
-            Eigen::VectorXd w(size);
-            w.head(m) = q;
-            w.tail(m) = -applyK(p, false) - applyK(q, true);
-            for (int pass = 0; pass < 2; ++pass) {
-                const Eigen::VectorXd h = V.leftCols(k + 1).transpose() * w;
-                w -= V.leftCols(k + 1) * h;
-                H.col(k).head(k + 1) += h;
-            }
-            H(k + 1, k) = w.norm();
-            if (H(k + 1, k) <= 1e-12 * H.col(k).head(k + 1).norm()) {
-                ++k;  // an invariant subspace: its Ritz values are exact
-                break;
-            }
-            V.col(k + 1) = w / H(k + 1, k);
-        }
-        Eigen::EigenSolver<Eigen::MatrixXd> ritz(H.topLeftCorner(k, k), false);
-        for (Eigen::Index i = 0; i < k; ++i) modes.ritzValues.push_back(ritz.eigenvalues()[i]);
-        modes.arnoldiSteps = k;
-    }
+    modes.freeCoordinates = static_cast<int>(op.size());
+    if (op.size() == 0) return modes;
+    if (op.size() <= denseLimit) denseModes(op, exactEigenLimit, modes);
+    else iterativeModes(op, modes);
     for (std::size_t i = 0; i < modes.omega2.size(); ++i) {
         if (modes.omega2[i] < -1e-9 * std::abs(modes.omega2.back())) ++modes.unstableModes;
         modes.fastestDamping = std::max(modes.fastestDamping, modes.damping[i]);

@@ -2,7 +2,10 @@
 // default; edits validated by the same table; values round-trip.
 #include <QComboBox>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSignalSpy>
+#include <QSlider>
+#include <QToolButton>
 #include <QTest>
 
 #include <QFileInfo>
@@ -280,6 +283,81 @@ private slots:
         dock.findChild<QWidget*>("rebuildButton")->metaObject()->invokeMethod(dock.findChild<QWidget*>("rebuildButton"), "click");
         QCOMPARE(rebuild.count(), 1);
     }
+    void slidersBesideTheMainParameters() {
+        ParameterDock dock;
+        dock.showParameters(simcore::ParameterSet(SceneKind::Ring2d));
+        ParameterForm* form = dock.form();
+        // The main parameters have one, inside the table's range; the others only the field.
+        for (const QString key : {"ks", "kd", "rks", "rkd", "pressure", "mass_inner", "gravity", "restitution", "friction"}) {
+            QSlider* slider = form->slider(key);
+            QVERIFY2(slider, qPrintable(key));
+            const simcore::ParamSpec* spec = simcore::findParam(key.toStdString());
+            const double lo = form->sliderValue(key, slider->minimum()), hi = form->sliderValue(key, slider->maximum());
+            QVERIFY2(lo >= spec->minValue && hi <= spec->maxValue && lo < hi, qPrintable(key));
+            QVERIFY2(!simcore::validateValue(*spec, lo) && !simcore::validateValue(*spec, hi), qPrintable(key));
+            // Its range and unit are shown beside it and in its tooltip.
+            QVERIFY2(slider->toolTip().contains(toQString(spec->unit)), qPrintable(slider->toolTip()));
+            QVERIFY(slider->toolTip().contains(QString::fromStdString(spec->rangeText())));
+            // It shows the value in use.
+            QCOMPARE(slider->value(), form->sliderPosition(key, simcore::ParameterSet(SceneKind::Ring2d).get(spec->id)));
+        }
+        QVERIFY(!form->slider("seed"));
+        QVERIFY(!form->slider("dt"));  // DT: the Run dock's field
+        // Dragging it edits the parameter live, and the field follows; a slider on a log scale
+        // covers the stiffness by factors.
+        QSignalSpy edited(&dock, &ParameterDock::parameterEdited);
+        QSlider* ks = form->slider("ks");
+        ks->setValue(ks->maximum());
+        QCOMPARE(edited.count(), 1);
+        QCOMPARE(edited.at(0).at(0).value<simcore::Param>(), simcore::Param::Ks);
+        QCOMPARE(edited.at(0).at(1).toDouble(), 1e5);
+        QCOMPARE(form->field("ks")->text(), QString("100000"));
+        ks->setValue(ks->maximum() / 2);
+        QCOMPARE(edited.at(1).at(1).toDouble(), 1000.0);  // sqrt(10 * 1e5)
+        // Typing a value moves the slider without a second edit.
+        form->field("ks")->setText("316");
+        emit form->field("ks")->editingFinished();
+        QCOMPARE(edited.count(), 3);
+        QCOMPARE(ks->value(), form->sliderPosition("ks", 316));
+        // Showing the model's values does not echo as an edit.
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set(simcore::Param::Ks, 2000.0);
+        dock.showParameters(p);
+        QCOMPARE(edited.count(), 3);
+        QCOMPARE(ks->value(), form->sliderPosition("ks", 2000));
+    }
+
+    void defaultButtonsAndResetAll() {
+        ParameterDock dock;
+        simcore::ParameterSet p(SceneKind::Ring2d);
+        p.set(simcore::Param::Ks, 2000.0);
+        p.set(simcore::Param::Gravity, 3.0);
+        p.set(simcore::Param::Contact, 1.0);  // a choice
+        p.set(simcore::Param::Dt, 0.001);
+        dock.showParameters(p);
+        ParameterForm* form = dock.form();
+        QVERIFY(form->defaultButton("ks")->isEnabled());
+        QVERIFY(!form->defaultButton("kd")->isEnabled());  // at its default already
+        QVERIFY(form->defaultButton("contact")->isEnabled());
+        QSignalSpy edited(&dock, &ParameterDock::parameterEdited);
+        form->defaultButton("ks")->click();
+        QCOMPARE(edited.count(), 1);
+        QCOMPARE(edited.at(0).at(0).value<simcore::Param>(), simcore::Param::Ks);
+        QCOMPARE(edited.at(0).at(1).toDouble(), 800.0);
+        // Reset all: one edit for each value off the scene's default (DT too), none for the rest.
+        p.set(simcore::Param::Ks, 800.0);
+        dock.showParameters(p);
+        edited.clear();
+        dock.resetAllButton()->click();
+        QMap<simcore::Param, double> got;
+        for (const auto& args : edited) got[args.at(0).value<simcore::Param>()] = args.at(1).toDouble();
+        const simcore::ParameterSet defaults(SceneKind::Ring2d);
+        QCOMPARE(got.size(), 3);
+        QCOMPARE(got.value(simcore::Param::Gravity), defaults.get(simcore::Param::Gravity));
+        QCOMPARE(got.value(simcore::Param::Contact), defaults.get(simcore::Param::Contact));
+        QCOMPARE(got.value(simcore::Param::Dt), defaults.get(simcore::Param::Dt));
+    }
+
     void helpPageCoversEveryIntegratorAndLinksExist() {
         const QString html = HelpDialog::html();
         for (const simcore::IntegratorInfo& info : simcore::integratorTable()) {

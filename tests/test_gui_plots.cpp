@@ -15,6 +15,7 @@
 #include "ui/plot_dock.h"
 #include "ui/plot_ticks.h"
 #include "ui/pv_dock.h"
+#include "ui/reference_run.h"
 #include "ui/simulation_controller.h"
 #include "ui/studies_dialog.h"
 
@@ -259,6 +260,69 @@ private slots:
         }
     }
 
+    // The reference curve: a converged rk45 run from the run's start, beside the curves; the
+    // run's distance to it is the error of the run so far. DT edits keep it (the exact
+    // solution is the same), a change of the physics stops it there, a reset starts it over.
+    void referenceCurveIsTheGlobalError() {
+        MainWindow window(false);
+        PlotDock* dock = window.plotDock();
+        auto legendHasReference = [&] { return dock->legendNames("volume").join('|').contains("reference"); };
+        QVERIFY(!legendHasReference());  // off: not drawn, not in the legend
+        dock->setReferenceShown(true);
+        QVERIFY(legendHasReference());
+        simcore::ParameterSet ring(SceneKind::Ring2d);
+        QVERIFY(!ring.set(simcore::Param::Dt, 0.05));
+        window.startScene(ring, {QStringLiteral("implicit-euler")});
+        QTRY_VERIFY_WITH_TIMEOUT(window.controller()->latest() != nullptr, testsupport::kHangGuardMs);
+        SimulationController* c = window.controller();
+        auto runTo = [&](double t) {
+            c->runUntil(t);
+            QTRY_VERIFY_WITH_TIMEOUT(c->latest()->lanes[0].diagnostics.time >= t - 1e-9 && !c->latest()->running,
+                                     testsupport::kHangGuardMs);
+        };
+        runTo(0.5);
+        c->setParameter(simcore::Param::Dt, 0.025);  // not a change of the physics
+        runTo(1.0);
+        const double tRun = c->latest()->lanes[0].diagnostics.time;
+        QTRY_COMPARE_WITH_TIMEOUT(dock->referenceTime(), tRun, testsupport::kHangGuardMs);
+
+        // The reference is rk45 at 1e-10 from the same start, computed here on its own.
+        simcore::Simulation exact(ring, "rk45");
+        simcore::IntegratorOptions tight = exact.integratorOptions();
+        tight.atol = tight.rtol = ReferenceRun::kTolerance;
+        exact.setIntegratorOptions(tight);
+        QVERIFY(exact.advanceTo(tRun));
+        const int total = dock->seriesNames("energy").indexOf("total");
+        const simcore::Diagnostics& d = exact.diagnostics();
+        QVERIFY(total >= 0);
+        QVERIFY(qAbs(dock->referenceValueAt("energy", total, tRun) - d.total()) <= 1e-9 * qAbs(d.total()));
+        QVERIFY(qAbs(dock->referenceValueAt("volume", 0, tRun) - d.volume[0]) <= 1e-9 * d.volume[0]);
+        // The error shown is the run's curve minus the reference, at a row of the run.
+        const double error = dock->valueAt("energy", total, tRun) - d.total();
+        QVERIFY2(qAbs(dock->referenceEnergyError() - error) <= 1e-9 * qAbs(error),
+                 qPrintable(QStringLiteral("%1 vs %2").arg(dock->referenceEnergyError()).arg(error)));
+        QVERIFY(qAbs(error) > 0.01);  // implicit Euler at DT 0.05/0.025 is far from converged
+        QVERIFY2(dock->referenceNote().contains(QStringLiteral("t = %1 s").arg(tRun, 0, 'f', 3)),
+                 qPrintable(dock->referenceNote()));
+        QVERIFY(dock->referencePointCount("volume", 0) >= int(1.0 / ReferenceRun::kSampleInterval));
+
+        // A change of the physics: the reference stops where it happened.
+        c->setParameter(simcore::Param::Ks, 2000.0);
+        runTo(1.5);
+        QTRY_VERIFY_WITH_TIMEOUT(dock->referenceNote().contains(QStringLiteral("changed at t = 1.000 s")),
+                                 testsupport::kHangGuardMs);
+        QCOMPARE(dock->referenceTime(), tRun);
+        QCOMPARE(dock->referenceRun()->samples().back().time, tRun);
+
+        // A reset starts it over from the new start; switched off it stops and says nothing.
+        c->reset();
+        QTRY_COMPARE_WITH_TIMEOUT(dock->referencePointCount("volume", 0), 1, testsupport::kHangGuardMs);
+        dock->setReferenceShown(false);
+        QVERIFY(dock->referenceNote().isEmpty());
+        QVERIFY(!legendHasReference());
+        QVERIFY(!dock->referenceRun()->active());
+    }
+
     void readoutShowsTheSolverCounters() {
         // Issue 13: with a CVODE method the run dock's readout carries CVODE's own counters,
         // the frame's numbers; a textbook method shows none of those rows.
@@ -413,6 +477,33 @@ private slots:
         QVERIFY(!dialog.busy());
         if (qEnvironmentVariableIsSet("ELASTIC_LAB_SHOT_DIR"))
             dialog.grab().save(qEnvironmentVariable("ELASTIC_LAB_SHOT_DIR") + "/study.png");
+    }
+
+    void studyAxesKeepTheirLabelsApart() {
+        // DTs spanning less than 1.6 decades: the log ticker falls back to linear steps with
+        // long labels (0.0125, 0.015, 0.0175), which ran into each other at 1000 px.
+        simcore::ParameterSet p(SceneKind::Spring1d);
+        WorkPrecisionDialog dialog(p);
+        dialog.setSteps("0.02 0.016 0.0125 0.01");
+        dialog.setDuration(0.4);
+        dialog.setRepeats(1);
+        QSignalSpy finished(&dialog, &StudyDialogBase::finished);
+        dialog.start();
+        QVERIFY(dialog.busy());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, testsupport::kHangGuardMs);
+        dialog.resize(1000, 700);
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        dialog.plot()->replot();
+        dialog.plot()->replot();  // the second draw: the ticks chosen for the laid-out axes
+        QCOMPARE(dialog.plot()->axisRectCount(), 2);
+        for (QCPAxisRect* rect : dialog.plot()->axisRects())
+            for (QCPAxis* axis : {rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft)}) {
+                int inRange = 0;
+                for (double t : axis->tickVector()) inRange += axis->range().contains(t);
+                QVERIFY2(inRange >= 2, qPrintable(axis->label()));
+                QVERIFY2(!tickLabelsOverlap(axis), qPrintable(axis->label() + ": " + QStringList(axis->tickVectorLabels().toList()).join(" ")));
+            }
     }
 
     void conservationStudyClassifiesTheGrowth() {
@@ -703,8 +794,10 @@ private slots:
         for (int v = 1; v < 3; ++v)
             QVERIFY2(readout.contains(QStringLiteral("%1 J").arg(c->latest()->lanes[std::size_t(v)].diagnostics.energyDrift(), 0, 'g', 3)),
                      qPrintable(readout));
-        QVERIFY2(readout.contains("distance to view 2"), qPrintable(readout));  // euler failed: midpoint is the reference
-        QVERIFY(readout.contains(QStringLiteral("%1 m").arg(c->latest()->lanes[2].divergence, 0, 'e', 2)));
+        QVERIFY2(readout.contains("distance<br>to view 2"), qPrintable(readout));  // euler failed: midpoint is the reference
+        QVERIFY(readout.contains(QStringLiteral("%1 m").arg(c->latest()->lanes[2].divergence, 0, 'g', 3)));
+        // View 1's own numbers are not repeated above the table (each view's are in it).
+        QVERIFY2(!readout.contains("simulated time") && !readout.contains("contact energy"), qPrintable(readout));
         // Back to one view: the comparison goes.
         w.startScene(p, {"rk4"});
         QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.size() == 1 && plots->viewCount() == 1; }));
@@ -849,7 +942,7 @@ private slots:
 #endif
         MainWindow window(false);
         QVERIFY(window.energyBarsDock()->isHidden() && window.pvDock()->isHidden());
-        QCOMPARE(MainWindow::dockNames(), (QStringList{"energy-bars", "pv", "stability-map", "timeline"}));
+        QCOMPARE(MainWindow::dockNames(), (QStringList{"energy-bars", "pv", "stability-map", "timeline", "lesson"}));
         window.show();
         QVERIFY(window.openDock("energy-bars") && window.openDock("pv"));
         QVERIFY(!window.openDock("no-such-dock") && !window.openDock("timeline-map"));

@@ -203,6 +203,28 @@ private slots:
         QTest::newRow("ring2d") << SceneKind::Ring2d;
         QTest::newRow("sphere3d") << SceneKind::Sphere3d;
     }
+    void distanceIsToTheLiveReferenceView() {
+        // Euler fails at t = 0.98 s at DT 0.01; midpoint and rk4 run on. The distance is then
+        // measured to midpoint (the first live view): rk4's view names it, midpoint's and the
+        // failed view's show none (as the Run dock's "distance to view 2").
+        MainWindow w(false);
+        simcore::ParameterSet ring(SceneKind::Ring2d);
+        QVERIFY(!ring.set(simcore::Param::Dt, 0.01));
+        w.startScene(ring, {"euler", "midpoint", "rk4"});
+        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 3, testsupport::kHangGuardMs);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller()->latest() && w.controller()->latest()->lanes.size() == 3, testsupport::kHangGuardMs);
+        w.controller()->runUntil(1.5);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() &&
+                                     w.controller()->latest()->lanes[1].diagnostics.time > 1.49, testsupport::kHangGuardMs);
+        const FramePtr f = w.controller()->latest();
+        QVERIFY(f->lanes[0].failure.has_value());
+        QCOMPARE(f->lanes[2].divergenceReference, 1);
+        QTRY_VERIFY_WITH_TIMEOUT(w.viewports()[2]->overlayText().contains("distance from midpoint"), testsupport::kHangGuardMs);
+        QVERIFY2(!w.viewports()[1]->overlayText().contains("distance"), qPrintable(w.viewports()[1]->overlayText()));
+        QVERIFY(!w.viewports()[0]->overlayText().contains("distance"));
+        QVERIFY(w.viewports()[0]->overlayText().contains("Blew up"));
+    }
+
     void mouseDragGrabsAndPulls() {
         QFETCH(SceneKind, kind);
         MainWindow w(false);

@@ -166,13 +166,13 @@ private slots:
         QCOMPARE(grabbed.at(0).at(0).toInt(), top);
         c->moveAnchor(at + QVector3D(0, 0, 2));
         for (int i = 0; i < 30; ++i) c->step();
-        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world && f.world->step >= 30; }));
+        QVERIFY(waitForFrame(*c, [](const Frame& g) { return g.world && g.world->step >= 30; }));
         QVERIFY(c->latest()->lanes[0].pointer.active);
         QCOMPARE(c->latest()->lanes[0].pointer.particle, top);
         QVERIFY(c->latest()->world->bodies[1].velocity.z() > 0.01);  // pulled up along z
         QVERIFY(std::abs(c->latest()->world->bodies[0].velocity.z()) < 1e-9);
         c->release();
-        QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.lanes[0].pointer.active; }));
+        QVERIFY(waitForFrame(*c, [](const Frame& g) { return !g.lanes[0].pointer.active; }));
     }
 
     void whatAWorldHasNotSaysSo() {

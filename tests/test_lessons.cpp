@@ -18,6 +18,9 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
+#include <QMenu>
+#include <QTableWidget>
+#include <QToolButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
@@ -27,11 +30,13 @@
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simcore/world.h"
-#include "simlab/impact.h"
 #include "simlab/stability.h"
 #include "simlab/conservation.h"
 #include "test_support.h"
 #include "ui/energy_bars_dock.h"
+#include "ui/help_dialog.h"
+#include "ui/lesson_dock.h"
+#include "ui/lesson_measures.h"
 #include "ui/lessons.h"
 #include "ui/lessons_dialog.h"
 #include "ui/main_window.h"
@@ -56,181 +61,15 @@ ParameterSet with(ParameterSet p, std::initializer_list<std::pair<const char*, d
     return p;
 }
 
-// Runs `steps` steps (or until the run fails) and returns the simulation.
-std::unique_ptr<Simulation> runSteps(const ParameterSet& p, const std::string& integrator, long steps) {
-    auto sim = std::make_unique<Simulation>(p, integrator);
-    while (sim->diagnostics().step < steps)
-        if (!sim->step()) break;
-    return sim;
-}
-
-// The simulated time at which a run fails (the start of the failing step), or -1.
-double failureTime(const ParameterSet& p, const std::string& integrator, double until) {
-    Simulation sim(p, integrator);
-    while (sim.time() < until)
-        if (!sim.step()) return sim.failure()->time;
-    return -1.0;
-}
-
-// `elastic-lab-cli stability`'s row for one integrator on these parameters (perturb 0.01 m).
-simlab::StabilityRow scan(const ParameterSet& p, const std::string& integrator) {
-    simlab::StabilitySpec spec;
-    spec.params = p;
-    spec.integrators = {integrator};
-    // The one verdict's linearisation, as the CLI's (the trials start perturbed).
-    return simlab::scanIntegrator(spec, integrator, simlab::stabilityModes(p));
-}
-
-// Mean height of the outer layer's particles minus that of the inner layer's [m].
-double sag(const Simulation& sim) {
-    double inner = 0.0, outer = 0.0;
-    int ni = 0, no = 0;
-    const auto& layer = sim.topology().layer;
-    for (Eigen::Index i = 0; i < sim.positions().cols(); ++i) {
-        if (layer[std::size_t(i)] == simcore::Layer::Inner) inner += sim.positions()(1, i), ++ni;
-        else outer += sim.positions()(1, i), ++no;
+// Every stated answer, by lesson and key, measured on the lesson's own preset by the table the
+// Lesson dock's "Measure" uses (ui/lesson_measures.h).
+QMap<QString, QMap<QString, std::function<double()>>> measurements() {
+    QMap<QString, QMap<QString, std::function<double()>>> m;
+    for (const Lesson& l : lessons()) {
+        const ParameterSet p = l.preset.parameters();
+        const auto table = lessonMeasures(l.id);
+        for (auto it = table.begin(); it != table.end(); ++it) m[l.id][it.key()] = [p, f = it.value()] { return f(p); };
     }
-    return outer / no - inner / ni;
-}
-
-using Measure = std::function<double()>;
-
-// Every stated answer, by lesson and key, measured as the lesson's CLI command measures it.
-QMap<QString, QMap<QString, Measure>> measurements() {
-    QMap<QString, QMap<QString, Measure>> m;
-
-    // 1. `stability --scene ring2d --integrators euler`; `run ... --dt 0.009 --set perturb=0.01`.
-    const ParameterSet euler = lesson("euler-limit").preset.parameters();
-    m["euler-limit"]["dt-stable"] = [=] { return scan(euler, "euler").stable; };
-    m["euler-limit"]["dt-predicted"] = [=] { return scan(euler, "euler").predicted; };
-    m["euler-limit"]["blowup-time"] = [=] { return failureTime(with(euler, {{"dt", 0.009}}), "euler", 2.0); };
-
-    // 2. `run --scene ring2d --integrator I --dt 0.003 --duration 3` (1000 steps).
-    const ParameterSet drift = lesson("energy-drift").preset.parameters();
-    for (const char* integrator : {"euler", "midpoint", "rk4"})
-        m["energy-drift"][QStringLiteral("drift-") + integrator] = [=] {
-            return runSteps(drift, integrator, 1000)->diagnostics().energyDrift();
-        };
-    m["energy-drift"]["rk4-ratio"] = [=] {
-        return runSteps(drift, "rk4", 1000)->diagnostics().energyDrift() /
-               runSteps(with(drift, {{"dt", 0.0015}}), "rk4", 2000)->diagnostics().energyDrift();
-    };
-
-    // 3. `run --scene sphere3d --set subdivisions=2 --set mass_inner=5 --duration 3 --state`.
-    const ParameterSet heavy = lesson("heavy-inner").preset.parameters();
-    m["heavy-inner"]["sag"] = [=] { return sag(*runSteps(heavy, "rk4", 1000)); };
-    m["heavy-inner"]["collapse-time"] = [=] { return failureTime(with(heavy, {{"mass_inner", 10.0}}), "rk4", 3.0); };
-
-    // 4. `stability --scene sphere3d --set subdivisions=L --integrators rk4`, and the pre-run
-    // advice the banner shows at level 3 with the lesson's DT.
-    const ParameterSet sphere = lesson("refine-sphere").preset.parameters();
-    for (int level : {1, 2, 3})
-        m["refine-sphere"][QStringLiteral("dt-level%1").arg(level)] = [=] {
-            return scan(with(sphere, {{"subdivisions", level}}), "rk4").stable;
-        };
-    m["refine-sphere"]["suggested-level3"] = [=] {
-        const Simulation sim(with(sphere, {{"subdivisions", 3}}), "rk4");
-        const auto advice = simlab::stabilityAdvice(sim);
-        return advice ? advice->suggestedDt : -1.0;
-    };
-
-    // 5. `run --scene ring2d --duration 3 --csv`: the row with the smallest inner area.
-    const ParameterSet ring = lesson("pv-isotherm").preset.parameters();
-    auto squash = [=](int what) {
-        Simulation sim(ring, "rk4");
-        simcore::Diagnostics least = sim.diagnostics();
-        while (sim.diagnostics().step < 1000 && sim.step())
-            if (sim.diagnostics().volume[0] < least.volume[0]) least = sim.diagnostics();
-        return what == 0 ? least.volume[0] : what == 1 ? least.pressure[0] : least.time;
-    };
-    m["pv-isotherm"]["min-area"] = [=] { return squash(0); };
-    m["pv-isotherm"]["max-pressure"] = [=] { return squash(1); };
-    m["pv-isotherm"]["squash-time"] = [=] { return squash(2); };
-
-    // 6. `restitution --scene ring2d --set restitution=E --speeds 1,3`.
-    const ParameterSet bounce = lesson("restitution").preset.parameters();
-    m["restitution"]["particle-e0.9"] = [=] { return simlab::measureImpact(bounce, "rk4", 3.0).particle; };
-    m["restitution"]["body-e0.9"] = [=] { return simlab::measureImpact(bounce, "rk4", 3.0).body; };
-    m["restitution"]["body-e0.2"] = [=] {
-        return simlab::measureImpact(with(bounce, {{"restitution", 0.2}}), "rk4", 3.0).body;
-    };
-    m["restitution"]["particle-1mps"] = [=] { return simlab::measureImpact(bounce, "rk4", 1.0).particle; };
-
-    // 7. `stability --scene ring2d --set ks=1e6 --integrators rk4`; `run ... implicit-euler
-    // --dt 0.01 --duration 3` (300 steps).
-    const ParameterSet stiff = lesson("stiff-springs").preset.parameters();
-    m["stiff-springs"]["rk4-limit"] = [=] { return scan(stiff, "rk4").stable; };
-    m["stiff-springs"]["implicit-drift"] = [=] {
-        return runSteps(stiff, "implicit-euler", 300)->diagnostics().energyDrift();
-    };
-
-    // 8. `conservation --scene spring1d --dt 0.01 --periods 10000 (and 100) --integrators
-    // verlet,yoshida4,rk4`: each study runs once per test run, shared by the answers that read it.
-    const ParameterSet spring = lesson("why-symplectic").preset.parameters();
-    auto longRun = [=](double periods) {
-        return [=]() -> const simlab::ConservationResult& {
-            static std::map<double, simlab::ConservationResult> done;
-            if (!done.count(periods)) {
-                simlab::ConservationSpec spec;
-                spec.params = spring;
-                spec.integrators = {"verlet", "yoshida4", "rk4"};
-                spec.periods = periods;
-                spec.dt = spring.get(simcore::Param::Dt);
-                done[periods] = simlab::runConservation(spec);
-            }
-            return done[periods];
-        };
-    };
-    const auto long10000 = longRun(10000.0), long100 = longRun(100.0);
-    m["why-symplectic"]["verlet-error"] = [=] { return long10000().rows[0].finalError; };
-    m["why-symplectic"]["yoshida4-error"] = [=] { return long10000().rows[1].finalError; };
-    m["why-symplectic"]["rk4-error"] = [=] { return long10000().rows[2].finalError; };
-    m["why-symplectic"]["verlet-growth"] = [=] { return long10000().rows[0].finalError / long100().rows[0].finalError; };
-    m["why-symplectic"]["rk4-growth"] = [=] { return long10000().rows[2].finalError / long100().rows[2].finalError; };
-    m["why-symplectic"]["rk4-alpha"] = [=] { return long10000().rows[2].alpha; };
-
-    // 9. `run --scene collide2d --set gravity=0 --set body2.mass=4 --duration 2.4` (800 steps).
-    const auto worldAt = [](const Lesson& l, long steps) {
-        return [spec = *l.preset.world(), steps]() -> simcore::WorldDiagnostics {
-            simcore::World world(spec, "rk4");
-            while (world.stepCount() < steps)
-                if (!world.step()) qFatal("the lesson's world failed: %s", world.failure()->c_str());
-            return world.diagnostics();
-        };
-    };
-    const auto balloons = worldAt(lesson("balloons-collide"), 800);
-    m["balloons-collide"]["v1-after"] = [=] { return balloons().bodies[0].velocity.x(); };
-    m["balloons-collide"]["v2-after"] = [=] { return balloons().bodies[1].velocity.x(); };
-    m["balloons-collide"]["momentum"] = [=] { return balloons().momentum.x(); };
-    m["balloons-collide"]["restitution"] = [=] {
-        const auto d = balloons();
-        return (d.bodies[1].velocity.x() - d.bodies[0].velocity.x()) / (2.0 - (-2.0));
-    };
-    m["balloons-collide"]["ke-kept"] = [=] {
-        const auto d = balloons();
-        double before = 0.0, after = 0.0;
-        for (const auto& b : d.bodies) {
-            before += 0.5 * b.mass * 4.0;
-            after += 0.5 * b.mass * b.velocity.squaredNorm();
-        }
-        return after / before;
-    };
-
-    // 10. `run --scene stack3d --set subdivisions=1 --set pressure=300 --set kd=40 --set rkd=120
-    // --duration 5` (1667 steps), run once and shared by its answers.
-    const auto stackRun = worldAt(lesson("soft-stack"), 1667);
-    const auto stack = [=]() -> const simcore::WorldDiagnostics& {
-        static const simcore::WorldDiagnostics done = stackRun();
-        return done;
-    };
-    const auto flattened = [=](int body) {
-        const simcore::BodyDiagnostics& b = stack().bodies[std::size_t(body)];
-        return b.volume[1] / b.restVolume[1];
-    };
-    m["soft-stack"]["bottom-volume"] = [=] { return flattened(0); };
-    m["soft-stack"]["middle-volume"] = [=] { return flattened(1); };
-    m["soft-stack"]["top-volume"] = [=] { return flattened(2); };
-    m["soft-stack"]["pressure-ratio"] = [=] { return stack().bodies[0].pressure[1] / stack().bodies[2].pressure[1]; };
     return m;
 }
 
@@ -258,7 +97,7 @@ private slots:
             QCOMPARE(findLesson(l.id)->title, l.title);
             QVERIFY(!l.preset.integrators.isEmpty() && l.preset.integrators.size() <= 3);
             // Valid presets: the scene exists, every value passes the parameter table.
-            if (const auto world = l.preset.world()) {  // a scene of several bodies: its --set, checked
+            if (l.preset.world()) {  // a scene of several bodies: its --set, checked
                 simcore::WorldSpec spec = *simcore::worldScene(l.preset.scene.toStdString());
                 for (const QString& a : l.preset.worldSet)
                     QVERIFY2(!simcore::assignWorld(spec, a.toStdString()), qPrintable(l.id + ": " + a));
@@ -314,6 +153,71 @@ private slots:
         }
     }
 
+    void textValuesAgreeWithThePreset() {
+        // Every value "What to do" names is marked; a setting is what the preset sets, every
+        // value the preset sets is named, a value to try passes the parameter table, and the
+        // lesson says until when to run.
+        static const QRegularExpression marked("<span class=\"(?:setting|try|until)\"[^>]*>[^<]*</span>");
+        static const QRegularExpression bare("(=|\\bto)\\s*(<[^>]+>\\s*)*[0-9]");
+        for (const Lesson& l : lessons()) {
+            const QString html = l.html();
+            const ParameterSet preset = l.preset.parameters();
+            QStringList named;
+            for (const LessonValue& v : lessonValues(html)) {
+                QVERIFY2(v.valid, qPrintable(l.id + ": " + v.key + " is not a number"));
+                const simcore::ParamSpec* spec = simcore::findParam(v.key.toStdString());
+                QVERIFY2(spec && preset.has(spec->id), qPrintable(l.id + ": unknown key " + v.key));
+                if (v.kind == "setting") {
+                    QVERIFY2(qFuzzyCompare(preset.get(spec->id), v.value),
+                             qPrintable(QStringLiteral("%1: the text says %2 = %3, the preset sets %4")
+                                            .arg(l.id, v.key).arg(v.value).arg(preset.get(spec->id))));
+                    named << v.key;
+                } else {
+                    const auto error = simcore::validateValue(*spec, v.value);
+                    QVERIFY2(!error, qPrintable(l.id + ": " + QString::fromStdString(error.value_or(""))));
+                    QVERIFY2(preset.get(spec->id) != v.value, qPrintable(l.id + ": try " + v.key + " is the preset's"));
+                }
+            }
+            for (const auto& [id, value] : l.preset.values) {
+                const QString key = QString::fromUtf8(simcore::paramSpec(id).key.data(), qsizetype(simcore::paramSpec(id).key.size()));
+                QVERIFY2(named.contains(key), qPrintable(l.id + ": the preset sets " + key + ", the text does not say"));
+            }
+            QString todo = lessonSection(html, "What to do");
+            QVERIFY(!todo.isEmpty());
+            todo.replace(marked, "#");
+            const QRegularExpressionMatch left = bare.match(todo);
+            QVERIFY2(!left.hasMatch(), qPrintable(l.id + ": an unmarked value: " + todo.mid(left.capturedStart(), 40)));
+            const QList<double> until = lessonUntil(html);
+            QVERIFY2(!until.isEmpty(), qPrintable(l.id + ": no <span class=\"until\">"));
+            for (double t : until) QVERIFY2(t > 0.0 && t <= 10.0, qPrintable(l.id));
+        }
+        // The checks can fail: a setting off the preset, an unmarked value.
+        const QString planted = "<h3>What to do</h3><p>DT = <span class=\"setting\" data-key=\"dt\">0.01</span>, "
+                                "then set ks to 5</p><h3>What to look at</h3>";
+        QCOMPARE(lessonValues(planted).size(), 1);
+        QCOMPARE(lessonValues(planted).front().value, 0.01);
+        QVERIFY(bare.match(lessonSection(planted, "What to do").replace(marked, "#")).hasMatch());
+    }
+
+    void refineSphereBehavesAsItsTextSays() {
+        // Step 1 and 2 run the lesson's time at its DT without a warning or a failure; at three
+        // subdivisions the pre-run check warns, the run at the lesson's DT blows up, and the
+        // suggested DT runs.
+        const Lesson& l = lesson("refine-sphere");
+        const ParameterSet p = l.preset.parameters();
+        const double until = lessonUntil(l.html()).front();
+        for (int level : {1, 2}) {
+            const ParameterSet q = with(p, {{"subdivisions", double(level)}});
+            QVERIFY2(!simlab::stabilityAdvice(Simulation(q, "rk4")), qPrintable(QString::number(level)));
+            QCOMPARE(lessonFailureTime(q, "rk4", until), -1.0);
+        }
+        const ParameterSet fine = with(p, {{"subdivisions", 3}});
+        const auto advice = simlab::stabilityAdvice(Simulation(fine, "rk4"));
+        QVERIFY(advice);
+        QVERIFY(lessonFailureTime(fine, "rk4", 1.0) > 0.0);
+        QCOMPARE(lessonFailureTime(with(fine, {{"dt", advice->suggestedDt}}), "rk4", 0.3), -1.0);
+    }
+
     void answerParserRefusesMalformedMarks() {
         QString error;
         auto parse = [&](const QString& html) {
@@ -367,7 +271,7 @@ private slots:
         QFETCH(QString, id);
         QFETCH(QString, key);
         const LessonAnswer stated = lessonAnswers(lesson(id).html()).value(key);
-        const Measure measure = measurements().value(id).value(key);
+        const auto measure = measurements().value(id).value(key);
         QVERIFY(measure);
         const double measured = measure();
         QVERIFY2(std::isfinite(measured), qPrintable(QString::number(measured)));
@@ -379,6 +283,25 @@ private slots:
                                 .arg(measured, 0, 'g', 6)
                                 .arg(100 * off, 0, 'g', 3)
                                 .arg(100 * stated.relativeTolerance)));
+    }
+
+    void helpFiguresAreMeasured() {
+        // Help states the limits and the order the app measures, with the code that measures
+        // them: a figure in Help that the measurement no longer gives fails here.
+        QString error;
+        const auto stated = lessonAnswers(HelpDialog::html(), &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        const auto table = helpMeasures();
+        QCOMPARE(stated.keys(), table.keys());
+        const ParameterSet ring(simcore::SceneKind::Ring2d);
+        for (auto it = stated.begin(); it != stated.end(); ++it) {
+            const double measured = table.value(it.key())(ring);
+            const double off = std::abs(measured - it->value) / std::abs(it->value);
+            QVERIFY2(off <= it->relativeTolerance, qPrintable(QStringLiteral("Help says %1 = %2, measured %3")
+                                                                  .arg(it.key()).arg(it->value).arg(measured)));
+        }
+        // Damped Verlet is not called second order without the damped figure beside it.
+        QVERIFY(HelpDialog::html().contains("2 (1 damped)"));
     }
 
     void theCommandsInTheTextsAreAccepted() {
@@ -459,6 +382,134 @@ private slots:
                 QVERIFY2(window.dock(dock) && !window.dock(dock)->isHidden(), qPrintable(l.id + ": " + dock));
             QVERIFY(window.currentFile().isEmpty());
         }
+    }
+
+    void lessonsHaveTheirOwnMenu() {
+        MainWindow window(false);
+        QMenu* menu = window.lessonsMenu();
+        QVERIFY(menu);
+        QVERIFY(window.menuBar()->actions().contains(menu->menuAction()));
+        QCOMPARE(menu->menuAction()->text(), QString("&Lessons"));
+        QStringList titles;
+        for (QAction* a : menu->actions())
+            if (!a->isSeparator()) titles << a->text();
+        for (const Lesson& l : lessons()) QVERIFY2(titles.contains(l.title), qPrintable(l.title));
+        QVERIFY(titles.last().contains("Experiments"));  // the texts
+        for (QAction* a : menu->actions())
+            if (a->text() == lesson("pv-isotherm").title) a->trigger();
+        QVERIFY(waitForLesson(window, lesson("pv-isotherm")));
+        QVERIFY(!window.lessonDock()->isHidden());
+        QCOMPARE(window.lessonDock()->lessonId(), QString("pv-isotherm"));
+        QCOMPARE(window.lessonDock()->untilTime(), lessonUntil(lesson("pv-isotherm").html()).front());
+        QCOMPARE(window.lessonDock()->answerTable()->rowCount(), int(lessonAnswers(lesson("pv-isotherm").html()).size()));
+    }
+
+    void theLessonDockReadsTheAnswersOffTheRun_data() {
+        QTest::addColumn<QString>("id");
+        for (const char* id : {"energy-drift", "heavy-inner", "pv-isotherm", "restitution"}) QTest::newRow(id) << QString(id);
+    }
+
+    void theLessonDockReadsTheAnswersOffTheRun() {
+        // "Run until t = ..." with the lesson's time, a stopwatch over the run, and every answer
+        // the run shows read off it: within the text's tolerance of what the text expects.
+        QFETCH(QString, id);
+        const Lesson& l = lesson(id);
+        MainWindow window(false);
+        window.applyLesson(l);
+        QVERIFY(waitForLesson(window, l));
+        LessonDock* dock = window.lessonDock();
+        QCOMPARE(dock->lessonId(), id);
+        dock->stopwatchButton()->click();  // start at t = 0
+        QVERIFY(dock->stopwatchRunning());
+        const double until = dock->untilTime();
+        auto runUntil = [&] {
+            dock->runUntilButton()->click();
+            return testsupport::waitUntil([&] {
+                const FramePtr f = window.controller()->latest();
+                return f && !window.controller()->running() &&
+                       (f->lanes[0].diagnostics.time >= until - 1e-9 || f->lanes[0].failure);
+            });
+        };
+        QVERIFY(runUntil());
+        // The answers the run shows; restitution's second (e = 0.2) after the lesson's second
+        // step: the value to try typed, Reset, run again.
+        QStringList fromRun;
+        for (const QString& key : lessonAnswers(l.html()).keys())
+            if (dock->readFromRun(key)) fromRun << key;
+        QVERIFY2(!fromRun.isEmpty(), qPrintable(id));
+        const auto filled = [&](const QStringList& keys) {
+            return testsupport::waitUntil([&] {
+                for (const QString& key : keys)
+                    if (!std::isfinite(dock->got(key))) return false;
+                return true;
+            });
+        };
+        // The lesson's second step: the value to try typed, Reset, run again; the first run's
+        // figure stays beside the second's.
+        const auto secondStep = [&](simcore::Param param, double value) {
+            dock->stopwatchButton()->click();  // stop
+            dock->stopwatchButton()->click();  // and on again over the second run
+            window.controller()->setParameter(param, value);
+            window.controller()->reset();
+            return testsupport::waitUntil([&] {
+                const FramePtr f = window.controller()->latest();
+                return f && f->parameters.get(param) == value && f->lanes[0].diagnostics.time == 0.0;
+            }) && runUntil();
+        };
+        double firstTime = -1.0;
+        if (id == "restitution") {
+            QVERIFY(filled({"liftoff-e0.9"}));
+            QVERIFY(!std::isfinite(dock->got("liftoff-e0.2")));
+            firstTime = window.controller()->latest()->lanes[0].diagnostics.time;
+            QVERIFY(secondStep(simcore::Param::Restitution, 0.2));
+        } else if (id == "heavy-inner") {
+            QVERIFY(filled({"sag"}));
+            QVERIFY(!std::isfinite(dock->got("collapse-time")));
+            firstTime = window.controller()->latest()->lanes[0].diagnostics.time;
+            QVERIFY(secondStep(simcore::Param::MassInner, 10.0));
+        }
+        QVERIFY(filled(fromRun));
+        const auto stated = lessonAnswers(l.html());
+        for (const QString& key : fromRun) {
+            const double off = std::abs(dock->got(key) - stated.value(key).value) / std::abs(stated.value(key).value);
+            QVERIFY2(dock->gotFromRun(key) && off <= stated.value(key).relativeTolerance,
+                     qPrintable(QStringLiteral("%1/%2: expected %3, the run gave %4")
+                                    .arg(id, key).arg(stated.value(key).value).arg(dock->got(key))));
+        }
+        // The table says it too.
+        QString table;
+        for (int r = 0; r < dock->answerTable()->rowCount(); ++r)
+            for (int c = 0; c < 3; ++c) table += dock->answerTable()->item(r, c)->text() + " | ";
+        for (const QString& key : fromRun) QVERIFY2(table.contains(QString::number(dock->got(key), 'g', 4)), qPrintable(table));
+        // The stopwatch ran with the simulated clock (over both runs for a second step: the
+        // reading held at the reset, plus the second run): stopped now, it reads that time.
+        dock->stopwatchButton()->click();
+        const double t = window.controller()->latest()->lanes[0].diagnostics.time;
+        const double expected = firstTime > 0 ? firstTime + t : t;
+        QVERIFY2(std::abs(dock->stopwatch() - expected) < 1e-9,
+                 qPrintable(QString("%1 vs %2").arg(dock->stopwatch()).arg(expected)));
+        QVERIFY(!dock->stopwatchRunning());
+    }
+
+    void measureFillsTheScanFigures() {
+        // What the run cannot show (the stability scan's limit) is measured on the parameters in
+        // use by "Measure", on a worker thread, with the same code as the test's re-measurement.
+        const Lesson& l = lesson("euler-limit");
+        MainWindow window(false);
+        window.applyLesson(l);
+        QVERIFY(waitForLesson(window, l));
+        LessonDock* dock = window.lessonDock();
+        QVERIFY(!dock->readFromRun("dt-stable"));
+        QVERIFY(dock->readFromRun("blowup-time"));
+        QVERIFY(!std::isfinite(dock->got("dt-stable")));
+        dock->measureButton()->click();
+        QVERIFY(testsupport::waitUntil([&] { return std::isfinite(dock->got("dt-stable")) && !dock->measuring(); }));
+        QVERIFY(!dock->gotFromRun("dt-stable"));
+        const auto stated = lessonAnswers(l.html());
+        for (const QString& key : {QStringLiteral("dt-stable"), QStringLiteral("dt-predicted")})
+            QVERIFY2(std::abs(dock->got(key) - stated.value(key).value) <= stated.value(key).relativeTolerance * stated.value(key).value,
+                     qPrintable(key + ": " + QString::number(dock->got(key))));
+        QVERIFY(dock->measureButton()->isEnabled());
     }
 
     void theDialogSetsUpTheChosenLesson() {

@@ -12,6 +12,7 @@
 // The scene part (topology, rest lengths, box) changes only when the body is rebuilt; it is
 // shared between frames, so the viewport uploads topology only when `scene` changes.
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -26,6 +27,8 @@
 #include "simcore/simulation.h"
 #include "simcore/world.h"
 #include "simlab/scenefile.h"
+
+#include "ui/body_measures.h"
 
 namespace elui {
 
@@ -67,6 +70,8 @@ struct LaneFrame {
     QString integrator;
     std::vector<float> positions;         // 3N [m], x0 y0 z0 x1 ...
     std::vector<float> forces;            // 3N [N], only when force vectors are asked for
+    std::vector<float> velocities;        // 3N [m/s]
+    BodyMeasures body;                    // centre of mass, layer centres, lowest point
     simcore::Diagnostics diagnostics;
     std::optional<simcore::Failure> failure;
     // A failed lane: its recorded state some time before the failure (the latest checkpoint at
@@ -118,6 +123,12 @@ struct Frame {
     std::shared_ptr<const simcore::WorldDiagnostics> world;
     int worldBody = 0;
     std::shared_ptr<const simcore::WorldSpec> worldSpec;  // its bodies as described (start, parameters)
+    // For the reference curve (reference_run.h): lane 0's state when the timeline began (a
+    // new scene, a reset, an opened file; the same pointer until the next one), and the
+    // simulated time of the first change of the physics since then that is still on the
+    // timeline: a parameter edit other than DT, or a grab (+inf: none).
+    std::shared_ptr<const simcore::SimulationSnapshot> runStart;
+    double physicsChangedAt = std::numeric_limits<double>::infinity();
 };
 
 using FramePtr = std::shared_ptr<const Frame>;

@@ -150,6 +150,10 @@ std::vector<LaneFrame> Lanes::laneFrames(bool forces, int selected) const {
         const auto x = sim->positions();
         lane.positions.resize(std::size_t(x.size()));
         for (Eigen::Index k = 0; k < x.size(); ++k) lane.positions[std::size_t(k)] = float(x.data()[k]);
+        const auto v = sim->velocities();
+        lane.velocities.resize(std::size_t(v.size()));
+        for (Eigen::Index k = 0; k < v.size(); ++k) lane.velocities[std::size_t(k)] = float(v.data()[k]);
+        lane.body = measureBody(*sim);
         if (forces) {
             // Not counted as one of the run's force evaluations.
             std::vector<double> f(std::size_t(x.size()));

@@ -23,7 +23,7 @@ Lesson make(const QString& id, const QString& title, const QString& scene, QList
     l.title = title;
     l.preset.id = QStringLiteral("lesson-") + id;
     l.preset.title = title;
-    l.preset.description = QObject::tr("Help > Experiments explains what to do.");
+    l.preset.description = QObject::tr("Lessons > Lesson texts explains what to do.");
     l.preset.scene = scene;
     l.preset.values = std::move(values);
     l.preset.integrators = std::move(integrators);
@@ -53,12 +53,13 @@ QList<Lesson> lessons() {
         make(QStringLiteral("heavy-inner"), QObject::tr("3. A heavy inner layer: liquid motion"),
              QStringLiteral("sphere3d"), {{simcore::Param::Subdivisions, 2}, {simcore::Param::MassInner, 5.0}}, {QStringLiteral("rk4")}, {bars}),
         make(QStringLiteral("refine-sphere"), QObject::tr("4. A finer sphere needs a smaller DT"),
-             QStringLiteral("sphere3d"), {{simcore::Param::Subdivisions, 1}, {simcore::Param::Perturb, 0.01}, {simcore::Param::Dt, 0.01}},
+             QStringLiteral("sphere3d"), {{simcore::Param::Subdivisions, 1}, {simcore::Param::Perturb, 0.01}, {simcore::Param::Dt, 0.006}},
              {QStringLiteral("rk4")}, {map}),
         make(QStringLiteral("pv-isotherm"), QObject::tr("5. Pressure and volume on the isotherm"),
              QStringLiteral("ring2d"), {}, {QStringLiteral("rk4")}, {pv}),
         make(QStringLiteral("restitution"), QObject::tr("6. Restitution: a particle and a body"),
-             QStringLiteral("ring2d"), {{simcore::Param::Restitution, 0.9}}, {QStringLiteral("rk4")}, {bars}),
+             QStringLiteral("ring2d"), {{simcore::Param::Restitution, 0.9}, {simcore::Param::Ks, 4000.0}, {simcore::Param::Rks, 4000.0}},
+             {QStringLiteral("rk4")}, {bars}),
         make(QStringLiteral("stiff-springs"), QObject::tr("7. Stiff springs: explicit against implicit"),
              QStringLiteral("ring2d"), {{simcore::Param::Ks, 1e6}, {simcore::Param::Dt, 0.01}},
              {QStringLiteral("implicit-euler"), QStringLiteral("rk4")}, {map}),
@@ -130,6 +131,41 @@ QMap<QString, LessonAnswer> lessonAnswers(const QString& html, QString* error) {
         else if (!okTol || answer.relativeTolerance <= 0.0 || answer.relativeTolerance > 0.2)
             fail(QStringLiteral("answer %1 has no tolerance in (0, 0.2]: %2").arg(key, m.captured(2)));
         else out.insert(key, answer);
+    }
+    return out;
+}
+
+QList<LessonValue> lessonValues(const QString& html) {
+    static const QRegularExpression span(
+        QStringLiteral("<span class=\"(setting|try)\" data-key=\"([^\"]+)\">([^<]*)</span>"));
+    QList<LessonValue> out;
+    for (auto it = span.globalMatch(html); it.hasNext();) {
+        const QRegularExpressionMatch m = it.next();
+        LessonValue v;
+        v.kind = m.captured(1);
+        v.key = m.captured(2);
+        v.value = m.captured(3).trimmed().toDouble(&v.valid);
+        out << v;
+    }
+    return out;
+}
+
+QString lessonSection(const QString& html, const QString& title) {
+    const QString open = QStringLiteral("<h3>%1</h3>").arg(title);
+    const qsizetype from = html.indexOf(open);
+    if (from < 0) return {};
+    const qsizetype start = from + open.size();
+    const qsizetype next = html.indexOf(QStringLiteral("<h3"), start);
+    return html.mid(start, next < 0 ? -1 : next - start);
+}
+
+QList<double> lessonUntil(const QString& html) {
+    static const QRegularExpression span(QStringLiteral("<span class=\"until\">([^<]*)</span>"));
+    QList<double> out;
+    for (auto it = span.globalMatch(html); it.hasNext();) {
+        bool ok = false;
+        const double t = it.next().captured(1).trimmed().toDouble(&ok);
+        if (ok) out << t;
     }
     return out;
 }

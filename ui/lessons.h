@@ -1,5 +1,5 @@
 #pragma once
-// Guided experiments (Help > Experiments, `elastic-lab --lesson ID`): a preset, the docks to
+// Guided experiments (the Lessons menu, Help > Experiments, `elastic-lab --lesson ID`): a preset, the docks to
 // look at, and a half-page text in resources/lessons/ID.html with the sections Goal, What to
 // do, What to look at, The measured answer and Why.
 //
@@ -7,6 +7,13 @@
 //   <span class="answer" data-key="KEY" data-tol="0.03">0.0077</span>
 // (data-tol: the relative tolerance of a re-measurement), next to the elastic-lab-cli command
 // that measured it. tests/test_lessons.cpp re-measures each key with simcore and compares.
+//
+// Every value the text names in "What to do" is marked too:
+//   <span class="setting" data-key="dt">0.006</span>   the preset sets it (checked against it)
+//   <span class="try" data-key="dt">0.0075</span>      the student types it (a valid value)
+//   <span class="until">3</span>                        run until this simulated time [s]
+// test_lessons fails when a setting differs from the preset, a try is refused by the parameter
+// table, or "= 5" / "to 5" is left unmarked in "What to do".
 
 #include <QList>
 #include <QMap>
@@ -44,5 +51,18 @@ QStringList lessonSections(const QString& html);
 // The marked answers of a text by key; *error names the first malformed one (a key twice, a
 // value or tolerance that is not a number).
 QMap<QString, LessonAnswer> lessonAnswers(const QString& html, QString* error = nullptr);
+
+// A marked value of "What to do": class "setting" or "try", its key and its number.
+struct LessonValue {
+    QString kind;  // "setting", "try"
+    QString key;
+    double value = 0.0;
+    bool valid = false;  // the text is a number
+};
+QList<LessonValue> lessonValues(const QString& html);
+// The text of a section (between its <h3> and the next), empty when there is none.
+QString lessonSection(const QString& html, const QString& title);
+// The lesson's "run until" times from <span class="until">T</span>, in text order.
+QList<double> lessonUntil(const QString& html);
 
 }  // namespace elui

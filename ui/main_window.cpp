@@ -15,6 +15,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
@@ -31,7 +32,9 @@
 #include "ui/failure_banner.h"
 #include "ui/help_dialog.h"
 #include "ui/lessons.h"
+#include "ui/lesson_dock.h"
 #include "ui/lessons_dialog.h"
+#include "ui/measure_plot_dock.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_dock.h"
 #include "ui/presets.h"
@@ -134,7 +137,8 @@ void MainWindow::createActions() {
         {tr("Structural springs"), nullptr, 0}, {tr("Radius springs"), nullptr, 1},
         {tr("Shear springs"), nullptr, 2},      {tr("Faces"), &ViewOptions::faces, -1},
         {tr("Particles"), &ViewOptions::particles, -1}, {tr("Normals"), &ViewOptions::normals, -1},
-        {tr("Force vectors"), &ViewOptions::forces, -1}, {tr("Colour springs by strain"), &ViewOptions::strain, -1},
+        {tr("Force vectors"), &ViewOptions::forces, -1}, {tr("Velocity vectors"), &ViewOptions::velocities, -1},
+        {tr("Ruler (drag to measure)"), &ViewOptions::ruler, -1}, {tr("Colour springs by strain"), &ViewOptions::strain, -1},
         {tr("Collision box"), &ViewOptions::box, -1},
     };
     for (const Toggle& t : toggles) {
@@ -160,7 +164,7 @@ void MainWindow::createActions() {
     m_help = new QAction(tr("Elastic Lab &help"), this);
     m_help->setShortcut(QKeySequence::HelpContents);
     connect(m_help, &QAction::triggered, this, &MainWindow::showHelp);
-    m_lessons = new QAction(tr("&Experiments..."), this);
+    m_lessons = new QAction(tr("Lesson &texts (Experiments)..."), this);
     m_lessons->setToolTip(tr("Guided experiments: a scene set up in one click, what to change, what to look at, "
                              "the measured answer"));
     connect(m_lessons, &QAction::triggered, this, &MainWindow::showLessons);
@@ -255,6 +259,15 @@ void MainWindow::createMenus() {
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
+
+    // Lessons: each guided experiment set up in one click, and their texts.
+    m_lessonsMenu = menuBar()->addMenu(tr("&Lessons"));
+    for (const Lesson& l : lessons())
+        m_lessonsMenu->addAction(l.title, this, [this, id = l.id] {
+            if (const Lesson* lesson = findLesson(id)) applyLesson(*lesson);
+        });
+    m_lessonsMenu->addSeparator();
+    m_lessonsMenu->addAction(m_lessons);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(m_help);
@@ -353,6 +366,11 @@ void MainWindow::rebuildViewports(int count) {
         connect(v, &Viewport::anchorMoved, m_controller, &SimulationController::moveAnchor);
         connect(v, &Viewport::releaseRequested, m_controller, &SimulationController::release);
         connect(v, &Viewport::selectRequested, m_controller, &SimulationController::selectAlongRay);
+        connect(v, &Viewport::contextRequested, this, [this](const QPoint& at, int particle) {
+            QMenu* menu = viewContextMenu(particle);
+            menu->setAttribute(Qt::WA_DeleteOnClose);
+            menu->popup(at);
+        });
         connect(m_controller, &SimulationController::grabbed, v, &Viewport::onGrabbed);
         m_viewports.push_back(v);
     }
@@ -403,10 +421,22 @@ void MainWindow::createDocks() {
         startWorld(spec, m_controller->integrators().value(0, QStringLiteral("rk4")));
     });
     connect(m_bodiesDock, &BodiesDock::message, this, &MainWindow::status);
+    // The lesson in use, under the Run dock, a tab beside Scene and Parameters (raised when a
+    // lesson opens it: its table needs the height; Parameters is one click away for a step that
+    // types a value): closed until a lesson (or View) opens it.
+    m_lessonDock = new LessonDock(this);
+    tabifyDockWidget(m_parameterDock, m_lessonDock);
+    m_lessonDock->hide();
+    // What the teacher picks off the body (right-click in the view), under the plots.
+    m_measureDock = new MeasurePlotDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, m_measureDock);
+    splitDockWidget(m_plotDock, m_measureDock, Qt::Vertical);
+    m_measureDock->hide();
     for (QDockWidget* d : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_parameterDock),
                            static_cast<QDockWidget*>(m_runDock), static_cast<QDockWidget*>(m_plotDock),
                            static_cast<QDockWidget*>(m_energyBarsDock), static_cast<QDockWidget*>(m_pvDock),
-                           static_cast<QDockWidget*>(m_stabilityMapDock), static_cast<QDockWidget*>(m_bodiesDock)})
+                           static_cast<QDockWidget*>(m_stabilityMapDock), static_cast<QDockWidget*>(m_lessonDock),
+                           static_cast<QDockWidget*>(m_measureDock), static_cast<QDockWidget*>(m_bodiesDock)})
         m_viewMenu->addAction(d->toggleViewAction());
     resizeDocks({m_runDock, m_plotDock}, {290, 420}, Qt::Horizontal);
 }
@@ -440,7 +470,7 @@ void MainWindow::keepMinimumWidth() {
 
 QStringList MainWindow::dockNames() {
     return {QStringLiteral("energy-bars"), QStringLiteral("pv"), QStringLiteral("stability-map"), QStringLiteral("timeline"),
-            QStringLiteral("bodies")};
+            QStringLiteral("lesson"), QStringLiteral("bodies")};
 }
 
 QDockWidget* MainWindow::dock(const QString& name) const {
@@ -448,14 +478,16 @@ QDockWidget* MainWindow::dock(const QString& name) const {
            : name == QLatin1String("pv")            ? static_cast<QDockWidget*>(m_pvDock)
            : name == QLatin1String("stability-map") ? static_cast<QDockWidget*>(m_stabilityMapDock)
            : name == QLatin1String("timeline")      ? static_cast<QDockWidget*>(m_timelineDock)
+           : name == QLatin1String("lesson")        ? static_cast<QDockWidget*>(m_lessonDock)
            : name == QLatin1String("bodies")        ? static_cast<QDockWidget*>(m_bodiesDock)
                                                     : nullptr;
 }
 
 bool MainWindow::openDock(const QString& name) {
-    if (name == QLatin1String("timeline")) {  // under the view: no share of the right column
-        m_timelineDock->show();
-        m_timelineDock->raise();
+    if (name == QLatin1String("timeline") || name == QLatin1String("lesson")) {  // no share of the right column
+        QDockWidget* own = dock(name);
+        own->show();
+        own->raise();
         return true;
     }
     QDockWidget* dock = this->dock(name);
@@ -499,10 +531,14 @@ void MainWindow::connectController() {
     connect(c, &SimulationController::rowsAppended, this, [this](int first, int count) {
         m_plotDock->appendRows(m_controller->history(), first, count);
         m_pvDock->appendRows(m_controller->history(), first, count);
+        m_lessonDock->appendRows(m_controller->history(), first, count);
     });
     connect(c, &SimulationController::viewRowsAppended, this, [this](int view, int first, int count) {
         m_plotDock->appendViewRows(view, m_controller->viewHistory()[std::size_t(view - 1)], first, count);
     });
+    connect(c, &SimulationController::historyReset, m_lessonDock, &LessonDock::clearRun);
+    connect(c, &SimulationController::historyReset, m_measureDock, &MeasurePlotDock::clearData);
+    connect(m_lessonDock, &LessonDock::runUntilRequested, c, &SimulationController::runUntil);
     connect(c, &SimulationController::parameterRejected, this,
             [this](const QString&, const QString& message) { status(message); });
     connect(c, &SimulationController::sceneRejected, this, [this](const QString& message) {
@@ -682,8 +718,54 @@ void MainWindow::applyPreset(const Preset& preset) {
 void MainWindow::applyLesson(const Lesson& lesson) {
     applyPreset(lesson.preset);
     for (const QString& dock : lesson.docks) openDock(dock);
-    status(tr("%1: set up. Help > Experiments says what to change and what to look at. Press Run (Space).")
+    m_lessonDock->setLesson(findLesson(lesson.id));
+    openDock(QStringLiteral("lesson"));
+    status(tr("%1: set up. Lessons > Lesson texts says what to change and what to look at. Press Run (Space).")
                .arg(lesson.title));
+}
+
+void MainWindow::plotQuantity(const Tracked& quantity) {
+    m_measureDock->add(quantity);
+    m_measureDock->show();
+    m_measureDock->raise();
+    status(tr("Plotting the %1 against time (the Measured dock).").arg(quantity.name()));
+}
+
+QMenu* MainWindow::viewContextMenu(int particle) {
+    auto* menu = new QMenu(this);
+    menu->setObjectName(QStringLiteral("viewContextMenu"));
+    using K = Tracked::Kind;
+    auto plot = [this, menu](const QString& text, K kind, int index = -1, int layer = 0) {
+        Tracked t;
+        t.kind = kind;
+        t.particle = index;
+        t.layer = layer;
+        menu->addAction(text, this, [this, t] { plotQuantity(t); });
+    };
+    const FramePtr frame = m_controller->latest();
+    const bool layered = frame && !frame->lanes.empty() && frame->lanes.front().body.layered;
+    if (particle >= 0) {
+        menu->addSection(tr("Particle %1").arg(particle));
+        plot(tr("Plot its height"), K::ParticleHeight, particle);
+        plot(tr("Plot its speed"), K::ParticleSpeed, particle);
+        const auto& layers = frame ? frame->scene->topology.layer : std::vector<simcore::Layer>{};
+        if (layered && particle < int(layers.size())) {
+            const int layer = layers[std::size_t(particle)] == simcore::Layer::Inner ? 0 : 1;
+            plot(layer == 0 ? tr("Plot the inner layer's centre height") : tr("Plot the outer layer's centre height"),
+                 K::LayerHeight, -1, layer);
+        }
+    }
+    menu->addSection(tr("Body"));
+    plot(tr("Plot the centre-of-mass height"), K::CentreHeight);
+    plot(tr("Plot the centre-of-mass speed"), K::CentreSpeed);
+    if (layered) plot(tr("Plot the layers' separation"), K::LayerSeparation);
+    menu->addSeparator();
+    for (QAction* a : m_displayToggles)
+        if (a->objectName() == QLatin1String("toggle_Velocity vectors") ||
+            a->objectName() == QLatin1String("toggle_Force vectors") ||
+            a->objectName() == QLatin1String("toggle_Ruler (drag to measure)"))
+            menu->addAction(a);
+    return menu;
 }
 
 LessonsDialog* MainWindow::showLessons() {
@@ -718,8 +800,11 @@ void MainWindow::onFrame(const FramePtr& frame) {
         v->showFrame(frame);
     }
     m_runDock->showFrame(frame);
+    if (!m_lessonDock->isHidden()) m_lessonDock->showFrame(frame);
+    m_measureDock->showFrame(frame);
     m_plotDock->setLive(frame->running);
     m_plotDock->setViews(*frame);
+    m_plotDock->followReference(*frame);
     m_energyBarsDock->showFrame(*frame);
     const bool world = frame->world != nullptr;
     showWorldMode(world);

@@ -38,6 +38,9 @@ class TimelineDock;
 struct Preset;
 struct Lesson;
 class LessonsDialog;
+class LessonDock;
+class MeasurePlotDock;
+struct Tracked;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -57,8 +60,17 @@ public:
     TimelineDock* timelineDock() const { return m_timelineDock; }
     StabilityMapDock* stabilityMapDock() const { return m_stabilityMapDock; }
     BodiesDock* bodiesDock() const { return m_bodiesDock; }
+    LessonDock* lessonDock() const { return m_lessonDock; }
+    MeasurePlotDock* measureDock() const { return m_measureDock; }
+    // The view's right-click menu for a particle (-1: none under the cursor): plot its height or
+    // speed, its layer centre's height, the body's centre-of-mass height or speed, the layers'
+    // separation; the force and velocity arrows and the ruler. The caller shows it.
+    QMenu* viewContextMenu(int particle);
+    // Adds a quantity to the Measured dock and shows it.
+    void plotQuantity(const elui::Tracked& quantity);
+    QMenu* lessonsMenu() const { return m_lessonsMenu; }
     // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv", "stability-map",
-    // "timeline".
+    // "timeline", "lesson".
     static QStringList dockNames();
     // Shows the named dock (hidden ones are closed by default); false for an unknown name.
     bool openDock(const QString& name);
@@ -173,6 +185,9 @@ private:
     void showWorldMode(bool world);       // what a world has and has not (menus, docks)
     // Studies of one body are not for a world: says so and returns true when one is shown.
     bool refuseForWorld(const QString& what);
+    LessonDock* m_lessonDock = nullptr;
+    MeasurePlotDock* m_measureDock = nullptr;
+    QMenu* m_lessonsMenu = nullptr;
 
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;

@@ -6,10 +6,16 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QScrollArea>
+#include <QSlider>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include "simcore/scenes.h"
+#include <algorithm>
+#include <cmath>
+
 #include "ui/field_keys.h"
 
 namespace elui {
@@ -45,6 +51,35 @@ QString fieldLabel(const simcore::ParamSpec& spec) {
 
 static QString formatValue(double v) { return QString::number(v, 'g', 10); }
 
+namespace {
+// The span a main parameter's slider covers: the values a class tries, inside the table's
+// allowed range (clipped to it); log for stiffnesses and masses, which matter by factors.
+// Other parameters have the typed field only.
+struct SliderSpan {
+    simcore::Param id;
+    double lo, hi;
+    bool log;
+};
+constexpr SliderSpan kSliderSpans[] = {
+    {simcore::Param::Ks, 10.0, 1e5, true},          {simcore::Param::Kd, 0.0, 200.0, false},
+    {simcore::Param::Rks, 10.0, 1e5, true},         {simcore::Param::Rkd, 0.0, 200.0, false},
+    {simcore::Param::Pressure, 0.0, 200.0, false},  {simcore::Param::PressureInner, 0.0, 200.0, false},
+    {simcore::Param::PressureOuter, 0.0, 200.0, false}, {simcore::Param::Mass, 0.05, 20.0, true},
+    {simcore::Param::MassInner, 0.05, 20.0, true},  {simcore::Param::MassOuter, 0.05, 20.0, true},
+    {simcore::Param::Gravity, 0.0, 30.0, false},    {simcore::Param::Restitution, 0.0, 1.0, false},
+    {simcore::Param::Friction, 0.0, 1.0, false},    {simcore::Param::Mks, 0.0, 2000.0, false},
+    {simcore::Param::Mkd, 0.0, 200.0, false},
+};
+constexpr int kSliderSteps = 1000;
+
+// v rounded to three significant digits (a slider stands for readable numbers).
+double threeDigits(double v) {
+    if (v == 0.0 || !std::isfinite(v)) return v;
+    const double scale = std::pow(10.0, 2 - std::floor(std::log10(std::abs(v))));
+    return std::round(v * scale) / scale;
+}
+}  // namespace
+
 ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::ParamGroup>& groups,
                              QWidget* parent)
     : QWidget(parent), m_kind(kind) {
@@ -73,7 +108,18 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
             box->setToolTip(tip);
             auto* label = new QLabel(key, this);
             label->setToolTip(tip);
-            form->addRow(label, box);
+            auto* choiceRow = new QWidget(this);
+            auto* ch = new QHBoxLayout(choiceRow);
+            ch->setContentsMargins(0, 0, 0, 0);
+            ch->addWidget(box, 1);
+            auto* back = new QToolButton(choiceRow);
+            back->setObjectName(QStringLiteral("default_") + key);
+            back->setText(QStringLiteral("↺"));
+            back->setToolTip(tr("Back to the default: %1").arg(QString::fromStdString(spec->choiceName(spec->defaultFor(kind)))));
+            connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
+            ch->addWidget(back);
+            m_defaults[key] = back;
+            form->addRow(label, choiceRow);
             m_choices[key] = box;
             connect(box, &QComboBox::activated, this, [this, key, id = spec->id](int index) {
                 if (m_updating) return;
@@ -105,6 +151,14 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
         auto* unitLabel = new QLabel(unit, row);
         unitLabel->setMinimumWidth(44);
         h->addWidget(unitLabel);
+        auto* back = new QToolButton(row);
+        back->setObjectName(QStringLiteral("default_") + key);
+        back->setText(QStringLiteral("↺"));
+        back->setToolTip(tr("Back to the default: %1 %2").arg(formatValue(spec->defaultFor(kind)), unit));
+        back->setEnabled(spec->id != simcore::Param::Dt);
+        connect(back, &QToolButton::clicked, this, [this, key] { setToDefault(key); });
+        h->addWidget(back);
+        m_defaults[key] = back;
         auto* label = new QLabel(fieldLabel(*spec), this);
         label->setObjectName(QStringLiteral("label_") + key);
         if (label->text() != key) tip += QStringLiteral("<br>key: %1").arg(key);
@@ -121,6 +175,44 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
                 if (m_shown.count(key)) edit->setText(formatValue(m_shown[key]));
                 markField(edit, {}, edit->property("tip").toString());
             });
+        for (const SliderSpan& span : kSliderSpans) {
+            if (span.id != spec->id) continue;
+            // Inside the table's range; the ends and the unit beside it.
+            const double lo = std::max(span.lo, spec->minValue), hi = std::min(span.hi, spec->maxValue);
+            m_spans[key] = {lo, hi, span.log && lo > 0.0};
+            auto* slideRow = new QWidget(this);
+            auto* sh = new QHBoxLayout(slideRow);
+            sh->setContentsMargins(0, 0, 0, 0);
+            auto* slider = new QSlider(Qt::Horizontal, slideRow);
+            slider->setObjectName(QStringLiteral("slider_") + key);
+            slider->setRange(0, kSliderSteps);
+            slider->setToolTip(tr("%1 from %2 to %3 %4%5 (the field takes any value in %6)")
+                                   .arg(key, formatValue(lo), formatValue(hi), unit,
+                                        m_spans[key].log ? tr(", logarithmic") : QString(),
+                                        QString::fromStdString(spec->rangeText())));
+            auto* loLabel = new QLabel(formatValue(lo), slideRow);
+            auto* hiLabel = new QLabel(unit.isEmpty() ? formatValue(hi) : formatValue(hi) + QLatin1Char(' ') + unit, slideRow);
+            QFont small = loLabel->font();
+            small.setPointSizeF(small.pointSizeF() * 0.85);
+            loLabel->setFont(small);
+            hiLabel->setFont(small);
+            sh->addWidget(loLabel);
+            sh->addWidget(slider, 1);
+            sh->addWidget(hiLabel);
+            form->addRow(QString(), slideRow);
+            m_sliders[key] = slider;
+            connect(slider, &QSlider::valueChanged, this, [this, key, id = spec->id](int position) {
+                if (m_updating) return;
+                const double v = sliderValue(key, position);
+                if (m_shown.count(key) && m_shown[key] == v) return;
+                m_shown[key] = v;
+                m_updating = true;
+                m_fields[key]->setText(formatValue(v));
+                m_updating = false;
+                showDefaultState(key, v);
+                emit edited(id, v);
+            });
+        }
     }
     outer->addStretch(1);
     setValues(simcore::ParameterSet(kind));
@@ -133,6 +225,54 @@ QStringList ParameterForm::keys() const {
         if (m_fields.count(key) || m_choices.count(key)) out << key;
     }
     return out;
+}
+
+QSlider* ParameterForm::slider(const QString& key) const {
+    auto it = m_sliders.find(key);
+    return it == m_sliders.end() ? nullptr : it->second;
+}
+
+QToolButton* ParameterForm::defaultButton(const QString& key) const {
+    auto it = m_defaults.find(key);
+    return it == m_defaults.end() ? nullptr : it->second;
+}
+
+double ParameterForm::sliderValue(const QString& key, int position) const {
+    auto it = m_spans.find(key);
+    if (it == m_spans.end()) return 0.0;
+    const Span& s = it->second;
+    const double f = double(std::clamp(position, 0, kSliderSteps)) / kSliderSteps;
+    const double v = s.log ? s.lo * std::pow(s.hi / s.lo, f) : s.lo + f * (s.hi - s.lo);
+    return std::clamp(threeDigits(v), s.lo, s.hi);
+}
+
+int ParameterForm::sliderPosition(const QString& key, double value) const {
+    auto it = m_spans.find(key);
+    if (it == m_spans.end()) return 0;
+    const Span& s = it->second;
+    const double v = std::clamp(value, s.lo, s.hi);
+    const double f = s.log ? std::log(v / s.lo) / std::log(s.hi / s.lo) : (v - s.lo) / (s.hi - s.lo);
+    return int(std::lround(f * kSliderSteps));
+}
+
+void ParameterForm::showDefaultState(const QString& key, double value) {
+    const simcore::ParamSpec* spec = simcore::findParam(key.toStdString());
+    if (QToolButton* back = defaultButton(key); back && spec)
+        back->setEnabled(spec->id != simcore::Param::Dt && value != spec->defaultFor(m_kind));
+}
+
+void ParameterForm::setToDefault(const QString& key) {
+    const simcore::ParamSpec* spec = simcore::findParam(key.toStdString());
+    if (!spec) return;
+    const double v = spec->defaultFor(m_kind);
+    if (m_shown.count(key) && m_shown[key] == v) return;
+    m_shown[key] = v;
+    emit edited(spec->id, v);
+}
+
+void ParameterForm::resetAll() {
+    // DT included: it is edited in the Run dock, but the scene's default belongs to "all".
+    for (const QString& key : keys()) setToDefault(key);
 }
 
 QComboBox* ParameterForm::choice(const QString& key) const {
@@ -174,6 +314,8 @@ void ParameterForm::setValues(const simcore::ParameterSet& params) {
         m_shown[key] = v;
         // A field being typed in keeps its text, and its red mark if the text was refused: the
         // mark says the text is not the value in use.
+        if (QSlider* sl = slider(key)) sl->setValue(sliderPosition(key, v));
+        showDefaultState(key, v);
         if (edit->hasFocus() && !edit->text().isEmpty()) continue;
         edit->setText(formatValue(v));
         markField(edit, {}, edit->property("tip").toString());
@@ -182,6 +324,7 @@ void ParameterForm::setValues(const simcore::ParameterSet& params) {
         const double v = params.get(simcore::findParam(key.toStdString())->id);
         m_shown[key] = v;
         box->setCurrentIndex(static_cast<int>(v));
+        showDefaultState(key, v);
     }
     m_updating = false;
 }
@@ -200,6 +343,12 @@ bool ParameterForm::commit(const QString& key) {
     }
     if (m_shown.count(key) && m_shown[key] == v) return true;  // nothing changed
     m_shown[key] = v;
+    if (QSlider* sl = slider(key)) {
+        m_updating = true;
+        sl->setValue(sliderPosition(key, v));
+        m_updating = false;
+    }
+    showDefaultState(key, v);
     emit edited(spec->id, v);
     return true;
 }
@@ -220,6 +369,14 @@ ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), pa
     connect(m_bodies, &QComboBox::activated, this, [this](int index) {
         emit bodyChosen(index >= int(m_kinds.size()) ? -1 : index);
     });
+    m_resetAll = new QPushButton(tr("Reset all to the scene's defaults"), m_host);
+    m_resetAll->setObjectName(QStringLiteral("resetAllParameters"));
+    m_resetAll->setToolTip(tr("Every parameter here (and DT) back to the scene's default; the body's shape "
+                              "stays (Scene dock)."));
+    connect(m_resetAll, &QPushButton::clicked, this, [this] {
+        if (m_form) m_form->resetAll();
+    });
+    m_layout->addWidget(m_resetAll);
     scroll->setWidget(m_host);
     setWidget(scroll);
 }

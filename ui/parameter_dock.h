@@ -18,6 +18,9 @@
 
 class QComboBox;
 class QLineEdit;
+class QPushButton;
+class QSlider;
+class QToolButton;
 class QVBoxLayout;
 
 namespace elui {
@@ -32,6 +35,15 @@ public:
     simcore::SceneKind kind() const { return m_kind; }
     QStringList keys() const;
     QLineEdit* field(const QString& key) const;    // a number's field (nullptr for a choice)
+    // A main parameter's slider beside its field (nullptr for the others), and every key's
+    // button back to the scene's default (disabled while the value is the default).
+    QSlider* slider(const QString& key) const;
+    QToolButton* defaultButton(const QString& key) const;
+    // The value a slider position stands for (3 significant digits), and back.
+    double sliderValue(const QString& key, int position) const;
+    int sliderPosition(const QString& key, double value) const;
+    // Every key of this form back to the scene's default (an edit per key that differs).
+    void resetAll();
     QComboBox* choice(const QString& key) const;   // a choice's box, e.g. contact, scaling
     // The values shown, as a parameter set of this form's scene (only keys of this form).
     simcore::ParameterSet values() const;
@@ -45,8 +57,17 @@ signals:
 
 private:
     bool commit(const QString& key);  // false: refused (the field is marked red)
+    void setToDefault(const QString& key);
+    void showDefaultState(const QString& key, double value);
 
     simcore::SceneKind m_kind;
+    struct Span {
+        double lo = 0.0, hi = 1.0;
+        bool log = false;
+    };
+    std::map<QString, QSlider*> m_sliders;
+    std::map<QString, Span> m_spans;
+    std::map<QString, QToolButton*> m_defaults;
     std::map<QString, QLineEdit*> m_fields;
     std::map<QString, QComboBox*> m_choices;
     std::map<QString, double> m_shown;  // value last shown or accepted per key
@@ -62,6 +83,7 @@ public:
     // "body1 (ring2d)", ..., then "every body"; an edit goes to the chosen body (a world
     // parameter, such as gravity or dt, to every body whatever is chosen).
     QComboBox* bodySelector() const { return m_bodies; }
+    QPushButton* resetAllButton() const { return m_resetAll; }
 
 public slots:
     // Rebuilds the fields when the scene kind changes, then shows the values.
@@ -80,6 +102,7 @@ private:
     QWidget* m_host = nullptr;
     QVBoxLayout* m_layout = nullptr;
     ParameterForm* m_form = nullptr;
+    QPushButton* m_resetAll = nullptr;
 };
 
 QString groupName(simcore::ParamGroup group);

@@ -103,6 +103,7 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     // the window) wider than a projector's 1280 px once the energy docks open beside it.
     layout->addWidget(m_showBands);
     layout->addWidget(m_bandNote);
+    createReferenceControls(host, layout);
     // The plots scroll when the screen is too short for them (a projector in presentation
     // mode): each keeps the height its axes and legend need instead of being squashed.
     auto* scroll = new QScrollArea(host);
@@ -130,6 +131,8 @@ PlotDock::PlotDock(QWidget* parent) : QDockWidget(tr("Plots"), parent) {
     m_driftPlot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
     m_driftPlot->yAxis->setNumberFormat(QStringLiteral("eb"));
     m_driftPlot->yAxis->setNumberPrecision(0);
+    keepTickLabelsApart(m_driftPlot->xAxis);
+    keepTickLabelsApart(m_driftPlot->yAxis);
     legendUnderAxes(m_driftPlot, font());
     m_driftMarks = m_driftPlot->addGraph();
     m_driftMarks->setLineStyle(QCPGraph::lsNone);
@@ -281,6 +284,7 @@ void PlotDock::setScene(simcore::SceneKind kind, bool world) {
     // The views' graphs again for the new plots (the views stay until a frame says otherwise).
     for (int v = 1; v < int(m_views.size()); ++v) addViewGraphs(v);
     updateViewLegend();
+    rebuildReferenceGraphs();
     clear();
     updateCursor();
 }

@@ -14,6 +14,7 @@
 // translucent fill in the series' colour between two graphs kept out of the legend. Rows of
 // a step without an estimate (rk4 without step doubling, ...) have no band, and the dock says so.
 
+#include <limits>
 #include <vector>
 
 #include <QDockWidget>
@@ -30,6 +31,10 @@ class QComboBox;
 class QCheckBox;
 class QTimer;
 class QVBoxLayout;
+
+namespace elui {
+class ReferenceRun;
+}
 
 namespace elui {
 
@@ -102,6 +107,22 @@ public:
     // A series' plotted value at time t: the last point at or before t (NaN: none).
     double valueAt(const QString& plotId, int series, double t) const;
     int abandonedPointCount(const QString& plotId, int series) const;
+
+    // The reference curve ("Compare with a reference", plot_dock_reference.cpp): a converged
+    // rk45 solution from the run's start (reference_run.h) drawn dashed beside the series that
+    // have an error band, and the run's distance to it - the error of the run so far - said in
+    // words beside the band's. Fed by every frame while it is on.
+    void followReference(const Frame& frame);
+    bool referenceShown() const;
+    void setReferenceShown(bool on);
+    QString referenceNote() const;  // empty while off
+    int referencePointCount(const QString& plotId, int series) const;  // -1: no such curve
+    double referenceValueAt(const QString& plotId, int series, double t) const;  // NaN: none at t
+    // The last time the run and the reference are compared at, and the run's total energy
+    // minus the reference's there [s], [J] (NaN: not yet).
+    double referenceTime() const { return m_referenceTime; }
+    double referenceEnergyError() const { return m_referenceEnergyError; }
+    ReferenceRun* referenceRun() const { return m_reference; }
 signals:
     // "Show error band" switched: the worker fills the rows' bands only while it is on.
     void bandsShownChanged(bool on);
@@ -126,6 +147,10 @@ private:
     void updateCursor();
     int plotIndex(const QString& plotId) const;
     void updateBandNote();
+    void createReferenceControls(QWidget* host, QVBoxLayout* layout);
+    void rebuildReferenceGraphs();        // after setScene: graphs for the new plots, refilled
+    void appendReference(int first, int count);
+    void updateReferenceNote();
     // The two graphs (value + e, value - e, filled between) of a series with a band.
     struct Band {
         int series = -1;
@@ -170,6 +195,18 @@ private:
     QLabel* m_bandNote = nullptr;   // says why no band is drawn
     std::vector<std::vector<Band>> m_bands;  // per plot
     bool m_lastRowHasBand = false;
+    QCheckBox* m_showReference = nullptr;
+    QLabel* m_referenceNote = nullptr;
+    ReferenceRun* m_reference = nullptr;
+    struct ReferenceGraph {
+        int series = -1;
+        QCPGraph* graph = nullptr;
+    };
+    std::vector<std::vector<ReferenceGraph>> m_referenceGraphs;  // per plot
+    double m_runTime = 0.0;                // lane 0's time in the last frame followed [s]
+    double m_physicsChangedAt = 0.0;       // Frame::physicsChangedAt of that frame [s]
+    double m_referenceTime = std::numeric_limits<double>::quiet_NaN();
+    double m_referenceEnergyError = std::numeric_limits<double>::quiet_NaN();
     bool m_bandsThin = false;  // as of the last replot (bandsThinnerThanALine)
     QTimer* m_replotTimer = nullptr;
     double m_window = 10.0;

@@ -41,7 +41,7 @@ void keepTickLabelsApart(QCPAxis* axis) {
     // made again for this draw.
     QObject::connect(plot, &QCustomPlot::afterLayout, axis, [axis, wanted] {
         const int length = horizontal(axis) ? axis->axisRect()->width() : axis->axisRect()->height();
-        if (length < 20 || axis->scaleType() != QCPAxis::stLinear) return;
+        if (length < 20) return;
         const QSharedPointer<QCPAxisTicker> ticker = axis->ticker();
         const int before = ticker->tickCount();
         const QString format = axis->numberFormat();
@@ -55,6 +55,19 @@ void keepTickLabelsApart(QCPAxis* axis) {
         }
         if (ticker->tickCount() != before) axis->axisRect()->update(QCPLayoutElement::upPreparation);
     });
+}
+
+void setLogTicks(QCPAxis* axis) {
+    axis->setScaleType(QCPAxis::stLogarithmic);
+    axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+    // Three significant digits: over less than 1.6 decades QCustomPlot's log ticker falls back
+    // to linear steps (0.008, 0.01, 0.012), which a one-digit mantissa printed as "10⁻²" three
+    // times. Powers of ten still read 0.001, 0.01, 1e+05 (beautified to 10⁵).
+    axis->setNumberFormat(QStringLiteral("gb"));
+    axis->setNumberPrecision(3);
+    // Those linear steps' labels are long (0.0125, 0.015, 0.0175): fewer of them where they
+    // would run into each other.
+    keepTickLabelsApart(axis);
 }
 
 bool tickLabelsOverlap(const QCPAxis* axis) { return !fits(axis, axis->tickVector(), axis->tickVectorLabels()); }

@@ -9,8 +9,12 @@ class QCPAxis;
 
 namespace elui {
 
-// Installs the check on `axis` (a numeric axis: its ticker's tick count is the most it shows).
+// Installs the check on `axis` (a numeric axis, linear or logarithmic: its ticker's tick count
+// is the most it shows).
 void keepTickLabelsApart(QCPAxis* axis);
+// A logarithmic axis whose labels stay apart (three significant digits, and keepTickLabelsApart):
+// the study diagrams' axes.
+void setLogTicks(QCPAxis* axis);
 // Whether two neighbouring tick labels of a drawn axis overlap, measured with the axis's tick
 // label font at the ticks' pixel positions (for the tests).
 bool tickLabelsOverlap(const QCPAxis* axis);

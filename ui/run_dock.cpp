@@ -189,10 +189,11 @@ QString RunDock::viewTable(const Frame& frame) {
         return QStringLiteral("%1 J").arg(l.diagnostics.energyDrift(), 0, 'g', 3);
     });
     const int reference = lanes.size() > 1 ? lanes[1].divergenceReference : 0;
-    html += cells(tr("distance to view %1").arg(reference + 1), [&](const LaneFrame& l, std::size_t v) {
+    // On two lines: the longest label would otherwise set the dock's width.
+    html += cells(tr("distance<br>to view %1").arg(reference + 1), [&](const LaneFrame& l, std::size_t v) {
         if (int(v) == reference) return QStringLiteral("—");
         if (l.failure) return tr("failed");
-        return QStringLiteral("%1 m").arg(l.divergence, 0, 'e', 2);
+        return QStringLiteral("%1 m").arg(l.divergence, 0, 'g', 3);
     });
     return html + QStringLiteral("</table>");
 }
@@ -242,17 +243,22 @@ void RunDock::showFrame(const FramePtr& frame) {
         return QStringLiteral("<tr><td>%1&nbsp;</td><td align=right>%2</td></tr>").arg(name, value);
     };
     QString html = QStringLiteral("<table cellspacing=0>");
-    html += row(tr("simulated time"), QStringLiteral("%1 s").arg(d.time, 0, 'f', 3));
+    // Side by side the first table holds what the views share (the clock, the common step);
+    // each view's own numbers are in the Each view table under it, not view 1's twice over
+    // (which also kept the dock within a 1280 px projector at presentation size).
+    if (single) html += row(tr("simulated time"), QStringLiteral("%1 s").arg(d.time, 0, 'f', 3));
     html += row(tr("wall time"), QStringLiteral("%1 s").arg(frame->wallSeconds, 0, 'f', 2));
-    html += row(tr("steps"), QString::number(d.step));
+    if (single) html += row(tr("steps"), QString::number(d.step));
     html += row(tr("steps/s"), frame->running ? QString::number(std::lround(frame->stepsPerSecond)) : tr("paused"));
     html += row(tr("step taken"), QStringLiteral("%1 s").arg(d.dt, 0, 'g', 3));
-    html += row(tr("error estimate"),
-                d.errorEstimate >= 0 ? QStringLiteral("%1 m").arg(d.errorEstimate, 0, 'e', 2) : tr("off"));
-    html += row(tr("contact energy"), QStringLiteral("%1 J").arg(d.contact, 0, 'g', 4));
-    html += row(tr("removed by contact"),
-                QStringLiteral("%1 J").arg(d.removedContact + d.removedCollisions, 0, 'g', 4));
-    html += row(tr("energy drift"), QStringLiteral("%1 J").arg(d.energyDrift(), 0, 'e', 2));
+    if (single) {
+        html += row(tr("error estimate"),
+                    d.errorEstimate >= 0 ? QStringLiteral("%1 m").arg(d.errorEstimate, 0, 'e', 2) : tr("off"));
+        html += row(tr("contact energy"), QStringLiteral("%1 J").arg(d.contact, 0, 'g', 4));
+        html += row(tr("removed by contact"),
+                    QStringLiteral("%1 J").arg(d.removedContact + d.removedCollisions, 0, 'g', 4));
+        html += row(tr("energy drift"), QStringLiteral("%1 J").arg(d.energyDrift(), 0, 'e', 2));
+    }
     if (d.hasSolverCounters) {  // CVODE's own counters (issue 13)
         const simcore::SolverCounters& c = d.solver;
         html += row(tr("force evaluations"), QString::number(d.forceEvaluations));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <QThread>
 #include <QTimer>
@@ -363,6 +364,7 @@ void SimWorker::shutdown() {
     m_scene.reset();
     m_params = simcore::ParameterSet{};
     m_recorder.clear();
+    m_runStart.reset();
     m_inputs = {};
     m_publisher.clear();
     // Quit from here rather than QThread::quit() on the GUI thread: that would wake this
@@ -444,6 +446,8 @@ void SimWorker::publish(bool force) {
     frame->rtol = m_lanes.rtol();
     frame->timeline = timelineInfo();
     frame->lanes = m_lanes.laneFrames(m_forcesWanted, m_selected);
+    frame->runStart = m_runStart;
+    frame->physicsChangedAt = physicsChangedAt();
     for (std::size_t i = 0; i < frame->lanes.size(); ++i)
         if (frame->lanes[i].failure) frame->lanes[i].stretchStart = stretchStart(i, *frame->lanes[i].failure);
     m_publisher.publish(std::move(frame));
@@ -478,6 +482,15 @@ void SimWorker::startTimeline() {
     m_moment = 0;
     m_recorder.record(0, m_lanes.views(), {m_lanes.commonTime(), m_until});
     m_firstTime = m_lastTime = m_lanes.front().time();
+    m_runStart = std::make_shared<const simcore::SimulationSnapshot>(m_recorder.checkpoints().front().lanes.front());
+}
+
+double SimWorker::physicsChangedAt() const {
+    double at = std::numeric_limits<double>::infinity();
+    for (const Input& input : m_inputs)
+        if ((input.kind == Input::Parameter && input.param != simcore::Param::Dt) || input.kind == Input::Grab)
+            at = std::min(at, input.time);
+    return at;
 }
 
 void SimWorker::recordMoment() {
@@ -491,6 +504,7 @@ void SimWorker::logInput(Input input) {
     if (m_lanes.empty()) return;
     if (!m_replaying && m_moment < m_recorder.last()) branch();
     input.moment = m_moment;
+    input.time = m_lanes.front().time();
     if (!m_replaying) m_inputs.push_back(input);
     applyInput(input);
 }

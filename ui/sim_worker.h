@@ -146,6 +146,7 @@ private:
     struct Input {
         enum Kind { Parameter, Integrator, StepDoubling, Tolerances, Grab, Move, Release, Until };
         long moment = 0;                  // done at this moment (after its step)
+        double time = 0.0;                // lane 0's simulated time then [s]
         Kind kind = Parameter;
         simcore::Param param = simcore::Param::Count;  // Parameter
         std::string key;                  // Integrator: the name
@@ -201,6 +202,10 @@ private:
 
     simcore::TimelineRecorder m_recorder;
     std::vector<Input> m_inputs;          // by moment, in the order they were done
+    // Lane 0's state when the timeline began (Frame::runStart).
+    std::shared_ptr<const simcore::SimulationSnapshot> m_runStart;
+    // The simulated time of the first input on the timeline that changes the physics.
+    double physicsChangedAt() const;
     long m_moment = 0;                    // the moment the lanes are at
     bool m_replaying = false;             // re-simulating: no rows, no recording, no frames
     double m_firstTime = 0.0, m_lastTime = 0.0;  // lane 0's time at the first and newest moment

@@ -31,6 +31,7 @@
 #include "ui/mailbox.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_series.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
 
@@ -42,13 +43,7 @@ QColor integratorColor(const QString& name) { return QColor(QString::fromLatin1(
 QString number(double v) { return QString::number(v, 'g', 4); }
 
 void setupLogAxis(QCPAxis* axis, const QString& label) {
-    axis->setScaleType(QCPAxis::stLogarithmic);
-    axis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-    // Three significant digits: over less than 1.6 decades QCustomPlot's log ticker falls back
-    // to linear steps (0.008, 0.01, 0.012), which a one-digit mantissa printed as "10⁻²" three
-    // times. Powers of ten still read 0.001, 0.01, 1e+05 (beautified to 10⁵).
-    axis->setNumberFormat(QStringLiteral("gb"));
-    axis->setNumberPrecision(3);
+    setLogTicks(axis);
     axis->setLabel(label);
 }
 

@@ -36,6 +36,8 @@ const QVector4D kOuterFill{1.00f, 0.75f, 0.45f, 0.75f};
 const QVector4D kBoxColor{0.45f, 0.47f, 0.52f, 1.0f};
 const QVector4D kFloorColor{0.80f, 0.82f, 0.86f, 1.0f};
 const QVector4D kForceColor{0.85f, 0.10f, 0.10f, 1.0f};
+const QVector4D kVelocityColor{0.05f, 0.45f, 0.75f, 1.0f};
+const QVector4D kRulerColor{0.45f, 0.10f, 0.55f, 1.0f};
 const QVector4D kNormalColor{0.10f, 0.55f, 0.60f, 1.0f};
 const QVector4D kMouseColor{0.95f, 0.70f, 0.00f, 1.0f};
 
@@ -137,6 +139,12 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     m_forcesPanel->setStyleSheet(
         QStringLiteral("QLabel { color: #202030; background: rgba(255,255,255,215); border: 1px solid #a0a0aa; padding: 4px; }"));
     m_forcesPanel->hide();
+    m_rulerLabel = new QLabel(this);
+    m_rulerLabel->setObjectName(QStringLiteral("rulerLabel"));
+    m_rulerLabel->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_rulerLabel->setStyleSheet(QStringLiteral("QLabel { background: rgba(255,255,255,220); color: #731a8c; "
+                                               "border: 1px solid #731a8c; padding: 2px; }"));
+    m_rulerLabel->hide();
 }
 
 Viewport::~Viewport() {
@@ -183,6 +191,7 @@ void Viewport::setOptions(const ViewOptions& options) {
     m_options = options;
     updateOverlay();
     m_legend->setVisible(options.strain);
+    updateRulerLabel();
     update();
 }
 
@@ -586,29 +595,11 @@ void Viewport::paintGL() {
         glDrawArrays(GL_POINTS, 0, m_particleCount);
     }
 
-    if (m_options.forces && lane.forces.size() == x.size()) {
-        // Scale so that the 90th-percentile force is 0.4 body radii long: a few large contact
-        // forces must not shrink every other arrow to nothing.
-        std::vector<double> magnitude;
-        for (std::size_t i = 0; i + 2 < lane.forces.size(); i += 3)
-            magnitude.push_back(std::hypot(double(lane.forces[i]), double(lane.forces[i + 1]), double(lane.forces[i + 2])));
-        double largest = 0.0;
-        if (!magnitude.empty()) {
-            auto nth = magnitude.begin() + std::ptrdiff_t(0.9 * double(magnitude.size() - 1));
-            std::nth_element(magnitude.begin(), nth, magnitude.end());
-            largest = *nth / 0.66;
-        }
-        if (largest > 0.0) {
-            const float scale = float(0.6 * scene.bodyRadius / largest);
-            std::vector<float> v;
-            for (std::size_t i = 0; i + 2 < x.size(); i += 3)
-                v.insert(v.end(), {x[i], x[i + 1], x[i + 2], x[i] + scale * lane.forces[i],
-                                   x[i + 1] + scale * lane.forces[i + 1], x[i + 2] + scale * lane.forces[i + 2]});
-            drawSegments(v, kForceColor, 2.0f);
-        }
-    }
+    if (m_options.forces && lane.forces.size() == x.size()) drawArrows(x, lane.forces, kForceColor);
+    if (m_options.velocities && lane.velocities.size() == x.size()) drawArrows(x, lane.velocities, kVelocityColor);
 
     drawForceBreakdown(lane);
+    drawRuler();
 
     if (lane.pointer.active && lane.pointer.particle >= 0 && lane.pointer.particle < m_particleCount) {
         const QVector3D p = at(lane.pointer.particle);
@@ -649,6 +640,97 @@ void Viewport::paintGL() {
     glBindVertexArray(0);
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);
+}
+
+void Viewport::drawArrows(const std::vector<float>& x, const std::vector<float>& vectors, const QVector4D& color) {
+    // Scale so that the 90th-percentile vector is 0.4 body radii long: a few large ones (contact
+    // forces, a particle flung away) must not shrink every other arrow to nothing.
+    std::vector<double> magnitude;
+    for (std::size_t i = 0; i + 2 < vectors.size(); i += 3)
+        magnitude.push_back(std::hypot(double(vectors[i]), double(vectors[i + 1]), double(vectors[i + 2])));
+    double largest = 0.0;
+    if (!magnitude.empty()) {
+        auto nth = magnitude.begin() + std::ptrdiff_t(0.9 * double(magnitude.size() - 1));
+        std::nth_element(magnitude.begin(), nth, magnitude.end());
+        largest = *nth / 0.66;
+    }
+    if (largest <= 0.0) return;
+    const float scale = float(0.6 * m_frame->scene->bodyRadius / largest);
+    std::vector<float> v;
+    for (std::size_t i = 0; i + 2 < x.size(); i += 3)
+        v.insert(v.end(), {x[i], x[i + 1], x[i + 2], x[i] + scale * vectors[i], x[i + 1] + scale * vectors[i + 1],
+                           x[i + 2] + scale * vectors[i + 2]});
+    drawSegments(v, color, 2.0f);
+}
+
+void Viewport::drawRuler() {
+    if (!m_options.ruler || !m_hasRuler) return;
+    // The line, and a tick across each end (in the view's plane).
+    const QVector3D d = m_rulerB - m_rulerA;
+    QVector3D across = QVector3D::crossProduct(d, m_camera.forward());
+    const float tick = 7.0f * m_camera.worldPerPixel(size());
+    across = across.length() > 0 ? across.normalized() * tick : QVector3D(0, tick, 0);
+    const QVector3D a1 = m_rulerA - across, a2 = m_rulerA + across, b1 = m_rulerB - across, b2 = m_rulerB + across;
+    glDisable(GL_DEPTH_TEST);
+    drawSegments({m_rulerA.x(), m_rulerA.y(), m_rulerA.z(), m_rulerB.x(), m_rulerB.y(), m_rulerB.z(), a1.x(), a1.y(),
+                  a1.z(), a2.x(), a2.y(), a2.z(), b1.x(), b1.y(), b1.z(), b2.x(), b2.y(), b2.z()},
+                 kRulerColor, 2.5f);
+    if (!m_camera.is2d()) glEnable(GL_DEPTH_TEST);
+}
+
+double Viewport::rulerLength() const { return m_hasRuler ? double((m_rulerB - m_rulerA).length()) : 0.0; }
+
+QString Viewport::rulerText() const { return m_rulerLabel && m_rulerLabel->isVisible() ? m_rulerLabel->text() : QString(); }
+
+void Viewport::updateRulerLabel() {
+    if (!m_rulerLabel) return;
+    if (!m_options.ruler || !m_hasRuler) {
+        m_rulerLabel->hide();
+        return;
+    }
+    const QVector3D d = m_rulerB - m_rulerA;
+    QString text = tr("%1 m").arg(double(d.length()), 0, 'f', 3);
+    if (m_camera.is2d()) text += tr(" (Δx %1, Δy %2)").arg(double(d.x()), 0, 'f', 3).arg(double(d.y()), 0, 'f', 3);
+    m_rulerLabel->setText(text);
+    m_rulerLabel->adjustSize();
+    const QPointF p = toPixel(m_rulerB);
+    m_rulerLabel->move(std::clamp(int(p.x()) + 10, 0, std::max(0, width() - m_rulerLabel->width())),
+                       std::clamp(int(p.y()) - m_rulerLabel->height() - 6, 0, std::max(0, height() - m_rulerLabel->height())));
+    m_rulerLabel->show();
+}
+
+QPointF Viewport::toPixel(const QVector3D& point) const {
+    const QMatrix4x4 mvp = m_camera.projection(size()) * m_camera.view();
+    const QVector3D ndc = mvp.map(point);
+    return {(ndc.x() + 1.0f) * 0.5f * float(width()), (1.0f - ndc.y()) * 0.5f * float(height())};
+}
+
+QVector3D Viewport::onViewPlane(const QPointF& pixel) const {
+    // The plane through the box centre facing the camera (in 2D: the body's plane z = 0).
+    const QVector3D centre = m_frame && m_frame->scene ? QVector3D(float(m_frame->scene->boxCentre.x()),
+                                                                   float(m_frame->scene->boxCentre.y()),
+                                                                   float(m_frame->scene->boxCentre.z()))
+                                                       : QVector3D();
+    const Ray ray = m_camera.rayAt(pixel, size());
+    const QVector3D normal = m_camera.forward();
+    const float denom = QVector3D::dotProduct(ray.direction, normal);
+    if (std::abs(denom) < 1e-6f) return centre;
+    return ray.origin + QVector3D::dotProduct(centre - ray.origin, normal) / denom * ray.direction;
+}
+
+int Viewport::particleAt(const QPointF& pixel) const {
+    if (!m_frame) return -1;
+    const auto& x = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))].positions;
+    int best = -1;
+    double bestDistance = 28.0;
+    for (std::size_t i = 0; 3 * i + 2 < x.size(); ++i) {
+        const double distance = QLineF(toPixel(QVector3D(x[3 * i], x[3 * i + 1], x[3 * i + 2])), pixel).length();
+        if (distance < bestDistance) {
+            bestDistance = distance;
+            best = int(i);
+        }
+    }
+    return best;
 }
 
 void Viewport::drawForceBreakdown(const LaneFrame& lane) {
@@ -765,15 +847,20 @@ void Viewport::layoutInfo() {
     m_info->setFixedHeight(height > 0 ? height : m_info->sizeHint().height());
 }
 
+QString Viewport::overlayText() const { return m_info->text(); }
+
 void Viewport::updateOverlay() {
     if (!m_frame) return;
     const LaneFrame& lane = m_frame->lanes[std::size_t(std::clamp(m_lane, 0, int(m_frame->lanes.size()) - 1))];
     QString html;
     if (!m_title.isEmpty()) html += QStringLiteral("<b>%1</b><br>").arg(m_title.toHtmlEscaped());
     html += QStringLiteral("t = %1 s").arg(lane.diagnostics.time, 0, 'f', 3);
-    if (m_frame->lanes.size() > 1 && m_lane > 0)
+    // The distance to the reference view: view 1, or the first live view once view 1 has failed
+    // (the Run dock's "distance to view N"); none on the reference view itself.
+    const int reference = std::clamp(lane.divergenceReference, 0, int(m_frame->lanes.size()) - 1);
+    if (m_frame->lanes.size() > 1 && m_lane != reference && !lane.failure)
         html += QStringLiteral("<br>%1 from %2: %3 m (RMS)")
-                    .arg(tr("distance"), m_frame->lanes[0].integrator)
+                    .arg(tr("distance"), m_frame->lanes[std::size_t(reference)].integrator)
                     .arg(lane.divergence, 0, 'g', 3);
     if (lane.failure)
         html += QStringLiteral("<br><span style='background:#c0392b; color:white'>&nbsp;%1&nbsp;</span>")
@@ -788,6 +875,7 @@ void Viewport::updateOverlay() {
     m_legend->setRange(m_options.strainRange);
     m_legend->setVisible(m_options.strain);
     updateForcesPanel(lane);
+    updateRulerLabel();  // follows the camera
 }
 
 bool Viewport::nearBody(const QPointF& pixel) const {
@@ -817,9 +905,18 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     m_lastPixel = event->position();
     m_pressPixel = event->position();
     m_clickCandidate = event->button() == Qt::LeftButton;
+    m_contextCandidate = event->button() == Qt::RightButton;
     // Shift+left always orbits (a large body can cover the whole view).
     const bool orbitOnly = event->modifiers() & Qt::ShiftModifier;
-    if (event->button() == Qt::LeftButton && !orbitOnly && nearBody(event->position())) {
+    if (event->button() == Qt::LeftButton && m_options.ruler && !orbitOnly) {
+        // The ruler: from where the button went down to where it is.
+        m_drag = Drag::Ruler;
+        m_clickCandidate = false;
+        m_rulerA = m_rulerB = onViewPlane(event->position());
+        m_hasRuler = true;
+        updateRulerLabel();
+        update();
+    } else if (event->button() == Qt::LeftButton && !orbitOnly && nearBody(event->position())) {
         const Ray ray = m_camera.rayAt(event->position(), size());
         m_drag = Drag::Grab;
         m_grabbed = false;
@@ -842,8 +939,13 @@ void Viewport::onGrabbed(int, const QVector3D& position) {
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
     const QPointF d = event->position() - m_lastPixel;
     m_lastPixel = event->position();
-    if (m_clickCandidate && QLineF(m_pressPixel, event->position()).length() > kClickSlop) m_clickCandidate = false;
+    if (QLineF(m_pressPixel, event->position()).length() > kClickSlop) m_clickCandidate = m_contextCandidate = false;
     switch (m_drag) {
+        case Drag::Ruler:
+            m_rulerB = onViewPlane(event->position());
+            updateRulerLabel();
+            update();
+            break;
         case Drag::Grab:
             if (m_grabbed) emit anchorMoved(anchorUnder(event->position()));
             break;
@@ -865,9 +967,12 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     if (m_drag == Drag::Grab) emit releaseRequested();
     const bool click = m_clickCandidate && event->button() == Qt::LeftButton &&
                        QLineF(m_pressPixel, event->position()).length() <= kClickSlop;
-    m_clickCandidate = false;
+    const bool context = m_contextCandidate && event->button() == Qt::RightButton &&
+                         QLineF(m_pressPixel, event->position()).length() <= kClickSlop;
+    m_clickCandidate = m_contextCandidate = false;
     m_drag = Drag::None;
     m_grabbed = false;
+    if (context) emit contextRequested(mapToGlobal(event->position().toPoint()), particleAt(m_pressPixel));
     if (click) {
         // A click: select what is under the cursor (the worker picks; nothing near: clear).
         const Ray ray = m_camera.rayAt(m_pressPixel, size());

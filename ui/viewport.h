@@ -63,6 +63,12 @@ public:
     FramePtr frame() const { return m_frame; }
     // Frames drawn since creation (for frame-rate measurements).
     quint64 paintCount() const { return m_paints; }
+    // The particle drawn nearest a pixel, within 28 px (any layer), or -1.
+    int particleAt(const QPointF& pixel) const;
+    // The ruler (ViewOptions::ruler): its length [m] (0: none drawn), and the label shown.
+    double rulerLength() const;
+    QString rulerText() const;
+    QString overlayText() const;  // the text over the view (title, time, distance, failure)
 
 public slots:
     void showFrame(const elui::FramePtr& frame);
@@ -75,6 +81,8 @@ signals:
     void releaseRequested();
     // A click without a drag: select the particle nearest the ray (none near it: clear).
     void selectRequested(const QVector3D& origin, const QVector3D& direction, double maxDistance);
+    // A right click (no drag) at a global position, on a particle (its index) or not (-1).
+    void contextRequested(const QPoint& globalPosition, int particle);
     void cameraChanged(const elui::Camera& camera);
 
 protected:
@@ -106,6 +114,12 @@ private:
     bool nearBody(const QPointF& pixel) const;
     // The selected particle's force arrows, and the panel that names them.
     void drawForceBreakdown(const LaneFrame& lane);
+    // Arrows from every particle along `vectors` (3N), the 90th percentile 0.4 body radii long.
+    void drawArrows(const std::vector<float>& x, const std::vector<float>& vectors, const QVector4D& color);
+    void drawRuler();
+    void updateRulerLabel();
+    QPointF toPixel(const QVector3D& point) const;
+    QVector3D onViewPlane(const QPointF& pixel) const;
     void updateForcesPanel(const LaneFrame& lane);
     QVector3D anchorUnder(const QPointF& pixel) const;
 
@@ -121,6 +135,9 @@ private:
     QLabel* m_info = nullptr;
     StrainLegend* m_legend = nullptr;
     QLabel* m_forcesPanel = nullptr;  // the selected particle's forces (objectName "forcesPanel")
+    QLabel* m_rulerLabel = nullptr;   // the ruler's length (objectName "rulerLabel")
+    bool m_hasRuler = false;
+    QVector3D m_rulerA, m_rulerB;     // the ruler's ends [m], on the view's plane
     double m_arrowScale = 0.0;        // of the force arrows drawn last [m per N]
 
     // GL objects (made in initializeGL, freed on aboutToBeDestroyed).
@@ -139,11 +156,12 @@ private:
     int m_particleCount = 0;
 
     // Mouse.
-    enum class Drag { None, Orbit, Pan, Grab };
+    enum class Drag { None, Orbit, Pan, Grab, Ruler };
     Drag m_drag = Drag::None;
     QPointF m_lastPixel;
     QPointF m_pressPixel;     // where the left button went down
     bool m_clickCandidate = false;  // left press not (yet) moved beyond the slop: a click
+    bool m_contextCandidate = false;  // the same for the right button: a context menu
     bool m_grabbed = false;
     QVector3D m_planePoint;   // the drag plane passes through here, facing the camera
     QVector3D m_planeNormal;

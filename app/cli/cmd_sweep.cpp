@@ -154,23 +154,52 @@ bool writeAll(int fd, const std::string& text) {
     return true;
 }
 
+// `--csv -`: the rows streamed in grid order, nothing to resume.
+int streamSweep(const simlab::SweepSpec& spec, long begin, long end, const std::string& header, bool quiet) {
+    Progress progress(end - begin, quiet);
+    std::fputs(header.c_str(), stdout);
+    for (long i = begin; i < end; ++i) {
+        const simlab::SweepRow row = simlab::runSweepPoint(spec, i);
+        std::fputs(simlab::sweepCsvRow(spec, row).c_str(), stdout);
+        std::fflush(stdout);
+        progress.done(row);
+    }
+    return kExitOk;
+}
+
+// --resume: the rows of this shard a journal already holds (into `rows`), and how many of its
+// bytes hold whole lines of them after `head` (0 without a journal). A journal of another
+// sweep is refused.
+long readJournal(const std::string& journalPath, const std::string& head, long begin, long end,
+                 std::map<long, std::string>& rows) {
+    std::ifstream in(journalPath, std::ios::binary);
+    if (!in) return 0;
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!text.starts_with(head))
+        throw UsageError("--resume: " + simcore::quoteShort(journalPath, 200) +
+                         " was written by another sweep (scene, grid, duration, metrics, options, shard or "
+                         "version differ); delete it or run without --resume");
+    long keep = static_cast<long>(head.size());
+    for (std::size_t at = static_cast<std::size_t>(keep);;) {
+        const auto nl = text.find('\n', at);
+        if (nl == std::string::npos) break;  // a torn last line (killed while writing it)
+        const std::string line = text.substr(at, nl + 1 - at);
+        const auto index = simlab::sweepCsvRowIndex(line);
+        if (!index || *index < begin || *index >= end) break;  // not a row of ours: drop it and the rest
+        rows[*index] = line;
+        at = nl + 1;
+        keep = static_cast<long>(at);
+    }
+    return keep;
+}
+
 int runSweep(const SweepArgs& args) {
     const simlab::SweepSpec& spec = args.spec;
     const auto [begin, end] = simlab::sweepShard(spec, args.shardOf.first, args.shardOf.second);
     const std::string header = simlab::sweepCsvHeader(spec);
     long total = end - begin;
 
-    if (args.csv == "-") {  // streamed in grid order, nothing to resume
-        Progress progress(total, args.quiet);
-        std::fputs(header.c_str(), stdout);
-        for (long i = begin; i < end; ++i) {
-            const simlab::SweepRow row = simlab::runSweepPoint(spec, i);
-            std::fputs(simlab::sweepCsvRow(spec, row).c_str(), stdout);
-            std::fflush(stdout);
-            progress.done(row);
-        }
-        return kExitOk;
-    }
+    if (args.csv == "-") return streamSweep(spec, begin, end, header, args.quiet);
 
     // The final file is opened first: an unwritable path is bad input before any work.
     simlab::AtomicFile out(args.csv);
@@ -180,28 +209,8 @@ int runSweep(const SweepArgs& args) {
                               fingerprint(simlab::sweepSpecText(spec) + " shard " + std::to_string(args.shardOf.first) + "/" +
                                           std::to_string(args.shardOf.second) + " " + elastic_lab::kVersion) + "\n";
     std::map<long, std::string> rows;  // index -> CSV line
-    long keep = 0;                     // bytes of the journal that hold whole lines
-    if (args.resume) {
-        std::ifstream in(journalPath, std::ios::binary);
-        if (in) {
-            const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            if (!text.starts_with(stamp + header))
-                throw UsageError("--resume: " + simcore::quoteShort(journalPath, 200) +
-                                 " was written by another sweep (scene, grid, duration, metrics, options, shard or "
-                                 "version differ); delete it or run without --resume");
-            keep = static_cast<long>((stamp + header).size());
-            for (std::size_t at = static_cast<std::size_t>(keep);;) {
-                const auto nl = text.find('\n', at);
-                if (nl == std::string::npos) break;  // a torn last line (killed while writing it)
-                const std::string line = text.substr(at, nl + 1 - at);
-                const auto index = simlab::sweepCsvRowIndex(line);
-                if (!index || *index < begin || *index >= end) break;  // not a row of ours: drop it and the rest
-                rows[*index] = line;
-                at = nl + 1;
-                keep = static_cast<long>(at);
-            }
-        }
-    }
+    // Bytes of the journal that hold whole lines.
+    const long keep = args.resume ? readJournal(journalPath, stamp + header, begin, end, rows) : 0;
     const int fd = ::open(journalPath.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0 || ::ftruncate(fd, keep) != 0 || ::lseek(fd, 0, SEEK_END) < 0 ||
         (keep == 0 && !writeAll(fd, stamp + header))) {

@@ -38,6 +38,7 @@
 #include "ui/export.h"
 #include "ui/gl_format.h"
 #include "ui/lessons.h"
+#include "ui/lesson_dock.h"
 #include "ui/lessons_dialog.h"
 #include "ui/main_window.h"
 #include "ui/parameter_dock.h"
@@ -112,8 +113,8 @@ int main(int argc, char** argv) {
     const QCommandLineOption afterOpt(QStringLiteral("after"), QStringLiteral("Simulated time before the screenshot."),
                                       QStringLiteral("SECONDS"), QStringLiteral("0"));
     const QCommandLineOption optionsOpt(QStringLiteral("show"),
-                                        QStringLiteral("Display switches, comma separated: strain, forces, normals, noparticles, "
-                                                       "nofaces, nostructural, noradius, noshear, nobox, errorband."),
+                                        QStringLiteral("Display switches, comma separated: strain, forces, velocities, normals, noparticles, "
+                                                       "nofaces, nostructural, noradius, noshear, nobox, errorband, reference."),
                                         QStringLiteral("LIST"));
     const QCommandLineOption docksOpt(QStringLiteral("docks"),
                                       QStringLiteral("Open these docks, comma separated: %1.")
@@ -331,6 +332,7 @@ int main(int argc, char** argv) {
             const QString s = QString::fromStdString(item);
             if (s == QLatin1String("strain")) o.strain = true;
             else if (s == QLatin1String("forces")) o.forces = true;
+            else if (s == QLatin1String("velocities")) o.velocities = true;
             else if (s == QLatin1String("normals")) o.normals = true;
             else if (s == QLatin1String("noparticles")) o.particles = false;
             else if (s == QLatin1String("nofaces")) o.faces = false;
@@ -339,6 +341,7 @@ int main(int argc, char** argv) {
             else if (s == QLatin1String("noshear")) o.springs[2] = false;
             else if (s == QLatin1String("nobox")) o.box = false;
             else if (s == QLatin1String("errorband")) window.plotDock()->setBandsShown(true);
+            else if (s == QLatin1String("reference")) window.plotDock()->setReferenceShown(true);
             else return fail(QStringLiteral("unknown --show switch %1").arg(quoted(s)));
         }
         window.setViewOptions(o);
@@ -366,7 +369,11 @@ int main(int argc, char** argv) {
     if (selected >= 0) controller->selectParticle(selected);  // after the scene: a rebuild clears it
     window.show();
     // After show(): the docks take their share of a laid-out window.
-    if (lesson) docks = lesson->docks + docks;
+    if (lesson) {
+        docks = lesson->docks + docks;
+        window.lessonDock()->setLesson(lesson);
+        docks << QStringLiteral("lesson");
+    }
     for (const QString& dock : docks) window.openDock(dock);
     if (parser.isSet(experimentsOpt)) {
         elui::LessonsDialog* dialog = window.showLessons();
@@ -415,7 +422,8 @@ int main(int argc, char** argv) {
         // up to a few seconds for a large body); the two-minute guard below still holds.
         std::function<void()> grabWhenReady = [&window, &app, path, &exitCode, &grabWhenReady] {
             const elui::StabilityMapDock* map = window.stabilityMapDock();
-            if (map->isVisible() && map->computing()) {
+            // ... and for a lesson's "Measure" (below) to fill its figures.
+            if ((map->isVisible() && map->computing()) || window.lessonDock()->measuring()) {
                 QTimer::singleShot(50, &window, grabWhenReady);
                 return;
             }
@@ -436,7 +444,10 @@ int main(int argc, char** argv) {
         const QString branchIntegrator = parser.value(branchOpt).mid(parser.value(branchOpt).indexOf(QLatin1Char('=')) + 1).trimmed();
         auto branched = std::make_shared<bool>(branchKey.isEmpty());
         QObject::connect(controller, &elui::SimulationController::reachedTime, &window,
-                         [=] {
+                         [=, &window] {
+                             // A lesson's screenshot shows its figures: those of the run, and
+                             // the ones "Measure" gives on these parameters.
+                             if (lesson) window.lessonDock()->measure();
                              if (travelBack <= 0.0) return shoot();
                              controller->scrubToTime(after - travelBack);
                              if (!*branched) {
