@@ -21,6 +21,7 @@
 #include "simlab/output.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_series.h"
+#include "ui/plot_ticks.h"
 
 namespace elui {
 
@@ -76,8 +77,9 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
     const QString titles[] = {tr("Total momentum"), tr("min_gap"), tr("Volume per body and layer"),
                               tr("Pressure per body and layer")};
     const QString labels[] = {tr("momentum [kg m/s]"), tr("gap [m]"), tr("volume"), tr("pressure")};
+    // The plots directly in the scrolled widget (as the Plots dock's), shown with the content.
     for (int k = 0; k < 4; ++k) {
-        auto* p = new QCustomPlot(m_content);
+        auto* p = new QCustomPlot(host);
         p->setObjectName(QStringLiteral("bodies_") + QLatin1String(kPlotIds[k]));
         p->setMinimumHeight(130);
         p->plotLayout()->insertRow(0);
@@ -86,7 +88,9 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
         p->yAxis->setLabel(labels[k]);
         p->legend->setVisible(k != 1);
         p->legend->setFont(QFont(font().family(), font().pointSize() - 1));
-        content->addWidget(p);
+        keepTickLabelsApart(p->xAxis);
+        keepTickLabelsApart(p->yAxis);
+        p->hide();
         m_plots.push_back(p);
     }
 
@@ -129,6 +133,7 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
     });
 
     layout->addWidget(m_content);
+    for (QCustomPlot* p : m_plots) layout->addWidget(p);
     layout->addStretch(1);
     m_content->hide();
     scroll->setWidget(host);
@@ -179,6 +184,7 @@ void BodiesDock::showFrame(const Frame& frame) {
     const bool world = frame.world && frame.scene && frame.scene->isWorld();
     m_note->setVisible(!world);
     m_content->setVisible(world);
+    for (QCustomPlot* p : m_plots) p->setVisible(world);
     if (!world) {
         m_spec.reset();
         m_scene.reset();
