@@ -10,6 +10,7 @@
 
 #include "simcore/forces.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 
 namespace {
 
@@ -124,6 +125,39 @@ void BM_SnapshotCopy(benchmark::State& state) {
 }
 BENCHMARK(BM_SnapshotCopy)->Arg(4)->Arg(6)->Unit(benchmark::kMicrosecond);
 
+// Two level-4 spheres (1026 particles each, dt 0.001), weightless: pressed into
+// each other's contact skin (contact = 1: every step evaluates the pairs within the skin) or
+// moving apart (contact = 0: the broad phase finds nothing to do). Issue 26's goal: in contact
+// at most 1.5 x apart, per step.
+void BM_TwoSpheres(benchmark::State& state) {
+    const bool contact = state.range(0) == 1;
+    WorldSpec spec = *worldScene("collide3d");
+    for (const char* s : {"gravity=0", "subdivisions=4", "dt=0.001", "body1.position_x=-2.06", "body2.position_x=2.06",
+                          "body1.velocity_x=0.4", "body2.velocity_x=-0.4"})
+        (void)assignWorld(spec, s);
+    if (!contact) {
+        (void)assignWorld(spec, "body1.velocity_x=-0.4");
+        (void)assignWorld(spec, "body2.velocity_x=0.4");
+    }
+    World world(spec, "rk4");
+    // Into contact first (about 0.1 s at 0.8 m/s closing speed).
+    while (contact && world.diagnostics().contactPairsActive == 0 && world.time() < 1.0) world.step();
+    int touching = 0;
+    for (auto _ : state) {
+        if (!world.step()) {
+            state.SkipWithError(world.failure()->c_str());
+            break;
+        }
+        touching += world.diagnostics().contactPairsActive > 0 ? 1 : 0;
+    }
+    const double steps = static_cast<double>(state.iterations());
+    state.counters["particles"] = world.particleCount();
+    state.counters["steps_in_contact"] = touching;
+    state.counters["us_per_step"] = benchmark::Counter(steps * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_TwoSpheres)->Arg(0)->Arg(1)->Iterations(30)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
 }  // namespace
+
 
 BENCHMARK_MAIN();

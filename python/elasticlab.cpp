@@ -38,6 +38,7 @@
 #include "simcore/params.h"
 #include "simcore/scenes.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/analytic.h"
 #include "simlab/conservation.h"
 #include "simlab/output.h"
@@ -209,6 +210,114 @@ private:
     std::atomic<bool>& m_flag;
 };
 
+// Every parameter of a set, resolved (explicit or from the table); choices by name.
+py::dict parameterDict(const simcore::ParameterSet& p) {
+    py::dict out;
+    for (const simcore::ParamSpec* spec : simcore::parametersFor(p.kind())) {
+        const double v = p.get(spec->id);
+        const std::string name = spec->choiceName(v);
+        if (name.empty()) out[py::str(std::string(spec->key))] = v;
+        else out[py::str(std::string(spec->key))] = name;
+    }
+    return out;
+}
+
+py::dict optionsDict(const simcore::IntegratorOptions& o) {
+    return py::dict(py::arg("atol") = o.atol, py::arg("rtol") = o.rtol, py::arg("newton") = o.newtonIterations,
+                    py::arg("fixed_step") = o.fixedStep, py::arg("error_estimate") = o.stepDoubling,
+                    py::arg("min_step") = o.minStep, py::arg("max_step") = o.maxStep,
+                    py::arg("cg_tolerance") = o.cgTolerance, py::arg("cg_max_iterations") = o.cgMaxIterations);
+}
+
+// What a run samples, checked by the front door before it starts: the duration, rows every so
+// many steps (`every`), at given times or every so many seconds (`times`, built here after the
+// rows they make are bounded), within the steps of a fixed-step run and the memory rows may hold.
+struct Sampling {
+    double duration = 0.0;
+    long every = 0;
+    std::vector<double> times;
+    bool sampled = false;
+};
+
+Sampling checkedSampling(const simcore::ParameterSet& params, const std::string& integrator,
+                         const simcore::IntegratorOptions& options, double start, std::size_t columns,
+                         const py::handle& durationArg, const py::object& everyArg, const py::object& timesArg,
+                         const py::object& everySecondsArg) {
+    Sampling s;
+    s.duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
+    s.every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
+    const double everySeconds =
+        everySecondsArg.is_none() ? 0.0 : checkedNumber(everySecondsArg, "every", 0.0, 1e7, true, false, "s");
+    simlab::SceneSetup setup;
+    setup.params = params;
+    setup.integrator = integrator;
+    simlab::RunRequest request;
+    request.duration = s.duration;
+    request.rowsEvery = s.every;
+    request.sampleEvery = everySeconds;
+    request.rowColumns = static_cast<int>(columns);
+    request.options = options;
+    simlab::checkRun(setup, request);
+    s.times = timesArg.is_none() ? std::vector<double>{} : timesArg.cast<std::vector<double>>();
+    if (everySeconds > 0.0) {  // the start, every so many seconds, within the bound just checked
+        const auto count = static_cast<long>(std::floor(s.duration / everySeconds + 1e-9));
+        s.times.clear();
+        for (long k = 0; k <= count; ++k) s.times.push_back(start + static_cast<double>(k) * everySeconds);
+    }
+    s.sampled = s.every || everySeconds > 0.0 || !timesArg.is_none();
+    return s;
+}
+
+// Runs `sim` (a Simulation or a World) for `duration` seconds of simulated time (whole steps; a
+// fixed-step run ends at the first step at or past the end, as the CLI's run). Rows of the
+// diagnostics (`columns`), one per line, are recorded at the start, every `every` steps and the
+// end, or at `times` (absolute simulated times, ascending): the first step at or past each (an
+// adaptive method shortens its step to land on it, as it does at the end). `progress`, when
+// given, is called with the simulated time between slices of work; `published` after each step.
+// Returns the rows as an array, or None when nothing was sampled.
+template <class Sim, class Columns, class Published>
+py::object sampledRun(Sim& sim, const Columns& columns, const Sampling& s, const py::object& progress, Published&& published) {
+    const double duration = s.duration;
+    const long every = s.every;
+    const std::vector<double>& times = s.times;
+    const bool sampled = s.sampled;
+    std::vector<double> rows;
+    auto record = [&] {
+        for (const auto& c : columns) rows.push_back(c.value(sim.diagnostics()));
+    };
+    std::size_t next = 0;  // the next of `times` not yet recorded
+    auto due = [&] {       // records one row for every sample time reached (one per step)
+        bool reached = false;
+        while (next < times.size() && sim.time() >= times[next] - 1e-9 * sim.dt()) ++next, reached = true;
+        return reached;
+    };
+    if (every || due()) record();
+    const long firstStep = sim.stepCount();
+    const double tEnd = sim.time() + duration;
+    auto reached = [&] { return sim.time() >= tEnd - 1e-9 * sim.dt(); };
+    std::function<void()> between;
+    if (!progress.is_none()) between = [&] { progress(sim.time()); };
+    if (!reached())
+        inSlices([&] {
+            const bool ok = sim.step(next < times.size() ? std::min(tEnd, times[next]) : tEnd);
+            published();
+            if (!ok) return false;
+            const bool last = reached();
+            const bool sample = due();
+            if ((every && (sim.stepCount() % every == 0 || last)) || sample || (last && sampled && !every)) record();
+            // An adaptive run stops at the bound, as the CLI's (its rows up to there kept).
+            if (!last && static_cast<double>(sim.stepCount() - firstStep) >= simlab::kMaxSteps)
+                throw std::runtime_error("run stopped at step " + std::to_string(sim.stepCount()) + ": " +
+                                         simlab::number(simlab::kMaxSteps) + " steps taken, the most one run may take");
+            return !last;
+        }, between);
+    if (!sampled) return py::none();
+    const auto width = static_cast<py::ssize_t>(columns.size());
+    py::array_t<double> a({static_cast<py::ssize_t>(rows.size()) / width, width});
+    std::copy(rows.begin(), rows.end(), a.mutable_data());
+    return a;
+}
+
 class PySimulation {
 public:
     PySimulation(const py::object& scene, const py::object& integrator, const py::object& options,
@@ -296,29 +405,12 @@ public:
     py::object run(const py::handle& durationArg, const py::object& everyArg, const py::object& timesArg,
                    const py::object& progress, const py::object& csvPath, const py::object& xlsxPath,
                    const std::string& dialectName, const py::object& everySecondsArg) {
-        const double duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
-        const long every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
-        const double everySeconds =
-            everySecondsArg.is_none() ? 0.0 : checkedNumber(everySecondsArg, "every", 0.0, 1e7, true, false, "s");
-        // The front door's bounds: the steps of a fixed-step run, the rows held in memory.
-        simlab::SceneSetup setup;
-        setup.params = sim().parameters();
-        setup.integrator = std::string(sim().integrator().name());
-        simlab::RunRequest request;
-        request.duration = duration;
-        request.rowsEvery = every;
-        request.sampleEvery = everySeconds;
-        request.rowColumns = static_cast<int>(m_columns.size());
-        request.options = sim().integratorOptions();
-        simlab::checkRun(setup, request);
-        std::vector<double> times = timesArg.is_none() ? std::vector<double>{} : timesArg.cast<std::vector<double>>();
-        if (everySeconds > 0.0) {  // the start, every so many seconds, within the bound just checked
-            const double start = m_sim->time();
-            const auto count = static_cast<long>(std::floor(duration / everySeconds + 1e-9));
-            times.clear();
-            for (long k = 0; k <= count; ++k) times.push_back(start + static_cast<double>(k) * everySeconds);
-        }
-        const bool sampled = every || everySeconds > 0.0 || !timesArg.is_none();
+        const Sampling s = checkedSampling(sim().parameters(), std::string(sim().integrator().name()), sim().integratorOptions(),
+                                           m_sim->time(), m_columns.size(), durationArg, everyArg, timesArg, everySecondsArg);
+        const double duration = s.duration;
+        const long every = s.every;
+        const std::vector<double>& times = s.times;
+        const bool sampled = s.sampled;
         const auto dialect = simlab::csvDialectNamed(dialectName);
         if (!dialect) throw py::value_error(simlab::unknownCsvDialectMessage(dialectName));
         simlab::TimeSeriesFiles files{csvPath.is_none() ? "" : pathText(csvPath), *dialect,
@@ -422,23 +514,11 @@ public:
 
     // Every parameter of the scene, resolved (explicit or from the table).
     py::dict parameters() {
-        const simcore::ParameterSet& p = sim().parameters();
-        py::dict out;
-        for (const simcore::ParamSpec* spec : simcore::parametersFor(p.kind())) {
-            const double v = p.get(spec->id);
-            const std::string name = spec->choiceName(v);
-            if (name.empty()) out[py::str(std::string(spec->key))] = v;
-            else out[py::str(std::string(spec->key))] = name;
-        }
-        return out;
+        return parameterDict(sim().parameters());
     }
 
     py::dict integratorOptionsDict() const {
-        const simcore::IntegratorOptions& o = sim().integratorOptions();
-        return py::dict(py::arg("atol") = o.atol, py::arg("rtol") = o.rtol, py::arg("newton") = o.newtonIterations,
-                        py::arg("fixed_step") = o.fixedStep, py::arg("error_estimate") = o.stepDoubling,
-                        py::arg("min_step") = o.minStep, py::arg("max_step") = o.maxStep,
-                        py::arg("cg_tolerance") = o.cgTolerance, py::arg("cg_max_iterations") = o.cgMaxIterations);
+        return optionsDict(sim().integratorOptions());
     }
     void setIntegrator(const std::string& name, const py::object& options) {
         checkIntegrator(name);
@@ -518,6 +598,239 @@ private:
     std::atomic<bool> m_busy{false};
     std::atomic<double> m_time{0.0};
     std::atomic<long> m_steps{0};
+};
+
+// --- worlds: scenes of several bodies ----------------------------------------------------------
+
+// A value as `--set key=value` text: a name as given, a number as Python's shortest repr.
+std::string assignmentText(const py::handle& value, const std::string& key) {
+    if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+    return py::repr(py::float_(numberOf(value, key, "a number or a name"))).cast<std::string>();
+}
+
+void assignWorldValue(simcore::WorldSpec& spec, const std::string& assignment) {
+    if (auto error = simcore::assignWorld(spec, assignment)) throw py::value_error(*error);
+}
+
+// [x, y, z] (or [x, y] for the plane) as a vector.
+Eigen::Vector3d vectorOf(const py::handle& value, const std::string& key) {
+    const auto list = py::reinterpret_borrow<py::object>(value).cast<std::vector<py::object>>();
+    if (list.size() != 2 && list.size() != 3) throw py::value_error(key + ": expected (x, y) or (x, y, z)");
+    Eigen::Vector3d v = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < list.size(); ++k) v[static_cast<Eigen::Index>(k)] = numberOf(list[k], key);
+    return v;
+}
+
+// bodies=[{"kind": "sphere3d", "position": (x, y, z), "velocity": (...), "mass": 4, ...}, ...]:
+// each body's kind, start and own parameters, every refusal naming the body as bodyN.key.
+simcore::WorldSpec worldFromList(const std::string& name, const py::list& bodies) {
+    simcore::WorldSpec spec;
+    spec.name = name;
+    if (bodies.empty()) throw py::value_error("bodies: a world needs at least one body");
+    if (bodies.size() > static_cast<std::size_t>(simcore::kMaxBodies))
+        throw py::value_error("bodies: " + std::to_string(bodies.size()) + " bodies; at most " +
+                              std::to_string(simcore::kMaxBodies));
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+        const std::string label = "body" + std::to_string(k + 1);
+        if (!py::isinstance<py::dict>(bodies[k])) throw py::type_error(label + ": expected a dict with kind, position, velocity, parameters");
+        const auto body = bodies[k].cast<py::dict>();
+        if (!body.contains("kind")) throw py::value_error(label + ".kind: missing (ring2d, sphere3d, sphere3d-latlong)");
+        const std::string kind = py::str(body["kind"]).cast<std::string>();
+        const simcore::SceneInfo* info = simcore::findScene(kind);
+        if (!info || info->kind == simcore::SceneKind::Spring1d)
+            throw py::value_error(label + ".kind: unknown body kind " + simcore::quoteShort(kind) +
+                                  "; allowed: ring2d, sphere3d, sphere3d-latlong");
+        simcore::WorldBodySpec b;
+        b.params = simcore::ParameterSet(info->kind);
+        spec.bodies.push_back(b);
+    }
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+        const std::string prefix = "body" + std::to_string(k + 1) + ".";
+        for (const auto& [keyObject, value] : bodies[k].cast<py::dict>()) {
+            const std::string key = py::str(keyObject).cast<std::string>();
+            if (key == "kind") continue;
+            if (key == "position" || key == "velocity") {
+                const Eigen::Vector3d v = vectorOf(value, prefix + key);
+                for (int axis = 0; axis < 3; ++axis)
+                    assignWorldValue(spec, prefix + key + "_" + "xyz"[axis] + "=" + simlab::formatDouble(v[axis]));
+                continue;
+            }
+            assignWorldValue(spec, prefix + key + "=" + assignmentText(value, prefix + key));
+        }
+    }
+    return spec;
+}
+
+class PyWorld {
+public:
+    PyWorld(const py::object& scene, const py::object& bodies, const py::object& set, const py::object& integrator,
+            const py::object& options, const py::kwargs& parameters) {
+        // Through the front door, as `run` takes a scene: keywords set every body (as --set
+        // key=value), then set=["body2.mass=4", ...] one body; each key once.
+        const std::string name = scene.is_none() ? std::string("world") : pathText(scene);
+        simlab::SceneRequest request;
+        request.scene = name;
+        request.severalBodies = true;
+        for (const auto& [key, value] : parameters) {
+            const std::string k = py::str(key).cast<std::string>();
+            request.set.push_back(k + "=" + assignmentText(value, k));
+        }
+        if (!set.is_none())
+            for (const std::string& assignment : set.cast<std::vector<std::string>>()) request.set.push_back(assignment);
+        if (!integrator.is_none()) request.integrator = integrator.cast<std::string>();
+        simlab::SceneSetup setup;
+        if (!bodies.is_none()) {
+            setup = simlab::resolveWorld(worldFromList(name, bodies.cast<py::list>()), request);
+        } else if (simcore::findScene(name)) {
+            throw py::value_error(name + " is one body: elasticlab.Simulation takes it");
+        } else {
+            setup = simlab::resolveScene(request);
+            if (!setup.world) throw py::value_error(simlab::quoted(name, 200) + " holds one body: elasticlab.Simulation takes it");
+        }
+        build(*setup.world, setup.integrator, integratorOptions(options), setup.state);
+    }
+
+    static std::unique_ptr<PyWorld> fromState(const py::tuple& state) {
+        if (state.size() != 2) throw std::runtime_error("not a pickled elasticlab.World");
+        simlab::SceneFileResult read = simlab::parseSceneFile(state[0].cast<std::string>());
+        if (!read.file || !read.file->world) throw py::value_error(read.error);
+        auto self = std::unique_ptr<PyWorld>(new PyWorld());
+        self->build(*read.file->world, read.file->integrator, integratorOptions(state[1]), read.file->state);
+        return self;
+    }
+    py::tuple getState() const { return py::make_tuple(simlab::sceneFileText(world(), true), optionsDict()); }
+
+    const simcore::World& world() const {
+        if (m_busy.load(std::memory_order_acquire)) throw std::runtime_error("this World is being stepped by another thread");
+        return *m_world;
+    }
+
+    void step(const py::handle& count) {
+        const long n = static_cast<long>(checkedNumber(count, "n", 1, 1e12, false, true));
+        Busy busy(m_busy);
+        long done = 0;
+        inSlices([&] { return m_world->step() && ++done < n; });
+        raiseIfFailed(py::none());
+    }
+
+    // As Simulation.run (sampledRun).
+    py::object run(const py::handle& durationArg, const py::object& everyArg, const py::object& timesArg,
+                   const py::object& progress, const py::object& everySecondsArg) {
+        const Sampling s = checkedSampling(m_world->spec().bodies.front().params, std::string(m_world->integrator().name()),
+                                           m_world->integratorOptions(), m_world->time(), m_columns.size(), durationArg,
+                                           everyArg, timesArg, everySecondsArg);
+        Busy busy(m_busy);
+        py::object table = sampledRun(*m_world, m_columns, s, progress, [] {});
+        raiseIfFailed(table);
+        return table;
+    }
+
+    void reset() {
+        Busy busy(m_busy);
+        m_world->reset();
+    }
+
+    // A read-only N x 3 view of particles [first, first + count) of the positions or velocities.
+    py::array view(const py::object& owner, bool velocities, int first, int count) const {
+        const simcore::World& w = world();
+        const double* data = w.state().data() + (velocities ? 3 * Eigen::Index{w.particleCount()} : 0) + 3 * first;
+        py::array out(py::dtype::of<double>(), {static_cast<py::ssize_t>(count), py::ssize_t{3}},
+                      {static_cast<py::ssize_t>(3 * sizeof(double)), static_cast<py::ssize_t>(sizeof(double))}, data, owner);
+        out.attr("setflags")(py::arg("write") = false);
+        return out;
+    }
+
+    py::dict diagnostics() const {
+        py::dict out;
+        for (const simlab::WorldCsvColumn& c : m_columns) out[py::str(c.name)] = c.value(world().diagnostics());
+        return out;
+    }
+    std::vector<std::string> columns() const {
+        std::vector<std::string> names;
+        for (const simlab::WorldCsvColumn& c : m_columns) names.push_back(c.name);
+        return names;
+    }
+    py::object failure() const {
+        const simcore::World& w = world();
+        if (!w.failed()) return py::none();
+        return py::dict(py::arg("reason") = *w.failure(), py::arg("step") = w.failedStep(), py::arg("time") = w.failedTime());
+    }
+    void saveScene(const py::object& path) const {
+        const std::string text = simlab::sceneFileText(world(), true);
+        simlab::AtomicFile file(pathText(path));
+        if (!file.ok() || !file.write(text) || !file.commit()) throw py::value_error(file.error());
+    }
+    py::dict optionsDict() const {
+        return ::optionsDict(m_options);
+    }
+    std::string repr() const {
+        if (m_busy.load(std::memory_order_acquire)) return "<elasticlab.World '" + m_world->spec().name + "', stepping>";
+        char text[160];
+        std::snprintf(text, sizeof text, ", %d bodies, %d particles, step %ld, t = %g s%s>", m_world->bodyCount(),
+                      m_world->particleCount(), m_world->stepCount(), m_world->time(), m_world->failed() ? ", failed" : "");
+        return "<elasticlab.World '" + m_world->spec().name + "', " + std::string(m_world->integrator().name()) + text;
+    }
+
+private:
+    PyWorld() = default;
+    void build(const simcore::WorldSpec& spec, const std::string& integrator, const simcore::IntegratorOptions& options,
+               const std::optional<simlab::SceneFile::State>& state) {
+        try {
+            m_world = std::make_unique<simcore::World>(spec, integrator);
+        } catch (const std::invalid_argument& e) {
+            throw py::value_error(e.what());
+        }
+        m_options = options;
+        m_world->setIntegratorOptions(options);
+        if (state)
+            if (auto error = simlab::applyState(*m_world, *state)) throw py::value_error(*error);
+        m_columns = simlab::worldColumns(*m_world);
+    }
+    void raiseIfFailed(const py::object& rows) {
+        if (!m_world->failed()) return;
+        const std::string& reason = *m_world->failure();
+        char where[96];
+        std::snprintf(where, sizeof where, "simulation failed at step %ld, t = %g s: ", m_world->failedStep(),
+                      m_world->failedTime());
+        py::object e = g_simulationFailed(where + reason);
+        e.attr("reason") = reason;
+        e.attr("step") = m_world->failedStep();
+        e.attr("time") = m_world->failedTime();
+        e.attr("rows") = rows;
+        PyErr_SetObject(g_simulationFailed.ptr(), e.ptr());
+        throw py::error_already_set();
+    }
+
+    std::unique_ptr<simcore::World> m_world;
+    simcore::IntegratorOptions m_options;
+    std::vector<simlab::WorldCsvColumn> m_columns;
+    std::atomic<bool> m_busy{false};
+};
+
+// world.bodies[k]: a view of one body of a world (it keeps the world alive).
+struct PyWorldBody {
+    py::object owner;  // the PyWorld
+    int index = 0;     // from 0
+    const PyWorld& py() const { return owner.cast<const PyWorld&>(); }
+    const simcore::World& world() const { return py().world(); }
+
+    py::dict parameters() const {
+        return parameterDict(world().spec().bodies[static_cast<std::size_t>(index)].params);
+    }
+    py::dict diagnostics() const {
+        const simcore::BodyDiagnostics& b = world().diagnostics().bodies[static_cast<std::size_t>(index)];
+        auto vec = [](const Eigen::Vector3d& v) { return py::make_tuple(v.x(), v.y(), v.z()); };
+        return py::dict(py::arg("mass") = b.mass, py::arg("kinetic") = b.kinetic, py::arg("com") = vec(b.com),
+                        py::arg("velocity") = vec(b.velocity), py::arg("momentum") = vec(b.mass * b.velocity),
+                        py::arg("volume_inner") = b.volume[0], py::arg("volume_outer") = b.volume[1],
+                        py::arg("rest_volume_inner") = b.restVolume[0], py::arg("rest_volume_outer") = b.restVolume[1],
+                        py::arg("pressure_inner") = b.pressure[0], py::arg("pressure_outer") = b.pressure[1]);
+    }
+    py::array positions() const { return py().view(owner, false, world().firstParticle(index), world().bodyParticles(index)); }
+    py::array velocities() const { return py().view(owner, true, world().firstParticle(index), world().bodyParticles(index)); }
+    std::string kind() const {
+        return std::string(simcore::sceneInfo(world().spec().bodies[static_cast<std::size_t>(index)].params.kind()).name);
+    }
 };
 
 // --- studies -----------------------------------------------------------------------------------
@@ -976,6 +1289,89 @@ PYBIND11_MODULE(_core, m) {
         .def_property_readonly("dt", [](PySimulation& s) { return s.sim().dt(); }, "The step [s].")
         .def_property_readonly("particle_count", [](PySimulation& s) { return s.sim().particleCount(); })
         .def_property_readonly("spring_count", [](PySimulation& s) { return s.sim().topology().springCount(); });
+
+    m.def("world_scenes", [] {
+        std::vector<std::string> names;
+        for (const simcore::WorldSceneInfo& s : simcore::worldSceneTable()) names.emplace_back(s.name);
+        return names;
+    }, "The built-in scenes of several bodies (elasticlab.World).");
+
+    py::class_<PyWorldBody>(m, "WorldBody", "One body of a World: a view that follows the world as it steps.")
+        .def_property_readonly("number", [](const PyWorldBody& b) { return b.index + 1; },
+                               "The body's number as people count (body1, body2, ...: the CSV suffix and --set prefix).")
+        .def_property_readonly("kind", &PyWorldBody::kind, "ring2d, sphere3d or sphere3d-latlong.")
+        .def_property_readonly("positions", &PyWorldBody::positions, "Its particles' N x 3 positions [m] (read-only view).")
+        .def_property_readonly("velocities", &PyWorldBody::velocities, "Its particles' N x 3 velocities [m/s] (read-only view).")
+        .def_property_readonly("parameters", &PyWorldBody::parameters, "Its parameters, resolved (world ones included).")
+        .def_property_readonly("diagnostics", &PyWorldBody::diagnostics,
+                               "mass [kg], kinetic [J], com [m], velocity [m/s] and momentum of its centre of mass, "
+                               "volume and pressure per layer.")
+        .def_property_readonly("particle_count", [](const PyWorldBody& b) { return b.world().bodyParticles(b.index); })
+        .def_property_readonly("start_position", [](const PyWorldBody& b) {
+            const Eigen::Vector3d& p = b.world().spec().bodies[static_cast<std::size_t>(b.index)].position;
+            return py::make_tuple(p.x(), p.y(), p.z());
+        })
+        .def_property_readonly("start_velocity", [](const PyWorldBody& b) {
+            const Eigen::Vector3d& v = b.world().spec().bodies[static_cast<std::size_t>(b.index)].velocity;
+            return py::make_tuple(v.x(), v.y(), v.z());
+        })
+        .def("__repr__", [](const PyWorldBody& b) {
+            return "<elasticlab.WorldBody body" + std::to_string(b.index + 1) + " " + b.kind() + ", " +
+                   std::to_string(b.world().bodyParticles(b.index)) + " particles>";
+        });
+
+    py::class_<PyWorld>(m, "World", "Several two-layer bodies in one box, stepped as one ODE (simcore::World).")
+        .def(py::init<const py::object&, const py::object&, const py::object&, const py::object&, const py::object&,
+                      const py::kwargs&>(),
+             py::arg("scene") = py::none(), py::kw_only(), py::arg("bodies") = py::none(), py::arg("set") = py::none(),
+             py::arg("integrator") = py::none(), py::arg("options") = py::none(),
+             "World(scene=None, *, bodies=None, set=None, integrator=None, options=None, **parameters): a built-in "
+             "scene of several bodies (collide2d, collide3d, stack3d), a scene file of several bodies (.json, resumed "
+             "with its state), or bodies=[{'kind': 'sphere3d', 'position': (x, y, z), 'velocity': (...), 'mass': 4}, "
+             "...]; keyword parameters set every body (gravity=0, offset=0.5), set=['body2.mass=4'] one body, as the "
+             "CLI's --set.")
+        .def("__repr__", &PyWorld::repr)
+        .def("step", &PyWorld::step, py::arg("n") = 1, "Takes n steps (SimulationFailed when one fails).")
+        .def("run", &PyWorld::run, py::arg("duration"), py::arg("every") = py::none(), py::arg("times") = py::none(),
+             py::arg("progress") = py::none(), py::kw_only(), py::arg("every_seconds") = py::none(),
+             "As Simulation.run: rows every N steps or at the given times, columns as diagnostics_columns.")
+        .def("reset", &PyWorld::reset, "Back to the start state.")
+        .def("save_scene", &PyWorld::saveScene, py::arg("path"), "Writes the world and its exact state as a scene file.")
+        .def_property_readonly("bodies", [](const py::object& self) {
+            py::list out;
+            for (int k = 0; k < self.cast<const PyWorld&>().world().bodyCount(); ++k) out.append(PyWorldBody{self, k});
+            return out;
+        }, "The bodies, in order (bodies[0] is body1).")
+        .def_property_readonly("positions", [](const py::object& self) {
+            const PyWorld& w = self.cast<const PyWorld&>();
+            return w.view(self, false, 0, w.world().particleCount());
+        }, "Every particle's N x 3 positions [m], the bodies side by side (read-only view).")
+        .def_property_readonly("velocities", [](const py::object& self) {
+            const PyWorld& w = self.cast<const PyWorld&>();
+            return w.view(self, true, 0, w.world().particleCount());
+        })
+        .def_property_readonly("diagnostics", &PyWorld::diagnostics,
+                               "The CSV row as a dict: energies, ledger, per-body columns (suffix _N), momentum, min_gap.")
+        .def_property_readonly("diagnostics_columns", &PyWorld::columns)
+        .def_property_readonly("momentum", [](const PyWorld& w) {
+            const Eigen::Vector3d& p = w.world().diagnostics().momentum;
+            return py::make_tuple(p.x(), p.y(), p.z());
+        }, "Total linear momentum [kg m/s].")
+        .def_property_readonly("angular_momentum", [](const PyWorld& w) {
+            const Eigen::Vector3d& l = w.world().diagnostics().angularMomentum;
+            return py::make_tuple(l.x(), l.y(), l.z());
+        }, "Total angular momentum about the origin [kg m^2/s].")
+        .def_property_readonly("min_gap", [](const PyWorld& w) { return w.world().diagnostics().minGap; },
+                               "The smallest gap between two bodies' outer layers or non-adjacent elements of one [m].")
+        .def_property_readonly("failure", &PyWorld::failure)
+        .def_property_readonly("scene", [](const PyWorld& w) { return w.world().spec().name; })
+        .def_property_readonly("integrator", [](const PyWorld& w) { return std::string(w.world().integrator().name()); })
+        .def_property_readonly("integrator_options", &PyWorld::optionsDict)
+        .def_property_readonly("time", [](const PyWorld& w) { return w.world().time(); })
+        .def_property_readonly("step_count", [](const PyWorld& w) { return w.world().stepCount(); })
+        .def_property_readonly("dt", [](const PyWorld& w) { return w.world().dt(); })
+        .def_property_readonly("particle_count", [](const PyWorld& w) { return w.world().particleCount(); })
+        .def(py::pickle([](const PyWorld& w) { return w.getState(); }, &PyWorld::fromState));
 
     m.def("study", &study, py::arg("scene"), py::kw_only(),
           py::arg("integrators") = std::vector<std::string>{"euler", "midpoint", "rk4"},

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <sstream>
@@ -414,6 +415,28 @@ Eigen::Vector3d centroid(const Eigen::Matrix3Xd& positions) {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (Eigen::Index i = 0; i < positions.cols(); ++i) sum += positions.col(i);
     return sum / static_cast<double>(positions.cols());
+}
+
+int pickAlongRay(const std::vector<Layer>& layers, const double* x, const Eigen::Vector3d& origin,
+                 const Eigen::Vector3d& direction, double maxDistance) {
+    int best = -1;
+    double bestDistance = maxDistance, bestDepth = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+        if (layers[i] == Layer::Inner) continue;
+        const Eigen::Vector3d r = Eigen::Map<const Eigen::Vector3d>(x + 3 * i) - origin;
+        const double depth = r.dot(direction);
+        if (depth < 0.0) continue;
+        const double off = (r - depth * direction).norm();
+        // Within the pick radius the particle nearest the eye wins (the front surface).
+        if (off <= maxDistance && (depth < bestDepth - 1e-9 * (1.0 + depth))) {
+            if (best < 0 || off <= bestDistance || depth < bestDepth) {
+                best = static_cast<int>(i);
+                bestDepth = depth;
+                bestDistance = off;
+            }
+        }
+    }
+    return best;
 }
 
 }  // namespace simcore

@@ -79,6 +79,12 @@ struct Body {
     std::vector<bool> fixed;     // a fixed particle never moves (infinite mass)
 };
 
+// The outer-layer particle (or either 1D particle) of `x` (3 x N, `layers` per particle) nearest
+// a ray (origin, unit direction) within maxDistance of it; nearest the origin among those
+// (the front surface); -1 when none is. The mouse's pick, for one body or a world.
+int pickAlongRay(const std::vector<Layer>& layers, const double* x, const Eigen::Vector3d& origin,
+                 const Eigen::Vector3d& direction, double maxDistance);
+
 struct RingShape {
     int particles = 12;
     double radiusInner = 1.5;

@@ -9,6 +9,7 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/internal/body_ode.h"
+#include "simcore/internal/world_body.h"
 
 namespace simcore {
 
@@ -58,23 +59,13 @@ void Simulation::build() {
     ScaledBody scaled = buildScaledBody(m_params, m_p);
     m_body = std::move(scaled.body);
     m_scale = scaled.scale;
-    const Topology& topo = m_body.topology;
-    const int count = topo.particleCount();
-    m_n = 3 * count;
+    m_n = 3 * m_body.topology.particleCount();
     m_forces = ForceModel(&m_body.topology, &m_body.mass, sceneTerms(m_params.kind()));
     setThreads(m_threads);
     m_boxCentre = centroid(m_body.positions);
     m_forces.prepareContact(m_body.positions.data(), m_body.fixed);
 
-    m_invMass3.setZero(m_n);
-    for (int i = 0; i < count; ++i) {
-        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
-        const double inv = 1.0 / m_body.mass[i];
-        // 1D moves along y only (thesis 3.3: "restricted to one dimension"); 2D in the xy plane.
-        m_invMass3[3 * i + 1] = inv;
-        if (topo.dimension >= 2) m_invMass3[3 * i] = inv;
-        if (topo.dimension == 3) m_invMass3[3 * i + 2] = inv;
-    }
+    m_invMass3 = inverseMasses(m_body);
     applyForceParams();
     reset();
 }
@@ -92,56 +83,16 @@ void Simulation::setThreads(int threads) {
 }
 
 void Simulation::applyForceParams() {
-    ForceParams& p = m_forces.params;
-    // The per-spring values this resolution uses (scaling.h; all factors 1 under scaling=thesis
-    // and at the reference resolution).
-    const auto& f = m_scale.spring;
-    const Params::Forces& table = m_p.forces;
-    p.ks = {table.ks * f[0], 0.0, 0.0};
-    p.kd = {table.kd * f[0], 0.0, 0.0};
-    if (m_params.kind() != SceneKind::Spring1d) {
-        p.ks[1] = table.rks * f[1];
-        p.ks[2] = table.rks * f[2];
-        p.kd[1] = table.rkd * f[1];
-        p.kd[2] = table.rkd * f[2];
-        p.gasConstant = table.gasConstant;
-    }
-    const Params::World& world = m_p.world;
-    p.gravity = world.gravity;
-    p.mks = table.mks;
-    p.mkd = table.mkd;
-    p.mouseRest = table.mouseRest;
-    // Contact (contact.h): the walls per axis the body moves along, k, and alpha from e at
-    // the reference impact speed.
-    m_contactProjection = world.contact == ContactModel::Projection;
+    m_contactProjection =
+        configureForces(m_forces, m_params, m_p, m_scale, m_body.topology.dimension, m_boxCentre);
     m_ode->configure(m_contactProjection, m_p.time.substeps);
-    ContactParams& c = m_forces.contact;
-    c.walls = c.layerBarrier = !m_contactProjection;
-    c.stiffness = world.contactStiffness * m_scale.contact;
-    c.alpha = dampingForRestitution(world.restitution) / world.contactSpeed;
-    c.friction = world.friction;
-    c.frictionSpeed = world.frictionSpeed;
-    const int dims = m_body.topology.dimension;
-    for (int axis = 0; axis < 3; ++axis) {
-        const bool moves = axis == 1 || (axis == 0 && dims >= 2) || (axis == 2 && dims == 3);
-        const double infinity = std::numeric_limits<double>::infinity();
-        c.low[static_cast<std::size_t>(axis)] = moves ? m_boxCentre[axis] - world.box : -infinity;
-        c.high[static_cast<std::size_t>(axis)] = moves ? m_boxCentre[axis] + world.box : infinity;
-    }
 }
 
 void Simulation::reset() {
     const Eigen::Index n = m_n;
     m_y.setZero(2 * n + BodyOde::kAux);
     Eigen::Map<Eigen::Matrix3Xd>(m_y.data(), 3, particleCount()) = m_body.positions;
-    const double amplitude = m_p.start.perturb;
-    if (amplitude > 0.0) {
-        // Seeded, so a perturbed run is repeatable; only along the axes the body moves in.
-        std::mt19937_64 rng(m_p.start.seed);
-        std::uniform_real_distribution<double> uniform(-amplitude, amplitude);
-        for (Eigen::Index k = 0; k < n; ++k)
-            if (m_invMass3[k] != 0.0) m_y[k] += uniform(rng);
-    }
+    perturbStart(m_p.start, m_invMass3, m_y.data());
     m_integrator->prepare(m_ode->layout());
     m_hNext = m_hTaken = m_p.time.dt;
     // Held only while step doubling is on (the memory bound counts what a run holds).
@@ -661,26 +612,7 @@ int Simulation::nearestGrabbable(const Eigen::Vector3d& point) const {
 
 int Simulation::pickAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                              double maxDistance) const {
-    const auto& layers = m_body.topology.layer;
-    const auto x = positions();
-    int best = -1;
-    double bestDistance = maxDistance, bestDepth = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < particleCount(); ++i) {
-        if (layers[static_cast<std::size_t>(i)] == Layer::Inner) continue;
-        const Eigen::Vector3d r = x.col(i) - origin;
-        const double depth = r.dot(direction);
-        if (depth < 0.0) continue;
-        const double off = (r - depth * direction).norm();
-        // Within the pick radius the particle nearest the eye wins (the front surface).
-        if (off <= maxDistance && (depth < bestDepth - 1e-9 * (1.0 + depth))) {
-            if (best < 0 || off <= bestDistance || depth < bestDepth) {
-                best = i;
-                bestDepth = depth;
-                bestDistance = off;
-            }
-        }
-    }
-    return best;
+    return simcore::pickAlongRay(m_body.topology.layer, positions().data(), origin, direction, maxDistance);
 }
 
 void Simulation::grab(int particle, const Eigen::Vector3d& anchor) {

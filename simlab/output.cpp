@@ -336,23 +336,34 @@ std::string headerWithUnit(const CsvColumn& column) {
     return column.unit.empty() ? column.name : column.name + " [" + column.unit + "]";
 }
 
-std::string csvHeader(const std::vector<CsvColumn>& columns) {
+namespace {
+
+// A CSV header and row from columns of any diagnostics (one body's or a world's).
+template <class Column>
+std::string headerOf(const std::vector<Column>& columns) {
     std::string line;
-    for (const CsvColumn& c : columns) {
+    for (const Column& c : columns) {
         if (!line.empty()) line += ',';
         line += c.name;
     }
     return line + '\n';
 }
 
-std::string csvRow(const std::vector<CsvColumn>& columns, const Diagnostics& d) {
+template <class Column, class D>
+std::string rowOf(const std::vector<Column>& columns, const D& d) {
     std::string line;
-    for (const CsvColumn& c : columns) {
+    for (const Column& c : columns) {
         if (!line.empty()) line += ',';
         line += formatDouble(c.value(d));
     }
     return line + '\n';
 }
+
+}  // namespace
+
+std::string csvHeader(const std::vector<CsvColumn>& columns) { return headerOf(columns); }
+
+std::string csvRow(const std::vector<CsvColumn>& columns, const Diagnostics& d) { return rowOf(columns, d); }
 
 std::string stateTable(const Simulation& sim) {
     std::string text = "index,layer,x,y,z,vx,vy,vz\n";
@@ -405,6 +416,78 @@ std::optional<std::string> fileClash(const std::vector<std::pair<std::string, st
         seen.emplace_back(option, *id);
     }
     return std::nullopt;
+}
+
+std::vector<WorldCsvColumn> worldColumns(const simcore::World& world) {
+    using D = simcore::WorldDiagnostics;
+    const bool three = world.dimension() == 3;
+    std::vector<WorldCsvColumn> c = {
+        {"step", [](const D& d) { return static_cast<double>(d.step); }},
+        {"t", [](const D& d) { return d.time; }},
+        {"dt", [](const D& d) { return d.dt; }},
+        {"energy_kinetic", [](const D& d) { return d.kinetic; }},
+        {"energy_spring", [](const D& d) { return d.springTotal(); }},
+        {"energy_gravity", [](const D& d) { return d.gravity; }},
+        {"energy_gas", [](const D& d) { return d.gas; }},
+        {"energy_contact", [](const D& d) { return d.contact; }},
+        {"energy_contact_bodies", [](const D& d) { return d.contactPairs; }},
+        {"energy_total", [](const D& d) { return d.total(); }},
+        {"energy_removed", [](const D& d) { return d.removed(); }},
+        {"energy_removed_damping", [](const D& d) { return d.removedDamping; }},
+        {"energy_removed_contact", [](const D& d) { return d.removedContact; }},
+        {"energy_drift", [](const D& d) { return d.energyDrift(); }},
+        {"error_estimate", [](const D& d) { return d.errorEstimate; }},
+    };
+    const std::array<const char*, 3> axes = {"x", "y", "z"};
+    for (int k = 0; k < world.bodyCount(); ++k) {
+        const auto b = static_cast<std::size_t>(k);
+        const std::string n = "_" + std::to_string(k + 1);
+        for (std::size_t slot = 0; slot < 2; ++slot) {
+            const std::string layer = slot == 0 ? "inner" : "outer";
+            c.push_back({"volume_" + layer + n, [b, slot](const D& d) { return d.bodies[b].volume[slot]; }});
+        }
+        for (std::size_t slot = 0; slot < 2; ++slot) {
+            const std::string layer = slot == 0 ? "inner" : "outer";
+            c.push_back({"pressure_" + layer + n, [b, slot](const D& d) { return d.bodies[b].pressure[slot]; }});
+        }
+        for (int a = 0; a < (three ? 3 : 2); ++a)
+            c.push_back({std::string("com_") + axes[static_cast<std::size_t>(a)] + n,
+                         [b, a](const D& d) { return d.bodies[b].com[a]; }});
+        for (int a = 0; a < (three ? 3 : 2); ++a)
+            c.push_back({std::string("velocity_") + axes[static_cast<std::size_t>(a)] + n,
+                         [b, a](const D& d) { return d.bodies[b].velocity[a]; }});
+    }
+    for (int a = 0; a < (three ? 3 : 2); ++a)
+        c.push_back({std::string("momentum_") + axes[static_cast<std::size_t>(a)], [a](const D& d) { return d.momentum[a]; }});
+    for (int a = three ? 0 : 2; a < 3; ++a)
+        c.push_back({std::string("angular_momentum_") + axes[static_cast<std::size_t>(a)],
+                     [a](const D& d) { return d.angularMomentum[a]; }});
+    c.push_back({"min_gap", [](const D& d) { return d.minGap; }});
+    return c;
+}
+
+std::string csvHeader(const std::vector<WorldCsvColumn>& columns) { return headerOf(columns); }
+
+std::string csvRow(const std::vector<WorldCsvColumn>& columns, const simcore::WorldDiagnostics& d) { return rowOf(columns, d); }
+
+std::string stateTable(const simcore::World& world) {
+    std::string text = "index,body,layer,x,y,z,vx,vy,vz\n";
+    for (int k = 0; k < world.bodyCount(); ++k) {
+        const auto x = world.positions(k);
+        const auto v = world.velocities(k);
+        const auto& layers = world.body(k).topology.layer;
+        for (int i = 0; i < world.bodyParticles(k); ++i) {
+            text += std::to_string(i);
+            text += ',';
+            text += std::to_string(k + 1);
+            text += ',';
+            text += layerName(layers[static_cast<std::size_t>(i)]);
+            for (int a = 0; a < 3; ++a) (text += ',') += formatDouble(x(a, i));
+            for (int a = 0; a < 3; ++a) (text += ',') += formatDouble(v(a, i));
+            text += '\n';
+        }
+    }
+    return text;
 }
 
 }  // namespace simlab

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 
 namespace simlab {
 
@@ -120,5 +121,23 @@ std::string formatDouble(double value);
 
 // index,layer,x,y,z,vx,vy,vz: one row per particle.
 std::string stateTable(const simcore::Simulation& sim);
+
+// The time series of a world of several bodies (simcore/world.h): step, t, dt, the energies of
+// the whole world and its ledger, the error estimate; then per body N (from 1) volume_inner_N,
+// volume_outer_N, pressure_inner_N, pressure_outer_N, com_x_N, com_y_N[, com_z_N],
+// velocity_x_N, velocity_y_N[, velocity_z_N] (the centre of mass and its velocity; z only in
+// 3D); then momentum_x, momentum_y[, momentum_z], angular_momentum_z (3D: _x, _y, _z) and
+// min_gap, the smallest distance between two bodies' outer surfaces or two non-adjacent
+// elements of one [m] (exact up to simcore::World::gapRange()).
+struct WorldCsvColumn {
+    std::string name;
+    std::function<double(const simcore::WorldDiagnostics&)> value;
+};
+std::vector<WorldCsvColumn> worldColumns(const simcore::World& world);
+std::string csvHeader(const std::vector<WorldCsvColumn>& columns);
+std::string csvRow(const std::vector<WorldCsvColumn>& columns, const simcore::WorldDiagnostics& d);
+// index,body,layer,x,y,z,vx,vy,vz: one row per particle, the body numbered from 1 and the
+// index the particle's within its body.
+std::string stateTable(const simcore::World& world);
 
 }  // namespace simlab

@@ -10,6 +10,7 @@
 #include "simcore/body.h"
 #include "simcore/integrator_table.h"
 #include "simcore/scenes.h"
+#include "simcore/world.h"
 #include "simlab/conservation.h"
 #include "simlab/output.h"
 #include "simlab/refinement.h"
@@ -63,6 +64,49 @@ std::string sceneFileOf(const std::string& scene) {
     return !simcore::findScene(scene) && file ? scene : std::string();
 }
 
+namespace {
+
+std::optional<std::string> prefixed(const std::string& prefix, std::optional<std::string> error) {
+    if (error) return prefix + *error;
+    return error;
+}
+
+std::string severalBodiesMessage(const std::string& scene) {
+    return quoted(scene, 200) + " is a scene of several bodies: `run`, `params`, the window and elasticlab.World take "
+                                "it; this command studies one body (" + simcore::sceneNames() + ")";
+}
+
+// Each assignment key=value, each key once (a key given twice is a mistake, as in a scene file:
+// neither value is picked silently), dt given once; returns the keys given.
+std::set<std::string> checkAssignments(const SceneRequest& request) {
+    std::set<std::string> given;
+    for (const std::string& assignment : request.set) {
+        const auto eq = assignment.find('=');
+        if (eq == std::string::npos || eq == 0) refuse("--set: expected key=value, got " + quoted(assignment));
+        const std::string key = assignment.substr(0, eq);
+        if (!given.insert(key).second) refuse("--set " + quoted(key) + " is given twice; give each parameter once");
+    }
+    if (request.dt && given.contains("dt")) refuse("--dt and --set dt both give the step; give it once");
+    return given;
+}
+
+}  // namespace
+
+SceneSetup resolveWorld(simcore::WorldSpec spec, const SceneRequest& request, SceneSetup setup) {
+    checkAssignments(request);
+    // bodyN.key=value sets body N, key=value every body (so one-body settings read as before).
+    for (const std::string& assignment : request.set) refuseIf(prefixed("--set ", simcore::assignWorld(spec, assignment)));
+    if (request.dt) refuseIf(prefixed("--", simcore::assignWorld(spec, "dt=" + *request.dt)));
+    refuseIf(simcore::validateWorld(spec));
+    const std::string fileIntegrator = setup.file ? setup.file->integrator : std::string();
+    setup.integrator = request.integrator.value_or(fileIntegrator.empty() ? "rk4" : fileIntegrator);
+    refuseIf(simcore::unknownIntegrator(setup.integrator));
+    if (setup.sceneName.empty() || !setup.file) setup.sceneName = spec.name;
+    setup.params = spec.bodies.front().params;  // the world's shared values (dt, gravity, box) as body 1 has them
+    setup.world = std::move(spec);
+    return setup;
+}
+
 SceneSetup resolveScene(const SceneRequest& request) {
     SceneSetup setup;
     setup.sceneName = request.scene;
@@ -78,25 +122,24 @@ SceneSetup resolveScene(const SceneRequest& request) {
         fileIntegrator = read.file->integrator;
         setup.state = read.file->state;
         setup.file = std::move(read.file);
+        if (setup.file->world) {
+            if (!request.severalBodies) refuse(severalBodiesMessage(request.scene));
+            simcore::WorldSpec spec = *setup.file->world;
+            return resolveWorld(std::move(spec), request, std::move(setup));
+        }
     } else if (const simcore::SceneInfo* scene = simcore::findScene(request.scene)) {
         setup.params = request.base && request.base->kind() == scene->kind ? *request.base : simcore::ParameterSet(scene->kind);
+    } else if (auto world = request.baseWorld ? request.baseWorld : simcore::worldScene(request.scene)) {
+        if (!request.severalBodies) refuse(severalBodiesMessage(request.scene));
+        return resolveWorld(std::move(*world), request, std::move(setup));
     } else {
         refuse(simcore::unknownSceneMessage(request.scene) + ", or a scene file (.json)");
     }
-    // A key given twice is a mistake, as in a scene file: neither value is picked silently.
-    std::set<std::string> given;
-    for (const std::string& assignment : request.set) {
-        const auto eq = assignment.find('=');
-        if (eq == std::string::npos || eq == 0)
-            refuse("--set: expected key=value, got " + quoted(assignment));
-        const std::string key = assignment.substr(0, eq);
-        if (!given.insert(key).second) refuse("--set " + quoted(key) + " is given twice; give each parameter once");
+    const std::set<std::string> given = checkAssignments(request);
+    for (const std::string& assignment : request.set)
         if (auto error = setup.params.assign(assignment)) refuse("--set " + *error);
-    }
-    if (request.dt) {
-        if (given.contains("dt")) refuse("--dt and --set dt both give the step; give it once");
+    if (request.dt)
         if (auto error = setup.params.setFromText("dt", *request.dt)) refuse("--" + *error);
-    }
     setup.integrator = request.integrator.value_or(fileIntegrator.empty() ? "rk4" : fileIntegrator);
     refuseIf(simcore::unknownIntegrator(setup.integrator));
     refuseIf(simcore::validateShape(setup.params, setup.integrator));

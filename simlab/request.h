@@ -22,6 +22,7 @@
 
 #include "simcore/integrators.h"
 #include "simcore/params.h"
+#include "simcore/world.h"
 #include "simlab/bounds.h"
 #include "simlab/scenefile.h"
 
@@ -54,6 +55,12 @@ struct SceneRequest {
     std::optional<std::string> integrator;  // default: the scene file's, else rk4
     // The values a built-in scene starts from (the GUI's presets): the scene's defaults if unset.
     std::optional<simcore::ParameterSet> base;
+    // The door takes scenes of several bodies (`run`, `params`, the GUI, Python's World); where
+    // it does not, such a scene is refused in the words every door uses.
+    bool severalBodies = false;
+    // The bodies a scene of several bodies starts from (the GUI's world presets), in place of
+    // the scene's own.
+    std::optional<simcore::WorldSpec> baseWorld;
 };
 
 struct SceneSetup {
@@ -63,12 +70,20 @@ struct SceneSetup {
     std::string integrator = "rk4";
     std::optional<SceneFile::State> state;  // from a scene file that saved one
     std::optional<SceneFile> file;          // the scene file as read (before the overrides)
+    // A scene of several bodies (only where the request takes them): every body with the
+    // assignments applied; `params` then holds body 1's values (dt, gravity and the box are
+    // the world's, the same in every body).
+    std::optional<simcore::WorldSpec> world;
 };
 
 // The scene file a scene argument names, or empty when it names a built-in scene.
 std::string sceneFileOf(const std::string& scene);
 // Resolves and checks the scene (table ranges, shape, the integrator and its memory).
 SceneSetup resolveScene(const SceneRequest& request);
+// A scene of several bodies: `spec` with the request's assignments (bodyN.key=value sets body N,
+// key=value every body; each key once), dt and integrator, checked as a whole (bodies apart and
+// inside the box, at most kMaxBodies). `setup` carries what resolveScene read of a file.
+SceneSetup resolveWorld(simcore::WorldSpec spec, const SceneRequest& request, SceneSetup setup = SceneSetup());
 
 // Side by side (the GUI's --compare): one to three integrators, each known, listed once, and
 // each lane's memory with its integrator within the limit.

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 #include <map>
 #include <set>
@@ -104,6 +105,162 @@ int lineOfKey(const std::string& text, const std::string& key, int occurrence) {
 struct TooLarge {
     std::string what;
 };
+// One value of a "parameters" object into `set`: a number, or a choice by its name ("contact":
+// "projection"). The message starts with `where` and the key.
+std::optional<std::string> readParameter(const std::string& key, const Json& value, const std::string& where,
+                                         ParameterSet& set) {
+    const ParamSpec* spec = findParam(key);
+    if (value.is_string() && spec && !spec->choices.empty()) {
+        if (auto error = set.setFromText(key, value.get<std::string>())) return where + *error;
+        return std::nullopt;
+    }
+    if (!value.is_number())
+        return where + quoteShort(key) + ": expected a number, got " + std::string(value.type_name());
+    if (auto error = set.set(key, value.get<double>())) return where + *error;
+    return std::nullopt;
+}
+
+std::optional<std::string> readParameters(const Json& params, const std::string& where, ParameterSet& set) {
+    if (!params.is_object()) return where + " expected an object of key: number";
+    for (auto it = params.begin(); it != params.end(); ++it)
+        if (auto error = readParameter(it.key(), it.value(), where, set)) return error;
+    return std::nullopt;
+}
+
+// [x, y, z] of finite numbers.
+std::optional<std::string> readVector(const Json& value, const std::string& where, Eigen::Vector3d& out) {
+    if (!value.is_array() || value.size() != 3) return where + ": expected [x, y, z]";
+    for (std::size_t k = 0; k < 3; ++k) {
+        if (!value[k].is_number() || !std::isfinite(value[k].get<double>()) || std::abs(value[k].get<double>()) > 1e6)
+            return where + ": expected finite numbers within +-1e6";
+        out[static_cast<Eigen::Index>(k)] = value[k].get<double>();
+    }
+    return std::nullopt;
+}
+
+std::string bodyLabel(std::size_t k) { return "body" + std::to_string(k + 1); }
+
+// One entry of "bodies": kind, position, velocity, its own parameters (over `common`: the
+// top-level ones). World parameters belong at the top.
+std::optional<std::string> readBody(const Json& entry, std::size_t k, const Json* common, simcore::WorldBodySpec& body) {
+    const std::string name = bodyLabel(k);
+    if (!entry.is_object()) return name + ": expected an object with kind, position, velocity, parameters";
+    if (auto error = onlyKeys(entry, name, {"kind", "position", "velocity", "parameters"})) return error;
+    if (!entry.contains("kind") || !entry["kind"].is_string()) return name + ".kind: expected a body kind (ring2d, sphere3d, sphere3d-latlong)";
+    const std::string kind = entry["kind"].get<std::string>();
+    const SceneInfo* scene = findScene(kind);
+    if (!scene || scene->kind == simcore::SceneKind::Spring1d)
+        return name + ".kind: unknown body kind " + quoteShort(kind) + "; allowed: ring2d, sphere3d, sphere3d-latlong";
+    body.params = ParameterSet(scene->kind);
+    // The top-level values first (those this kind has), then the body's own.
+    if (common)
+        for (auto it = common->begin(); it != common->end(); ++it)
+            if (const ParamSpec* spec = findParam(it.key()); spec && body.params.has(spec->id))
+                if (auto error = readParameter(it.key(), it.value(), "parameters.", body.params)) return error;
+    if (entry.contains("parameters")) {
+        const Json& own = entry["parameters"];
+        if (!own.is_object()) return name + ".parameters: expected an object of key: number";
+        for (auto it = own.begin(); it != own.end(); ++it) {
+            const ParamSpec* spec = findParam(it.key());
+            if (spec && simcore::isWorldParameter(spec->id))
+                return name + "." + it.key() + ": a world parameter, shared by every body; give it in the top-level "
+                                               "parameters";
+            if (!spec || !body.params.has(spec->id))
+                return name + "." + quoteShort(it.key()) + ": " + *ParameterSet(body.params.kind()).set(it.key(), 0.0);
+            if (auto error = readParameter(it.key(), it.value(), name + ".", body.params)) return error;
+        }
+    }
+    if (entry.contains("position"))
+        if (auto error = readVector(entry["position"], name + ".position", body.position)) return error;
+    if (entry.contains("velocity"))
+        if (auto error = readVector(entry["velocity"], name + ".velocity", body.velocity)) return error;
+    if (scene->kind == simcore::SceneKind::Ring2d && (body.position.z() != 0.0 || body.velocity.z() != 0.0))
+        return name + ".position/velocity: a 2D body moves in the xy plane (z stays 0)";
+    return std::nullopt;
+}
+
+// state.step, state.time, state.next_step.
+std::optional<std::string> readClock(const Json& state, SceneFile::State& s) {
+    if (state.contains("step")) {
+        // 64 bits, and room left to run on: a step count near 2^63 would overflow.
+        const Json& step = state["step"];
+        if (!step.is_number_integer() || (step.is_number_unsigned() ? step.get<std::uint64_t>() > kMaxSavedStep
+                                                                    : step.get<std::int64_t>() < 0))
+            return "state.step: expected a whole number in [0, " + std::to_string(kMaxSavedStep) + "]";
+        s.step = static_cast<long>(step.get<std::int64_t>());
+    }
+    if (state.contains("time")) {
+        if (!state["time"].is_number() || !std::isfinite(state["time"].get<double>()) || state["time"].get<double>() < 0)
+            return std::string("state.time: expected a finite number >= 0");
+        s.time = state["time"].get<double>();
+    }
+    if (state.contains("next_step")) {
+        const Json& h = state["next_step"];
+        if (!h.is_number() || !std::isfinite(h.get<double>()) || !(h.get<double>() > 0.0))
+            return std::string("state.next_step: expected a finite number > 0 (seconds)");
+        s.nextStep = h.get<double>();
+    }
+    return std::nullopt;
+}
+
+// "state" of a world: step, time, next_step and each body's positions and velocities.
+std::optional<std::string> readWorldState(const Json& state, const simcore::WorldSpec& spec, SceneFile::State& s);
+
+// A scene of several bodies (version 4): a built-in one by name, or the bodies listed.
+SceneFileResult parseWorldJson(const Json& root, SceneFile file) {
+    if (file.sceneName.empty() || file.sceneName.size() > 64)
+        return failure("scene: a name of 1 to 64 characters");
+    if (root.contains("integrator")) {
+        if (!root["integrator"].is_string()) return failure("integrator: expected a name");
+        file.integrator = root["integrator"].get<std::string>();
+        if (!makeIntegrator(file.integrator))
+            return failure("integrator: unknown '" + file.integrator + "'; allowed: " + integratorNames());
+    }
+    const Json* common = nullptr;
+    if (root.contains("parameters")) {
+        common = &root["parameters"];
+        if (!common->is_object()) return failure("parameters: expected an object of key: number");
+    }
+    simcore::WorldSpec spec;
+    spec.name = file.sceneName;
+    if (root.contains("bodies")) {
+        const Json& bodies = root["bodies"];
+        if (!bodies.is_array() || bodies.empty()) return failure("bodies: expected a list of at least one body");
+        if (bodies.size() > static_cast<std::size_t>(simcore::kMaxBodies))
+            return failure("bodies: " + std::to_string(bodies.size()) + " bodies; at most " +
+                           std::to_string(simcore::kMaxBodies));
+        for (std::size_t k = 0; k < bodies.size(); ++k) {
+            simcore::WorldBodySpec body;
+            if (auto error = readBody(bodies[k], k, common, body)) return failure(*error);
+            spec.bodies.push_back(std::move(body));
+        }
+    } else {
+        spec = *simcore::worldScene(file.sceneName);
+        if (common)
+            for (auto& body : spec.bodies)
+                for (auto it = common->begin(); it != common->end(); ++it)
+                    if (auto error = readParameter(it.key(), it.value(), "parameters.", body.params)) return failure(*error);
+    }
+    // A top-level key no body has (or a typo) is refused, as the one-body reader does.
+    if (common)
+        for (auto it = common->begin(); it != common->end(); ++it) {
+            const ParamSpec* param = findParam(it.key());
+            const bool someBody = param && std::any_of(spec.bodies.begin(), spec.bodies.end(), [&](const auto& b) {
+                                      return b.params.has(param->id);
+                                  });
+            if (!someBody)
+                return failure("parameters." + quoteShort(it.key()) + ": no body of this scene has it");
+        }
+    if (auto error = simcore::validateWorld(spec)) return failure(*error);
+    if (root.contains("state")) {
+        SceneFile::State s;
+        if (auto error = readWorldState(root["state"], spec, s)) return failure(*error);
+        file.state = std::move(s);
+    }
+    file.params = spec.bodies.front().params;
+    file.world = std::move(spec);
+    return {std::move(file), {}};
+}
 
 // Everything but the exception boundary (parseSceneFile).
 SceneFileResult parseSceneJson(const std::string& text) {
@@ -150,7 +307,7 @@ SceneFileResult parseSceneJson(const std::string& text) {
         return failure(std::string("not a readable scene file: ") + e.what());
     }
     if (!root.is_object()) return failure("a scene file must be a JSON object");
-    if (auto error = onlyKeys(root, "the file", {"format", "version", "scene", "integrator", "parameters", "state"}))
+    if (auto error = onlyKeys(root, "the file", {"format", "version", "scene", "integrator", "parameters", "bodies", "state"}))
         return failure(*error);
     if (!root.contains("format") || root["format"] != "elastic-lab-scene")
         return failure("format: expected \"elastic-lab-scene\"");
@@ -158,15 +315,21 @@ SceneFileResult parseSceneJson(const std::string& text) {
         return failure("version: expected a whole number");
     // Read as 64 bits (2^32 + 2 is not version 2), unsigned ones above 2^63 too.
     const Json& v = root["version"];
-    if (v.is_number_unsigned() ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(kSceneFormatVersion)
-                               : v.get<std::int64_t>() > kSceneFormatVersion)
+    if (v.is_number_unsigned() ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(kWorldSceneFormatVersion)
+                               : v.get<std::int64_t>() > kWorldSceneFormatVersion)
         return failure("version " + v.dump() + " is newer than this program reads (up to " +
-                       std::to_string(kSceneFormatVersion) + "); update Elastic Lab");
+                       std::to_string(kWorldSceneFormatVersion) + "); update Elastic Lab");
     const int version = static_cast<int>(v.get<std::int64_t>());
     if (version < 1) return failure("version: must be 1 or more");
     if (!root.contains("scene") || !root["scene"].is_string()) return failure("scene: expected a scene name");
     SceneFile file;
     file.sceneName = root["scene"].get<std::string>();
+    if (root.contains("bodies") || simcore::worldScene(file.sceneName)) {
+        if (version < kWorldSceneFormatVersion)
+            return failure("bodies: scenes of several bodies came with version " +
+                           std::to_string(kWorldSceneFormatVersion) + "; this file says version " + std::to_string(version));
+        return parseWorldJson(root, std::move(file));
+    }
     const SceneInfo* scene = findScene(file.sceneName);
     if (!scene) return failure("scene: unknown scene " + quoteShort(file.sceneName) + "; allowed: " + sceneNames());
     file.params = ParameterSet(scene->kind);
@@ -176,23 +339,8 @@ SceneFileResult parseSceneJson(const std::string& text) {
         if (!makeIntegrator(file.integrator))
             return failure("integrator: unknown " + quoteShort(file.integrator) + "; allowed: " + integratorNames());
     }
-    if (root.contains("parameters")) {
-        const Json& params = root["parameters"];
-        if (!params.is_object()) return failure("parameters: expected an object of key: number");
-        for (auto it = params.begin(); it != params.end(); ++it) {
-            // A choice parameter may also be given by name ("contact": "projection").
-            const ParamSpec* spec = findParam(it.key());
-            if (it.value().is_string() && spec && !spec->choices.empty()) {
-                if (auto error = file.params.setFromText(it.key(), it.value().get<std::string>()))
-                    return failure("parameters." + *error);
-                continue;
-            }
-            if (!it.value().is_number())
-                return failure("parameters." + quoteShort(it.key()) + ": expected a number, got " + std::string(it.value().type_name()));
-            if (auto error = file.params.set(it.key(), it.value().get<double>()))
-                return failure("parameters." + *error);
-        }
-    }
+    if (root.contains("parameters"))
+        if (auto error = readParameters(root["parameters"], "parameters.", file.params)) return failure(*error);
     // Version 3 added `scaling` (scaling.h). Every earlier file lists per-particle and per-spring
     // values and ran them as such: it loads as scaling=thesis, so it runs the body it saved.
     if (version < 3 && !file.params.isExplicit(Param::Scaling) && file.params.has(Param::Scaling))
@@ -204,25 +352,7 @@ SceneFileResult parseSceneJson(const std::string& text) {
         if (auto error = onlyKeys(state, "state", {"step", "time", "next_step", "positions", "velocities"}))
             return failure(*error);
         SceneFile::State s;
-        if (state.contains("step")) {
-            // 64 bits, and room left to run on: a step count near 2^63 would overflow.
-            const Json& step = state["step"];
-            if (!step.is_number_integer() || (step.is_number_unsigned() ? step.get<std::uint64_t>() > kMaxSavedStep
-                                                                        : step.get<std::int64_t>() < 0))
-                return failure("state.step: expected a whole number in [0, " + std::to_string(kMaxSavedStep) + "]");
-            s.step = static_cast<long>(step.get<std::int64_t>());
-        }
-        if (state.contains("time")) {
-            if (!state["time"].is_number() || !std::isfinite(state["time"].get<double>()) || state["time"].get<double>() < 0)
-                return failure("state.time: expected a finite number >= 0");
-            s.time = state["time"].get<double>();
-        }
-        if (state.contains("next_step")) {
-            const Json& h = state["next_step"];
-            if (!h.is_number() || !std::isfinite(h.get<double>()) || !(h.get<double>() > 0.0))
-                return failure("state.next_step: expected a finite number > 0 (seconds)");
-            s.nextStep = h.get<double>();
-        }
+        if (auto error = readClock(state, s)) return failure(*error);
         // The particle count follows from the shape (counted, not built).
         const auto count = static_cast<int>(bodySize(file.params).particles);
         if (!state.contains("positions") || !state.contains("velocities"))
@@ -232,6 +362,36 @@ SceneFileResult parseSceneJson(const std::string& text) {
         file.state = std::move(s);
     }
     return {std::move(file), {}};
+}
+
+
+std::optional<std::string> readWorldState(const Json& state, const simcore::WorldSpec& spec, SceneFile::State& s) {
+    if (!state.is_object()) return std::string("state: expected an object");
+    if (auto error = onlyKeys(state, "state", {"step", "time", "next_step", "bodies"})) return error;
+    if (auto error = readClock(state, s)) return error;
+    if (!state.contains("bodies") || !state["bodies"].is_array() || state["bodies"].size() != spec.bodies.size())
+        return "state.bodies: expected one entry per body (" + std::to_string(spec.bodies.size()) + ")";
+    int total = 0;
+    for (const auto& b : spec.bodies) total += static_cast<int>(bodySize(b.params).particles);
+    s.positions.resize(3, total);
+    s.velocities.resize(3, total);
+    int first = 0;
+    for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+        const Json& entry = state["bodies"][k];
+        const std::string name = bodyLabel(k);
+        if (!entry.is_object()) return "state." + name + ": expected an object with positions and velocities";
+        if (auto error = onlyKeys(entry, "state." + name, {"positions", "velocities"})) return error;
+        if (!entry.contains("positions") || !entry.contains("velocities"))
+            return "state." + name + ": needs both positions and velocities";
+        const auto count = static_cast<int>(bodySize(spec.bodies[k].params).particles);
+        Eigen::Matrix3Xd x, v;
+        if (auto error = readVectors(entry["positions"], name + ".positions", count, x)) return error;
+        if (auto error = readVectors(entry["velocities"], name + ".velocities", count, v)) return error;
+        s.positions.middleCols(first, count) = x;
+        s.velocities.middleCols(first, count) = v;
+        first += count;
+    }
+    return std::nullopt;
 }
 
 }  // namespace
@@ -337,7 +497,91 @@ void writeHead(std::ostream& os, const std::string& sceneName, std::string_view 
     os << "\n  }";
 }
 
+// A world's text: the first body's world parameters at the top, each body's own below (all of
+// them, or only those set explicitly), then the state if any.
+void writeWorld(std::ostream& os, const simcore::WorldSpec& spec, std::string_view integrator, bool all,
+                const SceneFile::State* state, std::optional<double> nextStep) {
+    const auto chosen = [all](const ParameterSet& set, bool world) {
+        std::vector<std::pair<const ParamSpec*, double>> values;
+        for (const ParamSpec* p : parametersFor(set.kind()))
+            if (simcore::isWorldParameter(p->id) == world && (all || set.isExplicit(p->id)))
+                values.emplace_back(p, set.get(p->id));
+        return values;
+    };
+    const auto object = [&os](const std::vector<std::pair<const ParamSpec*, double>>& values, const char* indent) {
+        os << "{";
+        bool first = true;
+        for (const auto& [param, value] : values) {
+            os << (first ? "\n" : ",\n") << indent << "  \"" << param->key << "\": ";
+            if (param->choices.empty()) os << formatDouble(value);
+            else os << '"' << param->choiceName(value) << '"';
+            first = false;
+        }
+        os << "\n" << indent << "}";
+    };
+    const auto vector = [&os](const Eigen::Vector3d& v) {
+        os << "[" << formatDouble(v.x()) << ", " << formatDouble(v.y()) << ", " << formatDouble(v.z()) << "]";
+    };
+    os << "{\n  \"format\": \"elastic-lab-scene\",\n  \"version\": " << kWorldSceneFormatVersion << ",\n"
+       << "  \"scene\": \"" << spec.name << "\",\n  \"integrator\": \"" << integrator << "\",\n  \"parameters\": ";
+    object(chosen(spec.bodies.front().params, true), "  ");
+    os << ",\n  \"bodies\": [";
+    for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+        const simcore::WorldBodySpec& b = spec.bodies[k];
+        os << (k ? ",\n" : "\n") << "    {\n      \"kind\": \"" << simcore::sceneInfo(b.params.kind()).name
+           << "\",\n      \"position\": ";
+        vector(b.position);
+        os << ",\n      \"velocity\": ";
+        vector(b.velocity);
+        os << ",\n      \"parameters\": ";
+        object(chosen(b.params, false), "      ");
+        os << "\n    }";
+    }
+    os << "\n  ]";
+    if (state) {
+        os << ",\n  \"state\": {\n    \"step\": " << state->step << ",\n    \"time\": " << formatDouble(state->time);
+        if (nextStep) os << ",\n    \"next_step\": " << formatDouble(*nextStep);
+        os << ",\n    \"bodies\": [";
+        Eigen::Index first = 0;
+        for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+            const auto count = static_cast<Eigen::Index>(bodySize(spec.bodies[k].params).particles);
+            os << (k ? ",\n" : "\n") << "      {";
+            std::ostringstream xv;
+            writeVectors(xv, "positions", state->positions.middleCols(first, count));
+            writeVectors(xv, "velocities", state->velocities.middleCols(first, count));
+            os << xv.str().substr(1) << "\n      }";  // without writeVectors' first comma
+            first += count;
+        }
+        os << "\n    ]\n  }";
+    }
+    os << "\n}\n";
+}
+
 }  // namespace
+
+std::string sceneFileText(const simcore::World& world, bool withState) {
+    std::ostringstream os;
+    std::optional<SceneFile::State> state;
+    if (withState) {
+        state.emplace();
+        state->step = world.stepCount();
+        state->time = world.time();
+        state->positions = Eigen::Map<const Eigen::Matrix3Xd>(world.state().data(), 3, world.particleCount());
+        state->velocities =
+            Eigen::Map<const Eigen::Matrix3Xd>(world.state().data() + 3 * world.particleCount(), 3, world.particleCount());
+    }
+    std::optional<double> next;
+    if (withState && world.integrator().adaptive()) next = world.nextStep();
+    writeWorld(os, world.spec(), world.integrator().name(), true, state ? &*state : nullptr, next);
+    return os.str();
+}
+
+std::optional<std::string> applyState(simcore::World& world, const SceneFile::State& state) {
+    if (state.positions.cols() != world.particleCount()) return std::string("state does not fit the world");
+    world.setState(state.positions, state.velocities, state.step, state.time);
+    if (state.nextStep) world.setNextStep(*state.nextStep);
+    return std::nullopt;
+}
 
 std::string sceneFileText(const Simulation& sim, const std::string& sceneName, bool withState) {
     std::vector<std::pair<const ParamSpec*, double>> values;
@@ -356,6 +600,12 @@ std::string sceneFileText(const Simulation& sim, const std::string& sceneName, b
 }
 
 std::string sceneFileText(const SceneFile& file) {
+    if (file.world) {
+        std::ostringstream os;
+        writeWorld(os, *file.world, file.integrator, false, file.state ? &*file.state : nullptr,
+                   file.state ? file.state->nextStep : std::nullopt);
+        return os.str();
+    }
     std::vector<std::pair<const ParamSpec*, double>> values;
     for (const auto& [id, value] : file.params.explicitValues()) values.emplace_back(&paramSpec(id), value);
     std::ostringstream os;

@@ -15,6 +15,23 @@
 // earlier version loads as scaling=thesis, the per-particle body it was saved with.
 //   }
 //
+// Version 4 added scenes of several bodies (a world, simcore/world.h); a one-body file is still
+// written as version 3, so earlier programs read it:
+//
+//   { "format": "elastic-lab-scene", "version": 4,
+//     "scene": "collide3d", "integrator": "rk4",
+//     "parameters": { "gravity": 0, "box": 10, ... },       (every body: world parameters, and
+//                                                           body parameters given to all)
+//     "bodies": [ { "kind": "sphere3d", "position": [x, y, z], "velocity": [vx, vy, vz],
+//                   "parameters": { "mass": 4, ... } },    (this body's own; they override)
+//                 ... ],
+//     "state": { "step": 410, "time": 1.23, "next_step": 0.0021,   (optional)
+//                "bodies": [ { "positions": [[x, y, z], ...], "velocities": [...] }, ... ] } }
+//
+// Without "bodies" a world scene's name (collide2d, ...) loads that scene as built in. Every
+// refusal of a body's entry names the body as people count and the key: "body3.kind: ...",
+// "body2.mass: ...", "body1.gravity: a world parameter ...".
+//
 // Reading validates everything through the parameter table: unknown keys (at any level),
 // wrong types, out-of-range values and a newer format version are refused with a message that
 // names the key and, for syntax errors, the line.
@@ -27,6 +44,7 @@
 #include <Eigen/Core>
 
 #include "simcore/params.h"
+#include "simcore/world.h"
 
 namespace simcore {
 class Simulation;
@@ -34,7 +52,8 @@ class Simulation;
 
 namespace simlab {
 
-inline constexpr int kSceneFormatVersion = 3;
+inline constexpr int kSceneFormatVersion = 3;       // written for one body
+inline constexpr int kWorldSceneFormatVersion = 4;  // written for several; the newest read
 
 struct SceneFile {
     std::string sceneName;
@@ -44,10 +63,13 @@ struct SceneFile {
         long step = 0;
         double time = 0.0;
         std::optional<double> nextStep;  // adaptive integrators: the step they proposed [s]
-        Eigen::Matrix3Xd positions;
+        Eigen::Matrix3Xd positions;   // a world: every body's particles side by side (world numbering)
         Eigen::Matrix3Xd velocities;
     };
     std::optional<State> state;
+    // A scene of several bodies: its bodies, each with its parameters, start position and
+    // velocity (then `params` is the first body's, for what only reads the world's values).
+    std::optional<simcore::WorldSpec> world;
 };
 
 struct SceneFileResult {
@@ -82,5 +104,10 @@ std::string sceneFileText(const simcore::Simulation& sim, const std::string& sce
 std::string sceneFileText(const SceneFile& file);
 // Restores a saved state into a simulation built from the same file; error text or nothing.
 std::optional<std::string> applyState(simcore::Simulation& sim, const SceneFile::State& state);
+
+// The JSON text of a world: every parameter (the world's at the top, each body's own under it),
+// with its exact state when withState.
+std::string sceneFileText(const simcore::World& world, bool withState);
+std::optional<std::string> applyState(simcore::World& world, const SceneFile::State& state);
 
 }  // namespace simlab

@@ -17,6 +17,7 @@
 #include "simcore/parallel.h"
 #include "simcore/params.h"
 #include "simcore/scenes.h"
+#include "simcore/world.h"
 
 namespace {
 
@@ -30,6 +31,12 @@ QList<QStringList> readCsv(const QString& path) {
     for (const QByteArray& line : f.readAll().split('\n'))
         if (!line.isEmpty()) rows << QString::fromUtf8(line).split(',');
     return rows;
+}
+
+QStringList readLines(const QString& path) {
+    QStringList lines;
+    for (const QStringList& row : readCsv(path)) lines << row.join(',');
+    return lines;
 }
 
 // Whether process pid holds a file open under folder (an unnamed O_TMPFILE output shows there
@@ -64,8 +71,8 @@ private slots:
         const Result r = cli({"scenes"});
         QCOMPARE(r.code, 0);
         const QStringList lines = r.out.trimmed().split('\n');
-        QCOMPARE(lines.size(), int(simcore::sceneTable().size()));
-        for (const char* name : {"spring1d", "ring2d", "sphere3d", "sphere3d-latlong"}) {
+        QCOMPARE(lines.size(), int(simcore::sceneTable().size() + simcore::worldSceneTable().size()));
+        for (const char* name : {"spring1d", "ring2d", "sphere3d", "sphere3d-latlong", "collide2d", "collide3d", "stack3d"}) {
             bool found = false;
             for (const QString& line : lines) found |= line.split(' ').first() == name;
             QVERIFY2(found, name);
@@ -142,6 +149,25 @@ private slots:
         QTest::newRow("unknown command") << QStringList{"fly"} << "fly";
         QTest::newRow("unknown kernels") << QStringList{"bench", "--kernels", "sse9"} << "sse9";
         QTest::newRow("crossed radii") << QStringList{"run", "--set", "radius_inner=3"} << "radius_inner";
+        // Scenes of several bodies (issue 26): one line naming the body and the key.
+        QTest::newRow("a body the scene has not") << QStringList{"run", "--scene", "collide3d", "--set", "body3.mass=2"}
+                                                  << "body3.mass: the scene has 2 bodies";
+        QTest::newRow("a world key for one body") << QStringList{"run", "--scene", "collide2d", "--set", "body2.gravity=0"}
+                                                  << "body2.gravity";
+        QTest::newRow("a key a body has not") << QStringList{"run", "--scene", "collide3d", "--set", "body1.particles=8"}
+                                              << "body1";
+        QTest::newRow("a body out of range") << QStringList{"run", "--scene", "collide3d", "--set", "body2.mass=-1"}
+                                             << "body2: mass";
+        QTest::newRow("bodies overlapping") << QStringList{"run", "--scene", "collide3d", "--set", "body2.position_x=-2"}
+                                            << "bodies 1 and 2 overlap at the start";
+        QTest::newRow("a body outside the box") << QStringList{"run", "--scene", "stack3d", "--set", "body3.position_y=6"}
+                                                << "body3 sticks out of the box";
+        QTest::newRow("a world for one-body commands") << QStringList{"study", "--scene", "collide2d"}
+                                                       << "'collide2d' is a scene of several bodies";
+        QTest::newRow("more bodies than allowed")
+            << QStringList{"run", "--scene", QFINDTESTDATA("data/world-17-bodies.json")} << "at most 16";
+        QTest::newRow("an unknown body kind")
+            << QStringList{"run", "--scene", QFINDTESTDATA("data/world-unknown-kind.json")} << "body2.kind: unknown body kind 'torus'";
         QTest::newRow("beyond the memory limit")
             << QStringList{"run", "--scene", "sphere3d-latlong", "--set", "slices=1024", "--set", "stacks=512"}
             << "limit is 1 GiB";
@@ -288,6 +314,77 @@ private slots:
         // Without --stages: no stage columns.
         const Result plain = cli({"bench", "--scene", "ring2d", "--steps", "3", "--header"});
         QCOMPARE(plain.out.split('\n').first().split(',').last(), QString("kernels"));
+    }
+    // A scene of several bodies (issue 26): per-body columns with the body's number, the total
+    // momentum and min_gap; z columns only in 3D; the state table's body column; params lists
+    // the world's values and each body's.
+    void worldCsvHasPerBodyColumns() {
+        const QString csv = path("world.csv"), state = path("world-state.csv");
+        const Result r = cli({"run", "--scene", "collide2d", "--set", "gravity=0", "--set", "body2.mass=4", "--duration",
+                              "0.05", "--csv", csv, "--state", state});
+        QVERIFY2(r.code == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains("2 bodies"));
+        const QStringList header = readLines(csv).value(0).split(',');
+        for (const char* column : {"volume_outer_1", "volume_inner_2", "pressure_outer_2", "com_x_1", "com_y_2",
+                                   "velocity_x_2", "momentum_x", "momentum_y", "angular_momentum_z", "min_gap",
+                                   "energy_total", "energy_drift"})
+            QVERIFY2(header.contains(column), column);
+        QVERIFY(!header.contains("com_z_1"));  // 2D
+        QVERIFY(!header.contains("momentum_z"));
+        const QStringList rows = readLines(csv);
+        QCOMPARE(rows.size(), 1 + 1 + 17);  // header, start, 17 steps of 0.003 s
+        const QStringList last = rows.last().split(',');
+        QCOMPARE(last.size(), header.size());
+        // Body 2 is four times as heavy: its centre moves at -2 m/s, so momentum is 24*2 - 96*2.
+        QVERIFY(std::abs(last[header.indexOf("momentum_x")].toDouble() - (24.0 * 2 - 96.0 * 2)) < 1e-9);
+        QCOMPARE(readLines(state).value(0), QString("index,body,layer,x,y,z,vx,vy,vz"));
+        QVERIFY(readLines(state).value(1).startsWith("0,1,inner,"));
+        QVERIFY(readLines(state).last().contains(",2,outer,"));
+
+        const Result three = cli({"run", "--scene", "collide3d", "--duration", "0.01", "--csv", path("w3.csv"), "--quiet"});
+        QVERIFY2(three.code == 0, qPrintable(three.err));
+        const QStringList header3 = readLines(path("w3.csv")).value(0).split(',');
+        for (const char* column : {"com_z_1", "velocity_z_2", "momentum_z", "angular_momentum_x"})
+            QVERIFY2(header3.contains(column), column);
+
+        const Result params = cli({"params", "--scene", "collide3d", "--set", "body2.mass=4", "--set", "offset=1"});
+        QVERIFY2(params.code == 0, qPrintable(params.err));
+        QVERIFY(params.out.contains("body1: sphere3d"));
+        QVERIFY(params.out.contains("body2: sphere3d"));
+        QVERIFY(params.out.contains("(3, 0.5, 0) m"));  // body 2's start, offset across the line
+    }
+    // A scene file of several bodies: --save-scene writes the world with its exact state, and a
+    // run from it continues the trajectory bit for bit (the state tables of 0.06 s straight and
+    // of 0.03 s + 0.03 s from the file are the same text).
+    void worldSceneFileResumesExactly() {
+        const QStringList common = {"--set", "gravity=0", "--set", "body2.mass=4", "--set", "offset=0.5",
+                                    "--integrator", "rk4", "--quiet"};
+        QCOMPARE(cli(QStringList{"run", "--scene", "collide2d", "--duration", "0.06", "--state", path("straight.csv")} +
+                     common).code, 0);
+        const QString saved = path("half.json");
+        QCOMPARE(cli(QStringList{"run", "--scene", "collide2d", "--duration", "0.03", "--save-scene", saved} + common)
+                     .code, 0);
+        QFile file(saved);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray text = file.readAll();
+        QVERIFY(text.contains("\"version\": 4"));
+        QVERIFY(text.contains("\"bodies\": ["));
+        const Result resumed = cli({"run", "--scene", saved, "--duration", "0.03", "--state", path("resumed.csv"),
+                                    "--quiet"});
+        QVERIFY2(resumed.code == 0, qPrintable(resumed.err));
+        QCOMPARE(readLines(path("resumed.csv")), readLines(path("straight.csv")));
+        // A one-body command refuses it by what it is.
+        const Result study = cli({"study", "--scene", saved});
+        QCOMPARE(study.code, 2);
+        QVERIFY2(study.err.contains("a scene of several bodies"), qPrintable(study.err));
+    }
+    // Bodies thrown too fast for a fixed step: the run ends with exit 3 naming both bodies.
+    void worldIntersectionExitsWithThree() {
+        const Result r = cli({"run", "--scene", "collide2d", "--set", "gravity=0", "--dt", "0.01", "--integrator", "euler",
+                              "--set", "body1.velocity_x=60", "--set", "body2.velocity_x=-60", "--duration", "0.5",
+                              "--quiet"});
+        QCOMPARE(r.code, 3);
+        QVERIFY2(r.err.contains("simulation failed at step"), qPrintable(r.err));
     }
     void failedRunExitsWithThreeAndKeepsGoodRows() {
         const QString csv = path("fail.csv"), state = path("fail-state.csv");

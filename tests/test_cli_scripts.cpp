@@ -1,5 +1,7 @@
 // The command line for scripts (issue 29): `--json` on scenes, params, integrators and run, and
 // `--csv -` writing the rows to standard output with the report moved to standard error.
+#include <cmath>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -27,10 +29,27 @@ private slots:
         const CliResult scenes = runCli({"scenes", "--json"});
         QCOMPARE(scenes.code, 0);
         const QJsonArray s = json(scenes.out).array();
-        QCOMPARE(s.size(), 4);
+        QCOMPARE(s.size(), 7);  // four of one body, three of several
         QCOMPARE(s[0].toObject()["name"].toString(), QString("spring1d"));
         QCOMPARE(s[0].toObject()["gas"].toBool(), false);
         QCOMPARE(s[1].toObject()["gas"].toBool(), true);
+        QVERIFY(!s[3].toObject().contains("bodies"));
+        QCOMPARE(s[4].toObject()["name"].toString(), QString("collide2d"));
+        QCOMPARE(s[4].toObject()["bodies"].toInt(), 2);
+        QCOMPARE(s[6].toObject()["name"].toString(), QString("stack3d"));
+        QCOMPARE(s[6].toObject()["bodies"].toInt(), 3);
+
+        // A scene of several bodies: the world's values and each body's, after --set.
+        const CliResult world = runCli({"params", "--scene", "collide3d", "--set", "body2.mass=4", "--set",
+                                        "gravity=0", "--json"});
+        QCOMPARE(world.code, 0);
+        const QJsonObject w = json(world.out).object();
+        QCOMPARE(w["world"].toObject()["gravity"].toDouble(), 0.0);
+        QCOMPARE(w["bodies"].toArray().size(), 2);
+        QCOMPARE(w["bodies"][0].toObject()["mass"].toDouble(), 1.0);
+        QCOMPARE(w["bodies"][1].toObject()["mass"].toDouble(), 4.0);
+        QCOMPARE(w["bodies"][1].toObject()["kind"].toString(), QString("sphere3d"));
+        QVERIFY(!w["bodies"][1].toObject().contains("gravity"));
 
         const CliResult integrators = runCli({"integrators", "--json"});
         QCOMPARE(integrators.code, 0);
@@ -76,6 +95,21 @@ private slots:
         const QJsonObject f = json(failed.out).object();
         QCOMPARE(f["status"].toString(), QString("failed"));
         QVERIFY(!f["failure"].toObject()["reason"].toString().isEmpty());
+
+        // A scene of several bodies: the totals, min_gap and each body.
+        const CliResult w = runCli({"run", "--scene", "collide2d", "--set", "gravity=0", "--set", "body2.mass=4",
+                                    "--duration", "0.03", "--json"});
+        QCOMPARE(w.code, 0);
+        const QJsonObject wo = json(w.out).object();
+        QCOMPARE(wo["scene"].toString(), QString("collide2d"));
+        QCOMPARE(wo["status"].toString(), QString("ok"));
+        QCOMPARE(wo["bodies"].toArray().size(), 2);
+        // mass is per particle: 24 particles of 1 kg and of 4 kg.
+        QCOMPARE(wo["bodies"][0].toObject()["mass"].toDouble(), 24.0);
+        QCOMPARE(wo["bodies"][1].toObject()["mass"].toDouble(), 96.0);
+        // Body 1 moves at +2 m/s, body 2 at -2 m/s: p_x = 24*2 - 96*2 = -144 kg m/s.
+        QVERIFY(std::abs(wo["momentum"][0].toDouble() + 144.0) < 1e-9);
+        QVERIFY(wo["min_gap"].toDouble() > 0.0);
     }
 
     void csvDashWritesTheRowsToStandardOutput() {

@@ -951,7 +951,7 @@ private slots:
 #endif
         MainWindow window(false);
         QVERIFY(window.energyBarsDock()->isHidden() && window.pvDock()->isHidden());
-        QCOMPARE(MainWindow::dockNames(), (QStringList{"energy-bars", "pv", "stability-map", "timeline", "lesson"}));
+        QCOMPARE(MainWindow::dockNames(), (QStringList{"energy-bars", "pv", "stability-map", "timeline", "lesson", "bodies"}));
         window.show();
         QVERIFY(window.openDock("energy-bars") && window.openDock("pv"));
         QVERIFY(!window.openDock("no-such-dock") && !window.openDock("timeline-map"));

@@ -29,6 +29,7 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/stability.h"
 #include "simlab/conservation.h"
 #include "test_support.h"
@@ -75,7 +76,9 @@ QMap<QString, QMap<QString, std::function<double()>>> measurements() {
 bool waitForLesson(MainWindow& w, const Lesson& l) {
     return testsupport::waitUntil([&] {
         const FramePtr f = w.controller()->latest();
-        return f && f->parameters == l.preset.parameters() && int(f->lanes.size()) == l.preset.integrators.size();
+        return f && f->parameters == l.preset.parameters() && int(f->lanes.size()) == l.preset.integrators.size() &&
+               (f->world != nullptr) == l.preset.world().has_value() &&
+               (!f->worldSpec || f->worldSpec->bodies.size() == l.preset.world()->bodies.size());
     });
 }
 
@@ -94,8 +97,15 @@ private slots:
             QCOMPARE(findLesson(l.id)->title, l.title);
             QVERIFY(!l.preset.integrators.isEmpty() && l.preset.integrators.size() <= 3);
             // Valid presets: the scene exists, every value passes the parameter table.
-            QVERIFY2(simcore::findScene(l.preset.scene.toStdString()), qPrintable(l.id));
-            ParameterSet p(simcore::findScene(l.preset.scene.toStdString())->kind);
+            if (l.preset.world()) {  // a scene of several bodies: its --set, checked
+                simcore::WorldSpec spec = *simcore::worldScene(l.preset.scene.toStdString());
+                for (const QString& a : l.preset.worldSet)
+                    QVERIFY2(!simcore::assignWorld(spec, a.toStdString()), qPrintable(l.id + ": " + a));
+                QVERIFY2(!simcore::validateWorld(spec), qPrintable(l.id));
+                QCOMPARE(l.preset.integrators.size(), 1);  // a world runs alone
+            }
+            QVERIFY2(simcore::findScene(l.preset.scene.toStdString()) || l.preset.world(), qPrintable(l.id));
+            ParameterSet p(l.preset.parameters().kind());
             for (const auto& [id, value] : l.preset.values) {
                 const auto error = p.set(id, value);
                 QVERIFY2(!error, qPrintable(l.id + ": " + QString::fromUtf8(simcore::paramSpec(id).key.data()) + ": " +

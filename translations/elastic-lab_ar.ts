@@ -439,6 +439,149 @@
         <source>layers&apos; separation</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>9. Two balloons collide: momentum and energy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>10. A soft stack: how the bottom body carries the others</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>elui::BodiesDock</name>
+    <message>
+        <source>Bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The bodies of the scene, total momentum and the smallest gap, with their curves against simulated time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This dock is for scenes of several bodies: Presets &gt; Several bodies, or a scene file of several bodies.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mass [kg]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centre [m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>velocity [m/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>volume in/out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pressure in/out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Total momentum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>min_gap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Volume per body and layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pressure per body and layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>momentum [kg m/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gap [m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>volume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation type="unfinished">t [s]</translation>
+    </message>
+    <message>
+        <source>ring2d: particles per layer; sphere3d: subdivisions; sphere3d-latlong: slices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kind, level</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>where [m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>how fast [m/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove selected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inner</source>
+        <translation type="unfinished">داخلية</translation>
+    </message>
+    <message>
+        <source>outer</source>
+        <translation type="unfinished">خارجية</translation>
+    </message>
+    <message>
+        <source> (body%1 with itself)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (body%1 and body%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>beyond %1 m (nothing that close)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;momentum&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;angular momentum&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;contact between bodies&lt;/b&gt; %4 J, %5 pairs in the skin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a body in the list first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A world keeps at least one body.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>elui::CompareDialog</name>
@@ -1369,6 +1512,34 @@ Plots, parameters and exports still work.</source>
         <source>Plot the layers&apos; separation</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Several &amp;bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: several bodies. The Bodies dock shows momentum and min_gap; Parameters has a body selector. Press Run (Space).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Work-precision studies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refinement studies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stability scans</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Long-time energy studies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV (per-body columns, momentum, min_gap), and the Bodies dock its curves.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>elui::MeasurePlotDock</name>
@@ -1432,6 +1603,18 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The body whose parameters are shown and edited; world parameters (gravity, box, contact, dt) are every body&apos;s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every body</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2246,6 +2429,10 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>The body or the integrator changed during the measurement: press Try it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The stability map is for scenes of one body: a world of several bodies has the modes of every body and of their contact, which the map does not compute yet. Its largest stable DT is found by trying: Run with a larger DT until a step fails.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -439,6 +439,149 @@
         <source>layers&apos; separation</source>
         <translation>Abstand der Schichten</translation>
     </message>
+    <message>
+        <source>9. Two balloons collide: momentum and energy</source>
+        <translation>9. Zwei Ballons stoßen zusammen: Impuls und Energie</translation>
+    </message>
+    <message>
+        <source>10. A soft stack: how the bottom body carries the others</source>
+        <translation>10. Ein weicher Stapel: wie der unterste Körper die anderen trägt</translation>
+    </message>
+</context>
+<context>
+    <name>elui::BodiesDock</name>
+    <message>
+        <source>Bodies</source>
+        <translation>Körper</translation>
+    </message>
+    <message>
+        <source>The bodies of the scene, total momentum and the smallest gap, with their curves against simulated time</source>
+        <translation>Die Körper der Szene, Gesamtimpuls und kleinster Abstand, mit ihren Kurven über der simulierten Zeit</translation>
+    </message>
+    <message>
+        <source>This dock is for scenes of several bodies: Presets &gt; Several bodies, or a scene file of several bodies.</source>
+        <translation>Dieses Dock ist für Szenen mit mehreren Körpern: Voreinstellungen &gt; Mehrere Körper, oder eine Szenendatei mit mehreren Körpern.</translation>
+    </message>
+    <message>
+        <source>body</source>
+        <translation>Körper</translation>
+    </message>
+    <message>
+        <source>mass [kg]</source>
+        <translation>Masse [kg]</translation>
+    </message>
+    <message>
+        <source>centre [m]</source>
+        <translation>Mittelpunkt [m]</translation>
+    </message>
+    <message>
+        <source>velocity [m/s]</source>
+        <translation>Geschwindigkeit [m/s]</translation>
+    </message>
+    <message>
+        <source>volume in/out</source>
+        <translation>Volumen innen/außen</translation>
+    </message>
+    <message>
+        <source>pressure in/out</source>
+        <translation>Druck innen/außen</translation>
+    </message>
+    <message>
+        <source>Total momentum</source>
+        <translation>Gesamtimpuls</translation>
+    </message>
+    <message>
+        <source>min_gap</source>
+        <translation>min_gap</translation>
+    </message>
+    <message>
+        <source>Volume per body and layer</source>
+        <translation>Volumen je Körper und Schicht</translation>
+    </message>
+    <message>
+        <source>Pressure per body and layer</source>
+        <translation>Druck je Körper und Schicht</translation>
+    </message>
+    <message>
+        <source>momentum [kg m/s]</source>
+        <translation>Impuls [kg m/s]</translation>
+    </message>
+    <message>
+        <source>gap [m]</source>
+        <translation>Abstand [m]</translation>
+    </message>
+    <message>
+        <source>volume</source>
+        <translation>Volumen</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>Druck</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>ring2d: particles per layer; sphere3d: subdivisions; sphere3d-latlong: slices</source>
+        <translation>ring2d: Teilchen je Schicht; sphere3d: Unterteilungen; sphere3d-latlong: Scheiben</translation>
+    </message>
+    <message>
+        <source>kind, level</source>
+        <translation>Art, Stufe</translation>
+    </message>
+    <message>
+        <source>where [m]</source>
+        <translation>wo [m]</translation>
+    </message>
+    <message>
+        <source>how fast [m/s]</source>
+        <translation>wie schnell [m/s]</translation>
+    </message>
+    <message>
+        <source>Add body</source>
+        <translation>Körper hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove selected</source>
+        <translation>Auswahl entfernen</translation>
+    </message>
+    <message>
+        <source>inner</source>
+        <translation>innen</translation>
+    </message>
+    <message>
+        <source>outer</source>
+        <translation>außen</translation>
+    </message>
+    <message>
+        <source> (body%1 with itself)</source>
+        <translation> (body%1 mit sich selbst)</translation>
+    </message>
+    <message>
+        <source> (body%1 and body%2)</source>
+        <translation> (body%1 und body%2)</translation>
+    </message>
+    <message>
+        <source>beyond %1 m (nothing that close)</source>
+        <translation>über %1 m (nichts so nah)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;momentum&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;angular momentum&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;contact between bodies&lt;/b&gt; %4 J, %5 pairs in the skin</source>
+        <translation>&lt;b&gt;Impuls&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;Drehimpuls&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;Kontakt zwischen Körpern&lt;/b&gt; %4 J, %5 Paare in der Hautschicht</translation>
+    </message>
+    <message>
+        <source>%1: not a number</source>
+        <translation>%1: keine Zahl</translation>
+    </message>
+    <message>
+        <source>Choose a body in the list first.</source>
+        <translation>Wählen Sie zuerst einen Körper in der Liste.</translation>
+    </message>
+    <message>
+        <source>A world keeps at least one body.</source>
+        <translation>Eine Welt behält mindestens einen Körper.</translation>
+    </message>
 </context>
 <context>
     <name>elui::CompareDialog</name>
@@ -1371,6 +1514,34 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <source>Plot the layers&apos; separation</source>
         <translation>Den Abstand der Schichten zeichnen</translation>
     </message>
+    <message>
+        <source>Several &amp;bodies</source>
+        <translation>Mehrere &amp;Körper</translation>
+    </message>
+    <message>
+        <source>%1: several bodies. The Bodies dock shows momentum and min_gap; Parameters has a body selector. Press Run (Space).</source>
+        <translation>%1: mehrere Körper. Das Dock „Körper“ zeigt Impuls und min_gap; „Parameter“ hat eine Körperauswahl. Drücken Sie Start (Leertaste).</translation>
+    </message>
+    <message>
+        <source>Work-precision studies</source>
+        <translation>Aufwand-Genauigkeits-Studien</translation>
+    </message>
+    <message>
+        <source>Refinement studies</source>
+        <translation>Verfeinerungsstudien</translation>
+    </message>
+    <message>
+        <source>Stability scans</source>
+        <translation>Stabilitätsabtastungen</translation>
+    </message>
+    <message>
+        <source>Long-time energy studies</source>
+        <translation>Langzeit-Energiestudien</translation>
+    </message>
+    <message>
+        <source>%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV (per-body columns, momentum, min_gap), and the Bodies dock its curves.</source>
+        <translation>%1 sind für Szenen mit einem Körper. Für eine Szene mit mehreren Körpern liefert elastic-lab-cli run die CSV (Spalten je Körper, Impuls, min_gap) und das Dock „Körper“ die Kurven.</translation>
+    </message>
 </context>
 <context>
     <name>elui::MeasurePlotDock</name>
@@ -1435,6 +1606,18 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     <message>
         <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
         <translation>Jeder Parameter hier (und DT) zurück auf den Standardwert der Szene; die Form des Körpers bleibt (Szene-Dock).</translation>
+    </message>
+    <message>
+        <source>The body whose parameters are shown and edited; world parameters (gravity, box, contact, dt) are every body&apos;s.</source>
+        <translation>Der Körper, dessen Parameter gezeigt und bearbeitet werden; Weltparameter (Schwerkraft, Kasten, Kontakt, dt) gelten für jeden Körper.</translation>
+    </message>
+    <message>
+        <source>body%1 (%2)</source>
+        <translation>body%1 (%2)</translation>
+    </message>
+    <message>
+        <source>every body</source>
+        <translation>jeder Körper</translation>
     </message>
 </context>
 <context>
@@ -2250,6 +2433,10 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     <message>
         <source>The body or the integrator changed during the measurement: press Try it again.</source>
         <translation>Körper oder Integrator haben sich während der Messung geändert: drücken Sie erneut Ausprobieren.</translation>
+    </message>
+    <message>
+        <source>The stability map is for scenes of one body: a world of several bodies has the modes of every body and of their contact, which the map does not compute yet. Its largest stable DT is found by trying: Run with a larger DT until a step fails.</source>
+        <translation>Die Stabilitätskarte ist für Szenen mit einem Körper: Eine Welt aus mehreren Körpern hat die Moden jedes Körpers und ihres Kontakts, die die Karte noch nicht berechnet. Ihr größtes stabiles DT findet man durch Probieren: mit größerem DT laufen lassen, bis ein Schritt scheitert.</translation>
     </message>
 </context>
 <context>

@@ -439,6 +439,149 @@
         <source>layers&apos; separation</source>
         <translation>separación de las capas</translation>
     </message>
+    <message>
+        <source>9. Two balloons collide: momentum and energy</source>
+        <translation>9. Dos globos chocan: cantidad de movimiento y energía</translation>
+    </message>
+    <message>
+        <source>10. A soft stack: how the bottom body carries the others</source>
+        <translation>10. Una pila blanda: cómo el cuerpo de abajo sostiene a los demás</translation>
+    </message>
+</context>
+<context>
+    <name>elui::BodiesDock</name>
+    <message>
+        <source>Bodies</source>
+        <translation>Cuerpos</translation>
+    </message>
+    <message>
+        <source>The bodies of the scene, total momentum and the smallest gap, with their curves against simulated time</source>
+        <translation>Los cuerpos de la escena, la cantidad de movimiento total y la menor separación, con sus curvas frente al tiempo simulado</translation>
+    </message>
+    <message>
+        <source>This dock is for scenes of several bodies: Presets &gt; Several bodies, or a scene file of several bodies.</source>
+        <translation>Este panel es para escenas de varios cuerpos: Ajustes predefinidos &gt; Varios cuerpos, o un archivo de escena de varios cuerpos.</translation>
+    </message>
+    <message>
+        <source>body</source>
+        <translation>cuerpo</translation>
+    </message>
+    <message>
+        <source>mass [kg]</source>
+        <translation>masa [kg]</translation>
+    </message>
+    <message>
+        <source>centre [m]</source>
+        <translation>centro [m]</translation>
+    </message>
+    <message>
+        <source>velocity [m/s]</source>
+        <translation>velocidad [m/s]</translation>
+    </message>
+    <message>
+        <source>volume in/out</source>
+        <translation>volumen int./ext.</translation>
+    </message>
+    <message>
+        <source>pressure in/out</source>
+        <translation>presión int./ext.</translation>
+    </message>
+    <message>
+        <source>Total momentum</source>
+        <translation>Cantidad de movimiento total</translation>
+    </message>
+    <message>
+        <source>min_gap</source>
+        <translation>min_gap</translation>
+    </message>
+    <message>
+        <source>Volume per body and layer</source>
+        <translation>Volumen por cuerpo y capa</translation>
+    </message>
+    <message>
+        <source>Pressure per body and layer</source>
+        <translation>Presión por cuerpo y capa</translation>
+    </message>
+    <message>
+        <source>momentum [kg m/s]</source>
+        <translation>cantidad de movimiento [kg m/s]</translation>
+    </message>
+    <message>
+        <source>gap [m]</source>
+        <translation>separación [m]</translation>
+    </message>
+    <message>
+        <source>volume</source>
+        <translation>volumen</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>presión</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>ring2d: particles per layer; sphere3d: subdivisions; sphere3d-latlong: slices</source>
+        <translation>ring2d: partículas por capa; sphere3d: subdivisiones; sphere3d-latlong: rebanadas</translation>
+    </message>
+    <message>
+        <source>kind, level</source>
+        <translation>tipo, nivel</translation>
+    </message>
+    <message>
+        <source>where [m]</source>
+        <translation>dónde [m]</translation>
+    </message>
+    <message>
+        <source>how fast [m/s]</source>
+        <translation>qué tan rápido [m/s]</translation>
+    </message>
+    <message>
+        <source>Add body</source>
+        <translation>Añadir cuerpo</translation>
+    </message>
+    <message>
+        <source>Remove selected</source>
+        <translation>Quitar el seleccionado</translation>
+    </message>
+    <message>
+        <source>inner</source>
+        <translation>interior</translation>
+    </message>
+    <message>
+        <source>outer</source>
+        <translation>exterior</translation>
+    </message>
+    <message>
+        <source> (body%1 with itself)</source>
+        <translation> (body%1 consigo mismo)</translation>
+    </message>
+    <message>
+        <source> (body%1 and body%2)</source>
+        <translation> (body%1 y body%2)</translation>
+    </message>
+    <message>
+        <source>beyond %1 m (nothing that close)</source>
+        <translation>más de %1 m (nada tan cerca)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;momentum&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;angular momentum&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;contact between bodies&lt;/b&gt; %4 J, %5 pairs in the skin</source>
+        <translation>&lt;b&gt;cantidad de movimiento&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;momento angular&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;contacto entre cuerpos&lt;/b&gt; %4 J, %5 pares en la piel</translation>
+    </message>
+    <message>
+        <source>%1: not a number</source>
+        <translation>%1: no es un número</translation>
+    </message>
+    <message>
+        <source>Choose a body in the list first.</source>
+        <translation>Elija primero un cuerpo de la lista.</translation>
+    </message>
+    <message>
+        <source>A world keeps at least one body.</source>
+        <translation>Un mundo conserva al menos un cuerpo.</translation>
+    </message>
 </context>
 <context>
     <name>elui::CompareDialog</name>
@@ -1371,6 +1514,34 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <source>Plot the layers&apos; separation</source>
         <translation>Dibujar la separación de las capas</translation>
     </message>
+    <message>
+        <source>Several &amp;bodies</source>
+        <translation>Varios &amp;cuerpos</translation>
+    </message>
+    <message>
+        <source>%1: several bodies. The Bodies dock shows momentum and min_gap; Parameters has a body selector. Press Run (Space).</source>
+        <translation>%1: varios cuerpos. El panel Cuerpos muestra la cantidad de movimiento y min_gap; Parámetros tiene un selector de cuerpo. Pulse Ejecutar (Espacio).</translation>
+    </message>
+    <message>
+        <source>Work-precision studies</source>
+        <translation>Estudios trabajo-precisión</translation>
+    </message>
+    <message>
+        <source>Refinement studies</source>
+        <translation>Estudios de refinamiento</translation>
+    </message>
+    <message>
+        <source>Stability scans</source>
+        <translation>Barridos de estabilidad</translation>
+    </message>
+    <message>
+        <source>Long-time energy studies</source>
+        <translation>Estudios de energía a largo plazo</translation>
+    </message>
+    <message>
+        <source>%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV (per-body columns, momentum, min_gap), and the Bodies dock its curves.</source>
+        <translation>%1 son para escenas de un solo cuerpo. Para una escena de varios cuerpos, elastic-lab-cli run da su CSV (columnas por cuerpo, cantidad de movimiento, min_gap) y el panel Cuerpos sus curvas.</translation>
+    </message>
 </context>
 <context>
     <name>elui::MeasurePlotDock</name>
@@ -1435,6 +1606,18 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     <message>
         <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
         <translation>Cada parámetro de aquí (y DT) vuelve al valor por defecto de la escena; la forma del cuerpo se mantiene (panel Escena).</translation>
+    </message>
+    <message>
+        <source>The body whose parameters are shown and edited; world parameters (gravity, box, contact, dt) are every body&apos;s.</source>
+        <translation>El cuerpo cuyos parámetros se muestran y editan; los parámetros del mundo (gravedad, caja, contacto, dt) son de todos los cuerpos.</translation>
+    </message>
+    <message>
+        <source>body%1 (%2)</source>
+        <translation>body%1 (%2)</translation>
+    </message>
+    <message>
+        <source>every body</source>
+        <translation>todos los cuerpos</translation>
     </message>
 </context>
 <context>
@@ -2250,6 +2433,10 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     <message>
         <source>The body or the integrator changed during the measurement: press Try it again.</source>
         <translation>El cuerpo o el integrador cambió durante la medición: pulse Probar otra vez.</translation>
+    </message>
+    <message>
+        <source>The stability map is for scenes of one body: a world of several bodies has the modes of every body and of their contact, which the map does not compute yet. Its largest stable DT is found by trying: Run with a larger DT until a step fails.</source>
+        <translation>El mapa de estabilidad es para escenas de un solo cuerpo: un mundo de varios cuerpos tiene los modos de cada cuerpo y de su contacto, que el mapa aún no calcula. Su mayor DT estable se halla probando: ejecutar con un DT mayor hasta que un paso falle.</translation>
     </message>
 </context>
 <context>

@@ -439,6 +439,149 @@
         <source>layers&apos; separation</source>
         <translation>écart entre les couches</translation>
     </message>
+    <message>
+        <source>9. Two balloons collide: momentum and energy</source>
+        <translation>9. Deux ballons se heurtent : quantité de mouvement et énergie</translation>
+    </message>
+    <message>
+        <source>10. A soft stack: how the bottom body carries the others</source>
+        <translation>10. Une pile molle : comment le corps du bas porte les autres</translation>
+    </message>
+</context>
+<context>
+    <name>elui::BodiesDock</name>
+    <message>
+        <source>Bodies</source>
+        <translation>Corps</translation>
+    </message>
+    <message>
+        <source>The bodies of the scene, total momentum and the smallest gap, with their curves against simulated time</source>
+        <translation>Les corps de la scène, la quantité de mouvement totale et le plus petit écart, avec leurs courbes en fonction du temps simulé</translation>
+    </message>
+    <message>
+        <source>This dock is for scenes of several bodies: Presets &gt; Several bodies, or a scene file of several bodies.</source>
+        <translation>Ce panneau est destiné aux scènes à plusieurs corps : Préréglages &gt; Plusieurs corps, ou un fichier de scène à plusieurs corps.</translation>
+    </message>
+    <message>
+        <source>body</source>
+        <translation>corps</translation>
+    </message>
+    <message>
+        <source>mass [kg]</source>
+        <translation>masse [kg]</translation>
+    </message>
+    <message>
+        <source>centre [m]</source>
+        <translation>centre [m]</translation>
+    </message>
+    <message>
+        <source>velocity [m/s]</source>
+        <translation>vitesse [m/s]</translation>
+    </message>
+    <message>
+        <source>volume in/out</source>
+        <translation>volume int./ext.</translation>
+    </message>
+    <message>
+        <source>pressure in/out</source>
+        <translation>pression int./ext.</translation>
+    </message>
+    <message>
+        <source>Total momentum</source>
+        <translation>Quantité de mouvement totale</translation>
+    </message>
+    <message>
+        <source>min_gap</source>
+        <translation>min_gap</translation>
+    </message>
+    <message>
+        <source>Volume per body and layer</source>
+        <translation>Volume par corps et par couche</translation>
+    </message>
+    <message>
+        <source>Pressure per body and layer</source>
+        <translation>Pression par corps et par couche</translation>
+    </message>
+    <message>
+        <source>momentum [kg m/s]</source>
+        <translation>quantité de mouvement [kg m/s]</translation>
+    </message>
+    <message>
+        <source>gap [m]</source>
+        <translation>écart [m]</translation>
+    </message>
+    <message>
+        <source>volume</source>
+        <translation>volume</translation>
+    </message>
+    <message>
+        <source>pressure</source>
+        <translation>pression</translation>
+    </message>
+    <message>
+        <source>t [s]</source>
+        <translation>t [s]</translation>
+    </message>
+    <message>
+        <source>ring2d: particles per layer; sphere3d: subdivisions; sphere3d-latlong: slices</source>
+        <translation>ring2d : particules par couche ; sphere3d : subdivisions ; sphere3d-latlong : tranches</translation>
+    </message>
+    <message>
+        <source>kind, level</source>
+        <translation>type, niveau</translation>
+    </message>
+    <message>
+        <source>where [m]</source>
+        <translation>où [m]</translation>
+    </message>
+    <message>
+        <source>how fast [m/s]</source>
+        <translation>à quelle vitesse [m/s]</translation>
+    </message>
+    <message>
+        <source>Add body</source>
+        <translation>Ajouter un corps</translation>
+    </message>
+    <message>
+        <source>Remove selected</source>
+        <translation>Retirer la sélection</translation>
+    </message>
+    <message>
+        <source>inner</source>
+        <translation>intérieur</translation>
+    </message>
+    <message>
+        <source>outer</source>
+        <translation>extérieur</translation>
+    </message>
+    <message>
+        <source> (body%1 with itself)</source>
+        <translation> (body%1 avec lui-même)</translation>
+    </message>
+    <message>
+        <source> (body%1 and body%2)</source>
+        <translation> (body%1 et body%2)</translation>
+    </message>
+    <message>
+        <source>beyond %1 m (nothing that close)</source>
+        <translation>au-delà de %1 m (rien d&apos;aussi proche)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;momentum&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;angular momentum&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;contact between bodies&lt;/b&gt; %4 J, %5 pairs in the skin</source>
+        <translation>&lt;b&gt;quantité de mouvement&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;moment cinétique&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;contact entre corps&lt;/b&gt; %4 J, %5 paires dans la peau</translation>
+    </message>
+    <message>
+        <source>%1: not a number</source>
+        <translation>%1 : pas un nombre</translation>
+    </message>
+    <message>
+        <source>Choose a body in the list first.</source>
+        <translation>Choisissez d&apos;abord un corps dans la liste.</translation>
+    </message>
+    <message>
+        <source>A world keeps at least one body.</source>
+        <translation>Un monde garde au moins un corps.</translation>
+    </message>
 </context>
 <context>
     <name>elui::CompareDialog</name>
@@ -1371,6 +1514,34 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <source>Plot the layers&apos; separation</source>
         <translation>Tracer l’écart entre les couches</translation>
     </message>
+    <message>
+        <source>Several &amp;bodies</source>
+        <translation>Plusieurs &amp;corps</translation>
+    </message>
+    <message>
+        <source>%1: several bodies. The Bodies dock shows momentum and min_gap; Parameters has a body selector. Press Run (Space).</source>
+        <translation>%1 : plusieurs corps. Le panneau Corps montre la quantité de mouvement et min_gap ; Paramètres a un sélecteur de corps. Appuyez sur Lancer (Espace).</translation>
+    </message>
+    <message>
+        <source>Work-precision studies</source>
+        <translation>Études travail-précision</translation>
+    </message>
+    <message>
+        <source>Refinement studies</source>
+        <translation>Études de raffinement</translation>
+    </message>
+    <message>
+        <source>Stability scans</source>
+        <translation>Balayages de stabilité</translation>
+    </message>
+    <message>
+        <source>Long-time energy studies</source>
+        <translation>Études d&apos;énergie à long terme</translation>
+    </message>
+    <message>
+        <source>%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV (per-body columns, momentum, min_gap), and the Bodies dock its curves.</source>
+        <translation>%1 sont destinés aux scènes à un seul corps. Pour une scène à plusieurs corps, elastic-lab-cli run donne son CSV (colonnes par corps, quantité de mouvement, min_gap), et le panneau Corps ses courbes.</translation>
+    </message>
 </context>
 <context>
     <name>elui::MeasurePlotDock</name>
@@ -1435,6 +1606,18 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     <message>
         <source>Every parameter here (and DT) back to the scene&apos;s default; the body&apos;s shape stays (Scene dock).</source>
         <translation>Chaque paramètre ici (et DT) revient à la valeur par défaut de la scène ; la forme du corps reste (dock Scène).</translation>
+    </message>
+    <message>
+        <source>The body whose parameters are shown and edited; world parameters (gravity, box, contact, dt) are every body&apos;s.</source>
+        <translation>Le corps dont les paramètres sont affichés et modifiés ; les paramètres du monde (gravité, boîte, contact, dt) sont ceux de chaque corps.</translation>
+    </message>
+    <message>
+        <source>body%1 (%2)</source>
+        <translation>body%1 (%2)</translation>
+    </message>
+    <message>
+        <source>every body</source>
+        <translation>tous les corps</translation>
     </message>
 </context>
 <context>
@@ -2250,6 +2433,10 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     <message>
         <source>The body or the integrator changed during the measurement: press Try it again.</source>
         <translation>Le corps ou l’intégrateur a changé pendant la mesure : appuyez de nouveau sur Essayer.</translation>
+    </message>
+    <message>
+        <source>The stability map is for scenes of one body: a world of several bodies has the modes of every body and of their contact, which the map does not compute yet. Its largest stable DT is found by trying: Run with a larger DT until a step fails.</source>
+        <translation>La carte de stabilité est destinée aux scènes à un seul corps : un monde de plusieurs corps a les modes de chaque corps et de leur contact, que la carte ne calcule pas encore. Son plus grand DT stable se trouve en essayant : lancer avec un DT plus grand jusqu&apos;à ce qu&apos;un pas échoue.</translation>
     </message>
 </context>
 <context>

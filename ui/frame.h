@@ -25,6 +25,7 @@
 #include "simcore/forces.h"
 #include "simcore/params.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/scenefile.h"
 
 #include "ui/body_measures.h"
@@ -46,6 +47,17 @@ struct SceneData {
     // the warning and a step predicted stable; empty / 0 when DT is fine.
     QString stabilityWarning;
     double suggestedDt = 0.0;             // [s]
+    // A scene of several bodies (simcore::World): the topology above is every body's, side by
+    // side (particles renumbered as the world's); each body's particles [first, first + count)
+    // and kind. Empty for one body.
+    struct BodySlice {
+        int first = 0;
+        int count = 0;
+        simcore::SceneKind kind = simcore::SceneKind::Sphere3d;
+    };
+    std::vector<BodySlice> bodies;
+    QString worldName;                    // collide2d, ..., or a scene file's name
+    bool isWorld() const { return !bodies.empty(); }
 };
 
 enum class Speed { RealTime, Quarter, Tenth, AsFastAsPossible };
@@ -105,6 +117,12 @@ struct Frame {
     double atol = 1e-6, rtol = 1e-6;      // the adaptive methods' tolerances in use [m, m/s] and [1]
     quint64 serial = 0;                   // increases with every published frame
     TimelineInfo timeline;
+    // A scene of several bodies: the world's own diagnostics (per body, momentum, min_gap) and
+    // the body parameter edits go to (-1: every body). lanes[0] is then the world: all its
+    // positions, and its totals as a Diagnostics.
+    std::shared_ptr<const simcore::WorldDiagnostics> world;
+    int worldBody = 0;
+    std::shared_ptr<const simcore::WorldSpec> worldSpec;  // its bodies as described (start, parameters)
     // For the reference curve (reference_run.h): lane 0's state when the timeline began (a
     // new scene, a reset, an opened file; the same pointer until the next one), and the
     // simulated time of the first change of the physics since then that is still on the
@@ -139,6 +157,7 @@ struct SceneCapture {
     QString integrator;                   // lane 0's
     int lanes = 0;                        // views running (side by side: > 1; only lane 0 is in text)
     double time = 0.0;                    // lane 0's simulated time [s]
+    bool world = false;                   // a scene of several bodies (the text is a world's)
 };
 
 }  // namespace elui

@@ -13,6 +13,12 @@ void FramePublisher::recordRow(simcore::Simulation& lane0, bool errorBands) {
     if (errorBands) m_rows.back().errors = lane0.observableErrors();
 }
 
+void FramePublisher::recordRow(const simcore::Diagnostics& row) {
+    if (m_lastRowTime >= 0.0 && row.time - m_lastRowTime < kRowInterval * (1.0 - 1e-9)) return;
+    m_lastRowTime = row.time;
+    m_rows.push_back(row);
+}
+
 void FramePublisher::recordLaneRows(const std::vector<const simcore::Simulation*>& lanes, double time) {
     if (m_lastLaneRowTime >= 0.0 && time - m_lastLaneRowTime < kRowInterval * (1.0 - 1e-9)) return;
     m_lastLaneRowTime = time;

@@ -30,6 +30,8 @@ public:
     // Records lane 0's row now, unless it failed or the last row is less than kRowInterval
     // ago; with its error bands (two measurements) when `errorBands`.
     void recordRow(simcore::Simulation& lane0, bool errorBands);
+    // A world's row (its totals as a Diagnostics), as recordRow.
+    void recordRow(const simcore::Diagnostics& row);
     // Side by side: every other live lane's row at the common time `time` (at most one per
     // kRowInterval of it), for the plots' other views.
     void recordLaneRows(const std::vector<const simcore::Simulation*>& lanes, double time);

@@ -1,13 +1,17 @@
 #include "ui/lesson_measures.h"
 
+#include <map>
 #include <memory>
+#include <mutex>
 
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/conservation.h"
 #include "simlab/impact.h"
 #include "simlab/stability.h"
 #include "simlab/study.h"
 #include "ui/body_measures.h"
+#include "ui/lessons.h"
 
 namespace elui {
 
@@ -155,6 +159,74 @@ QMap<QString, LessonMeasure> lessonMeasures(const QString& id) {
             return run(p, 10000.0).rows[2].finalError / run(p, 100.0).rows[2].finalError;
         };
         m["rk4-alpha"] = [run](const ParameterSet& p) { return run(p, 10000.0).rows[2].alpha; };
+    } else {
+        return worldLessonMeasures(id);
+    }
+    return m;
+}
+
+namespace {
+
+// A lesson of several bodies: its world as set up, with the values of `p` (the first body's, as
+// the Parameters dock shows them) given to the first body (a world parameter to every body),
+// run `steps` steps with rk4. The last run is kept: a lesson's answers read one run.
+simcore::WorldDiagnostics lessonWorld(const QString& id, const ParameterSet& p, long steps) {
+    static std::mutex lock;
+    static std::map<std::pair<std::string, long>, std::pair<ParameterSet, simcore::WorldDiagnostics>> done;
+    const std::lock_guard guard(lock);
+    const auto key = std::make_pair(id.toStdString(), steps);
+    if (auto it = done.find(key); it != done.end() && it->second.first == p) return it->second.second;
+    simcore::WorldSpec spec = *findLesson(id)->preset.world();
+    for (const simcore::ParamSpec* s : simcore::parametersFor(p.kind())) {
+        if (!p.isExplicit(s->id)) continue;
+        for (std::size_t k = 0; k < spec.bodies.size(); ++k)
+            if (k == 0 || simcore::isWorldParameter(s->id)) (void)spec.bodies[k].params.set(s->id, p.get(s->id));
+    }
+    simcore::World world(spec, "rk4");
+    while (world.stepCount() < steps && world.step()) {
+    }
+    done[key] = {p, world.diagnostics()};
+    return world.diagnostics();
+}
+
+}  // namespace
+
+QMap<QString, LessonMeasure> worldLessonMeasures(const QString& id) {
+    QMap<QString, LessonMeasure> m;
+    if (id == QLatin1String("balloons-collide")) {
+        // `run --scene collide2d --set gravity=0 --set body2.mass=4 --duration 2.4` (800 steps):
+        // the centres' velocities after the impact, the pair's restitution, what they keep.
+        const auto run = [id](const ParameterSet& p) { return lessonWorld(id, p, 800); };
+        m["v1-after"] = [run](const ParameterSet& p) { return run(p).bodies[0].velocity.x(); };
+        m["v2-after"] = [run](const ParameterSet& p) { return run(p).bodies[1].velocity.x(); };
+        m["momentum"] = [run](const ParameterSet& p) { return run(p).momentum.x(); };
+        m["restitution"] = [run](const ParameterSet& p) {
+            const simcore::WorldDiagnostics d = run(p);
+            return (d.bodies[1].velocity.x() - d.bodies[0].velocity.x()) / (2.0 - (-2.0));  // started at +-2 m/s
+        };
+        m["ke-kept"] = [run](const ParameterSet& p) {
+            double before = 0.0, after = 0.0;
+            for (const simcore::BodyDiagnostics& b : run(p).bodies) {
+                before += 0.5 * b.mass * 4.0;
+                after += 0.5 * b.mass * b.velocity.squaredNorm();
+            }
+            return after / before;
+        };
+    } else if (id == QLatin1String("soft-stack")) {
+        // `run --scene stack3d --set subdivisions=1 --set pressure=300 --set kd=40 --set rkd=120
+        // --duration 5` (1667 steps): each body's outer volume over its rest volume, the bottom
+        // outer pressure over the top one's.
+        const auto flattened = [id](const ParameterSet& p, std::size_t body) {
+            const simcore::BodyDiagnostics b = lessonWorld(id, p, 1667).bodies[body];
+            return b.volume[1] / b.restVolume[1];
+        };
+        m["bottom-volume"] = [flattened](const ParameterSet& p) { return flattened(p, 0); };
+        m["middle-volume"] = [flattened](const ParameterSet& p) { return flattened(p, 1); };
+        m["top-volume"] = [flattened](const ParameterSet& p) { return flattened(p, 2); };
+        m["pressure-ratio"] = [id](const ParameterSet& p) {
+            const simcore::WorldDiagnostics d = lessonWorld(id, p, 1667);
+            return d.bodies[0].pressure[1] / d.bodies[2].pressure[1];
+        };
     }
     return m;
 }

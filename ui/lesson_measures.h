@@ -19,6 +19,9 @@ using LessonMeasure = std::function<double(const simcore::ParameterSet&)>;
 
 // The measurements of a lesson's answers by key (empty for an unknown lesson).
 QMap<QString, LessonMeasure> lessonMeasures(const QString& lessonId);
+// The measurements of a lesson of several bodies (lessonMeasures hands them on): its world as set
+// up, with the parameters given applied to the first body (world parameters to every body).
+QMap<QString, LessonMeasure> worldLessonMeasures(const QString& lessonId);
 // The measurements of the figures in Help (HelpDialog::html()) by key, on the scene they name.
 QMap<QString, LessonMeasure> helpMeasures();
 

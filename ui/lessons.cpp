@@ -32,6 +32,12 @@ Lesson make(const QString& id, const QString& title, const QString& scene, QList
     l.docks = std::move(docks);
     return l;
 }
+// A lesson on a scene of several bodies: the scene and its --set assignments, rk4.
+Lesson makeWorld(const QString& id, const QString& title, const QString& scene, QStringList set, QStringList docks) {
+    Lesson l = make(id, title, scene, {}, {QStringLiteral("rk4")}, std::move(docks));
+    l.preset.worldSet = std::move(set);
+    return l;
+}
 }  // namespace
 
 QList<Lesson> lessons() {
@@ -62,6 +68,14 @@ QList<Lesson> lessons() {
         make(QStringLiteral("why-symplectic"), QObject::tr("8. Why symplectic? Energy over ten thousand periods"),
              QStringLiteral("spring1d"), {{simcore::Param::Kd, 0.0}, {simcore::Param::Dt, 0.01}},
              {QStringLiteral("verlet"), QStringLiteral("yoshida4"), QStringLiteral("rk4")}, {bars}),
+        makeWorld(QStringLiteral("balloons-collide"), QObject::tr("9. Two balloons collide: momentum and energy"),
+                  QStringLiteral("collide2d"), {QStringLiteral("gravity=0"), QStringLiteral("body2.mass=4")},
+                  {QStringLiteral("bodies")}),
+        makeWorld(QStringLiteral("soft-stack"), QObject::tr("10. A soft stack: how the bottom body carries the others"),
+                  QStringLiteral("stack3d"),
+                  {QStringLiteral("subdivisions=1"), QStringLiteral("pressure=300"), QStringLiteral("kd=40"),
+                   QStringLiteral("rkd=120")},
+                  {QStringLiteral("bodies"), QStringLiteral("energy-bars")}),
     };
 }
 

@@ -1,5 +1,8 @@
 #include "ui/main_window.h"
 
+#include "ui/bodies_dock.h"
+#include "simcore/world.h"
+
 #include <algorithm>
 
 #include <QAction>
@@ -230,25 +233,43 @@ void MainWindow::createMenus() {
         QAction* a = presets->addAction(p.title, this, [this, p] { applyPreset(p); });
         a->setToolTip(p.description);
     }
+    // Scenes of several bodies (simcore::World): bodies that meet bodies.
+    QMenu* worlds = presets->addMenu(tr("Several &bodies"));
+    worlds->setObjectName(QStringLiteral("worldsMenu"));
+    worlds->setToolTipsVisible(true);
+    for (const simcore::WorldSceneInfo& w : simcore::worldSceneTable()) {
+        const QString name = toQString(w.name);
+        QAction* a = worlds->addAction(name, this, [this, name] {
+            setCurrentFile({}, simcore::ParameterSet{}, {});
+            startWorld(*simcore::worldScene(name.toStdString()));
+            status(tr("%1: several bodies. The Bodies dock shows momentum and min_gap; Parameters has a body "
+                      "selector. Press Run (Space).").arg(name));
+        });
+        a->setToolTip(toQString(w.description));
+    }
     presets->setToolTipsVisible(true);
 
     m_studiesMenu = menuBar()->addMenu(tr("S&tudies"));
     m_studiesMenu->addAction(tr("&Work-precision study..."), this, [this] {
+        if (refuseForWorld(tr("Work-precision studies"))) return;
         auto* d = new WorkPrecisionDialog(m_controller->parameters(), this);
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
     m_studiesMenu->addAction(tr("&Refinement study..."), this, [this] {
+        if (refuseForWorld(tr("Refinement studies"))) return;
         auto* d = new RefinementDialog(m_controller->parameters(), this);
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
     m_studiesMenu->addAction(tr("&Stability scan..."), this, [this] {
+        if (refuseForWorld(tr("Stability scans"))) return;
         auto* d = new StabilityDialog(m_controller->parameters(), this);
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
     m_studiesMenu->addAction(tr("&Long-time energy..."), this, [this] {
+        if (refuseForWorld(tr("Long-time energy studies"))) return;
         auto* d = new ConservationDialog(m_controller->parameters(), this);
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
@@ -408,6 +429,15 @@ void MainWindow::createDocks() {
     m_stabilityMapDock = new StabilityMapDock(this);
     tabifyDockWidget(m_pvDock, m_stabilityMapDock);
     m_stabilityMapDock->hide();
+    // Scenes of several bodies: their readout, list and curves; opened when a world starts.
+    m_bodiesDock = new BodiesDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, m_bodiesDock);
+    tabifyDockWidget(m_plotDock, m_bodiesDock);
+    m_bodiesDock->hide();
+    connect(m_bodiesDock, &BodiesDock::worldRequested, this, [this](const simcore::WorldSpec& spec) {
+        startWorld(spec, m_controller->integrators().value(0, QStringLiteral("rk4")));
+    });
+    connect(m_bodiesDock, &BodiesDock::message, this, &MainWindow::status);
     // The lesson in use, under the Run dock, a tab beside Scene and Parameters (raised when a
     // lesson opens it: its table needs the height; Parameters is one click away for a step that
     // types a value): closed until a lesson (or View) opens it.
@@ -423,7 +453,7 @@ void MainWindow::createDocks() {
                            static_cast<QDockWidget*>(m_runDock), static_cast<QDockWidget*>(m_plotDock),
                            static_cast<QDockWidget*>(m_energyBarsDock), static_cast<QDockWidget*>(m_pvDock),
                            static_cast<QDockWidget*>(m_stabilityMapDock), static_cast<QDockWidget*>(m_lessonDock),
-                           static_cast<QDockWidget*>(m_measureDock)})
+                           static_cast<QDockWidget*>(m_measureDock), static_cast<QDockWidget*>(m_bodiesDock)})
         m_viewMenu->addAction(d->toggleViewAction());
     resizeDocks({m_runDock, m_plotDock}, {290, 420}, Qt::Horizontal);
 }
@@ -457,7 +487,7 @@ void MainWindow::keepMinimumWidth() {
 
 QStringList MainWindow::dockNames() {
     return {QStringLiteral("energy-bars"), QStringLiteral("pv"), QStringLiteral("stability-map"), QStringLiteral("timeline"),
-            QStringLiteral("lesson")};
+            QStringLiteral("lesson"), QStringLiteral("bodies")};
 }
 
 QDockWidget* MainWindow::dock(const QString& name) const {
@@ -466,6 +496,7 @@ QDockWidget* MainWindow::dock(const QString& name) const {
            : name == QLatin1String("stability-map") ? static_cast<QDockWidget*>(m_stabilityMapDock)
            : name == QLatin1String("timeline")      ? static_cast<QDockWidget*>(m_timelineDock)
            : name == QLatin1String("lesson")        ? static_cast<QDockWidget*>(m_lessonDock)
+           : name == QLatin1String("bodies")        ? static_cast<QDockWidget*>(m_bodiesDock)
                                                     : nullptr;
 }
 
@@ -506,7 +537,7 @@ void MainWindow::connectController() {
     SimulationController* c = m_controller;
     connect(c, &SimulationController::frameArrived, this, &MainWindow::onFrame);
     connect(c, &SimulationController::sceneChanged, this,
-            [this](const std::shared_ptr<const SceneData>& scene) { m_plotDock->setScene(scene->kind); });
+            [this](const std::shared_ptr<const SceneData>& scene) { m_plotDock->setScene(scene->kind, scene->isWorld()); });
     connect(c, &SimulationController::sceneChanged, this, [this](const std::shared_ptr<const SceneData>& scene) {
         m_energyBarsDock->setScene(*scene);
         m_pvDock->setScene(scene->kind);
@@ -545,6 +576,7 @@ void MainWindow::connectController() {
 
     connect(m_parameterDock, &ParameterDock::parameterEdited, c,
             qOverload<simcore::Param, double>(&SimulationController::setParameter));
+    connect(m_parameterDock, &ParameterDock::bodyChosen, c, &SimulationController::setWorldBody);
     connect(m_parameterDock, &ParameterDock::parameterRejected, this,
             [this](const QString&, const QString& message) { status(message); });
     connect(m_sceneDock, &SceneDock::rebuildRequested, this, &MainWindow::rebuildFromSceneDock);
@@ -715,11 +747,38 @@ void MainWindow::startScene(const simcore::ParameterSet& params, const QStringLi
     m_controller->setScene(params, integrators.isEmpty() ? QStringList{QStringLiteral("rk4")} : integrators);
 }
 
+void MainWindow::startWorld(const simcore::WorldSpec& spec, const QString& integrator) {
+    m_controller->setWorld(spec, integrator);
+}
+
+bool MainWindow::refuseForWorld(const QString& what) {
+    if (!m_controller->isWorld()) return false;
+    warn(what, tr("%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV "
+                  "(per-body columns, momentum, min_gap), and the Bodies dock its curves.").arg(what));
+    return true;
+}
+
+void MainWindow::showWorldMode(bool world) {
+    if (world == m_worldShown) return;
+    m_worldShown = world;
+    // What a world has not yet: side by side, the timeline, the stability map (said in it).
+    m_sideBySide->setEnabled(!world);
+    m_stabilityMapDock->setWorldNotice(world);
+    if (world) {
+        m_bodiesDock->show();
+        m_bodiesDock->raise();
+    }
+}
+
 void MainWindow::applyPreset(const Preset& preset) {
     // A preset is a new experiment: it is not the scene file's, so Save asks for a name.
     setCurrentFile({}, simcore::ParameterSet{}, {});
-    m_controller->setStartKick(preset.kickInner, preset.kickOuter);
-    startScene(preset.parameters(), preset.integrators);
+    if (const auto world = preset.world()) {
+        startWorld(*world, preset.integrators.value(0, QStringLiteral("rk4")));
+    } else {
+        m_controller->setStartKick(preset.kickInner, preset.kickOuter);
+        startScene(preset.parameters(), preset.integrators);
+    }
     status(preset.title + QStringLiteral(": ") + preset.description + tr(" Press Run (Space)."));
 }
 
@@ -814,6 +873,13 @@ void MainWindow::onFrame(const FramePtr& frame) {
     m_plotDock->setViews(*frame);
     m_plotDock->followReference(*frame);
     m_energyBarsDock->showFrame(*frame);
+    const bool world = frame->world != nullptr;
+    showWorldMode(world);
+    m_bodiesDock->showFrame(*frame);
+    std::vector<simcore::SceneKind> kinds;
+    if (world)
+        for (const simcore::WorldBodySpec& b : frame->worldSpec->bodies) kinds.push_back(b.params.kind());
+    m_parameterDock->showBodies(kinds, frame->worldBody);
     QStringList integrators;
     for (const LaneFrame& lane : frame->lanes) integrators << lane.integrator;
     m_stabilityMapDock->setState(frame->parameters, integrators);
@@ -903,7 +969,8 @@ void MainWindow::setCurrentFile(const QString& path, const simcore::ParameterSet
 void MainWindow::updateTitle(const Frame& frame) {
     // Modified = the parameters or lane 0's integrator differ from what the file holds. Running
     // alone does not count: the state changes all the time, and Save always stores it.
-    const QString scene = toQString(simcore::sceneInfo(frame.parameters.kind()).name);
+    const QString scene = frame.scene && frame.scene->isWorld() ? frame.scene->worldName
+                                                                : toQString(simcore::sceneInfo(frame.parameters.kind()).name);
     bool modified = false;
     QString title;
     if (m_currentFile.isEmpty()) {

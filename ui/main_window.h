@@ -31,6 +31,7 @@ class RunDock;
 class PlotDock;
 class EnergyBarsDock;
 class PvDock;
+class BodiesDock;
 class StabilityMapDock;
 class FailureBanner;
 class TimelineDock;
@@ -58,6 +59,7 @@ public:
     PvDock* pvDock() const { return m_pvDock; }
     TimelineDock* timelineDock() const { return m_timelineDock; }
     StabilityMapDock* stabilityMapDock() const { return m_stabilityMapDock; }
+    BodiesDock* bodiesDock() const { return m_bodiesDock; }
     LessonDock* lessonDock() const { return m_lessonDock; }
     MeasurePlotDock* measureDock() const { return m_measureDock; }
     // The view's right-click menu for a particle (-1: none under the cursor): plot its height or
@@ -100,6 +102,8 @@ public:
 
 public slots:
     void startScene(const simcore::ParameterSet& params, const QStringList& integrators);
+    // A scene of several bodies (simcore::World), with one integrator; the Bodies dock opens.
+    void startWorld(const simcore::WorldSpec& spec, const QString& integrator = QStringLiteral("rk4"));
     // Scene files. Each returns the error shown to the user (non-blocking message box and
     // status bar), or empty on success; a refused file leaves the running scene as it is.
     QString openSceneFile(const QString& path);
@@ -181,6 +185,11 @@ private:
     PvDock* m_pvDock = nullptr;
     TimelineDock* m_timelineDock = nullptr;
     StabilityMapDock* m_stabilityMapDock = nullptr;
+    BodiesDock* m_bodiesDock = nullptr;
+    bool m_worldShown = false;            // the last frame was a world's
+    void showWorldMode(bool world);       // what a world has and has not (menus, docks)
+    // Studies of one body are not for a world: says so and returns true when one is shown.
+    bool refuseForWorld(const QString& what);
     LessonDock* m_lessonDock = nullptr;
     MeasurePlotDock* m_measureDock = nullptr;
     QMenu* m_lessonsMenu = nullptr;

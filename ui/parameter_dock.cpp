@@ -15,6 +15,10 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <cmath>
+
+#include "simcore/scenes.h"
 #include "ui/accessibility.h"
 #include "ui/field_keys.h"
 #include "ui/language.h"
@@ -396,6 +400,15 @@ ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), pa
     m_host = new QWidget(scroll);
     m_layout = new QVBoxLayout(m_host);
     m_layout->setContentsMargins(4, 4, 4, 4);
+    m_bodies = new QComboBox(m_host);
+    m_bodies->setObjectName(QStringLiteral("bodySelector"));
+    m_bodies->setToolTip(tr("The body whose parameters are shown and edited; world parameters (gravity, box, "
+                            "contact, dt) are every body's."));
+    m_bodies->hide();
+    m_layout->addWidget(m_bodies);
+    connect(m_bodies, &QComboBox::activated, this, [this](int index) {
+        emit bodyChosen(index >= int(m_kinds.size()) ? -1 : index);
+    });
     m_resetAll = new QPushButton(tr("Reset all to the scene's defaults"), m_host);
     m_resetAll->setObjectName(QStringLiteral("resetAllParameters"));
     m_resetAll->setToolTip(tr("Every parameter here (and DT) back to the scene's default; the body's shape "
@@ -406,6 +419,18 @@ ParameterDock::ParameterDock(QWidget* parent) : QDockWidget(tr("Parameters"), pa
     m_layout->addWidget(m_resetAll);
     scroll->setWidget(m_host);
     setWidget(scroll);
+}
+
+void ParameterDock::showBodies(const std::vector<simcore::SceneKind>& kinds, int chosen) {
+    if (kinds != m_kinds) {
+        m_kinds = kinds;
+        m_bodies->clear();
+        for (std::size_t k = 0; k < kinds.size(); ++k)
+            m_bodies->addItem(tr("body%1 (%2)").arg(k + 1).arg(toQString(simcore::sceneInfo(kinds[k]).name)));
+        if (!kinds.empty()) m_bodies->addItem(tr("every body"));
+    }
+    m_bodies->setVisible(!kinds.empty());
+    if (!kinds.empty()) m_bodies->setCurrentIndex(chosen < 0 ? int(kinds.size()) : chosen);
 }
 
 void ParameterDock::showParameters(const simcore::ParameterSet& params) {

@@ -9,6 +9,7 @@
 
 #include <map>
 #include <set>
+#include <vector>
 
 #include <QDockWidget>
 #include <QWidget>
@@ -84,17 +85,26 @@ class ParameterDock : public QDockWidget {
 public:
     explicit ParameterDock(QWidget* parent = nullptr);
     ParameterForm* form() const { return m_form; }
+    // A scene of several bodies: the body selector (hidden for one body). Its entries are
+    // "body1 (ring2d)", ..., then "every body"; an edit goes to the chosen body (a world
+    // parameter, such as gravity or dt, to every body whatever is chosen).
+    QComboBox* bodySelector() const { return m_bodies; }
     QPushButton* resetAllButton() const { return m_resetAll; }
 
 public slots:
     // Rebuilds the fields when the scene kind changes, then shows the values.
     void showParameters(const simcore::ParameterSet& params);
+    // The world's bodies (kinds in order; empty: one body) and the one chosen (-1: every body).
+    void showBodies(const std::vector<simcore::SceneKind>& kinds, int chosen);
 
 signals:
     void parameterEdited(simcore::Param id, double value);
     void parameterRejected(const QString& key, const QString& message);
+    void bodyChosen(int body);  // from 0; -1: every body
 
 private:
+    QComboBox* m_bodies = nullptr;
+    std::vector<simcore::SceneKind> m_kinds;
     QWidget* m_host = nullptr;
     QVBoxLayout* m_layout = nullptr;
     ParameterForm* m_form = nullptr;

@@ -180,13 +180,14 @@ void PlotDock::createDriftPlot(QWidget* host) {
     m_driftGraphs[0]->setPen(QPen(viewColor(0), 1.6, viewStyle(0)));
 }
 
-void PlotDock::setScene(simcore::SceneKind kind) {
-    if (m_created && kind == m_kind) {
+void PlotDock::setScene(simcore::SceneKind kind, bool world) {
+    if (m_created && kind == m_kind && world == m_world) {
         clear();
         return;
     }
     m_created = true;
     m_kind = kind;
+    m_world = world;
     for (QCustomPlot* p : m_plots) delete p;
     m_plots.clear();
     m_bands.clear();
@@ -197,7 +198,7 @@ void PlotDock::setScene(simcore::SceneKind kind) {
     m_viewOf.clear();
     m_viewOf.insert(m_driftMarks, -1);
     for (std::size_t v = 0; v < m_driftGraphs.size(); ++v) m_viewOf.insert(m_driftGraphs[v], int(v));
-    m_specs = plotSpecs(kind);
+    m_specs = plotSpecs(kind, world);
     for (const PlotSpec& spec : m_specs) {
         QCustomPlot* plot = createPlot(spec);
         addBandsAndMarks(plot, spec);

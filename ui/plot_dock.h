@@ -58,7 +58,9 @@ class PlotDock : public QDockWidget {
 public:
     explicit PlotDock(QWidget* parent = nullptr);
 
-    void setScene(simcore::SceneKind kind);
+    // world: a scene of several bodies (the energy of the whole world; the volume and pressure
+    // of each body are in the Bodies dock).
+    void setScene(simcore::SceneKind kind, bool world = false);
     simcore::SceneKind kind() const { return m_kind; }
     // Plot ids shown for the current scene, in order ("volume", "pressure", "energy").
     QStringList plotIds() const;
@@ -186,6 +188,7 @@ private:
     QCPGraph* m_driftMarks = nullptr;
 
     simcore::SceneKind m_kind = simcore::SceneKind::Ring2d;
+    bool m_world = false;
     std::vector<PlotSpec> m_specs;
     std::vector<QCustomPlot*> m_plots;
     QVBoxLayout* m_plotLayout = nullptr;

@@ -1,5 +1,7 @@
 #include "ui/plot_series.h"
 
+#include <algorithm>
+#include <iterator>
 #include <limits>
 
 #include <QObject>
@@ -12,13 +14,13 @@ namespace {
 double none() { return std::numeric_limits<double>::quiet_NaN(); }
 }  // namespace
 
-std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
+std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind, bool world) {
     using D = simcore::Diagnostics;
     std::vector<PlotSpec> plots;
     const bool gas = simcore::hasGas(kind);
     const bool flat = kind == simcore::SceneKind::Ring2d;
     const QColor inner = layerColor(0), outer = layerColor(1);
-    if (gas) {
+    if (gas && !world) {
         plots.push_back({QStringLiteral("volume"), flat ? QObject::tr("Area per layer") : QObject::tr("Volume per layer"),
                          flat ? QObject::tr("area [m²]") : QObject::tr("volume [m³]"),
                          {{"volume", QObject::tr("inner"), inner, [](const D& d) { return d.volume[0]; },
@@ -48,6 +50,12 @@ std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind) {
                              [](const D& d) { return d.removedContact + d.removedCollisions; }});
     plots.push_back(std::move(energy));
     return plots;
+}
+
+QColor bodyColor(int body) {
+    static const QColor hues[] = {{230, 110, 20}, {40, 110, 220}, {40, 160, 70}, {190, 50, 160},
+                                  {200, 40, 40}, {20, 160, 170}, {140, 100, 30}, {110, 80, 200}};
+    return hues[static_cast<std::size_t>(std::max(body, 0)) % std::size(hues)];
 }
 
 QColor layerColor(int layer) { return layer == 0 ? QColor(40, 90, 220) : QColor(235, 120, 20); }

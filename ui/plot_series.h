@@ -31,7 +31,9 @@ struct PlotSpec {
     std::vector<SeriesSpec> series;
 };
 
-std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind);
+// world: a scene of several bodies of this kind: the world's energy only (per-body volume and
+// pressure are the Bodies dock's).
+std::vector<PlotSpec> plotSpecs(simcore::SceneKind kind, bool world = false);
 
 // The energy book's terms. One colour table for the energy plot's curves and the energy bars
 // (EnergyBarsDock): a term has the same colour wherever it is drawn.
@@ -54,6 +56,9 @@ enum class EnergyTerm {
 QColor energyColor(EnergyTerm term);
 // The colour of a gas layer (0 inner, 1 outer) in the volume, pressure and P–V plots.
 QColor layerColor(int layer);
+// The hue of body k (from 0) of a scene of several bodies: its outer layer in the viewport, its
+// curves in the Bodies dock. Distinct for the first eight, then repeating.
+QColor bodyColor(int body);
 
 // One bar of the energy bar chart: a Diagnostics field, in the book's order.
 struct EnergyBar {

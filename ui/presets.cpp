@@ -6,7 +6,17 @@
 
 namespace elui {
 
+std::optional<simcore::WorldSpec> Preset::world() const {
+    auto spec = simcore::worldScene(scene.toStdString());
+    if (!spec) return std::nullopt;
+    for (const auto& [param, value] : values)
+        for (auto& b : spec->bodies) (void)b.params.set(param, value);
+    for (const QString& assignment : worldSet) (void)simcore::assignWorld(*spec, assignment.toStdString());
+    return spec;
+}
+
 simcore::ParameterSet Preset::parameters() const {
+    if (const auto spec = world()) return spec->bodies.front().params;
     const simcore::SceneInfo* info = simcore::findScene(scene.toStdString());
     simcore::ParameterSet params(info ? info->kind : simcore::SceneKind::Ring2d);
     for (const auto& [param, value] : values) params.set(param, value);

@@ -6,7 +6,10 @@
 #include <QString>
 #include <QStringList>
 
+#include <optional>
+
 #include "simcore/params.h"
+#include "simcore/world.h"
 
 namespace elui {
 
@@ -19,9 +22,15 @@ struct Preset {
     QStringList integrators;       // one: normal view; two or three: side by side
     double kickInner = 0.0;        // start velocity along x of inner / outer particles [m/s]
     double kickOuter = 0.0;
+    // A scene of several bodies (scene: collide2d, collide3d, stack3d): its --set assignments
+    // ("gravity=0", "body2.mass=4"), applied after `values`.
+    QStringList worldSet = {};
 
-    // The parameter set the preset builds (throws nothing: preset values are valid).
+    // The parameter set the preset builds (throws nothing: preset values are valid); for a
+    // scene of several bodies, the first body's.
     simcore::ParameterSet parameters() const;
+    // The world the preset builds, or nothing for a scene of one body.
+    std::optional<simcore::WorldSpec> world() const;
 };
 
 QList<Preset> teachingPresets();

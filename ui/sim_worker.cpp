@@ -36,12 +36,23 @@ Lanes::List SimWorker::buildLanes(const simcore::ParameterSet& params, const QSt
 void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList& integrators) {
     auto lanes = buildLanes(params, integrators);
     if (lanes.empty()) return;
+    m_world.reset();
     m_lanes.adopt(std::move(lanes));
     m_params = params;
     afterRebuild();
 }
 
 void SimWorker::openScene(const simlab::SceneFile& file, const QStringList& integrators) {
+    if (file.world) {  // a scene file of several bodies, resumed with its state
+        const std::string integrator = integrators.isEmpty() ? file.integrator : integrators.front().toStdString();
+        if (!buildWorld(*file.world, integrator, nullptr)) return;
+        if (file.state)
+            if (auto error = simlab::applyState(*m_world, *file.state)) emit sceneRejected(QString::fromStdString(*error));
+        m_worldBody = 0;
+        worldSceneData();
+        worldStarted();
+        return;
+    }
     auto lanes = buildLanes(file.params, integrators);
     if (lanes.empty()) return;
     if (file.state)
@@ -51,6 +62,7 @@ void SimWorker::openScene(const simlab::SceneFile& file, const QStringList& inte
                 return;
             }
     // The file is the whole experiment: a preset's start kick does not apply to it.
+    m_world.reset();
     m_lanes.setKick(0.0, 0.0);
     m_lanes.adopt(std::move(lanes));
     m_params = file.params;
@@ -59,6 +71,15 @@ void SimWorker::openScene(const simlab::SceneFile& file, const QStringList& inte
 
 SceneCapture SimWorker::captureScene() const {
     SceneCapture capture;
+    if (m_world) {
+        capture.text = simlab::sceneFileText(*m_world, true);
+        capture.parameters = m_world->spec().bodies.front().params;
+        capture.integrator = QString::fromUtf8(m_world->integrator().name().data());
+        capture.lanes = 1;
+        capture.time = m_world->time();
+        capture.world = true;
+        return capture;
+    }
     if (m_lanes.empty()) return capture;
     const simcore::Simulation& sim = m_lanes.front();
     capture.text = simlab::sceneFileText(sim, std::string(simcore::sceneInfo(sim.parameters().kind()).name), true);
@@ -99,6 +120,16 @@ void SimWorker::afterRebuild() {
 }
 
 void SimWorker::setIntegrator(const QString& name) {
+    if (m_world) {  // the world is built again with it and goes on from its state
+        if (auto error = simcore::unknownIntegrator(name.toStdString())) {
+            emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
+        } else {
+            std::unique_ptr<simcore::World> old = std::move(m_world);
+            if (!buildWorld(old->spec(), name.toStdString(), old.get())) m_world = std::move(old);
+        }
+        publish(true);
+        return;
+    }
     if (m_lanes.empty()) return;
     if (auto error = simcore::unknownIntegrator(name.toStdString())) {
         emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
@@ -112,6 +143,10 @@ void SimWorker::setIntegrator(const QString& name) {
 }
 
 void SimWorker::setParameter(simcore::Param id, double value) {
+    if (m_world) {
+        setWorldParameter(id, value);
+        return;
+    }
     if (m_lanes.empty()) return;
     const simcore::ParamSpec& spec = simcore::paramSpec(id);
     const QString key = QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size()));
@@ -141,7 +176,7 @@ void SimWorker::setParameter(simcore::Param id, double value) {
 }
 
 void SimWorker::setSpeed(int speed) {
-    m_pacer.setSpeed(static_cast<Speed>(std::clamp(speed, 0, 3)), m_lanes.commonTime());
+    m_pacer.setSpeed(static_cast<Speed>(std::clamp(speed, 0, 3)), m_world ? m_world->time() : m_lanes.commonTime());
     if (m_pacer.running()) m_timer->start(m_pacer.timerInterval());
     publish(true);
 }
@@ -183,6 +218,14 @@ void SimWorker::setErrorBandsWanted(bool on) { m_bandsWanted = on; }
 void SimWorker::setStartKick(double innerVx, double outerVx) { m_lanes.setKick(innerVx, outerVx); }
 
 void SimWorker::run() {
+    if (m_world) {
+        if (m_world->failed()) return;
+        m_pacer.start(m_world->time());
+        m_until = -1.0;
+        m_timer->start(m_pacer.timerInterval());
+        publish(true);
+        return;
+    }
     if (m_lanes.empty() || m_lanes.allFailed()) return;
     m_pacer.start(m_lanes.commonTime());
     setUntil(-1.0);
@@ -191,6 +234,13 @@ void SimWorker::run() {
 }
 
 void SimWorker::runUntil(double simulatedTime) {
+    if (m_world) {
+        m_pacer.start(m_world->time());
+        m_until = simulatedTime;
+        m_timer->start(0);
+        publish(true);
+        return;
+    }
     if (m_lanes.empty()) return;
     m_pacer.start(m_lanes.commonTime());
     setUntil(simulatedTime);
@@ -200,19 +250,30 @@ void SimWorker::runUntil(double simulatedTime) {
 
 void SimWorker::pause() {
     m_pacer.stop();
-    setUntil(-1.0);
+    if (m_world) m_until = -1.0;
+    else setUntil(-1.0);
     if (m_timer) m_timer->stop();
     publish(true);
 }
 
 void SimWorker::stepOnce() {
     if (m_pacer.running()) pause();
+    if (m_world) {
+        stepWorld();
+        publish(true);
+        return;
+    }
     if (m_lanes.empty()) return;
     stepAll();
     publish(true);
 }
 
 void SimWorker::reset() {
+    if (m_world) {
+        m_world->reset();
+        worldStarted();
+        return;
+    }
     m_lanes.reset();
     if (m_lanes.empty()) return;
     startHistory();
@@ -232,6 +293,15 @@ void SimWorker::startHistory() {
 }
 
 void SimWorker::grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance) {
+    if (m_world) {  // any body's outer particle
+        const int particle = m_world->pickAlongRay(toEigen(origin), toEigen(direction).normalized(), maxDistance);
+        if (particle < 0) return;
+        const Eigen::Vector3d at = Eigen::Map<const Eigen::Vector3d>(m_world->state().data() + 3 * particle);
+        m_world->grab(particle, at);
+        emit grabbed(particle, QVector3D(float(at.x()), float(at.y()), float(at.z())));
+        publish(true);
+        return;
+    }
     if (m_lanes.empty()) return;
     const Eigen::Vector3d o = toEigen(origin), d = toEigen(direction).normalized();
     const int particle = m_lanes.front().pickAlongRay(o, d, maxDistance);
@@ -247,6 +317,11 @@ void SimWorker::grabAlongRay(const QVector3D& origin, const QVector3D& direction
 }
 
 void SimWorker::moveAnchor(const QVector3D& anchor) {
+    if (m_world) {
+        m_world->moveAnchor(toEigen(anchor));
+        if (!m_pacer.running()) publish(true);
+        return;
+    }
     if (m_lanes.empty() || !m_lanes.front().pointer().active) return;
     Input input;
     input.kind = Input::Move;
@@ -267,6 +342,11 @@ void SimWorker::selectParticle(int particle) {
 }
 
 void SimWorker::release() {
+    if (m_world) {
+        m_world->release();
+        publish(true);
+        return;
+    }
     if (m_lanes.empty() || !m_lanes.front().pointer().active) return;
     Input input;
     input.kind = Input::Release;
@@ -280,6 +360,7 @@ void SimWorker::shutdown() {
     delete m_timer;  // a QTimer is stopped and destroyed on the thread that runs it
     m_timer = nullptr;
     m_lanes.clear();
+    m_world.reset();
     m_scene.reset();
     m_params = simcore::ParameterSet{};
     m_recorder.clear();
@@ -310,6 +391,10 @@ void SimWorker::recordRow() {
 }
 
 void SimWorker::tick() {
+    if (m_world && m_pacer.running()) {
+        tickWorld();
+        return;
+    }
     if (!m_pacer.running() || m_lanes.empty()) return;
     // Where the clock says simulated time should be by the end of this tick.
     const double target = m_pacer.beginTick(m_until >= 0.0);
@@ -344,6 +429,10 @@ void SimWorker::tick() {
 }
 
 void SimWorker::publish(bool force) {
+    if (m_world) {
+        if (m_pacer.frameDue(force)) publishWorld();
+        return;
+    }
     if (!m_pacer.frameDue(force) || m_lanes.empty()) return;
     auto frame = std::make_shared<Frame>();
     frame->scene = m_scene;

@@ -27,6 +27,7 @@
 // frames back while it re-simulates, and marks branches in the publisher; as a class of its
 // own it would need a way back into all of them and into this object's signals.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@
 #include <QVector3D>
 
 #include "simcore/timeline.h"
+#include "simcore/world.h"
 #include "ui/frame.h"
 #include "ui/frame_publisher.h"
 #include "ui/lanes.h"
@@ -67,6 +69,11 @@ public:
     // (time and step counter included), so the run resumes exactly. No start kick. A file that
     // cannot be built keeps the old scene and reports sceneRejected.
     void openScene(const simlab::SceneFile& file, const QStringList& integrators);
+    // A scene of several bodies: one simcore::World instead of the lanes (no side by side, no
+    // timeline yet). A world that cannot be built keeps the old scene and reports sceneRejected.
+    void setWorld(const simcore::WorldSpec& spec, const QString& integrator);
+    // The body (from 0) the parameter edits of a world go to; -1: every body.
+    void setWorldBody(int body);
     // Changes lane 0's integrator in place (single mode: the run continues from here).
     void setIntegrator(const QString& name);
     void setParameter(simcore::Param id, double value);
@@ -161,6 +168,21 @@ private:
     void replayForward(long target, bool inputsAtStartApplied);
     void goTo(long target);               // scrubTo without the frame
     TimelineInfo timelineInfo() const;
+
+    // --- a world (sim_worker_world.cpp) ---
+    bool worldMode() const { return m_world != nullptr; }
+    // Builds the world; with `from` (the world running so far) it goes on from that one's state
+    // (an edit that keeps the shape, an integrator change), else from its start.
+    bool buildWorld(const simcore::WorldSpec& spec, const std::string& integrator, const simcore::World* from);
+    void worldStarted();                  // a new world or its start again: rows, clocks, frame
+    void worldSceneData();
+    bool stepWorld();
+    void tickWorld();
+    void publishWorld();
+    void setWorldParameter(simcore::Param id, double value);
+    std::unique_ptr<simcore::World> m_world;
+    std::shared_ptr<const simcore::WorldSpec> m_worldSpec;  // the world's, shared with the frames
+    int m_worldBody = 0;
 
     Lanes m_lanes;
     Pacer m_pacer;

@@ -153,15 +153,24 @@ void SimulationController::setTimelineBudget(qulonglong bytes) { toWorker(&SimWo
 
 void SimulationController::setScene(const simcore::ParameterSet& params, const QStringList& integrators) {
     m_params = params;
+    m_isWorld = false;
     m_integrators = integrators;
     toWorker(&SimWorker::setScene, params, integrators);
 }
 void SimulationController::setScene(const simcore::ParameterSet& params) { setScene(params, m_integrators); }
 void SimulationController::openScene(const simlab::SceneFile& file, const QStringList& integrators) {
     m_params = file.params;
+    m_isWorld = file.world.has_value();
     m_integrators = integrators.isEmpty() ? QStringList{QString::fromStdString(file.integrator)} : integrators;
     toWorker(&SimWorker::openScene, file, m_integrators);
 }
+void SimulationController::setWorld(const simcore::WorldSpec& spec, const QString& integrator) {
+    m_params = spec.bodies.front().params;
+    m_integrators = {integrator};
+    m_isWorld = true;
+    toWorker(&SimWorker::setWorld, spec, integrator);
+}
+void SimulationController::setWorldBody(int body) { toWorker(&SimWorker::setWorldBody, body); }
 SceneCapture SimulationController::captureScene() {
     SceneCapture capture;
     // Behind every command already sent, so the text includes their effect.

@@ -59,6 +59,12 @@ public:
     // A scene file (already read and validated): its scene, parameters and exact state, in one
     // lane with the file's integrator, or side by side with the given integrators.
     void openScene(const simlab::SceneFile& file, const QStringList& integrators = {});
+    // A scene of several bodies (simcore::World; sim_worker_world.cpp), with one integrator.
+    void setWorld(const simcore::WorldSpec& spec, const QString& integrator = QStringLiteral("rk4"));
+    // The body (from 0; -1: every body) a world's parameter edits go to.
+    void setWorldBody(int body);
+    // Whether the scene asked for last is one of several bodies.
+    bool isWorld() const { return m_isWorld; }
     // Lane 0 as a scene file with its exact state. Blocks until the worker has applied every
     // command sent before and is between two steps (at most one tick, ~15 ms); the GUI never
     // reads the simulation itself.
@@ -136,6 +142,7 @@ private:
     simcore::ParameterSet m_params;
     QStringList m_integrators{QStringLiteral("rk4")};
     quint64 m_sceneVersion = 0;
+    bool m_isWorld = false;
 };
 
 // The history is capped: beyond this many rows every other old row is dropped.

@@ -124,6 +124,7 @@ StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability 
     m_measuredLabel->setFont(small);
     row->addWidget(m_measuredLabel, 1);
     layout->addLayout(row);
+    m_worldHost = host;
     setWidget(host);
     m_marginLabel->setText(tr("Waiting for a body…"));
 
@@ -143,7 +144,39 @@ void StabilityMapDock::setState(const simcore::ParameterSet& params, const QStri
     setState(params, QStringList{integrator});
 }
 
+void StabilityMapDock::setWorldNotice(bool world) {
+    if (world == m_worldShown) return;
+    m_worldShown = world;
+    if (!m_worldNotice) {
+        // The map of one body would be the wrong numbers for a world (its modes couple through
+        // contact): said instead of drawn.
+        m_worldNotice = new QLabel(tr("The stability map is for scenes of one body: a world of several bodies has the "
+                                      "modes of every body and of their contact, which the map does not compute yet. "
+                                      "Its largest stable DT is found by trying: Run with a larger DT until a step "
+                                      "fails."),
+                                   m_worldHost);
+        m_worldNotice->setObjectName(QStringLiteral("stabilityMapWorldNotice"));
+        m_worldNotice->setWordWrap(true);
+        m_worldNotice->setAlignment(Qt::AlignCenter);
+        static_cast<QVBoxLayout*>(m_worldHost->layout())->insertWidget(0, m_worldNotice);
+    }
+    m_worldNotice->setVisible(world);
+    if (world) {
+        m_hiddenForWorld.clear();
+        for (QWidget* child : m_worldHost->findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
+            if (child != m_worldNotice && !child->isHidden()) {
+                m_hiddenForWorld.push_back(child);
+                child->hide();
+            }
+    } else {
+        for (QWidget* child : m_hiddenForWorld) child->show();  // what was shown before
+        m_hiddenForWorld.clear();
+        m_hasState = false;  // the next setState maps again
+    }
+}
+
 void StabilityMapDock::setState(const simcore::ParameterSet& params, const QStringList& integrators) {
+    if (m_worldShown) return;
     if (integrators.isEmpty()) return;
     if (m_hasState && params == m_params && integrators == m_integrators) return;
     m_params = params;

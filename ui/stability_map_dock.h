@@ -57,6 +57,9 @@ public:
     // neither changed).
     void setState(const simcore::ParameterSet& params, const QString& integrator);
     void setState(const simcore::ParameterSet& params, const QStringList& integrators);
+    // A scene of several bodies: the dock says the map is for one body instead of drawing one.
+    void setWorldNotice(bool world);
+    bool showsWorldNotice() const { return m_worldShown; }
 
     // What is shown (for tests and the screenshot).
     QString integrator() const { return m_integrator; }  // the first view's (as asked)
@@ -161,6 +164,10 @@ private:
     std::optional<simlab::StabilityRow> m_scanRow;
     std::optional<std::complex<double>> m_measuredMark;
     QString m_measuredText;
+    QWidget* m_worldHost = nullptr;    // the map's widgets (set aside while a world is shown)
+    QLabel* m_worldNotice = nullptr;
+    bool m_worldShown = false;
+    std::vector<QWidget*> m_hiddenForWorld;  // children of m_worldHost hidden for the notice
 };
 
 }  // namespace elui

@@ -379,6 +379,7 @@ void Viewport::cleanup() {
     m_scratch.destroy();
     for (auto& s : m_springs) s.buffer.destroy();
     for (Elements* e : {&m_innerFaces, &m_outerFaces, &m_fill, &m_innerFan, &m_outerFan}) e->buffer.destroy();
+    releaseBodyFaces();
     glDeleteTextures(3, m_restTextures.data());
     glDeleteBuffers(3, m_restBuffers.data());
     m_uploadedScene.reset();
@@ -434,18 +435,45 @@ void Viewport::uploadScene() {
         for (const auto& t : tris) idx.insert(idx.end(), {GLuint(t[0]), GLuint(t[1]), GLuint(t[2])});
         return idx;
     };
-    upload(m_innerFaces, {});
-    upload(m_outerFaces, {});
-    upload(m_innerFan, {});
-    upload(m_outerFan, {});
+    // Every surface of a layer together (a world has one per body and layer).
+    std::array<std::vector<GLuint>, 2> faces, fans;
     for (const simcore::Surface& s : topo.surfaces) {
-        const bool inner = s.layer == simcore::Layer::Inner;
-        upload(inner ? m_innerFaces : m_outerFaces, triangles(s.triangles));
-        if (!s.edges.empty()) upload(inner ? m_innerFan : m_outerFan, loopFan(s));
+        const auto slot = std::size_t(s.layer == simcore::Layer::Inner ? 0 : 1);
+        const std::vector<GLuint> t = triangles(s.triangles);
+        faces[slot].insert(faces[slot].end(), t.begin(), t.end());
+        if (!s.edges.empty()) {
+            const std::vector<GLuint> fan = loopFan(s);
+            fans[slot].insert(fans[slot].end(), fan.begin(), fan.end());
+        }
     }
+    upload(m_innerFaces, faces[0]);
+    upload(m_outerFaces, faces[1]);
+    upload(m_innerFan, fans[0]);
+    upload(m_outerFan, fans[1]);
     upload(m_fill, triangles(topo.fillTriangles));
+    // Each body's own: the outer faces in 3D, the ring between the layers in 2D.
+    releaseBodyFaces();
+    m_bodyFaces.resize(scene.bodies.size());
+    for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+        const auto& b = scene.bodies[k];
+        const auto inside = [&](const std::array<int, 3>& t) { return t[0] >= b.first && t[0] < b.first + b.count; };
+        std::vector<std::array<int, 3>> own;
+        for (const auto& t : topo.fillTriangles)
+            if (inside(t)) own.push_back(t);
+        for (const simcore::Surface& s : topo.surfaces)
+            if (s.layer == simcore::Layer::Outer)
+                for (const auto& t : s.triangles)
+                    if (inside(t)) own.push_back(t);
+        m_bodyFaces[k].buffer.create();
+        upload(m_bodyFaces[k], triangles(own));
+    }
     m_vao.release();
     m_uploadedScene = m_frame->scene;
+}
+
+void Viewport::releaseBodyFaces() {
+    for (Elements& e : m_bodyFaces) e.buffer.destroy();
+    m_bodyFaces.clear();
 }
 
 void Viewport::uploadPositions(const LaneFrame& lane) {
@@ -605,7 +633,14 @@ void Viewport::paintGL() {
     if (m_options.box) drawBox();
 
     if (m_options.faces) {
-        if (flat) {
+        if (flat && scene.isWorld()) {
+            for (std::size_t k = 0; k < m_bodyFaces.size(); ++k) {
+                QVector4D hue = rgba(bodyColor(int(k)));
+                hue.setW(kOuterFill.w());
+                drawSurface(m_bodyFaces[k], hue, false);
+            }
+            drawPolygonStencil(m_innerFan, kInnerFill);
+        } else if (flat) {
             drawSurface(m_fill, kOuterFill, false);
             drawPolygonStencil(m_innerFan, kInnerFill);
         } else {
@@ -677,10 +712,21 @@ void Viewport::paintGL() {
         // The outer layer last and translucent: back faces first, then front faces.
         glDepthMask(GL_FALSE);
         glEnable(GL_CULL_FACE);
+        const auto outer = [&] {
+            if (!scene.isWorld()) {
+                drawSurface(m_outerFaces, kOuterFace, true);
+                return;
+            }
+            for (std::size_t k = 0; k < m_bodyFaces.size(); ++k) {
+                QVector4D hue = rgba(bodyColor(int(k)));
+                hue.setW(kOuterFace.w() + 0.15f);
+                drawSurface(m_bodyFaces[k], hue, true);
+            }
+        };
         glCullFace(GL_FRONT);
-        drawSurface(m_outerFaces, kOuterFace, true);
+        outer();
         glCullFace(GL_BACK);
-        drawSurface(m_outerFaces, kOuterFace, true);
+        outer();
         glDisable(GL_CULL_FACE);
         glDepthMask(GL_TRUE);
     }

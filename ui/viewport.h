@@ -164,6 +164,9 @@ private:
     std::array<Elements, 3> m_springs;
     std::array<GLuint, 3> m_restBuffers{}, m_restTextures{};
     Elements m_innerFaces, m_outerFaces, m_fill, m_innerFan, m_outerFan;
+    // A scene of several bodies: each body's outer faces (3D) or ring fill (2D), in its hue.
+    std::vector<Elements> m_bodyFaces;
+    void releaseBodyFaces();
     int m_particleCount = 0;
 
     // Mouse.

@@ -17,6 +17,7 @@
 #include "simcore/integrators.h"
 #include "simcore/scenes.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/output.h"
 #include "simlab/scenefile.h"
 #include "simlab/stability.h"

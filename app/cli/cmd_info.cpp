@@ -10,6 +10,8 @@
 #include "simcore/integrators.h"
 #include "simcore/scaling.h"
 #include "simcore/scenes.h"
+#include "simcore/world.h"
+#include "simlab/request.h"
 
 namespace cli {
 
@@ -22,6 +24,13 @@ Command addScenesCommand(CLI::App& app) {
                 for (const simcore::SceneInfo& s : simcore::sceneTable()) {
                     if (*json)
                         list.push_back({{"name", s.name}, {"description", s.description}, {"gas", simcore::hasGas(s.kind)}});
+                    else
+                        std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
+                }
+                for (const simcore::WorldSceneInfo& s : simcore::worldSceneTable()) {
+                    if (*json)
+                        list.push_back({{"name", s.name}, {"description", s.description}, {"gas", true},
+                                        {"bodies", simcore::worldScene(s.name)->bodies.size()}});
                     else
                         std::printf("%-18s %s\n", std::string(s.name).c_str(), std::string(s.description).c_str());
                 }
@@ -55,8 +64,54 @@ struct ParamsArgs {
     std::vector<std::string> set;
     std::optional<simcore::SceneKind> kind;
     std::optional<simcore::ParameterSet> params;  // the scene's, after --set
+    std::optional<simcore::WorldSpec> world;      // a scene of several bodies, after --set
     bool json = false;
 };
+
+// A scene of several bodies: the world's shared values, then what each body uses.
+int listWorldParams(const simcore::WorldSpec& spec) {
+    const simcore::ParameterSet& lead = spec.bodies.front().params;
+    std::printf("%s: %zu bodies; world parameters (shared by every body; --set key=value):\n", spec.name.c_str(),
+                spec.bodies.size());
+    for (const simcore::ParamSpec* s : simcore::parametersFor(lead.kind()))
+        if (simcore::isWorldParameter(s->id))
+            std::printf("  %-17s %-12g %-7s %s\n", std::string(s->key).c_str(), lead.get(s->id),
+                        s->unit.empty() ? "-" : std::string(s->unit).c_str(), std::string(s->meaning).c_str());
+    for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+        const simcore::WorldBodySpec& b = spec.bodies[k];
+        std::printf("\nbody%zu: %s (--set body%zu.key=value)\n", k + 1,
+                    std::string(simcore::sceneInfo(b.params.kind()).name).c_str(), k + 1);
+        std::printf("  %-17s (%g, %g, %g) m\n  %-17s (%g, %g, %g) m/s\n", "position_x/y/z", b.position.x(),
+                    b.position.y(), b.position.z(), "velocity_x/y/z", b.velocity.x(), b.velocity.y(), b.velocity.z());
+        for (const simcore::ParamSpec* s : simcore::parametersFor(b.params.kind()))
+            if (!simcore::isWorldParameter(s->id))
+                std::printf("  %-17s %-12g %-7s %s\n", std::string(s->key).c_str(), b.params.get(s->id),
+                            s->unit.empty() ? "-" : std::string(s->unit).c_str(), std::string(s->meaning).c_str());
+        std::printf("  this body uses:\n%s\n",
+                    simcore::bodyValuesText(b.params, simcore::bodyValues(b.params)).c_str());
+    }
+    return kExitOk;
+}
+
+// --json for a scene of several bodies: {"world": {key: value}, "bodies": [{"kind", "position",
+// "velocity", key: value...}]}, the values after --set.
+int listWorldParamsJson(const simcore::WorldSpec& spec) {
+    const simcore::ParameterSet& lead = spec.bodies.front().params;
+    nlohmann::ordered_json world = nlohmann::ordered_json::object();
+    for (const simcore::ParamSpec* s : simcore::parametersFor(lead.kind()))
+        if (simcore::isWorldParameter(s->id)) world[std::string(s->key)] = lead.get(s->id);
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+    for (const simcore::WorldBodySpec& b : spec.bodies) {
+        nlohmann::ordered_json body = {{"kind", simcore::sceneInfo(b.params.kind()).name},
+                                       {"position", {b.position.x(), b.position.y(), b.position.z()}},
+                                       {"velocity", {b.velocity.x(), b.velocity.y(), b.velocity.z()}}};
+        for (const simcore::ParamSpec* s : simcore::parametersFor(b.params.kind()))
+            if (!simcore::isWorldParameter(s->id)) body[std::string(s->key)] = b.params.get(s->id);
+        bodies.push_back(body);
+    }
+    printJson(nlohmann::ordered_json{{"scene", spec.name}, {"world", world}, {"bodies", bodies}});
+    return kExitOk;
+}
 
 // --json: the same listing as a JSON array (defaults as numbers; an inherited default as null
 // with "inherits": the key it follows; choices as a list of names).
@@ -144,6 +199,14 @@ Command addParamsCommand(CLI::App& app) {
     return {sub,
             [args] {
                 if (!args->scene) return;
+                if (simcore::worldScene(*args->scene)) {  // through the front door, as `run` takes it
+                    simlab::SceneRequest request;
+                    request.scene = *args->scene;
+                    request.set = args->set;
+                    request.severalBodies = true;
+                    args->world = simlab::resolveScene(request).world;
+                    return;
+                }
                 const simcore::SceneInfo* info = simcore::findScene(*args->scene);
                 if (!info)
                     throw UsageError(simcore::unknownSceneMessage(*args->scene));
@@ -154,7 +217,10 @@ Command addParamsCommand(CLI::App& app) {
                 if (auto error = simcore::validateShape(params)) throw UsageError(*error);
                 args->params = std::move(params);
             },
-            [args] { return listParams(*args); }};
+            [args] {
+                if (args->world) return args->json ? listWorldParamsJson(*args->world) : listWorldParams(*args->world);
+                return listParams(*args);
+            }};
 }
 
 }  // namespace cli

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "simcore/float_path.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/output.h"
 #include "simlab/timeseries.h"
 
@@ -130,7 +132,7 @@ struct RunArgs {
     std::string precision = "double";
     bool quiet = false, json = false;
     simcore::IntegratorOptions integrator;
-    SceneSetup setup;  // after check()
+    SceneSetup setup;  // after check(); setup.world for a scene of several bodies
 };
 
 void checkRun(RunArgs& args) {
@@ -140,6 +142,15 @@ void checkRun(RunArgs& args) {
     if (!dialect) throw UsageError("--csv-dialect: " + simlab::unknownCsvDialectMessage(args.dialectName));
     args.dialect = *dialect;
     args.setup = sceneSetup(args.scene);
+    if (args.setup.world) {
+        // A world's CSV has per-body columns (simlab::worldColumns); the workbook, the
+        // spreadsheet dialect and the float path are built for one body.
+        for (const auto& [given, option] : {std::pair{!args.xlsx.empty(), "--xlsx"},
+                                            {args.dialect != simlab::CsvDialect::Plain, "--csv-dialect excel-semicolon"},
+                                            {args.precision == "float", "--precision float"}})
+            if (given) throw UsageError(std::string(option) + " takes scenes of one body; " + args.setup.sceneName +
+                                        " has " + std::to_string(args.setup.world->bodies.size()) + " bodies");
+    }
     if (args.precision == "float" && !simcore::floatPathSupports(args.setup.integrator))
         throw UsageError("--precision float is built for the explicit integrators " + simcore::floatPathIntegrators() +
                          ", not " + args.setup.integrator);
@@ -167,17 +178,171 @@ void checkRun(RunArgs& args) {
     }
 }
 
+// Steps `sim` until `tEnd`, handing each step to `row` every --every steps and at the last.
+// Ctrl+C and SIGTERM (`signals`) stop it after a whole step; an adaptive method chooses its own
+// steps, so the same bound holds while it runs (a tolerance it cannot meet ends the run, exit 3,
+// instead of creeping on for ever).
+struct Stepped {
+    bool tooManySteps = false;
+    int stoppedBy = 0;  // the signal that stopped the run, or 0
+};
+template <class Sim, class Row>
+Stepped stepThrough(Sim& sim, const RunArgs& args, double tEnd, const StopSignals& signals, Row&& row) {
+    Stepped out;
+    const double tStart = sim.time();
+    const long firstStep = sim.stepCount();
+    ProgressLine progress(args.quiet || args.json);
+    while (sim.time() < tEnd - 1e-9 * sim.dt()) {
+        if (signals.caught()) break;
+        if (!sim.step(tEnd)) break;
+        const bool last = sim.time() >= tEnd - 1e-9 * sim.dt();
+        if (sim.stepCount() % args.every == 0 || last) row();
+        if (static_cast<double>(sim.stepCount() - firstStep) >= args.maxSteps && !last) {
+            out.tooManySteps = true;
+            break;
+        }
+        progress.update(sim.time() - tStart, tEnd - tStart, "s", sim.stepCount() - firstStep);
+    }
+    progress.clear();
+    out.stoppedBy = signals.caught();
+    return out;
+}
+
+// One body's run on the double path or on the float path (--precision float), as stepThrough
+// steps it.
+struct BodyStepper {
+    simcore::Simulation& sim;
+    simcore::FloatSimulation* single;  // null: the double path
+    double time() const { return single ? single->time() : sim.time(); }
+    long stepCount() const { return single ? single->stepCount() : sim.stepCount(); }
+    double dt() const { return sim.dt(); }
+    bool step(double tEnd) { return single ? single->step() : sim.step(tEnd); }
+};
+
+void printWorldSummary(const simcore::World& world, double wallSeconds) {
+    const simcore::WorldDiagnostics& d = world.diagnostics();
+    std::printf("scene        %s (%d bodies, %d particles)\n", world.spec().name.c_str(), world.bodyCount(),
+                world.particleCount());
+    std::printf("integrator   %s, dt %g s, %ld steps, t = %g s\n", std::string(world.integrator().name()).c_str(),
+                world.dt(), d.step, d.time);
+    std::printf("energy       kinetic %.6g J, spring %.6g J, gravity %.6g J, gas %.6g J, contact %.6g J (between "
+                "bodies %.6g J), total %.6g J\n",
+                d.kinetic, d.springTotal(), d.gravity, d.gas, d.contact, d.contactPairs, d.total());
+    std::printf("removed      damping %.6g J, contact %.6g J; balance drift %.3g J\n", d.removedDamping,
+                d.removedContact, d.energyDrift());
+    for (int k = 0; k < world.bodyCount(); ++k) {
+        const simcore::BodyDiagnostics& b = d.bodies[static_cast<std::size_t>(k)];
+        std::printf("body %-7d mass %.6g kg, centre (%.6g, %.6g, %.6g) m, velocity (%.6g, %.6g, %.6g) m/s, volume "
+                    "inner %.6g, outer %.6g\n",
+                    k + 1, b.mass, b.com.x(), b.com.y(), b.com.z(), b.velocity.x(), b.velocity.y(), b.velocity.z(),
+                    b.volume[0], b.volume[1]);
+    }
+    std::printf("momentum     (%.9g, %.9g, %.9g) kg m/s; min gap %.6g m\n", d.momentum.x(), d.momentum.y(),
+                d.momentum.z(), d.minGap);
+    std::printf("cost         %llu force evaluations, %.3f s wall, %.0f steps/s\n",
+                static_cast<unsigned long long>(d.forceEvaluations), wallSeconds,
+                wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0);
+}
+
+// --json for a scene of several bodies: the world's totals, then each body's.
+void printWorldSummaryJson(const simcore::World& world, double wallSeconds, const std::string& status) {
+    const simcore::WorldDiagnostics& d = world.diagnostics();
+    const auto vec = [](const Eigen::Vector3d& v) { return nlohmann::ordered_json{v.x(), v.y(), v.z()}; };
+    nlohmann::ordered_json j = {{"scene", world.spec().name}, {"bodies_count", world.bodyCount()},
+                                {"particles", world.particleCount()}, {"integrator", world.integrator().name()},
+                                {"dt", world.dt()}, {"steps", d.step}, {"t", d.time}, {"status", status}};
+    if (world.failed())
+        j["failure"] = {{"reason", *world.failure()}, {"step", world.failedStep()}, {"time", world.failedTime()}};
+    j["energy"] = {{"kinetic", d.kinetic}, {"spring", d.springTotal()}, {"gravity", d.gravity}, {"gas", d.gas},
+                   {"contact", d.contact}, {"contact_bodies", d.contactPairs}, {"total", d.total()}};
+    j["removed"] = {{"damping", d.removedDamping}, {"contact", d.removedContact}};
+    j["energy_drift"] = d.energyDrift();
+    j["momentum"] = vec(d.momentum);
+    j["angular_momentum"] = vec(d.angularMomentum);
+    j["min_gap"] = d.minGap;
+    nlohmann::ordered_json bodies = nlohmann::ordered_json::array();
+    for (const simcore::BodyDiagnostics& b : d.bodies)
+        bodies.push_back({{"mass", b.mass}, {"com", vec(b.com)}, {"velocity", vec(b.velocity)},
+                          {"volume_inner", b.volume[0]}, {"volume_outer", b.volume[1]},
+                          {"pressure_inner", b.pressure[0]}, {"pressure_outer", b.pressure[1]}});
+    j["bodies"] = bodies;
+    j["cost"] = {{"force_evaluations", d.forceEvaluations}, {"wall_seconds", wallSeconds},
+                 {"steps_per_second", wallSeconds > 0 ? static_cast<double>(d.step) / wallSeconds : 0.0}};
+    printJson(j);
+}
+
+// Opens an output before running (an unwritable path is bad input, found at once); null when
+// the option was not given.
+std::unique_ptr<simlab::AtomicFile> openOutput(const std::string& path) {
+    if (path.empty()) return nullptr;
+    auto file = std::make_unique<simlab::AtomicFile>(path);
+    if (!file->ok()) throw UsageError(file->error());
+    return file;
+}
+
+// A scene of several bodies: its CSV with the per-body columns, the state with a body column,
+// the scene file of every body; the same signals, bounds and all-or-none outputs as one body's.
+int runWorld(const RunArgs& args) {
+    const SceneSetup& setup = args.setup;
+    const std::unique_ptr<simlab::AtomicFile> csv = openOutput(args.csv), state = openOutput(args.state),
+                                              sceneOut = openOutput(args.saveScene);
+    std::optional<simcore::World> built;
+    try {
+        built.emplace(*setup.world, setup.integrator);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    simcore::World& world = *built;
+    world.setIntegratorOptions(args.integrator);
+    if (setup.state)  // resume a saved experiment
+        if (auto error = simlab::applyState(world, *setup.state)) throw UsageError(*error);
+    const auto columns = simlab::worldColumns(world);
+    if (csv) {
+        csv->write(simlab::csvHeader(columns));
+        csv->write(simlab::csvRow(columns, world.diagnostics()));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const double tEnd = world.time() + args.duration;  // a resumed run continues from its saved time
+    const StopSignals signals;  // Ctrl+C, SIGTERM: stop after a whole step, write the run so far
+    const Stepped stepped = stepThrough(world, args, tEnd, signals, [&] {
+        if (csv) csv->write(simlab::csvRow(columns, world.diagnostics()));
+    });
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (state) state->write(simlab::stateTable(world));
+    if (sceneOut) sceneOut->write(simlab::sceneFileText(world, true));
+    if (auto error = simlab::commitAll({csv.get(), state.get(), sceneOut.get()})) {
+        std::fprintf(stderr, "error: %s\n", error->c_str());
+        return kExitBadInput;
+    }
+    const char* status = stepped.stoppedBy || stepped.tooManySteps ? "stopped" : world.failed() ? "failed" : "ok";
+    if (args.json)
+        printWorldSummaryJson(world, wall, status);
+    else if (!args.quiet)
+        printWorldSummary(world, wall);
+    if (stepped.stoppedBy) {
+        std::fprintf(stderr, "run stopped by %s at step %ld, t = %g s; the files hold the run so far\n",
+                     StopSignals::name(stepped.stoppedBy), world.stepCount(), world.time());
+        return 128 + stepped.stoppedBy;
+    }
+    if (stepped.tooManySteps) {
+        std::fprintf(stderr, "run stopped at step %ld, t = %g s: %.0f steps taken, the most one run may take "
+                             "(--max-steps); the files hold the run so far\n",
+                     world.stepCount(), world.time(), args.maxSteps);
+        return kExitFailed;
+    }
+    if (world.failed()) {
+        std::fprintf(stderr, "simulation failed at step %ld, t = %g s: %s\n", world.failedStep(), world.failedTime(),
+                     world.failure()->c_str());
+        return kExitFailed;
+    }
+    return kExitOk;
+}
+
 int run(const RunArgs& args) {
+    if (args.setup.world) return runWorld(args);
     const SceneSetup& setup = args.setup;
     const double duration = args.duration;
-    const long every = args.every;
-    // Open every output before running: an unwritable path is bad input, found at once.
-    std::unique_ptr<simlab::AtomicFile> state, sceneOut;
-    for (auto [path, file] : {std::pair{&args.state, &state}, {&args.saveScene, &sceneOut}}) {
-        if (path->empty()) continue;
-        *file = std::make_unique<simlab::AtomicFile>(*path);
-        if (!(*file)->ok()) throw UsageError((*file)->error());
-    }
+    const std::unique_ptr<simlab::AtomicFile> state = openOutput(args.state), sceneOut = openOutput(args.saveScene);
 
     simcore::Simulation sim(setup.params, setup.integrator);
     sim.setIntegratorOptions(args.integrator);
@@ -201,27 +366,12 @@ int run(const RunArgs& args) {
     const bool recording = !args.csv.empty() || !args.xlsx.empty();
     if (recording) series.add(diagnostics());
     const auto start = std::chrono::steady_clock::now();
-    const double tStart = time();
-    const double tEnd = tStart + duration;  // a resumed run continues from its saved time
-    // An adaptive method chooses its own steps: the same bound holds while it runs (a
-    // tolerance it cannot meet ends the run, exit 3, instead of creeping on for ever).
-    const long firstStep = stepCount();
-    bool tooManySteps = false;
+    const double tEnd = time() + duration;  // a resumed run continues from its saved time
     const StopSignals signals;  // Ctrl+C, SIGTERM: stop after a whole step, write the run so far
-    ProgressLine progress(args.quiet || args.json);
-    while (time() < tEnd - 1e-9 * sim.dt()) {
-        if (signals.caught()) break;
-        if (!(single ? single->step() : sim.step(tEnd))) break;
-        const bool last = time() >= tEnd - 1e-9 * sim.dt();
-        if (recording && (stepCount() % every == 0 || last)) series.add(diagnostics());
-        if (static_cast<double>(stepCount() - firstStep) >= args.maxSteps && !last) {
-            tooManySteps = true;
-            break;
-        }
-        progress.update(time() - tStart, duration, "s", stepCount() - firstStep);
-    }
-    progress.clear();
-    const int stoppedBy = signals.caught();
+    BodyStepper stepper{sim, single.get()};
+    const auto [tooManySteps, stoppedBy] = stepThrough(stepper, args, tEnd, signals, [&] {
+        if (recording) series.add(diagnostics());
+    });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (single) {
         // The state table and the scene file from the float state, in double (a saved scene
@@ -286,8 +436,11 @@ int run(const RunArgs& args) {
 Command addRunCommand(CLI::App& app) {
     auto args = std::make_shared<RunArgs>();
     CLI::App* sub = app.add_subcommand("run", "run one scene headless: a CSV row every N steps, the final state table, "
-                                              "a summary of energy, volume and cost");
+                                              "a summary of energy, volume and cost. Scenes of several bodies "
+                                              "(collide2d, collide3d, stack3d) take --set bodyN.key=value for body N "
+                                              "(from 1; key=value sets every body) and position_x/y/z, velocity_x/y/z");
     addSceneOptions(*sub, args->scene);
+    args->scene.severalBodies = true;  // scenes of several bodies run here (bodyN.key=value)
     sub->add_option("--duration", args->duration, "simulated time to run [s] (a resumed scene file runs on from its time)")
         ->type_name("T")
         ->check(finiteIn(0.0, 1e7, true))

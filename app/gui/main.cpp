@@ -37,6 +37,7 @@
 #include "simcore/params.h"
 #include "simcore/scaling.h"
 #include "simcore/scenes.h"
+#include "simcore/world.h"
 #include "simlab/output.h"
 #include "simlab/request.h"
 #include "simlab/scenefile.h"
@@ -246,9 +247,15 @@ int main(int argc, char** argv) {
     const QString sceneArg = positional.isEmpty() ? parser.value(sceneOpt) : positional.front();
     simlab::SceneRequest request;
     request.scene = sceneArg.toStdString();
+    request.severalBodies = true;  // the window runs scenes of several bodies (--set bodyN.key=value)
     if (preset && !sceneGiven) {
-        request.base = preset->parameters();
-        request.scene = simcore::sceneInfo(request.base->kind()).name;
+        if (std::optional<simcore::WorldSpec> presetWorld = preset->world()) {  // a lesson of several bodies
+            request.scene = presetWorld->name;
+            request.baseWorld = std::move(presetWorld);
+        } else {
+            request.base = preset->parameters();
+            request.scene = simcore::sceneInfo(request.base->kind()).name;
+        }
     }
     for (const QString& assignment : parser.values(setOpt)) request.set.push_back(assignment.toStdString());
     if (parser.isSet(integratorOpt)) request.integrator = parser.value(integratorOpt).toStdString();
@@ -259,6 +266,10 @@ int main(int argc, char** argv) {
         return fail(QString::fromStdString(e.what()));
     }
     const std::optional<simlab::SceneFile>& file = setup.file;
+    const std::optional<simcore::WorldSpec>& world = setup.world;
+    if (world && (parser.isSet(compareOpt) || parser.isSet(travelOpt)))
+        return fail(QStringLiteral("--compare and --travel-back take scenes of one body (a world runs alone, "
+                                   "without a timeline yet)"));
     const simcore::ParameterSet& params = setup.params;
     QStringList integrators{QString::fromStdString(setup.integrator)};
     if (preset && !parser.isSet(integratorOpt) && !file) integrators = preset->integrators;
@@ -396,7 +407,16 @@ int main(int argc, char** argv) {
     }
     elui::SimulationController* controller = window.controller();
     if (parser.isSet(doublingOpt)) window.runDock()->findChild<QCheckBox*>(QStringLiteral("stepDoubling"))->setChecked(true);
-    if (file) {
+    if (world) {
+        if (file) {
+            simlab::SceneFile changed = *file;
+            changed.world = world;
+            changed.integrator = integrators.front().toStdString();
+            window.openScene(changed, integrators, sceneArg, &*file);
+        } else {
+            window.startWorld(*world, integrators.front());
+        }
+    } else if (file) {
         simlab::SceneFile changed = *file;
         changed.params = params;
         changed.integrator = integrators.front().toStdString();

@@ -24,11 +24,11 @@ from typing import Any, Callable, Iterable, Mapping, Optional, Sequence, Union
 import numpy as np
 
 from . import _core
-from ._core import SimulationFailed, __version__
+from ._core import SimulationFailed, WorldBody, __version__
 from ._sweep import decades, integers, linear, log, loguniform, sweep, uniform
 
 __all__ = [
-    "Simulation", "SimulationFailed", "scenes", "integrators", "parameters", "study", "refinement",
+    "Simulation", "World", "WorldBody", "SimulationFailed", "scenes", "world_scenes", "integrators", "parameters", "study", "refinement",
     "stability", "conservation", "sweep", "linear", "log", "decades", "uniform", "loguniform", "integers", "__version__",
 ]
 
@@ -84,6 +84,11 @@ def integrator_options(options: Optional[Mapping[str, Any]] = None, **keywords: 
 def scenes() -> list[str]:
     """The built-in scene names (spring1d, ring2d, sphere3d, ...)."""
     return _core.scenes()
+
+
+def world_scenes() -> list[str]:
+    """The built-in scenes of several bodies (collide2d, collide3d, stack3d): ``World(name)``."""
+    return _core.world_scenes()
 
 
 def integrators() -> list[dict]:
@@ -287,6 +292,103 @@ class Simulation(_core.Simulation):
         if o.get("max_step") == 0:
             o["max_step"] = None
         return o
+
+
+class World(_core.World):
+    """Several two-layer bodies in one box, stepped as one ODE by any integrator; they meet
+    through a contact force between their outer layers (docs/model.md "Several bodies").
+
+    Parameters
+    ----------
+    scene : str or path, optional
+        A built-in scene of several bodies (``world_scenes()``: collide2d, collide3d, stack3d) or
+        a scene file of several bodies (.json), which resumes with its saved state.
+    bodies : list of dict, optional
+        Instead of a scene: one dict per body, ``{"kind": "sphere3d", "position": (x, y, z) [m],
+        "velocity": (vx, vy, vz) [m/s], "mass": 4, ...}`` (kind: ring2d, sphere3d or
+        sphere3d-latlong; any body parameter by key). ValueError names the body: ``body2.mass``.
+    set : list of str, optional
+        ``["body2.mass=4", "offset=0.5"]``: the CLI's ``--set``, one body with a ``bodyN.`` prefix
+        (bodies counted from 1).
+    integrator, rtol, atol, ..., options
+        As for Simulation.
+    **parameters
+        Set every body (``gravity=0``, ``ks=900``) or the scene (``offset=0.5``).
+
+    ``bodies`` are views of each body (positions, velocities, parameters, diagnostics) that follow
+    the world as it steps. A World pickles (scene file with state): a copy goes on bit for bit.
+    """
+
+    __slots__ = ()
+
+    def __init__(self, scene: Optional[PathLike] = None, *, bodies: Optional[Sequence[Mapping[str, Any]]] = None,
+                 set: Optional[Sequence[str]] = None, integrator: Optional[str] = None,
+                 rtol: Optional[float] = None, atol: Optional[float] = None, min_step: Optional[float] = None,
+                 max_step: Optional[float] = None, fixed_step: Optional[bool] = None,
+                 error_estimate: Optional[bool] = None, newton: Optional[int] = None,
+                 cg_tolerance: Optional[float] = None, cg_max_iterations: Optional[int] = None,
+                 options: Optional[Mapping[str, Any]] = None, **parameters: Any) -> None:
+        opts = integrator_options(options, rtol=rtol, atol=atol, min_step=min_step, max_step=max_step,
+                                  fixed_step=fixed_step, error_estimate=error_estimate, newton=newton,
+                                  cg_tolerance=cg_tolerance, cg_max_iterations=cg_max_iterations)
+        if scene is None and bodies is None:
+            raise ValueError("World needs a scene (" + ", ".join(_core.world_scenes()) + ", a .json file) or bodies=[...]")
+        super().__init__(scene, bodies=None if bodies is None else [dict(b) for b in bodies],
+                         set=None if set is None else list(set), integrator=integrator, options=opts, **parameters)
+
+    def run(self, duration: float, *, every: Optional[float] = None, t_eval: Optional[Sequence[float]] = None,
+            every_steps: Optional[int] = None,
+            progress: Union[None, bool, Callable[[float], Any]] = None) -> np.ndarray:
+        """As Simulation.run: a structured array of the sampled rows, a field per column of
+        ``diagnostics_columns`` (the world's energies and ledger, per-body columns with the body
+        number as suffix: ``com_x_2`` [m], ``volume_outer_1``, ...; ``momentum_x`` [kg m/s],
+        ``min_gap`` [m])."""
+        return _sampled_run(self, super().run, duration, every, t_eval, every_steps, progress)
+
+    def _named(self, table: np.ndarray) -> np.ndarray:
+        return Simulation._named(self, table)
+
+    @property
+    def diagnostics(self) -> dict:
+        """The CSV row as a dict; error_estimate [m] is None when the last step had none."""
+        d = dict(super().diagnostics)
+        if d.get("error_estimate", 0) < 0:
+            d["error_estimate"] = None
+        return d
+
+
+def _sampled_run(sim, run, duration, every, t_eval, every_steps, progress) -> np.ndarray:
+    """World.run: the sample times from `t_eval` (or `every` seconds, turned into times by the
+    core once the front door has bounded the rows), then the C++ run."""
+    if sum(x is not None for x in (every, t_eval, every_steps)) > 1:
+        raise ValueError("give one of every (seconds), t_eval (times) and every_steps (steps)")
+    start = sim.time
+    times: Optional[list] = None
+    if every_steps is None:
+        if every is not None:
+            if isinstance(every, bool) or not np.isfinite(every) or not 0 < every <= 1e7:
+                raise ValueError(f"every = {every!r} is out of range; allowed (0, 1e+07] s")
+            times = None  # built by the core after the front door has bounded the rows
+        elif t_eval is not None:
+            times = [float(t) for t in np.asarray(t_eval, dtype=float).ravel()]
+            end = start + float(duration)
+            if any(not np.isfinite(t) for t in times) or any(b <= a for a, b in zip(times, times[1:])):
+                raise ValueError("t_eval: expected finite times in ascending order [s]")
+            if times and (times[0] < start - 1e-12 * max(1.0, abs(start)) or times[-1] > end * (1 + 1e-12) + 1e-12):
+                raise ValueError(f"t_eval: times must lie within [{start:g}, {end:g}] s, the run's span")
+        else:
+            times = [start]
+    callback = _progress_callback(progress, start, float(duration) if np.isfinite(duration) else 0.0)
+    try:
+        table = run(duration, every=every_steps, times=times, progress=callback, every_seconds=every)
+    except SimulationFailed as e:
+        if getattr(e, "rows", None) is not None:
+            e.rows = sim._named(e.rows)
+        raise
+    finally:
+        if callback is not None and hasattr(callback, "close"):
+            callback.close()
+    return sim._named(table)
 
 
 def _progress_callback(progress, start: float, duration: float):

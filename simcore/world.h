@@ -1,0 +1,230 @@
+#pragma once
+// World: several two-layer bodies in one box, stepped as one ODE by any integrator
+// (MODEL.md "Several bodies"; the thesis's future work, section 8.3).
+//
+// Where the parts live:
+//   internal/world_body.h  one body: its parameters, its built body placed at its start, its force
+//                    model and BodyOde (the one-body simulation's pieces)
+//   internal/world_ode.h   the bodies side by side as one ODE, with the pairs' forces and Jacobians
+//   contact_pairs.h  body-body and self contact: the barrier force, the broad phase, gaps and
+//                    the exact intersection test
+//   world.h          (this) the world's description (WorldSpec: built-in scenes, bodyN.key
+//                    settings, the checks before a run), its stepping and its diagnostics
+//
+// A step: size (dt, or the adaptive method's proposal, no particle crossing a tenth of the
+// box), integrate (inside StepDoubling when its error is estimated), the exact intersection
+// test, measure, check, commit. Nothing passes through: the pair potential is a barrier
+// (contact_pairs.h), and a step that ends with two elements crossing is refused. An adaptive
+// method retries it at half the step (step control); a fixed-step method cannot shorten its
+// step, so its run fails with the two bodies named (an intersection is a failure, like a
+// layer turned inside out).
+//
+// One-body scenes do not come here: Simulation (simulation.h) runs them, unchanged.
+
+#include <array>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "simcore/body.h"
+#include "simcore/contact_pairs.h"
+#include "simcore/forces.h"
+#include "simcore/integrators.h"
+#include "simcore/params.h"
+#include "simcore/step_doubling.h"
+
+namespace simcore {
+
+class WorldBody;
+class WorldOde;
+
+// What a world's body is made of before it is built.
+struct WorldBodySpec {
+    ParameterSet params{SceneKind::Sphere3d};
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  // start centre (centroid) [m]
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // start velocity of every particle [m/s]
+};
+
+// The most bodies a world may hold (the CLI refuses more before anything is built).
+inline constexpr int kMaxBodies = 16;
+
+// A world before it is built: its bodies (world parameters are every body's own copy, kept
+// equal by setWorldValue), and the name of the scene it came from.
+struct WorldSpec {
+    std::string name;
+    std::vector<WorldBodySpec> bodies;
+};
+
+// The built-in scenes of several bodies: collide2d, collide3d, stack3d.
+struct WorldSceneInfo {
+    std::string_view name;
+    std::string_view description;
+};
+std::span<const WorldSceneInfo> worldSceneTable();
+// The scene's description, or nothing when `name` is not a scene of several bodies.
+std::optional<WorldSpec> worldScene(std::string_view name);
+
+// Parameters shared by all bodies: gravity, the box, contact, the pointer, time.
+bool isWorldParameter(Param id);
+// The per-body start keys besides the parameter table's: position_x/y/z, velocity_x/y/z.
+bool isStartVectorKey(std::string_view key);
+
+// One --set assignment, "bodyN.key=value" (N from 1) or "key=value" (every body; a world
+// parameter: the world). Returns the one-line message naming the body and the key when it
+// is refused (a body the scene does not have, a world parameter given to one body, a key no
+// body of the scene has, a value out of range).
+std::optional<std::string> assignWorld(WorldSpec& spec, std::string_view assignment);
+// What no single assignment can decide, before anything is built: 1..kMaxBodies bodies, of
+// one dimension, none of them 1D; every body's shape; bodies that overlap (their outer
+// spheres, with the contact skin) or stick out of the box at the start. The message names the
+// body or bodies.
+std::optional<std::string> validateWorld(const WorldSpec& spec);
+
+// What the world measures per body at the end of each step.
+struct BodyDiagnostics {
+    std::array<double, 2> volume{};      // [inner, outer] (area in 2D)
+    std::array<double, 2> restVolume{};
+    std::array<double, 2> pressure{};
+    Eigen::Vector3d com = Eigen::Vector3d::Zero();       // centre of mass [m]
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // of the centre of mass [m/s]
+    double mass = 0.0;                                   // [kg]
+    double kinetic = 0.0;                                // [J]
+};
+
+struct WorldDiagnostics {
+    long step = 0;
+    double time = 0.0;
+    double dt = 0.0;
+    double kinetic = 0.0;
+    std::array<double, 3> spring{};      // per family [J]
+    double gravity = 0.0;
+    double gas = 0.0;
+    double contact = 0.0;                // walls, layer barriers and the pairs [J]
+    double contactPairs = 0.0;           // the pairs' part of it [J]
+    double pointer = 0.0;                // the mouse spring's energy [J]
+    double workPointer = 0.0;            // work done by moving the pointer [J]
+    double removedDamping = 0.0;
+    double removedContact = 0.0;
+    double initialEnergy = 0.0;
+    double errorEstimate = -1.0;
+    std::uint64_t forceEvaluations = 0;
+    std::vector<BodyDiagnostics> bodies;
+    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();         // sum m v [kg m/s]
+    Eigen::Vector3d angularMomentum = Eigen::Vector3d::Zero();  // sum x x m v about the origin [kg m^2/s]
+    // The smallest distance between two bodies' outer surfaces or two non-adjacent elements
+    // of one outer surface [m], exact up to World::gapRange(); nothing that close: the range.
+    double minGap = std::numeric_limits<double>::infinity();
+    std::array<int, 2> minGapBodies{-1, -1};  // 0-based, of the closest pair within range (equal: self)
+    int contactPairsActive = 0;                                // pairs within the skin
+
+    double springTotal() const { return spring[0] + spring[1] + spring[2]; }
+    double potential() const { return springTotal() + gravity + gas + pointer + contact; }
+    double total() const { return kinetic + potential(); }
+    double removed() const { return removedDamping + removedContact; }
+    double energyDrift() const { return total() + removed() - workPointer - initialEnergy; }
+};
+
+class World {
+public:
+    // Throws std::invalid_argument for an unknown integrator, or a world validateWorld refuses.
+    World(const WorldSpec& spec, std::string_view integrator);
+    ~World();
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    bool step(double until = std::numeric_limits<double>::infinity());
+    bool advanceTo(double tEnd);
+    void reset();
+    // Restores a saved state (every particle in the world's numbering, 3 x particleCount()), at
+    // `step` and `time`: the accounts start again from it (as Simulation::setState), a failure
+    // is cleared. Throws std::invalid_argument when the sizes do not fit.
+    void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step, double time);
+    // An adaptive method's next proposed step [s] (saved with the state so a resume is exact).
+    double nextStep() const { return m_hNext; }
+    void setNextStep(double h) { m_hNext = h; }
+
+    bool failed() const { return m_failure.has_value(); }
+    const std::optional<std::string>& failure() const { return m_failure; }
+    long failedStep() const { return m_failedStep; }
+    double failedTime() const { return m_failedTime; }
+    const WorldDiagnostics& diagnostics() const { return m_diag; }
+    double time() const { return m_diag.time; }
+    long stepCount() const { return m_diag.step; }
+    double dt() const { return m_dt; }
+    double boxHalfSize() const { return m_box; }
+    const Integrator& integrator() const { return *m_integrator; }
+    void setIntegratorOptions(const IntegratorOptions& options);
+    const IntegratorOptions& integratorOptions() const { return m_options; }
+
+    const WorldSpec& spec() const { return m_spec; }
+    int bodyCount() const { return static_cast<int>(m_bodies.size()); }
+    // Body k (from 0) as built and placed at its start, its first particle in the world's
+    // numbering and its particle count.
+    const Body& body(int k) const;
+    int firstParticle(int k) const;
+    int bodyParticles(int k) const;
+    int dimension() const { return m_dimension; }
+    int particleCount() const { return static_cast<int>(m_n / 3); }
+    const Eigen::VectorXd& state() const { return m_y; }
+    // Body k's positions and velocities (3 x its particles).
+    Eigen::Map<const Eigen::Matrix3Xd> positions(int k) const;
+    Eigen::Map<const Eigen::Matrix3Xd> velocities(int k) const;
+    const PairContactParams& pairContact() const { return m_contact; }
+    // How far min_gap is measured exactly: twice the contact skin. Farther gaps read as the
+    // range (a query's cost grows with the square of its reach: at the rest gap between
+    // non-adjacent elements of one layer, about an edge, it would cost more than the forces).
+    double gapRange() const { return 2.0 * m_contact.skin; }
+    ContactPairs& pairs() { return m_pairs; }
+
+    // --- the pointer (the GUI's mouse drag): one spring from a particle of any body to an anchor
+    // (particles numbered as the world's; its energy and the work it does are in the ledger).
+    int pickAlongRay(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double maxDistance) const;
+    void grab(int particle, const Eigen::Vector3d& anchor);
+    void moveAnchor(const Eigen::Vector3d& anchor);
+    void release();
+    // The held particle (world numbering; -1 when none) and its anchor.
+    int heldParticle() const { return m_held; }
+    Eigen::Vector3d anchor() const;
+    // The body (from 0) a world particle belongs to.
+    int bodyOf(int particle) const;
+    // Every particle's layer, the bodies side by side.
+    const std::vector<Layer>& layers() const { return m_layers; }
+
+    // Measures the current state into d (everything but the accounts and counters).
+    void measure(WorldDiagnostics& d);
+
+private:
+    void fail(std::string reason, double t0);
+
+    WorldSpec m_spec;
+    std::vector<std::unique_ptr<WorldBody>> m_bodies;
+    ContactPairs m_pairs;
+    PairContactParams m_contact;
+    std::unique_ptr<WorldOde> m_ode;
+    std::unique_ptr<Integrator> m_integrator;
+    IntegratorOptions m_options;
+    StepDoubling m_doubling;
+    int m_dimension = 3;
+    Eigen::Index m_n = 0;
+    Eigen::VectorXd m_y, m_lastGood;
+    Eigen::VectorXd m_rate;  // dy/dt of measure()'s evaluation
+    WorldDiagnostics m_diag;
+    double m_timeCarry = 0.0;
+    double m_dt = 0.003, m_box = 1.0;
+    double m_hNext = 0.003;
+    std::uint64_t m_jacobianProducts = 0;  // counted as force evaluations (CVODE)
+    std::optional<std::string> m_failure;
+    std::vector<Layer> m_layers;
+    int m_held = -1;
+    void pointerChanged(const PointerSpring& pointer, int body);
+    long m_failedStep = 0;
+    double m_failedTime = 0.0;
+};
+
+}  // namespace simcore

@@ -1,0 +1,208 @@
+// Scenes of several bodies in the window (issue 26), offscreen: the frames carry every body,
+// the Parameters dock edits one body (or all), the Bodies dock reads momentum and min_gap and
+// plots per body, a body is added and removed, the mouse drags a particle of any body, and what
+// a world has not yet (the stability map, the studies, side by side) says so.
+#include <cmath>
+
+#include <QAction>
+#include <QComboBox>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QTest>
+
+#include "simcore/world.h"
+#include "test_support.h"
+#include "ui/bodies_dock.h"
+#include "ui/main_window.h"
+#include "ui/parameter_dock.h"
+#include "ui/plot_dock.h"
+#include "ui/simulation_controller.h"
+#include "ui/stability_map_dock.h"
+
+using namespace elui;
+using testsupport::waitUntil;
+
+namespace {
+
+bool waitForFrame(const SimulationController& c, const std::function<bool(const Frame&)>& pred) {
+    return waitUntil([&] { return c.latest() && pred(*c.latest()); });
+}
+
+simcore::WorldSpec scene(const char* name, std::initializer_list<const char*> set) {
+    simcore::WorldSpec spec = *simcore::worldScene(name);
+    for (const char* a : set)
+        if (auto error = simcore::assignWorld(spec, a)) qFatal("%s", error->c_str());
+    return spec;
+}
+
+}  // namespace
+
+class TestGuiWorld : public QObject {
+    Q_OBJECT
+private slots:
+    void aWorldInTheWindow() {
+        MainWindow window(false);
+        window.show();
+        SimulationController* c = window.controller();
+        window.startWorld(scene("collide2d", {"gravity=0", "body2.mass=4"}));
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world != nullptr; }));
+        const Frame& first = *c->latest();
+        // Every body's particles in the one lane, the scene split by body.
+        QCOMPARE(first.scene->bodies.size(), std::size_t{2});
+        const int particles = first.scene->bodies[1].first + first.scene->bodies[1].count;
+        QCOMPARE(int(first.lanes[0].positions.size()), 3 * particles);
+        QCOMPARE(first.scene->topology.particleCount(), particles);
+        QCOMPARE(first.worldSpec->bodies.size(), std::size_t{2});
+        // The Plots dock has the world's energy, not one body's volume; the Bodies dock opened.
+        QVERIFY(!window.plotDock()->plotIds().contains(QStringLiteral("volume")));
+        QVERIFY(window.plotDock()->plotIds().contains(QStringLiteral("energy")));
+        BodiesDock* bodies = window.bodiesDock();
+        QVERIFY(waitUntil([&] { return bodies->isVisible() && bodies->readoutText().contains("momentum"); }));
+        QCOMPARE(bodies->table()->rowCount(), 2);
+        QCOMPARE(bodies->seriesNames("volume"),
+                 QStringList({"body1 inner", "body1 outer", "body2 inner", "body2 outer"}));
+        // What a world has not yet says so.
+        QVERIFY(window.stabilityMapDock()->showsWorldNotice());
+
+        // Run: momentum stays -144 kg m/s through the impact (24 particles of 1 kg at +2 m/s,
+        // 24 of 4 kg at -2 m/s), min_gap shrinks below the range and stays above 0.
+        c->runUntil(1.2);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.running && f.world && f.world->time >= 1.2 - 1e-9; }));
+        QVERIFY(waitUntil([&] { return bodies->plottedPoints() >= 2; }));
+        QVERIFY(std::abs(bodies->lastValue("momentum", 0) + 144.0) < 1e-8);
+        const simcore::WorldDiagnostics& d = *c->latest()->world;
+        QVERIFY(d.minGap > 0.0 && d.minGap < 0.2);
+        QVERIFY(std::abs(d.momentum.x() + 144.0) < 1e-8);
+        QVERIFY(!c->history().empty());
+        QCOMPARE(c->history().back().time, d.time);  // the Plots dock's rows are the world's totals
+        QCOMPARE(c->history().back().total(), d.total());
+    }
+
+    void parametersPerBody() {
+        MainWindow window(false);
+        window.show();
+        SimulationController* c = window.controller();
+        window.startWorld(scene("collide2d", {"gravity=0"}));
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world != nullptr; }));
+        ParameterDock* dock = window.findChild<ParameterDock*>();
+        QComboBox* selector = dock->bodySelector();
+        QVERIFY(waitUntil([&] { return selector->isVisibleTo(dock) && selector->count() == 3; }));
+        QCOMPARE(selector->itemText(1), QStringLiteral("body2 (ring2d)"));
+        QCOMPARE(selector->itemText(2), QStringLiteral("every body"));
+        // body2's mass: only body 2 changes, and the run goes on from where it was.
+        c->runUntil(0.1);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.running && f.world && f.world->time >= 0.1 - 1e-9; }));
+        const double t = c->latest()->world->time;
+        selector->setCurrentIndex(1);
+        emit selector->activated(1);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.worldBody == 1; }));
+        QLineEdit* mass = dock->form()->field("mass");
+        QVERIFY(mass);
+        mass->setText("4");
+        emit mass->editingFinished();
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.worldSpec->bodies[1].params.get(simcore::Param::Mass) == 4.0; }));
+        QCOMPARE(c->latest()->worldSpec->bodies[0].params.get(simcore::Param::Mass), 1.0);
+        QCOMPARE(c->latest()->world->time, t);
+        QCOMPARE(c->latest()->world->bodies[1].mass, 96.0);
+        // A world parameter goes to every body whatever is chosen.
+        window.controller()->setParameter(simcore::Param::Gravity, 2.0);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) {
+            return f.worldSpec->bodies[0].params.get(simcore::Param::Gravity) == 2.0 &&
+                   f.worldSpec->bodies[1].params.get(simcore::Param::Gravity) == 2.0;
+        }));
+        // A body the world refuses (overlapping body 1) is rejected by name, nothing changes.
+        QSignalSpy rejected(c, &SimulationController::parameterRejected);
+        c->setParameter(simcore::Param::Mass, -1.0);
+        QVERIFY(waitUntil([&] { return rejected.count() == 1; }));
+        QVERIFY2(rejected.at(0).at(1).toString().contains("body2"), qPrintable(rejected.at(0).at(1).toString()));
+    }
+
+    void addRemoveAndDrag() {
+        MainWindow window(false);
+        window.show();
+        SimulationController* c = window.controller();
+        window.startWorld(scene("collide3d", {"gravity=0", "subdivisions=1"}));
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world != nullptr; }));
+        BodiesDock* bodies = window.bodiesDock();
+        QVERIFY(waitUntil([&] { return bodies->addKind()->count() == 2; }));  // the 3D kinds
+        bodies->addField("position_y")->setText("5");
+        bodies->addField("velocity_y")->setText("-1");
+        bodies->addButton()->click();
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world && f.world->bodies.size() == 3; }));
+        QCOMPARE(c->latest()->worldSpec->bodies[2].position.y(), 5.0);
+        QCOMPARE(c->latest()->worldSpec->bodies[2].velocity.y(), -1.0);
+        // One that overlaps is refused with the world's reason; the world stays.
+        bodies->addField("position_y")->setText("0");
+        QSignalSpy status(window.statusBar(), &QStatusBar::messageChanged);
+        bodies->addButton()->click();
+        QVERIFY(waitUntil([&] { return status.count() >= 1; }));
+        QVERIFY2(status.last().at(0).toString().contains("overlap"), qPrintable(status.last().at(0).toString()));
+        QCOMPARE(c->latest()->world->bodies.size(), std::size_t{3});
+        QVERIFY(waitUntil([&] { return bodies->table()->rowCount() == 3; }));
+        bodies->table()->selectRow(0);
+        bodies->removeButton()->click();
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world && f.world->bodies.size() == 2; }));
+        QCOMPARE(c->latest()->worldSpec->bodies[1].position.y(), 5.0);  // the added one is body 2 now
+
+        // The mouse on body 2 (first particle of body 2, from straight above along -z... it is
+        // picked along a ray through it): a spring pulls it, and only it.
+        const Frame& f = *c->latest();
+        const int first2 = f.scene->bodies[1].first;
+        int top = first2;
+        for (int i = first2; i < first2 + f.scene->bodies[1].count; ++i)
+            if (f.scene->topology.layer[std::size_t(i)] == simcore::Layer::Outer &&
+                f.lanes[0].positions[3 * std::size_t(i) + 2] > f.lanes[0].positions[3 * std::size_t(top) + 2])
+                top = i;
+        const QVector3D at(f.lanes[0].positions[3 * std::size_t(top)], f.lanes[0].positions[3 * std::size_t(top) + 1],
+                           f.lanes[0].positions[3 * std::size_t(top) + 2]);
+        QSignalSpy grabbed(c, &SimulationController::grabbed);
+        c->grabAlongRay(at + QVector3D(0, 0, 10), QVector3D(0, 0, -1), 0.05);
+        QVERIFY(waitUntil([&] { return grabbed.count() == 1; }));
+        QCOMPARE(grabbed.at(0).at(0).toInt(), top);
+        c->moveAnchor(at + QVector3D(0, 0, 2));
+        for (int i = 0; i < 30; ++i) c->step();
+        QVERIFY(waitForFrame(*c, [](const Frame& g) { return g.world && g.world->step >= 30; }));
+        QVERIFY(c->latest()->lanes[0].pointer.active);
+        QCOMPARE(c->latest()->lanes[0].pointer.particle, top);
+        QVERIFY(c->latest()->world->bodies[1].velocity.z() > 0.01);  // pulled up along z
+        QVERIFY(std::abs(c->latest()->world->bodies[0].velocity.z()) < 1e-9);
+        c->release();
+        QVERIFY(waitForFrame(*c, [](const Frame& g) { return !g.lanes[0].pointer.active; }));
+    }
+
+    void whatAWorldHasNotSaysSo() {
+        MainWindow window(false);
+        window.show();
+        SimulationController* c = window.controller();
+        QAction* worlds = nullptr;
+        for (QAction* a : window.menuBar()->actions())
+            if (a->menu())
+                for (QAction* b : a->menu()->actions())
+                    if (b->menu() && b->menu()->objectName() == "worldsMenu") worlds = b;
+        QVERIFY(worlds);
+        QStringList names;
+        for (QAction* a : worlds->menu()->actions()) names << a->text();
+        QCOMPARE(names, QStringList({"collide2d", "collide3d", "stack3d"}));
+        worlds->menu()->actions().at(0)->trigger();
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world != nullptr; }));
+        QVERIFY(c->isWorld());
+        // The studies of one body refuse a world with a message box.
+        for (QAction* a : window.menuBar()->actions())
+            if (a->menu() && a->text().contains("tudies")) a->menu()->actions().at(0)->trigger();
+        QVERIFY(waitUntil([&] { return window.findChild<QMessageBox*>() != nullptr; }));
+        QVERIFY(window.findChild<QMessageBox*>()->text().contains("one body"));
+        // Back to one body: the map maps again, the Bodies dock says what it is for.
+        window.startScene(simcore::ParameterSet(simcore::SceneKind::Ring2d), {"rk4"});
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world == nullptr && f.scene && !f.scene->isWorld(); }));
+        QVERIFY(waitUntil([&] { return !window.stabilityMapDock()->showsWorldNotice(); }));
+        QVERIFY(window.plotDock()->plotIds().contains(QStringLiteral("volume")));
+    }
+};
+
+QTEST_MAIN(TestGuiWorld)
+#include "test_gui_world.moc"
