@@ -5,6 +5,9 @@
 // The kill comes at a point the test chooses, not by racing the clock: the CLI's test hook
 // ELASTIC_LAB_TEST_SWEEP_STOP_AFTER=K makes it stop itself (SIGSTOP) after K new rows, and the
 // test then kills it with SIGKILL.
+#include <signal.h>
+
+#include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QTemporaryDir>
@@ -49,6 +52,36 @@ bool killAfter(const QStringList& args, const QString& out, int rows) {
     const bool reached = testsupport::waitUntil([&] { return dataLines(out + ".partial") >= rows; });
     p.kill();
     return testsupport::waitForExit(p) && reached && p.exitStatus() == QProcess::CrashExit;
+}
+
+// True once process `pid` is stopped (state T in /proc/PID/stat).
+bool isStopped(qint64 pid) {
+    const QString stat = readAll(QString("/proc/%1/stat").arg(pid));
+    const auto close = stat.lastIndexOf(')');
+    return close > 0 && stat.mid(close + 2, 1) == "T";
+}
+
+// Starts the sweep writing to `out` (standard output for "-"), lets it finish `rows` new rows
+// (it then stops itself), sends `signal` and lets it go on: the handler has run before the
+// next point starts, so the sweep stops with exactly `rows` whole rows. `inPoint`: the signal
+// comes after the next point has started (it then stops with `rows` or `rows` + 1 rows: where
+// the signal lands in the point is up to the machine). The finished process is in `p`.
+bool interruptAfter(QProcess& p, const QStringList& args, const QString& out, int rows, int signal, bool inPoint) {
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("ELASTIC_LAB_TEST_SWEEP_STOP_AFTER", QString::number(rows));
+    p.setProcessEnvironment(env);
+    p.start(ELASTIC_LAB_CLI, args + QStringList{"--csv", out});
+    if (!p.waitForStarted()) return false;
+    const qint64 pid = p.processId();
+    if (!testsupport::waitUntil([&] { return isStopped(pid); })) return false;
+    if (inPoint) {
+        ::kill(static_cast<pid_t>(pid), SIGCONT);
+        ::kill(static_cast<pid_t>(pid), signal);
+    } else {
+        ::kill(static_cast<pid_t>(pid), signal);
+        ::kill(static_cast<pid_t>(pid), SIGCONT);
+    }
+    return testsupport::waitForExit(p) && p.exitStatus() == QProcess::NormalExit;
 }
 
 }  // namespace
@@ -102,6 +135,69 @@ private slots:
         QCOMPARE(resumed.code, 0);
         QCOMPARE(withoutWallTime(readAll(out)), withoutWallTime(readAll(m_full)));
         QVERIFY(!QFile::exists(journal));
+    }
+
+    // Ctrl+C and SIGTERM (issue 31): after every number of finished points, the sweep stops
+    // with the journal holding exactly those rows (whole), an existing OUT byte-identical,
+    // nothing else in the folder, exit 130 / 143 and a message naming --resume; --resume then
+    // ends with the same CSV as an uninterrupted sweep.
+    void interruptedSweepKeepsWholeRowsAndResumes_data() {
+        QTest::addColumn<int>("rows");
+        QTest::addColumn<int>("signal");
+        QTest::addColumn<bool>("inPoint");
+        for (int rows = 1; rows < kPoints; ++rows)
+            QTest::addRow("SIGINT after %d", rows) << rows << int(SIGINT) << false;
+        for (int rows : {1, 6, 11}) QTest::addRow("SIGTERM after %d", rows) << rows << int(SIGTERM) << false;
+        for (int rows : {1, 4, 7, 10}) QTest::addRow("SIGINT inside point %d", rows + 1) << rows << int(SIGINT) << true;
+    }
+    void interruptedSweepKeepsWholeRowsAndResumes() {
+        QFETCH(int, rows);
+        QFETCH(int, signal);
+        QFETCH(bool, inPoint);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString out = dir.filePath("sweep.csv"), journal = out + ".partial";
+        {
+            QFile old(out);
+            QVERIFY(old.open(QIODevice::WriteOnly));
+            old.write("the last sweep's table\n");
+        }
+        QProcess p;
+        QVERIFY(interruptAfter(p, kSweep, out, rows, signal, inPoint));
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QCOMPARE(p.exitCode(), 128 + signal);
+        const int kept = dataLines(journal);
+        QVERIFY2(kept == rows || (inPoint && kept == rows + 1), qPrintable(QString::number(kept)));
+        QVERIFY2(err.contains(QString("sweep stopped by %1 after %2 of %3 points")
+                                  .arg(signal == SIGINT ? "SIGINT" : "SIGTERM").arg(kept).arg(kPoints)),
+                 qPrintable(err));
+        QVERIFY2(err.contains("--resume"), qPrintable(err));
+        QCOMPARE(readAll(out), QString("the last sweep's table\n"));  // OUT untouched
+        QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot),
+                 QStringList({"sweep.csv", "sweep.csv.partial"}));
+        // Every journalled row whole and equal to the uninterrupted sweep's.
+        const QStringList full = withoutWallTime(readAll(m_full));
+        const QStringList lines = withoutWallTime(readAll(journal).section('\n', 1));  // after the fingerprint
+        QCOMPARE(lines, full.mid(0, kept + 1));
+
+        const CliResult resumed = runCli(kSweep + QStringList{"--csv", out, "--resume"});
+        QCOMPARE(resumed.code, 0);
+        QCOMPARE(withoutWallTime(readAll(out)), full);
+        QVERIFY(!QFile::exists(journal));
+    }
+
+    // The same with --csv -: the rows streamed before the signal are whole, none after it.
+    void interruptedStreamKeepsWholeRows() {
+        for (int rows : {1, 5, 11}) {
+            QProcess p;
+            QVERIFY(interruptAfter(p, kSweep, "-", rows, SIGINT, false));
+            QCOMPARE(p.exitCode(), 130);
+            const QStringList lines = withoutWallTime(QString::fromUtf8(p.readAllStandardOutput()));
+            QCOMPARE(lines, withoutWallTime(readAll(m_full)).mid(0, rows + 1));
+            const QString err = QString::fromUtf8(p.readAllStandardError());
+            QVERIFY2(err.contains(QString("sweep stopped by SIGINT after %1 of 12 points; the rows above are whole").arg(rows)),
+                     qPrintable(err));
+        }
     }
 
     void resumeComputesOnlyWhatIsMissing() {

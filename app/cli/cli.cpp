@@ -134,13 +134,19 @@ CLI::Option* addCsvOption(CLI::App& app, std::string& path, const std::string& h
 
 namespace {
 volatile std::sig_atomic_t g_stopSignal = 0;
-extern "C" void onStopSignal(int signal) { g_stopSignal = signal; }
+std::atomic<bool> g_stopFlag{false};
+static_assert(std::atomic<bool>::is_always_lock_free, "set from a signal handler");
+extern "C" void onStopSignal(int signal) {
+    g_stopSignal = signal;
+    g_stopFlag.store(true);
+}
 struct sigaction g_previous[2];
 constexpr int kStopSignals[2] = {SIGINT, SIGTERM};
 }  // namespace
 
 StopSignals::StopSignals() {
     g_stopSignal = 0;
+    g_stopFlag = false;
     for (int i = 0; i < 2; ++i) {
         struct sigaction action {};
         action.sa_handler = onStopSignal;
@@ -156,6 +162,8 @@ StopSignals::~StopSignals() {
 }
 
 int StopSignals::caught() const { return g_stopSignal; }
+
+const std::atomic<bool>* StopSignals::flag() const { return &g_stopFlag; }
 
 const char* StopSignals::name(int signal) { return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal"; }
 

@@ -6,6 +6,7 @@
 // Exit status contract: 0 success, 2 bad input (one line on stderr naming the problem and what
 // is allowed), 3 the simulation failed (reason, step and time on stderr).
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -105,6 +106,9 @@ public:
     StopSignals& operator=(const StopSignals&) = delete;
     // The signal caught, or 0.
     int caught() const;
+    // True once a signal is caught: the cancel flag simlab's long computations poll (a lock-free
+    // atomic, set by the handler itself).
+    const std::atomic<bool>* flag() const;
     static const char* name(int signal);
 };
 

@@ -5,6 +5,11 @@
 // (the spec, the shard and the lab's version): --resume refuses a journal of another sweep.
 // When every point of the shard is done, OUT is written atomically in grid order and the
 // journal removed. `--csv -` streams the rows to standard output in grid order (no journal).
+//
+// Ctrl+C and SIGTERM (issue 31) cancel the point running (its row is not kept: a point cut
+// short is not a result) and stop: the journal keeps every whole row, OUT is not written (an
+// existing OUT keeps its bytes), and the message says how to go on (--resume); exit 130 / 143.
+// With --csv - the rows already streamed stay; none is cut.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -137,6 +142,11 @@ public:
         std::fflush(stderr);
     }
 
+    // Before a message: ends a line left open on a terminal.
+    void interrupt() {
+        if (m_tty && !m_quiet && m_done > 0 && m_done != m_total) std::fputc('\n', stderr);
+    }
+
 private:
     long m_total, m_done = 0, m_failed = 0, m_over = 0, m_lastTenth = -1;
     bool m_quiet, m_tty;
@@ -154,15 +164,39 @@ bool writeAll(int fd, const std::string& text) {
     return true;
 }
 
+// Test hook: ELASTIC_LAB_TEST_SWEEP_STOP_AFTER=K stops the process (SIGSTOP) after K new rows,
+// so that a test can kill or interrupt the sweep at a point it chooses instead of racing it.
+void testStopHook(long computed) {
+    static const char* stopAfter = std::getenv("ELASTIC_LAB_TEST_SWEEP_STOP_AFTER");
+    if (stopAfter && computed == std::atol(stopAfter)) ::raise(SIGSTOP);
+}
+
+// The end of a sweep stopped by a signal: what was kept and how to go on; 128 + the signal.
+int stopped(const StopSignals& signals, long done, long total, const std::string& journal) {
+    std::fprintf(stderr, "sweep stopped by %s after %ld of %ld points; ", StopSignals::name(signals.caught()), done, total);
+    if (journal.empty())
+        std::fprintf(stderr, "the rows above are whole\n");
+    else
+        std::fprintf(stderr, "the journal %s holds them: run the same command with --resume to go on\n",
+                     simcore::quoteShort(journal, 200).c_str());
+    return 128 + signals.caught();
+}
+
 // `--csv -`: the rows streamed in grid order, nothing to resume.
 int streamSweep(const simlab::SweepSpec& spec, long begin, long end, const std::string& header, bool quiet) {
+    const StopSignals signals;
     Progress progress(end - begin, quiet);
     std::fputs(header.c_str(), stdout);
     for (long i = begin; i < end; ++i) {
-        const simlab::SweepRow row = simlab::runSweepPoint(spec, i);
+        const simlab::SweepRow row = simlab::runSweepPoint(spec, i, signals.flag());
+        if (signals.caught()) {
+            progress.interrupt();
+            return stopped(signals, i - begin, end - begin, {});
+        }
         std::fputs(simlab::sweepCsvRow(spec, row).c_str(), stdout);
         std::fflush(stdout);
         progress.done(row);
+        testStopHook(i + 1 - begin);
     }
     return kExitOk;
 }
@@ -220,14 +254,17 @@ int runSweep(const SweepArgs& args) {
     if (args.resume && !args.quiet)
         std::fprintf(stderr, "sweep: resuming, %zu of %ld points already done\n", rows.size(), total);
 
-    // Test hook: stop (SIGSTOP) after this many new rows, so a test can kill the sweep
-    // half-way at a point it chooses instead of racing it.
-    const char* stopAfter = std::getenv("ELASTIC_LAB_TEST_SWEEP_STOP_AFTER");
     long computed = 0;
+    const StopSignals signals;
     Progress progress(total - static_cast<long>(rows.size()), args.quiet);
     for (long i = begin; i < end; ++i) {
         if (rows.count(i)) continue;
-        const simlab::SweepRow row = simlab::runSweepPoint(spec, i);
+        const simlab::SweepRow row = simlab::runSweepPoint(spec, i, signals.flag());
+        if (signals.caught()) {  // the point was cut short (or not started): not a row
+            ::close(fd);
+            progress.interrupt();
+            return stopped(signals, static_cast<long>(rows.size()), total, journalPath);
+        }
         const std::string line = simlab::sweepCsvRow(spec, row);
         if (!writeAll(fd, line)) {
             ::close(fd);
@@ -237,7 +274,7 @@ int runSweep(const SweepArgs& args) {
         }
         rows[i] = line;
         progress.done(row);
-        if (stopAfter && ++computed == std::atol(stopAfter)) ::raise(SIGSTOP);
+        testStopHook(++computed);
     }
     ::close(fd);
     out.write(header);
