@@ -33,6 +33,7 @@
 
 #include "elastic_lab_version.h"
 #include "simcore/body.h"
+#include "simcore/float_path.h"
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
 #include "simcore/params.h"
@@ -242,7 +243,7 @@ struct Sampling {
 Sampling checkedSampling(const simcore::ParameterSet& params, const std::string& integrator,
                          const simcore::IntegratorOptions& options, double start, std::size_t columns,
                          const py::handle& durationArg, const py::object& everyArg, const py::object& timesArg,
-                         const py::object& everySecondsArg) {
+                         const py::object& everySecondsArg, const std::string& precision = "double") {
     Sampling s;
     s.duration = checkedNumber(durationArg, "duration", 0.0, 1e7, true, false, "s");
     s.every = everyArg.is_none() ? 0 : static_cast<long>(checkedNumber(everyArg, "every", 1, 1e9, false, true));
@@ -257,6 +258,7 @@ Sampling checkedSampling(const simcore::ParameterSet& params, const std::string&
     request.sampleEvery = everySeconds;
     request.rowColumns = static_cast<int>(columns);
     request.options = options;
+    request.precision = precision;
     simlab::checkRun(setup, request);
     s.times = timesArg.is_none() ? std::vector<double>{} : timesArg.cast<std::vector<double>>();
     if (everySeconds > 0.0) {  // the start, every so many seconds, within the bound just checked
@@ -404,9 +406,10 @@ public:
     // the same rows in the CLI's `run --csv/--xlsx` formats (its columns), the CSV in csv_dialect.
     py::object run(const py::handle& durationArg, const py::object& everyArg, const py::object& timesArg,
                    const py::object& progress, const py::object& csvPath, const py::object& xlsxPath,
-                   const std::string& dialectName, const py::object& everySecondsArg) {
+                   const std::string& dialectName, const py::object& everySecondsArg, const std::string& precision) {
         const Sampling s = checkedSampling(sim().parameters(), std::string(sim().integrator().name()), sim().integratorOptions(),
-                                           m_sim->time(), m_columns.size(), durationArg, everyArg, timesArg, everySecondsArg);
+                                           m_sim->time(), m_columns.size(), durationArg, everyArg, timesArg, everySecondsArg,
+                                           precision);
         const double duration = s.duration;
         const long every = s.every;
         const std::vector<double>& times = s.times;
@@ -423,39 +426,57 @@ public:
         simlab::TimeSeriesWriter writer(kind, simlab::timeSeriesColumns(kind, m_sim->diagnostics().hasSolverCounters),
                                          files);
         if (!writer.ok()) throw py::value_error(writer.error());
+        // precision="float": the float path (simcore/float_path.h) steps the run from this state,
+        // with this simulation's threads; its rows are its diagnostics (measured in double), and
+        // the simulation takes its end state (in double) afterwards, as the CLI's run.
+        std::unique_ptr<simcore::FloatSimulation> single;
+        if (precision == "float") {
+            single = std::make_unique<simcore::FloatSimulation>(*m_sim);
+            single->setThreads(m_sim->threads());
+        }
+        auto diagnostics = [&]() -> const simcore::Diagnostics& { return single ? single->diagnostics() : m_sim->diagnostics(); };
+        auto now = [&] { return single ? single->time() : m_sim->time(); };
+        auto stepCount = [&] { return single ? single->stepCount() : m_sim->stepCount(); };
+        auto published = [&] { single ? publish(single->time(), single->stepCount()) : publish(); };
         Busy busy(m_busy);
-        const long firstStep = m_sim->stepCount();
+        const long firstStep = stepCount();
         std::vector<double> rows;
         auto record = [&] {
-            for (const simlab::CsvColumn& c : m_columns) rows.push_back(c.value(m_sim->diagnostics()));
-            if (files.any()) writer.add(m_sim->diagnostics());
+            for (const simlab::CsvColumn& c : m_columns) rows.push_back(c.value(diagnostics()));
+            if (files.any()) writer.add(diagnostics());
         };
         std::size_t next = 0;  // the next of `times` not yet recorded
         auto due = [&] {       // records one row for every sample time reached (one per step)
             bool reached = false;
-            while (next < times.size() && m_sim->time() >= times[next] - 1e-9 * m_sim->dt()) ++next, reached = true;
+            while (next < times.size() && now() >= times[next] - 1e-9 * m_sim->dt()) ++next, reached = true;
             return reached;
         };
         if (every || due()) record();
-        const double tEnd = m_sim->time() + duration;
-        auto reached = [&] { return m_sim->time() >= tEnd - 1e-9 * m_sim->dt(); };
+        const double tEnd = now() + duration;
+        auto reached = [&] { return now() >= tEnd - 1e-9 * m_sim->dt(); };
         std::function<void()> between;
-        if (!progress.is_none()) between = [&] { progress(m_sim->time()); };
+        if (!progress.is_none()) between = [&] { progress(now()); };
         if (!reached())
             inSlices([&] {
-                const bool ok = m_sim->step(next < times.size() ? std::min(tEnd, times[next]) : tEnd);
-                publish();
+                const bool ok = single ? single->step() : m_sim->step(next < times.size() ? std::min(tEnd, times[next]) : tEnd);
+                published();
                 if (!ok) return false;
                 const bool last = reached();
                 const bool sample = due();
-                if ((every && (m_sim->stepCount() % every == 0 || last)) || sample || (last && sampled && !every))
+                if ((every && (stepCount() % every == 0 || last)) || sample || (last && sampled && !every))
                     record();
                 // An adaptive run stops at the bound, as the CLI's (its rows up to there kept).
-                if (!last && static_cast<double>(m_sim->stepCount() - firstStep) >= simlab::kMaxSteps)
-                    throw std::runtime_error("run stopped at step " + std::to_string(m_sim->stepCount()) + ": " +
+                if (!last && static_cast<double>(stepCount() - firstStep) >= simlab::kMaxSteps)
+                    throw std::runtime_error("run stopped at step " + std::to_string(stepCount()) + ": " +
                                              simlab::number(simlab::kMaxSteps) + " steps taken, the most one run may take");
                 return !last;
             }, between);
+        // A failed float run leaves the simulation at its start (the float state at a failure
+        // may not be finite); a good one hands its end state over.
+        if (single && !single->failed()) {
+            single->writeStateTo(*m_sim);
+            publish();
+        }
         py::object table = py::none();
         if (sampled) {
             const auto width = static_cast<py::ssize_t>(m_columns.size());
@@ -465,7 +486,7 @@ public:
         }
         // The files hold the run so far also when it failed (as the CLI's).
         if (files.any() && !writer.commit()) throw py::value_error(writer.error());
-        raiseIfFailed(table);
+        raiseIfFailed(table, single ? single->failure() : m_sim->failure());
         return table;
     }
 
@@ -566,9 +587,10 @@ public:
 
 private:
     PySimulation() = default;
-    void publish() {
-        m_time.store(m_sim->time(), std::memory_order_relaxed);
-        m_steps.store(m_sim->stepCount(), std::memory_order_relaxed);
+    void publish() { publish(m_sim->time(), m_sim->stepCount()); }
+    void publish(double time, long steps) {
+        m_time.store(time, std::memory_order_relaxed);
+        m_steps.store(steps, std::memory_order_relaxed);
     }
     // The Simulations whose constructor completed (read and changed with the GIL held).
     static std::set<const PySimulation*>& constructed() {
@@ -578,8 +600,8 @@ private:
 
     // SimulationFailed("simulation failed at step S, t = T s: reason") with .reason, .step,
     // .time and, from run(every=...), .rows up to the last good step.
-    void raiseIfFailed(const py::object& rows) {
-        const auto& f = m_sim->failure();
+    void raiseIfFailed(const py::object& rows) { raiseIfFailed(rows, m_sim->failure()); }
+    void raiseIfFailed(const py::object& rows, const std::optional<simcore::Failure>& f) {
         if (!f) return;
         char where[96];
         std::snprintf(where, sizeof where, "simulation failed at step %ld, t = %g s: ", f->step, f->time);
@@ -1258,13 +1280,14 @@ PYBIND11_MODULE(_core, m) {
         .def("run", &PySimulation::run, py::arg("duration"), py::arg("every") = py::none(),
              py::arg("times") = py::none(), py::arg("progress") = py::none(), py::kw_only(),
              py::arg("csv") = py::none(), py::arg("xlsx") = py::none(), py::arg("csv_dialect") = "plain",
-             py::arg("every_seconds") = py::none(),
+             py::arg("every_seconds") = py::none(), py::arg("precision") = "double",
              "Runs for duration seconds [s]; with every=N (steps) or times=[t...] (absolute simulated times [s], "
              "ascending) returns the diagnostics rows (start, then every N steps or the first step at or past each "
              "time, end) as an array, columns as diagnostics_columns; progress(t) is called between slices. "
              "csv= and xlsx= write the same rows as the CLI's `run --csv/--xlsx` files; csv_dialect='excel-semicolon' "
              "spells the CSV for spreadsheets in decimal-comma locales (semicolon, decimal comma, CRLF, byte-order mark); "
-             "every_seconds=S samples every S seconds from the start (the rows held bounded before it starts).")
+             "every_seconds=S samples every S seconds from the start (the rows held bounded before it starts); "
+             "precision='float' steps the float32 path (euler, midpoint, rk4, symplectic-euler, verlet; no contact).")
         .def("reset", &PySimulation::reset, "Back to the start state, same parameters.")
         .def("set_integrator", &PySimulation::setIntegrator, py::arg("name"), py::arg("options") = py::none(),
              "Changes the integrator between steps (options as in the constructor, added to the current ones).")

@@ -933,6 +933,13 @@ Eigen::VectorXd FloatSimulation::state() const {
     return y;
 }
 
+void FloatSimulation::writeStateTo(Simulation& sim) const {
+    const Eigen::VectorXd y = state();
+    const auto n = static_cast<Eigen::Index>(m_topology->particleCount());
+    sim.setState(Eigen::Map<const Eigen::Matrix3Xd>(y.data(), 3, n), Eigen::Map<const Eigen::Matrix3Xd>(y.data() + 3 * n, 3, n),
+                 m_step, m_time);
+}
+
 std::uint64_t FloatSimulation::stateHash() const {
     std::uint64_t h = 14695981039346656037ULL;
     for (const std::vector<float>* buffer : {&m_impl->x, &m_impl->v}) {

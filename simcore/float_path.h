@@ -75,6 +75,9 @@ public:
     // The state in double, laid out as Simulation::state()'s first 6N values (positions, then
     // velocities).
     Eigen::VectorXd state() const;
+    // Hands the state to `sim` (the simulation this one started from, or one of the same body):
+    // its positions, velocities, step counter and time, in double (Simulation::setState).
+    void writeStateTo(Simulation& sim) const;
     // FNV-1a (64 bits) of the float state's bytes (positions, velocities): the same hash is the
     // same trajectory.
     std::uint64_t stateHash() const;

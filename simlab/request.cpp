@@ -8,6 +8,7 @@
 #include <set>
 
 #include "simcore/body.h"
+#include "simcore/float_path.h"
 #include "simcore/integrator_table.h"
 #include "simcore/scenes.h"
 #include "simcore/world.h"
@@ -184,7 +185,21 @@ void checkFiles(const std::vector<NamedPath>& inputs, const std::vector<NamedPat
 
 // --- the work ----------------------------------------------------------------------------------------
 
+std::optional<std::string> precisionProblem(const std::string& precision, const std::string& integrator) {
+    if (precision != "double" && precision != "float")
+        return "unknown precision " + quoted(precision) + "; allowed: double, float";
+    if (precision == "float" && !simcore::floatPathSupports(integrator))
+        return "precision float is built for the explicit integrators " + simcore::floatPathIntegrators() + ", not " +
+               quoted(integrator);
+    return std::nullopt;
+}
+
+void checkPrecision(const std::string& precision, const std::string& integrator) {
+    refuseIf(precisionProblem(precision, integrator));
+}
+
 void checkRun(const SceneSetup& scene, const RunRequest& run) {
+    checkPrecision(run.precision, scene.integrator);
     if (!(run.duration > 0.0) || !std::isfinite(run.duration))
         refuse("duration " + number(run.duration) + " s is not allowed; allowed (0, 1e+07] s");
     // A fixed-step run takes duration / dt steps: bounded, so that a typo (dt 1e-300) is

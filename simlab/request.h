@@ -113,8 +113,14 @@ struct RunRequest {
     double sampleEvery = 0.0;  // > 0: a row held every so many seconds of simulated time
     int rowColumns = 0;   // columns of a held row
     simcore::IntegratorOptions options;
+    std::string precision = "double";  // double | float (the float path, simcore/float_path.h)
 };
 void checkRun(const SceneSetup& scene, const RunRequest& run);
+
+// The precision of a run (run, bench, Python, the GUI's Run dock): double, or float for the
+// integrators the float path is built for (simcore::floatPathSupports). The problem, or nothing.
+std::optional<std::string> precisionProblem(const std::string& precision, const std::string& integrator);
+void checkPrecision(const std::string& precision, const std::string& integrator);
 
 // A work-precision study: validateStudy, then its references and runs bounded in steps and
 // in memory (the reference trajectory and one run's, samples x particles each).

@@ -7,11 +7,13 @@
 #include <sstream>
 #include <tuple>
 
+#include "simcore/float_path.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
 #include "simlab/analytic.h"
 #include "simlab/output.h"
 #include "simlab/reference_problem.h"
+#include "simlab/request.h"
 
 namespace simlab {
 
@@ -81,6 +83,69 @@ bool closedFormApplies(const StudySpec& spec) {
     return true;
 }
 
+// One stretch of a timed run: steps while more() holds and step() succeeds (false: failed),
+// adding the stretch's wall time to out.wallSeconds; stops at a cancel, or when the run would
+// go over wallBudget (read off the clock every 64 steps: a clock read costs ~20 ns).
+template <class More, class Step>
+void timedStretch(SampledRun& out, More&& more, Step&& step, const std::atomic<bool>* cancel, double wallBudget) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    long counted = 0;
+    while (more()) {
+        if (!step()) break;
+        if (cancel && cancel->load(std::memory_order_relaxed)) {
+            out.cancelled = true;
+            break;
+        }
+        if (wallBudget > 0.0 && (++counted & 63) == 0 &&
+            out.wallSeconds + std::chrono::duration<double>(Clock::now() - start).count() > wallBudget) {
+            out.overBudget = true;
+            break;
+        }
+    }
+    out.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+    if (wallBudget > 0.0 && out.wallSeconds > wallBudget) out.overBudget = true;
+}
+
+// The end of a timed run: its failure, steps and force evaluations (a Simulation or the float path).
+template <class Sim>
+void endRun(SampledRun& out, const Sim& sim) {
+    if (sim.failed()) {
+        out.failed = true;
+        out.failedAt = sim.failure()->time;
+        out.failure = sim.failure()->reason;
+    }
+    out.steps = sim.stepCount();
+    out.evaluations = sim.diagnostics().forceEvaluations;
+}
+
+// One run of the float path (FloatSimulation), single-threaded, from the scene's start through
+// the grid times, its positions sampled there (in double). Only the stepping is timed; the
+// energy drift is measured at the grid times (the float path measures its diagnostics in
+// double on request, a pass the double path's step makes anyway: measured every step, it would
+// be timed as the float path's cost).
+Trajectory runFloatTrajectory(const ParameterSet& base, const std::string& integrator, double dt,
+                              const std::vector<double>& grid, const std::atomic<bool>* cancel, double wallBudget) {
+    ParameterSet p = base;
+    if (auto error = p.set(Param::Dt, dt)) throw std::invalid_argument(*error);
+    const Simulation start(p, integrator);
+    simcore::FloatSimulation sim(start);
+    sim.setThreads(1);  // timings are single-threaded, as runSampled's
+    Trajectory out;
+    out.positions.reserve(grid.size());
+    const auto n = static_cast<Eigen::Index>(sim.topology().particleCount());
+    for (double target : grid) {
+        const long targetSteps = std::lround(target / dt);
+        timedStretch(out, [&] { return sim.stepCount() < targetSteps; }, [&] { return sim.step(); }, cancel, wallBudget);
+        if (sim.failed() || out.cancelled || out.overBudget) break;
+        out.maxDrift = std::max(out.maxDrift, std::abs(sim.diagnostics().energyDrift()));
+        const Eigen::VectorXd y = sim.state();
+        out.positions.emplace_back(Eigen::Map<const Eigen::Matrix3Xd>(y.data(), 3, n));
+    }
+    endRun(out, sim);
+    return out;
+}
+
 std::string formatShort(double v) {
     std::ostringstream os;
     os << v;
@@ -99,41 +164,21 @@ SampledRun runSampled(const ParameterSet& base, const std::string& integrator, d
     sim.setThreads(1);  // timings are single-threaded, whatever the machine
     sim.setIntegratorOptions(options);
     SampledRun out;
-    using Clock = std::chrono::steady_clock;
     const bool adaptive = sim.integrator().adaptive();
     for (double target : grid) {
         // Fixed steps: count them (t accumulated as a sum of dt drifts by round-off, and one
         // step too many at a grid time is an error of v dt). Adaptive: land on the target.
         const long targetSteps = std::lround(target / dt);
         auto more = [&] { return adaptive ? sim.time() < target - 1e-12 * std::max(1.0, target) : sim.stepCount() < targetSteps; };
-        const auto start = Clock::now();
-        long counted = 0;
-        while (more()) {
-            if (!sim.step(target)) break;
+        timedStretch(out, more, [&] {
+            if (!sim.step(target)) return false;
             out.maxDrift = std::max(out.maxDrift, std::abs(sim.diagnostics().energyDrift()));
-            if (cancel && cancel->load(std::memory_order_relaxed)) {
-                out.cancelled = true;
-                break;
-            }
-            // The budget is read off the clock every 64 steps (a clock read costs ~20 ns).
-            if (wallBudget > 0.0 && (++counted & 63) == 0 &&
-                out.wallSeconds + std::chrono::duration<double>(Clock::now() - start).count() > wallBudget) {
-                out.overBudget = true;
-                break;
-            }
-        }
-        out.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
-        if (wallBudget > 0.0 && out.wallSeconds > wallBudget) out.overBudget = true;
+            return true;
+        }, cancel, wallBudget);
         if (sim.failed() || out.cancelled || out.overBudget) break;
         sample(sim);
     }
-    if (sim.failed()) {
-        out.failed = true;
-        out.failedAt = sim.failure()->time;
-        out.failure = sim.failure()->reason;
-    }
-    out.steps = sim.stepCount();
-    out.evaluations = sim.diagnostics().forceEvaluations;
+    endRun(out, sim);
     return out;
 }
 
@@ -213,7 +258,12 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
         if (std::count(spec.precisions.begin(), spec.precisions.end(), precision) > 1)
             return "precision " + quoteShort(precision) + " is listed twice";
         if (precision != "float") continue;
-        if (const std::string refusal = referenceProblemRefusal(spec.params); !refusal.empty()) return refusal;
+        if (!floatOnReferenceProblem(spec)) {
+            // The float path of the Simulation: the front door's check, as run's and bench's.
+            for (const std::string& name : spec.integrators)
+                if (auto problem = precisionProblem("float", name)) return problem;
+            continue;
+        }
         for (const std::string& name : spec.integrators)
             if (!referenceProblemSupports(name))
                 return "precision float: " + name +
@@ -223,6 +273,8 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
     }
     if (spec.compensated && std::find(spec.precisions.begin(), spec.precisions.end(), "float") == spec.precisions.end())
         return "compensated summation is an option of the float build (--precision float)";
+    if (spec.compensated && !floatOnReferenceProblem(spec))
+        return "compensated summation is an option of the float build of spring1d (without perturbation)";
     if (spec.shardCount < 1 || spec.shardIndex < 0 || spec.shardIndex >= spec.shardCount)
         return "shard must be K/N with 1 <= K <= N";
     if (spec.reference != "auto" && spec.reference != "exact" && spec.reference != "rk4" && spec.reference != "rk45" &&
@@ -233,6 +285,8 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
                "reaching a wall has one); use --reference rk4, rk45 or cvode-bdf";
     return std::nullopt;
 }
+
+bool floatOnReferenceProblem(const StudySpec& spec) { return referenceProblemRefusal(spec.params).empty(); }
 
 std::vector<double> studyGrid(const StudySpec& spec) {
     std::vector<double> fixed;
@@ -344,7 +398,9 @@ StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyR
     bool haveCompleted = false;
     int over = 0;
     for (int r = 0; r < spec.repeat; ++r) {
-        if (item.precision == "float") {
+        if (item.precision == "float" && !floatOnReferenceProblem(spec)) {
+            run = runFloatTrajectory(spec.params, item.integrator, item.dt, reference.times, cancel, spec.timeBudget);
+        } else if (item.precision == "float") {
             ReferenceProblemRun f = runReferenceProblem(spec.params, item.integrator, item.dt, reference.times, "float",
                                                         spec.compensated, cancel, spec.timeBudget);
             run = Trajectory{};

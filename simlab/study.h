@@ -7,7 +7,9 @@
 // output). With a time budget B, a point whose run would take longer than B is recorded as
 // "not reached" (no error), and so is every costlier point of the same integrator: the curve
 // stops there. With precision float the fixed-step methods run on the float build of the
-// reference problem (reference_problem.h) instead of the Simulation. A sweep can be cut into N shards (contiguous blocks of the
+// reference problem (reference_problem.h) for spring1d without perturbation, and on the float
+// path of the Simulation (simcore/float_path.h: euler, midpoint, rk4, symplectic-euler, verlet;
+// a body that reaches a wall fails there) for every other body. A sweep can be cut into N shards (contiguous blocks of the
 // sweep order) whose CSV rows concatenate into the unsharded result.
 //
 //   reference     closed form (spring1d, no perturbation, no wall reached), or RK4 at a step
@@ -52,8 +54,9 @@ struct StudySpec {
     double duration = 2.0;                     // T [s]
     int repeat = 1;                            // timing: this many runs of each point
     double timeBudget = 0.0;                   // a run longer than this [s] is "not reached"; 0 = none
-    // double: the Simulation; float: the float build of the reference problem
-    // (reference_problem.h). Each integrator runs in each precision listed.
+    // double: the Simulation; float: the float build of the reference problem (spring1d,
+    // reference_problem.h) or the float path (every other body). Each integrator runs in each
+    // precision listed.
     std::vector<std::string> precisions{"double"};
     bool compensated = false;                  // float: Kahan-compensated state update
     std::string reference = "auto";            // auto | exact | rk4 | rk45 | cvode-bdf
@@ -138,6 +141,11 @@ using StudyProgressFn = std::function<void(const StudyProgress&)>;
 // The whole sweep in CSV order (integrator-major), and the part one shard runs.
 std::vector<StudyItem> studyItems(const StudySpec& spec);
 std::vector<StudyItem> shardItems(const std::vector<StudyItem>& items, int shardIndex, int shardCount);
+
+// precision float: spring1d without perturbation runs the float build of the reference problem
+// (reference_problem.h, also for the Yoshida compositions); every other body the float path of
+// the Simulation (simcore/float_path.h).
+bool floatOnReferenceProblem(const StudySpec& spec);
 
 // Validates the spec: returns a message naming the problem, or nothing.
 std::optional<std::string> validateStudy(const StudySpec& spec);

@@ -200,6 +200,51 @@ private slots:
         QVERIFY(!rtol->isEnabled());
     }
 
+    void precisionSwitch() {
+        // Precision float from the Run dock reaches the worker: the view steps on the float
+        // path and the readout gives its distance from the shadow double run. The front door
+        // refuses float for a method without a float build, with its words.
+        MainWindow w(false);
+        simcore::ParameterSet ring(SceneKind::Ring2d);
+        ring.set(simcore::Param::Gravity, 0.0);  // free flight: the float path has no walls
+        ring.set(simcore::Param::Perturb, 0.02);
+        w.startScene(ring, {"rk4"});
+        SimulationController* c = w.controller();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest() != nullptr; }));
+        auto* precision = w.runDock()->findChild<QComboBox*>("precisionCombo");
+        QVERIFY(precision);
+        QCOMPARE(precision->currentIndex(), 0);
+        QSignalSpy messages(w.runDock(), &RunDock::message);
+        precision->setCurrentIndex(1);
+        QVERIFY(testsupport::waitUntil([&] { return c->latest()->floatWanted; }));
+        for (int i = 0; i < 5; ++i) c->step();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.front().diagnostics.step == 5; }));
+        QVERIFY(c->latest()->floatActive);
+        QVERIFY(c->latest()->floatDistance > 0.0 && c->latest()->floatDistance < 1e-5);
+        QCoreApplication::processEvents();
+        const QString readout = w.runDock()->readout()->text();
+        QVERIFY2(readout.contains(QStringLiteral("float − double")), qPrintable(readout));
+        QVERIFY(messages.isEmpty());
+        // A method without a float build: the integrator changes, the run goes on in double.
+        const QString refusal = QStringLiteral("precision float is built for the explicit integrators euler, midpoint, "
+                                               "rk4, symplectic-euler, verlet, not 'rk45'");
+        w.runDock()->integratorCombo()->setCurrentText("rk45");
+        QVERIFY(testsupport::waitUntil([&] { return !c->latest()->floatWanted; }));
+        QCOMPARE(precision->currentIndex(), 0);
+        QCOMPARE(messages.size(), 1);
+        QCOMPARE(messages.takeFirst().at(0).toString(), refusal);
+        // ... and float is refused while it is chosen.
+        QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.front().integrator == "rk45"; }));
+        QCoreApplication::processEvents();
+        precision->setCurrentIndex(1);
+        QCOMPARE(precision->currentIndex(), 0);
+        QCOMPARE(messages.size(), 1);
+        QCOMPARE(messages.takeFirst().at(0).toString(), refusal);
+        c->step();
+        QVERIFY(testsupport::waitUntil([&] { return c->latest()->lanes.front().diagnostics.step == 6; }));
+        QVERIFY(!c->latest()->floatWanted && !c->latest()->floatActive);
+    }
+
     void valuesRoundTrip() {
         simcore::ParameterSet params(SceneKind::Sphere3d);
         QVERIFY(!params.set(simcore::Param::Ks, 1234.5));

@@ -171,6 +171,99 @@ private slots:
         QVERIFY(frames[1].breakdown.has_value());
         QVERIFY(!lanes.laneFrames(false, n).front().breakdown);  // out of range: none
     }
+
+    // Precision float (issue 27): lane 0 steps on the float path, the lane holds the float
+    // state after every step with its ledger going on, the shadow double run gives the
+    // distance, and any change restarts the float run from the lane.
+    void floatPrecisionStepsTheFloatPath() {
+        simcore::ParameterSet p = ring();
+        p.set(simcore::Param::Gravity, 0.0);  // free flight: the float path has no walls
+        Lanes lanes;
+        std::optional<std::string> error;
+        lanes.adopt(lanes.build(p, {"rk4"}, error));
+        QVERIFY(!error);
+        lanes.setKick(0.5, -0.25);  // the ring moves (and reaches no wall in these steps)
+        lanes.applyKick();
+        for (int i = 0; i < 100; ++i) lanes.stepAll(-1.0);  // double first: the float run starts mid-run
+        // What the lane must hold: the float path from the same state, and double.
+        simcore::Simulation twin(lanes.front().parameters(), "rk4");
+        twin.restore(lanes.front().snapshot());
+        simcore::FloatSimulation single(twin);
+        const simcore::Diagnostics before = lanes.front().diagnostics();
+        QVERIFY(before.removedDamping > 1e-6);  // a ledger with something in it
+        lanes.setFloatWanted(true);
+        QVERIFY(!lanes.floatActive());
+        for (int i = 0; i < 40; ++i) {
+            lanes.stepAll(-1.0);
+            single.step();
+            twin.step();
+        }
+        QVERIFY(lanes.floatActive());
+        QCOMPARE(lanes.front().stepCount(), single.stepCount());
+        QCOMPARE(lanes.front().time(), single.time());
+        QCOMPARE(lanes.commonTime(), single.time());
+        const Eigen::VectorXd y = single.state();
+        const Eigen::Index n3 = 3 * lanes.front().particleCount();
+        QVERIFY(lanes.front().positions().reshaped() == y.head(n3));                  // the float run's bits
+        QVERIFY(lanes.front().velocities().reshaped() == y.segment(n3, n3));
+        QVERIFY(lanes.front().positions() != twin.positions());                       // not double's
+        // The shadow is the double run from the same state: the distance is theirs.
+        const double distance = std::sqrt((lanes.front().positions() - twin.positions()).colwise().squaredNorm().mean());
+        QCOMPARE(lanes.floatDistance(), distance);
+        QVERIFY2(distance > 0.0 && distance < 1e-5, qPrintable(QString::number(distance)));
+        // The ledger goes on: the lane's drift is its drift before plus the float run's own.
+        const double drift = lanes.front().diagnostics().energyDrift();
+        const double expected = before.energyDrift() + single.diagnostics().energyDrift();
+        QVERIFY2(std::abs(drift - expected) < 1e-9 * (1.0 + std::abs(single.diagnostics().total())),
+                 qPrintable(QString("%1 vs %2").arg(drift).arg(expected)));
+        QVERIFY(lanes.front().diagnostics().forceEvaluations > before.forceEvaluations);
+        // The frames show the lane's (float) positions.
+        QCOMPARE(lanes.laneFrames(false, -1).front().positions[0], float(y[0]));
+
+        // An edit restarts the float run from the lane (and its shadow with it).
+        lanes.setParameter(simcore::Param::Gravity, 5.0);
+        QVERIFY(!lanes.floatActive());
+        QCOMPARE(lanes.floatDistance(), -1.0);
+        lanes.stepAll(-1.0);
+        QVERIFY(lanes.floatActive());
+        QVERIFY(lanes.floatDistance() < distance);  // one step from a common state
+        // A held particle steps in double (the float path has no pointer).
+        lanes.grab(0, lanes.front().positions().col(0));
+        lanes.stepAll(-1.0);
+        QVERIFY(!lanes.floatActive());
+        lanes.release();
+        lanes.stepAll(-1.0);
+        QVERIFY(lanes.floatActive());
+        // Double again.
+        lanes.setFloatWanted(false);
+        lanes.stepAll(-1.0);
+        QVERIFY(!lanes.floatActive());
+        QCOMPARE(lanes.floatRoundoff(), 0.0);
+    }
+
+    void floatPrecisionOnABigBodyShowsTheRoundOffEstimate() {
+        // Above Lanes::kShadowParticles no shadow runs: the estimate eps X sqrt(n) instead.
+        simcore::ParameterSet p(simcore::SceneKind::Sphere3d);
+        p.set(simcore::Param::Subdivisions, 5);  // 20,484 particles
+        p.set(simcore::Param::Scaling, 1.0);     // the thesis's per-particle body (stable at 3 ms)
+        p.set(simcore::Param::Gravity, 0.0);
+        p.set(simcore::Param::Dt, 0.003);
+        Lanes lanes;
+        std::optional<std::string> error;
+        lanes.adopt(lanes.build(p, {"rk4"}, error));
+        QVERIFY(!error);
+        lanes.setFloatWanted(true);
+        for (int i = 0; i < 4; ++i) lanes.stepAll(-1.0);
+        QVERIFY(lanes.floatActive());
+        QCOMPARE(lanes.floatDistance(), -1.0);
+        const double x = lanes.front().positions().cwiseAbs().maxCoeff();
+        QCOMPARE(lanes.floatRoundoff(), std::ldexp(1.0, -24) * x * 2.0);  // sqrt(4 steps) = 2
+        // Side by side the lanes step in double.
+        Lanes pair = lanesOf({"rk4", "euler"});
+        pair.setFloatWanted(true);
+        pair.stepAll(-1.0);
+        QVERIFY(!pair.floatActive());
+    }
 };
 
 QTEST_APPLESS_MAIN(TestLanes)

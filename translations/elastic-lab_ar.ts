@@ -2221,6 +2221,38 @@ Plots, parameters and exports still work.</source>
         <source>distance&lt;br&gt;to view %1</source>
         <translation>المسافة&lt;br&gt;إلى العرض %1</translation>
     </message>
+    <message>
+        <source>double</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>float</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>double: state and forces in 64-bit numbers. float: in 32-bit numbers, as fast engines and games compute (euler, midpoint, rk4, symplectic-euler, verlet; one view; no walls or mouse: the run stops at a wall, a held particle steps in double). The readout shows how far the float run is from double.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Precision</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>precision</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>double while held</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>float − double</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>round-off (est.)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>elui::SceneDock</name>

@@ -2223,6 +2223,38 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <source>distance&lt;br&gt;to view %1</source>
         <translation>Abstand&lt;br&gt;zu Ansicht %1</translation>
     </message>
+    <message>
+        <source>double</source>
+        <translation>doppelt (64 Bit)</translation>
+    </message>
+    <message>
+        <source>float</source>
+        <translation>einfach (32 Bit)</translation>
+    </message>
+    <message>
+        <source>double: state and forces in 64-bit numbers. float: in 32-bit numbers, as fast engines and games compute (euler, midpoint, rk4, symplectic-euler, verlet; one view; no walls or mouse: the run stops at a wall, a held particle steps in double). The readout shows how far the float run is from double.</source>
+        <translation>doppelt: Zustand und Kräfte in 64-Bit-Zahlen. einfach: in 32-Bit-Zahlen, wie schnelle Engines und Spiele rechnen (euler, midpoint, rk4, symplectic-euler, verlet; eine Ansicht; keine Wände und keine Maus: der Lauf hält an einer Wand an, ein gehaltenes Teilchen rechnet doppelt genau). Die Anzeige zeigt, wie weit der einfach genaue Lauf vom doppelt genauen entfernt ist.</translation>
+    </message>
+    <message>
+        <source>Precision</source>
+        <translation>Genauigkeit</translation>
+    </message>
+    <message>
+        <source>precision</source>
+        <translation>Genauigkeit</translation>
+    </message>
+    <message>
+        <source>double while held</source>
+        <translation>doppelt, solange gehalten</translation>
+    </message>
+    <message>
+        <source>float − double</source>
+        <translation>einfach − doppelt</translation>
+    </message>
+    <message>
+        <source>round-off (est.)</source>
+        <translation>Rundung (geschätzt)</translation>
+    </message>
 </context>
 <context>
     <name>elui::SceneDock</name>

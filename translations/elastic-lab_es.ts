@@ -2223,6 +2223,38 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <source>distance&lt;br&gt;to view %1</source>
         <translation>distancia&lt;br&gt;a la vista %1</translation>
     </message>
+    <message>
+        <source>double</source>
+        <translation>doble (64 bits)</translation>
+    </message>
+    <message>
+        <source>float</source>
+        <translation>simple (32 bits)</translation>
+    </message>
+    <message>
+        <source>double: state and forces in 64-bit numbers. float: in 32-bit numbers, as fast engines and games compute (euler, midpoint, rk4, symplectic-euler, verlet; one view; no walls or mouse: the run stops at a wall, a held particle steps in double). The readout shows how far the float run is from double.</source>
+        <translation>doble: estado y fuerzas en números de 64 bits. simple: en números de 32 bits, como calculan los motores rápidos y los juegos (euler, midpoint, rk4, symplectic-euler, verlet; una sola vista; sin paredes ni ratón: la simulación se detiene en una pared, una partícula sujeta avanza en doble). La lectura muestra la distancia entre la simulación en simple y la de doble.</translation>
+    </message>
+    <message>
+        <source>Precision</source>
+        <translation>Precisión</translation>
+    </message>
+    <message>
+        <source>precision</source>
+        <translation>precisión</translation>
+    </message>
+    <message>
+        <source>double while held</source>
+        <translation>doble mientras se sujeta</translation>
+    </message>
+    <message>
+        <source>float − double</source>
+        <translation>simple − doble</translation>
+    </message>
+    <message>
+        <source>round-off (est.)</source>
+        <translation>redondeo (estimado)</translation>
+    </message>
 </context>
 <context>
     <name>elui::SceneDock</name>

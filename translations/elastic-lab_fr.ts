@@ -2223,6 +2223,38 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <source>distance&lt;br&gt;to view %1</source>
         <translation>distance&lt;br&gt;à la vue %1</translation>
     </message>
+    <message>
+        <source>double</source>
+        <translation>double (64 bits)</translation>
+    </message>
+    <message>
+        <source>float</source>
+        <translation>simple (32 bits)</translation>
+    </message>
+    <message>
+        <source>double: state and forces in 64-bit numbers. float: in 32-bit numbers, as fast engines and games compute (euler, midpoint, rk4, symplectic-euler, verlet; one view; no walls or mouse: the run stops at a wall, a held particle steps in double). The readout shows how far the float run is from double.</source>
+        <translation>double : état et forces en nombres de 64 bits. simple : en nombres de 32 bits, comme calculent les moteurs rapides et les jeux (euler, midpoint, rk4, symplectic-euler, verlet ; une seule vue ; ni murs ni souris : le calcul s&apos;arrête à un mur, une particule tenue avance en double). L&apos;affichage montre l&apos;écart entre le calcul en simple et le calcul en double.</translation>
+    </message>
+    <message>
+        <source>Precision</source>
+        <translation>Précision</translation>
+    </message>
+    <message>
+        <source>precision</source>
+        <translation>précision</translation>
+    </message>
+    <message>
+        <source>double while held</source>
+        <translation>double tant que tenu</translation>
+    </message>
+    <message>
+        <source>float − double</source>
+        <translation>simple − double</translation>
+    </message>
+    <message>
+        <source>round-off (est.)</source>
+        <translation>arrondi (estimé)</translation>
+    </message>
 </context>
 <context>
     <name>elui::SceneDock</name>

@@ -115,6 +115,13 @@ struct Frame {
     double stepsPerSecond = 0.0;
     bool fallingBehind = false;           // real-time mode could not keep up
     double atol = 1e-6, rtol = 1e-6;      // the adaptive methods' tolerances in use [m, m/s] and [1]
+    // Precision (issue 27, lanes.h): float asked for, lane 0's last step a float step, the RMS
+    // distance between the float run and its shadow double run [m] (< 0: no shadow: a body
+    // above Lanes::kShadowParticles), and the float run's predicted round-off [m].
+    bool floatWanted = false;
+    bool floatActive = false;
+    double floatDistance = -1.0;
+    double floatRoundoff = 0.0;
     quint64 serial = 0;                   // increases with every published frame
     TimelineInfo timeline;
     // A scene of several bodies: the world's own diagnostics (per body, momentum, min_gap) and

@@ -16,6 +16,7 @@
 
 #include <QStringList>
 
+#include "simcore/float_path.h"
 #include "simcore/timeline.h"
 #include "ui/frame.h"
 
@@ -31,8 +32,14 @@ public:
     List build(const simcore::ParameterSet& params, const QStringList& integrators,
                std::optional<std::string>& error) const;
     // Takes the lanes built (the old ones go).
-    void adopt(List lanes) { m_lanes = std::move(lanes); }
-    void clear() { m_lanes.clear(); }
+    void adopt(List lanes) {
+        dropFloat();
+        m_lanes = std::move(lanes);
+    }
+    void clear() {
+        dropFloat();
+        m_lanes.clear();
+    }
 
     bool empty() const { return m_lanes.empty(); }
     std::size_t size() const { return m_lanes.size(); }
@@ -91,12 +98,47 @@ public:
     // Gives every lane the start kick (replacing its velocities), if there is one.
     void applyKick();
 
+    // --- precision float (simcore/float_path.h) ---
+    // Wanted: a single lane whose integrator has a float build steps on the float path (state
+    // and forces in float) while no particle is held (the float path has no pointer); side by
+    // side, or while held, the lanes step in double. After every float step the lane takes the
+    // float state in double (simcore::FloatSimulation::writeStateTo's values, handed over
+    // through a snapshot so that the energy ledger goes on: rows, frames, the timeline and
+    // the failure banner read the lane as before). Any change to the lane (an edit, a grab,
+    // a reset, a restored moment) restarts the float run from the lane at the next step.
+    void setFloatWanted(bool on) {
+        m_floatWanted = on;
+        if (!on) dropFloat();
+    }
+    bool floatWanted() const { return m_floatWanted; }
+    // Whether the last step of lane 0 was a float step.
+    bool floatActive() const { return m_float != nullptr; }
+    // The float run restarts from the lane at its next step.
+    void dropFloat();
+    // The shadow: a double run of lane 0's body, started with the float run from the same
+    // state and stepped beside it, while the body has at most this many particles (a bigger
+    // body would step at half the speed; its readout shows the round-off estimate instead).
+    static constexpr int kShadowParticles = 6000;
+    // RMS distance between the float run's particles and the shadow's [m]; < 0: no shadow.
+    double floatDistance() const;
+    // The float run's predicted round-off, eps_float X sqrt(n) (simlab::roundoffFloor: X the
+    // largest |coordinate|, n the float steps so far) [m]; 0 when no float run.
+    double floatRoundoff() const;
+
     // Every lane as a frame shows it: positions, diagnostics, failure, pointer, divergence from
     // lane 0 (from the first live lane once lane 0 has failed), and (when wanted) the force vectors and the selected particle's breakdown.
     std::vector<LaneFrame> laneFrames(bool forces, int selected) const;
 
 private:
+    bool canStepFloat() const;
+    void startFloat();
+    void stepFloat();
     List m_lanes;
+    bool m_floatWanted = false;
+    std::unique_ptr<simcore::FloatSimulation> m_float;
+    std::unique_ptr<simcore::Simulation> m_shadow;
+    simcore::Diagnostics m_floatBase;     // lane 0's ledger when the float run started
+    long m_floatFirstStep = 0;
     double m_commonTime = 0.0;            // the time every live lane has reached [s]
     double m_kickInner = 0.0, m_kickOuter = 0.0;  // start kick along x [m/s]
     bool m_stepDoubling = false;

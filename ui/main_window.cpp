@@ -590,6 +590,7 @@ void MainWindow::connectController() {
     connect(m_runDock, &RunDock::resetRequested, c, &SimulationController::reset);
     connect(m_runDock, &RunDock::speedChosen, c, &SimulationController::setSpeed);
     connect(m_runDock, &RunDock::stepDoublingToggled, c, &SimulationController::setStepDoubling);
+    connect(m_runDock, &RunDock::floatPrecisionChosen, c, &SimulationController::setFloatPrecision);
     connect(m_runDock, &RunDock::tolerancesEdited, c, &SimulationController::setTolerances);
     connect(m_runDock, &RunDock::message, this, &MainWindow::status);
 }

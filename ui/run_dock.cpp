@@ -17,6 +17,7 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
+#include "simlab/request.h"
 #include "ui/accessibility.h"
 #include "ui/field_keys.h"
 #include "ui/language.h"
@@ -74,6 +75,17 @@ QFormLayout* RunDock::createForm(QWidget* host) {
     m_dtTip = tr("%1; allowed %2 s").arg(simcoreText(dtSpec->meaning), QString::fromStdString(dtSpec->rangeText()));
     m_dt->setToolTip(m_dtTip);
     form->addRow(tr("DT [s]"), m_dt);
+    // The float32 path (issue 27): the front door decides which integrators may take it.
+    m_precision = new QComboBox(host);
+    m_precision->setObjectName(QStringLiteral("precisionCombo"));
+    m_precision->addItem(tr("double"), QStringLiteral("double"));
+    m_precision->addItem(tr("float"), QStringLiteral("float"));
+    m_precision->setToolTip(tr("double: state and forces in 64-bit numbers. float: in 32-bit numbers, as fast "
+                               "engines and games compute (euler, midpoint, rk4, symplectic-euler, verlet; one "
+                               "view; no walls or mouse: the run stops at a wall, a held particle steps in double). "
+                               "The readout shows how far the float run is from double."));
+    m_precision->setAccessibleName(tr("Precision"));
+    form->addRow(tr("Precision"), m_precision);
     // The adaptive methods' tolerances (rk45, cvode-bdf, cvode-adams): the CLI's --rtol and
     // --atol, with their ranges. Greyed out while no view uses an adaptive method.
     auto* tolerances = new QWidget(host);
@@ -147,7 +159,15 @@ void RunDock::createReadout(QWidget* host, QVBoxLayout* layout) {
 // The typed fields: checked, committed on Enter or leaving, put back on Escape.
 void RunDock::connectFields() {
     connect(m_integrator, &QComboBox::currentTextChanged, this, [this](const QString& name) {
-        if (!m_updating) emit integratorChosen(name);
+        if (m_updating) return;
+        emit integratorChosen(name);
+        // A method without a float build ends a float run: the run goes on in double.
+        if (m_precision->currentData().toString() == QLatin1String("float") &&
+            !precisionAllowed(QStringLiteral("float"), name))
+            emit floatPrecisionChosen(false);
+    });
+    connect(m_precision, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_updating) choosePrecision();
     });
     auto commitDt = [this] {
         double v = 0.0;
@@ -189,6 +209,22 @@ void RunDock::connectFields() {
             markField(m_atol, {}, m_tolTip);
         });
     }
+}
+
+bool RunDock::precisionAllowed(const QString& precision, const QString& integrator) {
+    const auto problem = simlab::precisionProblem(precision.toStdString(), integrator.toStdString());
+    if (!problem) return true;
+    emit message(QString::fromStdString(*problem));  // the front door's words, as its other refusals
+    m_updating = true;
+    m_precision->setCurrentIndex(0);
+    m_updating = false;
+    return false;
+}
+
+void RunDock::choosePrecision() {
+    const QString precision = m_precision->currentData().toString();
+    if (!precisionAllowed(precision, m_integrator->currentText())) return;
+    emit floatPrecisionChosen(precision == QLatin1String("float"));
 }
 
 void RunDock::connectButtons() {
@@ -234,6 +270,22 @@ QString RunDock::viewTable(const Frame& frame) {
     return html + QStringLiteral("</table>");
 }
 
+QString RunDock::floatRows(const Frame& frame) {
+    auto row = [](const QString& name, const QString& value) {
+        return QStringLiteral("<tr><td>%1&nbsp;</td><td align=right>%2</td></tr>").arg(name, value);
+    };
+    const LaneFrame& lane = frame.lanes.front();
+    if (!frame.floatActive)
+        return row(tr("precision"), lane.pointer.active ? tr("double while held") : tr("double"));
+    QString html = row(tr("precision"), tr("float"));
+    // The distance to the shadow double run (small bodies), else the predicted round-off.
+    if (frame.floatDistance >= 0.0)
+        html += row(tr("float − double"), QStringLiteral("%1 m").arg(num(frame.floatDistance, 'e', 2)));
+    else
+        html += row(tr("round-off (est.)"), QStringLiteral("%1 m").arg(num(frame.floatRoundoff, 'e', 2)));
+    return html;
+}
+
 void RunDock::showFrame(const FramePtr& frame) {
     if (!frame || frame->lanes.empty()) return;
     m_updating = true;
@@ -249,6 +301,10 @@ void RunDock::showFrame(const FramePtr& frame) {
     } else if (m_integrator->currentIndex() != -1) {
         m_integrator->setCurrentIndex(-1);
     }
+    // Float runs one view of one body: side by side, and a world's bodies, step in double.
+    m_precision->setEnabled(single && !frame->world);
+    if (const int index = frame->floatWanted ? 1 : 0; m_precision->currentIndex() != index)
+        m_precision->setCurrentIndex(index);
     const double dt = frame->parameters.get(simcore::Param::Dt);
     if (dt != m_shownDt && !m_dt->hasFocus()) {
         m_dt->setText(num(dt, 'g', 10));
@@ -294,6 +350,7 @@ void RunDock::showFrame(const FramePtr& frame) {
         html += row(tr("removed by contact"),
                     QStringLiteral("%1 J").arg(num(d.removedContact + d.removedCollisions, 'g', 4)));
         html += row(tr("energy drift"), QStringLiteral("%1 J").arg(num(d.energyDrift(), 'e', 2)));
+        if (frame->floatWanted) html += floatRows(*frame);
     }
     if (d.hasSolverCounters) {  // CVODE's own counters (issue 13)
         const simcore::SolverCounters& c = d.solver;

@@ -1,6 +1,7 @@
 #pragma once
-// RunDock: integrator, DT, run/pause, single step, reset, speed, and the readout
-// (simulated time, wall time, steps per second, error estimate, divergence side by side).
+// RunDock: integrator, DT, precision, run/pause, single step, reset, speed, and the readout
+// (simulated time, wall time, steps per second, error estimate, divergence side by side, how
+// far a float run is from double).
 
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -25,6 +26,7 @@ public:
     QComboBox* integratorCombo() const { return m_integrator; }
     QLabel* readout() const { return m_readout; }
     QLineEdit* dtEdit() const { return m_dt; }
+    QComboBox* precisionCombo() const { return m_precision; }
 
 public slots:
     void showFrame(const elui::FramePtr& frame);
@@ -33,6 +35,10 @@ public:
     // Side by side: every view's time (✕ and when, for a failed one), steps, energy drift and
     // distance to the reference view (view 1, or the first live one once view 1 failed).
     static QString viewTable(const Frame& frame);
+    // Precision float: the readout's rows (the precision in use, and how far the float run is
+    // from double: the RMS distance to its shadow double run, or above Lanes::kShadowParticles
+    // the predicted round-off eps X sqrt(n)).
+    static QString floatRows(const Frame& frame);
 
 signals:
     void integratorChosen(const QString& name);
@@ -43,6 +49,9 @@ signals:
     void resetRequested();
     void speedChosen(elui::Speed speed);
     void stepDoublingToggled(bool on);
+    // Precision float chosen (true) or double; refused by the front door (simlab::precisionProblem)
+    // for an integrator without a float build, with its message.
+    void floatPrecisionChosen(bool on);
     void tolerancesEdited(double atol, double rtol);
     void message(const QString& text);
 
@@ -58,6 +67,11 @@ private:
     QPushButton* m_step = nullptr;
     QPushButton* m_reset = nullptr;
     QComboBox* m_speed = nullptr;
+    QComboBox* m_precision = nullptr;
+    // Asks the front door whether `precision` may run with `integrator`; a refusal puts the
+    // combo back to double with the message.
+    bool precisionAllowed(const QString& precision, const QString& integrator);
+    void choosePrecision();
     QCheckBox* m_doubling = nullptr;
     QLabel* m_readout = nullptr;
     bool m_running = false;

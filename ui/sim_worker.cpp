@@ -196,17 +196,22 @@ void SimWorker::setTolerances(double atol, double rtol) {
     publish(true);
 }
 
-void SimWorker::setStepDoubling(bool on) {
-    if (m_lanes.empty()) {
-        m_lanes.setStepDoubling(on);
+void SimWorker::setStepDoubling(bool on) { logSwitch(Input::StepDoubling, on); }
+
+void SimWorker::setFloatPrecision(bool on) { logSwitch(Input::Precision, on); }
+
+void SimWorker::logSwitch(Input::Kind kind, bool on) {
+    Input input;
+    input.kind = kind;
+    input.value = on ? 1.0 : 0.0;
+    if (m_lanes.empty()) {  // before the first scene: kept for the lanes to come
+        applyInput(input);
         return;
     }
-    Input input;
-    input.kind = Input::StepDoubling;
-    input.value = on ? 1.0 : 0.0;
     logInput(std::move(input));
     publish(true);
 }
+
 
 void SimWorker::setForcesWanted(bool on) {
     m_forcesWanted = on;
@@ -444,6 +449,10 @@ void SimWorker::publish(bool force) {
     frame->fallingBehind = m_pacer.fallingBehind();
     frame->atol = m_lanes.atol();
     frame->rtol = m_lanes.rtol();
+    frame->floatWanted = m_lanes.floatWanted();
+    frame->floatActive = m_lanes.floatActive();
+    frame->floatDistance = m_lanes.floatDistance();
+    frame->floatRoundoff = m_lanes.floatRoundoff();
     frame->timeline = timelineInfo();
     frame->lanes = m_lanes.laneFrames(m_forcesWanted, m_selected);
     frame->runStart = m_runStart;
@@ -528,10 +537,12 @@ void SimWorker::applyInput(const Input& input) {
             m_params = m_lanes.front().parameters();
             break;
         case Input::Integrator:
+            m_lanes.dropFloat();
             if (auto error = m_lanes.front().setIntegrator(input.key))
                 emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
             break;
         case Input::StepDoubling: m_lanes.setStepDoubling(input.value != 0.0); break;
+        case Input::Precision: m_lanes.setFloatWanted(input.value != 0.0); break;
         case Input::Tolerances: m_lanes.setTolerances(input.value, input.value2); break;
         case Input::Grab: m_lanes.grab(input.particle, input.anchor); break;
         case Input::Move: m_lanes.moveAnchor(input.anchor); break;

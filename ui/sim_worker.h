@@ -79,6 +79,9 @@ public:
     void setParameter(simcore::Param id, double value);
     void setSpeed(int speed);
     void setStepDoubling(bool on);
+    // Precision float (lanes.h): lane 0 steps on the float path where it can. Logged on the
+    // timeline, as an edit.
+    void setFloatPrecision(bool on);
     void setTolerances(double atol, double rtol);
     void setForcesWanted(bool on);
     // Whether each recorded row gets its error bands (Simulation::observableErrors: two
@@ -144,17 +147,19 @@ private:
 
     // Time travel. What was done between two steps, replayed when a moment is re-simulated.
     struct Input {
-        enum Kind { Parameter, Integrator, StepDoubling, Tolerances, Grab, Move, Release, Until };
+        enum Kind { Parameter, Integrator, StepDoubling, Tolerances, Grab, Move, Release, Until, Precision };
         long moment = 0;                  // done at this moment (after its step)
         double time = 0.0;                // lane 0's simulated time then [s]
         Kind kind = Parameter;
         simcore::Param param = simcore::Param::Count;  // Parameter
         std::string key;                  // Integrator: the name
-        double value = 0.0;               // Parameter, StepDoubling (0/1), Until, Tolerances: atol
+        double value = 0.0;               // Parameter, StepDoubling and Precision (0/1), Until, Tolerances: atol
         double value2 = 0.0;              // Tolerances: rtol
         int particle = -1;                // Grab
         Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // Grab, Move
     };
+    // A switch (step doubling, precision float) as a logged input; before the first scene, kept.
+    void logSwitch(Input::Kind kind, bool on);
     // Logs an input done now (a branch first when the moment shown is not the newest).
     void logInput(Input input);
     void applyInput(const Input& input);

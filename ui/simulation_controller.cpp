@@ -195,6 +195,7 @@ void SimulationController::setParameter(const QString& key, double value) {
 }
 void SimulationController::setSpeed(Speed speed) { toWorker(&SimWorker::setSpeed, int(speed)); }
 void SimulationController::setStepDoubling(bool on) { toWorker(&SimWorker::setStepDoubling, on); }
+void SimulationController::setFloatPrecision(bool on) { toWorker(&SimWorker::setFloatPrecision, on); }
 void SimulationController::setTolerances(double atol, double rtol) { toWorker(&SimWorker::setTolerances, atol, rtol); }
 void SimulationController::setForcesWanted(bool on) { toWorker(&SimWorker::setForcesWanted, on); }
 void SimulationController::setErrorBandsWanted(bool on) { toWorker(&SimWorker::setErrorBandsWanted, on); }

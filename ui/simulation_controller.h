@@ -78,6 +78,7 @@ public:
     void setParameter(const QString& key, double value);
     void setSpeed(Speed speed);
     void setStepDoubling(bool on);
+    void setFloatPrecision(bool on);
     // The adaptive methods' tolerances (rk45, cvode-bdf, cvode-adams), every lane; logged for time travel.
     void setTolerances(double atol, double rtol);
     void setForcesWanted(bool on);

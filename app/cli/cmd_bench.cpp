@@ -60,10 +60,8 @@ void checkBench(BenchArgs& args) {
     simcore::ParameterSet& params = args.setup.params;
     if (params.has(simcore::Param::Scaling))
         if (!params.isExplicit(simcore::Param::Scaling)) params.set(simcore::Param::Scaling, 1.0);
+    simlab::checkPrecision(args.precision, args.setup.integrator);  // the front door
     if (args.precision == "float") {
-        if (!simcore::floatPathSupports(args.setup.integrator))
-            throw UsageError("--precision float is built for the explicit integrators " +
-                             simcore::floatPathIntegrators() + ", not " + args.setup.integrator);
         if (args.stages) throw UsageError("--stages times the double path's stages; not with --precision float");
     }
 }
@@ -174,7 +172,7 @@ Command addBenchCommand(CLI::App& app) {
     sub->add_option("--precision", args->precision,
                      "double, or float: the float32 path (state and forces in float; euler, midpoint, rk4, "
                      "symplectic-euler, verlet; no contact)")
-        ->check(CLI::IsMember({"double", "float"}))
+        ->type_name("P")
         ->capture_default_str();
     sub->add_flag("--header", args->header, "print the CSV header line first");
     sub->add_flag("--stages", args->stages,

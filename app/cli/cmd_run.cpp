@@ -151,10 +151,8 @@ void checkRun(RunArgs& args) {
             if (given) throw UsageError(std::string(option) + " takes scenes of one body; " + args.setup.sceneName +
                                         " has " + std::to_string(args.setup.world->bodies.size()) + " bodies");
     }
-    if (args.precision == "float" && !simcore::floatPathSupports(args.setup.integrator))
-        throw UsageError("--precision float is built for the explicit integrators " + simcore::floatPathIntegrators() +
-                         ", not " + args.setup.integrator);
-    simlab::RunRequest request;  // the front door: steps, duration
+    simlab::RunRequest request;  // the front door: steps, duration, precision
+    request.precision = args.precision;
     request.duration = args.duration;
     request.maxSteps = args.maxSteps;
     request.options = args.integrator;
@@ -376,10 +374,7 @@ int run(const RunArgs& args) {
     if (single) {
         // The state table and the scene file from the float state, in double (a saved scene
         // resumes on the double path unless run again with --precision float).
-        const Eigen::VectorXd y = single->state();
-        const auto n = static_cast<Eigen::Index>(single->topology().particleCount());
-        sim.setState(Eigen::Map<const Eigen::Matrix3Xd>(y.data(), 3, n), Eigen::Map<const Eigen::Matrix3Xd>(y.data() + 3 * n, 3, n),
-                     single->stepCount(), single->time());
+        single->writeStateTo(sim);
     }
     if (state) state->write(simlab::inDialect(simlab::stateTable(sim), args.dialect, true));
     if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
@@ -466,7 +461,7 @@ Command addRunCommand(CLI::App& app) {
     sub->add_option("--precision", args->precision,
                     "double, or float: the float32 path (state and forces in float, diagnostics in double; euler, "
                     "midpoint, rk4, symplectic-euler, verlet; no contact: the run stops where a particle reaches a wall)")
-        ->check(CLI::IsMember({"double", "float"}))
+        ->type_name("P")
         ->capture_default_str();
     sub->add_flag("--quiet", args->quiet, "no summary on standard output, no progress line and no notes on standard error");
     addJsonFlag(*sub, args->json);

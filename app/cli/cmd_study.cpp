@@ -243,7 +243,9 @@ int runStudy(const StudyArgs& args) {
             std::printf("budget       a run longer than %g s is not reached, nor any costlier point of its curve\n",
                         spec.timeBudget);
         if (std::find(spec.precisions.begin(), spec.precisions.end(), "float") != spec.precisions.end())
-            std::printf("float        the float build of the reference problem (spring1d)%s\n",
+            std::printf("float        %s%s\n",
+                        simlab::floatOnReferenceProblem(spec) ? "the float build of the reference problem (spring1d)"
+                            : "the float32 path (state and forces in float), one thread",
                         spec.compensated ? ", compensated (Kahan) state update" : "");
     }
     simlab::StudyReference reference;
@@ -361,8 +363,9 @@ Command addStudyCommand(CLI::App& app) {
                               ->check(finiteIn(0.0, 1e6, false))
                               ->capture_default_str();
     CLI::Option* precision = sub->add_option("--precision", args->precision,
-                                             "double (the simulation), float (the float build of spring1d: the round-off "
-                                             "floor), or both: double,float")
+                                             "double (the simulation), float (the float32 path: euler, midpoint, rk4, "
+                                             "symplectic-euler, verlet; for spring1d its float build, also the Yoshida "
+                                             "methods), or both: double,float (the round-off floor of each)")
                                  ->type_name("P[,P]")
                                  ->default_str("double");
     CLI::Option* compensated = sub->add_flag("--compensated", args->compensated,

@@ -20,6 +20,7 @@
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QCommandLineParser>
 #include <QFileInfo>
 #include <QImageWriter>
@@ -170,6 +171,11 @@ int main(int argc, char** argv) {
     const QCommandLineOption doublingOpt(QStringLiteral("step-doubling"),
                                          QStringLiteral("Estimate the error of fixed-step methods by step doubling "
                                                         "(the Run dock's checkbox)."));
+    const QCommandLineOption precisionOpt(QStringLiteral("precision"),
+                                          QStringLiteral("double, or float: the float32 path (the Run dock's "
+                                                         "Precision; euler, midpoint, rk4, symplectic-euler, "
+                                                         "verlet; one view of one body)."),
+                                          QStringLiteral("P"), QStringLiteral("double"));
     const QCommandLineOption fpsOpt(QStringLiteral("measure-fps"),
                                     QStringLiteral("Run in real time for SECONDS of wall time, print frame rate, "
                                                    "step rate and GUI latency, exit."),
@@ -195,7 +201,7 @@ int main(int argc, char** argv) {
                                                      "View > Presentation mode, Ctrl+= / Ctrl+-)."),
                                       QStringLiteral("SCALE"));
     parser.addOptions({sceneOpt, setOpt, integratorOpt, compareOpt, presetOpt, lessonOpt, experimentsOpt, shotOpt, afterOpt,
-                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, scaleOpt, contrastOpt, langOpt});
+                       optionsOpt, docksOpt, fpsOpt, travelOpt, branchOpt, selectOpt, doublingOpt, precisionOpt, scaleOpt, contrastOpt, langOpt});
     // Bad input is exit 2 with one line, as in elastic-lab-cli (process() would exit 1).
     if (!parser.parse(QApplication::arguments())) return fail(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) parser.showHelp(0);
@@ -284,6 +290,8 @@ int main(int argc, char** argv) {
     for (const QString& name : integrators) lanes.push_back(name.toStdString());
     try {
         simlab::checkLanes(params, lanes);
+        // --precision: the front door's check, as the CLI's run (every view's integrator).
+        for (const std::string& name : lanes) simlab::checkPrecision(parser.value(precisionOpt).toStdString(), name);
     } catch (const simlab::RequestError& e) {
         return fail(QString::fromStdString(e.what()));
     }
@@ -407,6 +415,7 @@ int main(int argc, char** argv) {
     }
     elui::SimulationController* controller = window.controller();
     if (parser.isSet(doublingOpt)) window.runDock()->findChild<QCheckBox*>(QStringLiteral("stepDoubling"))->setChecked(true);
+    if (parser.value(precisionOpt) == QLatin1String("float")) window.runDock()->precisionCombo()->setCurrentIndex(1);
     if (world) {
         if (file) {
             simlab::SceneFile changed = *file;

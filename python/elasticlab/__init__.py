@@ -150,7 +150,7 @@ class Simulation(_core.Simulation):
             every_steps: Optional[int] = None,
             progress: Union[None, bool, Callable[[float], Any]] = None,
             csv: Optional[PathLike] = None, xlsx: Optional[PathLike] = None,
-            csv_dialect: str = "plain") -> np.ndarray:
+            csv_dialect: str = "plain", precision: str = "double") -> np.ndarray:
         """Runs for `duration` seconds of simulated time and returns the rows it sampled.
 
         Parameters
@@ -177,6 +177,14 @@ class Simulation(_core.Simulation):
         csv_dialect : str
             ``"plain"`` (comma, decimal point) or ``"excel-semicolon"`` (semicolon, decimal
             comma, CRLF, UTF-8 byte-order mark: spreadsheets in decimal-comma locales).
+        precision : str
+            ``"double"``, or ``"float"``: the float32 path steps the run (state and forces in
+            float, the diagnostics measured in double; euler, midpoint, rk4, symplectic-euler and
+            verlet; no contact: a run fails where a particle reaches a wall), with this
+            simulation's threads (the same bits with any count), as the CLI's ``run --precision
+            float``. Afterwards the simulation holds the float run's end state in double (a
+            failed float run leaves it where it started). Other integrators: ValueError with the
+            CLI's message.
 
         Returns
         -------
@@ -215,7 +223,7 @@ class Simulation(_core.Simulation):
         callback = _progress_callback(progress, start, float(duration) if np.isfinite(duration) else 0.0)
         try:
             table = super().run(duration, every=every_steps, times=times, progress=callback, csv=csv, xlsx=xlsx,
-                                csv_dialect=csv_dialect, every_seconds=every)
+                                csv_dialect=csv_dialect, every_seconds=every, precision=precision)
         except SimulationFailed as e:
             if getattr(e, "rows", None) is not None:
                 e.rows = self._named(e.rows)
@@ -416,20 +424,23 @@ def _progress_callback(progress, start: float, duration: float):
 def study(scene: PathLike, *, integrators: Sequence[str] = ("euler", "midpoint", "rk4"),
           dts: Optional[Sequence[float]] = None, tolerances: Optional[Sequence[float]] = None,
           duration: float = 2.0, repeat: int = 1, reference: str = "auto", samples: int = 20,
-          fixed_step: bool = False, time_budget: float = 0.0, precision: Sequence[str] = ("double",),
+          fixed_step: bool = False, time_budget: float = 0.0, precision: Union[str, Sequence[str]] = ("double",),
           compensated: bool = False, csv: Optional[PathLike] = None, timings: Optional[PathLike] = None,
           plot: Optional[PathLike] = None, title: Optional[str] = None, **parameters: Any) -> dict:
     """Work-precision study (the CLI's ``study``): every integrator at every step `dts` [s] (or
     tolerance) over `duration` [s] against a reference, each point timed `repeat` times;
     returns ``{'rows': [dict per point: walls, wall_min/q1/median/q3 [s], error_final,
     error_max, error_rms, ...], 'orders', ...}``. ``time_budget`` [s]: a slower point is "not
-    reached"; ``precision=("double", "float")`` adds the float build of the 1D spring (the
-    round-off floor), ``compensated`` its Kahan-summed update. ``csv=``, ``timings=`` and
+    reached"; ``precision="float"`` runs the float32 path (euler, midpoint, rk4,
+    symplectic-euler, verlet; for the 1D spring its float build, also the Yoshida methods),
+    ``precision=("double", "float")`` both: the float curve flattens at the round-off floor;
+    ``compensated`` Kahan-sums the 1D spring's float update. ``csv=``, ``timings=`` and
     ``plot=`` write the CLI's files."""
     return _core.study(scene, integrators=list(integrators), dts=None if dts is None else list(dts),
                        tolerances=None if tolerances is None else list(tolerances), duration=duration,
                        repeat=repeat, reference=reference, samples=samples, fixed_step=fixed_step,
-                       time_budget=time_budget, precision=list(precision), compensated=compensated, csv=csv,
+                       time_budget=time_budget,
+                       precision=[precision] if isinstance(precision, str) else list(precision), compensated=compensated, csv=csv,
                        timings=timings, plot=plot, title=title, **parameters)
 
 

@@ -326,6 +326,37 @@ def test_study_in_float_shows_the_round_off_floor():
         el.study("spring1d", integrators=["rk45"], dts=[0.01], precision=["float"])
 
 
+def test_a_float_run_steps_the_float_path(tmp_path):
+    """precision="float": the float path steps the run (the same bits with 1 and 2 threads, as
+    the CLI's run --precision float writes them), close to double but not double, and the
+    simulation holds its end state afterwards."""
+    def run(precision, threads, state=None):
+        sim = el.Simulation("ring2d", gravity=0.0, perturb=0.02, threads=threads)
+        rows = sim.run(0.2, every_steps=10, precision=precision)
+        return sim, rows
+    f1, rows = run("float", 1)
+    f2, _ = run("float", 2)
+    d, _ = run("double", 1)
+    assert f1.time == pytest.approx(d.time) and f1.step_count == d.step_count == 67
+    assert np.array_equal(f1.positions, f2.positions)
+    assert not np.array_equal(f1.positions, d.positions)
+    assert 0 < np.abs(f1.positions - d.positions).max() < 1e-4
+    assert rows["step"][-1] == f1.step_count and abs(rows["energy_drift"]).max() < 1e-3
+    if CLI:  # the CLI's float run ends in the same state, bit for bit
+        subprocess.run([CLI, "run", "--scene", "ring2d", "--set", "gravity=0", "--set", "perturb=0.02",
+                        "--duration", "0.2", "--precision", "float", "--quiet", "--state", str(tmp_path / "s.csv")],
+                       check=True)
+        with open(tmp_path / "s.csv") as f:
+            table = list(csv.DictReader(f))
+        assert [float(r["x"]) for r in table] == list(f1.positions[:, 0])
+    # The study takes precision="float" too (the float path beyond spring1d).
+    result = el.study("ring2d", integrators=["rk4"], dts=[0.002], duration=0.1, gravity=0.0, perturb=0.02,
+                      precision="float")
+    assert [r["precision"] for r in result["rows"]] == ["float"]
+    with pytest.raises(ValueError, match="^precision float is built for the explicit integrators"):
+        el.Simulation("ring2d", integrator="rk45").run(0.1, precision="float")
+
+
 def test_conservation_classifies_the_growth(tmp_path):
     out = el.conservation("spring1d", integrators=["verlet", "rk4"], periods=300, dt=0.01, csv=tmp_path / "c.csv")
     rows = {r["integrator"]: r for r in out["rows"]}
