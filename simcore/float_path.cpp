@@ -400,11 +400,14 @@ std::string floatPathIntegrators() {
     return s;
 }
 
+std::string floatPathIntegratorRefusal(std::string_view integrator) {
+    if (floatPathSupports(integrator)) return "";
+    return "precision float is built for the explicit integrators " + floatPathIntegrators() + ", not " +
+           quoteShort(integrator);
+}
+
 std::string floatPathRefusal(const Simulation& start) {
-    const std::string_view name = start.integrator().name();
-    if (!floatPathSupports(name))
-        return "precision float is built for the explicit integrators " + floatPathIntegrators() + ", not " +
-               std::string(name);
+    if (std::string refusal = floatPathIntegratorRefusal(start.integrator().name()); !refusal.empty()) return refusal;
     if (start.pointer().active) return "precision float has no pointer (mouse spring)";
     return "";
 }

@@ -43,6 +43,9 @@ namespace simcore {
 bool floatPathSupports(std::string_view integrator);
 // "euler, midpoint, rk4, symplectic-euler, verlet" for messages.
 std::string floatPathIntegrators();
+// Why this integrator cannot take the float path ("" when it can): "precision float is built
+// for the explicit integrators ..., not 'NAME'" (the front door's words, simlab/request.h).
+std::string floatPathIntegratorRefusal(std::string_view integrator);
 // Why a run of this simulation cannot take the float path ("" when it can): an integrator
 // without a float build, or the pointer held.
 std::string floatPathRefusal(const Simulation& start);

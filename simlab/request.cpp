@@ -188,9 +188,8 @@ void checkFiles(const std::vector<NamedPath>& inputs, const std::vector<NamedPat
 std::optional<std::string> precisionProblem(const std::string& precision, const std::string& integrator) {
     if (precision != "double" && precision != "float")
         return "unknown precision " + quoted(precision) + "; allowed: double, float";
-    if (precision == "float" && !simcore::floatPathSupports(integrator))
-        return "precision float is built for the explicit integrators " + simcore::floatPathIntegrators() + ", not " +
-               quoted(integrator);
+    if (precision != "float") return std::nullopt;
+    if (std::string refusal = simcore::floatPathIntegratorRefusal(integrator); !refusal.empty()) return refusal;
     return std::nullopt;
 }
 

@@ -13,7 +13,6 @@
 #include "simlab/analytic.h"
 #include "simlab/output.h"
 #include "simlab/reference_problem.h"
-#include "simlab/request.h"
 
 namespace simlab {
 
@@ -259,9 +258,9 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
             return "precision " + quoteShort(precision) + " is listed twice";
         if (precision != "float") continue;
         if (!floatOnReferenceProblem(spec)) {
-            // The float path of the Simulation: the front door's check, as run's and bench's.
+            // The float path of the Simulation: the front door's words (request.h), as run's and bench's.
             for (const std::string& name : spec.integrators)
-                if (auto problem = precisionProblem("float", name)) return problem;
+                if (std::string refusal = simcore::floatPathIntegratorRefusal(name); !refusal.empty()) return refusal;
             continue;
         }
         for (const std::string& name : spec.integrators)
