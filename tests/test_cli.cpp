@@ -374,7 +374,7 @@ private slots:
         QVERIFY2(resumed.code == 0, qPrintable(resumed.err));
         QCOMPARE(readLines(path("resumed.csv")), readLines(path("straight.csv")));
         // A one-body command refuses it by what it is.
-        const Result study = cli({"study", "--scene", saved});
+        const Result study = cli({"conservation", "--scene", saved});
         QCOMPARE(study.code, 2);
         QVERIFY2(study.err.contains("a scene of several bodies"), qPrintable(study.err));
     }
