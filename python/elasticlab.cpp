@@ -89,9 +89,11 @@ std::string parameterText(const std::string& key, const py::handle& value) {
     return py::repr(py::float_(numberOf(value, key, "a number or a name"))).cast<std::string>();
 }
 
-Scene sceneFrom(const py::object& scene, const py::kwargs& parameters, const py::object& integrator = py::none()) {
+Scene sceneFrom(const py::object& scene, const py::kwargs& parameters, const py::object& integrator = py::none(),
+                bool severalBodies = false) {
     simlab::SceneRequest request;
     request.scene = pathText(scene);
+    request.severalBodies = severalBodies;  // where the CLI's command takes a world, so does Python
     for (const auto& [k, value] : parameters) {
         const std::string key = py::str(k).cast<std::string>();
         if (key.find('=') != std::string::npos)
@@ -904,9 +906,10 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
                const std::vector<std::string>& precision, bool compensated, const py::object& csvPath,
                const py::object& timingsPath, const py::object& plotPath, const py::object& title,
                const py::kwargs& parameters) {
-    const Scene s = sceneFrom(scene, parameters);
+    const Scene s = sceneFrom(scene, parameters, py::none(), true);
     simlab::StudySpec spec;
     spec.params = s.params;
+    spec.world = s.world;  // a scene of several bodies: the whole world, as the CLI's study
     spec.integrators = integratorList(integrators);
     if (dts) spec.dts = *dts;
     if (tolerances) spec.tolerances = *tolerances;
@@ -1036,9 +1039,10 @@ py::dict conservation(const py::object& scene, const std::vector<std::string>& i
 py::dict stability(const py::object& scene, const std::vector<std::string>& integrators, const py::handle& duration,
                    const py::handle& perturb, const py::handle& hmin, const py::handle& hmax, const py::object& csvPath,
                    const py::kwargs& parameters) {
-    const Scene s = sceneFrom(scene, parameters);
+    const Scene s = sceneFrom(scene, parameters, py::none(), true);
     simlab::StabilitySpec spec;
     spec.params = s.params;
+    spec.world = s.world;  // a scene of several bodies: the whole world, as the CLI's stability
     spec.integrators = integratorList(integrators);
     spec.duration = checkedNumber(duration, "duration", 0.0, 1e5, true, false, "s");
     spec.perturb = checkedNumber(perturb, "perturb", 0.0, 1e3, false, false, "m");
@@ -1055,7 +1059,7 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
         std::vector<simlab::StabilityRow> rows;
     };
     const Outcome out = cancellable([&](const std::atomic<bool>* cancel) {
-        Outcome o{simlab::stabilityModes(spec.params), {}};
+        Outcome o{simlab::stabilityModes(spec), {}};
         if (!*cancel) o.rows = simlab::runStability(spec, o.modes, {}, cancel);
         return o;
     });
@@ -1072,9 +1076,11 @@ py::dict stability(const py::object& scene, const std::vector<std::string>& inte
         for (const simlab::StabilityRow& r : out.rows) csv->write(simlab::stabilityCsvRow(r, out.modes));
         commit(*csv);
     }
-    return py::dict(py::arg("rows") = rows, py::arg("omega_max") = out.modes.omegaMax,
+    py::dict result(py::arg("rows") = rows, py::arg("omega_max") = out.modes.omegaMax,
                     py::arg("free_coordinates") = out.modes.freeCoordinates,
                     py::arg("unstable_modes") = out.modes.unstableModes);
+    if (spec.world) result["bodies"] = spec.world->bodies.size();
+    return result;
 }
 
 py::dict refinement(const py::object& scene, const std::vector<int>& levels, const py::object& keyArg,
@@ -1082,9 +1088,10 @@ py::dict refinement(const py::object& scene, const std::vector<int>& levels, con
                     const py::handle& interval, const py::handle& temporalRuns, bool fixedStep,
                     const py::object& csvPath, const py::object& plotPath, const py::object& title,
                     const py::kwargs& parameters) {
-    const Scene s = sceneFrom(scene, parameters);
+    const Scene s = sceneFrom(scene, parameters, py::none(), true);
     simlab::RefinementSpec spec;
     spec.params = s.params;
+    spec.world = s.world;  // a world: every body's resolution raised together, as the CLI's
     spec.key = keyArg.is_none() ? simlab::refinementKey(s.params.kind()) : keyArg.cast<std::string>();
     spec.values = levels;
     checkIntegrator(integrator);
@@ -1437,5 +1444,6 @@ PYBIND11_MODULE(_core, m) {
           py::arg("duration") = 2.0, py::arg("perturb") = 0.01, py::arg("hmin") = 1e-5, py::arg("hmax") = 1.0,
           py::arg("csv") = py::none(),
           "Stability scan (the CLI's `stability`): {'rows': [dict per integrator], 'omega_max', ...}; csv= writes "
-          "the CLI's CSV.");
+          "the CLI's CSV. A scene of several bodies (collide2d, ...) is scanned as one world: its whole "
+          "system's eigenvalues, the trials run the world; keywords set every body.");
 }

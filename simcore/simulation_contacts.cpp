@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "simcore/internal/body_ode.h"
+#include "simcore/internal/world_body.h"
 
 namespace simcore {
 
@@ -135,29 +136,30 @@ bool Simulation::constrainLayers(bool apply, kernels::PaddedRows normals) {
 }
 
 
-Simulation::ContactDesign Simulation::contactDesign() const {
+ContactDesign contactDesignOf(const ForceModel& forces, const Body& body, bool projection,
+                              const Eigen::Ref<const Eigen::Matrix3Xd>& x) {
     ContactDesign design;
-    const ContactParams& c = m_forces.contact;
-    const double g = m_forces.terms().has(Term::Gravity) ? m_forces.params.gravity : 0.0;
+    const ContactParams& c = forces.contact;
+    const double g = forces.terms().has(Term::Gravity) ? forces.params.gravity : 0.0;
     // A body held by a fixed particle hangs from it: only free bodies are taken to fall.
-    const bool held = std::find(m_body.fixed.begin(), m_body.fixed.end(), true) != m_body.fixed.end();
-    if (m_contactProjection || !m_forces.contactWalls() || !(g > 0.0) || !(c.stiffness > 0.0) || held) return design;
-    const auto x = positions();
+    const bool held = std::find(body.fixed.begin(), body.fixed.end(), true) != body.fixed.end();
+    if (projection || !forces.contactWalls() || !(g > 0.0) || !(c.stiffness > 0.0) || held) return design;
+    const int count = body.topology.particleCount();
     double lowest = std::numeric_limits<double>::infinity(), weight = 0.0;
-    for (int i = 0; i < particleCount(); ++i) {
-        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+    for (int i = 0; i < count; ++i) {
+        if (body.fixed[static_cast<std::size_t>(i)]) continue;
         lowest = std::min(lowest, x(1, i));
-        weight += m_body.mass[i] * g;
+        weight += body.mass[i] * g;
     }
     // The contact patch: the free particles within a tenth of the body's height of its lowest
     // point (measured on the default scenes, the particles touching at rest carry their
     // weight with these depths to within 10 %: docs/numerics.md).
     double highest = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i < particleCount(); ++i)
-        if (!m_body.fixed[static_cast<std::size_t>(i)]) highest = std::max(highest, x(1, i));
+    for (int i = 0; i < count; ++i)
+        if (!body.fixed[static_cast<std::size_t>(i)]) highest = std::max(highest, x(1, i));
     const double band = 0.1 * (highest - lowest);
-    for (int i = 0; i < particleCount(); ++i)
-        if (!m_body.fixed[static_cast<std::size_t>(i)] && x(1, i) <= lowest + band) design.particles.push_back(i);
+    for (int i = 0; i < count; ++i)
+        if (!body.fixed[static_cast<std::size_t>(i)] && x(1, i) <= lowest + band) design.particles.push_back(i);
     if (design.particles.empty()) return design;
     // Rest: the weight shared by the patch (k d^3 = W / count). An impact goes deeper, but
     // only for a few steps: a step beyond the stable one there amplifies by a bounded factor,
@@ -169,6 +171,10 @@ Simulation::ContactDesign Simulation::contactDesign() const {
     design.damping = c.stiffness * d * d * d * c.alpha;
     design.friction = c.friction * c.stiffness * d * d * d / c.frictionSpeed;
     return design;
+}
+
+Simulation::ContactDesign Simulation::contactDesign() const {
+    return contactDesignOf(m_forces, m_body, m_contactProjection, positions());
 }
 
 void Simulation::setContactDesignInJacobians(bool on) {

@@ -324,6 +324,17 @@ void World::reset() {
     m_lastGood = m_y;
 }
 
+OdeSystem& World::odeSystem() { return *m_ode; }
+
+void World::setContactDesignInJacobians(bool on) {
+    for (std::size_t k = 0; k < m_bodies.size(); ++k) {
+        WorldBody& b = *m_bodies[k];
+        b.ode().setContactDesign(on ? std::optional<ContactDesign>(contactDesignOf(
+                                          b.forces(), b.body(), b.contactProjection(), positions(static_cast<int>(k))))
+                                    : std::nullopt);
+    }
+}
+
 int World::bodyOf(int particle) const {
     for (std::size_t k = 0; k < m_bodies.size(); ++k)
         if (particle >= m_bodies[k]->first() && particle < m_bodies[k]->first() + m_bodies[k]->count())

@@ -196,6 +196,12 @@ public:
     // Every particle's layer, the bodies side by side.
     const std::vector<Layer>& layers() const { return m_layers; }
 
+    // The ODE the integrators step (the stability estimates linearise it: simlab/stability.h).
+    OdeSystem& odeSystem();
+    // Whether odeSystem()'s Jacobians add each body's wall contact at its design point (as
+    // Simulation::setContactDesignInJacobians does for a body alone, from the current positions).
+    void setContactDesignInJacobians(bool on);
+
     // Measures the current state into d (everything but the accounts and counters).
     void measure(WorldDiagnostics& d);
 

@@ -9,6 +9,7 @@
 #include "simcore/forces.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/output.h"
 #include "simlab/stability.h"
 
@@ -21,6 +22,9 @@ using simcore::Param;
 using simcore::ParameterSet;
 using simcore::SceneKind;
 using simcore::Simulation;
+using simcore::World;
+using simcore::WorldBodySpec;
+using simcore::WorldSpec;
 using simcore::SpringFamily;
 using simcore::SpringSet;
 using simcore::Surface;
@@ -35,22 +39,34 @@ using simcore::validateShape;
 
 namespace {
 
-// The observables at one grid time, defined at every resolution of the same body.
+// The observables at one grid time, defined at every resolution of the same body: per body
+// (one, or every body of a world).
 struct Sample {
-    std::array<double, 2> volume{};  // enclosed volume per layer [inner, outer]: area [m^2] 2D, [m^3] 3D
-    Eigen::Vector3d com = Eigen::Vector3d::Zero();  // mass-weighted centre of mass [m]
+    // enclosed volume per layer [inner, outer]: area [m^2] 2D, [m^3] 3D
+    std::vector<std::array<double, 2>> volume;
+    std::vector<Eigen::Vector3d> com;  // mass-weighted centre of mass [m]
 };
 using Samples = std::vector<Sample>;
 
-Sample sampleOf(const Simulation& sim) {
+void addBody(Sample& s, const Topology& topo, const Eigen::Matrix3Xd& x, const Eigen::VectorXd& m) {
     // The volumes from the surfaces themselves: Diagnostics holds them only when gas is on.
-    Sample s;
-    const Topology& topo = sim.topology();
-    const Eigen::Matrix3Xd x = sim.positions();
+    std::array<double, 2> volume{};
     for (const Surface& surface : topo.surfaces)
-        s.volume[static_cast<std::size_t>(layerSlot(surface.layer))] = enclosedVolume(surface, x.data(), topo.dimension);
-    const Eigen::VectorXd& m = sim.body().mass;
-    s.com = x * m / m.sum();
+        volume[static_cast<std::size_t>(layerSlot(surface.layer))] = enclosedVolume(surface, x.data(), topo.dimension);
+    s.volume.push_back(volume);
+    s.com.push_back(x * m / m.sum());
+}
+
+Sample sampleOf(const Simulation& sim) {
+    Sample s;
+    addBody(s, sim.topology(), sim.positions(), sim.body().mass);
+    return s;
+}
+
+Sample sampleOf(const World& world) {
+    Sample s;
+    for (int k = 0; k < world.bodyCount(); ++k)
+        addBody(s, world.body(k).topology, world.positions(k), world.body(k).mass);
     return s;
 }
 
@@ -59,16 +75,18 @@ struct Errors {
     double com = 0.0;     // [m]
 };
 
-// Largest errors of `run` against `ref`; run[k] is at the grid time of ref[index[k]].
+// Largest errors of `run` against `ref` over every body; run[k] is at the grid time of ref[index[k]].
 Errors compare(const Samples& run, const Samples& ref, const std::vector<std::size_t>& index) {
     Errors e;
     for (std::size_t k = 0; k < run.size() && k < index.size(); ++k) {
         const Sample& a = run[k];
         const Sample& r = ref[index[k]];
-        for (std::size_t layer = 0; layer < 2; ++layer)
-            if (r.volume[layer] != 0.0)
-                e.volume = std::max(e.volume, std::abs(a.volume[layer] - r.volume[layer]) / std::abs(r.volume[layer]));
-        e.com = std::max(e.com, (a.com - r.com).norm());
+        for (std::size_t b = 0; b < a.volume.size() && b < r.volume.size(); ++b) {
+            for (std::size_t layer = 0; layer < 2; ++layer)
+                if (r.volume[b][layer] != 0.0)
+                    e.volume = std::max(e.volume, std::abs(a.volume[b][layer] - r.volume[b][layer]) / std::abs(r.volume[b][layer]));
+            e.com = std::max(e.com, (a.com[b] - r.com[b]).norm());
+        }
     }
     return e;
 }
@@ -117,16 +135,34 @@ struct LevelRun {
     Samples samples;
 };
 
-LevelRun runLevel(const RefinementSpec& spec, const ParameterSet& p, double dt, double tolerance,
-                  const std::vector<double>& grid, const std::atomic<bool>* cancel) {
+LevelRun runLevel(const RefinementSpec& spec, int value, double dt, double tolerance, const std::vector<double>& grid,
+                  const std::atomic<bool>* cancel) {
     IntegratorOptions options = spec.options;
     options.stepDoubling = false;  // never pay for estimates in a timing
     if (tolerance > 0.0) options.atol = options.rtol = tolerance;
     LevelRun out;
     out.samples.reserve(grid.size());
-    out.run = runSampled(p, spec.integrator, dt, options, grid, [&](const Simulation& sim) { out.samples.push_back(sampleOf(sim)); },
-                         cancel);
+    if (spec.world)
+        out.run = runSampled(refinementWorld(spec, value), spec.integrator, dt, options, grid,
+                             [&](const World& world) { out.samples.push_back(sampleOf(world)); }, cancel);
+    else
+        out.run = runSampled(refinementLevel(spec, value), spec.integrator, dt, options, grid,
+                             [&](const Simulation& sim) { out.samples.push_back(sampleOf(sim)); }, cancel);
     return out;
+}
+
+// The stability advice at the finest level for `dt`: the body's (stabilityAdvice of its
+// simulation) or the whole world's (its spectrum).
+std::optional<StabilityAdvice> finestAdvice(const RefinementSpec& spec, int finestValue, double dt) {
+    if (spec.world) {
+        WorldSpec finest = refinementWorld(spec, finestValue);
+        for (WorldBodySpec& body : finest.bodies) body.params.set(Param::Dt, dt);
+        return stabilityAdvice(stabilityModes(finest), spec.integrator, dt);
+    }
+    ParameterSet finest = refinementLevel(spec, finestValue);
+    finest.set(Param::Dt, dt);
+    const Simulation sim(finest, spec.integrator);
+    return stabilityAdvice(sim);
 }
 
 }  // namespace
@@ -159,6 +195,14 @@ ParameterSet refinementLevel(const RefinementSpec& spec, int value) {
     return p;
 }
 
+WorldSpec refinementWorld(const RefinementSpec& spec, int value) {
+    WorldSpec world = *spec.world;
+    for (std::size_t k = 0; k < world.bodies.size(); ++k)
+        if (auto error = setLevel(world.bodies[k].params, spec.key, value))
+            throw std::invalid_argument("body" + std::to_string(k + 1) + ": " + *error);
+    return world;
+}
+
 std::optional<std::string> validateRefinement(const RefinementSpec& spec) {
     const std::string key = refinementKey(spec.params.kind());
     if (key.empty()) return "this scene has no mesh to refine (the 1D spring is two particles)";
@@ -171,6 +215,19 @@ std::optional<std::string> validateRefinement(const RefinementSpec& spec) {
         ParameterSet p = spec.params;
         if (auto error = setLevel(p, spec.key, value)) return *error;
     }
+    if (spec.world)
+        // Every body's resolution is raised together: every body must refine with the same key.
+        for (std::size_t k = 0; k < spec.world->bodies.size(); ++k) {
+            const std::string own = refinementKey(spec.world->bodies[k].params.kind());
+            if (own != key)
+                return "body" + std::to_string(k + 1) + " refines with " + own + ", body1 with " + key +
+                       ": a world is refined with every body's resolution raised together, so its bodies must be "
+                       "of one kind";
+            for (int value : levels) {
+                ParameterSet p = spec.world->bodies[k].params;
+                if (auto error = setLevel(p, spec.key, value)) return "body" + std::to_string(k + 1) + ": " + *error;
+            }
+        }
     if (!makeIntegrator(spec.integrator))
         return "unknown integrator " + quoteShort(spec.integrator) + "; allowed: " + integratorNames();
     if (!(spec.duration > 0.0)) return "the duration must be positive";
@@ -184,10 +241,7 @@ std::optional<std::string> validateRefinement(const RefinementSpec& spec) {
         if (!isWholeMultiple(spec.interval, spec.dt))
             return "the output interval " + shortNumber(spec.interval) + " s is not a whole multiple of dt = " +
                    shortNumber(spec.dt) + " s";
-        ParameterSet finest = refinementLevel(spec, levels.back());
-        finest.set(Param::Dt, spec.dt);
-        const Simulation sim(finest, spec.integrator);
-        if (auto advice = stabilityAdvice(sim))
+        if (auto advice = finestAdvice(spec, levels.back(), spec.dt))
             return "at the finest level (" + spec.key + "=" + std::to_string(levels.back()) + "): " + advice->message +
                    "; use --dt " + shortNumber(advice->suggestedDt) + " or less, or leave --dt out";
     }
@@ -201,10 +255,7 @@ std::pair<double, std::string> refinementStep(const RefinementSpec& spec) {
     if (spec.dt > 0.0) return {spec.dt, "dt = " + shortNumber(spec.dt) + " s as given (stable at the finest level)"};
     // The finest body has the fastest modes: probe its stability check at a step far above any
     // stable one, which returns 0.9 of the predicted limit (nothing for implicit-euler).
-    ParameterSet finest = refinementLevel(spec, sortedLevels(spec).back());
-    finest.set(Param::Dt, 1.0);
-    const Simulation probe(finest, spec.integrator);
-    const auto advice = stabilityAdvice(probe);
+    const auto advice = finestAdvice(spec, sortedLevels(spec).back(), 1.0);
     const double stable = advice ? advice->suggestedDt : std::numeric_limits<double>::infinity();
     const double quarter = 0.25 * std::min(tableDt, stable);
     const double n = std::ceil(spec.interval / quarter * (1.0 - 1e-12));
@@ -223,17 +274,26 @@ std::string levelName(const RefinementSpec& spec, int value) { return spec.key +
 std::pair<RefinementRow, bool> runLevelRow(const RefinementSpec& spec, int value, bool reference, double dt,
                                            double tolerance, const std::vector<double>& grid,
                                            const std::atomic<bool>* cancel, Samples* samples) {
-    const ParameterSet p = refinementLevel(spec, value);
-    const Body body = buildBody(p);
+    std::vector<ParameterSet> bodies;
+    if (spec.world)
+        for (const WorldBodySpec& b : refinementWorld(spec, value).bodies) bodies.push_back(b.params);
+    else
+        bodies.push_back(refinementLevel(spec, value));
     RefinementRow row;
     row.value = value;
     row.reference = reference;
-    row.particles = body.topology.particleCount();
-    row.springs = static_cast<int>(body.topology.springCount());
-    const SpringSet& structural = body.topology.family(SpringFamily::Structural);
-    for (double r : structural.rest) row.h += r;
-    row.h /= static_cast<double>(std::max<std::size_t>(1, structural.size()));
-    LevelRun level = runLevel(spec, p, dt, tolerance, grid, cancel);
+    // A world: every body's particles and springs, h the mean structural rest length over them all.
+    std::size_t structuralCount = 0;
+    for (const ParameterSet& p : bodies) {
+        const Body body = buildBody(p);
+        row.particles += body.topology.particleCount();
+        row.springs += static_cast<int>(body.topology.springCount());
+        const SpringSet& structural = body.topology.family(SpringFamily::Structural);
+        for (double r : structural.rest) row.h += r;
+        structuralCount += structural.size();
+    }
+    row.h /= static_cast<double>(std::max<std::size_t>(1, structuralCount));
+    LevelRun level = runLevel(spec, value, dt, tolerance, grid, cancel);
     row.steps = level.run.steps;
     row.wallSeconds = level.run.wallSeconds;
     row.dt = isAdaptive(spec) ? spec.duration / static_cast<double>(std::max(1L, level.run.steps)) : dt;
@@ -253,7 +313,6 @@ void temporalCurve(const RefinementSpec& spec, const std::vector<double>& grid, 
                    int total, const StudyProgressFn& progress, const std::atomic<bool>* cancel,
                    RefinementResult& result) {
     const bool adaptive = isAdaptive(spec);
-    const ParameterSet p = refinementLevel(spec, result.temporalValue);
     for (int k = 1; k <= spec.temporalRuns; ++k) {
         const double factor = std::pow(adaptive ? 10.0 : 2.0, k);
         TemporalPoint point;
@@ -268,7 +327,7 @@ void temporalCurve(const RefinementSpec& spec, const std::vector<double>& grid, 
         for (std::size_t g = 0; g < grid.size(); ++g)
             if (adaptive || isWholeMultiple(grid[g], point.dt)) times.push_back(grid[g]), index.push_back(g);
         if (times.empty()) break;  // the step no longer lands on any grid time
-        LevelRun run = runLevel(spec, p, point.dt, point.tolerance, times, cancel);
+        LevelRun run = runLevel(spec, result.temporalValue, point.dt, point.tolerance, times, cancel);
         if (run.run.cancelled || (cancel && cancel->load())) {
             result.cancelled = true;
             break;

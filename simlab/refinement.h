@@ -48,12 +48,18 @@
 
 #include "simcore/integrators.h"
 #include "simcore/params.h"
+#include "simcore/world.h"
 #include "simlab/study.h"
 
 namespace simlab {
 
 struct RefinementSpec {
     simcore::ParameterSet params{simcore::SceneKind::Ring2d};  // the body; its resolution key is set per level
+    // A scene of several bodies: every body's resolution is raised together (the bodies of one
+    // kind, one key); params holds body 1's values. The observables are every body's: the
+    // largest volume error over every body and layer, the largest centre-of-mass distance over
+    // every body; particles and springs are the world's, h the mean over every body.
+    std::optional<simcore::WorldSpec> world;
     std::string key;                 // the scene's resolution key: particles, subdivisions or slices
                                      // (lat/long: stacks = slices / 2 at every level)
     std::vector<int> values;         // the levels (at least two); the one with most particles is the reference
@@ -121,6 +127,8 @@ std::string refinementKey(simcore::SceneKind kind);
 std::optional<std::string> validateRefinement(const RefinementSpec& spec);
 // The parameters of one level (the key set; lat/long: stacks = slices / 2).
 simcore::ParameterSet refinementLevel(const RefinementSpec& spec, int value);
+// A world's level: every body's key set.
+simcore::WorldSpec refinementWorld(const RefinementSpec& spec, int value);
 // The step of the study and one line saying how it was chosen (header comment).
 std::pair<double, std::string> refinementStep(const RefinementSpec& spec);
 

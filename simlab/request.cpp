@@ -73,8 +73,9 @@ std::optional<std::string> prefixed(const std::string& prefix, std::optional<std
 }
 
 std::string severalBodiesMessage(const std::string& scene) {
-    return quoted(scene, 200) + " is a scene of several bodies: `run`, `params`, the window and elasticlab.World take "
-                                "it; this command studies one body (" + simcore::sceneNames() + ")";
+    return quoted(scene, 200) + " is a scene of several bodies: `run`, `params`, `stability`, `study` (work-precision "
+                                "and --refine), the window and elasticlab.World take it; this command studies one body (" +
+           simcore::sceneNames() + ")";
 }
 
 // Each assignment key=value, each key once (a key given twice is a mistake, as in a scene file:
@@ -237,7 +238,9 @@ void checkIntegrators(const std::vector<std::string>& names) {
 void checkStudy(const simlab::StudySpec& spec) {
     checkIntegrators(spec.integrators);
     refuseIf(simlab::validateStudy(spec));
-    for (const std::string& name : spec.integrators) refuseIf(simcore::validateShape(spec.params, name));
+    if (spec.world) checkWorldIntegrators(*spec.world, spec.integrators);
+    else
+        for (const std::string& name : spec.integrators) refuseIf(simcore::validateShape(spec.params, name));
     // Every run, the reference (16x below the smallest step) and its check run bounded.
     const double T = spec.duration;
     for (double dt : spec.dts)
@@ -249,7 +252,12 @@ void checkStudy(const simlab::StudySpec& spec) {
                    spec.dts.empty() ? "give larger steps with dts, a shorter duration, or reference rk45 or cvode-bdf"
                                     : "larger steps or a shorter duration");
     // Held: the reference's positions on the grid, a run's and the reference's check run.
-    const double particles = static_cast<double>(simcore::bodySize(spec.params).particles);
+    double particles = 0.0;
+    if (spec.world)
+        for (const simcore::WorldBodySpec& body : spec.world->bodies)
+            particles += static_cast<double>(simcore::bodySize(body.params).particles);
+    else
+        particles = static_cast<double>(simcore::bodySize(spec.params).particles);
     const double samples = static_cast<double>(simlab::studyGrid(spec).size());
     checkHeld(3.0 * samples * particles * 3.0 * 8.0,
               "the study's trajectories (" + number(samples) + " samples of " + number(particles) + " particles)",
@@ -261,14 +269,29 @@ void checkRefinement(const simlab::RefinementSpec& spec) {
     const double T = spec.duration;
     const double points = std::round(T / spec.interval) + 1.0;
     const double runs = static_cast<double>(spec.values.size()) + spec.temporalRuns + 1.0;
-    checkHeld(points * runs * 64.0, "the refinement's output grid (" + number(points) + " times, " + number(runs) + " runs)",
+    const double bodies = spec.world ? static_cast<double>(spec.world->bodies.size()) : 1.0;
+    checkHeld(points * runs * 64.0 * bodies, "the refinement's output grid (" + number(points) + " times, " + number(runs) + " runs)",
               "a longer interval or a shorter duration");
     for (int value : spec.values)
-        refuseIf(simcore::validateShape(simlab::refinementLevel(spec, value), spec.integrator));
+        if (spec.world) checkWorldIntegrators(simlab::refinementWorld(spec, value), {spec.integrator});
+        else refuseIf(simcore::validateShape(simlab::refinementLevel(spec, value), spec.integrator));
     const auto [dt, rule] = simlab::refinementStep(spec);
     if (dt > 0.0 && !(spec.integrator == "rk45" && !spec.options.fixedStep))
         checkSteps(T / dt, "each level at dt " + number(dt) + " s over duration " + number(T) + " s",
                    "a larger dt or a shorter duration");
+}
+
+void checkWorldIntegrators(const simcore::WorldSpec& world, const std::vector<std::string>& names) {
+    for (const std::string& name : names) {
+        for (std::size_t k = 0; k < world.bodies.size(); ++k)
+            refuseIf(prefixed("body" + std::to_string(k + 1) + ": ", simcore::validateShape(world.bodies[k].params, name)));
+        // What only the built world knows (xpbd's one set of springs for every body).
+        try {
+            const simcore::World probe(world, name);
+        } catch (const std::invalid_argument& e) {
+            refuse(e.what());
+        }
+    }
 }
 
 void checkStability(const simlab::StabilitySpec& spec) {
@@ -284,6 +307,7 @@ void checkStability(const simlab::StabilitySpec& spec) {
         refuse("duration " + number(spec.duration) + " s is too short to judge a step: a trial at hmin " + number(spec.hMin) +
                " s must take at least " + number(kMinTrialSteps) + " steps (lengthen the duration to " +
                number(kMinTrialSteps * spec.hMin) + " s or more, or lower hmin)");
+    if (spec.world) return checkWorldIntegrators(*spec.world, spec.integrators);
     for (const std::string& name : spec.integrators) refuseIf(simcore::validateShape(spec.params, name));
 }
 

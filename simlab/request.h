@@ -141,5 +141,8 @@ void checkSweep(SweepSpec& spec);
 
 // The integrators a scan or study names: each known.
 void checkIntegrators(const std::vector<std::string>& names);
+// A world with each of these integrators: every body's shape and memory, and what only the
+// built world refuses (xpbd with bodies whose springs differ).
+void checkWorldIntegrators(const simcore::WorldSpec& world, const std::vector<std::string>& names);
 
 }  // namespace simlab

@@ -11,6 +11,7 @@
 #include "simcore/integrator_table.h"
 #include "simcore/integrators.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/output.h"
 
 namespace simlab {
@@ -25,6 +26,9 @@ using simcore::Param;
 using simcore::ParameterSet;
 using simcore::Simulation;
 using simcore::Term;
+using simcore::World;
+using simcore::WorldBodySpec;
+using simcore::WorldSpec;
 using simcore::compositionWeights;
 using simcore::hasStabilityFunction;
 using simcore::kExplicitStabilityLimit;
@@ -201,17 +205,10 @@ void iterativeModes(MassNormalised& op, LinearModes& modes) {
 
 }  // namespace
 
-LinearModes linearModes(const ParameterSet& params, int exactEigenLimit, int denseLimit) {
-    // At the rest shape: the perturbation is the trials' way to excite every mode, not part
-    // of the body (stabilityModes).
-    ParameterSet rest = params;
-    rest.set(Param::Perturb, 0.0);
-    Simulation sim(rest, "implicit-euler");
-    // Contact as a force has no stiffness at the start (U'' = 3 k d^2 is 0 at d = 0): the
-    // estimate adds it at the contact's design point (Simulation::contactDesign).
-    sim.setContactDesignInJacobians(true);
-    OdeSystem& system = sim.odeSystem();
-    system.linearize(0.0, sim.state());
+namespace {
+
+// The modes of a linearised system (its Jacobians at the point `linearize` was given).
+LinearModes modesOf(OdeSystem& system, int exactEigenLimit, int denseLimit) {
     MassNormalised op(system);
     LinearModes modes;
     modes.freeCoordinates = static_cast<int>(op.size());
@@ -226,6 +223,42 @@ LinearModes linearModes(const ParameterSet& params, int exactEigenLimit, int den
     modes.omegaMax = std::sqrt(std::max(0.0, modes.omega2[static_cast<std::size_t>(top)]));
     modes.dampingAtMax = modes.damping[static_cast<std::size_t>(top)];
     return modes;
+}
+
+}  // namespace
+
+LinearModes linearModes(const ParameterSet& params, int exactEigenLimit, int denseLimit) {
+    // At the rest shape: the perturbation is the trials' way to excite every mode, not part
+    // of the body (stabilityModes).
+    ParameterSet rest = params;
+    rest.set(Param::Perturb, 0.0);
+    Simulation sim(rest, "implicit-euler");
+    // Contact as a force has no stiffness at the start (U'' = 3 k d^2 is 0 at d = 0): the
+    // estimate adds it at the contact's design point (Simulation::contactDesign).
+    sim.setContactDesignInJacobians(true);
+    OdeSystem& system = sim.odeSystem();
+    system.linearize(0.0, sim.state());
+    return modesOf(system, exactEigenLimit, denseLimit);
+}
+
+LinearModes linearModes(World& world, int exactEigenLimit, int denseLimit) {
+    // Every body's forces (block diagonal), each body's wall contact at its design point as
+    // for a body alone, and the pairs' forces where two bodies (or two elements of one) are
+    // within the contact skin at this state (WorldOde::linearize).
+    world.setContactDesignInJacobians(true);
+    OdeSystem& system = world.odeSystem();
+    system.linearize(world.time(), world.state());
+    LinearModes modes = modesOf(system, exactEigenLimit, denseLimit);
+    world.setContactDesignInJacobians(false);
+    return modes;
+}
+
+LinearModes linearModes(const WorldSpec& spec, int exactEigenLimit, int denseLimit) {
+    // At the start without the perturbation, as for one body.
+    WorldSpec rest = spec;
+    for (WorldBodySpec& body : rest.bodies) body.params.set(Param::Perturb, 0.0);
+    World world(rest, "implicit-euler");
+    return linearModes(world, exactEigenLimit, denseLimit);
 }
 
 namespace {
@@ -345,6 +378,12 @@ LinearModes stabilityModes(const ParameterSet& params) {
     return linearModes(params, kVerdictExactLimit, kVerdictExactLimit);
 }
 
+LinearModes stabilityModes(const WorldSpec& world) { return linearModes(world, kVerdictExactLimit, kVerdictExactLimit); }
+
+LinearModes stabilityModes(const StabilitySpec& spec) {
+    return spec.world ? stabilityModes(*spec.world) : stabilityModes(spec.params);
+}
+
 StabilityVerdict stabilityVerdict(const LinearModes& modes, const std::string& integrator, double dt, bool adaptive) {
     StabilityVerdict v;
     v.integrator = integrator;
@@ -387,25 +426,20 @@ std::string verdictText(const StabilityVerdict& v) {
     return v.integrator + " is stable up to DT = " + limitText(v.limit) + " s on this body (" + v.basis + ")";
 }
 
-std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt,
-                                          const std::atomic<bool>* cancel) {
-    ParameterSet p = spec.params;
-    if (!p.isExplicit(Param::Perturb)) p.set(Param::Perturb, spec.perturb);
-    if (auto error = p.set(Param::Dt, dt)) return *error;
-    Simulation sim(p, integrator);
-    sim.setThreads(1);
-    IntegratorOptions options;
-    options.fixedStep = true;  // rk45 at a fixed step: an adaptive step is always "stable"
-    sim.setIntegratorOptions(options);
-    const double budget = 0.5 * convertibleEnergy(sim);
-    // Bounded energy: gains (never losses) in the energy balance. A run is unbounded when it
-    // gains more than the budget and is still growing: its largest gain in the second half
-    // of the run is more than twice that of the first half. A bounded but inaccurate method
-    // (symplectic Euler's energy oscillates by ~h w / 2 of the energy) is not unstable.
+namespace {
+
+// Bounded energy: gains (never losses) in the energy balance. A run is unbounded when it
+// gains more than the budget and is still growing: its largest gain in the second half of
+// the run is more than twice that of the first half. A bounded but inaccurate method
+// (symplectic Euler's energy oscillates by ~h w / 2 of the energy) is not unstable. `System`
+// is a Simulation or a World (the same checks: NaN, runaway, collapsed layer, crossing).
+template <class System, class Reason>
+std::optional<std::string> boundedTrial(System& sim, const StabilitySpec& spec, double dt, double budget,
+                                        const Reason& reason, const std::atomic<bool>* cancel) {
     double firstHalf = 0.0, secondHalf = 0.0;
     while (sim.time() < spec.duration - 1e-9 * dt) {
         if (cancel && cancel->load(std::memory_order_relaxed)) return std::nullopt;
-        if (!sim.step()) return sim.failure()->reason;
+        if (!sim.step()) return reason(sim);
         const double gain = std::max(0.0, sim.diagnostics().energyDrift());
         (sim.time() <= 0.5 * spec.duration ? firstHalf : secondHalf) = std::max(
             sim.time() <= 0.5 * spec.duration ? firstHalf : secondHalf, gain);
@@ -418,6 +452,35 @@ std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::
         return std::string(text);
     }
     return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> stabilityTrial(const StabilitySpec& spec, const std::string& integrator, double dt,
+                                          const std::atomic<bool>* cancel) {
+    IntegratorOptions options;
+    options.fixedStep = true;  // rk45 at a fixed step: an adaptive step is always "stable"
+    if (spec.world) {
+        // The whole world, every body perturbed as a body alone is (its own seed and amplitude
+        // when given), the pairs' contact and the exact intersection test included.
+        WorldSpec world = *spec.world;
+        for (WorldBodySpec& body : world.bodies) {
+            if (!body.params.isExplicit(Param::Perturb)) body.params.set(Param::Perturb, spec.perturb);
+            if (auto error = body.params.set(Param::Dt, dt)) return *error;
+        }
+        World sim(world, integrator);
+        sim.setIntegratorOptions(options);
+        return boundedTrial(sim, spec, dt, 0.5 * convertibleEnergy(sim), [](const World& w) { return *w.failure(); },
+                            cancel);
+    }
+    ParameterSet p = spec.params;
+    if (!p.isExplicit(Param::Perturb)) p.set(Param::Perturb, spec.perturb);
+    if (auto error = p.set(Param::Dt, dt)) return *error;
+    Simulation sim(p, integrator);
+    sim.setThreads(1);
+    sim.setIntegratorOptions(options);
+    return boundedTrial(sim, spec, dt, 0.5 * convertibleEnergy(sim),
+                        [](const Simulation& s) { return s.failure()->reason; }, cancel);
 }
 
 StabilityRow scanIntegrator(const StabilitySpec& spec, const std::string& integrator, const LinearModes& modes,
@@ -497,6 +560,17 @@ double convertibleEnergy(const Simulation& sim) {
     return energy;
 }
 
+double convertibleEnergy(const World& world) {
+    const simcore::WorldDiagnostics& d = world.diagnostics();
+    double energy = 1.0 + d.kinetic + d.springTotal();
+    for (int k = 0; k < world.bodyCount(); ++k) {
+        const simcore::Params p = simcore::resolve(world.spec().bodies[static_cast<std::size_t>(k)].params);
+        energy += d.bodies[static_cast<std::size_t>(k)].mass * p.world.gravity * 2.0 * world.boxHalfSize();
+        energy += (p.forces.gasConstant[0] + p.forces.gasConstant[1]) * std::log(100.0);
+    }
+    return energy;
+}
+
 double roundDownTwoDigits(double x) {
     if (!(x > 0.0) || !std::isfinite(x)) return x;
     const double scale = std::pow(10.0, std::floor(std::log10(x)) - 1.0);
@@ -509,35 +583,51 @@ std::optional<std::string> preRunStabilityWarning(const Simulation& sim) {
     return std::move(advice->message);
 }
 
+namespace {
+std::optional<StabilityAdvice> adviceFor(const LinearModes& modes, const std::string& name, double dt);
+}  // namespace
+
 std::optional<StabilityAdvice> stabilityAdvice(const Simulation& sim) {
     const Integrator& method = sim.integrator();
     if (method.implicit() || method.adaptive()) return std::nullopt;
-    const std::string name(method.name());
-    char text[500];
     // The one verdict (stabilityModes: exact spectrum for small bodies, Arnoldi above), the
     // same figure the stability map, the failure banner and `stability` give.
-    const LinearModes modes = stabilityModes(sim.parameters());
-    const StabilityVerdict verdict = stabilityVerdict(modes, name, sim.dt());
+    return adviceFor(stabilityModes(sim.parameters()), std::string(method.name()), sim.dt());
+}
+
+std::optional<StabilityAdvice> stabilityAdvice(const LinearModes& modes, const std::string& name, double dt) {
+    const auto method = simcore::makeIntegrator(name);
+    if (!method || method->implicit() || method->adaptive()) return std::nullopt;
+    return adviceFor(modes, name, dt);
+}
+
+namespace {
+
+std::optional<StabilityAdvice> adviceFor(const LinearModes& modes, const std::string& name, double dt) {
+    char text[500];
+    const StabilityVerdict verdict = stabilityVerdict(modes, name, dt);
     if (verdict.stable()) return std::nullopt;
     if (verdict.limit <= 0.0) {
         // Euler and Heun grow on undamped modes for every dt; say so only when it matters
         // (the growth rate ~ h w^2 / 2 per second is above 1/s).
-        if (sim.dt() * modes.omegaMax * modes.omegaMax / 2.0 < 1.0) return std::nullopt;
+        if (dt * modes.omegaMax * modes.omegaMax / 2.0 < 1.0) return std::nullopt;
         const double suggested = roundDownTwoDigits(0.9 * 2.0 / (modes.omegaMax * modes.omegaMax));
         std::snprintf(text, sizeof text,
                       "%s has no stable step on this body's undamped modes (highest w = %.3g rad/s): its "
                       "energy grows for every dt, here by ~%.2g per second; use dt <= %.2g s (growth below 1 "
                       "per second) or another method",
-                      name.c_str(), modes.omegaMax, sim.dt() * modes.omegaMax * modes.omegaMax / 2.0, suggested);
+                      name.c_str(), modes.omegaMax, dt * modes.omegaMax * modes.omegaMax / 2.0, suggested);
         return StabilityAdvice{text, suggested};
     }
     std::snprintf(text, sizeof text,
                   "dt = %g s is above %s's largest stable step on this body, %s s (linearised: %s; fastest "
                   "|lambda| = %.3g 1/s); it will likely blow up (implicit-euler or rk45 will not)",
-                  sim.dt(), name.c_str(), limitText(verdict.limit).c_str(), verdict.basis.c_str(),
+                  dt, name.c_str(), limitText(verdict.limit).c_str(), verdict.basis.c_str(),
                   std::abs(verdict.fastest));
     return StabilityAdvice{text, roundDownTwoDigits(0.9 * verdict.limit)};
 }
+
+}  // namespace
 
 FailureCheck checkFailure(const SimulationSnapshot& start, const Failure& failure, const std::atomic<bool>* cancel) {
     FailureCheck check;

@@ -38,6 +38,7 @@
 
 #include "simcore/params.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 
 namespace simcore {
 class Simulation;
@@ -91,6 +92,19 @@ LinearModes linearModes(const simcore::ParameterSet& params, int exactEigenLimit
 inline constexpr int kVerdictExactLimit = 150;
 LinearModes stabilityModes(const simcore::ParameterSet& params);
 
+// A scene of several bodies: the whole system's eigenvalues. The world's ODE (WorldOde) is
+// linearised as one body's is: every body's forces (the blocks of a block-diagonal Jacobian),
+// each body's wall contact at its design point (as for the body alone: Simulation::
+// contactDesign), and the contact between bodies and within one outer layer wherever a pair
+// is within the contact skin at that state (the pairs' Jacobian by directional differences of
+// their forces). Bodies apart (every world at its start: validateWorld keeps them a skin
+// apart) give the union of the bodies' own spectra. The spec form linearises the start
+// without the perturbation; the World form the world as it is now (e.g. at an impact).
+LinearModes linearModes(const simcore::WorldSpec& world, int exactEigenLimit = kExactEigenLimit,
+                        int denseLimit = kDenseModeLimit);
+LinearModes linearModes(simcore::World& world, int exactEigenLimit = kExactEigenLimit, int denseLimit = kDenseModeLimit);
+LinearModes stabilityModes(const simcore::WorldSpec& world);
+
 // The spectrum the prediction uses: the exact eigenvalues, or else Arnoldi's Ritz values
 // (empty for a LinearModes built by hand from modes alone).
 const std::vector<std::complex<double>>& spectrumOf(const LinearModes& modes);
@@ -130,6 +144,9 @@ double predictedStableStep(const std::string& integrator, const LinearModes& mod
 
 struct StabilitySpec {
     simcore::ParameterSet params{simcore::SceneKind::Ring2d};
+    // A scene of several bodies: the trials run the whole world (params then holds body 1's
+    // values, as SceneSetup::params does) and the prediction is the world's spectrum.
+    std::optional<simcore::WorldSpec> world;
     std::vector<std::string> integrators;
     double duration = 2.0;      // T [s]
     double perturb = 0.01;      // used when params has no explicit perturb [m]
@@ -139,6 +156,9 @@ struct StabilitySpec {
     int shardIndex = 0;
     int shardCount = 1;
 };
+
+// The one linearisation of a scan: the world's when spec.world is set, else the body's.
+LinearModes stabilityModes(const StabilitySpec& spec);
 
 struct StabilityRow {
     std::string integrator;
@@ -180,6 +200,8 @@ struct StabilityAdvice {
     double suggestedDt = 0.0;  // [s]
 };
 std::optional<StabilityAdvice> stabilityAdvice(const simcore::Simulation& sim);
+// The same from a linearisation (a world's: stabilityModes of its WorldSpec) for `integrator` at dt.
+std::optional<StabilityAdvice> stabilityAdvice(const LinearModes& modes, const std::string& integrator, double dt);
 // The failure banner's question: numerics or physics? A run failed at `failure.time`; the
 // stretch from `start` (a snapshot some time before it) is run again at a smaller step -
 // a quarter of the failed one, and no more than 0.9 of the method's verdict limit when that
@@ -215,6 +237,9 @@ double roundDownTwoDigits(double x);
 // elastic energy + its weight falling the box height + each gas expanding 100-fold (c ln 100).
 // The yardstick of "bounded energy" here and of the gallery's tolerances.
 double convertibleEnergy(const simcore::Simulation& sim);
+// The same for a world: the bodies' sums (each body's weight over the box height, each gas
+// expanding 100-fold).
+double convertibleEnergy(const simcore::World& world);
 
 std::string stabilityCsvHeader();  // integrator,dt_stable,dt_unstable,dt_predicted,h_omega_stable,reason
 std::string stabilityCsvRow(const StabilityRow& row, const LinearModes& modes);

@@ -10,6 +10,7 @@
 #include "simcore/float_path.h"
 #include "simcore/integrator_table.h"
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 #include "simlab/analytic.h"
 #include "simlab/output.h"
 #include "simlab/reference_problem.h"
@@ -21,6 +22,9 @@ using simcore::IntegratorOptions;
 using simcore::Param;
 using simcore::ParameterSet;
 using simcore::Simulation;
+using simcore::World;
+using simcore::WorldBodySpec;
+using simcore::WorldSpec;
 using simcore::integratorFamilies;
 using simcore::integratorFamily;
 using simcore::integratorNames;
@@ -46,13 +50,24 @@ struct Trajectory : SampledRun {
     std::vector<Eigen::Matrix3Xd> positions;
 };
 
-Trajectory runTrajectory(const ParameterSet& base, const std::string& integrator, double dt,
+Trajectory runTrajectory(const StudySpec& spec, const std::string& integrator, double dt,
                          const IntegratorOptions& options, const std::vector<double>& grid,
                          const std::atomic<bool>* cancel, double wallBudget = 0.0) {
     Trajectory out;
     out.positions.reserve(grid.size());
+    if (spec.world) {
+        // Every particle of every body, the bodies side by side (the world's numbering).
+        static_cast<SampledRun&>(out) = runSampled(
+            *spec.world, integrator, dt, options, grid,
+            [&](const World& world) {
+                out.positions.emplace_back(
+                    Eigen::Map<const Eigen::Matrix3Xd>(world.state().data(), 3, world.particleCount()));
+            },
+            cancel, wallBudget);
+        return out;
+    }
     static_cast<SampledRun&>(out) = runSampled(
-        base, integrator, dt, options, grid, [&](const Simulation& sim) { out.positions.emplace_back(sim.positions()); },
+        spec.params, integrator, dt, options, grid, [&](const Simulation& sim) { out.positions.emplace_back(sim.positions()); },
         cancel, wallBudget);
     return out;
 }
@@ -68,6 +83,7 @@ double smallestFixedStep(const StudySpec& spec) {
 
 // The closed form applies: spring1d, unperturbed, and no particle ever reaches a wall.
 bool closedFormApplies(const StudySpec& spec) {
+    if (spec.world) return false;  // bodies that meet have no closed form
     if (!hasClosedForm(spec.params) || spec.params.get(Param::Perturb) != 0.0) return false;
     Simulation sim(spec.params, "euler");
     const Eigen::Vector3d centre = sim.boxCentre();
@@ -153,15 +169,23 @@ std::string formatShort(double v) {
 
 }  // namespace
 
-SampledRun runSampled(const ParameterSet& base, const std::string& integrator, double dt,
-                      const IntegratorOptions& options, const std::vector<double>& grid,
-                      const std::function<void(const Simulation&)>& sample, const std::atomic<bool>* cancel,
-                      double wallBudget) {
-    ParameterSet p = base;
-    if (auto error = p.set(Param::Dt, dt)) throw std::invalid_argument(*error);
-    Simulation sim(p, integrator);
-    sim.setThreads(1);  // timings are single-threaded, whatever the machine
-    sim.setIntegratorOptions(options);
+namespace {
+
+std::optional<std::pair<double, std::string>> failureOf(const Simulation& sim) {
+    if (!sim.failed()) return std::nullopt;
+    return std::pair{sim.failure()->time, sim.failure()->reason};
+}
+
+std::optional<std::pair<double, std::string>> failureOf(const World& world) {
+    if (!world.failed()) return std::nullopt;
+    return std::pair{world.failedTime(), *world.failure()};
+}
+
+// The stepping of runSampled, for a Simulation or a World.
+template <class System>
+SampledRun sampleSteps(System& sim, double dt, const std::vector<double>& grid,
+                       const std::function<void(const System&)>& sample, const std::atomic<bool>* cancel,
+                       double wallBudget) {
     SampledRun out;
     const bool adaptive = sim.integrator().adaptive();
     for (double target : grid) {
@@ -177,8 +201,40 @@ SampledRun runSampled(const ParameterSet& base, const std::string& integrator, d
         if (sim.failed() || out.cancelled || out.overBudget) break;
         sample(sim);
     }
-    endRun(out, sim);
+    if (const auto failure = failureOf(sim)) {
+        out.failed = true;
+        out.failedAt = failure->first;
+        out.failure = failure->second;
+    }
+    out.steps = sim.stepCount();
+    out.evaluations = sim.diagnostics().forceEvaluations;
     return out;
+}
+
+}  // namespace
+
+SampledRun runSampled(const ParameterSet& base, const std::string& integrator, double dt,
+                      const IntegratorOptions& options, const std::vector<double>& grid,
+                      const std::function<void(const Simulation&)>& sample, const std::atomic<bool>* cancel,
+                      double wallBudget) {
+    ParameterSet p = base;
+    if (auto error = p.set(Param::Dt, dt)) throw std::invalid_argument(*error);
+    Simulation sim(p, integrator);
+    sim.setThreads(1);  // timings are single-threaded, whatever the machine
+    sim.setIntegratorOptions(options);
+    return sampleSteps(sim, dt, grid, sample, cancel, wallBudget);
+}
+
+SampledRun runSampled(const WorldSpec& base, const std::string& integrator, double dt,
+                      const IntegratorOptions& options, const std::vector<double>& grid,
+                      const std::function<void(const World&)>& sample, const std::atomic<bool>* cancel,
+                      double wallBudget) {
+    WorldSpec spec = base;
+    for (WorldBodySpec& body : spec.bodies)  // dt is the world's: every body's copy alike
+        if (auto error = body.params.set(Param::Dt, dt)) throw std::invalid_argument(*error);
+    World world(spec, integrator);  // one thread, as a body's timing
+    world.setIntegratorOptions(options);
+    return sampleSteps(world, dt, grid, sample, cancel, wallBudget);
 }
 
 bool isWholeMultiple(double T, double h) {
@@ -257,6 +313,8 @@ std::optional<std::string> validateStudy(const StudySpec& spec) {
         if (std::count(spec.precisions.begin(), spec.precisions.end(), precision) > 1)
             return "precision " + quoteShort(precision) + " is listed twice";
         if (precision != "float") continue;
+        if (spec.world)
+            return "precision float: the float build is of one body; a scene of several bodies runs in double";
         if (!floatOnReferenceProblem(spec)) {
             // The float path of the Simulation: the front door's words (request.h), as run's and bench's.
             for (const std::string& name : spec.integrators)
@@ -343,10 +401,10 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
         IntegratorOptions fineOptions = options;
         fineOptions.atol = fineOptions.rtol = tight;
         fineOptions.minStep = 1e-14;
-        Trajectory fine = runTrajectory(spec.params, method, smallestFixedStep(spec), fineOptions, ref.times, cancel);
+        Trajectory fine = runTrajectory(spec, method, smallestFixedStep(spec), fineOptions, ref.times, cancel);
         IntegratorOptions coarse = fineOptions;
         coarse.atol = coarse.rtol = loose;
-        Trajectory check = runTrajectory(spec.params, method, smallestFixedStep(spec), coarse, ref.times, cancel);
+        Trajectory check = runTrajectory(spec, method, smallestFixedStep(spec), coarse, ref.times, cancel);
         if (fine.cancelled || check.cancelled) return cancelledReference();
         if (fine.failed) throw std::runtime_error("the " + method + " reference failed: " + fine.failure + why);
         ref.description = method + " at atol = rtol = " + formatShort(tight) + " (" + std::to_string(fine.steps) + " steps)" + why;
@@ -358,7 +416,7 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
     };
     if (spec.reference == "rk45" || spec.reference == "cvode-bdf") return adaptiveReference(spec.reference, "");
     const double h = smallestFixedStep(spec) / 16.0;
-    Trajectory fine = runTrajectory(spec.params, "rk4", h, options, ref.times, cancel);
+    Trajectory fine = runTrajectory(spec, "rk4", h, options, ref.times, cancel);
     if (fine.cancelled) return cancelledReference();
     if (fine.failed && spec.reference == "auto")
         // Stiff: rk4 16x below the smallest studied step is still unstable. The most accurate
@@ -366,7 +424,7 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
         return adaptiveReference("cvode-bdf", ", because rk4 at dt = " + formatShort(h) + " s failed (" + fine.failure + ")");
     if (fine.failed)
         throw std::runtime_error("the rk4 reference at dt = " + formatShort(h) + " s failed: " + fine.failure);
-    Trajectory check = runTrajectory(spec.params, "rk4", 2.0 * h, options, ref.times, cancel);
+    Trajectory check = runTrajectory(spec, "rk4", 2.0 * h, options, ref.times, cancel);
     if (check.cancelled) return cancelledReference();
     ref.description = "rk4 at dt = " + formatShort(h) + " s (16x below the smallest studied step)";
     ref.positions = fine.positions;
@@ -408,7 +466,7 @@ StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyR
             if (f.failed) run.failure = "the float state is no longer finite";
             run.positions = std::move(f.positions);
         } else {
-            run = runTrajectory(spec.params, item.integrator, item.dt, options, reference.times, cancel, spec.timeBudget);
+            run = runTrajectory(spec, item.integrator, item.dt, options, reference.times, cancel, spec.timeBudget);
         }
         row.walls.push_back(run.wallSeconds);
         if (run.cancelled && !run.overBudget) {

@@ -39,6 +39,7 @@
 
 #include "simcore/integrators.h"
 #include "simcore/params.h"
+#include "simcore/world.h"
 
 namespace simcore {
 class Simulation;
@@ -48,6 +49,10 @@ namespace simlab {
 
 struct StudySpec {
     simcore::ParameterSet params{simcore::SceneKind::Spring1d};  // the scene; its dt is ignored
+    // A scene of several bodies: every run and the reference run the whole world (params then
+    // holds body 1's values); the errors are over every particle of every body. Double only
+    // (the float build is of one body); no closed form.
+    std::optional<simcore::WorldSpec> world;
     std::vector<std::string> integrators;
     std::vector<double> dts;                   // fixed steps [s]; T must be a multiple of each
     std::vector<double> tolerances{1e-4, 1e-6, 1e-8, 1e-10};  // adaptive rk45 sweep
@@ -232,6 +237,11 @@ struct SampledRun {
 SampledRun runSampled(const simcore::ParameterSet& params, const std::string& integrator, double dt,
                       const simcore::IntegratorOptions& options, const std::vector<double>& grid,
                       const std::function<void(const simcore::Simulation&)>& sample,
+                      const std::atomic<bool>* cancel = nullptr, double wallBudget = 0.0);
+// The same for a world (dt set on every body, as the world's one step).
+SampledRun runSampled(const simcore::WorldSpec& world, const std::string& integrator, double dt,
+                      const simcore::IntegratorOptions& options, const std::vector<double>& grid,
+                      const std::function<void(const simcore::World&)>& sample,
                       const std::atomic<bool>* cancel = nullptr, double wallBudget = 0.0);
 
 // Log-log line plots side by side as SVG (each panel its own decades). A series is a polyline

@@ -162,7 +162,7 @@ private slots:
                                             << "bodies 1 and 2 overlap at the start";
         QTest::newRow("a body outside the box") << QStringList{"run", "--scene", "stack3d", "--set", "body3.position_y=6"}
                                                 << "body3 sticks out of the box";
-        QTest::newRow("a world for one-body commands") << QStringList{"study", "--scene", "collide2d"}
+        QTest::newRow("a world for one-body commands") << QStringList{"conservation", "--scene", "collide2d"}
                                                        << "'collide2d' is a scene of several bodies";
         QTest::newRow("more bodies than allowed")
             << QStringList{"run", "--scene", QFINDTESTDATA("data/world-17-bodies.json")} << "at most 16";
@@ -374,7 +374,7 @@ private slots:
         QVERIFY2(resumed.code == 0, qPrintable(resumed.err));
         QCOMPARE(readLines(path("resumed.csv")), readLines(path("straight.csv")));
         // A one-body command refuses it by what it is.
-        const Result study = cli({"study", "--scene", saved});
+        const Result study = cli({"conservation", "--scene", saved});
         QCOMPARE(study.code, 2);
         QVERIFY2(study.err.contains("a scene of several bodies"), qPrintable(study.err));
     }

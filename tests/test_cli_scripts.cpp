@@ -110,6 +110,22 @@ private slots:
         // Body 1 moves at +2 m/s, body 2 at -2 m/s: p_x = 24*2 - 96*2 = -144 kg m/s.
         QVERIFY(std::abs(wo["momentum"][0].toDouble() + 144.0) < 1e-9);
         QVERIFY(wo["min_gap"].toDouble() > 0.0);
+
+        // The stability of a world: one verdict of the whole system (its spectrum, its trials).
+        const CliResult st = runCli({"stability", "--scene", "collide2d", "--set", "gravity=0", "--integrators",
+                                     "rk4,implicit-euler", "--duration", "0.3", "--json"});
+        QCOMPARE(st.code, 0);
+        const QJsonObject so = json(st.out).object();
+        QCOMPARE(so["scene"].toString(), QString("collide2d"));
+        QCOMPARE(so["bodies"].toInt(), 2);
+        QCOMPARE(so["free_coordinates"].toInt(), 2 * 48);
+        QVERIFY(so["basis"].toString().startsWith("exact spectrum"));
+        const QJsonArray rows = so["rows"].toArray();
+        QCOMPARE(rows.size(), 2);
+        QCOMPARE(rows[0].toObject()["integrator"].toString(), QString("rk4"));
+        QVERIFY(rows[0].toObject()["dt_stable"].toDouble() > 0.0);
+        QVERIFY(rows[0].toObject()["dt_stable"].toDouble() < rows[0].toObject()["dt_unstable"].toDouble());
+        QVERIFY(rows[1].toObject()["dt_predicted"].isNull());  // implicit Euler: unlimited
     }
 
     void csvDashWritesTheRowsToStandardOutput() {

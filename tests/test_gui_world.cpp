@@ -17,6 +17,7 @@
 #include <QTest>
 
 #include "simcore/world.h"
+#include "simlab/stability.h"
 #include "test_support.h"
 #include "ui/bodies_dock.h"
 #include "ui/language.h"
@@ -69,8 +70,14 @@ private slots:
         QCOMPARE(bodies->table()->rowCount(), 2);
         QCOMPARE(bodies->seriesNames("volume"),
                  QStringList({"body1 inner", "body1 outer", "body2 inner", "body2 outer"}));
-        // What a world has not yet says so.
-        QVERIFY(window.stabilityMapDock()->showsWorldNotice());
+        // The stability map maps the whole world: every body's eigenvalues, as simlab's verdict.
+        StabilityMapDock* map = window.stabilityMapDock();
+        QVERIFY(window.openDock(QStringLiteral("stability-map")));
+        QVERIFY(waitUntil([&] { return map->shownBodies() == 2 && map->pointCount() > 0 && !map->computing(); }));
+        const simlab::LinearModes expected = simlab::stabilityModes(*first.worldSpec);
+        QCOMPARE(map->modes()->freeCoordinates, expected.freeCoordinates);
+        QCOMPARE(map->modes()->eigenvalues.size(), expected.eigenvalues.size());
+        QVERIFY(map->methodText().contains(QStringLiteral("(2 bodies)")));
 
         // Run: momentum stays -144 kg m/s through the impact (24 particles of 1 kg at +2 m/s,
         // 24 of 4 kg at -2 m/s), min_gap shrinks below the range and stays above 0.
@@ -229,7 +236,8 @@ private slots:
         // Back to one body: the map maps again, the Bodies dock says what it is for.
         window.startScene(simcore::ParameterSet(simcore::SceneKind::Ring2d), {"rk4"});
         QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world == nullptr && f.scene && !f.scene->isWorld(); }));
-        QVERIFY(waitUntil([&] { return !window.stabilityMapDock()->showsWorldNotice(); }));
+        QVERIFY(window.openDock(QStringLiteral("stability-map")));
+        QVERIFY(waitUntil([&] { return window.stabilityMapDock()->shownBodies() == 0 && window.stabilityMapDock()->pointCount() > 0; }));
         QVERIFY(window.plotDock()->plotIds().contains(QStringLiteral("volume")));
     }
 };

@@ -2355,10 +2355,6 @@ Plots, parameters and exports still work.</source>
 <context>
     <name>elui::StabilityMapDock</name>
     <message>
-        <source>Measure this integrator&apos;s largest stable DT on this body: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Stability map</source>
         <translation>خريطة الاستقرار</translation>
     </message>
@@ -2484,7 +2480,15 @@ Plots, parameters and exports still work.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The stability map is for scenes of one body: a world of several bodies has the modes of every body and of their contact, which the map does not compute yet. Its largest stable DT is found by trying: Run with a larger DT until a step fails.</source>
+        <source>Measure this integrator&apos;s largest stable DT on this body or world: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Linearising the world (%1 bodies)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The whole world (%1 bodies) linearised as one system: every body&apos;s modes, and the contact between bodies where two are within the contact skin. </source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -2357,10 +2357,6 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
 <context>
     <name>elui::StabilityMapDock</name>
     <message>
-        <source>Measure this integrator&apos;s largest stable DT on this body: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
-        <translation>Das größte stabile DT dieses Integrators an diesem Körper messen: die Bisektion des Stabilitätsscans (Läufe von %1 s; Studien → Stabilitätsscan misst alle Integratoren), im Bild markiert</translation>
-    </message>
-    <message>
         <source>Stability map</source>
         <translation>Stabilitätskarte</translation>
     </message>
@@ -2487,8 +2483,16 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <translation>Körper oder Integrator haben sich während der Messung geändert: drücken Sie erneut Ausprobieren.</translation>
     </message>
     <message>
-        <source>The stability map is for scenes of one body: a world of several bodies has the modes of every body and of their contact, which the map does not compute yet. Its largest stable DT is found by trying: Run with a larger DT until a step fails.</source>
-        <translation>Die Stabilitätskarte ist für Szenen mit einem Körper: Eine Welt aus mehreren Körpern hat die Moden jedes Körpers und ihres Kontakts, die die Karte noch nicht berechnet. Ihr größtes stabiles DT findet man durch Probieren: mit größerem DT laufen lassen, bis ein Schritt scheitert.</translation>
+        <source>Measure this integrator&apos;s largest stable DT on this body or world: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
+        <translation>Das größte stabile DT dieses Integrators an diesem Körper oder dieser Welt messen: die Bisektion des Stabilitätsscans (Läufe von %1 s; Studien → Stabilitätsscan misst alle Integratoren), im Bild markiert</translation>
+    </message>
+    <message>
+        <source>Linearising the world (%1 bodies)…</source>
+        <translation>Die Welt wird linearisiert (%1 Körper)…</translation>
+    </message>
+    <message>
+        <source>The whole world (%1 bodies) linearised as one system: every body&apos;s modes, and the contact between bodies where two are within the contact skin. </source>
+        <translation>Die ganze Welt (%1 Körper) als ein System linearisiert: die Moden jedes Körpers und der Kontakt zwischen Körpern, wo zwei innerhalb der Kontakthaut liegen. </translation>
     </message>
 </context>
 <context>

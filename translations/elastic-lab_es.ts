@@ -2357,10 +2357,6 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
 <context>
     <name>elui::StabilityMapDock</name>
     <message>
-        <source>Measure this integrator&apos;s largest stable DT on this body: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
-        <translation>Medir el mayor DT estable de este integrador en este cuerpo: la bisección del barrido de estabilidad (ejecuciones de %1 s; Estudios → Barrido de estabilidad hace todos los integradores), marcado en la imagen</translation>
-    </message>
-    <message>
         <source>Stability map</source>
         <translation>Mapa de estabilidad</translation>
     </message>
@@ -2487,8 +2483,16 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <translation>El cuerpo o el integrador cambió durante la medición: pulse Probar otra vez.</translation>
     </message>
     <message>
-        <source>The stability map is for scenes of one body: a world of several bodies has the modes of every body and of their contact, which the map does not compute yet. Its largest stable DT is found by trying: Run with a larger DT until a step fails.</source>
-        <translation>El mapa de estabilidad es para escenas de un solo cuerpo: un mundo de varios cuerpos tiene los modos de cada cuerpo y de su contacto, que el mapa aún no calcula. Su mayor DT estable se halla probando: ejecutar con un DT mayor hasta que un paso falle.</translation>
+        <source>Measure this integrator&apos;s largest stable DT on this body or world: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
+        <translation>Medir el mayor DT estable de este integrador en este cuerpo o mundo: la bisección del barrido de estabilidad (ensayos de %1 s; Estudios → Barrido de estabilidad hace todos los integradores), marcado en la imagen</translation>
+    </message>
+    <message>
+        <source>Linearising the world (%1 bodies)…</source>
+        <translation>Linealizando el mundo (%1 cuerpos)…</translation>
+    </message>
+    <message>
+        <source>The whole world (%1 bodies) linearised as one system: every body&apos;s modes, and the contact between bodies where two are within the contact skin. </source>
+        <translation>El mundo entero (%1 cuerpos) linealizado como un solo sistema: los modos de cada cuerpo y el contacto entre cuerpos donde dos están dentro de la piel de contacto. </translation>
     </message>
 </context>
 <context>

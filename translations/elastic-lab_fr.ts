@@ -2357,10 +2357,6 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
 <context>
     <name>elui::StabilityMapDock</name>
     <message>
-        <source>Measure this integrator&apos;s largest stable DT on this body: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
-        <translation>Mesurer le plus grand DT stable de cet intégrateur sur ce corps : la dichotomie du balayage de stabilité (simulations de %1 s ; Études → Balayage de stabilité traite tous les intégrateurs), marqué sur l’image</translation>
-    </message>
-    <message>
         <source>Stability map</source>
         <translation>Carte de stabilité</translation>
     </message>
@@ -2487,8 +2483,16 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <translation>Le corps ou l’intégrateur a changé pendant la mesure : appuyez de nouveau sur Essayer.</translation>
     </message>
     <message>
-        <source>The stability map is for scenes of one body: a world of several bodies has the modes of every body and of their contact, which the map does not compute yet. Its largest stable DT is found by trying: Run with a larger DT until a step fails.</source>
-        <translation>La carte de stabilité est destinée aux scènes à un seul corps : un monde de plusieurs corps a les modes de chaque corps et de leur contact, que la carte ne calcule pas encore. Son plus grand DT stable se trouve en essayant : lancer avec un DT plus grand jusqu&apos;à ce qu&apos;un pas échoue.</translation>
+        <source>Measure this integrator&apos;s largest stable DT on this body or world: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
+        <translation>Mesurer le plus grand DT stable de cet intégrateur sur ce corps ou ce monde : la bissection du balayage de stabilité (essais de %1 s ; Études → Balayage de stabilité les fait tous), marqué sur l&apos;image</translation>
+    </message>
+    <message>
+        <source>Linearising the world (%1 bodies)…</source>
+        <translation>Linéarisation du monde (%1 corps)…</translation>
+    </message>
+    <message>
+        <source>The whole world (%1 bodies) linearised as one system: every body&apos;s modes, and the contact between bodies where two are within the contact skin. </source>
+        <translation>Le monde entier (%1 corps) linéarisé comme un seul système : les modes de chaque corps, et le contact entre corps là où deux sont dans la peau de contact. </translation>
     </message>
 </context>
 <context>

@@ -762,9 +762,8 @@ bool MainWindow::refuseForWorld(const QString& what) {
 void MainWindow::showWorldMode(bool world) {
     if (world == m_worldShown) return;
     m_worldShown = world;
-    // What a world has not yet: side by side, the timeline, the stability map (said in it).
+    // What a world has not yet: side by side, the timeline.
     m_sideBySide->setEnabled(!world);
-    m_stabilityMapDock->setWorldNotice(world);
     if (world) {
         m_bodiesDock->show();
         m_bodiesDock->raise();
@@ -883,7 +882,8 @@ void MainWindow::onFrame(const FramePtr& frame) {
     m_parameterDock->showBodies(kinds, frame->worldBody);
     QStringList integrators;
     for (const LaneFrame& lane : frame->lanes) integrators << lane.integrator;
-    m_stabilityMapDock->setState(frame->parameters, integrators);
+    if (world && frame->worldSpec) m_stabilityMapDock->setWorld(*frame->worldSpec, integrators);  // the whole world's map
+    else m_stabilityMapDock->setState(frame->parameters, integrators);
     if (!m_paramsShown || !(m_shownParams == frame->parameters)) {
         m_shownParams = frame->parameters;
         m_paramsShown = true;

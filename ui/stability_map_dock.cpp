@@ -29,6 +29,19 @@ simcore::ParameterSet withoutDt(const simcore::ParameterSet& p) {
     return q;
 }
 
+// The same world but for DT (the one linearisation), and the same world exactly.
+bool sameWorld(const std::optional<simcore::WorldSpec>& a, const std::optional<simcore::WorldSpec>& b, bool dt) {
+    if (a.has_value() != b.has_value()) return false;
+    if (!a) return true;
+    if (a->bodies.size() != b->bodies.size()) return false;
+    for (std::size_t k = 0; k < a->bodies.size(); ++k) {
+        const simcore::WorldBodySpec &x = a->bodies[k], &y = b->bodies[k];
+        if (x.position != y.position || x.velocity != y.velocity) return false;
+        if (dt ? !(x.params == y.params) : !(withoutDt(x.params) == withoutDt(y.params))) return false;
+    }
+    return true;
+}
+
 QString seconds(double s) { return num(s, 'g', 3); }
 
 // A view's colour on the map (its edge, when it is not the primary one).
@@ -38,9 +51,9 @@ QColor viewColor(int view) {
 }
 
 QString tryTip() {
-    return StabilityMapDock::tr("Measure this integrator's largest stable DT on this body: the stability scan's "
-                                "bisection (%1 s runs; Studies → Stability scan does all integrators), marked on "
-                                "the picture")
+    return StabilityMapDock::tr("Measure this integrator's largest stable DT on this body or world: the stability "
+                                "scan's bisection (%1 s runs; Studies → Stability scan does all integrators), marked "
+                                "on the picture")
         .arg(kScanDuration);
 }
 
@@ -124,7 +137,6 @@ StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability 
     m_measuredLabel->setFont(small);
     row->addWidget(m_measuredLabel, 1);
     layout->addLayout(row);
-    m_worldHost = host;
     setWidget(host);
     m_marginLabel->setText(tr("Waiting for a body…"));
 
@@ -144,41 +156,22 @@ void StabilityMapDock::setState(const simcore::ParameterSet& params, const QStri
     setState(params, QStringList{integrator});
 }
 
-void StabilityMapDock::setWorldNotice(bool world) {
-    if (world == m_worldShown) return;
-    m_worldShown = world;
-    if (!m_worldNotice) {
-        // The map of one body would be the wrong numbers for a world (its modes couple through
-        // contact): said instead of drawn.
-        m_worldNotice = new QLabel(tr("The stability map is for scenes of one body: a world of several bodies has the "
-                                      "modes of every body and of their contact, which the map does not compute yet. "
-                                      "Its largest stable DT is found by trying: Run with a larger DT until a step "
-                                      "fails."),
-                                   m_worldHost);
-        m_worldNotice->setObjectName(QStringLiteral("stabilityMapWorldNotice"));
-        m_worldNotice->setWordWrap(true);
-        m_worldNotice->setAlignment(Qt::AlignCenter);
-        static_cast<QVBoxLayout*>(m_worldHost->layout())->insertWidget(0, m_worldNotice);
-    }
-    m_worldNotice->setVisible(world);
-    if (world) {
-        m_hiddenForWorld.clear();
-        for (QWidget* child : m_worldHost->findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
-            if (child != m_worldNotice && !child->isHidden()) {
-                m_hiddenForWorld.push_back(child);
-                child->hide();
-            }
-    } else {
-        for (QWidget* child : m_hiddenForWorld) child->show();  // what was shown before
-        m_hiddenForWorld.clear();
-        m_hasState = false;  // the next setState maps again
-    }
+void StabilityMapDock::setWorld(const simcore::WorldSpec& world, const QStringList& integrators) {
+    if (integrators.isEmpty() || world.bodies.empty()) return;
+    const std::optional<simcore::WorldSpec> wanted(world);
+    if (m_hasState && sameWorld(wanted, m_world, true) && integrators == m_integrators) return;
+    m_world = wanted;
+    m_params = world.bodies.front().params;  // the world's DT (shared by every body)
+    m_integrators = integrators;
+    m_integrator = integrators.front();
+    m_hasState = true;
+    request();
 }
 
 void StabilityMapDock::setState(const simcore::ParameterSet& params, const QStringList& integrators) {
-    if (m_worldShown) return;
     if (integrators.isEmpty()) return;
-    if (m_hasState && params == m_params && integrators == m_integrators) return;
+    if (m_hasState && !m_world && params == m_params && integrators == m_integrators) return;
+    m_world.reset();
     m_params = params;
     m_integrators = integrators;
     m_integrator = integrators.front();
@@ -218,21 +211,30 @@ void StabilityMapDock::request() {
     }
     std::vector<std::string> integrators;
     for (const QString& name : m_integrators) integrators.push_back(name.toStdString());
-    if (m_resultSerial > 0 && m_params == m_shownParams && integrators == m_shownIntegrators) return;
-    Job job{m_params, integrators, nullptr};
-    if (m_modes && m_resultSerial > 0 && withoutDt(m_params) == withoutDt(m_shownParams)) job.modes = m_modes;
+    if (m_resultSerial > 0 && m_params == m_shownParams && sameWorld(m_world, m_shownWorld, true) &&
+        integrators == m_shownIntegrators)
+        return;
+    Job job{m_params, m_world, integrators, nullptr};
+    if (m_modes && m_resultSerial > 0 && withoutDt(m_params) == withoutDt(m_shownParams) &&
+        sameWorld(m_world, m_shownWorld, false))
+        job.modes = m_modes;
     startJob(std::move(job));
 }
 
 void StabilityMapDock::startJob(Job job) {
     m_jobRunning = true;
-    if (m_resultSerial == 0) m_marginLabel->setText(tr("Linearising the body…"));
+    if (m_resultSerial == 0 || !sameWorld(job.world, m_shownWorld, false))
+        m_marginLabel->setText(job.world ? tr("Linearising the world (%1 bodies)…").arg(job.world->bodies.size())
+                                         : tr("Linearising the body…"));
     if (m_jobThread.joinable()) m_jobThread.join();  // the last job ended (its result was delivered)
     m_jobThread = std::thread([this, job = std::move(job)] {
         Result r;
         r.params = job.params;
+        r.world = job.world;
         r.integrators = job.integrators;
-        r.modes = job.modes ? job.modes : std::make_shared<const simlab::LinearModes>(simlab::stabilityModes(job.params));
+        r.modes = job.modes ? job.modes
+                            : std::make_shared<const simlab::LinearModes>(job.world ? simlab::stabilityModes(*job.world)
+                                                                                    : simlab::stabilityModes(job.params));
         r.points = simlab::spectrumPoints(*r.modes);
         // Every view on the same points; the primary one is the first with the smallest margin.
         for (const std::string& name : job.integrators)
@@ -257,6 +259,7 @@ void StabilityMapDock::startJob(Job job) {
 
 void StabilityMapDock::present(const Result& r) {
     m_shownParams = r.params;
+    m_shownWorld = r.world;
     m_shownIntegrator = r.integrator;
     m_shownIntegrators = r.integrators;
     m_shownDt = r.params.get(simcore::Param::Dt);
@@ -271,8 +274,9 @@ void StabilityMapDock::present(const Result& r) {
     describe(r);
     m_try->setEnabled(hasRegion || m_scanRunning);
     m_try->setToolTip(hasRegion ? tryTip() : tr("%1 has no fixed stability limit to measure").arg(name));
-    // A measured limit holds for the body and the method, whatever DT is now.
-    if (m_scanRow && !(withoutDt(m_scanParams) == withoutDt(m_shownParams) && m_scanIntegrator == m_shownIntegrator)) {
+    // A measured limit holds for the body (or world) and the method, whatever DT is now.
+    if (m_scanRow && !(withoutDt(m_scanParams) == withoutDt(m_shownParams) && sameWorld(m_scanWorld, m_shownWorld, false) &&
+                       m_scanIntegrator == m_shownIntegrator)) {
         m_scanRow.reset();
         m_measuredText.clear();
     }
@@ -359,8 +363,13 @@ void StabilityMapDock::describe(const Result& r) {
                              .arg(QString::fromStdString(r.views[v].integrator), QString::fromStdString(r.views[v].margin.text));
         m_marginLabel->setText(lines.join(QLatin1Char('\n')));
     }
-    m_methodLabel->setText(tr("Eigenvalues: %1.\n%2")
-                               .arg(QString::fromStdString(m_spectrum.methodText), QString::fromStdString(simlab::regionNote(r.integrator))));
+    const QString world = r.world ? tr("The whole world (%1 bodies) linearised as one system: every body's modes, "
+                                       "and the contact between bodies where two are within the contact skin. ")
+                                        .arg(r.world->bodies.size())
+                                  : QString();
+    m_methodLabel->setText(world + tr("Eigenvalues: %1.\n%2")
+                                       .arg(QString::fromStdString(m_spectrum.methodText),
+                                            QString::fromStdString(simlab::regionNote(r.integrator))));
 }
 
 void StabilityMapDock::showMeasured() {
@@ -489,6 +498,7 @@ void StabilityMapDock::tryIt() {
     if (!m_modes || simlab::regionKind(m_shownIntegrator) == simlab::RegionKind::None) return;
     m_scanRunning = true;
     m_scanParams = m_shownParams;
+    m_scanWorld = m_shownWorld;
     m_scanIntegrator = m_shownIntegrator;
     m_scanRow.reset();
     m_measuredText.clear();
@@ -498,6 +508,7 @@ void StabilityMapDock::tryIt() {
     m_scanCancel = std::make_shared<std::atomic<bool>>(false);
     simlab::StabilitySpec spec;
     spec.params = m_scanParams;
+    spec.world = m_scanWorld;  // a world: its trials run the whole world
     spec.integrators = {m_scanIntegrator};
     spec.duration = kScanDuration;
     if (m_scanThread.joinable()) m_scanThread.join();  // the last scan ended (its end was delivered)
@@ -511,7 +522,8 @@ void StabilityMapDock::tryIt() {
             if (cancelled) m_measuredText = tr("Measurement cancelled.");
             else m_scanRow = row;
             // The body or the method may have changed meanwhile: the row is kept only for its own.
-            if (m_scanRow && !(withoutDt(m_scanParams) == withoutDt(m_shownParams) && m_scanIntegrator == m_shownIntegrator)) {
+            if (m_scanRow && !(withoutDt(m_scanParams) == withoutDt(m_shownParams) &&
+                               sameWorld(m_scanWorld, m_shownWorld, false) && m_scanIntegrator == m_shownIntegrator)) {
                 m_scanRow.reset();
                 m_measuredText = tr("The body or the integrator changed during the measurement: press Try it again.");
             }

@@ -22,6 +22,10 @@
 // stability scan's bisection (simlab::scanIntegrator) for the current integrator on another
 // std::thread, with Cancel. Results come back through a Mailbox (mailbox.h: no Qt hand-over
 // across threads, so ThreadSanitizer sees it).
+//
+// A scene of several bodies (setWorld) is mapped the same way with the whole world's
+// eigenvalues (simlab::stabilityModes of the WorldSpec: every body's modes and, where two
+// bodies are within the contact skin, their contact's) and "Try it" scans the whole world.
 
 #include <atomic>
 #include <complex>
@@ -33,6 +37,7 @@
 #include <QDockWidget>
 
 #include "simcore/params.h"
+#include "simcore/world.h"
 #include "simlab/stability.h"
 #include "simlab/stability_region.h"
 
@@ -57,9 +62,13 @@ public:
     // neither changed).
     void setState(const simcore::ParameterSet& params, const QString& integrator);
     void setState(const simcore::ParameterSet& params, const QStringList& integrators);
-    // A scene of several bodies: the dock says the map is for one body instead of drawing one.
-    void setWorldNotice(bool world);
-    bool showsWorldNotice() const { return m_worldShown; }
+    // A scene of several bodies and its method: the whole world's map (its DT is body 1's, the
+    // world's shared step); cheap to call with every frame.
+    void setWorld(const simcore::WorldSpec& world, const QStringList& integrators);
+    // Whether the map shown is a world's, and of how many bodies (0: one body).
+    int shownBodies() const { return m_shownWorld ? int(m_shownWorld->bodies.size()) : 0; }
+    // The spectrum shown (for tests).
+    const simlab::LinearModes* modes() const { return m_modes.get(); }
 
     // What is shown (for tests and the screenshot).
     QString integrator() const { return m_integrator; }  // the first view's (as asked)
@@ -92,6 +101,7 @@ protected:
 private:
     struct Job {
         simcore::ParameterSet params;
+        std::optional<simcore::WorldSpec> world;            // a scene of several bodies
         std::vector<std::string> integrators;               // every view's
         std::shared_ptr<const simlab::LinearModes> modes;  // reused when only DT changed
     };
@@ -103,6 +113,7 @@ private:
     };
     struct Result {
         simcore::ParameterSet params;
+        std::optional<simcore::WorldSpec> world;
         std::vector<std::string> integrators;  // as asked
         std::string integrator;                // the primary view's
         std::shared_ptr<const simlab::LinearModes> modes;
@@ -135,6 +146,7 @@ private:
 
     // The wanted state (from setState) and what is shown.
     simcore::ParameterSet m_params;
+    std::optional<simcore::WorldSpec> m_world, m_shownWorld, m_scanWorld;
     QString m_integrator;
     QStringList m_integrators;
     bool m_hasState = false;
@@ -164,10 +176,6 @@ private:
     std::optional<simlab::StabilityRow> m_scanRow;
     std::optional<std::complex<double>> m_measuredMark;
     QString m_measuredText;
-    QWidget* m_worldHost = nullptr;    // the map's widgets (set aside while a world is shown)
-    QLabel* m_worldNotice = nullptr;
-    bool m_worldShown = false;
-    std::vector<QWidget*> m_hiddenForWorld;  // children of m_worldHost hidden for the notice
 };
 
 }  // namespace elui

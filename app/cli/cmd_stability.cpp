@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/cli.h"
 #include "simcore/integrator_table.h"
 #include "simlab/output.h"
@@ -25,7 +27,7 @@ struct StabilityArgs {
     std::string integrators = "euler,midpoint,rk4,symplectic-euler,verlet,rk45,implicit-euler";
     double duration = 2.0, perturb = 0.01, hMin = 1e-5, hMax = 1.0;
     std::string csv, shard;
-    bool quiet = false;
+    bool quiet = false, json = false;
     simlab::StabilitySpec spec;  // after check()
     SceneSetup setup;
 };
@@ -35,6 +37,7 @@ void checkStability(StabilityArgs& args) {
     args.setup = sceneSetup(args.scene);
     simlab::StabilitySpec& spec = args.spec;
     spec.params = args.setup.params;
+    spec.world = args.setup.world;  // a scene of several bodies: the whole world
     spec.integrators = nameList("integrators", args.integrators);
     spec.duration = args.duration;
     spec.perturb = args.perturb;
@@ -42,6 +45,28 @@ void checkStability(StabilityArgs& args) {
     spec.hMax = args.hMax;
     std::tie(spec.shardIndex, spec.shardCount) = parseShard(args.shard);
     simlab::checkStability(spec);
+}
+
+// --json: {"scene", "bodies" (a world), "free_coordinates", "basis", "omega_max",
+// "fastest": [re, im], "rows": [{"integrator", "dt_stable", "dt_unstable", "dt_predicted",
+// "reason"}]}: steps in s, null for "unlimited" (stable up to the largest step scanned, or an
+// A-stable method).
+void printStabilityJson(const SceneSetup& setup, const simlab::StabilitySpec& spec, const simlab::LinearModes& modes,
+                        const std::vector<simlab::StabilityRow>& rows) {
+    auto step = [](double h) { return std::isinf(h) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(h); };
+    const simlab::StabilityVerdict v = simlab::stabilityVerdict(modes, "rk4", 0.0);
+    nlohmann::ordered_json j = {{"scene", setup.sceneName}};
+    if (spec.world) j["bodies"] = spec.world->bodies.size();
+    j["free_coordinates"] = modes.freeCoordinates;
+    j["basis"] = v.basis;
+    j["omega_max"] = modes.omegaMax;
+    j["fastest"] = {v.fastest.real(), v.fastest.imag()};
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (const simlab::StabilityRow& row : rows)
+        list.push_back({{"integrator", row.integrator}, {"dt_stable", row.stable}, {"dt_unstable", step(row.unstable)},
+                        {"dt_predicted", step(row.predicted)}, {"reason", row.reasonAbove}});
+    j["rows"] = list;
+    printJson(j);
 }
 
 int runStability(const StabilityArgs& args) {
@@ -56,8 +81,8 @@ int runStability(const StabilityArgs& args) {
     if (!linearised.isExplicit(simcore::Param::Perturb)) linearised.set(simcore::Param::Perturb, spec.perturb);
     // The one verdict's linearisation (at the rest shape, as the GUI's banners and map): the
     // trials below start perturbed, the prediction does not.
-    const simlab::LinearModes modes = simlab::stabilityModes(spec.params);
-    const bool quiet = args.quiet;
+    const simlab::LinearModes modes = simlab::stabilityModes(spec);
+    const bool quiet = args.quiet || args.json;
     if (!quiet) {
         std::printf("scene        %s, T = %g s, trials start perturbed by %g m (seed %g); the prediction is "
                     "linearised at the unperturbed rest shape\n", setup.sceneName.c_str(),
@@ -69,6 +94,10 @@ int runStability(const StabilityArgs& args) {
                     modes.omegaMax > 0 ? modes.dampingAtMax / (2 * modes.omegaMax) : 0.0, modes.fastestDamping);
         if (modes.unstableModes) std::printf("; %d physically unstable modes excluded", modes.unstableModes);
         std::printf("\n");
+        if (spec.world)
+            std::printf("world        %zu bodies linearised as one system (every body's forces, the contact between "
+                        "bodies where a pair is within the skin): one spectrum, one verdict per method\n",
+                        spec.world->bodies.size());
         {
             // The verdict's spectrum (what every door predicts from).
             const simlab::StabilityVerdict v = simlab::stabilityVerdict(modes, "rk4", 0.0);
@@ -112,6 +141,7 @@ int runStability(const StabilityArgs& args) {
         }
         rows.push_back(std::move(row));
     }
+    if (args.json) printStabilityJson(setup, spec, modes, rows);
     if (csv) {
         if (spec.shardIndex == 0) csv->write(simlab::stabilityCsvHeader());
         for (const auto& row : rows) csv->write(simlab::stabilityCsvRow(row, modes));
@@ -130,6 +160,7 @@ Command addStabilityCommand(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("stability", "largest stable dt per integrator (bisection) beside the linearised "
                                                     "prediction (highest frequency, damping, stability region)");
     addSceneOptions(*sub, args->scene, false, false);
+    args->scene.severalBodies = true;  // a scene of several bodies: the whole world's spectrum and trials
     sub->add_option("--integrators", args->integrators, "comma-separated integrators")->type_name("a,b,...")->capture_default_str();
     sub->add_option("--duration", args->duration, "simulated time a step must survive [s]")
         ->type_name("T")
@@ -144,6 +175,7 @@ Command addStabilityCommand(CLI::App& app) {
     sub->add_option("--shard", args->shard, "scan the K-th of N equal parts of the integrators (1-based)")->type_name("K/N");
     addCsvOption(*sub, args->csv, "write one row per integrator");
     sub->add_flag("--quiet", args->quiet, "no table on standard output");
+    addJsonFlag(*sub, args->json);
     return {sub, [args] { checkStability(*args); }, [args] { return runStability(*args); }};
 }
 

@@ -84,6 +84,7 @@ void checkRefinement(StudyArgs& args) {
     args.setup = sceneSetup(args.scene);
     simlab::RefinementSpec& spec = args.refinement;
     spec.params = args.setup.params;
+    spec.world = args.setup.world;  // a world: every body's resolution raised together
     const std::string& refine = *args.refine;
     const auto eq = refine.find('=');
     if (eq == std::string::npos) throw UsageError("--refine: expected KEY=v1,v2,..., got " + simcore::quoteShort(refine));
@@ -208,6 +209,7 @@ void checkStudy(StudyArgs& args) {
     args.setup = sceneSetup(args.scene);
     simlab::StudySpec& spec = args.study;
     spec.params = args.setup.params;
+    spec.world = args.setup.world;  // a world: every run and the reference run the whole world
     spec.integrators = nameList("integrators", args.integrators.value_or("euler,midpoint,rk4"));
     if (args.dts) spec.dts = numberList("dts", *args.dts);
     if (args.tols) spec.tolerances = numberList("tols", *args.tols);
@@ -320,6 +322,7 @@ Command addStudyCommand(CLI::App& app) {
                  "step (or tolerance), fitted orders; with --refine, the refinement study (the same body at each "
                  "resolution against the finest); with --from-csv, fit and plot rows written before (shards)");
     addSceneOptions(*sub, args->scene, true, false);
+    args->scene.severalBodies = true;  // work-precision and refinement of a whole world
     CLI::Option* refine = sub->add_option("--refine", args->refine,
                                           "refinement study over KEY (particles, subdivisions or slices) at these levels")
                               ->type_name("KEY=v1,v2,...");

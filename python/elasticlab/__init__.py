@@ -435,7 +435,9 @@ def study(scene: PathLike, *, integrators: Sequence[str] = ("euler", "midpoint",
     symplectic-euler, verlet; for the 1D spring its float build, also the Yoshida methods),
     ``precision=("double", "float")`` both: the float curve flattens at the round-off floor;
     ``compensated`` Kahan-sums the 1D spring's float update. ``csv=``, ``timings=`` and
-    ``plot=`` write the CLI's files."""
+    ``plot=`` write the CLI's files. A scene of several bodies (``"collide2d"``, a world's scene
+    file) is studied as one world: the errors over every particle of every body (double only);
+    keywords set every body."""
     return _core.study(scene, integrators=list(integrators), dts=None if dts is None else list(dts),
                        tolerances=None if tolerances is None else list(tolerances), duration=duration,
                        repeat=repeat, reference=reference, samples=samples, fixed_step=fixed_step,
@@ -451,7 +453,8 @@ def refinement(scene: PathLike, *, levels: Sequence[int], key: Optional[str] = N
                plot: Optional[PathLike] = None, title: Optional[str] = None, **parameters: Any) -> dict:
     """Refinement study (the CLI's ``study --refine``): the same body at several resolutions
     (`levels` of `key`, the scene's own by default) against the finest, compared every
-    `interval` [s] over `duration` [s]; ``dt=`` (a parameter, [s]) fixes the step."""
+    `interval` [s] over `duration` [s]; ``dt=`` (a parameter, [s]) fixes the step. A scene of
+    several bodies raises every body's resolution together (bodies of one kind)."""
     return _core.refinement(scene, levels=list(levels), key=key, integrator=integrator, tolerance=tolerance,
                             duration=duration, interval=interval, temporal_runs=temporal_runs,
                             fixed_step=fixed_step, csv=csv, plot=plot, title=title, **parameters)
@@ -477,6 +480,8 @@ def stability(scene: PathLike, *, integrators: Sequence[str] = ("euler", "midpoi
               csv: Optional[PathLike] = None, **parameters: Any) -> dict:
     """Stability scan (the CLI's ``stability``): the largest stable step [s] of each integrator,
     measured between `hmin` and `hmax` [s] over `duration` [s] from a start perturbed by
-    `perturb` [m], beside the linear prediction."""
+    `perturb` [m], beside the linear prediction. A scene of several bodies is scanned as one
+    world: the prediction from the whole system's eigenvalues, the trials run every body;
+    the result then has ``'bodies'``."""
     return _core.stability(scene, integrators=list(integrators), duration=duration, perturb=perturb, hmin=hmin,
                            hmax=hmax, csv=csv, **parameters)

@@ -121,3 +121,21 @@ def test_an_intersection_raises_simulation_failed():
         w.run(0.5, every_steps=1)
     assert e.value.rows is not None and len(e.value.rows) >= 1
     assert w.failure is not None
+
+
+def test_a_world_is_studied_as_a_whole():
+    """stability, study and refinement take a world as the CLI does (tests/test_world_studies.cpp
+    measures them): one spectrum of every body, errors over every body, every body refined."""
+    st = el.stability("collide2d", integrators=["rk4"], duration=0.3, gravity=0)
+    assert st["bodies"] == 2
+    assert st["free_coordinates"] == 2 * el.stability("ring2d", integrators=["rk4"], duration=0.3,
+                                                      gravity=0)["free_coordinates"]
+    row = st["rows"][0]
+    assert 0 < row["dt_stable"] < row["dt_unstable"]
+    out = el.study("collide2d", integrators=["rk4"], dts=[0.01, 0.005], duration=0.1, samples=2, gravity=0)
+    assert [r["status"] for r in out["rows"]] == ["ok", "ok"]
+    assert out["rows"][1]["error_final"] < out["rows"][0]["error_final"]
+    ref = el.refinement("collide2d", levels=[8, 16], duration=0.05, interval=0.05, temporal_runs=0, gravity=0)
+    assert [r["particles"] for r in ref["rows"]] == [32, 64]
+    with pytest.raises(ValueError, match="several bodies"):
+        el.conservation("collide2d")

@@ -27,6 +27,12 @@ namespace simcore {
 // world.
 bool configureForces(ForceModel& forces, const ParameterSet& set, const Params& p, const BodyScale& scale,
                      int dimension, const Eigen::Vector3d& boxCentre);
+// The wall contact's linearisation point for the stability estimates (contact.h ContactDesign)
+// of a body at positions x: the free particles within a tenth of its height of its lowest
+// point, each at the depth that carries its weight. One function for the one-body simulation
+// and every body of a world.
+ContactDesign contactDesignOf(const ForceModel& forces, const Body& body, bool projection,
+                              const Eigen::Ref<const Eigen::Matrix3Xd>& x);
 // 3N inverse masses: 0 on fixed particles and on the axes a body of this dimension does not
 // move along (1D: y only; 2D: x and y).
 Eigen::VectorXd inverseMasses(const Body& body);
