@@ -18,46 +18,11 @@
 #include <vector>
 
 #include "app/cli/cli.h"
+#include "fuzz/scratch.h"
 
 namespace {
 
-struct Scratch {
-    std::filesystem::path dir;
-    Scratch() {
-        char name[] = "/tmp/elastic-lab-fuzz-XXXXXX";
-        if (!::mkdtemp(name)) std::abort();
-        dir = name;
-        std::filesystem::create_directory(dir / "dir.json");
-        if (::mkfifo((dir / "fifo.json").c_str(), 0600) != 0) std::abort();
-        std::filesystem::create_symlink("/dev/zero", dir / "zero.json");
-        std::filesystem::create_symlink("/dev/null", dir / "null.json");
-        std::ofstream(dir / "empty.json").flush();
-        std::ofstream(dir / "scene.json") << R"({"format": "elastic-lab-scene", "version": 3, "scene": "ring2d",
-            "integrator": "rk4", "parameters": {"ks": 100, "dt": 0.001}})";
-    }
-    ~Scratch() {
-        std::error_code ignored;
-        std::filesystem::remove_all(dir, ignored);
-    }
-};
-
-const Scratch& scratch() {
-    static const Scratch s;
-    return s;
-}
-
-// Replaces the tokens; false when the argument names some other path.
-bool substitute(std::string& arg) {
-    static const char* tokens[] = {"dir", "fifo", "zero", "null", "empty", "scene"};
-    for (const char* token : tokens) {
-        const std::string at = std::string("@") + token;
-        if (auto pos = arg.find(at); pos != std::string::npos) {
-            arg.replace(pos, at.size(), (scratch().dir / (std::string(token) + ".json")).string());
-            return true;
-        }
-    }
-    return arg.find('/') == std::string::npos;
-}
+using fuzzscratch::substitute;
 
 bool isCommand(const std::string& word) {
     static const char* commands[] = {"scenes", "params", "integrators", "run", "study", "conservation", "stability",

@@ -30,6 +30,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#ifdef ELASTICLAB_EMBEDDED
+#include <pybind11/embed.h>
+#endif
 
 #include "elastic_lab_version.h"
 #include "simcore/body.h"
@@ -1242,7 +1245,13 @@ std::vector<double> sweepRange(const std::string& kind, const py::handle& a, con
 }  // namespace
 
 // Kept whole: the module's table of bindings, one definition after another.
+// fuzz/fuzz_python.cpp compiles this file into a program with an embedded interpreter (the
+// package's Python entry under libFuzzer): the same module, registered as a built-in.
+#ifdef ELASTICLAB_EMBEDDED
+PYBIND11_EMBEDDED_MODULE(_core, m) {
+#else
 PYBIND11_MODULE(_core, m) {
+#endif
     m.doc() = "Elastic Lab: two-layer elastic bodies (particles, springs, gas pressure) from Python. "
               "See docs/python.md.";
     m.attr("__version__") = elastic_lab::kVersion;

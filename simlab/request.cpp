@@ -200,7 +200,9 @@ void checkPrecision(const std::string& precision, const std::string& integrator)
 
 void checkRun(const SceneSetup& scene, const RunRequest& run) {
     checkPrecision(run.precision, scene.integrator);
-    if (!(run.duration > 0.0) || !std::isfinite(run.duration))
+    // The range the message states (the CLI's and Python's own checks say the same; the front
+    // door must not rely on them: fuzz_request found an adaptive run of 1e300 s accepted here).
+    if (!(run.duration > 0.0) || !(run.duration <= 1e7))
         refuse("duration " + number(run.duration) + " s is not allowed; allowed (0, 1e+07] s");
     // A fixed-step run takes duration / dt steps: bounded, so that a typo (dt 1e-300) is
     // refused at once instead of running for ever. An adaptive one stops at the bound (exit 3).
@@ -296,6 +298,12 @@ void checkWorldIntegrators(const simcore::WorldSpec& world, const std::vector<st
 
 void checkStability(const simlab::StabilitySpec& spec) {
     checkIntegrators(spec.integrators);
+    // The ranges the CLI's and Python's options state, held here too (fuzz_request found
+    // hmin = -1 with hmax = inf accepted: a negative trial count passed the step bound).
+    if (!(spec.duration > 0.0 && spec.duration <= 1e5))
+        refuse("duration = " + number(spec.duration) + " is out of range; allowed (0, 1e+05] s");
+    if (!(spec.hMin > 0.0 && spec.hMin <= 1.0)) refuse("hmin = " + number(spec.hMin) + " is out of range; allowed (0, 1] s");
+    if (!(spec.hMax > 0.0 && spec.hMax <= 1.0)) refuse("hmax = " + number(spec.hMax) + " is out of range; allowed (0, 1] s");
     if (spec.hMax < spec.hMin) refuse("hmax " + number(spec.hMax) + " s is below hmin " + number(spec.hMin) + " s");
     // A trial at the smallest step takes duration / hmin steps.
     checkSteps(spec.duration / spec.hMin,

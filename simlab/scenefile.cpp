@@ -563,7 +563,7 @@ std::string sceneFileText(const simcore::World& world, bool withState) {
     std::ostringstream os;
     std::optional<SceneFile::State> state;
     if (withState) {
-        state.emplace();
+        state = SceneFile::State{};  // not emplace(): clang 14 judges the nested type not default-constructible
         state->step = world.stepCount();
         state->time = world.time();
         state->positions = Eigen::Map<const Eigen::Matrix3Xd>(world.state().data(), 3, world.particleCount());
