@@ -126,9 +126,8 @@ struct Lane {
     std::vector<double> paired; // rate / the paired lane's in the same round
 };
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// The command line.
+struct Options {
     // Bullet's links: the mesh edges and, by default, the bending links to each node's
     // second ring (generateBendingConstraints(2)): 147,432 links at level 6, as many as our
     // outer layer's structural and shear springs (147,456). One position iteration: Bullet's
@@ -138,41 +137,91 @@ int main(int argc, char** argv) {
     long steps = 200, rounds = 7, warmup = 10;
     std::string kernels;
     std::vector<int> threads{1, 2};
+};
+
+// False (after printing the usage or the unknown option) when the command line is not one.
+bool parseOptions(int argc, char** argv, Options& o) {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
         if (!value) {
             std::fprintf(stderr, "usage: %s [--level L] [--steps N] [--rounds R] [--warmup N] [--kernels SET] [--threads 1,2] [--bullet-bending K] [--bullet-iterations N] [--float on|off]\n", argv[0]);
-            return 2;
+            return false;
         }
-        if (arg == "--level") level = std::atoi(value);
-        else if (arg == "--steps") steps = std::atol(value);
-        else if (arg == "--rounds") rounds = std::atol(value);
-        else if (arg == "--warmup") warmup = std::atol(value);
-        else if (arg == "--kernels") kernels = value;
-        else if (arg == "--bullet-bending") bending = std::atoi(value);
-        else if (arg == "--bullet-iterations") iterations = std::atoi(value);
-        else if (arg == "--float") withFloat = std::string(value) != "off";
+        if (arg == "--level") o.level = std::atoi(value);
+        else if (arg == "--steps") o.steps = std::atol(value);
+        else if (arg == "--rounds") o.rounds = std::atol(value);
+        else if (arg == "--warmup") o.warmup = std::atol(value);
+        else if (arg == "--kernels") o.kernels = value;
+        else if (arg == "--bullet-bending") o.bending = std::atoi(value);
+        else if (arg == "--bullet-iterations") o.iterations = std::atoi(value);
+        else if (arg == "--float") o.withFloat = std::string(value) != "off";
         else if (arg == "--threads") {
-            threads.clear();
+            o.threads.clear();
             for (const char* p = value; *p;) {
-                threads.push_back(std::atoi(p));
+                o.threads.push_back(std::atoi(p));
                 p = std::strchr(p, ',');
                 if (!p) break;
                 ++p;
             }
         } else {
             std::fprintf(stderr, "unknown option %s\n", arg.c_str());
-            return 2;
+            return false;
         }
         ++i;
     }
+    return true;
+}
+
+// The warm-up, then the rounds: each lane's steps/s, its ratio to Bullet's (lane 0) and to its
+// paired lane's in the same round.
+void timeRounds(std::vector<Lane>& lanes, long steps, long rounds, long warmup) {
+    for (Lane& lane : lanes)
+        for (long i = 0; i < warmup; ++i) lane.step();
+    for (long r = 0; r < rounds; ++r) {
+        for (Lane& lane : lanes) {
+            const auto start = std::chrono::steady_clock::now();
+            for (long i = 0; i < steps; ++i) lane.step();
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            lane.rate.push_back(static_cast<double>(steps) / seconds);
+            lane.ratio.push_back(lane.rate.back() / lanes.front().rate.back());
+        }
+        for (Lane& lane : lanes)
+            if (lane.pairedWith >= 0)
+                lane.paired.push_back(lane.rate.back() / lanes[static_cast<std::size_t>(lane.pairedWith)].rate.back());
+    }
+}
+
+// The summary: one CSV row per lane, the median and range of its rates and ratios.
+void printLanes(const std::vector<Lane>& lanes, long rounds, long steps) {
+    std::printf("lane,rounds,steps_per_round,steps_per_second_median,steps_per_second_min,steps_per_second_max,"
+                "ratio_to_bullet_median,ratio_min,ratio_max,ratio_to_double_median,ratio_to_double_min,"
+                "ratio_to_double_max\n");
+    for (const Lane& lane : lanes) {
+        std::printf("%s,%ld,%ld,%.1f,%.1f,%.1f,%.3f,%.3f,%.3f", lane.name.c_str(), rounds, steps, median(lane.rate),
+                    *std::min_element(lane.rate.begin(), lane.rate.end()),
+                    *std::max_element(lane.rate.begin(), lane.rate.end()), median(lane.ratio),
+                    *std::min_element(lane.ratio.begin(), lane.ratio.end()),
+                    *std::max_element(lane.ratio.begin(), lane.ratio.end()));
+        if (lane.paired.empty()) std::printf(",,,\n");
+        else
+            std::printf(",%.3f,%.3f,%.3f\n", median(lane.paired), *std::min_element(lane.paired.begin(), lane.paired.end()),
+                        *std::max_element(lane.paired.begin(), lane.paired.end()));
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    if (!parseOptions(argc, argv, o)) return 2;
+    const std::vector<int>& threads = o.threads;
     namespace sk = simcore::kernels;
     for (auto set : {sk::KernelSet::Portable, sk::KernelSet::Avx2, sk::KernelSet::Avx512})
-        if (kernels == sk::kernelSetName(set)) sk::useKernels(set);
+        if (o.kernels == sk::kernelSetName(set)) sk::useKernels(set);
 
     simcore::ParameterSet params(simcore::SceneKind::Sphere3d);
-    params.set(simcore::Param::Subdivisions, level);
+    params.set(simcore::Param::Subdivisions, o.level);
     params.set(simcore::Param::Scaling, 1.0);  // thesis, as elastic-lab-cli bench
     params.set(simcore::Param::Gravity, 0.0);
     params.set(simcore::Param::Perturb, 0.01);
@@ -191,13 +240,13 @@ int main(int argc, char** argv) {
         simcore::Simulation* sim = ours.back().get();
         sim->setThreads(t);
         if (!bullet) {
-            bullet = std::make_unique<BulletSphere>(*sim, bending, iterations);
+            bullet = std::make_unique<BulletSphere>(*sim, o.bending, o.iterations);
             BulletSphere* b = bullet.get();
             lanes.push_back({"bullet btSoftBody, 1 thread", [b] { b->step(); }, -1, {}, {}, {}});
         }
         lanes.push_back({"elastic-lab double, " + threadName(sim->threads()), [sim] { sim->step(); }, -1, {}, {}, {}});
     }
-    if (withFloat)
+    if (o.withFloat)
         for (std::size_t k = 0; k < threads.size(); ++k) {
             floats.push_back(std::make_unique<simcore::FloatSimulation>(*ours[k]));
             simcore::FloatSimulation* single = floats.back().get();
@@ -208,24 +257,11 @@ int main(int argc, char** argv) {
     const simcore::Simulation& first = *ours.front();
     std::printf("# CPU: %s; our kernels: %s; Bullet %d (btScalar: %zu bytes)\n", cpuName().c_str(),
                 sk::kernelSetName(sk::kernelsInUse()), btGetVersion(), sizeof(btScalar));
-    std::printf("# ours: sphere3d level %d, two layers, %d particles, %zu springs, RK4, DT %.3g\n", level,
+    std::printf("# ours: sphere3d level %d, two layers, %d particles, %zu springs, RK4, DT %.3g\n", o.level,
                 first.topology().particleCount(), first.topology().springCount(), first.dt());
     std::printf("# Bullet: one layer, %d nodes, %d links, %d faces, DT 0.003\n", bullet->nodes(), bullet->links(),
                 bullet->faces());
-    for (Lane& lane : lanes)
-        for (long i = 0; i < warmup; ++i) lane.step();
-    for (long r = 0; r < rounds; ++r) {
-        for (Lane& lane : lanes) {
-            const auto start = std::chrono::steady_clock::now();
-            for (long i = 0; i < steps; ++i) lane.step();
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            lane.rate.push_back(static_cast<double>(steps) / seconds);
-            lane.ratio.push_back(lane.rate.back() / lanes.front().rate.back());
-        }
-        for (Lane& lane : lanes)
-            if (lane.pairedWith >= 0)
-                lane.paired.push_back(lane.rate.back() / lanes[static_cast<std::size_t>(lane.pairedWith)].rate.back());
-    }
+    timeRounds(lanes, o.steps, o.rounds, o.warmup);
     for (const auto& sim : ours)
         if (sim->failed()) {
             std::fprintf(stderr, "our simulation failed: %s\n", sim->failure()->reason.c_str());
@@ -240,19 +276,6 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "Bullet's soft body left the finite numbers\n");
         return 1;
     }
-    std::printf("lane,rounds,steps_per_round,steps_per_second_median,steps_per_second_min,steps_per_second_max,"
-                "ratio_to_bullet_median,ratio_min,ratio_max,ratio_to_double_median,ratio_to_double_min,"
-                "ratio_to_double_max\n");
-    for (const Lane& lane : lanes) {
-        std::printf("%s,%ld,%ld,%.1f,%.1f,%.1f,%.3f,%.3f,%.3f", lane.name.c_str(), rounds, steps, median(lane.rate),
-                    *std::min_element(lane.rate.begin(), lane.rate.end()),
-                    *std::max_element(lane.rate.begin(), lane.rate.end()), median(lane.ratio),
-                    *std::min_element(lane.ratio.begin(), lane.ratio.end()),
-                    *std::max_element(lane.ratio.begin(), lane.ratio.end()));
-        if (lane.paired.empty()) std::printf(",,,\n");
-        else
-            std::printf(",%.3f,%.3f,%.3f\n", median(lane.paired), *std::min_element(lane.paired.begin(), lane.paired.end()),
-                        *std::max_element(lane.paired.begin(), lane.paired.end()));
-    }
+    printLanes(lanes, o.rounds, o.steps);
     return 0;
 }

@@ -902,6 +902,28 @@ double nanIfFailed(bool ok, double v) { return ok ? v : std::nan(""); }
 // An adaptive run's tolerance, None for a fixed-step run (simcore: < 0).
 py::object toleranceOrNone(double tolerance) { return tolerance > 0 ? py::object(py::float_(tolerance)) : py::none(); }
 
+// One row of study()'s result: the point, its cost and its errors (NaN where not measured).
+py::dict studyRowDict(const simlab::StudyRow& r) {
+    py::dict row(py::arg("integrator") = r.item.integrator,
+                 py::arg("family") = std::string(simcore::integratorFamily(r.item.integrator)),
+                 py::arg("precision") = r.item.precision, py::arg("dt") = r.dt,
+                 py::arg("tolerance") = toleranceOrNone(r.item.tolerance), py::arg("steps") = r.steps,
+                 py::arg("force_evals") = r.forceEvaluations, py::arg("walls") = r.walls);
+    const bool timed = !r.walls.empty();
+    row["wall_min"] = nanIfFailed(timed, r.wallMin);
+    row["wall_q1"] = nanIfFailed(timed, r.wallQ1);
+    row["wall_median"] = nanIfFailed(timed, r.wallSeconds);
+    row["wall_q3"] = nanIfFailed(timed, r.wallQ3);
+    row["wall_seconds"] = nanIfFailed(timed, r.wallSeconds);  // the median, as before issue 28
+    row["error_final"] = nanIfFailed(r.ok, r.errorFinal);
+    row["error_max"] = nanIfFailed(r.ok, r.errorMax);
+    row["error_rms"] = nanIfFailed(r.ok, r.errorRms);
+    row["error_energy"] = nanIfFailed(r.ok, r.errorEnergy);
+    row["status"] = r.status();
+    row["failure"] = r.failure;
+    return row;
+}
+
 py::dict study(const py::object& scene, const std::vector<std::string>& integrators,
                const std::optional<std::vector<double>>& dts, const std::optional<std::vector<double>>& tolerances,
                const py::handle& duration, const py::handle& repeat, const std::string& reference,
@@ -934,26 +956,7 @@ py::dict study(const py::object& scene, const std::vector<std::string>& integrat
         cancellable([&](const std::atomic<bool>* cancel) { return simlab::runStudy(spec, {}, cancel); });
 
     py::list rows;
-    for (const simlab::StudyRow& r : result.rows) {
-        py::dict row(py::arg("integrator") = r.item.integrator,
-                     py::arg("family") = std::string(simcore::integratorFamily(r.item.integrator)),
-                     py::arg("precision") = r.item.precision, py::arg("dt") = r.dt,
-                     py::arg("tolerance") = toleranceOrNone(r.item.tolerance), py::arg("steps") = r.steps,
-                     py::arg("force_evals") = r.forceEvaluations, py::arg("walls") = r.walls);
-        const bool timed = !r.walls.empty();
-        row["wall_min"] = nanIfFailed(timed, r.wallMin);
-        row["wall_q1"] = nanIfFailed(timed, r.wallQ1);
-        row["wall_median"] = nanIfFailed(timed, r.wallSeconds);
-        row["wall_q3"] = nanIfFailed(timed, r.wallQ3);
-        row["wall_seconds"] = nanIfFailed(timed, r.wallSeconds);  // the median, as before issue 28
-        row["error_final"] = nanIfFailed(r.ok, r.errorFinal);
-        row["error_max"] = nanIfFailed(r.ok, r.errorMax);
-        row["error_rms"] = nanIfFailed(r.ok, r.errorRms);
-        row["error_energy"] = nanIfFailed(r.ok, r.errorEnergy);
-        row["status"] = r.status();
-        row["failure"] = r.failure;
-        rows.append(row);
-    }
+    for (const simlab::StudyRow& r : result.rows) rows.append(studyRowDict(r));
     py::dict orders, ordersFinal, ordersRms;
     for (const simlab::OrderFit& fit : simlab::fitOrders(result.rows, result.reference.estimatedError)) {
         orders[py::str(fit.integrator)] = fit.order;

@@ -2,6 +2,7 @@
 # Installs the Debian 12 packages Elastic Lab needs to build, test and run (skips when present).
 # help2man makes the man pages; dpkg-dev (dpkg-shlibdeps), desktop-file-utils and appstream are
 # for the .deb and its test (packaging/); shared-mime-info compiles the scene files' MIME type there.
+# universal-ctags reads the function lengths for the test long_functions (scripts/long-functions.sh).
 # --cross also installs the AArch64 cross compiler and the user-mode emulator that
 # scripts/check-aarch64.sh needs (not for the build, the tests or CI).
 set -euo pipefail
@@ -20,7 +21,7 @@ packages=(g++ cmake ninja-build qt6-base-dev libqt6opengl6-dev libeigen3-dev lib
           pkgconf libxlsxwriter-dev python3-openpyxl
           qt6-tools-dev qt6-l10n-tools qt6-translations-l10n
           python3-pandas python3-dask python3-distributed python3-tqdm python3-venv python3-setuptools python3-wheel
-          libbullet-dev qt6-svg-dev)
+          libbullet-dev qt6-svg-dev universal-ctags)
 missing=()
 for p in "${packages[@]}" "${packaging[@]}" "${optional[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -473,6 +473,34 @@ void World::fail(std::string reason, double t0) {
     m_y = m_lastGood;
 }
 
+double World::fastestSpeed() const {
+    double fastest = 0.0;
+    for (Eigen::Index i = 0; i < m_n / 3; ++i) fastest = std::max(fastest, m_y.segment(m_n + 3 * i, 3).norm());
+    return fastest;
+}
+
+std::optional<std::string> World::endFailure(const WorldDiagnostics& next, double h) const {
+    // Checks: speed, then the shapes.
+    const double fastest = fastestSpeed();
+    if (fastest * h > 2.0 * m_box || !std::isfinite(next.total())) {
+        std::ostringstream why;
+        why << "runaway velocity: a particle moves " << fastest << " m/s, farther than the whole box in one step";
+        return why.str();
+    }
+    for (std::size_t k = 0; k < m_bodies.size(); ++k)
+        for (const Surface& s : m_bodies[k]->body().topology.surfaces) {
+            const double volume = next.bodies[k].volume[static_cast<std::size_t>(layerSlot(s.layer))];
+            if (volume <= 0.01 * s.restVolume) {
+                std::ostringstream why;
+                why << "body " << k + 1 << ": the " << layerName(s.layer) << " layer "
+                    << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
+                    << (m_dimension == 2 ? "area" : "volume") << " is " << volume << ", rest " << s.restVolume << ")";
+                return why.str();
+            }
+        }
+    return std::nullopt;
+}
+
 bool World::step(double until) {
     if (m_failure) return false;
     const double t0 = m_diag.time;
@@ -483,8 +511,7 @@ bool World::step(double until) {
     bool clamped = false;
     if (adaptive) {
         // As Simulation::size: no particle crosses a tenth of the box in one adaptive step.
-        double fastest = 0.0;
-        for (Eigen::Index i = 0; i < m_n / 3; ++i) fastest = std::max(fastest, m_y.segment(m_n + 3 * i, 3).norm());
+        const double fastest = fastestSpeed();
         h = fastest > 0.0 ? std::min(m_hNext, 0.1 * m_box / fastest) : m_hNext;
         if (until - t0 > 1e-12 * std::max(1.0, std::abs(until)) && t0 + h > until) {
             h = until - t0;
@@ -529,27 +556,10 @@ bool World::step(double until) {
     }
     WorldDiagnostics next = m_diag;
     measure(next);
-    // Checks: speed, then the shapes.
-    double fastest = 0.0;
-    for (Eigen::Index i = 0; i < m_n / 3; ++i) fastest = std::max(fastest, m_y.segment(m_n + 3 * i, 3).norm());
-    if (fastest * report.h > 2.0 * m_box || !std::isfinite(next.total())) {
-        std::ostringstream why;
-        why << "runaway velocity: a particle moves " << fastest << " m/s, farther than the whole box in one step";
-        fail(why.str(), t0);
+    if (std::optional<std::string> why = endFailure(next, report.h)) {
+        fail(std::move(*why), t0);
         return false;
     }
-    for (std::size_t k = 0; k < m_bodies.size(); ++k)
-        for (const Surface& s : m_bodies[k]->body().topology.surfaces) {
-            const double volume = next.bodies[k].volume[static_cast<std::size_t>(layerSlot(s.layer))];
-            if (volume <= 0.01 * s.restVolume) {
-                std::ostringstream why;
-                why << "body " << k + 1 << ": the " << layerName(s.layer) << " layer "
-                    << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
-                    << (m_dimension == 2 ? "area" : "volume") << " is " << volume << ", rest " << s.restVolume << ")";
-                fail(why.str(), t0);
-                return false;
-            }
-        }
     m_diag = std::move(next);
     m_diag.step += 1;
     const double increment = report.h - m_timeCarry;

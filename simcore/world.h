@@ -231,6 +231,12 @@ private:
     void pointerChanged(const PointerSpring& pointer, int body);
     long m_failedStep = 0;
     double m_failedTime = 0.0;
+
+    // The fastest particle's speed in the current state [m/s].
+    double fastestSpeed() const;
+    // Why the state a step of h [s] ended in does not stand (a runaway speed, a layer collapsed
+    // or inside out), measured as `next`; nothing when it stands.
+    std::optional<std::string> endFailure(const WorldDiagnostics& next, double h) const;
 };
 
 }  // namespace simcore

@@ -206,6 +206,21 @@ std::optional<std::string> readClock(const Json& state, SceneFile::State& s) {
 // "state" of a world: step, time, next_step and each body's positions and velocities.
 std::optional<std::string> readWorldState(const Json& state, const simcore::WorldSpec& spec, SceneFile::State& s);
 
+// "state" of one body: step, time, next_step, and its positions and velocities, as many as the
+// shape `params` has particles.
+std::optional<std::string> readBodyState(const Json& state, const ParameterSet& params, SceneFile::State& s) {
+    if (!state.is_object()) return std::string("state: expected an object");
+    if (auto error = onlyKeys(state, "state", {"step", "time", "next_step", "positions", "velocities"})) return error;
+    if (auto error = readClock(state, s)) return error;
+    // The particle count follows from the shape (counted, not built).
+    const auto count = static_cast<int>(bodySize(params).particles);
+    if (!state.contains("positions") || !state.contains("velocities"))
+        return std::string("state: needs both positions and velocities");
+    if (auto error = readVectors(state["positions"], "positions", count, s.positions)) return error;
+    if (auto error = readVectors(state["velocities"], "velocities", count, s.velocities)) return error;
+    return std::nullopt;
+}
+
 // A scene of several bodies (version 4): a built-in one by name, or the bodies listed.
 SceneFileResult parseWorldJson(const Json& root, SceneFile file) {
     if (file.sceneName.empty() || file.sceneName.size() > 64)
@@ -262,9 +277,9 @@ SceneFileResult parseWorldJson(const Json& root, SceneFile file) {
     return {std::move(file), {}};
 }
 
-// Everything but the exception boundary (parseSceneFile).
-SceneFileResult parseSceneJson(const std::string& text) {
-    Json root;
+// The JSON tree of `text` into root, bounded in depth and memory, every key once per object; the
+// error otherwise.
+std::optional<std::string> parseBoundedJson(const std::string& text, Json& root) {
     try {
         std::vector<std::set<std::string>> open;  // the keys of each object being parsed
         std::map<std::string, int> occurrences;
@@ -296,16 +311,22 @@ SceneFileResult parseSceneJson(const std::string& text) {
             return true;
         });
     } catch (const TooLarge& t) {
-        return failure("not a scene file this program reads: " + t.what);
+        return "not a scene file this program reads: " + t.what;
     } catch (const DuplicateKey& d) {
-        return failure("duplicate key " + quoteShort(d.key) + " at line " +
-                       std::to_string(lineOfKey(text, d.key, d.occurrence)) + ": a key may appear once per object");
+        return "duplicate key " + quoteShort(d.key) + " at line " +
+               std::to_string(lineOfKey(text, d.key, d.occurrence)) + ": a key may appear once per object";
     } catch (const Json::parse_error& e) {
-        return failure("not valid JSON at line " + std::to_string(lineOf(text, e.byte == 0 ? 0 : e.byte - 1)) +
-                       ": " + e.what());
+        return "not valid JSON at line " + std::to_string(lineOf(text, e.byte == 0 ? 0 : e.byte - 1)) + ": " + e.what();
     } catch (const Json::exception& e) {  // e.g. a number too large for a double (found by fuzzing)
-        return failure(std::string("not a readable scene file: ") + e.what());
+        return std::string("not a readable scene file: ") + e.what();
     }
+    return std::nullopt;
+}
+
+// Everything but the exception boundary (parseSceneFile).
+SceneFileResult parseSceneJson(const std::string& text) {
+    Json root;
+    if (auto error = parseBoundedJson(text, root)) return failure(*error);
     if (!root.is_object()) return failure("a scene file must be a JSON object");
     if (auto error = onlyKeys(root, "the file", {"format", "version", "scene", "integrator", "parameters", "bodies", "state"}))
         return failure(*error);
@@ -347,18 +368,8 @@ SceneFileResult parseSceneJson(const std::string& text) {
         file.params.set(Param::Scaling, 1.0);
     if (auto error = validateShape(file.params)) return failure("parameters: " + *error);
     if (root.contains("state")) {
-        const Json& state = root["state"];
-        if (!state.is_object()) return failure("state: expected an object");
-        if (auto error = onlyKeys(state, "state", {"step", "time", "next_step", "positions", "velocities"}))
-            return failure(*error);
         SceneFile::State s;
-        if (auto error = readClock(state, s)) return failure(*error);
-        // The particle count follows from the shape (counted, not built).
-        const auto count = static_cast<int>(bodySize(file.params).particles);
-        if (!state.contains("positions") || !state.contains("velocities"))
-            return failure("state: needs both positions and velocities");
-        if (auto error = readVectors(state["positions"], "positions", count, s.positions)) return failure(*error);
-        if (auto error = readVectors(state["velocities"], "velocities", count, s.velocities)) return failure(*error);
+        if (auto error = readBodyState(root["state"], file.params, s)) return failure(*error);
         file.state = std::move(s);
     }
     return {std::move(file), {}};

@@ -436,6 +436,21 @@ StudyReference computeReference(const StudySpec& spec, const std::atomic<bool>* 
     return ref;
 }
 
+namespace {
+// A finished run's errors against the reference on the grid: the largest, the RMS over the grid
+// and the final one (docs/numerics.md, "How errors are measured").
+void measureErrors(const Trajectory& run, const StudyReference& reference, StudyRow& row) {
+    double sumSquares = 0.0;
+    for (std::size_t k = 0; k < run.positions.size(); ++k) {
+        const double e = rmsDistance(run.positions[k], reference.positions[k]);
+        row.errorMax = std::max(row.errorMax, e);
+        sumSquares += e * e;
+    }
+    row.errorRms = std::sqrt(sumSquares / static_cast<double>(std::max<std::size_t>(1, run.positions.size())));
+    row.errorFinal = rmsDistance(run.positions.back(), reference.positions.back());
+}
+}  // namespace
+
 StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyReference& reference,
                       const std::atomic<bool>* cancel) {
     IntegratorOptions options = spec.options;
@@ -511,14 +526,7 @@ StudyRow runStudyItem(const StudySpec& spec, const StudyItem& item, const StudyR
         row.failure = "cancelled";
         return row;
     }
-    double sumSquares = 0.0;
-    for (std::size_t k = 0; k < run.positions.size(); ++k) {
-        const double e = rmsDistance(run.positions[k], reference.positions[k]);
-        row.errorMax = std::max(row.errorMax, e);
-        sumSquares += e * e;
-    }
-    row.errorRms = std::sqrt(sumSquares / static_cast<double>(std::max<std::size_t>(1, run.positions.size())));
-    row.errorFinal = rmsDistance(run.positions.back(), reference.positions.back());
+    measureErrors(run, reference, row);
     return row;
 }
 
@@ -805,6 +813,96 @@ Range decades(const std::vector<double>& values) {
 
 }  // namespace
 
+namespace {
+
+bool drawable(std::pair<double, double> pt) {
+    return pt.first > 0.0 && pt.second > 0.0 && std::isfinite(pt.first) && std::isfinite(pt.second);
+}
+
+// One panel's place on the page [px] and its decades: where a value pair is drawn.
+struct LogPanel {
+    int x0 = 0, y0 = 0, w = 0, h = 0;
+    Range xr, yr;
+    double px(double v) const { return x0 + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * w; }
+    double py(double v) const { return y0 + h - (std::log10(v) - yr.lo) / (yr.hi - yr.lo) * h; }
+};
+
+// The panel's frame, its grid at every decade with the decades' labels, and the axis labels.
+void drawPanelFrame(std::ostringstream& svg, const SvgPanel& panel, const LogPanel& at) {
+    const int x0 = at.x0, y0 = at.y0, panelW = at.w, panelH = at.h;
+    const Range xr = at.xr, yr = at.yr;
+    svg << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << panelW << "\" height=\"" << panelH
+        << "\" fill=\"none\" stroke=\"black\"/>\n";
+    for (double d = xr.lo; d <= xr.hi + 1e-9; d += 1.0) {
+        const double x = x0 + (d - xr.lo) / (xr.hi - xr.lo) * panelW;
+        svg << "<line x1=\"" << x << "\" y1=\"" << y0 << "\" x2=\"" << x << "\" y2=\"" << y0 + panelH
+            << "\" stroke=\"#ddd\"/><text x=\"" << x << "\" y=\"" << y0 + panelH + 16
+            << "\" text-anchor=\"middle\">1e" << static_cast<int>(d) << "</text>\n";
+    }
+    for (double d = yr.lo; d <= yr.hi + 1e-9; d += 1.0) {
+        const double y = y0 + panelH - (d - yr.lo) / (yr.hi - yr.lo) * panelH;
+        svg << "<line x1=\"" << x0 << "\" y1=\"" << y << "\" x2=\"" << x0 + panelW << "\" y2=\"" << y
+            << "\" stroke=\"#ddd\"/><text x=\"" << x0 - 6 << "\" y=\"" << y + 4
+            << "\" text-anchor=\"end\">1e" << static_cast<int>(d) << "</text>\n";
+    }
+    svg << "<text x=\"" << x0 + panelW / 2 << "\" y=\"" << y0 + panelH + 36 << "\" text-anchor=\"middle\">"
+        << xmlEscaped(panel.xLabel) << "</text>\n";
+    svg << "<text transform=\"translate(" << x0 - 48 << "," << y0 + panelH / 2
+        << ") rotate(-90)\" text-anchor=\"middle\">" << xmlEscaped(panel.yLabel) << "</text>\n";
+}
+
+// The band: along the low edge, back along the high edge (points with a band only).
+void drawBand(std::ostringstream& svg, const SvgSeries& s, const LogPanel& at) {
+    if (s.bandLow.empty() || s.bandLow.size() != s.points.size() || s.bandHigh.size() != s.points.size()) return;
+    std::vector<std::pair<double, double>> low, high;
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+        const double y = s.points[i].second;
+        if (drawable({s.bandLow[i], y}) && drawable({s.bandHigh[i], y}))
+            low.emplace_back(s.bandLow[i], y), high.emplace_back(s.bandHigh[i], y);
+    }
+    if (low.empty()) return;
+    svg << "<polygon class=\"band\" fill=\"" << s.colour << "\" fill-opacity=\"0.18\" stroke=\"" << s.colour
+        << "\" stroke-opacity=\"0.35\" stroke-width=\"0.8\" points=\"";
+    for (auto [x, y] : low) svg << at.px(x) << ',' << at.py(y) << ' ';
+    for (auto it = high.rbegin(); it != high.rend(); ++it) svg << at.px(it->first) << ',' << at.py(it->second) << ' ';
+    svg << "\"/>\n";
+}
+
+// A series' drawable points `pts`: the line, a dot (and its label) at each, rings round the
+// fastest.
+void drawLine(std::ostringstream& svg, const SvgSeries& s, const std::vector<std::pair<double, double>>& pts,
+              const LogPanel& at) {
+    svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.5\"";
+    if (!s.dash.empty()) svg << " stroke-dasharray=\"" << s.dash << "\"";
+    svg << " points=\"";
+    for (auto [x, y] : pts) svg << at.px(x) << ',' << at.py(y) << ' ';
+    svg << "\"/>\n";
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        const auto [x, y] = pts[i];
+        svg << "<circle cx=\"" << at.px(x) << "\" cy=\"" << at.py(y) << "\" r=\"3\" fill=\"" << s.colour << "\"/>\n";
+        if (i < s.labels.size() && !s.labels[i].empty())
+            svg << "<text x=\"" << at.px(x) + 5 << "\" y=\"" << at.py(y) - 5 << "\" font-size=\"10\" fill=\"" << s.colour
+                << "\">" << xmlEscaped(s.labels[i]) << "</text>\n";
+    }
+    for (auto pt : s.rings)
+        if (drawable(pt))
+            svg << "<circle class=\"fastest\" cx=\"" << at.px(pt.first) << "\" cy=\"" << at.py(pt.second)
+                << "\" r=\"7\" fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\"/>\n";
+}
+
+// The legend from (lx, top): a line in each series' style and its name.
+void drawLegend(std::ostringstream& svg, const std::vector<const SvgSeries*>& legend, int lx, int top) {
+    for (std::size_t i = 0; i < legend.size(); ++i) {
+        const double y = top + 15 + 20.0 * static_cast<double>(i);
+        svg << "<line x1=\"" << lx << "\" y1=\"" << y << "\" x2=\"" << lx + 20 << "\" y2=\"" << y << "\" stroke=\""
+            << legend[i]->colour << "\" stroke-width=\"2\"";
+        if (!legend[i]->dash.empty()) svg << " stroke-dasharray=\"" << legend[i]->dash << "\"";
+        svg << "/><text x=\"" << lx + 26 << "\" y=\"" << y + 4 << "\">" << xmlEscaped(legend[i]->name) << "</text>\n";
+    }
+}
+
+}  // namespace
+
 std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& title) {
     const int panelW = 380, panelH = 320, left = 70, top = 50, gap = 90, bottom = 60;
     const int count = static_cast<int>(panels.size());
@@ -818,14 +916,10 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
         << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
         << "<text x=\"" << left << "\" y=\"24\" font-size=\"15\">" << xmlEscaped(title) << "</text>\n";
-    auto drawable = [](std::pair<double, double> pt) {
-        return pt.first > 0.0 && pt.second > 0.0 && std::isfinite(pt.first) && std::isfinite(pt.second);
-    };
     // The legend: every series name once, in order of first appearance, with its style.
     std::vector<const SvgSeries*> legend;
     for (int p = 0; p < count; ++p) {
         const SvgPanel& panel = panels[static_cast<std::size_t>(p)];
-        const int x0 = left + p * (panelW + gap), y0 = top;
         std::vector<double> xs, ys;
         for (const SvgSeries& s : panel.series) {
             for (auto pt : s.points)
@@ -833,27 +927,8 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
             for (double x : s.bandLow) xs.push_back(x);
             for (double x : s.bandHigh) xs.push_back(x);
         }
-        const Range xr = decades(xs), yr = decades(ys);
-        auto px = [&](double v) { return x0 + (std::log10(v) - xr.lo) / (xr.hi - xr.lo) * panelW; };
-        auto py = [&](double v) { return y0 + panelH - (std::log10(v) - yr.lo) / (yr.hi - yr.lo) * panelH; };
-        svg << "<rect x=\"" << x0 << "\" y=\"" << y0 << "\" width=\"" << panelW << "\" height=\"" << panelH
-            << "\" fill=\"none\" stroke=\"black\"/>\n";
-        for (double d = xr.lo; d <= xr.hi + 1e-9; d += 1.0) {
-            const double x = x0 + (d - xr.lo) / (xr.hi - xr.lo) * panelW;
-            svg << "<line x1=\"" << x << "\" y1=\"" << y0 << "\" x2=\"" << x << "\" y2=\"" << y0 + panelH
-                << "\" stroke=\"#ddd\"/><text x=\"" << x << "\" y=\"" << y0 + panelH + 16
-                << "\" text-anchor=\"middle\">1e" << static_cast<int>(d) << "</text>\n";
-        }
-        for (double d = yr.lo; d <= yr.hi + 1e-9; d += 1.0) {
-            const double y = y0 + panelH - (d - yr.lo) / (yr.hi - yr.lo) * panelH;
-            svg << "<line x1=\"" << x0 << "\" y1=\"" << y << "\" x2=\"" << x0 + panelW << "\" y2=\"" << y
-                << "\" stroke=\"#ddd\"/><text x=\"" << x0 - 6 << "\" y=\"" << y + 4
-                << "\" text-anchor=\"end\">1e" << static_cast<int>(d) << "</text>\n";
-        }
-        svg << "<text x=\"" << x0 + panelW / 2 << "\" y=\"" << y0 + panelH + 36 << "\" text-anchor=\"middle\">"
-            << xmlEscaped(panel.xLabel) << "</text>\n";
-        svg << "<text transform=\"translate(" << x0 - 48 << "," << y0 + panelH / 2
-            << ") rotate(-90)\" text-anchor=\"middle\">" << xmlEscaped(panel.yLabel) << "</text>\n";
+        const LogPanel at{left + p * (panelW + gap), top, panelW, panelH, decades(xs), decades(ys)};
+        drawPanelFrame(svg, panel, at);
         for (const SvgSeries& s : panel.series) {
             std::vector<std::pair<double, double>> pts;
             for (auto pt : s.points)
@@ -862,48 +937,11 @@ std::string logLogSvg(const std::vector<SvgPanel>& panels, const std::string& ti
             if (s.inLegend &&
                 std::none_of(legend.begin(), legend.end(), [&](const SvgSeries* l) { return l->name == s.name; }))
                 legend.push_back(&s);
-            // The band: along the low edge, back along the high edge (points with a band only).
-            if (!s.bandLow.empty() && s.bandLow.size() == s.points.size() && s.bandHigh.size() == s.points.size()) {
-                std::vector<std::pair<double, double>> low, high;
-                for (std::size_t i = 0; i < s.points.size(); ++i) {
-                    const double y = s.points[i].second;
-                    if (drawable({s.bandLow[i], y}) && drawable({s.bandHigh[i], y}))
-                        low.emplace_back(s.bandLow[i], y), high.emplace_back(s.bandHigh[i], y);
-                }
-                if (!low.empty()) {
-                    svg << "<polygon class=\"band\" fill=\"" << s.colour << "\" fill-opacity=\"0.18\" stroke=\"" << s.colour
-                        << "\" stroke-opacity=\"0.35\" stroke-width=\"0.8\" points=\"";
-                    for (auto [x, y] : low) svg << px(x) << ',' << py(y) << ' ';
-                    for (auto it = high.rbegin(); it != high.rend(); ++it) svg << px(it->first) << ',' << py(it->second) << ' ';
-                    svg << "\"/>\n";
-                }
-            }
-            svg << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.5\"";
-            if (!s.dash.empty()) svg << " stroke-dasharray=\"" << s.dash << "\"";
-            svg << " points=\"";
-            for (auto [x, y] : pts) svg << px(x) << ',' << py(y) << ' ';
-            svg << "\"/>\n";
-            for (std::size_t i = 0; i < pts.size(); ++i) {
-                const auto [x, y] = pts[i];
-                svg << "<circle cx=\"" << px(x) << "\" cy=\"" << py(y) << "\" r=\"3\" fill=\"" << s.colour << "\"/>\n";
-                if (i < s.labels.size() && !s.labels[i].empty())
-                    svg << "<text x=\"" << px(x) + 5 << "\" y=\"" << py(y) - 5 << "\" font-size=\"10\" fill=\"" << s.colour
-                        << "\">" << xmlEscaped(s.labels[i]) << "</text>\n";
-            }
-            for (auto pt : s.rings)
-                if (drawable(pt))
-                    svg << "<circle class=\"fastest\" cx=\"" << px(pt.first) << "\" cy=\"" << py(pt.second)
-                        << "\" r=\"7\" fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\"/>\n";
+            drawBand(svg, s, at);
+            drawLine(svg, s, pts, at);
         }
     }
-    const int lx = left + count * panelW + (count - 1) * gap + 15;
-    for (std::size_t i = 0; i < legend.size(); ++i) {
-        const double y = top + 15 + 20.0 * static_cast<double>(i);
-        svg << "<line x1=\"" << lx << "\" y1=\"" << y << "\" x2=\"" << lx + 20 << "\" y2=\"" << y << "\" stroke=\""
-            << legend[i]->colour << "\" stroke-width=\"2\"";
-        if (!legend[i]->dash.empty()) svg << " stroke-dasharray=\"" << legend[i]->dash << "\"";
-        svg << "/><text x=\"" << lx + 26 << "\" y=\"" << y + 4 << "\">" << xmlEscaped(legend[i]->name) << "</text>\n";
-    }
+    drawLegend(svg, legend, left + count * panelW + (count - 1) * gap + 15, top);
     svg << "</svg>\n";
     return svg.str();
 }

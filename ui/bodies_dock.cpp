@@ -79,6 +79,18 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
     m_table->setMinimumHeight(90);
     content->addWidget(m_table);
 
+    createPlots(host);
+    content->addWidget(createAddBox());
+
+    layout->addWidget(m_content);
+    for (QCustomPlot* p : m_plots) layout->addWidget(p);
+    layout->addStretch(1);
+    m_content->hide();
+    scroll->setWidget(host);
+    setWidget(scroll);
+}
+
+void BodiesDock::createPlots(QWidget* host) {
     const QString titles[] = {tr("Total momentum"), tr("min_gap"), tr("Volume per body and layer"),
                               tr("Pressure per body and layer")};
     const QString labels[] = {tr("momentum [kg m/s]"), tr("gap [m]"), tr("volume"), tr("pressure")};
@@ -98,7 +110,9 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
         p->hide();
         m_plots.push_back(p);
     }
+}
 
+QWidget* BodiesDock::createAddBox() {
     // Add a body: kind, level, where and how fast.
     auto* addBox = new QWidget(m_content);
     auto* grid = new QGridLayout(addBox);
@@ -127,7 +141,6 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
     m_remove->setObjectName(QStringLiteral("removeBody"));
     grid->addWidget(m_add, 3, 1, 1, 2);
     grid->addWidget(m_remove, 3, 3);
-    content->addWidget(addBox);
     connect(m_add, &QPushButton::clicked, this, &BodiesDock::addBody);
     connect(m_remove, &QPushButton::clicked, this, &BodiesDock::removeBody);
     connect(m_kind, &QComboBox::currentIndexChanged, this, [this] {
@@ -136,13 +149,7 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
         m_level->setRange(int(level.minValue), int(std::min(level.maxValue, 64.0)));
         m_level->setValue(int(level.defaultFor(kind)));
     });
-
-    layout->addWidget(m_content);
-    for (QCustomPlot* p : m_plots) layout->addWidget(p);
-    layout->addStretch(1);
-    m_content->hide();
-    scroll->setWidget(host);
-    setWidget(scroll);
+    return addBox;
 }
 
 QLineEdit* BodiesDock::addField(const QString& name) const {

@@ -51,6 +51,10 @@ signals:
     void message(const QString& text);
 
 private:
+    // The four plots (momentum, gap, volume, pressure), hidden until a world runs.
+    void createPlots(QWidget* host);
+    // The row that adds a body (kind, level, where, how fast) and removes the selected one.
+    QWidget* createAddBox();
     void clearPlots();
     void rebuildSeries(const simcore::WorldSpec& spec);
     void addBody();

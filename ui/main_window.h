@@ -1,13 +1,17 @@
 #pragma once
-// MainWindow: the lab. The constructor is the recipe:
-//   createActions -> createMenus -> createCentral -> createDocks -> connectController -> readSettings
+// MainWindow: the lab, wired by parts (docs/architecture.md, "The main window"). The
+// constructor is the recipe:
+//   MainMenus (actions, menus) -> createCentral (Banners, views) -> DockSet -> connectController
+//   -> the timeline -> the class controls -> readSettings
 // Every dock has an objectName and a View-menu toggle; the layout is kept with saveState().
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include <QMainWindow>
 
+#include "ui/dock_set.h"
 #include "ui/frame.h"
 #include "ui/recent_files.h"
 #include "ui/view_options.h"
@@ -25,6 +29,8 @@ namespace elui {
 
 class SimulationController;
 class Viewport;
+class MainMenus;
+class Banners;
 class SceneDock;
 class ParameterDock;
 class RunDock;
@@ -51,24 +57,24 @@ public:
 
     SimulationController* controller() const { return m_controller; }
     const std::vector<Viewport*>& viewports() const { return m_viewports; }
-    SceneDock* sceneDock() const { return m_sceneDock; }
-    ParameterDock* parameterDock() const { return m_parameterDock; }
-    RunDock* runDock() const { return m_runDock; }
-    PlotDock* plotDock() const { return m_plotDock; }
-    EnergyBarsDock* energyBarsDock() const { return m_energyBarsDock; }
-    PvDock* pvDock() const { return m_pvDock; }
-    TimelineDock* timelineDock() const { return m_timelineDock; }
-    StabilityMapDock* stabilityMapDock() const { return m_stabilityMapDock; }
-    BodiesDock* bodiesDock() const { return m_bodiesDock; }
-    LessonDock* lessonDock() const { return m_lessonDock; }
-    MeasurePlotDock* measureDock() const { return m_measureDock; }
+    SceneDock* sceneDock() const { return m_docks->scene(); }
+    ParameterDock* parameterDock() const { return m_docks->parameters(); }
+    RunDock* runDock() const { return m_docks->run(); }
+    PlotDock* plotDock() const { return m_docks->plots(); }
+    EnergyBarsDock* energyBarsDock() const { return m_docks->energyBars(); }
+    PvDock* pvDock() const { return m_docks->pv(); }
+    TimelineDock* timelineDock() const { return m_docks->timeline(); }
+    StabilityMapDock* stabilityMapDock() const { return m_docks->stabilityMap(); }
+    BodiesDock* bodiesDock() const { return m_docks->bodies(); }
+    LessonDock* lessonDock() const { return m_docks->lesson(); }
+    MeasurePlotDock* measureDock() const { return m_docks->measured(); }
     // The view's right-click menu for a particle (-1: none under the cursor): plot its height or
     // speed, its layer centre's height, the body's centre-of-mass height or speed, the layers'
     // separation; the force and velocity arrows and the ruler. The caller shows it.
     QMenu* viewContextMenu(int particle);
     // Adds a quantity to the Measured dock and shows it.
     void plotQuantity(const elui::Tracked& quantity);
-    QMenu* lessonsMenu() const { return m_lessonsMenu; }
+    QMenu* lessonsMenu() const;
     // The docks `elastic-lab --docks LIST` opens, by name: "energy-bars", "pv", "stability-map",
     // "timeline", "lesson".
     static QStringList dockNames();
@@ -82,20 +88,20 @@ public:
     // View > High contrast (docs/accessibility.md): the palette, the banners and the views.
     void setHighContrast(bool on);
     bool highContrast() const;
-    FailureBanner* failureBanner() const { return m_banner; }
+    FailureBanner* failureBanner() const;
     // The pre-run stability warning after a rebuild (empty when none is shown), and its
     // one-click remedy: the button that sets the suggested DT.
     QString stabilityText() const;
-    QPushButton* useSuggestedDtButton() const { return m_useSuggestedDt; }
+    QPushButton* useSuggestedDtButton() const;
     // The scene file the window is about (empty: none yet), and the recent-files list.
     QString currentFile() const { return m_currentFile; }
     const RecentFiles& recentFiles() const { return m_recent; }
-    QMenu* recentMenu() const { return m_recentMenu; }
+    QMenu* recentMenu() const;
     // Presentation mode (View menu, Ctrl+= / Ctrl+-): the whole UI's text at `scale` (1 = normal,
     // 1.25 .. 2; ui_scale.h), and the large Run/Pause, Step, Back, Reset bar shown above 1.
     void setUiScale(double scale);
-    QToolBar* classControls() const { return m_classControls; }
-    QAction* presentationAction() const { return m_presentation; }
+    QToolBar* classControls() const;
+    QAction* presentationAction() const;
     // `wanted` moved and shrunk into `available` (a screen's available geometry): the window
     // opens, and restores its saved geometry, within the screen it is on.
     static QRect fitWithin(const QRect& wanted, const QRect& available);
@@ -137,13 +143,10 @@ protected:
     void closeEvent(QCloseEvent* event) override;
 
 private:
-    void createActions();
-    void createMenus();
+    friend class MainMenus;  // its actions call the helpers below (status, the current file, ...)
+
     void createCentral();
-    void createDocks();
     void connectController();
-    // Time travel: the timeline dock under the view, its keys and its wiring.
-    void createTimeline();
     void readSettings();
     void writeSettings();
 
@@ -156,44 +159,26 @@ private:
     void warn(const QString& title, const QString& text);
     void setCurrentFile(const QString& path, const simcore::ParameterSet& saved, const QString& integrator);
     void updateTitle(const Frame& frame);
-    void fillRecentMenu();
-    void createLanguageMenu();
-    void chooseLanguage(const QString& code);  // View > Language: kept for the next start
     void adoptOpenedFile();
+    void showWorldMode(bool world);  // what a world has and has not (menus, docks)
+    // Studies of one body are not for a world: says so and returns true when one is shown.
+    bool refuseForWorld(const QString& what);
 
     SimulationController* m_controller = nullptr;
     bool m_useSettings = true;
     ViewOptions m_options;
 
-    // Central area: failure banner above a row of one to three viewports.
-    FailureBanner* m_banner = nullptr;
-    // Stability banner: a rebuild made DT unstable for the chosen explicit method.
-    QFrame* m_stabilityBanner = nullptr;
-    QLabel* m_stabilityText = nullptr;
-    QPushButton* m_useSuggestedDt = nullptr;
-    double m_suggestedDt = 0.0;
-    void showStabilityAdvice(const SceneData& scene);
+    // The parts: the actions and menus, the banners above the views, the docks.
+    std::unique_ptr<MainMenus> m_menus;
+    std::unique_ptr<Banners> m_banners;
+    std::unique_ptr<DockSet> m_docks;
+
+    // Central area: the banners above a row of one to three viewports.
     QHBoxLayout* m_viewRow = nullptr;
     QWidget* m_noGl = nullptr;
     std::vector<Viewport*> m_viewports;
 
-    SceneDock* m_sceneDock = nullptr;
-    ParameterDock* m_parameterDock = nullptr;
-    RunDock* m_runDock = nullptr;
-    PlotDock* m_plotDock = nullptr;
-    EnergyBarsDock* m_energyBarsDock = nullptr;
-    PvDock* m_pvDock = nullptr;
-    TimelineDock* m_timelineDock = nullptr;
-    StabilityMapDock* m_stabilityMapDock = nullptr;
-    BodiesDock* m_bodiesDock = nullptr;
-    bool m_worldShown = false;            // the last frame was a world's
-    void showWorldMode(bool world);       // what a world has and has not (menus, docks)
-    // Studies of one body are not for a world: says so and returns true when one is shown.
-    bool refuseForWorld(const QString& what);
-    LessonDock* m_lessonDock = nullptr;
-    MeasurePlotDock* m_measureDock = nullptr;
-    QMenu* m_lessonsMenu = nullptr;
-
+    bool m_worldShown = false;  // the last frame was a world's
     simcore::ParameterSet m_shownParams;
     bool m_paramsShown = false;
 
@@ -211,41 +196,9 @@ private:
     };
     std::optional<PendingOpen> m_pending;
     RecentFiles m_recent;
-    QMenu* m_recentMenu = nullptr;
 
-    // Actions.
-    QAction* m_openScene = nullptr;
-    QAction* m_saveScene = nullptr;
-    QAction* m_saveSceneAs = nullptr;
-    QAction* m_exportCsv = nullptr;
-    QAction* m_exportPlots = nullptr;
-    QAction* m_screenshot = nullptr;
-    QAction* m_quit = nullptr;
-    QAction* m_runPause = nullptr;
-    QAction* m_step = nullptr;
-    QAction* m_reset = nullptr;
-    QAction* m_resetView = nullptr;
-    QAction* m_stepBack = nullptr;
-    QAction* m_presentation = nullptr;
-    QAction* m_zoomIn = nullptr;
-    QAction* m_zoomOut = nullptr;
-    QToolBar* m_classControls = nullptr;
-    void createClassControls();
-    // Tabs the docks beside the plots into the Plots dock while the window's minimum width
-    // would exceed a projector's 1280 px.
-    void keepMinimumWidth();
-    QAction* m_sideBySide = nullptr;
-    QAction* m_single = nullptr;
-    QAction* m_help = nullptr;
-    QAction* m_lessons = nullptr;
     LessonsDialog* m_lessonsDialog = nullptr;
-    QAction* m_highContrast = nullptr;
     bool m_highContrastWanted = false;  // from the settings, applied once the window is built
-    QAction* m_about = nullptr;
-    std::vector<QAction*> m_displayToggles;
-    QMenu* m_viewMenu = nullptr;
-    QMenu* m_simulationMenu = nullptr;
-    QMenu* m_studiesMenu = nullptr;
 };
 
 }  // namespace elui

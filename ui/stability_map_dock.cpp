@@ -57,6 +57,13 @@ QString tryTip() {
         .arg(kScanDuration);
 }
 
+// The legend's and the notes' font: 85 % of the dock's, at least 6 pt.
+QFont smaller(const QFont& font) {
+    QFont small = font;
+    small.setPointSizeF(std::max(6.0, font.pointSizeF() * 0.85));
+    return small;
+}
+
 }  // namespace
 
 StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability map"), parent) {
@@ -66,6 +73,43 @@ StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability 
     auto* layout = new QVBoxLayout(host);
     layout->setContentsMargins(4, 4, 4, 4);
 
+    createPlot(host);
+    layout->addWidget(m_plot, 1);
+
+    m_marginLabel = new QLabel(host);
+    m_marginLabel->setObjectName(QStringLiteral("stabilityMargin"));
+    m_marginLabel->setWordWrap(true);
+    QFont bold = font();
+    bold.setBold(true);
+    m_marginLabel->setFont(bold);
+    layout->addWidget(m_marginLabel);
+    m_methodLabel = new QLabel(host);
+    m_methodLabel->setObjectName(QStringLiteral("stabilityMethod"));
+    m_methodLabel->setWordWrap(true);
+    m_methodLabel->setFont(smaller(font()));
+    layout->addWidget(m_methodLabel);
+    auto* row = new QHBoxLayout;
+    m_try = new QPushButton(tr("Try it"), host);
+    m_try->setObjectName(QStringLiteral("stabilityTryIt"));
+    m_try->setToolTip(tryTip());
+    m_try->setEnabled(false);
+    row->addWidget(m_try, 0, Qt::AlignTop);
+    m_measuredLabel = new QLabel(host);
+    m_measuredLabel->setObjectName(QStringLiteral("stabilityMeasured"));
+    m_measuredLabel->setWordWrap(true);
+    m_measuredLabel->setFont(smaller(font()));
+    row->addWidget(m_measuredLabel, 1);
+    layout->addLayout(row);
+    setWidget(host);
+    m_marginLabel->setText(tr("Waiting for a body…"));
+
+    connect(m_try, &QPushButton::clicked, this, &StabilityMapDock::tryIt);
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) request();
+    });
+}
+
+void StabilityMapDock::createPlot(QWidget* host) {
     m_plot = new QCustomPlot(host);
     m_plot->setObjectName(QStringLiteral("stabilityMapPlot"));
     m_plot->setAccessibleName(tr("Stability map"));
@@ -106,44 +150,9 @@ StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability 
     connect(m_plot, &QCustomPlot::afterLayout, this, &StabilityMapDock::keepEqualAspect);
     m_measured->removeFromLegend();
     m_plot->legend->setVisible(true);
-    QFont small = font();
-    small.setPointSizeF(std::max(6.0, font().pointSizeF() * 0.85));
-    m_plot->legend->setFont(small);
+    m_plot->legend->setFont(smaller(font()));
     m_plot->legend->setBrush(QColor(255, 255, 255, 210));
     m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
-    layout->addWidget(m_plot, 1);
-
-    m_marginLabel = new QLabel(host);
-    m_marginLabel->setObjectName(QStringLiteral("stabilityMargin"));
-    m_marginLabel->setWordWrap(true);
-    QFont bold = font();
-    bold.setBold(true);
-    m_marginLabel->setFont(bold);
-    layout->addWidget(m_marginLabel);
-    m_methodLabel = new QLabel(host);
-    m_methodLabel->setObjectName(QStringLiteral("stabilityMethod"));
-    m_methodLabel->setWordWrap(true);
-    m_methodLabel->setFont(small);
-    layout->addWidget(m_methodLabel);
-    auto* row = new QHBoxLayout;
-    m_try = new QPushButton(tr("Try it"), host);
-    m_try->setObjectName(QStringLiteral("stabilityTryIt"));
-    m_try->setToolTip(tryTip());
-    m_try->setEnabled(false);
-    row->addWidget(m_try, 0, Qt::AlignTop);
-    m_measuredLabel = new QLabel(host);
-    m_measuredLabel->setObjectName(QStringLiteral("stabilityMeasured"));
-    m_measuredLabel->setWordWrap(true);
-    m_measuredLabel->setFont(small);
-    row->addWidget(m_measuredLabel, 1);
-    layout->addLayout(row);
-    setWidget(host);
-    m_marginLabel->setText(tr("Waiting for a body…"));
-
-    connect(m_try, &QPushButton::clicked, this, &StabilityMapDock::tryIt);
-    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
-        if (visible) request();
-    });
 }
 
 StabilityMapDock::~StabilityMapDock() {

@@ -99,6 +99,8 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    // The map: the stable region, every mode's DT·λ, the one that leaves first, the measured limit.
+    void createPlot(QWidget* host);
     struct Job {
         simcore::ParameterSet params;
         std::optional<simcore::WorldSpec> world;            // a scene of several bodies

@@ -77,6 +77,18 @@ std::vector<GLuint> loopFan(const simcore::Surface& surface) {
     return fan;
 }
 
+// Particle i of a lane's positions (3N floats).
+QVector3D pointOf(const std::vector<float>& x, int i) {
+    return QVector3D(x[3 * std::size_t(i)], x[3 * std::size_t(i) + 1], x[3 * std::size_t(i) + 2]);
+}
+
+// A triangle list as GL indices.
+std::vector<GLuint> triangleIndices(const std::vector<std::array<int, 3>>& tris) {
+    std::vector<GLuint> idx;
+    for (const auto& t : tris) idx.insert(idx.end(), {GLuint(t[0]), GLuint(t[1]), GLuint(t[2])});
+    return idx;
+}
+
 }  // namespace
 
 // Colour legend for strain (L - L0) / L0, matching lines.geom's map.
@@ -389,6 +401,12 @@ void Viewport::cleanup() {
 
 void Viewport::resizeGL(int, int) {}
 
+void Viewport::uploadIndices(Elements& e, const std::vector<GLuint>& indices) {
+    e.buffer.bind();
+    e.buffer.allocate(indices.data(), int(indices.size() * sizeof(GLuint)));
+    e.count = int(indices.size());
+}
+
 void Viewport::uploadScene() {
     const SceneData& scene = *m_frame->scene;
     const simcore::Topology& topo = scene.topology;
@@ -406,11 +424,30 @@ void Viewport::uploadScene() {
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
 
-    auto upload = [](Elements& e, const std::vector<GLuint>& indices) {
-        e.buffer.bind();
-        e.buffer.allocate(indices.data(), int(indices.size() * sizeof(GLuint)));
-        e.count = int(indices.size());
-    };
+    uploadSprings(topo);
+    // Every surface of a layer together (a world has one per body and layer).
+    std::array<std::vector<GLuint>, 2> faces, fans;
+    for (const simcore::Surface& s : topo.surfaces) {
+        const auto slot = std::size_t(s.layer == simcore::Layer::Inner ? 0 : 1);
+        const std::vector<GLuint> t = triangleIndices(s.triangles);
+        faces[slot].insert(faces[slot].end(), t.begin(), t.end());
+        if (!s.edges.empty()) {
+            const std::vector<GLuint> fan = loopFan(s);
+            fans[slot].insert(fans[slot].end(), fan.begin(), fan.end());
+        }
+    }
+    uploadIndices(m_innerFaces, faces[0]);
+    uploadIndices(m_outerFaces, faces[1]);
+    uploadIndices(m_innerFan, fans[0]);
+    uploadIndices(m_outerFan, fans[1]);
+    uploadIndices(m_fill, triangleIndices(topo.fillTriangles));
+    uploadBodyFaces(scene);
+    m_vao.release();
+    m_uploadedScene = m_frame->scene;
+}
+
+void Viewport::uploadSprings(const simcore::Topology& topo) {
+    // Each family's index pairs, and its rest lengths as a buffer texture (strain colours).
     for (int f = 0; f < 3; ++f) {
         const simcore::SpringSet& set = topo.springs[std::size_t(f)];
         std::vector<GLuint> idx;
@@ -420,7 +457,7 @@ void Viewport::uploadScene() {
             idx.push_back(GLuint(set.b[s]));
             rest.push_back(float(set.rest[s]));
         }
-        upload(m_springs[std::size_t(f)], idx);
+        uploadIndices(m_springs[std::size_t(f)], idx);
         if (rest.empty()) rest.push_back(1.0f);
         glBindBuffer(GL_TEXTURE_BUFFER, m_restBuffers[std::size_t(f)]);
         glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(rest.size() * sizeof(float)), rest.data(), GL_STATIC_DRAW);
@@ -429,29 +466,11 @@ void Viewport::uploadScene() {
     }
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
     glBindTexture(GL_TEXTURE_BUFFER, 0);
+}
 
-    auto triangles = [](const std::vector<std::array<int, 3>>& tris) {
-        std::vector<GLuint> idx;
-        for (const auto& t : tris) idx.insert(idx.end(), {GLuint(t[0]), GLuint(t[1]), GLuint(t[2])});
-        return idx;
-    };
-    // Every surface of a layer together (a world has one per body and layer).
-    std::array<std::vector<GLuint>, 2> faces, fans;
-    for (const simcore::Surface& s : topo.surfaces) {
-        const auto slot = std::size_t(s.layer == simcore::Layer::Inner ? 0 : 1);
-        const std::vector<GLuint> t = triangles(s.triangles);
-        faces[slot].insert(faces[slot].end(), t.begin(), t.end());
-        if (!s.edges.empty()) {
-            const std::vector<GLuint> fan = loopFan(s);
-            fans[slot].insert(fans[slot].end(), fan.begin(), fan.end());
-        }
-    }
-    upload(m_innerFaces, faces[0]);
-    upload(m_outerFaces, faces[1]);
-    upload(m_innerFan, fans[0]);
-    upload(m_outerFan, fans[1]);
-    upload(m_fill, triangles(topo.fillTriangles));
+void Viewport::uploadBodyFaces(const SceneData& scene) {
     // Each body's own: the outer faces in 3D, the ring between the layers in 2D.
+    const simcore::Topology& topo = scene.topology;
     releaseBodyFaces();
     m_bodyFaces.resize(scene.bodies.size());
     for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
@@ -465,10 +484,8 @@ void Viewport::uploadScene() {
                 for (const auto& t : s.triangles)
                     if (inside(t)) own.push_back(t);
         m_bodyFaces[k].buffer.create();
-        upload(m_bodyFaces[k], triangles(own));
+        uploadIndices(m_bodyFaces[k], triangleIndices(own));
     }
-    m_vao.release();
-    m_uploadedScene = m_frame->scene;
 }
 
 void Viewport::releaseBodyFaces() {
@@ -625,59 +642,19 @@ void Viewport::paintGL() {
     const bool flat = m_camera.is2d();
     const float lineWidth = flat ? 2.5f : 1.6f;
     const auto& x = lane.positions;
-    auto at = [&](int i) { return QVector3D(x[3 * std::size_t(i)], x[3 * std::size_t(i) + 1], x[3 * std::size_t(i) + 2]); };
 
     if (flat) glDisable(GL_DEPTH_TEST);
     else glEnable(GL_DEPTH_TEST);
     glDepthMask(GL_TRUE);
     if (m_options.box) drawBox();
 
-    if (m_options.faces) {
-        if (flat && scene.isWorld()) {
-            for (std::size_t k = 0; k < m_bodyFaces.size(); ++k) {
-                QVector4D hue = rgba(bodyColor(int(k)));
-                hue.setW(kOuterFill.w());
-                drawSurface(m_bodyFaces[k], hue, false);
-            }
-            drawPolygonStencil(m_innerFan, kInnerFill);
-        } else if (flat) {
-            drawSurface(m_fill, kOuterFill, false);
-            drawPolygonStencil(m_innerFan, kInnerFill);
-        } else {
-            drawSurface(m_innerFaces, kInnerFace, true);
-        }
-    }
+    if (m_options.faces) drawInnerFaces(scene, flat);
     for (int f = 0; f < 3; ++f)
         if (m_options.springs[f])
             drawElementsLines(m_springs[std::size_t(f)],
                               m_highContrast && f == 0 ? QVector4D(1.0f, 1.0f, 1.0f, 1.0f) : kFamilyColor[f],
                               f == 0 ? lineWidth * 1.3f : lineWidth, f);
-
-    if (m_options.normals) {
-        if (flat) {
-            std::vector<float> v;
-            const simcore::Surface* outer = scene.topology.surface(simcore::Layer::Outer);
-            if (outer) {
-                const float len = 0.25f * float(scene.bodyRadius);
-                for (const auto& e : outer->edges) {
-                    const QVector3D a = at(e[0]), b = at(e[1]);
-                    const QVector3D m = 0.5f * (a + b), d = b - a;
-                    const QVector3D n = QVector3D(d.y(), -d.x(), 0).normalized();  // interior on the left
-                    const QVector3D tip = m + n * len;
-                    v.insert(v.end(), {m.x(), m.y(), m.z(), tip.x(), tip.y(), tip.z()});
-                }
-            }
-            drawSegments(v, kNormalColor, 2.0f);
-        } else if (m_outerFaces.count > 0) {
-            m_normals->bind();
-            m_normals->setUniformValue("uColor", kNormalColor);
-            m_normals->setUniformValue("uWidth", 1.5f * float(devicePixelRatioF()));
-            m_normals->setUniformValue("uLength", 0.2f * float(scene.bodyRadius));
-            m_vao.bind();
-            m_outerFaces.buffer.bind();
-            glDrawElements(GL_TRIANGLES, m_outerFaces.count, GL_UNSIGNED_INT, nullptr);
-        }
-    }
+    if (m_options.normals) drawNormals(scene, lane, flat);
 
     if (m_options.particles && m_particleCount > 0) {
         m_points->bind();
@@ -693,46 +670,95 @@ void Viewport::paintGL() {
 
     drawForceBreakdown(lane);
     drawRuler();
-
-    if (lane.pointer.active && lane.pointer.particle >= 0 && lane.pointer.particle < m_particleCount) {
-        const QVector3D p = at(lane.pointer.particle);
-        const auto& a = lane.pointer.anchor;
-        const std::vector<float> v = {p.x(), p.y(), p.z(), float(a.x()), float(a.y()), float(a.z())};
-        glDisable(GL_DEPTH_TEST);
-        drawSegments(v, kMouseColor, 3.0f);
-        const float r = 6.0f * m_camera.worldPerPixel(size());
-        const QVector3D ac(float(a.x()), float(a.y()), float(a.z()));
-        drawSegments({ac.x() - r, ac.y(), ac.z(), ac.x() + r, ac.y(), ac.z(), ac.x(), ac.y() - r, ac.z(), ac.x(),
-                      ac.y() + r, ac.z()},
-                     {0.2f, 0.2f, 0.2f, 1.0f}, 2.0f);
-        if (!flat) glEnable(GL_DEPTH_TEST);
-    }
-
-    if (m_options.faces && !flat && m_outerFaces.count > 0) {
-        // The outer layer last and translucent: back faces first, then front faces.
-        glDepthMask(GL_FALSE);
-        glEnable(GL_CULL_FACE);
-        const auto outer = [&] {
-            if (!scene.isWorld()) {
-                drawSurface(m_outerFaces, kOuterFace, true);
-                return;
-            }
-            for (std::size_t k = 0; k < m_bodyFaces.size(); ++k) {
-                QVector4D hue = rgba(bodyColor(int(k)));
-                hue.setW(kOuterFace.w() + 0.15f);
-                drawSurface(m_bodyFaces[k], hue, true);
-            }
-        };
-        glCullFace(GL_FRONT);
-        outer();
-        glCullFace(GL_BACK);
-        outer();
-        glDisable(GL_CULL_FACE);
-        glDepthMask(GL_TRUE);
-    }
+    if (lane.pointer.active && lane.pointer.particle >= 0 && lane.pointer.particle < m_particleCount)
+        drawPointer(lane, flat);
+    if (m_options.faces && !flat && m_outerFaces.count > 0) drawOuterFaces(scene);
     glBindVertexArray(0);
     glUseProgram(0);
     glDisable(GL_DEPTH_TEST);
+}
+
+void Viewport::drawInnerFaces(const SceneData& scene, bool flat) {
+    // In 2D the fill between the layers (each body in its hue in a world) and the inner layer's
+    // polygon; in 3D the inner layer's faces (the outer ones are drawn last, translucent).
+    if (flat && scene.isWorld()) {
+        for (std::size_t k = 0; k < m_bodyFaces.size(); ++k) {
+            QVector4D hue = rgba(bodyColor(int(k)));
+            hue.setW(kOuterFill.w());
+            drawSurface(m_bodyFaces[k], hue, false);
+        }
+        drawPolygonStencil(m_innerFan, kInnerFill);
+    } else if (flat) {
+        drawSurface(m_fill, kOuterFill, false);
+        drawPolygonStencil(m_innerFan, kInnerFill);
+    } else {
+        drawSurface(m_innerFaces, kInnerFace, true);
+    }
+}
+
+void Viewport::drawNormals(const SceneData& scene, const LaneFrame& lane, bool flat) {
+    // 2D: a segment from each outer edge's middle; 3D: the normals shader over the outer faces.
+    if (flat) {
+        std::vector<float> v;
+        const simcore::Surface* outer = scene.topology.surface(simcore::Layer::Outer);
+        if (outer) {
+            const float len = 0.25f * float(scene.bodyRadius);
+            for (const auto& e : outer->edges) {
+                const QVector3D a = pointOf(lane.positions, e[0]), b = pointOf(lane.positions, e[1]);
+                const QVector3D m = 0.5f * (a + b), d = b - a;
+                const QVector3D n = QVector3D(d.y(), -d.x(), 0).normalized();  // interior on the left
+                const QVector3D tip = m + n * len;
+                v.insert(v.end(), {m.x(), m.y(), m.z(), tip.x(), tip.y(), tip.z()});
+            }
+        }
+        drawSegments(v, kNormalColor, 2.0f);
+    } else if (m_outerFaces.count > 0) {
+        m_normals->bind();
+        m_normals->setUniformValue("uColor", kNormalColor);
+        m_normals->setUniformValue("uWidth", 1.5f * float(devicePixelRatioF()));
+        m_normals->setUniformValue("uLength", 0.2f * float(scene.bodyRadius));
+        m_vao.bind();
+        m_outerFaces.buffer.bind();
+        glDrawElements(GL_TRIANGLES, m_outerFaces.count, GL_UNSIGNED_INT, nullptr);
+    }
+}
+
+void Viewport::drawPointer(const LaneFrame& lane, bool flat) {
+    // The mouse spring from the held particle to its anchor, and a cross at the anchor.
+    const QVector3D p = pointOf(lane.positions, lane.pointer.particle);
+    const auto& a = lane.pointer.anchor;
+    const std::vector<float> v = {p.x(), p.y(), p.z(), float(a.x()), float(a.y()), float(a.z())};
+    glDisable(GL_DEPTH_TEST);
+    drawSegments(v, kMouseColor, 3.0f);
+    const float r = 6.0f * m_camera.worldPerPixel(size());
+    const QVector3D ac(float(a.x()), float(a.y()), float(a.z()));
+    drawSegments({ac.x() - r, ac.y(), ac.z(), ac.x() + r, ac.y(), ac.z(), ac.x(), ac.y() - r, ac.z(), ac.x(),
+                  ac.y() + r, ac.z()},
+                 {0.2f, 0.2f, 0.2f, 1.0f}, 2.0f);
+    if (!flat) glEnable(GL_DEPTH_TEST);
+}
+
+void Viewport::drawOuterFaces(const SceneData& scene) {
+    // The outer layer last and translucent: back faces first, then front faces.
+    glDepthMask(GL_FALSE);
+    glEnable(GL_CULL_FACE);
+    const auto outer = [&] {
+        if (!scene.isWorld()) {
+            drawSurface(m_outerFaces, kOuterFace, true);
+            return;
+        }
+        for (std::size_t k = 0; k < m_bodyFaces.size(); ++k) {
+            QVector4D hue = rgba(bodyColor(int(k)));
+            hue.setW(kOuterFace.w() + 0.15f);
+            drawSurface(m_bodyFaces[k], hue, true);
+        }
+    };
+    glCullFace(GL_FRONT);
+    outer();
+    glCullFace(GL_BACK);
+    outer();
+    glDisable(GL_CULL_FACE);
+    glDepthMask(GL_TRUE);
 }
 
 void Viewport::drawArrows(const std::vector<float>& x, const std::vector<float>& vectors, const QVector4D& color) {

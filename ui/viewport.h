@@ -114,12 +114,20 @@ private:
     };
     void cleanup();
     void uploadScene();
+    void uploadSprings(const simcore::Topology& topo);  // the three families and their rest lengths
+    void uploadBodyFaces(const SceneData& scene);       // each body's own faces (bodyFaces)
+    static void uploadIndices(Elements& e, const std::vector<GLuint>& indices);
     void uploadPositions(const LaneFrame& lane);
     void drawElementsLines(const Elements& e, const QVector4D& color, float width, int family);
     void drawSegments(const std::vector<float>& xyz, const QVector4D& color, float width);
     void drawSurface(const Elements& e, const QVector4D& color, bool lit);
     void drawPolygonStencil(const Elements& fan, const QVector4D& color);
     void drawBox();
+    // paintGL's parts, in the order they draw.
+    void drawInnerFaces(const SceneData& scene, bool flat);
+    void drawNormals(const SceneData& scene, const LaneFrame& lane, bool flat);
+    void drawPointer(const LaneFrame& lane, bool flat);
+    void drawOuterFaces(const SceneData& scene);
     QElapsedTimer m_overlayClock;  // the overlay's last refresh while running
     void updateOverlay();
     void layoutInfo();

@@ -336,6 +336,15 @@ int runWorld(const RunArgs& args) {
     return kExitOk;
 }
 
+// All or none: every output (CSV, workbook, then `others`: state, scene) complete before the
+// first replaces its file. The error, or nothing when every file is in place.
+std::optional<std::string> commitOutputs(simlab::TimeSeriesWriter& series, std::vector<simlab::AtomicFile*> others) {
+    if (!series.finish()) return series.error();
+    std::vector<simlab::AtomicFile*> outputs = series.files();
+    outputs.insert(outputs.end(), others.begin(), others.end());
+    return simlab::commitAll(outputs);
+}
+
 int run(const RunArgs& args) {
     if (args.setup.world) return runWorld(args);
     const SceneSetup& setup = args.setup;
@@ -371,25 +380,13 @@ int run(const RunArgs& args) {
         if (recording) series.add(diagnostics());
     });
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (single) {
-        // The state table and the scene file from the float state, in double (a saved scene
-        // resumes on the double path unless run again with --precision float).
-        single->writeStateTo(sim);
-    }
+    // The state table and the scene file from the float state, in double (a saved scene
+    // resumes on the double path unless run again with --precision float).
+    if (single) single->writeStateTo(sim);
     if (state) state->write(simlab::inDialect(simlab::stateTable(sim), args.dialect, true));
     if (sceneOut) sceneOut->write(simlab::sceneFileText(sim, setup.sceneName, true));
 
-    // All or none: every output (CSV, workbook, state, scene) complete before the first
-    // replaces its file.
-    std::optional<std::string> error;
-    if (!series.finish()) error = series.error();
-    if (!error) {
-        std::vector<simlab::AtomicFile*> outputs = series.files();
-        outputs.push_back(state.get());
-        outputs.push_back(sceneOut.get());
-        error = simlab::commitAll(outputs);
-    }
-    if (error) {
+    if (const std::optional<std::string> error = commitOutputs(series, {state.get(), sceneOut.get()})) {
         std::fprintf(stderr, "error: %s\n", error->c_str());
         return kExitBadInput;
     }

@@ -225,6 +225,39 @@ void checkStudy(StudyArgs& args) {
     simlab::checkStudy(spec);
 }
 
+// The table's head: the scene, the runs (this shard's), the budget and the float build.
+void printStudyHeader(const simlab::StudySpec& spec, const SceneSetup& setup, std::size_t runs) {
+    std::printf("study        %s, T = %g s, %zu runs%s, timing: %d run%s of each point (median, quartiles)\n",
+                setup.sceneName.c_str(), spec.duration, runs,
+                spec.shardCount > 1 ? (" (shard " + std::to_string(spec.shardIndex + 1) + "/" +
+                                       std::to_string(spec.shardCount) + ")").c_str()
+                                    : "",
+                spec.repeat, spec.repeat == 1 ? "" : "s");
+    if (spec.timeBudget > 0)
+        std::printf("budget       a run longer than %g s is not reached, nor any costlier point of its curve\n",
+                    spec.timeBudget);
+    if (std::find(spec.precisions.begin(), spec.precisions.end(), "float") != spec.precisions.end())
+        std::printf("float        %s%s\n",
+                    simlab::floatOnReferenceProblem(spec) ? "the float build of the reference problem (spring1d)"
+                                                          : "the float32 path (state and forces in float), one thread",
+                    spec.compensated ? ", compensated (Kahan) state update" : "");
+}
+
+// One line of the table, printed as soon as its point has run.
+void printStudyRow(const simlab::StudyRow& row, const simlab::StudyItem& item) {
+    std::printf("%-24s %-11.4g %8ld %11llu ", row.label().c_str(), row.dt, row.steps,
+                static_cast<unsigned long long>(row.forceEvaluations));
+    if (row.walls.empty()) std::printf("%10s %10s %10s ", "-", "-", "-");
+    else std::printf("%10.4g %10.4g %10.4g ", row.wallQ1, row.wallSeconds, row.wallQ3);
+    if (row.ok)
+        std::printf("%11.4g %11.4g %11.4g %11.4g  ok", row.errorFinal, row.errorMax, row.errorRms, row.errorEnergy);
+    else
+        std::printf("%11s %11s %11s %11s  %s (%s)", "-", "-", "-", "-", row.status().c_str(), row.failure.c_str());
+    if (item.tolerance > 0) std::printf("  [tol %g]", item.tolerance);
+    std::printf("\n");
+    std::fflush(stdout);
+}
+
 int runStudy(const StudyArgs& args) {
     if (args.refine) return runRefinement(args);
     if (!args.fromCsv.empty()) return runFromCsv(args);
@@ -234,22 +267,7 @@ int runStudy(const StudyArgs& args) {
     std::unique_ptr<simlab::AtomicFile> timings = openCsv(args.timings);
     const bool quiet = args.quiet;
     const auto items = simlab::shardItems(simlab::studyItems(spec), spec.shardIndex, spec.shardCount);
-    if (!quiet) {
-        std::printf("study        %s, T = %g s, %zu runs%s, timing: %d run%s of each point (median, quartiles)\n",
-                    setup.sceneName.c_str(), spec.duration, items.size(),
-                    spec.shardCount > 1 ? (" (shard " + std::to_string(spec.shardIndex + 1) + "/" +
-                                           std::to_string(spec.shardCount) + ")").c_str()
-                                        : "",
-                    spec.repeat, spec.repeat == 1 ? "" : "s");
-        if (spec.timeBudget > 0)
-            std::printf("budget       a run longer than %g s is not reached, nor any costlier point of its curve\n",
-                        spec.timeBudget);
-        if (std::find(spec.precisions.begin(), spec.precisions.end(), "float") != spec.precisions.end())
-            std::printf("float        %s%s\n",
-                        simlab::floatOnReferenceProblem(spec) ? "the float build of the reference problem (spring1d)"
-                            : "the float32 path (state and forces in float), one thread",
-                        spec.compensated ? ", compensated (Kahan) state update" : "");
-    }
+    if (!quiet) printStudyHeader(spec, setup, items.size());
     simlab::StudyReference reference;
     try {
         reference = simlab::computeReference(spec);
@@ -268,19 +286,7 @@ int runStudy(const StudyArgs& args) {
     std::vector<simlab::StudyRow> rows;
     for (const simlab::StudyItem& item : items) {
         simlab::StudyRow row = simlab::runStudyPoint(spec, item, reference, rows);
-        if (!quiet) {
-            std::printf("%-24s %-11.4g %8ld %11llu ", row.label().c_str(), row.dt, row.steps,
-                        static_cast<unsigned long long>(row.forceEvaluations));
-            if (row.walls.empty()) std::printf("%10s %10s %10s ", "-", "-", "-");
-            else std::printf("%10.4g %10.4g %10.4g ", row.wallQ1, row.wallSeconds, row.wallQ3);
-            if (row.ok)
-                std::printf("%11.4g %11.4g %11.4g %11.4g  ok", row.errorFinal, row.errorMax, row.errorRms, row.errorEnergy);
-            else
-                std::printf("%11s %11s %11s %11s  %s (%s)", "-", "-", "-", "-", row.status().c_str(), row.failure.c_str());
-            if (item.tolerance > 0) std::printf("  [tol %g]", item.tolerance);
-            std::printf("\n");
-            std::fflush(stdout);
-        }
+        if (!quiet) printStudyRow(row, item);
         rows.push_back(std::move(row));
     }
     if (!quiet) {
@@ -315,6 +321,8 @@ int runStudy(const StudyArgs& args) {
 
 }  // namespace
 
+// Kept whole: the table of the study command's options, one after another, then which exclude
+// which (a split would part an option from the rule that names it).
 Command addStudyCommand(CLI::App& app) {
     auto args = std::make_shared<StudyArgs>();
     CLI::App* sub = app.add_subcommand(
