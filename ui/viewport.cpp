@@ -61,6 +61,9 @@ QColor forcePartColor(simcore::ForcePart part) {
         case P::Walls: return energyColor(EnergyTerm::Contact);
         case P::Barrier: return energyColor(EnergyTerm::Contact).darker(160);
         case P::Mouse: return energyColor(EnergyTerm::Mouse);
+        // A world's pairs: the contact account's hue, lighter for the other bodies, violet for self.
+        case P::BodyContact: return energyColor(EnergyTerm::Contact).lighter(150);
+        case P::SelfContact: return QColor(140, 60, 170);
         case P::Count: break;
     }
     return Qt::black;
