@@ -498,7 +498,11 @@ void World::restore(const WorldSnapshot& s, bool sameSpecOnly) {
     m_jacobianProducts = s.jacobianProducts;
     m_diag = s.diag;
     if (!sameSpecOnly) {  // this world's values (gravity, gas ...) at the same state
+        // What the edit added to the energy (a mass, a gas constant, gravity ...) is the
+        // edit's, as one body's W_edits: the drift goes on where it was.
+        const double before = m_diag.total();
         measure(m_diag);
+        m_diag.initialEnergy += m_diag.total() - before;
         m_diag.forceEvaluations += m_jacobianProducts;
     }
 }

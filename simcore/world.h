@@ -177,7 +177,8 @@ public:
     // Goes back to a snapshot of this world's spec (the same shared spec; throws
     // std::invalid_argument for another), or of a world of the same particles with other
     // values (`sameSpecOnly` false: a live edit goes on from the old world's run; the accounts
-    // are kept and measured again with this world's values). Another integrator than the
+    // are kept and measured again with this world's values, the energy the new values add
+    // booked as the edit's, so the drift goes on where it was). Another integrator than the
     // snapshot's, or one whose history cannot be restored, starts afresh from the state.
     void restore(const WorldSnapshot& s, bool sameSpecOnly = true);
     // An adaptive method's next proposed step [s] (saved with the state so a resume is exact).

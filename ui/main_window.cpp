@@ -32,6 +32,7 @@
 #include "ui/compare_dialog.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/export.h"
+#include "ui/world_export.h"
 #include "ui/failure_banner.h"
 #include "ui/help_dialog.h"
 #include "ui/language.h"
@@ -761,7 +762,7 @@ bool MainWindow::refuseForWorld(const QString& what) {
 void MainWindow::showWorldMode(bool world) {
     if (world == m_worldShown) return;
     m_worldShown = world;
-    // What a world has not yet: side by side, the timeline, the stability map (said in it).
+    // What a world has not yet: side by side, the stability map (said in it).
     m_sideBySide->setEnabled(!world);
     m_stabilityMapDock->setWorldNotice(world);
     if (world) {
@@ -1111,6 +1112,12 @@ QString MainWindow::saveSceneFile(const QString& path) {
 }
 
 void MainWindow::exportCsv() {
+    if (m_controller->isWorld()) {  // a world's own columns, as the CLI's (world_export.h)
+        const WorldExportResult result = exportWorldCsv(this, *m_controller);
+        if (!result.error.isEmpty()) warn(tr("Export data"), result.error);
+        else if (!result.done.isEmpty()) status(result.done);
+        return;
+    }
     // Three spellings of the same table; the one this locale's spreadsheet opens by a
     // double-click is offered first (the semicolon dialect where the decimal separator is a comma).
     const QString plain = tr("CSV, comma and decimal point (*.csv)");

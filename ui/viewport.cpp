@@ -889,8 +889,15 @@ void Viewport::updateForcesPanel(const LaneFrame& lane) {
     const QString layer = std::size_t(b.particle) < layers.size()
                               ? QString::fromUtf8(simcore::layerName(layers[std::size_t(b.particle)]).data())
                               : QString();
+    // In a world: which body, and the particle as that body numbers it.
+    QString title = tr("Forces on particle %1").arg(b.particle);
+    for (std::size_t k = 0; k < m_frame->scene->bodies.size(); ++k) {
+        const SceneData::BodySlice& s = m_frame->scene->bodies[k];
+        if (b.particle >= s.first && b.particle < s.first + s.count)
+            title = tr("Forces on particle %1 of body %2").arg(b.particle - s.first).arg(k + 1);
+    }
     QString html = QStringLiteral("<b>%1</b> %2<table cellspacing='0' cellpadding='1'>")
-                       .arg(tr("Forces on particle %1").arg(b.particle), layer.isEmpty() ? QString() : QStringLiteral("(%1)").arg(layer));
+                       .arg(title, layer.isEmpty() ? QString() : QStringLiteral("(%1)").arg(layer));
     auto row = [&](const QColor& c, const QString& name, double newtons, bool bold) {
         const QString value = num(newtons, 'g', 4);
         html += QStringLiteral("<tr><td><span style='color:%1; font-size:large'>&#9632;</span></td><td>%2</td>"

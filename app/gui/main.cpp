@@ -267,9 +267,9 @@ int main(int argc, char** argv) {
     }
     const std::optional<simlab::SceneFile>& file = setup.file;
     const std::optional<simcore::WorldSpec>& world = setup.world;
-    if (world && (parser.isSet(compareOpt) || parser.isSet(travelOpt)))
-        return fail(QStringLiteral("--compare and --travel-back take scenes of one body (a world runs alone, "
-                                   "without a timeline yet)"));
+    if (world && parser.isSet(compareOpt))
+        return fail(QStringLiteral("--compare takes scenes of one body (a world of several bodies runs alone, "
+                                   "with one integrator)"));
     const simcore::ParameterSet& params = setup.params;
     QStringList integrators{QString::fromStdString(setup.integrator)};
     if (preset && !parser.isSet(integratorOpt) && !file) integrators = preset->integrators;
@@ -502,6 +502,7 @@ int main(int argc, char** argv) {
         // and travel back to the branch again, so both futures are in the plots.
         const QString branchIntegrator = parser.value(branchOpt).mid(parser.value(branchOpt).indexOf(QLatin1Char('=')) + 1).trimmed();
         auto branched = std::make_shared<bool>(branchKey.isEmpty());
+        const bool branchEveryBody = world.has_value();  // a world: key=value sets every body, as --set
         QObject::connect(controller, &elui::SimulationController::reachedTime, &window,
                          [=, &window] {
                              // A lesson's screenshot shows its figures: those of the run, and
@@ -511,8 +512,12 @@ int main(int argc, char** argv) {
                              controller->scrubToTime(after - travelBack);
                              if (!*branched) {
                                  *branched = true;
-                                 if (branchKey == QLatin1String("integrator")) controller->setIntegrator(branchIntegrator);
-                                 else controller->setParameter(branchKey, branchValue);
+                                 if (branchKey == QLatin1String("integrator")) {
+                                     controller->setIntegrator(branchIntegrator);
+                                 } else {
+                                     if (branchEveryBody) controller->setWorldBody(-1);
+                                     controller->setParameter(branchKey, branchValue);
+                                 }
                                  controller->runUntil(after);
                                  return;
                              }
