@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "test_support.h"
+#include "simcore/world.h"
 #include "ui/sim_worker.h"
 #include "ui/simulation_controller.h"
 
@@ -314,6 +315,42 @@ private slots:
         c.step();
         QVERIFY(waitFor(c, [](const Frame& f) { return f.lanes[0].integrator == "rk45" && f.lanes[0].diagnostics.step == 3; }));
         QVERIFY(c.latest()->lanes[0].diagnostics.errorEstimate >= 0);
+    }
+
+    // A scene of several bodies on the worker thread (sim_worker_world.cpp), no window shown:
+    // run, a body's parameter edited while it runs, the mouse on body 2, a step, a reset, and
+    // the thread joined — the commands and frames ThreadSanitizer checks for a world (the
+    // window's own test, test_gui_world, shows docks whose replots TSan cannot follow in Qt).
+    void aWorldOnTheWorkerThread() {
+        SimulationController c;
+        simcore::WorldSpec spec = *simcore::worldScene("collide2d");
+        QVERIFY(!simcore::assignWorld(spec, "gravity=0"));
+        c.setWorld(spec);
+        QVERIFY(waitFor(c, [](const Frame& f) { return f.world != nullptr; }));
+        c.run();
+        c.setWorldBody(1);
+        c.setParameter(simcore::Param::Mass, 4.0);  // body 2 only, while it runs
+        QVERIFY(waitFor(c, [](const Frame& f) {
+            return f.world && f.worldSpec->bodies[1].params.get(simcore::Param::Mass) == 4.0 && f.world->time > 0.05;
+        }));
+        c.pause();
+        settle(c);
+        QCOMPARE(c.latest()->worldSpec->bodies[0].params.get(simcore::Param::Mass), 1.0);
+        // The mouse on body 2's first particle, pulled up for a few steps.
+        const Frame& f = *c.latest();
+        int outer = f.scene->bodies[1].first;
+        while (f.scene->topology.layer[std::size_t(outer)] != simcore::Layer::Outer) ++outer;
+        const QVector3D at(f.lanes[0].positions[3 * std::size_t(outer)], f.lanes[0].positions[3 * std::size_t(outer) + 1], 0.0f);
+        c.grabAlongRay(at + QVector3D(0, 0, 10), QVector3D(0, 0, -1), 0.05);
+        c.moveAnchor(at + QVector3D(0, 0.5f, 0));
+        for (int i = 0; i < 5; ++i) c.step();
+        settle(c);
+        QVERIFY(c.latest()->lanes[0].pointer.active);
+        c.release();
+        c.reset();
+        settle(c);
+        QCOMPARE(c.latest()->world->step, 0L);
+        QCOMPARE(c.latest()->world->bodies.size(), std::size_t{2});
     }
 
     void shutdownJoinsTheThread() {

@@ -6,6 +6,7 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -19,6 +20,8 @@
 #include "gui_world_support.h"
 #include "test_support.h"
 #include "ui/bodies_dock.h"
+#include "ui/language.h"
+#include "ui/lesson_dock.h"
 #include "ui/main_window.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_dock.h"
@@ -70,6 +73,33 @@ private slots:
         QVERIFY(!c->history().empty());
         QCOMPARE(c->history().back().time, d.time);  // the Plots dock's rows are the world's totals
         QCOMPARE(c->history().back().total(), d.total());
+    }
+
+    // The Lesson dock reads a world as a world (momentum, the gap, each body's velocity and
+    // outer area), not as one body on the floor (it showed "nan" and "0.000 m above the
+    // floor"); the Bodies dock's numbers in the window's language.
+    void theLessonDockAndTheBodiesDockReadAWorld() {
+        MainWindow window(false);
+        window.show();
+        SimulationController* c = window.controller();
+        window.lessonDock()->show();
+        window.startWorld(scene("collide2d", {"gravity=0", "body2.mass=4"}));
+        c->runUntil(1.2);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.running && f.world && f.world->time >= 1.2 - 1e-9; }));
+        QVERIFY(waitUntil([&] { return window.lessonDock()->readout()->text().contains("body2: centre velocity"); }));
+        const QString text = window.lessonDock()->readout()->text();
+        QVERIFY2(text.contains("total momentum <b>(-144, "), qPrintable(text));
+        QVERIFY2(text.contains("smallest gap 0.09"), qPrintable(text));
+        QVERIFY2(!text.contains("nan") && !text.contains("floor"), qPrintable(text));
+        // German: a decimal comma in the Bodies dock's readout (min_gap about 0.09 m).
+        struct BackToEnglish {
+            ~BackToEnglish() { applyLanguage(QStringLiteral("en")); }
+        } backToEnglish;  // also when a check fails, for the tests after this one
+        applyLanguage(QStringLiteral("de"));
+        c->runUntil(1.3);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.running && f.world && f.world->time >= 1.3 - 1e-9; }));
+        QVERIFY(waitUntil([&] { return window.bodiesDock()->readoutText().contains("0,0"); }));
+        QVERIFY2(!window.bodiesDock()->readoutText().contains("0.0"), qPrintable(window.bodiesDock()->readoutText()));
     }
 
     void parametersPerBody() {

@@ -987,6 +987,26 @@ total %2, at the start %3</source>
         <source>Set the stopwatch back to zero</source>
         <translation>أعد ساعة الإيقاف إلى الصفر</translation>
     </message>
+    <message>
+        <source>total momentum &lt;b&gt;%1 kg m/s&lt;/b&gt;; smallest gap %2 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>total momentum &lt;b&gt;%1 kg m/s&lt;/b&gt;; no gap below %2 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body%1: centre velocity %2 m/s, outer %3 %4 of %5 at rest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>area</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>volume</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>elui::LessonsDialog</name>

@@ -987,6 +987,26 @@ gesamt %2, zu Beginn %3</translation>
         <source>Set the stopwatch back to zero</source>
         <translation>Die Stoppuhr auf null zurücksetzen</translation>
     </message>
+    <message>
+        <source>total momentum &lt;b&gt;%1 kg m/s&lt;/b&gt;; smallest gap %2 m</source>
+        <translation>Gesamtimpuls &lt;b&gt;%1 kg m/s&lt;/b&gt;; kleinster Abstand %2 m</translation>
+    </message>
+    <message>
+        <source>total momentum &lt;b&gt;%1 kg m/s&lt;/b&gt;; no gap below %2 m</source>
+        <translation>Gesamtimpuls &lt;b&gt;%1 kg m/s&lt;/b&gt;; kein Abstand unter %2 m</translation>
+    </message>
+    <message>
+        <source>body%1: centre velocity %2 m/s, outer %3 %4 of %5 at rest</source>
+        <translation>body%1: Schwerpunktgeschwindigkeit %2 m/s, äußere %3 %4 von %5 in Ruhe</translation>
+    </message>
+    <message>
+        <source>area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>volume</source>
+        <translation>Volumen</translation>
+    </message>
 </context>
 <context>
     <name>elui::LessonsDialog</name>

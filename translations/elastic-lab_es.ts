@@ -987,6 +987,26 @@ total %2, al inicio %3</translation>
         <source>Set the stopwatch back to zero</source>
         <translation>Poner el cronómetro a cero</translation>
     </message>
+    <message>
+        <source>total momentum &lt;b&gt;%1 kg m/s&lt;/b&gt;; smallest gap %2 m</source>
+        <translation>cantidad de movimiento total &lt;b&gt;%1 kg m/s&lt;/b&gt;; menor separación %2 m</translation>
+    </message>
+    <message>
+        <source>total momentum &lt;b&gt;%1 kg m/s&lt;/b&gt;; no gap below %2 m</source>
+        <translation>cantidad de movimiento total &lt;b&gt;%1 kg m/s&lt;/b&gt;; ninguna separación por debajo de %2 m</translation>
+    </message>
+    <message>
+        <source>body%1: centre velocity %2 m/s, outer %3 %4 of %5 at rest</source>
+        <translation>body%1: velocidad del centro %2 m/s, %3 exterior %4 de %5 en reposo</translation>
+    </message>
+    <message>
+        <source>area</source>
+        <translation>área</translation>
+    </message>
+    <message>
+        <source>volume</source>
+        <translation>volumen</translation>
+    </message>
 </context>
 <context>
     <name>elui::LessonsDialog</name>

@@ -987,6 +987,26 @@ total %2, au départ %3</translation>
         <source>Set the stopwatch back to zero</source>
         <translation>Remettre le chronomètre à zéro</translation>
     </message>
+    <message>
+        <source>total momentum &lt;b&gt;%1 kg m/s&lt;/b&gt;; smallest gap %2 m</source>
+        <translation>quantité de mouvement totale &lt;b&gt;%1 kg m/s&lt;/b&gt; ; plus petit écart %2 m</translation>
+    </message>
+    <message>
+        <source>total momentum &lt;b&gt;%1 kg m/s&lt;/b&gt;; no gap below %2 m</source>
+        <translation>quantité de mouvement totale &lt;b&gt;%1 kg m/s&lt;/b&gt; ; aucun écart sous %2 m</translation>
+    </message>
+    <message>
+        <source>body%1: centre velocity %2 m/s, outer %3 %4 of %5 at rest</source>
+        <translation>body%1 : vitesse du centre %2 m/s, %3 extérieur %4 sur %5 au repos</translation>
+    </message>
+    <message>
+        <source>area</source>
+        <translation>aire</translation>
+    </message>
+    <message>
+        <source>volume</source>
+        <translation>volume</translation>
+    </message>
 </context>
 <context>
     <name>elui::LessonsDialog</name>

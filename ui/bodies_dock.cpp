@@ -19,6 +19,7 @@
 #include "qcustomplot.h"
 #include "simcore/scenes.h"
 #include "simlab/output.h"
+#include "ui/language.h"
 #include "ui/parameter_dock.h"
 #include "ui/plot_series.h"
 #include "ui/plot_ticks.h"
@@ -38,7 +39,8 @@ simcore::Param levelParam(simcore::SceneKind kind) {
     }
 }
 
-QString number(double v) { return QString::number(v, 'g', 5); }
+// In the window's language (a decimal comma in German, French and Spanish), as every dock.
+QString number(double v) { return num(v, 'g', 5); }
 
 }  // namespace
 
@@ -309,7 +311,7 @@ void BodiesDock::addBody() {
     }
     for (int k = 0; k < 6; ++k) {
         bool ok = false;
-        const double v = m_start[std::size_t(k)]->text().toDouble(&ok);
+        const double v = toCNumber(m_start[std::size_t(k)]->text()).toDouble(&ok);  // "0,5" in German as "0.5"
         if (!ok || !std::isfinite(v)) {
             emit message(tr("%1: not a number").arg(m_start[std::size_t(k)]->toolTip()));
             return;

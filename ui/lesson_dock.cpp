@@ -304,21 +304,11 @@ void LessonDock::fillTable() {
     m_table->resizeRowsToContents();
 }
 
-void LessonDock::showFrame(const FramePtr& frame) {
-    if (!frame || frame->lanes.empty()) return;
-    m_last = frame;
-    m_params = frame->parameters;
-    const LaneFrame& first = frame->lanes.front();
-    const double t = first.diagnostics.time;
-
-    // Readouts.
+// The one body's readouts: its centre against the floor, the touch-down and take-off speeds
+// (from the frames), the lowest point and the inner gas.
+QStringList LessonDock::bodyLines(const Frame& frame) {
     QStringList lines;
-    lines << tr("t = <b>%1 s</b>").arg(num(t, 'f', 3));
-    for (const LaneFrame& lane : frame->lanes)
-        lines << tr("%1: energy drift <b>%2 J</b>%3")
-                     .arg(lane.integrator)
-                     .arg(num(lane.diagnostics.energyDrift(), 'g', 4))
-                     .arg(lane.failure ? tr(", blew up at t = %1 s").arg(num(lane.failure->time, 'f', 3)) : QString());
+    const LaneFrame& first = frame.lanes.front();
     const BodyMeasures& b = first.body;
     lines << tr("centre of mass: %1 m above the floor, vertical speed %2 m/s")
                  .arg(num(b.centreOfMass.y() - b.floor, 'f', 3))
@@ -334,7 +324,7 @@ void LessonDock::showFrame(const FramePtr& frame) {
     if (m_lastFrame && touching && !m_lastTouching) m_impact = -m_lastFrame->lanes.front().body.centreVelocity.y();
     if (m_lastFrame && !touching && m_lastTouching) m_rebound = b.centreVelocity.y();
     m_lastTouching = touching;
-    m_lastFrame = frame;
+    m_lastFrame = m_last;
     if (m_impact > 0.0)
         lines << tr("centre of mass hit the floor at %1 m/s%2")
                      .arg(num(m_impact, 'f', 3))
@@ -350,11 +340,56 @@ void LessonDock::showFrame(const FramePtr& frame) {
     if (first.diagnostics.hasGas)
         lines << tr("inner layer: %1 %2, pressure %3 %4")
                      .arg(num(first.diagnostics.volume[0], 'g', 4))
-                     .arg(frame->scene && frame->scene->kind == simcore::SceneKind::Ring2d ? QStringLiteral("m²")
+                     .arg(frame.scene && frame.scene->kind == simcore::SceneKind::Ring2d ? QStringLiteral("m²")
                                                                                            : QStringLiteral("m³"))
                      .arg(num(first.diagnostics.pressure[0], 'g', 4))
-                     .arg(frame->scene && frame->scene->kind == simcore::SceneKind::Ring2d ? QStringLiteral("N/m")
+                     .arg(frame.scene && frame.scene->kind == simcore::SceneKind::Ring2d ? QStringLiteral("N/m")
                                                                                            : QStringLiteral("N/m²"));
+    return lines;
+}
+
+// A world's readouts: the total momentum and the smallest gap, then each body's centre velocity
+// and outer volume (the figures lessons 9 and 10 ask for).
+QStringList LessonDock::worldLines(const simcore::WorldDiagnostics& d, bool flat) {
+    const auto vector = [flat](const Eigen::Vector3d& v) {
+        return flat ? QStringLiteral("(%1, %2)").arg(num(v.x(), 'g', 4), num(v.y(), 'g', 4))
+                    : QStringLiteral("(%1, %2, %3)").arg(num(v.x(), 'g', 4), num(v.y(), 'g', 4), num(v.z(), 'g', 4));
+    };
+    QStringList lines;
+    lines << (d.minGapBodies[0] >= 0 ? tr("total momentum <b>%1 kg m/s</b>; smallest gap %2 m")
+                                     : tr("total momentum <b>%1 kg m/s</b>; no gap below %2 m"))
+                 .arg(vector(d.momentum), number(d.minGap));
+    for (std::size_t k = 0; k < d.bodies.size(); ++k) {
+        const simcore::BodyDiagnostics& b = d.bodies[k];
+        lines << tr("body%1: centre velocity %2 m/s, outer %3 %4 of %5 at rest")
+                     .arg(k + 1)
+                     .arg(vector(b.velocity))
+                     .arg(flat ? tr("area") : tr("volume"))
+                     .arg(number(b.volume[1]))
+                     .arg(number(b.restVolume[1]));
+    }
+    return lines;
+}
+
+void LessonDock::showFrame(const FramePtr& frame) {
+    if (!frame || frame->lanes.empty()) return;
+    m_last = frame;
+    m_params = frame->parameters;
+    const LaneFrame& first = frame->lanes.front();
+    const double t = first.diagnostics.time;
+
+    // Readouts.
+    QStringList lines;
+    lines << tr("t = <b>%1 s</b>").arg(num(t, 'f', 3));
+    for (const LaneFrame& lane : frame->lanes)
+        lines << tr("%1: energy drift <b>%2 J</b>%3")
+                     .arg(lane.integrator)
+                     .arg(num(lane.diagnostics.energyDrift(), 'g', 4))
+                     .arg(lane.failure ? tr(", blew up at t = %1 s").arg(num(lane.failure->time, 'f', 3)) : QString());
+    if (frame->world)
+        lines << worldLines(*frame->world, frame->scene && frame->scene->kind == simcore::SceneKind::Ring2d);
+    else
+        lines << bodyLines(*frame);
     m_readout->setText(lines.join(QStringLiteral("<br>")));
     updateStopwatch();
 

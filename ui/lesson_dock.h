@@ -82,6 +82,8 @@ private:
     void setGot(const QString& key, double value, bool fromRun);
     void finishMeasure(const std::map<QString, double>& values);
     void updateStopwatch();
+    QStringList bodyLines(const Frame& frame);
+    static QStringList worldLines(const simcore::WorldDiagnostics& d, bool flat);
 
     const Lesson* m_lesson = nullptr;
     QLabel* m_title = nullptr;
