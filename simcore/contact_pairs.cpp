@@ -381,11 +381,16 @@ void ContactPairs::forPairs(const double* x, double reach, VF&& onVertexFace, EE
     }
 }
 
-PairSums ContactPairs::addForces(const PairContactParams& c, const double* x, const double* v, double* f) {
+PairSums ContactPairs::addForces(const PairContactParams& c, const double* x, const double* v, double* f,
+                                 Which which) {
     PairSums sums;
+    auto takes = [which](int bodyA, int bodyB) {
+        return which == Which::All || (which == Which::Self) == (bodyA == bodyB);
+    };
     forPairs(
         x, c.skin,
         [&](int i, int face) {
+            if (!takes(m_vertexBody[static_cast<std::size_t>(i)], m_faceBody[static_cast<std::size_t>(face)])) return;
             const int p = m_vertex[static_cast<std::size_t>(i)];
             const auto& fc = m_faces[static_cast<std::size_t>(face)];
             if (m_dimension == 2) {
@@ -397,6 +402,7 @@ PairSums ContactPairs::addForces(const PairContactParams& c, const double* x, co
             }
         },
         [&](int e1, int e2) {
+            if (!takes(m_edgeBody[static_cast<std::size_t>(e1)], m_edgeBody[static_cast<std::size_t>(e2)])) return;
             const auto& a = m_edges[static_cast<std::size_t>(e1)];
             const auto& b = m_edges[static_cast<std::size_t>(e2)];
             const auto st = closestSegmentSegment(x + 3 * a[0], x + 3 * a[1], x + 3 * b[0], x + 3 * b[1]);

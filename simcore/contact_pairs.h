@@ -92,9 +92,12 @@ public:
     std::size_t faceCount() const { return m_faces.size(); }  // segments (2D) or triangles (3D)
     std::size_t edgeCount() const { return m_edges.size(); }  // 3D: unique edges
 
+    // Which pairs: all, those of two bodies, or those within one body (self-contact).
+    enum class Which { All, BetweenBodies, Self };
     // Adds the pair forces at positions x and velocities v (3 per world particle) into f and
-    // returns the sums.
-    PairSums addForces(const PairContactParams& c, const double* x, const double* v, double* f);
+    // returns the sums (of the pairs `which` takes; the free-body diagram splits them).
+    PairSums addForces(const PairContactParams& c, const double* x, const double* v, double* f,
+                       Which which = Which::All);
     // The contact energy alone [J].
     double energy(const PairContactParams& c, const double* x);
     // Whether any pair is within `reach` of each other (the force is on when reach = skin).

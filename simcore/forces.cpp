@@ -34,6 +34,8 @@ std::string_view forcePartName(ForcePart part) {
         case ForcePart::Walls: return "wall contact";
         case ForcePart::Barrier: return "layer barrier";
         case ForcePart::Mouse: return "mouse spring";
+        case ForcePart::BodyContact: return "contact from other bodies";
+        case ForcePart::SelfContact: return "self-contact";
         case ForcePart::Count: break;
     }
     return "?";

@@ -69,6 +69,8 @@ enum class ForcePart : int {
     Walls,       // wall contact (contact = force)
     Barrier,     // the layer barrier (contact = force)
     Mouse,       // the mouse spring
+    BodyContact, // a world's: contact from the other bodies (contact_pairs.h)
+    SelfContact, // a world's: the body's outer layer against its own non-adjacent elements
     Count
 };
 inline constexpr int kForcePartCount = static_cast<int>(ForcePart::Count);

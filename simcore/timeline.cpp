@@ -20,15 +20,24 @@ void TimelineRecorder::setBudget(std::size_t bytes) {
     if (m_bytes > m_budget) thin();
 }
 
-bool TimelineRecorder::record(long index, const std::vector<const Simulation*>& lanes,
-                              std::vector<double> extra) {
+bool TimelineRecorder::keeps(long index, bool exact) {
     if (index <= m_last && !m_checkpoints.empty()) truncateAfter(index - 1);
     m_last = index;
+    return m_checkpoints.empty() || index % m_interval == 0 || !exact ||
+           !m_checkpoints.back().exact;  // re-simulation starts from an exact state
+}
+
+void TimelineRecorder::add(TimelineCheckpoint c) {
+    m_bytes += c.bytes;
+    m_checkpoints.push_back(std::move(c));
+    if (m_bytes > m_budget) thin();
+}
+
+bool TimelineRecorder::record(long index, const std::vector<const Simulation*>& lanes,
+                              std::vector<double> extra) {
     bool exact = true;
     for (const Simulation* sim : lanes) exact = exact && sim->integrator().restorable();
-    const bool keep = m_checkpoints.empty() || index % m_interval == 0 || !exact ||
-                      !m_checkpoints.back().exact;  // re-simulation starts from an exact state
-    if (!keep) return false;
+    if (!keeps(index, exact)) return false;
     TimelineCheckpoint c;
     c.index = index;
     c.exact = exact;
@@ -39,9 +48,20 @@ bool TimelineRecorder::record(long index, const std::vector<const Simulation*>& 
         c.lanes.push_back(sim->snapshot());
         c.bytes += c.lanes.back().bytes();
     }
-    m_bytes += c.bytes;
-    m_checkpoints.push_back(std::move(c));
-    if (m_bytes > m_budget) thin();
+    add(std::move(c));
+    return true;
+}
+
+bool TimelineRecorder::record(long index, const World& world, std::vector<double> extra) {
+    const bool exact = world.integrator().restorable();
+    if (!keeps(index, exact)) return false;
+    TimelineCheckpoint c;
+    c.index = index;
+    c.exact = exact;
+    c.extra = std::move(extra);
+    c.world = world.snapshot();
+    c.bytes = sizeof(TimelineCheckpoint) + sizeof(double) * c.extra.capacity() + c.world->bytes();
+    add(std::move(c));
     return true;
 }
 

@@ -9,19 +9,22 @@
 //
 // Budget: when the checkpoints hold more bytes than the budget, every other one is dropped
 // (the interval doubles), never the run's first: the whole run stays reachable, re-simulated
-// from further back. A lane whose integrator cannot be restored exactly (CVODE) is recorded at
+// from further back. A world of several bodies is recorded the same way (its WorldSnapshot in
+// place of the lanes'). A lane whose integrator cannot be restored exactly (CVODE) is recorded at
 // every moment instead (no re-simulation); thinned, only the moments kept remain exact.
 
 #include <cstddef>
 #include <vector>
 
 #include "simcore/simulation.h"
+#include "simcore/world.h"
 
 namespace simcore {
 
 struct TimelineCheckpoint {
     long index = 0;                         // the moment: steps since the timeline began
     std::vector<SimulationSnapshot> lanes;  // every lane's state at that moment
+    std::optional<WorldSnapshot> world;     // or the world's (a scene of several bodies)
     std::vector<double> extra;              // the caller's own state at that moment
     bool exact = true;                      // every lane can be re-simulated from here
     std::size_t bytes = 0;
@@ -44,6 +47,8 @@ public:
     // cannot be re-simulated exactly. Then thins to the budget. Returns whether it kept one.
     bool record(long index, const std::vector<const Simulation*>& lanes,
                 std::vector<double> extra = {});
+    // The same for a world of several bodies (one World instead of the lanes).
+    bool record(long index, const World& world, std::vector<double> extra = {});
     // A branch at `index`: forgets every moment after it.
     void truncateAfter(long index);
     // The checkpoint to start from for moment `index`: the latest at or before it (nullptr
@@ -61,6 +66,9 @@ public:
     const std::vector<TimelineCheckpoint>& checkpoints() const { return m_checkpoints; }
 
 private:
+    // Starts recording moment `index`; whether a checkpoint of it is kept.
+    bool keeps(long index, bool exact);
+    void add(TimelineCheckpoint c);
     void thin();
 
     std::size_t m_budget;

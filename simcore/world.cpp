@@ -233,7 +233,12 @@ std::optional<std::string> validateWorld(const WorldSpec& spec) {
     return std::nullopt;
 }
 
-World::World(const WorldSpec& spec, std::string_view integrator) : m_spec(spec), m_integrator(makeIntegrator(integrator)) {
+World::World(const WorldSpec& spec, std::string_view integrator)
+    : World(std::make_shared<const WorldSpec>(spec), integrator) {}
+
+World::World(std::shared_ptr<const WorldSpec> shared, std::string_view integrator)
+    : m_spec(std::move(shared)), m_integrator(makeIntegrator(integrator)) {
+    const WorldSpec& spec = *m_spec;
     if (!m_integrator)
         throw std::invalid_argument("unknown integrator '" + std::string(integrator) + "'; allowed: " + integratorNames());
     if (auto error = validateWorld(spec)) throw std::invalid_argument(*error);
@@ -316,6 +321,7 @@ void World::reset() {
     m_hNext = m_dt;
     m_jacobianProducts = 0;
     m_failure.reset();
+    m_lastError = nullptr;
     m_timeCarry = 0.0;
     m_diag = WorldDiagnostics{};
     m_diag.dt = m_dt;
@@ -393,6 +399,7 @@ void World::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long 
     m_y.segment(m_n, m_n) = Eigen::Map<const Eigen::VectorXd>(v.data(), m_n);
     m_y.tail(WorldOde::kAux).setZero();
     m_integrator->prepare(m_ode->layout());
+    m_lastError = nullptr;
     m_failure.reset();
     m_timeCarry = 0.0;
     m_diag = WorldDiagnostics{};
@@ -402,6 +409,113 @@ void World::setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long 
     measure(m_diag);
     m_diag.initialEnergy = m_diag.total();
     m_lastGood = m_y;
+}
+
+ForceBreakdown World::forceBreakdown(int particle) {
+    ForceBreakdown out;
+    const int k = bodyOf(particle);
+    if (k < 0) return out;
+    WorldBody& b = *m_bodies[static_cast<std::size_t>(k)];
+    const Eigen::Index at = 3 * Eigen::Index{b.first()};
+    m_breakdownScratch.setZero(m_n);
+    b.forces().breakdown(particle - b.first(), m_y.data() + at, m_y.data() + m_n + at, m_breakdownScratch.data(), out);
+    out.particle = particle;
+    // The pairs' parts, as WorldOde adds them to the bodies' forces.
+    auto pairs = [&](ForcePart part, ContactPairs::Which which) {
+        m_breakdownScratch.setZero(m_n);
+        m_pairs.addForces(m_contact, m_y.data(), m_y.data() + m_n, m_breakdownScratch.data(), which);
+        out[part] = m_breakdownScratch.segment<3>(3 * Eigen::Index{particle});
+        out.present[static_cast<std::size_t>(part)] = true;
+        out.total += out[part];
+    };
+    if (bodyCount() > 1) pairs(ForcePart::BodyContact, ContactPairs::Which::BetweenBodies);
+    pairs(ForcePart::SelfContact, ContactPairs::Which::Self);
+    return out;
+}
+
+void World::currentForces(double* f) {
+    Eigen::VectorXd rate(m_y.size());
+    m_ode->compute(m_y, rate, false);
+    const Eigen::VectorXd& mass = m_ode->coordinateMass();
+    for (Eigen::Index k = 0; k < m_n; ++k) f[k] = mass.size() == m_n ? mass[k] * rate[m_n + k] : 0.0;
+}
+
+double World::energyErrorBand() {
+    if (!m_lastError || m_failure) return -1.0;
+    WorldDiagnostics at, off;
+    measure(at);
+    m_errorScratch = m_y;
+    m_y += Eigen::Map<const Eigen::VectorXd>(m_lastError, m_y.size());
+    measure(off);
+    m_y = m_errorScratch;  // exactly the state it was (m_y keeps its buffer)
+    const double band = std::abs(off.total() - at.total());
+    return std::isfinite(band) ? band : -1.0;
+}
+
+std::size_t WorldSnapshot::bytes() const {
+    return sizeof(WorldSnapshot) + sizeof(double) * (std::size_t(y.size()) + integratorHistory.capacity()) +
+           sizeof(BodyDiagnostics) * diag.bodies.capacity() + sizeof(ForceModel::Counters) * counters.capacity() +
+           integrator.capacity() + (failure ? failure->capacity() : 0);
+}
+
+WorldSnapshot World::snapshot() const {
+    WorldSnapshot s;
+    s.spec = m_spec;
+    s.integrator = std::string(m_integrator->name());
+    s.options = m_options;
+    s.integratorHistory = m_integrator->history();
+    s.integratorRestorable = m_integrator->restorable();
+    s.y = m_y;
+    s.diag = m_diag;
+    s.timeCarry = m_timeCarry;
+    s.hNext = m_hNext;
+    s.failure = m_failure;
+    s.failedStep = m_failedStep;
+    s.failedTime = m_failedTime;
+    s.held = m_held;
+    s.anchor = anchor();
+    for (const auto& b : m_bodies) s.counters.push_back(b->forces().counters());
+    s.jacobianProducts = m_jacobianProducts;
+    return s;
+}
+
+void World::restore(const WorldSnapshot& s, bool sameSpecOnly) {
+    if (sameSpecOnly && s.spec != m_spec) throw std::invalid_argument("the snapshot is of another world");
+    if (s.y.size() != m_y.size() || s.counters.size() != m_bodies.size())
+        throw std::invalid_argument("the snapshot is of a world of other bodies");
+    const bool sameMethod = m_integrator->name() == s.integrator;
+    setIntegratorOptions(s.options);
+    if (sameMethod) m_integrator->setHistory(s.integratorHistory);
+    else m_integrator->prepare(m_ode->layout());
+    if (!sameMethod || !s.integratorRestorable || !m_integrator->restorable()) m_integrator->restart();
+    m_y = s.y;
+    m_lastGood = s.y;
+    m_lastError = nullptr;
+    m_timeCarry = s.timeCarry;
+    m_hNext = sameMethod ? s.hNext : m_dt;
+    m_failure = s.failure;
+    m_failedStep = s.failedStep;
+    m_failedTime = s.failedTime;
+    for (std::size_t k = 0; k < m_bodies.size(); ++k) {
+        m_bodies[k]->forces().pointer = PointerSpring{};
+        m_bodies[k]->forces().setCounters(s.counters[k]);
+    }
+    m_held = s.held;
+    if (m_held >= 0) {
+        const int body = bodyOf(m_held);
+        m_bodies[static_cast<std::size_t>(body)]->forces().pointer =
+            PointerSpring{true, m_held - m_bodies[static_cast<std::size_t>(body)]->first(), s.anchor};
+    }
+    m_jacobianProducts = s.jacobianProducts;
+    m_diag = s.diag;
+    if (!sameSpecOnly) {  // this world's values (gravity, gas ...) at the same state
+        // What the edit added to the energy (a mass, a gas constant, gravity ...) is the
+        // edit's, as one body's W_edits: the drift goes on where it was.
+        const double before = m_diag.total();
+        measure(m_diag);
+        m_diag.initialEnergy += m_diag.total() - before;
+        m_diag.forceEvaluations += m_jacobianProducts;
+    }
 }
 
 void World::measure(WorldDiagnostics& d) {
@@ -468,6 +582,7 @@ void World::measure(WorldDiagnostics& d) {
 
 void World::fail(std::string reason, double t0) {
     m_failure = std::move(reason);
+    m_lastError = nullptr;
     m_failedStep = m_diag.step + 1;
     m_failedTime = t0;
     m_y = m_lastGood;
@@ -522,6 +637,7 @@ bool World::step(double until) {
     bool halved = false;
     for (;;) {
         report = doubling ? m_doubling.step(*m_integrator, *m_ode, t0, h, m_y) : m_integrator->step(*m_ode, t0, h, m_y);
+        m_lastError = doubling ? m_doubling.localError() : nullptr;
         if (report.failure) {
             fail(report.failure, t0);
             return false;
@@ -567,6 +683,7 @@ bool World::step(double until) {
     m_timeCarry = (m_diag.time - t0) - increment;
     m_diag.dt = report.h;
     m_diag.errorEstimate = report.errorEstimate;
+    if (adaptive && report.errorEstimate >= 0.0) m_lastError = m_integrator->localError();
     m_jacobianProducts += static_cast<std::uint64_t>(report.jacobianProducts);
     m_diag.forceEvaluations = m_bodies.front()->forces().forceEvaluations() + m_jacobianProducts;
     return true;

@@ -130,10 +130,37 @@ struct WorldDiagnostics {
     double energyDrift() const { return total() + removed() - workPointer - initialEnergy; }
 };
 
+// Everything a world's step reads that a run changes: with it restored, the steps that follow
+// are the steps the run took, bit for bit (World::snapshot, restore; the GUI's timeline of a
+// world, as SimulationSnapshot is one body's). The bodies' structure is not in it: the spec is
+// shared with the world it came from, and a snapshot restores only into a world of that spec.
+struct WorldSnapshot {
+    std::shared_ptr<const WorldSpec> spec;
+    std::string integrator;
+    IntegratorOptions options;
+    std::vector<double> integratorHistory;  // Integrator::history()
+    bool integratorRestorable = true;       // false: a restore restarts the method (CVODE)
+    Eigen::VectorXd y;                      // [x | v | removed-by-damping | removed-by-contact]
+    WorldDiagnostics diag;
+    double timeCarry = 0.0;
+    double hNext = 0.0;
+    std::optional<std::string> failure;
+    long failedStep = 0;
+    double failedTime = 0.0;
+    int held = -1;                          // the pointer's particle (world numbering), -1: none
+    Eigen::Vector3d anchor = Eigen::Vector3d::Zero();
+    std::vector<ForceModel::Counters> counters;  // per body
+    std::uint64_t jacobianProducts = 0;
+
+    // Bytes it holds (its vectors and strings; the shared spec not).
+    std::size_t bytes() const;
+};
+
 class World {
 public:
     // Throws std::invalid_argument for an unknown integrator, or a world validateWorld refuses.
     World(const WorldSpec& spec, std::string_view integrator);
+    World(std::shared_ptr<const WorldSpec> spec, std::string_view integrator);
     ~World();
     World(const World&) = delete;
     World& operator=(const World&) = delete;
@@ -145,6 +172,15 @@ public:
     // `step` and `time`: the accounts start again from it (as Simulation::setState), a failure
     // is cleared. Throws std::invalid_argument when the sizes do not fit.
     void setState(const Eigen::Matrix3Xd& x, const Eigen::Matrix3Xd& v, long step, double time);
+    // The run's state with its accounts, counters, pointer and integrator history.
+    WorldSnapshot snapshot() const;
+    // Goes back to a snapshot of this world's spec (the same shared spec; throws
+    // std::invalid_argument for another), or of a world of the same particles with other
+    // values (`sameSpecOnly` false: a live edit goes on from the old world's run; the accounts
+    // are kept and measured again with this world's values, the energy the new values add
+    // booked as the edit's, so the drift goes on where it was). Another integrator than the
+    // snapshot's, or one whose history cannot be restored, starts afresh from the state.
+    void restore(const WorldSnapshot& s, bool sameSpecOnly = true);
     // An adaptive method's next proposed step [s] (saved with the state so a resume is exact).
     double nextStep() const { return m_hNext; }
     void setNextStep(double h) { m_hNext = h; }
@@ -162,7 +198,9 @@ public:
     void setIntegratorOptions(const IntegratorOptions& options);
     const IntegratorOptions& integratorOptions() const { return m_options; }
 
-    const WorldSpec& spec() const { return m_spec; }
+    const WorldSpec& spec() const { return *m_spec; }
+    // The spec as shared with this world's snapshots.
+    const std::shared_ptr<const WorldSpec>& sharedSpec() const { return m_spec; }
     int bodyCount() const { return static_cast<int>(m_bodies.size()); }
     // Body k (from 0) as built and placed at its start, its first particle in the world's
     // numbering and its particle count.
@@ -201,6 +239,21 @@ public:
     // Whether odeSystem()'s Jacobians add each body's wall contact at its design point (as
     // Simulation::setContactDesignInJacobians does for a body alone, from the current positions).
     void setContactDesignInJacobians(bool on);
+    // The force on one particle (world numbering) in the current state split by part, for a
+    // free-body diagram: its body's own parts (Simulation::forceBreakdown's: gravity, springs,
+    // gas, walls, barrier, the mouse), the contact from the other bodies and the self-contact
+    // (ForcePart::BodyContact, SelfContact), and the total the world's ODE applies. Not
+    // counted as force evaluations of the run; -1 or out of range: an empty breakdown.
+    ForceBreakdown forceBreakdown(int particle);
+    // The total force on every particle in the current state (3N) [N], e.g. to draw force
+    // vectors. Not counted as a force evaluation of the run.
+    void currentForces(double* f);
+
+    // The error band the last step's local error estimate e implies for the world's total
+    // energy, |E(y + e) - E(y)| [J] (as Simulation::observableErrors; e is step doubling's or
+    // the adaptive method's own estimate); < 0 when the last step had none (a fixed-step
+    // method without step doubling, or after a reset, a restore or a new state).
+    double energyErrorBand();
 
     // Measures the current state into d (everything but the accounts and counters).
     void measure(WorldDiagnostics& d);
@@ -208,7 +261,7 @@ public:
 private:
     void fail(std::string reason, double t0);
 
-    WorldSpec m_spec;
+    std::shared_ptr<const WorldSpec> m_spec;
     std::vector<std::unique_ptr<WorldBody>> m_bodies;
     ContactPairs m_pairs;
     PairContactParams m_contact;
@@ -228,6 +281,9 @@ private:
     std::optional<std::string> m_failure;
     std::vector<Layer> m_layers;
     int m_held = -1;
+    Eigen::VectorXd m_breakdownScratch;  // forceBreakdown(): 3N
+    const double* m_lastError = nullptr;  // the last step's local error estimate, or none
+    Eigen::VectorXd m_errorScratch;       // energyErrorBand(): y
     void pointerChanged(const PointerSpring& pointer, int body);
     long m_failedStep = 0;
     double m_failedTime = 0.0;

@@ -419,8 +419,12 @@ std::optional<std::string> fileClash(const std::vector<std::pair<std::string, st
 }
 
 std::vector<WorldCsvColumn> worldColumns(const simcore::World& world) {
+    return worldColumns(world.dimension(), world.bodyCount());
+}
+
+std::vector<WorldCsvColumn> worldColumns(int dimension, int bodyCount) {
     using D = simcore::WorldDiagnostics;
-    const bool three = world.dimension() == 3;
+    const bool three = dimension == 3;
     std::vector<WorldCsvColumn> c = {
         {"step", [](const D& d) { return static_cast<double>(d.step); }},
         {"t", [](const D& d) { return d.time; }},
@@ -439,7 +443,7 @@ std::vector<WorldCsvColumn> worldColumns(const simcore::World& world) {
         {"error_estimate", [](const D& d) { return d.errorEstimate; }},
     };
     const std::array<const char*, 3> axes = {"x", "y", "z"};
-    for (int k = 0; k < world.bodyCount(); ++k) {
+    for (int k = 0; k < bodyCount; ++k) {
         const auto b = static_cast<std::size_t>(k);
         const std::string n = "_" + std::to_string(k + 1);
         for (std::size_t slot = 0; slot < 2; ++slot) {

@@ -134,6 +134,8 @@ struct WorldCsvColumn {
     std::function<double(const simcore::WorldDiagnostics&)> value;
 };
 std::vector<WorldCsvColumn> worldColumns(const simcore::World& world);
+// The same for a world of `bodyCount` bodies in `dimension` (2 or 3) dimensions.
+std::vector<WorldCsvColumn> worldColumns(int dimension, int bodyCount);
 std::string csvHeader(const std::vector<WorldCsvColumn>& columns);
 std::string csvRow(const std::vector<WorldCsvColumn>& columns, const simcore::WorldDiagnostics& d);
 // index,body,layer,x,y,z,vx,vy,vz: one row per particle, the body numbered from 1 and the

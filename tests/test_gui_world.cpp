@@ -18,6 +18,7 @@
 
 #include "simcore/world.h"
 #include "simlab/stability.h"
+#include "gui_world_support.h"
 #include "test_support.h"
 #include "ui/bodies_dock.h"
 #include "ui/language.h"
@@ -31,20 +32,8 @@
 using namespace elui;
 using testsupport::waitUntil;
 
-namespace {
-
-bool waitForFrame(const SimulationController& c, const std::function<bool(const Frame&)>& pred) {
-    return waitUntil([&] { return c.latest() && pred(*c.latest()); });
-}
-
-simcore::WorldSpec scene(const char* name, std::initializer_list<const char*> set) {
-    simcore::WorldSpec spec = *simcore::worldScene(name);
-    for (const char* a : set)
-        if (auto error = simcore::assignWorld(spec, a)) qFatal("%s", error->c_str());
-    return spec;
-}
-
-}  // namespace
+using worldtest::scene;
+using worldtest::waitForFrame;
 
 class TestGuiWorld : public QObject {
     Q_OBJECT

@@ -373,6 +373,89 @@ private slots:
         QVERIFY(world.diagnostics().errorEstimate >= 0.0);
     }
 
+    // World::snapshot / restore (the GUI's timeline of a world): the steps after a restore are
+    // the steps the run took, bit for bit, with the pointer held, in contact, for methods with
+    // and without a history between steps, and through a restore into a new world of the spec.
+    void snapshotRestoresBitForBit_data() {
+        QTest::addColumn<QString>("integrator");
+        for (const char* name : {"rk4", "rk45", "verlet", "symplectic-euler", "implicit-euler", "xpbd"})
+            QTest::newRow(name) << name;
+    }
+    void snapshotRestoresBitForBit() {
+        QFETCH(QString, integrator);
+        World world(scene("collide2d", {"gravity=1", "dt=0.002"}), integrator.toUtf8().constData());
+        Eigen::VectorXd y = world.state();
+        pressTogether(world, y, 0.7 * world.pairContact().skin);
+        const auto n = Eigen::Index{world.particleCount()};
+        // At rest, within each other's skin: the pairs push from the start.
+        world.setState(Eigen::Map<const Eigen::Matrix3Xd>(y.data(), 3, n), Eigen::Matrix3Xd::Zero(3, n), 0, 0.0);
+        const int held = world.firstParticle(1) + 2;
+        world.grab(held, Eigen::Vector3d(y.segment<3>(3 * held)) + Eigen::Vector3d(0.2, 0.1, 0.0));
+        for (int k = 0; k < 5; ++k) QVERIFY2(world.step(), world.failure() ? world.failure()->c_str() : "");
+        const WorldSnapshot saved = world.snapshot();
+        QVERIFY(saved.diag.contactPairsActive > 0);  // in contact from here
+        QVERIFY(saved.bytes() > std::size_t(saved.y.size()) * sizeof(double));
+        auto run = [](World& w) {
+            for (int k = 0; k < 20; ++k)
+                if (!w.step()) qFatal("%s", w.failure()->c_str());
+            return std::pair{Eigen::VectorXd(w.state()), w.diagnostics()};
+        };
+        const auto [ya, da] = run(world);
+        world.restore(saved);
+        const auto [yb, db] = run(world);
+        QVERIFY(ya == yb);
+        QCOMPARE(db.step, da.step);
+        QCOMPARE(db.time, da.time);
+        QCOMPARE(db.total(), da.total());
+        QCOMPARE(db.energyDrift(), da.energyDrift());
+        QCOMPARE(db.forceEvaluations, da.forceEvaluations);
+        QCOMPARE(world.heldParticle(), held);
+        // Into a new world of the same (shared) spec, as the timeline does across a rebuild.
+        World again(saved.spec, integrator.toUtf8().constData());
+        again.restore(saved);
+        const auto [yc, dc] = run(again);
+        QVERIFY(ya == yc);
+        QCOMPARE(dc.energyDrift(), da.energyDrift());
+        // Another world's snapshot is refused.
+        World other(scene("collide2d", {"gravity=1", "dt=0.002"}), integrator.toUtf8().constData());
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, other.restore(saved));
+    }
+
+    // The free-body diagram of a world's particle: the body's parts, the contact from the other
+    // body and self-contact; the parts sum to the total, the total is the ODE's force, and the
+    // contact between the bodies is equal and opposite over all particles.
+    void forceBreakdownSplitsTheContact() {
+        World world(scene("collide3d", {"gravity=1", "subdivisions=1"}), "rk4");
+        Eigen::VectorXd y = world.state();
+        pressTogether(world, y, 0.02);
+        const auto n = Eigen::Index{world.particleCount()};
+        world.setState(Eigen::Map<const Eigen::Matrix3Xd>(y.data(), 3, n), Eigen::Map<const Eigen::Matrix3Xd>(y.data() + 3 * n, 3, n), 0, 0.0);
+        const std::uint64_t evaluations = world.diagnostics().forceEvaluations;
+        std::vector<double> f(std::size_t(3 * n));
+        world.currentForces(f.data());
+        Eigen::Vector3d contactSum = Eigen::Vector3d::Zero();
+        double contactLargest = 0.0;
+        for (int p = 0; p < world.particleCount(); ++p) {
+            const ForceBreakdown b = world.forceBreakdown(p);
+            QCOMPARE(b.particle, p);
+            QVERIFY(b.has(ForcePart::BodyContact) && b.has(ForcePart::SelfContact) && b.has(ForcePart::Gravity));
+            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+            for (int k = 0; k < kForcePartCount; ++k)
+                if (b.present[std::size_t(k)]) sum += b.part[std::size_t(k)];
+            const Eigen::Vector3d ode(f[3 * std::size_t(p)], f[3 * std::size_t(p) + 1], f[3 * std::size_t(p) + 2]);
+            QVERIFY2((sum - b.total).norm() <= 1e-9 * (1.0 + b.total.norm()), qPrintable(QString::number(p)));
+            QVERIFY2((ode - b.total).norm() <= 1e-9 * (1.0 + b.total.norm()), qPrintable(QString::number(p)));
+            contactSum += b[ForcePart::BodyContact];
+            contactLargest = std::max(contactLargest, b[ForcePart::BodyContact].norm());
+            QCOMPARE(b[ForcePart::SelfContact].norm(), 0.0);  // round spheres: no fold
+        }
+        QVERIFY(contactLargest > 0.0);
+        QVERIFY2(contactSum.norm() <= 1e-9 * contactLargest, qPrintable(QString::number(contactSum.norm())));
+        QCOMPARE(world.diagnostics().forceEvaluations, evaluations);  // not the run's
+        QVERIFY(world.forceBreakdown(-1).particle < 0);
+        QVERIFY(world.forceBreakdown(int(n)).particle < 0);
+    }
+
     void refusals() {
         WorldSpec spec = *worldScene("collide3d");
         auto refused = [&](const char* assignment, const char* expected) {

@@ -449,6 +449,25 @@
     </message>
 </context>
 <context>
+    <name>WorldExport</name>
+    <message>
+        <source>No run of several bodies to export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export data</source>
+        <translation type="unfinished">تصدير البيانات</translation>
+    </message>
+    <message>
+        <source>CSV of several bodies, comma and decimal point (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote %1 rows of the world to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>elui::BodiesDock</name>
     <message>
         <source>Bodies</source>
@@ -2681,6 +2700,10 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source> (Δx %1, Δy %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forces on particle %1 of body %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -449,6 +449,25 @@
     </message>
 </context>
 <context>
+    <name>WorldExport</name>
+    <message>
+        <source>No run of several bodies to export</source>
+        <translation>Kein Lauf mit mehreren Körpern zum Exportieren</translation>
+    </message>
+    <message>
+        <source>Export data</source>
+        <translation>Daten exportieren</translation>
+    </message>
+    <message>
+        <source>CSV of several bodies, comma and decimal point (*.csv)</source>
+        <translation>CSV mehrerer Körper, Komma und Dezimalpunkt (*.csv)</translation>
+    </message>
+    <message>
+        <source>Wrote %1 rows of the world to %2</source>
+        <translation>%1 Zeilen der Welt nach %2 geschrieben</translation>
+    </message>
+</context>
+<context>
     <name>elui::BodiesDock</name>
     <message>
         <source>Bodies</source>
@@ -2685,6 +2704,10 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     <message>
         <source> (Δx %1, Δy %2)</source>
         <translation> (Δx %1, Δy %2)</translation>
+    </message>
+    <message>
+        <source>Forces on particle %1 of body %2</source>
+        <translation>Kräfte auf Teilchen %1 von Körper %2</translation>
     </message>
 </context>
 <context>

@@ -449,6 +449,25 @@
     </message>
 </context>
 <context>
+    <name>WorldExport</name>
+    <message>
+        <source>No run of several bodies to export</source>
+        <translation>No hay ninguna simulación de varios cuerpos que exportar</translation>
+    </message>
+    <message>
+        <source>Export data</source>
+        <translation>Exportar datos</translation>
+    </message>
+    <message>
+        <source>CSV of several bodies, comma and decimal point (*.csv)</source>
+        <translation>CSV de varios cuerpos, coma y punto decimal (*.csv)</translation>
+    </message>
+    <message>
+        <source>Wrote %1 rows of the world to %2</source>
+        <translation>Se escribieron %1 filas del mundo en %2</translation>
+    </message>
+</context>
+<context>
     <name>elui::BodiesDock</name>
     <message>
         <source>Bodies</source>
@@ -2685,6 +2704,10 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     <message>
         <source> (Δx %1, Δy %2)</source>
         <translation> (Δx %1, Δy %2)</translation>
+    </message>
+    <message>
+        <source>Forces on particle %1 of body %2</source>
+        <translation>Fuerzas sobre la partícula %1 del cuerpo %2</translation>
     </message>
 </context>
 <context>

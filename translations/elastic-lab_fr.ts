@@ -449,6 +449,25 @@
     </message>
 </context>
 <context>
+    <name>WorldExport</name>
+    <message>
+        <source>No run of several bodies to export</source>
+        <translation>Aucune simulation à plusieurs corps à exporter</translation>
+    </message>
+    <message>
+        <source>Export data</source>
+        <translation>Exporter les données</translation>
+    </message>
+    <message>
+        <source>CSV of several bodies, comma and decimal point (*.csv)</source>
+        <translation>CSV à plusieurs corps, virgule et point décimal (*.csv)</translation>
+    </message>
+    <message>
+        <source>Wrote %1 rows of the world to %2</source>
+        <translation>%1 lignes du monde écrites dans %2</translation>
+    </message>
+</context>
+<context>
     <name>elui::BodiesDock</name>
     <message>
         <source>Bodies</source>
@@ -2685,6 +2704,10 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     <message>
         <source> (Δx %1, Δy %2)</source>
         <translation> (Δx %1, Δy %2)</translation>
+    </message>
+    <message>
+        <source>Forces on particle %1 of body %2</source>
+        <translation>Forces sur la particule %1 du corps %2</translation>
     </message>
 </context>
 <context>

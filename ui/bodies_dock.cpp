@@ -216,12 +216,21 @@ void BodiesDock::showFrame(const Frame& frame) {
         m_start[2]->setEnabled(m_dimension == 3);
         m_start[5]->setEnabled(m_dimension == 3);
     }
-    if (frame.scene != m_scene || frame.worldSpec != m_spec) {
-        m_spec = frame.worldSpec;
+    // New series with a new scene (bodies added or removed, a new world); a live edit or a
+    // scrubbed moment before it changes the spec only, and the curves go on.
+    m_spec = frame.worldSpec;
+    if (frame.scene != m_scene) {
         m_scene = frame.scene;
         rebuildSeries(*m_spec);
     }
-    if (d.time < m_lastTime) clearPlots();  // a reset
+    // Back in time. A moment scrubbed on the timeline: the curves stay (the run is still all
+    // there). Running on from an earlier time (a branch, a reset): the curves end there.
+    const bool scrubbed = frame.timeline.moment < frame.timeline.last;
+    if (d.time < m_lastTime && !scrubbed) {
+        for (QCustomPlot* p : m_plots)
+            for (int g = 0; g < p->graphCount(); ++g) p->graph(g)->data()->removeAfter(d.time);
+        m_lastTime = d.time;
+    }
     // The readout.
     const auto vec = [this](const Eigen::Vector3d& v) {
         return m_dimension == 2 ? QStringLiteral("(%1, %2)").arg(number(v.x()), number(v.y()))

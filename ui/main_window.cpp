@@ -35,6 +35,7 @@
 #include "ui/compare_dialog.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/export.h"
+#include "ui/world_export.h"
 #include "ui/failure_banner.h"
 #include "ui/help_dialog.h"
 #include "ui/language.h"
@@ -614,6 +615,12 @@ QString MainWindow::saveSceneFile(const QString& path) {
 }
 
 void MainWindow::exportCsv() {
+    if (m_controller->isWorld()) {  // a world's own columns, as the CLI's (world_export.h)
+        const WorldExportResult result = exportWorldCsv(this, *m_controller);
+        if (!result.error.isEmpty()) warn(tr("Export data"), result.error);
+        else if (!result.done.isEmpty()) status(result.done);
+        return;
+    }
     // Three spellings of the same table; the one this locale's spreadsheet opens by a
     // double-click is offered first (the semicolon dialect where the decimal separator is a comma).
     const QString plain = tr("CSV, comma and decimal point (*.csv)");

@@ -45,7 +45,7 @@ void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList&
 void SimWorker::openScene(const simlab::SceneFile& file, const QStringList& integrators) {
     if (file.world) {  // a scene file of several bodies, resumed with its state
         const std::string integrator = integrators.isEmpty() ? file.integrator : integrators.front().toStdString();
-        if (!buildWorld(*file.world, integrator, nullptr)) return;
+        if (!buildWorld(std::make_shared<const simcore::WorldSpec>(*file.world), integrator, nullptr)) return;
         if (file.state)
             if (auto error = simlab::applyState(*m_world, *file.state)) emit sceneRejected(QString::fromStdString(*error));
         m_worldBody = 0;
@@ -120,23 +120,15 @@ void SimWorker::afterRebuild() {
 }
 
 void SimWorker::setIntegrator(const QString& name) {
-    if (m_world) {  // the world is built again with it and goes on from its state
-        if (auto error = simcore::unknownIntegrator(name.toStdString())) {
-            emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
-        } else {
-            std::unique_ptr<simcore::World> old = std::move(m_world);
-            if (!buildWorld(old->spec(), name.toStdString(), old.get())) m_world = std::move(old);
-        }
-        publish(true);
-        return;
-    }
-    if (m_lanes.empty()) return;
+    if (!hasRun()) return;
     if (auto error = simcore::unknownIntegrator(name.toStdString())) {
         emit parameterRejected(QStringLiteral("integrator"), QString::fromStdString(*error));
     } else {
         Input input;
-        input.kind = Input::Integrator;
+        // A world is built again with it and goes on from its state.
+        input.kind = m_world ? Input::World : Input::Integrator;
         input.key = name.toStdString();
+        if (m_world) input.spec = m_world->sharedSpec();
         logInput(std::move(input));
     }
     publish(true);
@@ -184,7 +176,7 @@ void SimWorker::setSpeed(int speed) {
 void SimWorker::setTolerances(double atol, double rtol) {
     // The CLI's ranges (--atol in [0, 1], --rtol in (0, 1]); anything else is not sent by the GUI.
     if (!(atol >= 0.0 && atol <= 1.0 && rtol > 0.0 && rtol <= 1.0)) return;
-    if (m_lanes.empty()) {
+    if (!hasRun()) {
         m_lanes.setTolerances(atol, rtol);
         return;
     }
@@ -204,7 +196,7 @@ void SimWorker::logSwitch(Input::Kind kind, bool on) {
     Input input;
     input.kind = kind;
     input.value = on ? 1.0 : 0.0;
-    if (m_lanes.empty()) {  // before the first scene: kept for the lanes to come
+    if (!hasRun()) {  // before the first scene: kept for the lanes to come
         applyInput(input);
         return;
     }
@@ -226,7 +218,7 @@ void SimWorker::run() {
     if (m_world) {
         if (m_world->failed()) return;
         m_pacer.start(m_world->time());
-        m_until = -1.0;
+        setUntil(-1.0);
         m_timer->start(m_pacer.timerInterval());
         publish(true);
         return;
@@ -241,7 +233,7 @@ void SimWorker::run() {
 void SimWorker::runUntil(double simulatedTime) {
     if (m_world) {
         m_pacer.start(m_world->time());
-        m_until = simulatedTime;
+        setUntil(simulatedTime);
         m_timer->start(0);
         publish(true);
         return;
@@ -255,8 +247,7 @@ void SimWorker::runUntil(double simulatedTime) {
 
 void SimWorker::pause() {
     m_pacer.stop();
-    if (m_world) m_until = -1.0;
-    else setUntil(-1.0);
+    setUntil(-1.0);
     if (m_timer) m_timer->stop();
     publish(true);
 }
@@ -302,7 +293,11 @@ void SimWorker::grabAlongRay(const QVector3D& origin, const QVector3D& direction
         const int particle = m_world->pickAlongRay(toEigen(origin), toEigen(direction).normalized(), maxDistance);
         if (particle < 0) return;
         const Eigen::Vector3d at = Eigen::Map<const Eigen::Vector3d>(m_world->state().data() + 3 * particle);
-        m_world->grab(particle, at);
+        Input input;
+        input.kind = Input::Grab;
+        input.particle = particle;
+        input.anchor = at;
+        logInput(std::move(input));
         emit grabbed(particle, QVector3D(float(at.x()), float(at.y()), float(at.z())));
         publish(true);
         return;
@@ -322,12 +317,7 @@ void SimWorker::grabAlongRay(const QVector3D& origin, const QVector3D& direction
 }
 
 void SimWorker::moveAnchor(const QVector3D& anchor) {
-    if (m_world) {
-        m_world->moveAnchor(toEigen(anchor));
-        if (!m_pacer.running()) publish(true);
-        return;
-    }
-    if (m_lanes.empty() || !m_lanes.front().pointer().active) return;
+    if (m_world ? m_world->heldParticle() < 0 : m_lanes.empty() || !m_lanes.front().pointer().active) return;
     Input input;
     input.kind = Input::Move;
     input.anchor = toEigen(anchor);
@@ -336,23 +326,20 @@ void SimWorker::moveAnchor(const QVector3D& anchor) {
 }
 
 void SimWorker::selectAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance) {
-    if (m_lanes.empty()) return;
-    m_selected = m_lanes.front().pickAlongRay(toEigen(origin), toEigen(direction).normalized(), maxDistance);
+    if (!hasRun()) return;
+    const Eigen::Vector3d o = toEigen(origin), d = toEigen(direction).normalized();
+    m_selected = m_world ? m_world->pickAlongRay(o, d, maxDistance) : m_lanes.front().pickAlongRay(o, d, maxDistance);
     publish(true);
 }
 
 void SimWorker::selectParticle(int particle) {
-    m_selected = !m_lanes.empty() && particle >= 0 && particle < m_lanes.front().particleCount() ? particle : -1;
+    const int count = m_world ? m_world->particleCount() : m_lanes.empty() ? 0 : m_lanes.front().particleCount();
+    m_selected = particle >= 0 && particle < count ? particle : -1;
     publish(true);
 }
 
 void SimWorker::release() {
-    if (m_world) {
-        m_world->release();
-        publish(true);
-        return;
-    }
-    if (m_lanes.empty() || !m_lanes.front().pointer().active) return;
+    if (m_world ? m_world->heldParticle() < 0 : m_lanes.empty() || !m_lanes.front().pointer().active) return;
     Input input;
     input.kind = Input::Release;
     logInput(std::move(input));
@@ -366,6 +353,7 @@ void SimWorker::shutdown() {
     m_timer = nullptr;
     m_lanes.clear();
     m_world.reset();
+    m_worldRows = {};
     m_scene.reset();
     m_params = simcore::ParameterSet{};
     m_recorder.clear();
@@ -489,15 +477,21 @@ void SimWorker::startTimeline() {
     m_inputs.clear();
     m_publisher.clearBranches();
     m_moment = 0;
-    m_recorder.record(0, m_lanes.views(), {m_lanes.commonTime(), m_until});
-    m_firstTime = m_lastTime = m_lanes.front().time();
-    m_runStart = std::make_shared<const simcore::SimulationSnapshot>(m_recorder.checkpoints().front().lanes.front());
+    if (m_world) {
+        m_recorder.record(0, *m_world, {m_world->time(), m_until});
+        m_runStart.reset();  // the reference curve is one body's
+    } else {
+        m_recorder.record(0, m_lanes.views(), {m_lanes.commonTime(), m_until});
+        m_runStart = std::make_shared<const simcore::SimulationSnapshot>(m_recorder.checkpoints().front().lanes.front());
+    }
+    m_firstTime = m_lastTime = leadTime();
 }
 
 double SimWorker::physicsChangedAt() const {
     double at = std::numeric_limits<double>::infinity();
     for (const Input& input : m_inputs)
-        if ((input.kind == Input::Parameter && input.param != simcore::Param::Dt) || input.kind == Input::Grab)
+        if ((input.kind == Input::Parameter && input.param != simcore::Param::Dt) || input.kind == Input::Grab ||
+            input.kind == Input::World)
             at = std::min(at, input.time);
     return at;
 }
@@ -505,22 +499,23 @@ double SimWorker::physicsChangedAt() const {
 void SimWorker::recordMoment() {
     ++m_moment;
     if (m_replaying) return;
-    m_recorder.record(m_moment, m_lanes.views(), {m_lanes.commonTime(), m_until});
-    m_lastTime = m_lanes.front().time();
+    if (m_world) m_recorder.record(m_moment, *m_world, {m_world->time(), m_until});
+    else m_recorder.record(m_moment, m_lanes.views(), {m_lanes.commonTime(), m_until});
+    m_lastTime = leadTime();
 }
 
 void SimWorker::logInput(Input input) {
-    if (m_lanes.empty()) return;
+    if (!hasRun()) return;
     if (!m_replaying && m_moment < m_recorder.last()) branch();
     input.moment = m_moment;
-    input.time = m_lanes.front().time();
+    input.time = leadTime();
     if (!m_replaying) m_inputs.push_back(input);
     applyInput(input);
 }
 
 void SimWorker::setUntil(double until) {
     if (until == m_until) return;
-    if (m_lanes.empty()) {
+    if (!hasRun()) {
         m_until = until;
         return;
     }
@@ -531,6 +526,10 @@ void SimWorker::setUntil(double until) {
 }
 
 void SimWorker::applyInput(const Input& input) {
+    if (m_world) {
+        applyWorldInput(input);
+        return;
+    }
     switch (input.kind) {
         case Input::Parameter:
             m_lanes.setParameter(input.param, input.value);
@@ -548,6 +547,7 @@ void SimWorker::applyInput(const Input& input) {
         case Input::Move: m_lanes.moveAnchor(input.anchor); break;
         case Input::Release: m_lanes.release(); break;
         case Input::Until: m_until = input.value; break;
+        case Input::World: break;  // a world's only
     }
 }
 
@@ -557,8 +557,9 @@ void SimWorker::branch() {
     const long moment = m_moment;
     m_recorder.truncateAfter(moment);
     std::erase_if(m_inputs, [moment](const Input& i) { return i.moment > moment; });
-    m_lastTime = m_lanes.front().time();
+    m_lastTime = leadTime();
     m_publisher.branch(m_lastTime);
+    if (m_world) cutWorldRows(m_lastTime);
 }
 
 void SimWorker::replayForward(long target, bool inputsAtStartApplied) {
@@ -571,15 +572,16 @@ void SimWorker::replayForward(long target, bool inputsAtStartApplied) {
         if (m_moment >= target) return;
         // A method whose history a checkpoint cannot hold is recorded at every moment and
         // never re-simulated: stop at the last moment held exactly.
-        if (!m_lanes.restorable()) return;
+        if (m_world ? !m_world->integrator().restorable() : !m_lanes.restorable()) return;
         const long before = m_moment;
-        stepAll();
+        if (m_world) stepWorld();
+        else stepAll();
         if (m_moment == before) return;  // every lane failed (the run stopped here too)
     }
 }
 
 void SimWorker::scrubTo(long target) {
-    if (m_lanes.empty() || m_recorder.empty()) return;
+    if (!hasRun() || m_recorder.empty()) return;
     if (m_pacer.running()) pause();
     goTo(target);
     publish(true);
@@ -590,10 +592,16 @@ void SimWorker::goTo(long target) {
     if (target == m_moment) return;
     m_replaying = true;
     const simcore::TimelineCheckpoint* c = m_recorder.checkpointFor(target);
-    const bool fromHere = m_moment < target && c && m_moment >= c->index && m_lanes.restorable();
+    const bool restorable = m_world ? m_world->integrator().restorable() : m_lanes.restorable();
+    const bool fromHere = m_moment < target && c && m_moment >= c->index && restorable;
     if (fromHere) {
         // Forward from the moment shown, which lies after the checkpoint: fewer steps.
         replayForward(target, true);
+    } else if (c && c->world) {
+        restoreWorld(*c);
+        m_until = c->extra.at(1);
+        m_moment = c->index;
+        replayForward(target, false);
     } else if (c) {
         m_lanes.restore(*c);
         m_lanes.setCommonTime(c->extra.at(0));
@@ -604,22 +612,27 @@ void SimWorker::goTo(long target) {
     }
     m_replaying = false;
     m_until = -1.0;  // shown paused
+    if (m_world) {
+        m_params = m_world->spec().bodies.front().params;
+        m_failureReported = m_world->failed();
+        return;
+    }
     m_params = m_lanes.front().parameters();
     m_lanes.readOptions();
     m_failureReported = m_lanes.front().failed();
 }
 
 void SimWorker::scrubToTime(double t) {
-    if (m_lanes.empty() || m_recorder.empty()) return;
+    if (!hasRun() || m_recorder.empty()) return;
     if (m_pacer.running()) pause();
     // From the last checkpoint before t, forward one moment at a time until t is reached.
     const auto& all = m_recorder.checkpoints();
     auto after = std::upper_bound(all.begin(), all.end(), t, [](double time, const simcore::TimelineCheckpoint& c) {
-        return time <= c.lanes.front().diag.time;
+        return time <= (c.world ? c.world->diag.time : c.lanes.front().diag.time);
     });
     goTo(after == all.begin() ? all.front().index : (after - 1)->index);
     const double reach = t - 1e-9 * std::max(1e-3, std::abs(t));
-    while (m_moment < m_recorder.last() && m_lanes.front().time() < reach) {
+    while (m_moment < m_recorder.last() && leadTime() < reach) {
         const long before = m_moment;
         goTo(m_moment + 1);
         if (m_moment == before) break;  // not re-simulated (CVODE): the nearest kept moment

@@ -58,6 +58,13 @@ public:
     quint64 publishedSerial() const { return m_publisher.publishedSerial(); }
     // Lane 0 as a scene file with its exact state. Worker thread only (between two steps).
     SceneCapture captureScene() const;
+    // A world's run so far as the CSV of elastic-lab-cli run --csv (simlab::worldColumns: per
+    // body columns, momentum, min_gap), one row per recorded row (at most one per kRowInterval
+    // of simulated time; after a branch the abandoned future is not in it); empty for one
+    // body. Worker thread only.
+    std::string worldCsv() const;
+    // The most rows of a world kept for worldCsv: beyond, every other old row is dropped.
+    static constexpr std::size_t kMaxWorldRows = 200'000;
 
     // Smallest simulated interval between two recorded time-series rows [s].
     static constexpr double kRowInterval = FramePublisher::kRowInterval;
@@ -69,8 +76,9 @@ public:
     // (time and step counter included), so the run resumes exactly. No start kick. A file that
     // cannot be built keeps the old scene and reports sceneRejected.
     void openScene(const simlab::SceneFile& file, const QStringList& integrators);
-    // A scene of several bodies: one simcore::World instead of the lanes (no side by side, no
-    // timeline yet). A world that cannot be built keeps the old scene and reports sceneRejected.
+    // A scene of several bodies: one simcore::World instead of the lanes (no side by side), on
+    // the same timeline as one body. A world that cannot be built keeps the old scene and
+    // reports sceneRejected.
     void setWorld(const simcore::WorldSpec& spec, const QString& integrator);
     // The body (from 0) the parameter edits of a world go to; -1: every body.
     void setWorldBody(int body);
@@ -147,7 +155,7 @@ private:
 
     // Time travel. What was done between two steps, replayed when a moment is re-simulated.
     struct Input {
-        enum Kind { Parameter, Integrator, StepDoubling, Tolerances, Grab, Move, Release, Until, Precision };
+        enum Kind { Parameter, Integrator, StepDoubling, Tolerances, Grab, Move, Release, Until, Precision, World };
         long moment = 0;                  // done at this moment (after its step)
         double time = 0.0;                // lane 0's simulated time then [s]
         Kind kind = Parameter;
@@ -157,6 +165,9 @@ private:
         double value2 = 0.0;              // Tolerances: rtol
         int particle = -1;                // Grab
         Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // Grab, Move
+        // World: the world built again with this spec and the integrator named in `key`,
+        // going on from the state (a live edit of a world, an integrator change).
+        std::shared_ptr<const simcore::WorldSpec> spec;
     };
     // A switch (step doubling, precision float) as a logged input; before the first scene, kept.
     void logSwitch(Input::Kind kind, bool on);
@@ -176,15 +187,29 @@ private:
 
     // --- a world (sim_worker_world.cpp) ---
     bool worldMode() const { return m_world != nullptr; }
+    // A scene to run: the lanes or a world.
+    bool hasRun() const { return m_world || !m_lanes.empty(); }
+    // Lane 0's or the world's simulated time [s].
+    double leadTime() const;
     // Builds the world; with `from` (the world running so far) it goes on from that one's state
-    // (an edit that keeps the shape, an integrator change), else from its start.
-    bool buildWorld(const simcore::WorldSpec& spec, const std::string& integrator, const simcore::World* from);
+    // and accounts (an edit that keeps the shape, an integrator change), else from its start.
+    bool buildWorld(std::shared_ptr<const simcore::WorldSpec> spec, const std::string& integrator,
+                    const simcore::World* from);
+    // The world's integrator options: step doubling and the tolerances as the lanes keep them.
+    simcore::IntegratorOptions worldOptions() const;
+    void applyWorldInput(const Input& input);
+    // Back to a checkpoint of the world (built again when its spec or integrator differs).
+    void restoreWorld(const simcore::TimelineCheckpoint& c);
     void worldStarted();                  // a new world or its start again: rows, clocks, frame
     void worldSceneData();
     bool stepWorld();
     void tickWorld();
     void publishWorld();
     void setWorldParameter(simcore::Param id, double value);
+    // The world's rows for worldCsv, recorded as the plots' rows are; cut at a branch.
+    void recordWorldRow();
+    void cutWorldRows(double time);
+    std::vector<simcore::WorldDiagnostics> m_worldRows;
     std::unique_ptr<simcore::World> m_world;
     std::shared_ptr<const simcore::WorldSpec> m_worldSpec;  // the world's, shared with the frames
     int m_worldBody = 0;

@@ -2,9 +2,13 @@
 // world steps instead of the lanes. What it has: run, pause, step, reset, the pacer's speeds,
 // a parameter edit for one body or all (the world is rebuilt with it and goes on from its
 // state; a shape or start edit starts it again), an integrator change that keeps the run, the
-// mouse on any body's outer particle, frames with every body and rows of the world's totals.
-// What it has not yet (the GUI says so): side by side, the timeline, the free-body diagram,
-// the stability map, step doubling's bands.
+// mouse on any body's outer particle, frames with every body and rows of the world's totals,
+// and the timeline: the world is recorded as the lanes are (checkpoints of WorldSnapshot and
+// the log of what was done between steps; a live edit or an integrator change is logged as
+// the spec and integrator the world was built again with, so a replay builds it again at the
+// same moment); the free-body diagram of a clicked particle (its body's parts and the contact
+// from the other bodies and from itself); step doubling and the energy plot's error band.
+// What it has not yet (the GUI says so): side by side, the stability map.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -46,36 +50,85 @@ simcore::Diagnostics totalsRow(const simcore::WorldDiagnostics& w) {
 
 }  // namespace
 
+double SimWorker::leadTime() const {
+    if (m_world) return m_world->time();
+    return m_lanes.empty() ? 0.0 : m_lanes.front().time();
+}
+
+simcore::IntegratorOptions SimWorker::worldOptions() const {
+    simcore::IntegratorOptions o;
+    o.stepDoubling = m_lanes.stepDoubling();
+    o.atol = m_lanes.atol();
+    o.rtol = m_lanes.rtol();
+    return o;
+}
+
 void SimWorker::setWorld(const simcore::WorldSpec& spec, const QString& integrator) {
-    if (!buildWorld(spec, integrator.toStdString(), nullptr)) return;
+    if (!buildWorld(std::make_shared<const simcore::WorldSpec>(spec), integrator.toStdString(), nullptr)) return;
     m_worldBody = 0;
     worldSceneData();
     worldStarted();
 }
 
-bool SimWorker::buildWorld(const simcore::WorldSpec& spec, const std::string& integrator, const simcore::World* from) {
+bool SimWorker::buildWorld(std::shared_ptr<const simcore::WorldSpec> spec, const std::string& integrator,
+                           const simcore::World* from) {
     std::unique_ptr<simcore::World> world;
     try {
-        world = std::make_unique<simcore::World>(spec, integrator);
+        world = std::make_unique<simcore::World>(std::move(spec), integrator);
     } catch (const std::invalid_argument& e) {
         emit sceneRejected(QString::fromUtf8(e.what()));
         return false;
     }
-    world->setIntegratorOptions(simcore::IntegratorOptions{});
+    world->setIntegratorOptions(worldOptions());
+    // The run goes on: state, accounts, pointer and counters (a shape edit starts again instead).
     if (from && from->particleCount() == world->particleCount()) {
-        const auto n = Eigen::Index{from->particleCount()};
-        world->setState(Eigen::Map<const Eigen::Matrix3Xd>(from->state().data(), 3, n),
-                        Eigen::Map<const Eigen::Matrix3Xd>(from->state().data() + 3 * n, 3, n), from->stepCount(),
-                        from->time());
-        if (from->heldParticle() >= 0) world->grab(from->heldParticle(), from->anchor());
+        simcore::WorldSnapshot state = from->snapshot();
+        state.options = worldOptions();
+        world->restore(state, false);
     }
     m_lanes.clear();  // a world runs alone
-    m_recorder.clear();
-    m_inputs.clear();
     m_world = std::move(world);
-    m_worldSpec = std::make_shared<const simcore::WorldSpec>(m_world->spec());
+    m_worldSpec = m_world->sharedSpec();
     m_params = m_world->spec().bodies.front().params;
     return true;
+}
+
+void SimWorker::applyWorldInput(const Input& input) {
+    switch (input.kind) {
+        case Input::World: {
+            std::unique_ptr<simcore::World> old = std::move(m_world);
+            if (!buildWorld(input.spec, input.key, old.get())) m_world = std::move(old);
+            break;
+        }
+        case Input::StepDoubling:
+        case Input::Tolerances: {
+            if (input.kind == Input::StepDoubling) m_lanes.setStepDoubling(input.value != 0.0);
+            else m_lanes.setTolerances(input.value, input.value2);
+            m_world->setIntegratorOptions(worldOptions());
+            break;
+        }
+        case Input::Grab: m_world->grab(input.particle, input.anchor); break;
+        case Input::Move: m_world->moveAnchor(input.anchor); break;
+        case Input::Release: m_world->release(); break;
+        case Input::Until: m_until = input.value; break;
+        case Input::Parameter:
+        case Input::Integrator: break;  // a world logs these as Input::World
+    }
+}
+
+void SimWorker::restoreWorld(const simcore::TimelineCheckpoint& c) {
+    const simcore::WorldSnapshot& s = *c.world;
+    if (s.spec != m_world->sharedSpec() || s.integrator != m_world->integrator().name()) {
+        std::unique_ptr<simcore::World> old = std::move(m_world);
+        if (!buildWorld(s.spec, s.integrator, nullptr)) {
+            m_world = std::move(old);
+            return;
+        }
+    }
+    m_world->restore(s);
+    const simcore::IntegratorOptions& o = s.options;
+    m_lanes.setStepDoubling(o.stepDoubling);
+    m_lanes.setTolerances(o.atol, o.rtol);
 }
 
 void SimWorker::worldSceneData() {
@@ -129,6 +182,9 @@ void SimWorker::worldStarted() {
     m_failureReported = false;
     m_publisher.startHistory();
     m_publisher.recordRow(totalsRow(m_world->diagnostics()));
+    m_worldRows.clear();
+    recordWorldRow();
+    startTimeline();
     publish(true);
 }
 
@@ -153,26 +209,70 @@ void SimWorker::setWorldParameter(simcore::Param id, double value) {
         publish(true);
         return;
     }
-    const bool restart = spec.isShape() || spec.group == simcore::ParamGroup::Start;
+    auto built = std::make_shared<const simcore::WorldSpec>(std::move(next));
+    if (!(spec.isShape() || spec.group == simcore::ParamGroup::Start)) {
+        // A live edit: on the timeline, the world built again with it at this moment.
+        Input input;
+        input.kind = Input::World;
+        input.spec = std::move(built);
+        input.key = std::string(m_world->integrator().name());
+        logInput(std::move(input));
+        publish(true);
+        return;
+    }
     std::unique_ptr<simcore::World> old = std::move(m_world);
-    if (!buildWorld(next, std::string(old->integrator().name()), restart ? nullptr : old.get())) {
+    if (!buildWorld(std::move(built), std::string(old->integrator().name()), nullptr)) {
         m_world = std::move(old);
         return;
     }
-    if (restart) {
-        worldSceneData();
-        worldStarted();
-    } else {
-        publish(true);
-    }
+    worldSceneData();
+    worldStarted();
 }
 
 bool SimWorker::stepWorld() {
     if (m_world->failed()) return false;
+    // A step from a scrubbed moment runs on from it: a branch.
+    if (!m_replaying && m_moment < m_recorder.last()) branch();
     const bool ok = m_world->step(m_until >= 0.0 ? m_until : std::numeric_limits<double>::infinity());
-    m_pacer.countStep();
-    if (ok) m_publisher.recordRow(totalsRow(m_world->diagnostics()));
+    if (!m_replaying) {
+        m_pacer.countStep();
+        if (ok) {
+            simcore::Diagnostics row = totalsRow(m_world->diagnostics());
+            // The energy plot's error band (two measurements), only while the plots show it.
+            if (m_bandsWanted)
+                if (const double band = m_world->energyErrorBand(); band >= 0.0) {
+                    row.errors.valid = true;
+                    row.errors.energy = band;
+                }
+            m_publisher.recordRow(row);
+            recordWorldRow();
+        }
+    }
+    recordMoment();  // a failed step too: its moment shows the failure, as a lane's
     return ok;
+}
+
+void SimWorker::recordWorldRow() {
+    const simcore::WorldDiagnostics& d = m_world->diagnostics();
+    if (!m_worldRows.empty() && d.time - m_worldRows.back().time < kRowInterval * (1.0 - 1e-9)) return;
+    if (m_worldRows.size() >= kMaxWorldRows) {  // every other old row goes, as the plots' history
+        std::size_t w = 0;
+        for (std::size_t r = 0; r < m_worldRows.size(); r += 2) m_worldRows[w++] = std::move(m_worldRows[r]);
+        m_worldRows.resize(w);
+    }
+    m_worldRows.push_back(d);
+}
+
+void SimWorker::cutWorldRows(double time) {
+    std::erase_if(m_worldRows, [time](const simcore::WorldDiagnostics& d) { return d.time > time; });
+}
+
+std::string SimWorker::worldCsv() const {
+    if (!m_world) return {};
+    const auto columns = simlab::worldColumns(*m_world);
+    std::string text = simlab::csvHeader(columns);
+    for (const simcore::WorldDiagnostics& d : m_worldRows) text += simlab::csvRow(columns, d);
+    return text;
 }
 
 void SimWorker::tickWorld() {
@@ -217,11 +317,22 @@ void SimWorker::publishWorld() {
     frame->stepsPerSecond = m_pacer.stepsPerSecond();
     frame->fallingBehind = m_pacer.fallingBehind();
     frame->world = std::make_shared<const simcore::WorldDiagnostics>(w.diagnostics());
+    frame->timeline = timelineInfo();
+    frame->physicsChangedAt = physicsChangedAt();
+    frame->atol = m_lanes.atol();
+    frame->rtol = m_lanes.rtol();
     LaneFrame lane;
     lane.integrator = QString::fromUtf8(w.integrator().name().data(), qsizetype(w.integrator().name().size()));
     const Eigen::Index n = 3 * Eigen::Index{w.particleCount()};
     lane.positions.resize(std::size_t(n));
     for (Eigen::Index k = 0; k < n; ++k) lane.positions[std::size_t(k)] = float(w.state()[k]);
+    if (m_forcesWanted) {  // not counted as the run's force evaluations
+        std::vector<double> f(static_cast<std::size_t>(n));
+        m_world->currentForces(f.data());
+        lane.forces.assign(f.begin(), f.end());
+    }
+    // The free-body diagram of the selected particle: its body's parts and the contacts.
+    if (m_selected >= 0 && m_selected < w.particleCount()) lane.breakdown = m_world->forceBreakdown(m_selected);
     lane.diagnostics = totalsRow(w.diagnostics());
     if (w.failed()) lane.failure = simcore::Failure{*w.failure(), w.failedStep(), w.failedTime()};
     if (w.heldParticle() >= 0) lane.pointer = simcore::PointerSpring{true, w.heldParticle(), w.anchor()};

@@ -177,6 +177,11 @@ SceneCapture SimulationController::captureScene() {
     m_inbox->call([&capture, w = m_worker] { capture = w->captureScene(); });
     return capture;
 }
+QByteArray SimulationController::worldCsv() {
+    std::string text;
+    m_inbox->call([&text, w = m_worker] { text = w->worldCsv(); });
+    return QByteArray::fromStdString(text);
+}
 void SimulationController::setIntegrator(const QString& name) {
     if (!m_integrators.isEmpty()) m_integrators[0] = name;
     toWorker(&SimWorker::setIntegrator, name);

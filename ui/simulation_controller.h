@@ -69,6 +69,9 @@ public:
     // command sent before and is between two steps (at most one tick, ~15 ms); the GUI never
     // reads the simulation itself.
     SceneCapture captureScene();
+    // A world's run so far as elastic-lab-cli run --csv writes it (SimWorker::worldCsv);
+    // empty for one body. Behind every command already sent.
+    QByteArray worldCsv();
     void setIntegrator(const QString& name);             // lane 0 only, keeps the run
     // A parameter travels as its Param: the worker applies it to every lane, or reports
     // parameterRejected (out of range, or not a parameter of this scene).

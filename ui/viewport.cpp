@@ -61,6 +61,9 @@ QColor forcePartColor(simcore::ForcePart part) {
         case P::Walls: return energyColor(EnergyTerm::Contact);
         case P::Barrier: return energyColor(EnergyTerm::Contact).darker(160);
         case P::Mouse: return energyColor(EnergyTerm::Mouse);
+        // A world's pairs: the contact account's hue, lighter for the other bodies, violet for self.
+        case P::BodyContact: return energyColor(EnergyTerm::Contact).lighter(150);
+        case P::SelfContact: return QColor(140, 60, 170);
         case P::Count: break;
     }
     return Qt::black;
@@ -912,8 +915,15 @@ void Viewport::updateForcesPanel(const LaneFrame& lane) {
     const QString layer = std::size_t(b.particle) < layers.size()
                               ? QString::fromUtf8(simcore::layerName(layers[std::size_t(b.particle)]).data())
                               : QString();
+    // In a world: which body, and the particle as that body numbers it.
+    QString title = tr("Forces on particle %1").arg(b.particle);
+    for (std::size_t k = 0; k < m_frame->scene->bodies.size(); ++k) {
+        const SceneData::BodySlice& s = m_frame->scene->bodies[k];
+        if (b.particle >= s.first && b.particle < s.first + s.count)
+            title = tr("Forces on particle %1 of body %2").arg(b.particle - s.first).arg(k + 1);
+    }
     QString html = QStringLiteral("<b>%1</b> %2<table cellspacing='0' cellpadding='1'>")
-                       .arg(tr("Forces on particle %1").arg(b.particle), layer.isEmpty() ? QString() : QStringLiteral("(%1)").arg(layer));
+                       .arg(title, layer.isEmpty() ? QString() : QStringLiteral("(%1)").arg(layer));
     auto row = [&](const QColor& c, const QString& name, double newtons, bool bold) {
         const QString value = num(newtons, 'g', 4);
         html += QStringLiteral("<tr><td><span style='color:%1; font-size:large'>&#9632;</span></td><td>%2</td>"

@@ -194,8 +194,8 @@ void GuiCommandLine::resolve(GuiRequest& r) const {
     for (const QString& assignment : m_parser.values(m_set)) request.set.push_back(assignment.toStdString());
     if (m_parser.isSet(m_integrator)) request.integrator = m_parser.value(m_integrator).toStdString();
     r.setup = simlab::resolveScene(request);
-    if (r.setup.world && (m_parser.isSet(m_compare) || m_parser.isSet(m_travel)))
-        refuse(QStringLiteral("--compare and --travel-back take scenes of one body (a world runs alone, without a timeline yet)"));
+    if (r.setup.world && m_parser.isSet(m_compare))
+        refuse(QStringLiteral("--compare takes scenes of one body (a world of several bodies runs alone, with one integrator)"));
 }
 
 // --compare (the CLI's list rules; each lane's integrator and memory by simlab::checkLanes) and

@@ -246,6 +246,7 @@ int takeScreenshot(QApplication& app, elui::MainWindow& window, const GuiRequest
     const double after = r.after, travelBack = r.travelBack, branchValue = r.branchValue;
     const QString branchKey = r.branchKey, branchIntegrator = r.branchIntegrator;
     const elui::Lesson* lesson = r.lesson;
+    const bool branchEveryBody = r.setup.world.has_value();  // a world: key=value sets every body, as --set
     QObject::connect(controller, &elui::SimulationController::reachedTime, &window, [=, &window] {
         // A lesson's screenshot shows its figures: those of the run, and the ones "Measure"
         // gives on these parameters.
@@ -254,8 +255,12 @@ int takeScreenshot(QApplication& app, elui::MainWindow& window, const GuiRequest
         controller->scrubToTime(after - travelBack);
         if (!*branched) {
             *branched = true;
-            if (branchKey == QLatin1String("integrator")) controller->setIntegrator(branchIntegrator);
-            else controller->setParameter(branchKey, branchValue);
+            if (branchKey == QLatin1String("integrator")) {
+                controller->setIntegrator(branchIntegrator);
+            } else {
+                if (branchEveryBody) controller->setWorldBody(-1);
+                controller->setParameter(branchKey, branchValue);
+            }
             controller->runUntil(after);
             return;
         }
