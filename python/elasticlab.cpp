@@ -235,6 +235,27 @@ py::dict optionsDict(const simcore::IntegratorOptions& o) {
                     py::arg("cg_tolerance") = o.cgTolerance, py::arg("cg_max_iterations") = o.cgMaxIterations);
 }
 
+// Rows recorded one after another (`width` values each) as an array, one row per line.
+py::object rowsArray(const std::vector<double>& rows, std::size_t width) {
+    const auto w = static_cast<py::ssize_t>(width);
+    py::array_t<double> a({static_cast<py::ssize_t>(rows.size()) / w, w});
+    std::copy(rows.begin(), rows.end(), a.mutable_data());
+    return a;
+}
+
+// A run's csv= and xlsx= through the front door (an empty name, a FIFO, one over the other)
+// and its CSV dialect.
+simlab::TimeSeriesFiles checkedFiles(const py::object& csvPath, const py::object& xlsxPath, const std::string& dialectName) {
+    const auto dialect = simlab::csvDialectNamed(dialectName);
+    if (!dialect) throw py::value_error(simlab::unknownCsvDialectMessage(dialectName));
+    simlab::TimeSeriesFiles files{csvPath.is_none() ? "" : pathText(csvPath), *dialect,
+                                  xlsxPath.is_none() ? "" : pathText(xlsxPath)};
+    if (!csvPath.is_none()) simlab::checkOutputNamed("csv", files.csv);
+    if (!xlsxPath.is_none()) simlab::checkOutputNamed("xlsx", files.xlsx);
+    simlab::checkFiles({}, {{"csv", files.csv}, {"xlsx", files.xlsx}});
+    return files;
+}
+
 // What a run samples, checked by the front door before it starts: the duration, rows every so
 // many steps (`every`), at given times or every so many seconds (`times`, built here after the
 // rows they make are bounded), within the steps of a fixed-step run and the memory rows may hold.
@@ -318,11 +339,7 @@ py::object sampledRun(Sim& sim, const Columns& columns, const Sampling& s, const
                                          simlab::number(simlab::kMaxSteps) + " steps taken, the most one run may take");
             return !last;
         }, between);
-    if (!sampled) return py::none();
-    const auto width = static_cast<py::ssize_t>(columns.size());
-    py::array_t<double> a({static_cast<py::ssize_t>(rows.size()) / width, width});
-    std::copy(rows.begin(), rows.end(), a.mutable_data());
-    return a;
+    return sampled ? rowsArray(rows, columns.size()) : py::none();
 }
 
 class PySimulation {
@@ -419,14 +436,7 @@ public:
         const long every = s.every;
         const std::vector<double>& times = s.times;
         const bool sampled = s.sampled;
-        const auto dialect = simlab::csvDialectNamed(dialectName);
-        if (!dialect) throw py::value_error(simlab::unknownCsvDialectMessage(dialectName));
-        simlab::TimeSeriesFiles files{csvPath.is_none() ? "" : pathText(csvPath), *dialect,
-                                       xlsxPath.is_none() ? "" : pathText(xlsxPath)};
-        // The outputs through the front door (an empty name, a FIFO, one over the other).
-        if (!csvPath.is_none()) simlab::checkOutputNamed("csv", files.csv);
-        if (!xlsxPath.is_none()) simlab::checkOutputNamed("xlsx", files.xlsx);
-        simlab::checkFiles({}, {{"csv", files.csv}, {"xlsx", files.xlsx}});
+        const simlab::TimeSeriesFiles files = checkedFiles(csvPath, xlsxPath, dialectName);
         const simcore::SceneKind kind = m_sim->parameters().kind();
         simlab::TimeSeriesWriter writer(kind, simlab::timeSeriesColumns(kind, m_sim->diagnostics().hasSolverCounters),
                                          files);
@@ -482,13 +492,7 @@ public:
             single->writeStateTo(*m_sim);
             publish();
         }
-        py::object table = py::none();
-        if (sampled) {
-            const auto width = static_cast<py::ssize_t>(m_columns.size());
-            py::array_t<double> a({static_cast<py::ssize_t>(rows.size()) / width, width});
-            std::copy(rows.begin(), rows.end(), a.mutable_data());
-            table = a;
-        }
+        const py::object table = sampled ? rowsArray(rows, m_columns.size()) : py::none();
         // The files hold the run so far also when it failed (as the CLI's).
         if (files.any() && !writer.commit()) throw py::value_error(writer.error());
         raiseIfFailed(table, single ? single->failure() : m_sim->failure());
@@ -1247,14 +1251,15 @@ std::vector<double> sweepRange(const std::string& kind, const py::handle& a, con
 
 }  // namespace
 
-// Kept whole: the module's table of bindings, one definition after another.
 // fuzz/fuzz_python.cpp compiles this file into a program with an embedded interpreter (the
 // package's Python entry under libFuzzer): the same module, registered as a built-in.
 #ifdef ELASTICLAB_EMBEDDED
-PYBIND11_EMBEDDED_MODULE(_core, m) {
+#define ELASTICLAB_MODULE PYBIND11_EMBEDDED_MODULE
 #else
-PYBIND11_MODULE(_core, m) {
+#define ELASTICLAB_MODULE PYBIND11_MODULE
 #endif
+// Kept whole: the module's table of bindings, one definition after another.
+ELASTICLAB_MODULE(_core, m) {
     m.doc() = "Elastic Lab: two-layer elastic bodies (particles, springs, gas pressure) from Python. "
               "See docs/python.md.";
     m.attr("__version__") = elastic_lab::kVersion;

@@ -696,6 +696,9 @@ struct FloatSimulation::Impl {
     }
 };
 
+// Kept whole: the float layout built in one pass, each stage over what the one before decided
+// (chunk ownership, then the edge quads taken out of the families, the families, the faces,
+// the state), sharing its locals; read top to bottom it is docs/performance.md's description.
 FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_unique<Impl>()) {
     if (std::string refusal = floatPathRefusal(start); !refusal.empty()) throw std::invalid_argument(refusal);
     Impl& s = *m_impl;

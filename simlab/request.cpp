@@ -123,11 +123,11 @@ SceneSetup resolveScene(const SceneRequest& request) {
         setup.params = read.file->params;
         fileIntegrator = read.file->integrator;
         setup.state = read.file->state;
+        std::optional<simcore::WorldSpec> world = read.file->world;
         setup.file = std::move(read.file);
-        if (setup.file->world) {
+        if (world) {
             if (!request.severalBodies) refuse(severalBodiesMessage(request.scene));
-            simcore::WorldSpec spec = *setup.file->world;
-            return resolveWorld(std::move(spec), request, std::move(setup));
+            return resolveWorld(std::move(*world), request, std::move(setup));
         }
     } else if (const simcore::SceneInfo* scene = simcore::findScene(request.scene)) {
         setup.params = request.base && request.base->kind() == scene->kind ? *request.base : simcore::ParameterSet(scene->kind);

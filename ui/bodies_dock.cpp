@@ -231,11 +231,20 @@ void BodiesDock::showFrame(const Frame& frame) {
             for (int g = 0; g < p->graphCount(); ++g) p->graph(g)->data()->removeAfter(d.time);
         m_lastTime = d.time;
     }
+    showNumbers(d);
+    addPoints(d);
+}
+
+// A vector as (x, y) in 2D, (x, y, z) in 3D, in the window's language.
+QString BodiesDock::vector(const Eigen::Vector3d& v) const {
+    return m_dimension == 2 ? QStringLiteral("(%1, %2)").arg(number(v.x()), number(v.y()))
+                            : QStringLiteral("(%1, %2, %3)").arg(number(v.x()), number(v.y()), number(v.z()));
+}
+
+// The readout (momentum, angular momentum, min_gap and its pair, contact) and the list of bodies.
+void BodiesDock::showNumbers(const simcore::WorldDiagnostics& d) {
     // The readout.
-    const auto vec = [this](const Eigen::Vector3d& v) {
-        return m_dimension == 2 ? QStringLiteral("(%1, %2)").arg(number(v.x()), number(v.y()))
-                                : QStringLiteral("(%1, %2, %3)").arg(number(v.x()), number(v.y()), number(v.z()));
-    };
+    const auto vec = [this](const Eigen::Vector3d& v) { return vector(v); };
     QString gapText = number(d.minGap) + QStringLiteral(" m");
     if (d.minGapBodies[0] >= 0)
         gapText += d.minGapBodies[0] == d.minGapBodies[1]
@@ -262,7 +271,10 @@ void BodiesDock::showFrame(const Frame& frame) {
             if (c == 0) item->setForeground(bodyColor(int(k)));
         }
     }
-    // The curves: one point per frame whose time moved on.
+}
+
+// The curves: one point per frame whose time moved on.
+void BodiesDock::addPoints(const simcore::WorldDiagnostics& d) {
     if (d.time > m_lastTime) {
         m_lastTime = d.time;
         QCustomPlot* momentum = plot(QStringLiteral("momentum"));

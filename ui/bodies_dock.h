@@ -57,6 +57,9 @@ private:
     QWidget* createAddBox();
     void clearPlots();
     void rebuildSeries(const simcore::WorldSpec& spec);
+    void showNumbers(const simcore::WorldDiagnostics& d);
+    void addPoints(const simcore::WorldDiagnostics& d);
+    QString vector(const Eigen::Vector3d& v) const;
     void addBody();
     void removeBody();
     QCustomPlot* plot(const QString& id) const;

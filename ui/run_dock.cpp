@@ -286,13 +286,14 @@ QString RunDock::floatRows(const Frame& frame) {
     return html;
 }
 
-void RunDock::showFrame(const FramePtr& frame) {
-    if (!frame || frame->lanes.empty()) return;
+// The controls as the frame has them (integrator, precision, DT, tolerances, speed), without
+// their signals (m_updating) and without overwriting a field being edited.
+void RunDock::showControls(const Frame& frame) {
     m_updating = true;
-    m_running = frame->running;
+    m_running = frame.running;
     m_run->setText(m_running ? tr("Pause") : tr("Run", "button: start the simulation"));
-    const LaneFrame& lane = frame->lanes.front();
-    const bool single = frame->lanes.size() == 1;
+    const LaneFrame& lane = frame.lanes.front();
+    const bool single = frame.lanes.size() == 1;
     // Side by side each view names its own integrator: the combo is not one lane's, so it shows
     // none (its placeholder says why) rather than a stale name.
     m_integrator->setEnabled(single);
@@ -302,29 +303,36 @@ void RunDock::showFrame(const FramePtr& frame) {
         m_integrator->setCurrentIndex(-1);
     }
     // Float runs one view of one body: side by side, and a world's bodies, step in double.
-    m_precision->setEnabled(single && !frame->world);
-    if (const int index = frame->floatWanted ? 1 : 0; m_precision->currentIndex() != index)
+    m_precision->setEnabled(single && !frame.world);
+    if (const int index = frame.floatWanted ? 1 : 0; m_precision->currentIndex() != index)
         m_precision->setCurrentIndex(index);
-    const double dt = frame->parameters.get(simcore::Param::Dt);
+    const double dt = frame.parameters.get(simcore::Param::Dt);
     if (dt != m_shownDt && !m_dt->hasFocus()) {
         m_dt->setText(num(dt, 'g', 10));
         markField(m_dt, {}, m_dtTip);  // the DT in use: nothing refused
     }
     m_shownDt = dt;
     bool adaptive = false;
-    for (const LaneFrame& l : frame->lanes) adaptive = adaptive || isAdaptive(l.integrator);
+    for (const LaneFrame& l : frame.lanes) adaptive = adaptive || isAdaptive(l.integrator);
     m_rtol->parentWidget()->setEnabled(adaptive);
-    if ((frame->atol != m_shownAtol || frame->rtol != m_shownRtol) && !m_rtol->hasFocus() && !m_atol->hasFocus()) {
-        m_rtol->setText(num(frame->rtol, 'g', 6));
-        m_atol->setText(num(frame->atol, 'g', 6));
+    if ((frame.atol != m_shownAtol || frame.rtol != m_shownRtol) && !m_rtol->hasFocus() && !m_atol->hasFocus()) {
+        m_rtol->setText(num(frame.rtol, 'g', 6));
+        m_atol->setText(num(frame.atol, 'g', 6));
         markField(m_rtol, {}, m_tolTip);
         markField(m_atol, {}, m_tolTip);
     }
-    m_shownAtol = frame->atol;
-    m_shownRtol = frame->rtol;
-    const int speedIndex = m_speed->findData(int(frame->speed));
+    m_shownAtol = frame.atol;
+    m_shownRtol = frame.rtol;
+    const int speedIndex = m_speed->findData(int(frame.speed));
     if (speedIndex != m_speed->currentIndex()) m_speed->setCurrentIndex(speedIndex);
     m_updating = false;
+}
+
+void RunDock::showFrame(const FramePtr& frame) {
+    if (!frame || frame->lanes.empty()) return;
+    showControls(*frame);
+    const LaneFrame& lane = frame->lanes.front();
+    const bool single = frame->lanes.size() == 1;
 
     // While running, the numbers change every frame: five updates a second are readable and
     // leave the GUI thread free; a paused or stepped frame always shows at once.

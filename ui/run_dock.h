@@ -56,6 +56,7 @@ signals:
     void message(const QString& text);
 
 private:
+    void showControls(const Frame& frame);
     QFormLayout* createForm(QWidget* host);
     void createButtons(QWidget* host, QVBoxLayout* layout);
     void createReadout(QWidget* host, QVBoxLayout* layout);

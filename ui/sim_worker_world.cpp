@@ -113,6 +113,7 @@ void SimWorker::applyWorldInput(const Input& input) {
         case Input::Until: m_until = input.value; break;
         case Input::Parameter:
         case Input::Integrator: break;  // a world logs these as Input::World
+        case Input::Precision: break;   // a world steps in double (the Run dock's Precision is one body's)
     }
 }
 

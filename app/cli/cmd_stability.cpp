@@ -69,6 +69,54 @@ void printStabilityJson(const SceneSetup& setup, const simlab::StabilitySpec& sp
     printJson(j);
 }
 
+// The table's head: the scene, the one linearisation (its modes and spectrum) and each method's
+// region on one undamped and one purely damped mode, then the column names.
+void printStabilityHead(const simlab::StabilitySpec& spec, const SceneSetup& setup, const simlab::LinearModes& modes,
+                        const simcore::ParameterSet& linearised) {
+    std::printf("scene        %s, T = %g s, trials start perturbed by %g m (seed %g); the prediction is "
+                "linearised at the unperturbed rest shape\n", setup.sceneName.c_str(),
+                spec.duration, linearised.get(simcore::Param::Perturb), linearised.get(simcore::Param::Seed));
+    std::printf("linearised   %d free coordinates (%s); highest frequency w_max = %.4g rad/s "
+                "(period %.4g s), its damping c = %.4g 1/s (zeta = %.3g); fastest modal damping %.4g 1/s",
+                modes.freeCoordinates, modes.dense ? "all modes" : "power iteration, highest mode only; Arnoldi spectrum",
+                modes.omegaMax, modes.omegaMax > 0 ? 2 * M_PI / modes.omegaMax : 0.0, modes.dampingAtMax,
+                modes.omegaMax > 0 ? modes.dampingAtMax / (2 * modes.omegaMax) : 0.0, modes.fastestDamping);
+    if (modes.unstableModes) std::printf("; %d physically unstable modes excluded", modes.unstableModes);
+    std::printf("\n");
+    if (spec.world)
+        std::printf("world        %zu bodies linearised as one system (every body's forces, the contact between "
+                    "bodies where a pair is within the skin): one spectrum, one verdict per method\n",
+                    spec.world->bodies.size());
+    {
+        // The verdict's spectrum (what every door predicts from).
+        const simlab::StabilityVerdict v = simlab::stabilityVerdict(modes, "rk4", 0.0);
+        std::printf("eigenvalues  %s of the first-order system (the prediction of every method; the "
+                    "partitioned ones use the exact step matrix up to %d coordinates): fastest lambda = %.4g "
+                    "%+.4gi 1/s\n",
+                    v.basis.c_str(), simlab::kExactStepLimit, v.fastest.real(), std::abs(v.fastest.imag()));
+    }
+    // Each method's region, summarised by its limit on one undamped mode (w = 1) and on a
+    // purely damped one (real axis), computed from the same functions as the prediction.
+    std::printf("regions      limit of h*w on an undamped mode / of h*c on a pure decay rate c:");
+    for (const std::string& name : spec.integrators) {
+        simlab::LinearModes one;
+        one.omega2 = {1.0};
+        one.damping = {0.0};
+        one.omegaMax = 1.0;
+        const double undamped = simlab::predictedStableStep(name, one, 100.0);
+        // real axis: the overdamped limit c -> infinity has rates c and w^2/c -> a decay rate
+        // of 1 alone is the mode w^2 = 0, c = 1.
+        simlab::LinearModes decay;
+        decay.omega2 = {0.0};
+        decay.damping = {1.0};
+        const double real = simlab::predictedStableStep(name, decay, 100.0);
+        std::printf(" %s %s/%s", name.c_str(), stepText(undamped).c_str(), stepText(real).c_str());
+    }
+    std::printf("\n             (damping moves the undamped limits; see docs/numerics.md)\n\n");
+    std::printf("%-17s %12s %12s %12s %9s %9s  %s\n", "integrator", "measured", "(unstable)", "predicted",
+                "h*w meas", "h*w pred", "what happens just above the measured limit");
+}
+
 int runStability(const StabilityArgs& args) {
     const simlab::StabilitySpec& spec = args.spec;
     const SceneSetup& setup = args.setup;
@@ -83,50 +131,7 @@ int runStability(const StabilityArgs& args) {
     // trials below start perturbed, the prediction does not.
     const simlab::LinearModes modes = simlab::stabilityModes(spec);
     const bool quiet = args.quiet || args.json;
-    if (!quiet) {
-        std::printf("scene        %s, T = %g s, trials start perturbed by %g m (seed %g); the prediction is "
-                    "linearised at the unperturbed rest shape\n", setup.sceneName.c_str(),
-                    spec.duration, linearised.get(simcore::Param::Perturb), linearised.get(simcore::Param::Seed));
-        std::printf("linearised   %d free coordinates (%s); highest frequency w_max = %.4g rad/s "
-                    "(period %.4g s), its damping c = %.4g 1/s (zeta = %.3g); fastest modal damping %.4g 1/s",
-                    modes.freeCoordinates, modes.dense ? "all modes" : "power iteration, highest mode only; Arnoldi spectrum",
-                    modes.omegaMax, modes.omegaMax > 0 ? 2 * M_PI / modes.omegaMax : 0.0, modes.dampingAtMax,
-                    modes.omegaMax > 0 ? modes.dampingAtMax / (2 * modes.omegaMax) : 0.0, modes.fastestDamping);
-        if (modes.unstableModes) std::printf("; %d physically unstable modes excluded", modes.unstableModes);
-        std::printf("\n");
-        if (spec.world)
-            std::printf("world        %zu bodies linearised as one system (every body's forces, the contact between "
-                        "bodies where a pair is within the skin): one spectrum, one verdict per method\n",
-                        spec.world->bodies.size());
-        {
-            // The verdict's spectrum (what every door predicts from).
-            const simlab::StabilityVerdict v = simlab::stabilityVerdict(modes, "rk4", 0.0);
-            std::printf("eigenvalues  %s of the first-order system (the prediction of every method; the "
-                        "partitioned ones use the exact step matrix up to %d coordinates): fastest lambda = %.4g "
-                        "%+.4gi 1/s\n",
-                        v.basis.c_str(), simlab::kExactStepLimit, v.fastest.real(), std::abs(v.fastest.imag()));
-        }
-        // Each method's region, summarised by its limit on one undamped mode (w = 1) and on a
-        // purely damped one (real axis), computed from the same functions as the prediction.
-        std::printf("regions      limit of h*w on an undamped mode / of h*c on a pure decay rate c:");
-        for (const std::string& name : spec.integrators) {
-            simlab::LinearModes one;
-            one.omega2 = {1.0};
-            one.damping = {0.0};
-            one.omegaMax = 1.0;
-            const double undamped = simlab::predictedStableStep(name, one, 100.0);
-            // real axis: the overdamped limit c -> infinity has rates c and w^2/c -> a decay rate
-            // of 1 alone is the mode w^2 = 0, c = 1.
-            simlab::LinearModes decay;
-            decay.omega2 = {0.0};
-            decay.damping = {1.0};
-            const double real = simlab::predictedStableStep(name, decay, 100.0);
-            std::printf(" %s %s/%s", name.c_str(), stepText(undamped).c_str(), stepText(real).c_str());
-        }
-        std::printf("\n             (damping moves the undamped limits; see docs/numerics.md)\n\n");
-        std::printf("%-17s %12s %12s %12s %9s %9s  %s\n", "integrator", "measured", "(unstable)", "predicted",
-                    "h*w meas", "h*w pred", "what happens just above the measured limit");
-    }
+    if (!quiet) printStabilityHead(spec, setup, modes, linearised);
     std::vector<simlab::StabilityRow> rows;
     for (const std::string& name : simlab::shardNames(spec.integrators, spec.shardIndex, spec.shardCount)) {
         simlab::StabilityRow row = simlab::scanIntegrator(spec, name, modes);
