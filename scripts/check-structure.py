@@ -5,7 +5,9 @@
   and the tests);
 - nothing outside simcore (and its tests) includes simcore/internal/;
 - within a library no two files include each other in a circle, a header and its source counted
-  as one file (Tarjan's strongly connected components over the file graph).
+  as one file (Tarjan's strongly connected components over the file graph);
+- no source, doc or lesson points a reader at a file outside the repository (the physics is
+  docs/model.md, the conventions docs/conventions.md: the repository stands on its own).
 Prints each violation and exits 1 when there is one. Usage: check-structure.py [ROOT]."""
 import os, re, sys
 
@@ -77,6 +79,17 @@ for v in sorted(graph):
     if v not in index: connect(v)
 for c in comps:
     problems.append("files that include each other in a circle: " + ", ".join(c))
+
+# The repository stands on its own: the physics and the conventions it cites are its own docs.
+OUTSIDE = re.compile(r"\.\./shared|\bMODEL\.md|\bSTYLE\.md")
+for top in list(LAYER) + ["docs", "resources", "scripts", "README.md"]:
+    paths = [top] if os.path.isfile(top) else [os.path.join(d, n) for d, _, ns in os.walk(top) for n in ns]
+    for path in sorted(paths):
+        if "/build" in path or path.startswith("build") or path.endswith("check-structure.py"): continue
+        if not path.endswith((".h", ".cpp", ".py", ".md", ".html", ".sh", ".txt")): continue
+        for number, line in enumerate(open(path, encoding="utf-8", errors="replace"), 1):
+            if OUTSIDE.search(line):
+                problems.append(f"{path}:{number}: names a file outside the repository ({OUTSIDE.search(line).group(0)}); cite docs/model.md or docs/conventions.md")
 
 for p in problems: print(p)
 print(f"check-structure: {len(files)} files, {len(problems)} problems")

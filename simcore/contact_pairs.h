@@ -1,6 +1,6 @@
 #pragma once
 // Contact pairs: the outer layers of several bodies against each other, and each outer layer
-// against its own elements that share no particle with it (self-contact) (MODEL.md "Several
+// against its own elements that share no particle with it (self-contact) (docs/model.md "Several
 // bodies"). Free of any world: it reads positions and velocities as flat arrays (3 per
 // particle, world numbering) and adds forces into a flat array.
 //

@@ -1,6 +1,6 @@
 #pragma once
 // World: several two-layer bodies in one box, stepped as one ODE by any integrator
-// (MODEL.md "Several bodies"; the thesis's future work, section 8.3).
+// (docs/model.md "Several bodies"; the thesis's future work, section 8.3).
 //
 // Where the parts live:
 //   internal/world_body.h  one body: its parameters, its built body placed at its start, its force

@@ -1,4 +1,4 @@
-// SimWorker with a scene of several bodies (simcore::World, MODEL.md "Several bodies"): one
+// SimWorker with a scene of several bodies (simcore::World, docs/model.md "Several bodies"): one
 // world steps instead of the lanes. What it has: run, pause, step, reset, the pacer's speeds,
 // a parameter edit for one body or all (the world is rebuilt with it and goes on from its
 // state; a shape or start edit starts it again), an integrator change that keeps the run, the

@@ -1,6 +1,6 @@
 #pragma once
 // One body of a world: its parameters, its built body placed at its start, its force model
-// and its ODE (BodyOde), each the one-body simulation's own pieces (MODEL.md "Several
+// and its ODE (BodyOde), each the one-body simulation's own pieces (docs/model.md "Several
 // bodies": every body is built as a body alone is, with its own parameters).
 //
 // The world's state is the bodies' states side by side: body b's particles are the world's
