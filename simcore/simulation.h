@@ -25,9 +25,9 @@
 //               count, error estimate; the measured derivative is kept for the next step
 //
 // On failure no non-finite value ever leaves. Parameters change only between steps (the
-// caller owns the thread that steps). Where the parts live: the force model forces.h, the
-// ODE and its Jacobians body_ode.h, step doubling step_doubling.h, the two contact stages and
-// the contact design point simulation_contacts.cpp.
+// caller owns the thread that steps). Parts: forces.h, body_ode.h, step_doubling.h; by job
+// simulation.cpp (state, stages), simulation_contacts.cpp (projection stages, design point),
+// simulation_diagnostics.cpp, simulation_inspection.cpp (pointer, forces), simulation_snapshot.cpp.
 
 #include <array>
 #include <chrono>

@@ -1,0 +1,230 @@
+// What a one-body simulation measures (simulation.h): the scan of a state (finiteness, extent,
+// kinetic and gravity energy, fastest speed), the diagnostics (energies per part, volumes,
+// pressures, counters), the energy scale and the checks a step's end state must pass, the
+// error bands of the last step's estimate, and the fastest rate of the stability estimates.
+#include "simcore/simulation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "simcore/internal/body_ode.h"
+
+namespace simcore {
+
+void Simulation::startBookkeeping() {
+    measure(m_diag);
+    m_diag.initialEnergy = m_diag.total();
+    // Energy scale for blow-up detection: what the body could plausibly hold. Gravity over
+    // the box height, every spring stretched by its rest length, the gas expanding 100-fold.
+    const Topology& topo = m_body.topology;
+    double scale = 1.0 + m_diag.kinetic + m_diag.springTotal();
+    scale += m_body.mass.sum() * m_forces.params.gravity * 2.0 * m_p.world.box;
+    for (int f = 0; f < kSpringFamilyCount; ++f) {
+        const auto k = static_cast<std::size_t>(f);
+        for (double rest : topo.springs[k].rest) scale += 0.5 * m_forces.params.stiffness[k] * rest * rest;
+    }
+    if (m_forces.terms().has(Term::Gas))
+        scale += (m_forces.params.gasConstant[0] + m_forces.params.gasConstant[1]) * std::log(100.0);
+    m_energyScale = scale;
+}
+
+void Simulation::measure(Diagnostics& d) const { measureByPasses(d, scanState()); }
+
+void Simulation::measureByPasses(Diagnostics& d, const Scan& scan) const {
+    fillDiagnostics(d, m_forces.springEnergies(m_y.data()),
+                    m_forces.terms().has(Term::Gas) ? m_forces.volumes(m_y.data()) : std::array<double, 2>{},
+                    m_forces.contactEnergy(m_y.data()), scan);
+}
+
+void Simulation::measureState(Diagnostics& d, const Scan& scan) {
+    if (!m_reuseEndForces) {
+        measureByPasses(d, scan);
+        return;
+    }
+    // One uncounted force evaluation yields the energies and volumes, and f at this state,
+    // which the next step's first stage takes instead of evaluating it again.
+    const ForceExtras& extras = m_ode->measureEnd(m_y);
+    fillDiagnostics(d, extras.springEnergy, extras.volume, extras.contactEnergy, scan);
+}
+
+Simulation::Scan Simulation::scanState() const {
+    const double* x = m_y.data();
+    const double* v = m_y.data() + m_n;
+    const double* inv = m_invMass3.data();
+    const bool weighs = m_forces.terms().has(Term::Gravity);
+    const double g = m_forces.params.gravity;
+    const double infinity = std::numeric_limits<double>::infinity();
+    std::array<Scan, kPiecesMax> pieces;
+    inPieces([&](int piece, int begin, int end) {
+        Scan s;
+        s.low.setConstant(infinity);
+        s.high.setConstant(-infinity);
+        // (x - x) + (v - v) is 0 for finite coordinates and NaN otherwise: summed, it tells
+        // whether all are finite without a branch per coordinate.
+        double nonFinite = 0.0;
+        double kinetic = 0.0, gravity = 0.0, fastest2 = 0.0;
+        for (int i = begin; i < end; ++i) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const int k = 3 * i + axis;
+                nonFinite += (x[k] - x[k]) + (v[k] - v[k]);
+                // Only moving coordinates (not a fixed particle's, not an axis the body does
+                // not move in) count for the extent.
+                const bool moves = inv[k] != 0.0;
+                s.low[axis] = std::min(s.low[axis], moves ? x[k] : infinity);
+                s.high[axis] = std::max(s.high[axis], moves ? x[k] : -infinity);
+            }
+            const Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
+            const double speed2 = vi.squaredNorm();
+            fastest2 = std::max(fastest2, speed2);
+            if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+            const double m = m_body.mass[i];
+            kinetic += 0.5 * m * speed2;
+            if (weighs) gravity += m * g * x[3 * i + 1];
+        }
+        s.finite = nonFinite == 0.0;
+        s.kinetic = kinetic;
+        s.gravity = gravity;
+        s.fastest = std::sqrt(fastest2);
+        pieces[static_cast<std::size_t>(piece)] = s;
+    });
+    Scan total;
+    total.low.setConstant(infinity);
+    total.high.setConstant(-infinity);
+    total.finite = std::isfinite(m_y[2 * m_n]) && std::isfinite(m_y[2 * m_n + 1]);
+    for (int piece = 0; piece < m_forces.chunks(); ++piece) {
+        const Scan& s = pieces[static_cast<std::size_t>(piece)];
+        total.finite = total.finite && s.finite;
+        total.low = total.low.min(s.low);
+        total.high = total.high.max(s.high);
+        total.kinetic += s.kinetic;
+        total.gravity += s.gravity;
+        total.fastest = std::max(total.fastest, s.fastest);
+    }
+    return total;
+}
+
+void Simulation::fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
+                                 const std::array<double, 2>& volume, double contact, const Scan& scan) const {
+    const double* x = m_y.data();
+    const Topology& topo = m_body.topology;
+    d.kinetic = scan.kinetic;
+    d.gravity = scan.gravity;
+    d.spring = spring;
+    d.hasGas = m_forces.terms().has(Term::Gas);
+    d.gas = 0.0;
+    if (d.hasGas) {
+        for (const Surface& s : topo.surfaces) {
+            const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
+            const double c = m_forces.params.gasConstant[slot];
+            d.volume[slot] = volume[slot];
+            d.restVolume[slot] = s.restVolume;
+            d.pressure[slot] = d.volume[slot] > 0.0 ? c / d.volume[slot] : 0.0;
+            d.gas += gasEnergy(c, d.volume[slot]);
+        }
+    }
+    d.pointer = pointerEnergy(m_forces.pointer, m_forces.params.mks, m_forces.params.mouseRest, x);
+    d.removedDamping = m_y[2 * m_n];
+    d.contact = contact;
+    d.removedContact = m_y[2 * m_n + 1];
+    d.forceEvaluations = m_forces.forceEvaluations() + m_jacobianProducts;
+    const SolverCounters* counters = m_integrator->counters();
+    d.hasSolverCounters = counters != nullptr;
+    d.solver = counters ? *counters : SolverCounters{};
+}
+
+ObservableErrors Simulation::observableErrors() {
+    ObservableErrors out;
+    if (!m_lastError || m_failure) return out;
+    Diagnostics at, off;
+    measure(at);
+    m_errorScratch = m_y;
+    m_y += Eigen::Map<const Eigen::VectorXd>(m_lastError, m_y.size());
+    measure(off);
+    m_y = m_errorScratch;  // exactly the state it was (m_y keeps its buffer: CVODE wraps it)
+    for (std::size_t k = 0; k < 2; ++k) {
+        out.volume[k] = std::abs(off.volume[k] - at.volume[k]);
+        out.pressure[k] = std::abs(off.pressure[k] - at.pressure[k]);
+    }
+    out.energy = std::abs(off.total() - at.total());
+    out.valid = std::isfinite(out.energy) && std::isfinite(out.volume[0] + out.volume[1]) &&
+                std::isfinite(out.pressure[0] + out.pressure[1]);
+    return out;
+}
+
+double Simulation::totalEnergyNow() const {
+    Diagnostics d;
+    measure(d);
+    return d.total();
+}
+
+std::optional<std::string> Simulation::checkState(const Diagnostics& d, const Scan& scan) const {
+    // Causes before symptoms: speed and energy first, then the shape they wreck. (The message
+    // stream is built only on failure: nothing is allocated in a good step.)
+    if (!scan.finite || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
+    const double fastest = scan.fastest;
+    if (fastest * m_hTaken > 2.0 * m_p.world.box) {
+        std::ostringstream why;
+        why << "runaway velocity: a particle moves " << fastest
+            << " m/s, farther than the whole box in one step";
+        return why.str();
+    }
+    const double held = d.kinetic + d.springTotal() + d.pointer;
+    const double budget = kRunawayEnergyFactor *
+                          (m_energyScale + std::abs(m_diag.workPointer) + std::abs(m_diag.workEdits));
+    if (held > budget) {
+        std::ostringstream why;
+        why << "runaway energy: kinetic + elastic energy " << held << " J exceeds " << budget
+            << " J (" << kRunawayEnergyFactor << " x the body's energy scale)";
+        return why.str();
+    }
+    const Topology& topo = m_body.topology;
+    for (const Surface& s : topo.surfaces) {
+        const double volume = d.volume[static_cast<std::size_t>(layerSlot(s.layer))];
+        if (volume <= kCollapsedVolumeFraction * s.restVolume) {
+            std::ostringstream why;
+            why << "the " << layerName(s.layer) << " layer "
+                << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
+                << (topo.dimension == 2 ? "area" : "volume") << " is " << volume
+                << ", rest " << s.restVolume << ")";
+            return why.str();
+        }
+    }
+    return std::nullopt;
+}
+
+double Simulation::estimatedFastestRate() const {
+    // Each particle alone, tied to fixed neighbours by its springs: m s^2 + c s + k = 0 with
+    // k = sum of stiffness and c = sum of damping over its springs (springs in different directions do not all
+    // act on one displacement, so this is an estimate, not a bound). |s| is sqrt(k/m) when underdamped and the fast root
+    // (c + sqrt(c^2 - 4mk)) / 2m when overdamped: stiff damping limits explicit steps too.
+    const Topology& topo = m_body.topology;
+    Eigen::VectorXd k = Eigen::VectorXd::Zero(particleCount());
+    Eigen::VectorXd c = Eigen::VectorXd::Zero(particleCount());
+    for (int f = 0; f < kSpringFamilyCount; ++f) {
+        const auto fam = static_cast<std::size_t>(f);
+        for (std::size_t s = 0; s < topo.springs[fam].size(); ++s)
+            for (int end : {topo.springs[fam].a[s], topo.springs[fam].b[s]}) {
+                k[end] += m_forces.params.stiffness[fam];
+                c[end] += m_forces.params.damping[fam];
+            }
+    }
+    // Contact at its design point (contactDesign()) adds to the particles nearest the floor.
+    const ContactDesign design = contactDesign();
+    for (int i : design.particles) {
+        k[i] += design.stiffness;
+        c[i] += std::max(design.damping, design.friction);
+    }
+    double fastest = 0.0;
+    for (int i = 0; i < particleCount(); ++i) {
+        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+        const double m = m_body.mass[i];
+        const double disc = c[i] * c[i] - 4.0 * m * k[i];
+        const double rate = disc > 0.0 ? (c[i] + std::sqrt(disc)) / (2.0 * m) : std::sqrt(k[i] / m);
+        fastest = std::max(fastest, rate);
+    }
+    return fastest;
+}
+
+}  // namespace simcore
