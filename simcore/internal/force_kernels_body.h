@@ -379,4 +379,28 @@ inline void unpad(const double* f4, const double* g4, double p, const double* in
         }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Stage sums
+
+inline void stageSum(double* out, const double* y, double c, const double* k, std::size_t n) {
+    const Widest vc = splat<Widest>(c);
+    constexpr std::size_t W = kLanes<Widest>;
+    std::size_t i = 0;
+    for (; i + W <= n; i += W) storeu(out + i, loadu<Widest>(y + i) + vc * loadu<Widest>(k + i));
+    for (; i < n; ++i) out[i] = y[i] + c * k[i];
+}
+
+inline void rk4Sum(double* y, double h6, const double* k1, const double* k2, const double* k3, const double* k4,
+                   std::size_t n) {
+    const Widest vh = splat<Widest>(h6), two = splat<Widest>(2.0);
+    constexpr std::size_t W = kLanes<Widest>;
+    std::size_t i = 0;
+    for (; i + W <= n; i += W) {
+        const Widest sum = ((loadu<Widest>(k1 + i) + two * loadu<Widest>(k2 + i)) + two * loadu<Widest>(k3 + i)) +
+                           loadu<Widest>(k4 + i);
+        storeu(y + i, loadu<Widest>(y + i) + vh * sum);
+    }
+    for (; i < n; ++i) y[i] = y[i] + h6 * (((k1[i] + 2.0 * k2[i]) + 2.0 * k3[i]) + k4[i]);
+}
+
 }  // namespace simcore::kernels::SIMCORE_SIMD_NS
