@@ -201,9 +201,10 @@ template <class V>
         r.b[g] = index(quads.b[q + g]);
         rest[g] = quads.rest[q + g].data();
     }
-    const V xa = loadRows<V>(x, r.a), xb = loadRows<V>(x, r.b);
+    // (Inner rows by plain loads: a, b < n, so none is the array's last row.)
+    const V xa = loadInnerRows<V>(x, r.a), xb = loadInnerRows<V>(x, r.b);
     const V xA = loadRows<V>(xo, r.a), xB = loadRows<V>(xo, r.b);
-    const V va = loadRows<V>(v, r.a), vb = loadRows<V>(v, r.b);
+    const V va = loadInnerRows<V>(v, r.a), vb = loadInnerRows<V>(v, r.b);
     const V vA = loadRows<V>(vo, r.a), vB = loadRows<V>(vo, r.b);
     V dx, dy, dz, dvx, dvy, dvz;
     toColumns(xb - xa, xB - xA, xb - xA, xa - xB, dx, dy, dz);
