@@ -573,8 +573,9 @@ bool ForceModel::finishMotion(const RangeWork* then) {
 }
 
 // Kept whole: the hot path, one force evaluation in its three stages (the chunks' terms, the
-// shared elements and the sums in a fixed order, pressure and unpadding) over the same padded
-// buffers and per-chunk sums; read top to bottom it is the algorithm of docs/architecture.md.
+// shared elements and the sums in a fixed order, the pressures and the pointer for the last
+// stage, which lastStage runs now or later) over the same padded buffers and per-chunk sums;
+// read top to bottom it is the algorithm of docs/architecture.md.
 void ForceModel::evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
                               double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer) {
     finishMotion();  // a held-back last stage first: its buffers are about to be overwritten
