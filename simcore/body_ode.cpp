@@ -10,23 +10,29 @@
 namespace simcore {
 
 void BodyOde::derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
-    if (!takeOffered(y, dydt)) compute(y, dydt, m_extras, true);
+    if (!takeOffered(y, dydt, nullptr)) compute(y, dydt, m_extras, true);
 }
 
 void BodyOde::derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt, RangeWork then) {
-    if (takeOffered(y, dydt))
-        inPieces(dydt.size(), then);
-    else
-        compute(y, dydt, m_extras, true, &then);
+    if (!takeOffered(y, dydt, &then)) compute(y, dydt, m_extras, true, &then);
 }
 
-bool BodyOde::takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
+bool BodyOde::takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const RangeWork* then) {
     // Offered to one call only: a first stage elsewhere than at the measured state withdraws it.
     if (!std::exchange(m_offered, false)) return false;
     if (&y != m_endAt) return false;
     dydt.swap(m_end);  // no copy: the two buffers trade places (the cache is spent)
     m_extras = m_endExtras;
     m_forces.countReusedEvaluation();
+    // The measurement's last stage, held back until now, writes its xdot and a (in the buffer
+    // dydt now holds) and runs `then` on them in the same pool run; when it was already written
+    // (a restored cache, or written for a checkpoint), `then` alone.
+    const Eigen::Index n = positions();
+    if (m_forces.finishMotion(then)) {
+        if (then) (*then)(2 * n, kAux);
+    } else if (then) {
+        inPieces(dydt.size(), *then);
+    }
     return true;
 }
 
@@ -50,12 +56,24 @@ void BodyOde::runPieces(TaskRef task) {
 }
 
 const ForceExtras& BodyOde::measureEnd(const Eigen::VectorXd& y) {
-    compute(y, m_end, m_endExtras, false);
+    // Its last stage (the unpadding of a = F/m and xdot = v) is held back: the next step's
+    // first stage runs it in its own pool run (takeOffered), one run per step fewer.
+    const Eigen::Index n = positions();
+    m_forces.evaluateMotionDeferred(y.data(), y.data() + n, m_invMass.data(), m_end.data(), m_end.data() + n,
+                                    m_endExtras, false);
+    m_end[2 * n] = m_endExtras.dampingPower;
+    m_end[2 * n + 1] = m_endExtras.contactPower;
     m_endAt = &y;
     return m_endExtras;
 }
 
+const Eigen::VectorXd& BodyOde::endDerivative() const {
+    m_forces.finishMotion();
+    return m_end;
+}
+
 void BodyOde::restoreEnd(const Eigen::VectorXd& y, const Eigen::VectorXd& derivative, const ForceExtras& extras) {
+    m_forces.dropMotion();
     m_end = derivative;
     m_endExtras = extras;
     m_endAt = &y;

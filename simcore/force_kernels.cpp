@@ -183,6 +183,27 @@ void unpad(const double* f4, const double* g4, double p, const double* invMass3,
     portable::unpad(f4, g4, p, invMass3, begin, end, out);
 }
 
+void stageSum(double* out, const double* y, double c, const double* k, std::size_t n) {
+#if SIMCORE_AVX512_KERNELS
+    if (kernelsInUse() == KernelSet::Avx512) return avx512::stageSum(out, y, c, k, n);
+#endif
+#if SIMCORE_AVX2_KERNELS
+    if (kernelsInUse() == KernelSet::Avx2) return avx2::stageSum(out, y, c, k, n);
+#endif
+    portable::stageSum(out, y, c, k, n);
+}
+
+void rk4Sum(double* y, double h6, const double* k1, const double* k2, const double* k3, const double* k4,
+            std::size_t n) {
+#if SIMCORE_AVX512_KERNELS
+    if (kernelsInUse() == KernelSet::Avx512) return avx512::rk4Sum(y, h6, k1, k2, k3, k4, n);
+#endif
+#if SIMCORE_AVX2_KERNELS
+    if (kernelsInUse() == KernelSet::Avx2) return avx2::rk4Sum(y, h6, k1, k2, k3, k4, n);
+#endif
+    portable::rk4Sum(y, h6, k1, k2, k3, k4, n);
+}
+
 AlignedBuffer::AlignedBuffer(std::size_t count) : m_size(count) {
     const std::size_t bytes = (count * sizeof(double) + 63) / 64 * 64;
     void* p = std::aligned_alloc(64, std::max<std::size_t>(bytes, 64));

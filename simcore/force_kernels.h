@@ -107,6 +107,15 @@ double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end,
 void unpad(const double* f4, const double* g4, double p, const double* invMass3, int begin, int end,
            double* out);
 
+// The explicit integrators' element-wise stage sums over n doubles, compiled per instruction
+// set like the kernels above (the integrators' own file is built for the baseline target): the
+// same operations in the same order as the plain loops, so the same bits.
+// out = y + c k (out may be y).
+void stageSum(double* out, const double* y, double c, const double* k, std::size_t n);
+// RK4's last sum: y += h6 (((k1 + 2 k2) + 2 k3) + k4).
+void rk4Sum(double* y, double h6, const double* k1, const double* k2, const double* k3, const double* k4,
+            std::size_t n);
+
 // Read access by particle to a padded buffer (4 doubles per particle, see above), so that code
 // outside the kernels need not know the layout: rows[i] is particle i's (x, y, z).
 class PaddedRows {

@@ -465,6 +465,7 @@ void ForceModel::clearGradient(int chunk) {
 
 kernels::PaddedRows ForceModel::computeVolumeGradient(const double* x) {
     if (!m_terms.has(Term::Gas)) return kernels::PaddedRows();
+    finishMotion();  // a held-back last stage reads the gradient about to be overwritten
     std::array<Sums, kChunks + 1> sums{};
     double* g4 = m_gradient4.data();
     runChunks([&](int c) {
@@ -559,11 +560,25 @@ void ForceModel::evaluateMotion(const double* x, const double* v, const double* 
     evaluateInto(x, v, invMass3, xdot, a, extras, count, then);
 }
 
+void ForceModel::evaluateMotionDeferred(const double* x, const double* v, const double* invMass3, double* xdot,
+                                        double* a, ForceExtras& extras, bool count) {
+    evaluateInto(x, v, invMass3, xdot, a, extras, count, nullptr, true);
+}
+
+bool ForceModel::finishMotion(const RangeWork* then) {
+    if (!m_pending.held) return false;
+    m_pending.held = false;
+    lastStage(m_pending, then);
+    return true;
+}
+
 // Kept whole: the hot path, one force evaluation in its three stages (the chunks' terms, the
-// shared elements and the sums in a fixed order, pressure and unpadding) over the same padded
-// buffers and per-chunk sums; read top to bottom it is the algorithm of docs/architecture.md.
+// shared elements and the sums in a fixed order, the pressures and the pointer for the last
+// stage, which lastStage runs now or later) over the same padded buffers and per-chunk sums;
+// read top to bottom it is the algorithm of docs/architecture.md.
 void ForceModel::evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
-                              double* out, ForceExtras& extras, bool count, const RangeWork* then) {
+                              double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer) {
+    finishMotion();  // a held-back last stage first: its buffers are about to be overwritten
     const Topology& topo = *m_topology;
     extras = ForceExtras{};
     if (count) countTerms();
@@ -645,49 +660,73 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
     add(sums[kChunks]);
     for (std::size_t fam = 0; fam < stretch2.size(); ++fam)
         extras.springEnergy[fam] = 0.5 * params.stiffness[fam] * stretch2[fam];
-    // Stage 3: f = F + P dV/dx with P = c / V of each layer (V <= 0: no force; the simulation
-    // reports the layer as inside out), unpadded into the caller's 3-per-particle layout.
-    std::array<double, 2> pressure{};
+    // The pressures P = c / V of each layer, and what stage 3 (lastStage) needs.
+    LastStage last;
+    last.v = v;
+    last.invMass3 = invMass3;
+    last.xdot = xdot;
+    last.out = out;
     if (gas) {
         for (const Surface& s : topo.surfaces) {
             const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
             const double volume = topo.dimension == 2 ? 0.5 * volumeSum[slot] : volumeSum[slot] / 6.0;
             extras.volume[slot] = volume;
-            pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
-            extras.pressure[slot] = pressure[slot];
+            last.pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
+            extras.pressure[slot] = last.pressure[slot];
         }
     }
-    auto layerPressure = [&](int i) {
-        return pressure[static_cast<std::size_t>(layerSlot(topo.layer[static_cast<std::size_t>(i)]))];
-    };
     // The mouse spring acts on one particle: its total is redone with the pointer's force
     // added before the division by the mass. Taken now: x and v may be overwritten once the
     // chunks hand their ranges to `then`.
-    double pointerOut[3], pointerF[3], pointerPower = 0.0;
-    const int pulled = m_terms.has(Term::Pointer) &&
-                               pointerForce(pointer, params.mks, params.mkd, params.mouseRest, x, v, pointerF, pointerPower)
-                           ? pointer.particle
-                           : -1;
-    if (pulled >= 0) {
-        const double p = layerPressure(pulled);
+    double pointerF[3], pointerPower = 0.0;
+    last.pulled = m_terms.has(Term::Pointer) &&
+                          pointerForce(pointer, params.mks, params.mkd, params.mouseRest, x, v, pointerF, pointerPower)
+                      ? pointer.particle
+                      : -1;
+    if (last.pulled >= 0) {
+        const int pulled = last.pulled;
+        const double p = last.pressure[static_cast<std::size_t>(layerSlot(topo.layer[static_cast<std::size_t>(pulled)]))];
         for (int axis = 0; axis < 3; ++axis) {
             const int k = 3 * pulled + axis;
             const double total = (gas ? f4[4 * pulled + axis] + p * g4[4 * pulled + axis] : f4[4 * pulled + axis]) + pointerF[axis];
-            pointerOut[axis] = invMass3 ? total * invMass3[k] : total;
+            last.pointerOut[static_cast<std::size_t>(axis)] = invMass3 ? total * invMass3[k] : total;
         }
         extras.dampingPower += pointerPower;
     }
+    if (defer) {
+        last.held = true;
+        m_pending = last;
+        return;
+    }
+    lastStage(last, then);
+}
+
+// Stage 3: f = F + P dV/dx with P = c / V of each layer (V <= 0: no force; the simulation
+// reports the layer as inside out), unpadded into the caller's 3-per-particle layout, and
+// xdot = v.
+void ForceModel::lastStage(const LastStage& last, const RangeWork* then) {
+    const Topology& topo = *m_topology;
+    const bool gas = m_terms.has(Term::Gas);
+    const double* f4 = m_force4.data();
+    const double* g4 = m_gradient4.data();
     const auto n3 = static_cast<std::ptrdiff_t>(3 * topo.particleCount());
     runChunks([&](int c) {
-        for (auto [begin, end] : m_ownedRanges[static_cast<std::size_t>(c)]) {
-            const double p = layerPressure(begin);  // each owned range lies in one layer (see partition())
-            kernels::unpad(f4, gas ? g4 : nullptr, p, invMass3, begin, end, out);
-            if (begin <= pulled && pulled < end) std::copy(pointerOut, pointerOut + 3, out + 3 * pulled);
-            if (xdot) std::copy(v + 3 * begin, v + 3 * end, xdot + 3 * begin);
-            if (then) {
-                const std::ptrdiff_t first = 3 * begin, length = 3 * (end - begin);
-                (*then)(first, length);
-                (*then)(n3 + first, length);
+        for (auto [rangeBegin, rangeEnd] : m_ownedRanges[static_cast<std::size_t>(c)]) {
+            // Each owned range lies in one layer (see partition()).
+            const double p = last.pressure[static_cast<std::size_t>(layerSlot(topo.layer[static_cast<std::size_t>(rangeBegin)]))];
+            // In blocks of kStageBlock particles, so that `then` finds the rows just written
+            // still in the L1 cache (element-wise work: the blocks change no bit).
+            for (int begin = rangeBegin; begin < rangeEnd; begin += kStageBlock) {
+                const int end = std::min(rangeEnd, begin + kStageBlock);
+                kernels::unpad(f4, gas ? g4 : nullptr, p, last.invMass3, begin, end, last.out);
+                if (begin <= last.pulled && last.pulled < end)
+                    std::copy(last.pointerOut.begin(), last.pointerOut.end(), last.out + 3 * last.pulled);
+                if (last.xdot) std::copy(last.v + 3 * begin, last.v + 3 * end, last.xdot + 3 * begin);
+                if (then) {
+                    const std::ptrdiff_t first = 3 * begin, length = 3 * (end - begin);
+                    (*then)(first, length);
+                    (*then)(n3 + first, length);
+                }
             }
         }
     });

@@ -127,6 +127,8 @@ public:
     static constexpr int kChunks = 2;
     // Bodies with fewer springs than this run as one chunk (threads would cost more than win).
     static constexpr std::size_t kChunkThreshold = 8192;
+    // Particles per block of the last stage (unpadding, xdot = v and the caller's `then`).
+    static constexpr int kStageBlock = 256;
 
     ForceModel() = default;
     ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms);
@@ -170,6 +172,17 @@ public:
     // read after its range is handed over, so `then` may overwrite them.
     void evaluateMotion(const double* x, const double* v, const double* invMass3, double* xdot,
                         double* a, ForceExtras& extras, bool count = true, const RangeWork* then = nullptr);
+    // The same with its last stage held back: extras are final, xdot and a are written by
+    // finishMotion(then), on the ranges of that call's pool run (so that the caller's next pass
+    // over them shares the run), or before anything else uses the force buffers (any other
+    // evaluation), whichever comes first; v and invMass3 must then still be there.
+    // dropMotion() forgets it (the caller's buffers are about to change or go away).
+    void evaluateMotionDeferred(const double* x, const double* v, const double* invMass3, double* xdot, double* a,
+                                ForceExtras& extras, bool count = true);
+    // Writes the held-back xdot and a (with `then` on their ranges, as evaluateMotion's);
+    // false when nothing is held back.
+    bool finishMotion(const RangeWork* then = nullptr);
+    void dropMotion() { m_pending.held = false; }
     // One particle's force split by part (ForcePart), for a free-body diagram. Every part is a
     // whole evaluation by evaluate() with only that part switched on (the other terms off, the
     // other spring families' stiffness and damping and the other layer's nRT set to 0, restored after), so
@@ -214,7 +227,21 @@ private:
     // evaluate() and evaluateMotion(): out = F (invMass3 == nullptr) or F * invMass3, and
     // xdot = v when xdot is given.
     void evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
-                      double* out, ForceExtras& extras, bool count, const RangeWork* then);
+                      double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer = false);
+    // An evaluation's last stage (unpadding, xdot = v, the pointer's particle, `then`): what it
+    // needs besides the padded buffers.
+    struct LastStage {
+        bool held = false;  // held back by evaluateMotionDeferred
+        const double* v = nullptr;
+        const double* invMass3 = nullptr;
+        double* xdot = nullptr;
+        double* out = nullptr;
+        std::array<double, 2> pressure{};  // per layer slot
+        int pulled = -1;                   // the pointer's particle, or -1
+        std::array<double, 3> pointerOut{};
+    };
+    void lastStage(const LastStage& last, const RangeWork* then);
+    LastStage m_pending;
 
     const Topology* m_topology = nullptr;
     const Eigen::VectorXd* m_mass = nullptr;

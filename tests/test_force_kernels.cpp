@@ -121,6 +121,45 @@ private slots:
         if (compared == 0) QSKIP("this build or CPU has only the portable kernels: nothing to compare with");
     }
 
+    // The integrators' stage sums (kernels::stageSum, rk4Sum) in every set against the plain
+    // element-wise sums they replaced (Eigen's y + c k and y + h/6 (k1 + 2 k2 + 2 k3 + k4)),
+    // bit for bit, for every length of the four- and eight-wide loops' remainders.
+    void stageSumsAreThePlainSums() {
+        const std::size_t n = 41;
+        Eigen::VectorXd y(n), k1(n), k2(n), k3(n), k4(n);
+        for (Eigen::Index i = 0; i < Eigen::Index(n); ++i) {
+            y[i] = 1.0 / (3.0 + double(i));
+            k1[i] = std::sin(0.7 * double(i)) * 1e3;
+            k2[i] = std::cos(1.3 * double(i)) / 7.0;
+            k3[i] = double(i) / 11.0 - 1.9;
+            k4[i] = std::exp(-0.1 * double(i)) * 3.3;
+        }
+        const double c = 0.0015, h6 = 0.003 / 6.0;
+        int compared = 0;
+        for (kernels::KernelSet set : {kernels::KernelSet::Portable, kernels::KernelSet::Avx2, kernels::KernelSet::Avx512}) {
+            if (set > kernels::widestKernels()) continue;
+            QCOMPARE(kernels::useKernels(set), set);
+            for (std::size_t length = 0; length <= n; ++length) {
+                const auto l = Eigen::Index(length);
+                Eigen::VectorXd out = Eigen::VectorXd::Constant(Eigen::Index(n), -5.0), expected = out;
+                kernels::stageSum(out.data(), y.data(), c, k2.data(), length);
+                expected.head(l) = y.head(l) + c * k2.head(l);
+                QVERIFY2(out == expected, qPrintable(QStringLiteral("stageSum, %1 kernels, length %2")
+                                                         .arg(QString::fromUtf8(kernels::kernelSetName(set)))
+                                                         .arg(length)));
+                Eigen::VectorXd sum = y;
+                expected = y;
+                kernels::rk4Sum(sum.data(), h6, k1.data(), k2.data(), k3.data(), k4.data(), length);
+                expected.head(l) += h6 * (k1.head(l) + 2.0 * k2.head(l) + 2.0 * k3.head(l) + k4.head(l));
+                QVERIFY2(sum == expected, qPrintable(QStringLiteral("rk4Sum, %1 kernels, length %2")
+                                                         .arg(QString::fromUtf8(kernels::kernelSetName(set)))
+                                                         .arg(length)));
+                ++compared;
+            }
+        }
+        QVERIFY(compared > 0);
+    }
+
     // Portable against a plain per-spring computation: the lane code over double (a block's
     // last springs) and over vectors give the same forces as F = [ks (L - L0) + kd (dv.u)] u.
     void portableSpringsMatchThePlainFormula() {

@@ -73,11 +73,15 @@ public:
     // Sizes the cache for states of `size` (when the body is built: nothing is allocated in a
     // step) and drops it.
     void prepareEnd(Eigen::Index size) {
+        m_forces.dropMotion();
         m_end.setZero(size);
         m_endValid = m_offered = false;
     }
     void keepEnd() { m_endValid = true; }
-    void dropEnd() { m_endValid = false; }
+    void dropEnd() {
+        m_forces.dropMotion();
+        m_endValid = false;
+    }
     bool endValid() const { return m_endValid; }
     // For the integrator step about to run: its first derivative() at the measured state takes
     // the kept derivative (once); withdrawEnd() after the step. The cache is then spent.
@@ -88,7 +92,7 @@ public:
     void withdrawEnd() { m_offered = false; }
     // The kept derivative and by-products, to checkpoint a run; restoreEnd puts them back as
     // measured at y (Simulation::snapshot, restore).
-    const Eigen::VectorXd& endDerivative() const { return m_end; }
+    const Eigen::VectorXd& endDerivative() const;
     const ForceExtras& endExtras() const { return m_endExtras; }
     void restoreEnd(const Eigen::VectorXd& y, const Eigen::VectorXd& derivative, const ForceExtras& extras);
 
@@ -110,7 +114,8 @@ public:
 private:
     Eigen::Index positions() const { return 3 * Eigen::Index{m_body.topology.particleCount()}; }
     // Takes the offered end-of-step derivative when y is the state it was measured at.
-    bool takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt);
+    // (With `then` run on dydt as the derivative's own would.)
+    bool takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const RangeWork* then);
     // Contact at the linearisation point: the walls' diagonal Jacobians and the layer
     // barrier's active pairs (see the .cpp), plus the design point when one is set.
     void linearizeContact(const Eigen::VectorXd& y);

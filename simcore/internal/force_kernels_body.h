@@ -201,9 +201,10 @@ template <class V>
         r.b[g] = index(quads.b[q + g]);
         rest[g] = quads.rest[q + g].data();
     }
-    const V xa = loadRows<V>(x, r.a), xb = loadRows<V>(x, r.b);
+    // (Inner rows by plain loads: a, b < n, so none is the array's last row.)
+    const V xa = loadInnerRows<V>(x, r.a), xb = loadInnerRows<V>(x, r.b);
     const V xA = loadRows<V>(xo, r.a), xB = loadRows<V>(xo, r.b);
-    const V va = loadRows<V>(v, r.a), vb = loadRows<V>(v, r.b);
+    const V va = loadInnerRows<V>(v, r.a), vb = loadInnerRows<V>(v, r.b);
     const V vA = loadRows<V>(vo, r.a), vB = loadRows<V>(vo, r.b);
     V dx, dy, dz, dvx, dvy, dvz;
     toColumns(xb - xa, xB - xA, xb - xA, xa - xB, dx, dy, dz);
@@ -377,6 +378,30 @@ inline void unpad(const double* f4, const double* g4, double p, const double* in
             const double f = g4 ? f4[4 * index(i) + axis] + p * g4[4 * index(i) + axis] : f4[4 * index(i) + axis];
             out[k] = invMass3 ? f * invMass3[k] : f;
         }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Stage sums
+
+inline void stageSum(double* out, const double* y, double c, const double* k, std::size_t n) {
+    const Widest vc = splat<Widest>(c);
+    constexpr std::size_t W = kLanes<Widest>;
+    std::size_t i = 0;
+    for (; i + W <= n; i += W) storeu(out + i, loadu<Widest>(y + i) + vc * loadu<Widest>(k + i));
+    for (; i < n; ++i) out[i] = y[i] + c * k[i];
+}
+
+inline void rk4Sum(double* y, double h6, const double* k1, const double* k2, const double* k3, const double* k4,
+                   std::size_t n) {
+    const Widest vh = splat<Widest>(h6), two = splat<Widest>(2.0);
+    constexpr std::size_t W = kLanes<Widest>;
+    std::size_t i = 0;
+    for (; i + W <= n; i += W) {
+        const Widest sum = ((loadu<Widest>(k1 + i) + two * loadu<Widest>(k2 + i)) + two * loadu<Widest>(k3 + i)) +
+                           loadu<Widest>(k4 + i);
+        storeu(y + i, loadu<Widest>(y + i) + vh * sum);
+    }
+    for (; i < n; ++i) y[i] = y[i] + h6 * (((k1[i] + 2.0 * k2[i]) + 2.0 * k3[i]) + k4[i]);
 }
 
 }  // namespace simcore::kernels::SIMCORE_SIMD_NS

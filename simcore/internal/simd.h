@@ -257,6 +257,20 @@ template <>
 [[gnu::always_inline]] inline Vec4 loadRows<Vec4>(const double* a, const std::size_t* p) {
     return loadRow(a, p[0]);
 }
+// The same for rows that are not the last of their array (the inner layer's, whose last row
+// is followed by the outer layer's first): one plain load per row instead of a masked one. The
+// fourth double (the next particle's x) is read but never used: the transposes to columns
+// drop it.
+template <class V>
+[[gnu::always_inline]] inline V loadInnerRows(const double* a, const std::size_t* p);
+template <>
+[[gnu::always_inline]] inline Vec4 loadInnerRows<Vec4>(const double* a, const std::size_t* p) {
+#if SIMCORE_SIMD_ISA >= 2
+    return _mm256_loadu_pd(a + 3 * p[0]);
+#else
+    return loadRow(a, p[0]);
+#endif
+}
 // Group g's row of a row block.
 [[gnu::always_inline]] inline Vec4 rowOf(Vec4 v, std::size_t) { return v; }
 
@@ -293,6 +307,10 @@ template <>
 template <>
 [[gnu::always_inline]] inline Vec8 loadRows<Vec8>(const double* a, const std::size_t* p) {
     return _mm512_insertf64x4(_mm512_castpd256_pd512(loadRow(a, p[0])), loadRow(a, p[1]), 1);
+}
+template <>
+[[gnu::always_inline]] inline Vec8 loadInnerRows<Vec8>(const double* a, const std::size_t* p) {
+    return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(a + 3 * p[0])), _mm256_loadu_pd(a + 3 * p[1]), 1);
 }
 [[gnu::always_inline]] inline Vec4 rowOf(Vec8 v, std::size_t group) { return group == 0 ? low(v) : high(v); }
 template <>
