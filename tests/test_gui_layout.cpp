@@ -21,10 +21,12 @@
 #include <QToolBar>
 
 #include "qcustomplot.h"
+#include "simcore/world.h"
 #include "test_support.h"
 #include "ui/compare_dialog.h"
 #include "ui/energy_bars_dock.h"
 #include "ui/gl_format.h"
+#include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/main_window.h"
 #include "ui/plot_ticks.h"
@@ -130,6 +132,7 @@ struct Setup {
     QString name;
     std::function<void(MainWindow&)> apply;
     double scale = 1.0;
+    QString language = QStringLiteral("en");  // applied before the window is made
 };
 
 Preset presetById(const QString& id) {
@@ -155,6 +158,13 @@ std::vector<Setup> setups() {
                        for (const QString& d : MainWindow::dockNames()) w.openDock(d);
                    }});
     out.push_back({"presentation-ring", [](MainWindow& w) { w.applyPreset(presetById("ring2d")); }, kPresentationScale});
+    // A scene of several bodies with its Bodies dock (its table, readout and add-a-body form),
+    // in the languages whose words are longest, and two views of it side by side.
+    for (const char* lang : {"fr", "de", "es"})
+        out.push_back({QStringLiteral("world-bodies-") + lang,
+                       [](MainWindow& w) { w.startWorld(*simcore::worldScene("collide2d")); }, 1.0, lang});
+    out.push_back({"world-side-by-side-fr",
+                   [](MainWindow& w) { w.startWorld(*simcore::worldScene("collide3d"), {"rk4", "euler"}); }, 1.0, "fr"});
     // Three views, the Run dock, the lesson and the energy bars in 1280 px at the presentation size
     // (1.5x; at 2x they need ~1430 px: docs/gui.md, Known limits).
     out.push_back({"presentation-energy-drift", [](MainWindow& w) { w.applyLesson(*findLesson("energy-drift")); },
@@ -175,7 +185,10 @@ private slots:
         if (screenArea().width() > 1280) QSKIP("the 1920 x 1080 layouts run in Release only");
 #endif
     }
-    void cleanup() { setUiScale(1.0); }
+    void cleanup() {
+        setUiScale(1.0);
+        applyLanguage(QStringLiteral("en"));
+    }
 
     void fitWithinKeepsTheWindowOnTheScreen() {
         const QRect screen(0, 0, 1280, 800);
@@ -228,6 +241,7 @@ private slots:
     void nothingIsCutOff() {
         QFETCH(int, index);
         const Setup setup = setups()[std::size_t(index)];
+        applyLanguage(setup.language);
         MainWindow w(false);
         w.setUiScale(setup.scale);
         w.show();
