@@ -93,7 +93,9 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
 void BodiesDock::createPlots(QWidget* host) {
     const QString titles[] = {tr("Total momentum"), tr("min_gap"), tr("Volume per body and layer"),
                               tr("Pressure per body and layer")};
-    const QString labels[] = {tr("momentum [kg m/s]"), tr("gap [m]"), tr("volume"), tr("pressure")};
+    // Short axis labels: the title says what is plotted, and a long label ("quantité de
+    // mouvement [kg m/s]") did not fit the plot's height.
+    const QString labels[] = {tr("p [kg m/s]"), tr("gap [m]"), tr("volume"), tr("pressure")};
     // The plots directly in the scrolled widget (as the Plots dock's), shown with the content.
     for (int k = 0; k < 4; ++k) {
         auto* p = new QCustomPlot(host);
@@ -139,8 +141,13 @@ QWidget* BodiesDock::createAddBox() {
     m_add->setObjectName(QStringLiteral("addBody"));
     m_remove = new QPushButton(tr("Remove selected"), addBox);
     m_remove->setObjectName(QStringLiteral("removeBody"));
-    grid->addWidget(m_add, 3, 1, 1, 2);
-    grid->addWidget(m_remove, 3, 3);
+    // The buttons in a row of their own under the fields, not beside the labels' column: in
+    // French the labels and the two buttons side by side needed 378 px, wider than the dock's
+    // 334 px beside two views at 1280 px (the content was cut at the window's edge).
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_add);
+    buttons->addWidget(m_remove);
+    grid->addLayout(buttons, 3, 0, 1, 4);
     connect(m_add, &QPushButton::clicked, this, &BodiesDock::addBody);
     connect(m_remove, &QPushButton::clicked, this, &BodiesDock::removeBody);
     connect(m_kind, &QComboBox::currentIndexChanged, this, [this] {
