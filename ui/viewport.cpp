@@ -992,8 +992,8 @@ void Viewport::updateOverlay() {
     if (lane.world && m_frame->lanes.size() > 1) {
         const Eigen::Vector3d& p = lane.world->momentum;
         const bool flat = m_frame->scene->topology.dimension < 3;
-        const QString momentum = flat ? QStringLiteral("(%1, %2)").arg(num(p.x(), 'g', 3), num(p.y(), 'g', 3))
-                                      : QStringLiteral("(%1, %2, %3)").arg(num(p.x(), 'g', 3), num(p.y(), 'g', 3), num(p.z(), 'g', 3));
+        const QString momentum = flat ? QStringLiteral("(%1, %2)").arg(num(p.x(), 'g', 4), num(p.y(), 'g', 4))
+                                      : QStringLiteral("(%1, %2, %3)").arg(num(p.x(), 'g', 4), num(p.y(), 'g', 4), num(p.z(), 'g', 4));
         html += QStringLiteral("<br>") + tr("momentum %1 kg m/s").arg(momentum).toHtmlEscaped();
         const QString gap = num(lane.world->minGap, 'g', 3);
         html += QStringLiteral("<br>") + (lane.world->minGapBodies[0] >= 0 ? tr("min_gap %1 m").arg(gap)
