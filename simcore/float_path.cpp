@@ -32,6 +32,7 @@
 
 #include "simcore/force_kernels.h"
 #include "simcore/forces.h"
+#include "simcore/internal/compensated_time.h"
 #include "simcore/parallel.h"
 
 // The AVX2 passes on x86-64 with GCC, unless the build asks for portable kernels only
@@ -911,7 +912,7 @@ bool FloatSimulation::step() {
     m_impl->step(m_integrator, static_cast<float>(m_dt), m_dt);
     ++m_step;
     const double started = m_time;
-    m_time += m_dt;
+    m_time = advanceTime(started, m_dt, m_timeCarry);
     m_impl->measured = false;
     if (std::string reason = m_impl->check(); !reason.empty()) {
         m_failure = Failure{reason, m_step, started};

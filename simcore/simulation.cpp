@@ -9,6 +9,7 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/internal/body_ode.h"
+#include "simcore/internal/compensated_time.h"
 #include "simcore/internal/world_body.h"
 
 namespace simcore {
@@ -399,11 +400,7 @@ bool Simulation::check(StepWork& w) {
 bool Simulation::commit(StepWork& w) {
     m_diag = w.next;
     m_diag.step += 1;
-    // Compensated (Kahan) sum: a million steps of 0.003 s land on the intended time, so
-    // advanceTo() never takes an extra step from accumulated round-off.
-    const double increment = w.report.h - m_timeCarry;
-    m_diag.time = w.t0 + increment;
-    m_timeCarry = (m_diag.time - w.t0) - increment;
+    m_diag.time = advanceTime(w.t0, w.report.h, m_timeCarry);
     m_diag.dt = w.report.h;
     m_diag.errorEstimate = w.report.errorEstimate;
     if (m_integrator->adaptive() && w.report.errorEstimate >= 0.0) m_lastError = m_integrator->localError();
