@@ -91,16 +91,7 @@ StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterS
     resize(1000, 720);
     auto* layout = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
-    auto* scene = new QLabel(m_world ? tr("Scene: <b>%1</b>, %2 bodies, with the current parameters (the whole world: "
-                                          "every run moves every body)")
-                                           .arg(QString::fromStdString(m_world->name).toHtmlEscaped())
-                                           .arg(m_world->bodies.size())
-                                     : tr("Scene: <b>%1</b> with the current parameters")
-                                           .arg(toQString(simcore::sceneInfo(params.kind()).name)),
-                             this);
-    scene->setObjectName(QStringLiteral("studyScene"));
-    scene->setWordWrap(true);
-    layout->addWidget(scene);
+    layout->addWidget(makeSceneLabel());
     auto* integrators = new QWidget(this);
     auto* grid = new QGridLayout(integrators);
     grid->setContentsMargins(0, 0, 0, 0);
@@ -264,6 +255,19 @@ void StudyDialogBase::exportResults() {
 }
 
 // ---------------------------------------------------------------- work-precision
+
+QLabel* StudyDialogBase::makeSceneLabel() {
+    auto* scene = new QLabel(m_world ? tr("Scene: <b>%1</b>, %2 bodies, with the current parameters (the whole world: "
+                                          "every run moves every body)")
+                                           .arg(QString::fromStdString(m_world->name).toHtmlEscaped())
+                                           .arg(m_world->bodies.size())
+                                     : tr("Scene: <b>%1</b> with the current parameters")
+                                           .arg(toQString(simcore::sceneInfo(m_params.kind()).name)),
+                             this);
+    scene->setObjectName(QStringLiteral("studyScene"));
+    scene->setWordWrap(true);
+    return scene;
+}
 
 std::string StudyDialogBase::sceneName() const {
     return m_world ? m_world->name : std::string(simcore::sceneInfo(m_params.kind()).name);

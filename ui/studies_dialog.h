@@ -76,6 +76,7 @@ protected:
 
     // The scene's name in titles and file names: the world's or the body's.
     std::string sceneName() const;
+    QLabel* makeSceneLabel();  // "Scene: ... with the current parameters" (the first line)
     simcore::ParameterSet m_params;
     std::optional<simcore::WorldSpec> m_world;  // a scene of several bodies, or none
     QWidget* m_options = nullptr;  // subclasses add their fields here (a QFormLayout)
