@@ -111,6 +111,26 @@ private slots:
         QVERIFY2(!window.bodiesDock()->readoutText().contains("0.0"), qPrintable(window.bodiesDock()->readoutText()));
     }
 
+    // A Bodies dock shown after a run (closed, or behind the Plots tab, while it ran) puts the
+    // points it took in view at once: before, its axes stayed empty until the next frame.
+    void theBodiesDockShowsARunItMissed() {
+        MainWindow window(false);
+        window.show();
+        SimulationController* c = window.controller();
+        window.startWorld(scene("collide2d", {"gravity=0"}));
+        BodiesDock* bodies = window.bodiesDock();
+        QVERIFY(waitUntil([&] { return bodies->isVisible(); }));
+        bodies->hide();
+        c->runUntil(0.5);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.running && f.world && f.world->time >= 0.5 - 1e-9; }));
+        QVERIFY(waitUntil([&] { return bodies->plottedPoints() >= 2; }));
+        const double end = c->latest()->world->time;
+        QVERIFY(bodies->shownTimeEnd("momentum") != end);  // hidden: not redrawn
+        bodies->show();
+        for (const char* id : {"momentum", "gap", "volume", "pressure"})
+            QVERIFY2(waitUntil([&] { return bodies->shownTimeEnd(id) == end; }), id);
+    }
+
     void parametersPerBody() {
         MainWindow window(false);
         window.show();

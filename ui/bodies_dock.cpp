@@ -88,6 +88,12 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
     m_content->hide();
     scroll->setWidget(host);
     setWidget(scroll);
+    // The points a hidden dock took (a run before it was shown, or behind the Plots tab) are
+    // put in view when it is shown: before, its plots kept their empty axes until the next
+    // frame, and a screenshot after a run showed none of its curves.
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) refreshPlots();
+    });
 }
 
 void BodiesDock::createPlots(QWidget* host) {
@@ -292,13 +298,18 @@ void BodiesDock::addPoints(const simcore::WorldDiagnostics& d) {
                 plot(QStringLiteral("volume"))->graph(int(2 * k) + layer)->addData(d.time, d.bodies[k].volume[std::size_t(layer)]);
                 plot(QStringLiteral("pressure"))->graph(int(2 * k) + layer)->addData(d.time, d.bodies[k].pressure[std::size_t(layer)]);
             }
-        if (isVisible())
-            for (QCustomPlot* p : m_plots) {
-                p->rescaleAxes();
-                p->replot(QCustomPlot::rpQueuedReplot);
-            }
+        if (isVisible()) refreshPlots();
     }
 }
+
+void BodiesDock::refreshPlots() {
+    for (QCustomPlot* p : m_plots) {
+        p->rescaleAxes();
+        p->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+double BodiesDock::shownTimeEnd(const QString& plotId) const { return plot(plotId)->xAxis->range().upper; }
 
 QString BodiesDock::readoutText() const { return m_readout->text(); }
 
