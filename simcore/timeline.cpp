@@ -52,15 +52,20 @@ bool TimelineRecorder::record(long index, const std::vector<const Simulation*>& 
     return true;
 }
 
-bool TimelineRecorder::record(long index, const World& world, std::vector<double> extra) {
-    const bool exact = world.integrator().restorable();
+bool TimelineRecorder::record(long index, const std::vector<const World*>& worlds, std::vector<double> extra) {
+    bool exact = true;
+    for (const World* world : worlds) exact = exact && world->integrator().restorable();
     if (!keeps(index, exact)) return false;
     TimelineCheckpoint c;
     c.index = index;
     c.exact = exact;
     c.extra = std::move(extra);
-    c.world = world.snapshot();
-    c.bytes = sizeof(TimelineCheckpoint) + sizeof(double) * c.extra.capacity() + c.world->bytes();
+    c.worlds.reserve(worlds.size());
+    c.bytes = sizeof(TimelineCheckpoint) + sizeof(double) * c.extra.capacity();
+    for (const World* world : worlds) {
+        c.worlds.push_back(world->snapshot());
+        c.bytes += c.worlds.back().bytes();
+    }
     add(std::move(c));
     return true;
 }

@@ -9,8 +9,8 @@
 //
 // Budget: when the checkpoints hold more bytes than the budget, every other one is dropped
 // (the interval doubles), never the run's first: the whole run stays reachable, re-simulated
-// from further back. A world of several bodies is recorded the same way (its WorldSnapshot in
-// place of the lanes'). A lane whose integrator cannot be restored exactly (CVODE) is recorded at
+// from further back. A world of several bodies is recorded the same way (a WorldSnapshot per lane
+// in place of the lanes' SimulationSnapshots). A lane whose integrator cannot be restored exactly (CVODE) is recorded at
 // every moment instead (no re-simulation); thinned, only the moments kept remain exact.
 
 #include <cstddef>
@@ -24,7 +24,7 @@ namespace simcore {
 struct TimelineCheckpoint {
     long index = 0;                         // the moment: steps since the timeline began
     std::vector<SimulationSnapshot> lanes;  // every lane's state at that moment
-    std::optional<WorldSnapshot> world;     // or the world's (a scene of several bodies)
+    std::vector<WorldSnapshot> worlds;      // or every world's (a scene of several bodies, one per lane)
     std::vector<double> extra;              // the caller's own state at that moment
     bool exact = true;                      // every lane can be re-simulated from here
     std::size_t bytes = 0;
@@ -47,8 +47,8 @@ public:
     // cannot be re-simulated exactly. Then thins to the budget. Returns whether it kept one.
     bool record(long index, const std::vector<const Simulation*>& lanes,
                 std::vector<double> extra = {});
-    // The same for a world of several bodies (one World instead of the lanes).
-    bool record(long index, const World& world, std::vector<double> extra = {});
+    // The same for a scene of several bodies (one World per lane instead of the Simulations).
+    bool record(long index, const std::vector<const World*>& worlds, std::vector<double> extra = {});
     // A branch at `index`: forgets every moment after it.
     void truncateAfter(long index);
     // The checkpoint to start from for moment `index`: the latest at or before it (nullptr

@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "simcore/params.h"
+#include "simcore/world.h"
 
 namespace simlab {
 
@@ -40,6 +41,9 @@ struct ConservationSpec {
     double dt = 0.0;          // H [s]
     int samples = 120;        // log-spaced sample times (at most)
     std::string precision = "double";  // double | float (spring1d only)
+    // A scene of several bodies asked for (the GUI's Studies menu on a world): refused by
+    // checkConservation, which studies one body, with the words the CLI's refusal has.
+    std::optional<simcore::WorldSpec> world;
 };
 
 struct ConservationRow {

@@ -151,11 +151,22 @@ SceneSetup resolveScene(const SceneRequest& request) {
     return setup;
 }
 
-void checkLanes(const simcore::ParameterSet& params, const std::vector<std::string>& integrators) {
+namespace {
+void checkLaneCount(const std::vector<std::string>& integrators) {
     checkIntegrators(integrators);
     if (integrators.size() > 3)
         refuse("--compare takes one to three integrators, got " + std::to_string(integrators.size()));
+}
+}  // namespace
+
+void checkLanes(const simcore::ParameterSet& params, const std::vector<std::string>& integrators) {
+    checkLaneCount(integrators);
     for (const std::string& name : integrators) refuseIf(simcore::validateShape(params, name));
+}
+
+void checkLanes(const simcore::WorldSpec& world, const std::vector<std::string>& integrators) {
+    checkLaneCount(integrators);
+    checkWorldIntegrators(world, integrators);
 }
 
 // --- files -------------------------------------------------------------------------------------------
@@ -320,6 +331,7 @@ void checkStability(const simlab::StabilitySpec& spec) {
 }
 
 void checkConservation(const simlab::ConservationSpec& spec) {
+    if (spec.world) refuse(severalBodiesMessage(spec.world->name));
     checkIntegrators(spec.integrators);
     refuseIf(simlab::validateConservation(spec));
     for (const std::string& name : spec.integrators) refuseIf(simcore::validateShape(spec.params, name));

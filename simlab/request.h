@@ -88,6 +88,9 @@ SceneSetup resolveWorld(simcore::WorldSpec spec, const SceneRequest& request, Sc
 // Side by side (the GUI's --compare): one to three integrators, each known, listed once, and
 // each lane's memory with its integrator within the limit.
 void checkLanes(const simcore::ParameterSet& params, const std::vector<std::string>& integrators);
+// The same for a scene of several bodies: the same count and names, each lane's world with its
+// integrator by checkWorldIntegrators (every body's shape and memory, xpbd's one set of springs).
+void checkLanes(const simcore::WorldSpec& world, const std::vector<std::string>& integrators);
 
 // --- files ---------------------------------------------------------------------------------------
 

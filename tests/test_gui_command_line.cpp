@@ -65,6 +65,13 @@ private slots:
         QTest::newRow("compare empty item") << QStringList{"--compare", "rk4,,euler"} << "compare";
         QTest::newRow("compare repeat") << QStringList{"--compare", "rk4,rk4"} << "listed twice";
         QTest::newRow("compare four") << QStringList{"--compare", "rk4,euler,verlet,midpoint"} << "--compare takes one to three integrators, got 4";
+        // A world side by side: each lane by the front door (simlab::checkLanes of the world):
+        // xpbd's one set of springs for the whole world, and the lane count.
+        QTest::newRow("world compare xpbd")
+            << QStringList{"--scene", "collide2d", "--set", "body2.ks=500", "--compare", "rk4,xpbd"}
+            << "xpbd takes one stiffness and damping per spring family for the whole world, and body 2's springs differ";
+        QTest::newRow("world compare four") << QStringList{"--scene", "collide2d", "--compare", "rk4,euler,verlet,midpoint"}
+                                            << "--compare takes one to three integrators, got 4";
         QTest::newRow("dock") << QStringList{"--docks", "timeline,nope"} << "unknown dock 'nope'; allowed:";
         QTest::newRow("after nan") << QStringList{"--screenshot", shot, "--after", "nan"} << "--after needs a finite time in seconds, 0 to 1e6";
         QTest::newRow("after big") << QStringList{"--screenshot", shot, "--after", "2e6"} << "--after needs a finite time";
@@ -124,6 +131,17 @@ private slots:
         QVERIFY(r->stepDoubling && r->highContrast && r->experiments);
         QCOMPARE(r->fpsSeconds, 0.0);
         QVERIFY(!QFile::exists(shot));  // the probe writes nothing
+    }
+
+    // --compare takes a world (issue 26): the lanes' integrators with the world's spec.
+    void aWorldSideBySide() {
+        QString error;
+        const auto r = requestFor({"--scene", "collide2d", "--set", "body2.mass=4", "--compare", "rk4,euler,xpbd"}, &error);
+        QVERIFY2(r, qPrintable(error));
+        QVERIFY(r->setup.world);
+        QCOMPARE(r->setup.world->bodies.size(), std::size_t{2});
+        QCOMPARE(r->setup.world->bodies[1].params.get(simcore::Param::Mass), 4.0);
+        QCOMPARE(r->integrators, QStringList({"rk4", "euler", "xpbd"}));
     }
 
     void aSceneFileGivenAloneAndAPreset() {

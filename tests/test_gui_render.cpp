@@ -15,6 +15,7 @@
 #include <QTest>
 
 #include "simcore/scenes.h"
+#include "simcore/world.h"
 #include "simlab/scenefile.h"
 #include "test_support.h"
 #include "ui/export.h"
@@ -223,6 +224,44 @@ private slots:
         QVERIFY2(!w.viewports()[1]->overlayText().contains("distance"), qPrintable(w.viewports()[1]->overlayText()));
         QVERIFY(!w.viewports()[0]->overlayText().contains("distance"));
         QVERIFY(w.viewports()[0]->overlayText().contains("Blew up"));
+    }
+
+    // A world side by side (issue 26): each view draws every body in its hue (body 1 orange,
+    // body 2 blue) and its text gives its integrator, time, momentum and min_gap; euler's view
+    // fails (bodies 1 and 2 intersect at t = 0.756 s at DT 0.006, as elastic-lab-cli run says)
+    // with its own red line while rk4's runs on to the end.
+    void aWorldSideBySide() {
+        MainWindow w(false);
+        w.resize(1280, 800);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w, testsupport::kHangGuardMs));
+        simcore::WorldSpec spec = *simcore::worldScene("collide2d");
+        for (const char* a : {"gravity=0", "dt=0.006"}) QVERIFY(!simcore::assignWorld(spec, a));
+        w.startWorld(spec, {"euler", "rk4"});
+        QTRY_COMPARE_WITH_TIMEOUT(int(w.viewports().size()), 2, testsupport::kHangGuardMs);
+        w.controller()->runUntil(1.0);
+        QTRY_VERIFY_WITH_TIMEOUT(!w.controller()->running() && w.controller()->latest()->lanes.size() == 2 &&
+                                     w.controller()->latest()->lanes[1].diagnostics.time >= 1.0 - 1e-9,
+                                 testsupport::kHangGuardMs);
+        const FramePtr f = w.controller()->latest();
+        QVERIFY(f->lanes[0].failure && !f->lanes[1].failure);
+        QVERIFY2(f->lanes[0].failure->reason.find("bodies 1 and 2 intersect") != std::string::npos,
+                 f->lanes[0].failure->reason.c_str());
+        QVERIFY(std::abs(f->lanes[0].failure->time - 0.756) < 1e-9);
+        QTRY_VERIFY_WITH_TIMEOUT(w.viewports()[0]->frame() == f && w.viewports()[1]->frame() == f, testsupport::kHangGuardMs);
+        const QString failed = w.viewports()[0]->overlayText(), live = w.viewports()[1]->overlayText();
+        QVERIFY2(failed.contains("euler") && failed.contains("Blew up at t = 0.756 s") && failed.contains("bodies 1 and 2 intersect"),
+                 qPrintable(failed));
+        QVERIFY2(live.contains("rk4") && live.contains("t = 1.002 s") && live.contains("momentum (") &&
+                     live.contains("min_gap ") && !live.contains("Blew up"),
+                 qPrintable(live));
+        QVERIFY(failed.contains("momentum (") && failed.contains("min_gap "));  // its last good state's
+        QVERIFY(w.failureText().isEmpty());  // side by side each view says it, as for one body
+        for (Viewport* v : w.viewports()) {
+            const Census c = census(v->grabFramebuffer());
+            QVERIFY2(c.orange > 0.002 && c.bluish > 0.002,
+                     qPrintable(QString("%1: orange %2, blue %3").arg(v->objectName()).arg(c.orange).arg(c.bluish)));
+        }
     }
 
     void mouseDragGrabsAndPulls() {

@@ -1,7 +1,7 @@
 // Scenes of several bodies in the window (issue 26), offscreen: the frames carry every body,
 // the Parameters dock edits one body (or all), the Bodies dock reads momentum and min_gap and
-// plots per body, a body is added and removed, the mouse drags a particle of any body, and what
-// a world has not yet (the stability map, the studies, side by side) says so.
+// plots per body, a body is added and removed, the mouse drags a particle of any body, the
+// Studies menu on a world, and side by side: a world per view with its own integrator.
 #include <cmath>
 
 #include <QAction>
@@ -28,6 +28,8 @@
 #include "ui/plot_dock.h"
 #include "ui/simulation_controller.h"
 #include "ui/stability_map_dock.h"
+#include "ui/studies_dialog.h"
+#include "simlab/request.h"
 
 using namespace elui;
 using testsupport::waitUntil;
@@ -107,6 +109,26 @@ private slots:
         QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.running && f.world && f.world->time >= 1.3 - 1e-9; }));
         QVERIFY(waitUntil([&] { return window.bodiesDock()->readoutText().contains("0,0"); }));
         QVERIFY2(!window.bodiesDock()->readoutText().contains("0.0"), qPrintable(window.bodiesDock()->readoutText()));
+    }
+
+    // A Bodies dock shown after a run (closed, or behind the Plots tab, while it ran) puts the
+    // points it took in view at once: before, its axes stayed empty until the next frame.
+    void theBodiesDockShowsARunItMissed() {
+        MainWindow window(false);
+        window.show();
+        SimulationController* c = window.controller();
+        window.startWorld(scene("collide2d", {"gravity=0"}));
+        BodiesDock* bodies = window.bodiesDock();
+        QVERIFY(waitUntil([&] { return bodies->isVisible(); }));
+        bodies->hide();
+        c->runUntil(0.5);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.running && f.world && f.world->time >= 0.5 - 1e-9; }));
+        QVERIFY(waitUntil([&] { return bodies->plottedPoints() >= 2; }));
+        const double end = c->latest()->world->time;
+        QVERIFY(bodies->shownTimeEnd("momentum") != end);  // hidden: not redrawn
+        bodies->show();
+        for (const char* id : {"momentum", "gap", "volume", "pressure"})
+            QVERIFY2(waitUntil([&] { return bodies->shownTimeEnd(id) == end; }), id);
     }
 
     void parametersPerBody() {
@@ -201,7 +223,10 @@ private slots:
         QVERIFY(waitForFrame(*c, [](const Frame& g) { return !g.lanes[0].pointer.active; }));
     }
 
-    void whatAWorldHasNotSaysSo() {
+    // The Studies menu takes a world where simlab does (work-precision, refinement, the
+    // stability scan: the CLI's study, study --refine and stability of the whole world) and
+    // refuses long-time energy with simlab's own words.
+    void theStudiesMenuOnAWorld() {
         MainWindow window(false);
         window.show();
         SimulationController* c = window.controller();
@@ -217,11 +242,61 @@ private slots:
         worlds->menu()->actions().at(0)->trigger();
         QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world != nullptr; }));
         QVERIFY(c->isWorld());
-        // The studies of one body refuse a world with a message box.
+        QMenu* studies = nullptr;
         for (QAction* a : window.menuBar()->actions())
-            if (a->menu() && a->text().contains("tudies")) a->menu()->actions().at(0)->trigger();
+            if (a->menu() && a->text().contains("tudies")) studies = a->menu();
+        QVERIFY(studies);
+        // Work-precision, refinement and the stability scan open on the world.
+        for (int i = 0; i < 3; ++i) {
+            studies->actions().at(i)->trigger();
+            const auto dialogs = window.findChildren<StudyDialogBase*>();
+            QCOMPARE(dialogs.size(), qsizetype(i + 1));
+            const QLabel* label = dialogs.back()->findChild<QLabel*>("studyScene");
+            QVERIFY2(label && label->text().contains("collide2d") && label->text().contains("2 bodies"),
+                     qPrintable(label ? label->text() : QString()));
+        }
+        QVERIFY(window.findChild<QMessageBox*>() == nullptr);
+        // Long-time energy is one body's in simlab: its refusal, in its words.
+        studies->actions().at(3)->trigger();
         QVERIFY(waitUntil([&] { return window.findChild<QMessageBox*>() != nullptr; }));
-        QVERIFY(window.findChild<QMessageBox*>()->text().contains("one body"));
+        const QString refusal = window.findChild<QMessageBox*>()->text();
+        simlab::ConservationSpec spec;
+        spec.world = *c->latest()->worldSpec;
+        QString expected;
+        try {
+            simlab::checkConservation(spec);
+        } catch (const simlab::RequestError& e) {
+            expected = QString::fromStdString(e.what());
+        }
+        QVERIFY(expected.contains("is a scene of several bodies"));
+        QCOMPARE(refusal, expected);
+        QVERIFY(window.findChildren<ConservationDialog*>().isEmpty());
+        // The work-precision dialog studies the whole world: its rows are simlab's runStudy of the
+        // world's spec (the CLI's study --scene collide2d), not body 1's alone.
+        auto* wp = window.findChildren<WorkPrecisionDialog*>().front();
+        wp->setChosenIntegrators({"euler", "midpoint"});
+        wp->setSteps("0.002 0.001");
+        wp->setDuration(0.02);
+        wp->setRepeats(1);
+        QSignalSpy finished(wp, &StudyDialogBase::finished);
+        wp->start();
+        QVERIFY(waitUntil([&] { return finished.count() == 1; }));
+        simlab::StudySpec direct;
+        direct.params = c->parameters();
+        direct.world = *c->latest()->worldSpec;
+        direct.integrators = {"euler", "midpoint"};
+        direct.dts = {0.002, 0.001};
+        direct.duration = 0.02;
+        direct.repeat = 1;
+        const simlab::StudyResult want = simlab::runStudy(direct);
+        const auto& got = wp->result().rows;
+        QCOMPARE(got.size(), want.rows.size());
+        for (std::size_t i = 0; i < got.size(); ++i) {
+            QVERIFY(got[i].ok);
+            QCOMPARE(got[i].errorMax, want.rows[i].errorMax);
+        }
+        direct.world.reset();  // body 1 alone is another study
+        QVERIFY(simlab::runStudy(direct).rows.front().errorMax != got.front().errorMax);
         // Back to one body: the map maps again, the Bodies dock says what it is for.
         window.startScene(simcore::ParameterSet(simcore::SceneKind::Ring2d), {"rk4"});
         QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world == nullptr && f.scene && !f.scene->isWorld(); }));
@@ -229,6 +304,64 @@ private slots:
         QVERIFY(waitUntil([&] { return window.stabilityMapDock()->shownBodies() == 0 && window.stabilityMapDock()->pointCount() > 0; }));
         QVERIFY(window.plotDock()->plotIds().contains(QStringLiteral("volume")));
     }
+
+    // Side by side for a world: the same world in each view with its own integrator, every body
+    // in each view, each view's momentum and min_gap (its text: test_gui_render); the front door
+    // checks each lane; the timeline holds every view's world; back to a single view.
+    void aWorldSideBySide() {
+        MainWindow window(false);
+        window.show();
+        SimulationController* c = window.controller();
+        window.startWorld(scene("collide2d", {"gravity=0", "body2.mass=4"}));
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.world != nullptr; }));
+        QAction* sideBySide = nullptr;
+        for (QAction* a : window.findChildren<QAction*>())
+            if (a->text() == "&Side by side...") sideBySide = a;
+        QVERIFY(sideBySide && sideBySide->isEnabled());
+        QCOMPARE(window.sideBySide({"rk4", "euler"}), QString());
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.lanes.size() == 2 && f.world; }));
+        QCOMPARE(c->integrators(), QStringList({"rk4", "euler"}));
+        c->runUntil(1.2);
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return !f.running && f.lanes.size() == 2 && f.lanes[0].diagnostics.time >= 1.2 - 1e-9; }));
+        const FramePtr end = c->latest();
+        const int particles = end->scene->bodies[1].first + end->scene->bodies[1].count;
+        QCOMPARE(end->lanes[0].integrator, QString("rk4"));
+        QCOMPARE(end->lanes[1].integrator, QString("euler"));
+        for (const LaneFrame& lane : end->lanes) {
+            QVERIFY(lane.world && !lane.failure);
+            QCOMPARE(int(lane.positions.size()), 3 * particles);  // every body in every view
+            QCOMPARE(lane.diagnostics.time, end->lanes[0].diagnostics.time);  // one clock
+            QVERIFY(std::abs(lane.world->momentum.x() + 144.0) < 1e-8);  // each conserves it
+            QVERIFY(lane.world->minGap > 0.0 && lane.world->minGap < 0.2);  // through the impact
+        }
+        QCOMPARE(end->world, end->lanes[0].world);
+        QVERIFY(end->lanes[1].divergence > 1e-6);  // euler is not rk4
+        QVERIFY(end->lanes[0].world->minGap != end->lanes[1].world->minGap);
+        // The plots get the other view's rows, at the common times.
+        QCOMPARE(c->viewHistory().size(), std::size_t{1});
+        QVERIFY(!c->viewHistory()[0].empty());
+        QCOMPARE(c->viewHistory()[0].back().time, end->lanes[1].diagnostics.time);
+        // The timeline records both worlds: back and forward again, bit for bit in each view.
+        c->scrubBy(-7);
+        QVERIFY(waitForFrame(*c, [&](const Frame& f) { return f.timeline.moment == end->timeline.moment - 7; }));
+        QVERIFY(c->latest()->lanes[1].positions != end->lanes[1].positions);
+        c->scrubToEnd();
+        QVERIFY(waitForFrame(*c, [&](const Frame& f) { return f.timeline.moment == end->timeline.moment; }));
+        for (int v = 0; v < 2; ++v) QVERIFY(c->latest()->lanes[std::size_t(v)].positions == end->lanes[std::size_t(v)].positions);
+        // The front door checks each lane: xpbd needs one set of springs for the whole world.
+        window.startWorld(scene("collide2d", {"gravity=0", "body2.ks=500"}), {"rk4", "euler"});
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.lanes.size() == 2 && f.world && f.lanes[0].diagnostics.time == 0.0 &&
+                                                             f.worldSpec->bodies[1].params.get(simcore::Param::Ks) == 500.0; }));
+        const QString refusal = window.sideBySide({"rk4", "xpbd"});
+        QVERIFY2(refusal.contains("xpbd takes one stiffness and damping per spring family for the whole world"), qPrintable(refusal));
+        QCOMPARE(c->integrators(), QStringList({"rk4", "euler"}));
+        // One view again: the world alone with the first view's integrator.
+        window.singleView();
+        QVERIFY(waitForFrame(*c, [](const Frame& f) { return f.lanes.size() == 1 && f.world; }));
+        QCOMPARE(c->latest()->lanes[0].integrator, QString("rk4"));
+        QCOMPARE(c->latest()->worldSpec->bodies[1].params.get(simcore::Param::Ks), 500.0);
+    }
+
 };
 
 QTEST_MAIN(TestGuiWorld)

@@ -522,10 +522,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>momentum [kg m/s]</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>gap [m]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -599,6 +595,10 @@
     </message>
     <message>
         <source>A world keeps at least one body.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>p [kg m/s]</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1560,24 +1560,12 @@ Plots, parameters and exports still work.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Work-precision studies</source>
+        <source>Long-time energy</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Refinement studies</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stability scans</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Long-time energy studies</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV (per-body columns, momentum, min_gap), and the Bodies dock its curves.</source>
-        <translation type="unfinished"></translation>
+        <source>Side by side</source>
+        <translation type="unfinished">جنبًا إلى جنب</translation>
     </message>
 </context>
 <context>
@@ -2604,6 +2592,10 @@ Plots, parameters and exports still work.</source>
         <source>Wrote %1</source>
         <translation>كُتب %1</translation>
     </message>
+    <message>
+        <source>Scene: &lt;b&gt;%1&lt;/b&gt;, %2 bodies, with the current parameters (the whole world: every run moves every body)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>elui::TimelineDock</name>
@@ -2704,6 +2696,18 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>Forces on particle %1 of body %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>momentum %1 kg m/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>min_gap %1 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>min_gap beyond %1 m</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -522,10 +522,6 @@
         <translation>Druck je Körper und Schicht</translation>
     </message>
     <message>
-        <source>momentum [kg m/s]</source>
-        <translation>Impuls [kg m/s]</translation>
-    </message>
-    <message>
         <source>gap [m]</source>
         <translation>Abstand [m]</translation>
     </message>
@@ -600,6 +596,10 @@
     <message>
         <source>A world keeps at least one body.</source>
         <translation>Eine Welt behält mindestens einen Körper.</translation>
+    </message>
+    <message>
+        <source>p [kg m/s]</source>
+        <translation>p [kg m/s]</translation>
     </message>
 </context>
 <context>
@@ -1562,24 +1562,12 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <translation>%1: mehrere Körper. Das Dock „Körper“ zeigt Impuls und min_gap; „Parameter“ hat eine Körperauswahl. Drücken Sie Start (Leertaste).</translation>
     </message>
     <message>
-        <source>Work-precision studies</source>
-        <translation>Aufwand-Genauigkeits-Studien</translation>
+        <source>Long-time energy</source>
+        <translation>Langzeit-Energie</translation>
     </message>
     <message>
-        <source>Refinement studies</source>
-        <translation>Verfeinerungsstudien</translation>
-    </message>
-    <message>
-        <source>Stability scans</source>
-        <translation>Stabilitätsabtastungen</translation>
-    </message>
-    <message>
-        <source>Long-time energy studies</source>
-        <translation>Langzeit-Energiestudien</translation>
-    </message>
-    <message>
-        <source>%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV (per-body columns, momentum, min_gap), and the Bodies dock its curves.</source>
-        <translation>%1 sind für Szenen mit einem Körper. Für eine Szene mit mehreren Körpern liefert elastic-lab-cli run die CSV (Spalten je Körper, Impuls, min_gap) und das Dock „Körper“ die Kurven.</translation>
+        <source>Side by side</source>
+        <translation>Nebeneinander</translation>
     </message>
 </context>
 <context>
@@ -2607,6 +2595,10 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <source>Wrote %1</source>
         <translation>%1 geschrieben</translation>
     </message>
+    <message>
+        <source>Scene: &lt;b&gt;%1&lt;/b&gt;, %2 bodies, with the current parameters (the whole world: every run moves every body)</source>
+        <translation>Szene: &lt;b&gt;%1&lt;/b&gt;, %2 Körper, mit den aktuellen Parametern (die ganze Welt: jeder Lauf bewegt jeden Körper)</translation>
+    </message>
 </context>
 <context>
     <name>elui::TimelineDock</name>
@@ -2708,6 +2700,18 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
     <message>
         <source>Forces on particle %1 of body %2</source>
         <translation>Kräfte auf Teilchen %1 von Körper %2</translation>
+    </message>
+    <message>
+        <source>momentum %1 kg m/s</source>
+        <translation>Impuls %1 kg m/s</translation>
+    </message>
+    <message>
+        <source>min_gap %1 m</source>
+        <translation>min_gap %1 m</translation>
+    </message>
+    <message>
+        <source>min_gap beyond %1 m</source>
+        <translation>min_gap über %1 m</translation>
     </message>
 </context>
 <context>

@@ -522,10 +522,6 @@
         <translation>Presión por cuerpo y capa</translation>
     </message>
     <message>
-        <source>momentum [kg m/s]</source>
-        <translation>cantidad de movimiento [kg m/s]</translation>
-    </message>
-    <message>
         <source>gap [m]</source>
         <translation>separación [m]</translation>
     </message>
@@ -600,6 +596,10 @@
     <message>
         <source>A world keeps at least one body.</source>
         <translation>Un mundo conserva al menos un cuerpo.</translation>
+    </message>
+    <message>
+        <source>p [kg m/s]</source>
+        <translation>p [kg m/s]</translation>
     </message>
 </context>
 <context>
@@ -1562,24 +1562,12 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <translation>%1: varios cuerpos. El panel Cuerpos muestra la cantidad de movimiento y min_gap; Parámetros tiene un selector de cuerpo. Pulse Ejecutar (Espacio).</translation>
     </message>
     <message>
-        <source>Work-precision studies</source>
-        <translation>Estudios trabajo-precisión</translation>
+        <source>Long-time energy</source>
+        <translation>Energía a largo plazo</translation>
     </message>
     <message>
-        <source>Refinement studies</source>
-        <translation>Estudios de refinamiento</translation>
-    </message>
-    <message>
-        <source>Stability scans</source>
-        <translation>Barridos de estabilidad</translation>
-    </message>
-    <message>
-        <source>Long-time energy studies</source>
-        <translation>Estudios de energía a largo plazo</translation>
-    </message>
-    <message>
-        <source>%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV (per-body columns, momentum, min_gap), and the Bodies dock its curves.</source>
-        <translation>%1 son para escenas de un solo cuerpo. Para una escena de varios cuerpos, elastic-lab-cli run da su CSV (columnas por cuerpo, cantidad de movimiento, min_gap) y el panel Cuerpos sus curvas.</translation>
+        <source>Side by side</source>
+        <translation>Lado a lado</translation>
     </message>
 </context>
 <context>
@@ -2607,6 +2595,10 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <source>Wrote %1</source>
         <translation>Se escribió %1</translation>
     </message>
+    <message>
+        <source>Scene: &lt;b&gt;%1&lt;/b&gt;, %2 bodies, with the current parameters (the whole world: every run moves every body)</source>
+        <translation>Escena: &lt;b&gt;%1&lt;/b&gt;, %2 cuerpos, con los parámetros actuales (el mundo entero: cada ejecución mueve cada cuerpo)</translation>
+    </message>
 </context>
 <context>
     <name>elui::TimelineDock</name>
@@ -2708,6 +2700,18 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
     <message>
         <source>Forces on particle %1 of body %2</source>
         <translation>Fuerzas sobre la partícula %1 del cuerpo %2</translation>
+    </message>
+    <message>
+        <source>momentum %1 kg m/s</source>
+        <translation>cantidad de movimiento %1 kg m/s</translation>
+    </message>
+    <message>
+        <source>min_gap %1 m</source>
+        <translation>min_gap %1 m</translation>
+    </message>
+    <message>
+        <source>min_gap beyond %1 m</source>
+        <translation>min_gap más allá de %1 m</translation>
     </message>
 </context>
 <context>

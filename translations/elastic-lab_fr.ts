@@ -522,10 +522,6 @@
         <translation>Pression par corps et par couche</translation>
     </message>
     <message>
-        <source>momentum [kg m/s]</source>
-        <translation>quantité de mouvement [kg m/s]</translation>
-    </message>
-    <message>
         <source>gap [m]</source>
         <translation>écart [m]</translation>
     </message>
@@ -600,6 +596,10 @@
     <message>
         <source>A world keeps at least one body.</source>
         <translation>Un monde garde au moins un corps.</translation>
+    </message>
+    <message>
+        <source>p [kg m/s]</source>
+        <translation>p [kg m/s]</translation>
     </message>
 </context>
 <context>
@@ -1562,24 +1562,12 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <translation>%1 : plusieurs corps. Le panneau Corps montre la quantité de mouvement et min_gap ; Paramètres a un sélecteur de corps. Appuyez sur Lancer (Espace).</translation>
     </message>
     <message>
-        <source>Work-precision studies</source>
-        <translation>Études travail-précision</translation>
+        <source>Long-time energy</source>
+        <translation>Énergie à long terme</translation>
     </message>
     <message>
-        <source>Refinement studies</source>
-        <translation>Études de raffinement</translation>
-    </message>
-    <message>
-        <source>Stability scans</source>
-        <translation>Balayages de stabilité</translation>
-    </message>
-    <message>
-        <source>Long-time energy studies</source>
-        <translation>Études d&apos;énergie à long terme</translation>
-    </message>
-    <message>
-        <source>%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV (per-body columns, momentum, min_gap), and the Bodies dock its curves.</source>
-        <translation>%1 sont destinés aux scènes à un seul corps. Pour une scène à plusieurs corps, elastic-lab-cli run donne son CSV (colonnes par corps, quantité de mouvement, min_gap), et le panneau Corps ses courbes.</translation>
+        <source>Side by side</source>
+        <translation>Côte à côte</translation>
     </message>
 </context>
 <context>
@@ -2607,6 +2595,10 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <source>Wrote %1</source>
         <translation>%1 écrit</translation>
     </message>
+    <message>
+        <source>Scene: &lt;b&gt;%1&lt;/b&gt;, %2 bodies, with the current parameters (the whole world: every run moves every body)</source>
+        <translation>Scène : &lt;b&gt;%1&lt;/b&gt;, %2 corps, avec les paramètres actuels (le monde entier : chaque calcul déplace chaque corps)</translation>
+    </message>
 </context>
 <context>
     <name>elui::TimelineDock</name>
@@ -2708,6 +2700,18 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
     <message>
         <source>Forces on particle %1 of body %2</source>
         <translation>Forces sur la particule %1 du corps %2</translation>
+    </message>
+    <message>
+        <source>momentum %1 kg m/s</source>
+        <translation>quantité de mouvement %1 kg m/s</translation>
+    </message>
+    <message>
+        <source>min_gap %1 m</source>
+        <translation>min_gap %1 m</translation>
+    </message>
+    <message>
+        <source>min_gap beyond %1 m</source>
+        <translation>min_gap au-delà de %1 m</translation>
     </message>
 </context>
 <context>

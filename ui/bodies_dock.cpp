@@ -88,12 +88,20 @@ BodiesDock::BodiesDock(QWidget* parent) : QDockWidget(tr("Bodies"), parent) {
     m_content->hide();
     scroll->setWidget(host);
     setWidget(scroll);
+    // The points a hidden dock took (a run before it was shown, or behind the Plots tab) are
+    // put in view when it is shown: before, its plots kept their empty axes until the next
+    // frame, and a screenshot after a run showed none of its curves.
+    connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible) refreshPlots();
+    });
 }
 
 void BodiesDock::createPlots(QWidget* host) {
     const QString titles[] = {tr("Total momentum"), tr("min_gap"), tr("Volume per body and layer"),
                               tr("Pressure per body and layer")};
-    const QString labels[] = {tr("momentum [kg m/s]"), tr("gap [m]"), tr("volume"), tr("pressure")};
+    // Short axis labels: the title says what is plotted, and a long label ("quantité de
+    // mouvement [kg m/s]") did not fit the plot's height.
+    const QString labels[] = {tr("p [kg m/s]"), tr("gap [m]"), tr("volume"), tr("pressure")};
     // The plots directly in the scrolled widget (as the Plots dock's), shown with the content.
     for (int k = 0; k < 4; ++k) {
         auto* p = new QCustomPlot(host);
@@ -139,8 +147,13 @@ QWidget* BodiesDock::createAddBox() {
     m_add->setObjectName(QStringLiteral("addBody"));
     m_remove = new QPushButton(tr("Remove selected"), addBox);
     m_remove->setObjectName(QStringLiteral("removeBody"));
-    grid->addWidget(m_add, 3, 1, 1, 2);
-    grid->addWidget(m_remove, 3, 3);
+    // The buttons in a row of their own under the fields, not beside the labels' column: in
+    // French the labels and the two buttons side by side needed 378 px, wider than the dock's
+    // 334 px beside two views at 1280 px (the content was cut at the window's edge).
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_add);
+    buttons->addWidget(m_remove);
+    grid->addLayout(buttons, 3, 0, 1, 4);
     connect(m_add, &QPushButton::clicked, this, &BodiesDock::addBody);
     connect(m_remove, &QPushButton::clicked, this, &BodiesDock::removeBody);
     connect(m_kind, &QComboBox::currentIndexChanged, this, [this] {
@@ -285,13 +298,18 @@ void BodiesDock::addPoints(const simcore::WorldDiagnostics& d) {
                 plot(QStringLiteral("volume"))->graph(int(2 * k) + layer)->addData(d.time, d.bodies[k].volume[std::size_t(layer)]);
                 plot(QStringLiteral("pressure"))->graph(int(2 * k) + layer)->addData(d.time, d.bodies[k].pressure[std::size_t(layer)]);
             }
-        if (isVisible())
-            for (QCustomPlot* p : m_plots) {
-                p->rescaleAxes();
-                p->replot(QCustomPlot::rpQueuedReplot);
-            }
+        if (isVisible()) refreshPlots();
     }
 }
+
+void BodiesDock::refreshPlots() {
+    for (QCustomPlot* p : m_plots) {
+        p->rescaleAxes();
+        p->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+double BodiesDock::shownTimeEnd(const QString& plotId) const { return plot(plotId)->xAxis->range().upper; }
 
 QString BodiesDock::readoutText() const { return m_readout->text(); }
 

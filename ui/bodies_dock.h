@@ -39,6 +39,7 @@ public:
     int plottedPoints() const;                           // points of the momentum curve
     QStringList seriesNames(const QString& plotId) const;  // "momentum", "gap", "volume", "pressure"
     double lastValue(const QString& plotId, int series) const;
+    double shownTimeEnd(const QString& plotId) const;    // the right end of its time axis [s]
     QTableWidget* table() const { return m_table; }
     QPushButton* addButton() const { return m_add; }
     QPushButton* removeButton() const { return m_remove; }
@@ -59,6 +60,9 @@ private:
     void rebuildSeries(const simcore::WorldSpec& spec);
     void showNumbers(const simcore::WorldDiagnostics& d);
     void addPoints(const simcore::WorldDiagnostics& d);
+    // Every curve in view, drawn again (only while the dock is seen: a hidden or tabbed-away
+    // dock catches up when it is shown).
+    void refreshPlots();
     QString vector(const Eigen::Vector3d& v) const;
     void addBody();
     void removeBody();

@@ -86,6 +86,9 @@ struct LaneFrame {
     // The selected particle's free-body diagram (a click on a particle selects it); none
     // when nothing is selected.
     std::optional<simcore::ForceBreakdown> breakdown;
+    // A scene of several bodies: this lane's world (its integrator's run of every body): its
+    // own diagnostics (per body, total momentum, min_gap). None for one body.
+    std::shared_ptr<const simcore::WorldDiagnostics> world;
 };
 
 // Time travel: where the shown state lies on the run's recorded timeline (sim_worker.h).
@@ -124,9 +127,10 @@ struct Frame {
     double floatRoundoff = 0.0;
     quint64 serial = 0;                   // increases with every published frame
     TimelineInfo timeline;
-    // A scene of several bodies: the world's own diagnostics (per body, momentum, min_gap) and
-    // the body parameter edits go to (-1: every body). lanes[0] is then the world: all its
-    // positions, and its totals as a Diagnostics.
+    // A scene of several bodies: lane 0's world diagnostics (per body, momentum, min_gap; each
+    // lane has its own in LaneFrame::world) and the body parameter edits go to (-1: every body).
+    // Each lane is then a world with its integrator: all its positions, its totals as a
+    // Diagnostics.
     std::shared_ptr<const simcore::WorldDiagnostics> world;
     int worldBody = 0;
     std::shared_ptr<const simcore::WorldSpec> worldSpec;  // its bodies as described (start, parameters)

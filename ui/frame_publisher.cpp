@@ -20,11 +20,17 @@ void FramePublisher::recordRow(const simcore::Diagnostics& row) {
 }
 
 void FramePublisher::recordLaneRows(const std::vector<const simcore::Simulation*>& lanes, double time) {
+    std::vector<const simcore::Diagnostics*> rows;
+    for (const simcore::Simulation* lane : lanes) rows.push_back(lane->failed() ? nullptr : &lane->diagnostics());
+    recordLaneRows(rows, time);
+}
+
+void FramePublisher::recordLaneRows(const std::vector<const simcore::Diagnostics*>& rows, double time) {
     if (m_lastLaneRowTime >= 0.0 && time - m_lastLaneRowTime < kRowInterval * (1.0 - 1e-9)) return;
     m_lastLaneRowTime = time;
-    if (m_laneRows.size() < lanes.size() - 1) m_laneRows.resize(lanes.size() - 1);
-    for (std::size_t i = 1; i < lanes.size(); ++i)
-        if (!lanes[i]->failed()) m_laneRows[i - 1].push_back(lanes[i]->diagnostics());
+    if (m_laneRows.size() < rows.size() - 1) m_laneRows.resize(rows.size() - 1);
+    for (std::size_t i = 1; i < rows.size(); ++i)
+        if (rows[i]) m_laneRows[i - 1].push_back(*rows[i]);
 }
 
 void FramePublisher::startHistory() {

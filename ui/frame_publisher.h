@@ -35,6 +35,8 @@ public:
     // Side by side: every other live lane's row at the common time `time` (at most one per
     // kRowInterval of it), for the plots' other views.
     void recordLaneRows(const std::vector<const simcore::Simulation*>& lanes, double time);
+    // The same from each lane's row (lane 0's first; nullptr for a failed lane): a world's totals.
+    void recordLaneRows(const std::vector<const simcore::Diagnostics*>& rows, double time);
     // A new history begins: the rows not yet published are dropped, and the next batch tells
     // the GUI to clear (dropping the rows not yet taken too).
     void startHistory();

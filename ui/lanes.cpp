@@ -124,19 +124,7 @@ void Lanes::stepAll(double until) {
         sim.step(until >= 0.0 ? until : std::numeric_limits<double>::infinity());
         m_commonTime = sim.time();
     } else {
-        // Side by side: every live lane reaches the same time after each common DT (the
-        // distances between the lanes are measured there). A fixed-step lane takes whole
-        // steps, so a run-until target off the DT grid is not shortened to unless every lane
-        // can land on it (all adaptive): the common clock then stops on the first tick past it,
-        // and the lanes stay together for the rest of the run.
-        double target = m_commonTime + m_lanes.front()->params().time.dt;
-        const bool allAdaptive = std::all_of(m_lanes.begin(), m_lanes.end(), [](const auto& s) {
-            return s->failed() || s->integrator().adaptive();
-        });
-        if (until >= 0.0 && allAdaptive) target = std::min(target, until);
-        for (auto& sim : m_lanes)
-            if (!sim->failed()) sim->advanceTo(target);
-        m_commonTime = target;
+        m_commonTime = advanceSideBySide(m_lanes, m_commonTime, m_lanes.front()->params().time.dt, until);
     }
 }
 

@@ -146,6 +146,23 @@ private:
     int m_threads = std::max(1, simcore::availableThreads() - 1);  // force-evaluation threads
 };
 
+// Side by side, one common DT: every live run (Simulations or Worlds, by pointer) reaches the
+// same time `common + dt` (the distances between the views are measured there). A fixed-step
+// run takes whole steps, so a run-until target `until` (< 0: none) off the DT grid is not
+// shortened to unless every live run can land on it (all adaptive): the common clock then
+// stops on the first tick past it, and the runs stay together. Returns the new common time.
+template <class Runs>
+double advanceSideBySide(Runs& runs, double common, double dt, double until) {
+    double target = common + dt;
+    const bool allAdaptive = std::all_of(runs.begin(), runs.end(), [](const auto& r) {
+        return r->failed() || r->integrator().adaptive();
+    });
+    if (until >= 0.0 && allAdaptive) target = std::min(target, until);
+    for (auto& r : runs)
+        if (!r->failed()) r->advanceTo(target);
+    return target;
+}
+
 // Lane sim's integrator name, as the GUI shows it.
 QString integratorName(const simcore::Simulation& sim);
 

@@ -31,6 +31,7 @@
 #include <QVBoxLayout>
 
 #include "simcore/scenes.h"
+#include "simlab/request.h"
 #include "ui/accessibility.h"
 #include "ui/compare_dialog.h"
 #include "ui/energy_bars_dock.h"
@@ -66,7 +67,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     createCentral();
     m_docks = std::make_unique<DockSet>(this, m_menus->viewMenu());
     connect(bodiesDock(), &BodiesDock::worldRequested, this, [this](const simcore::WorldSpec& spec) {
-        startWorld(spec, m_controller->integrators().value(0, QStringLiteral("rk4")));
+        startWorld(spec, m_controller->integrators());  // every view side by side
     });
     connect(bodiesDock(), &BodiesDock::message, this, &MainWindow::status);
     connectController();
@@ -281,22 +282,19 @@ void MainWindow::startScene(const simcore::ParameterSet& params, const QStringLi
     m_controller->setScene(params, integrators.isEmpty() ? QStringList{QStringLiteral("rk4")} : integrators);
 }
 
-void MainWindow::startWorld(const simcore::WorldSpec& spec, const QString& integrator) {
-    m_controller->setWorld(spec, integrator);
+void MainWindow::startWorld(const simcore::WorldSpec& spec, const QStringList& integrators) {
+    m_controller->setWorld(spec, integrators);
 }
 
-bool MainWindow::refuseForWorld(const QString& what) {
-    if (!m_controller->isWorld()) return false;
-    warn(what, tr("%1 are for scenes of one body. For a scene of several bodies, elastic-lab-cli run gives its CSV "
-                  "(per-body columns, momentum, min_gap), and the Bodies dock its curves.").arg(what));
-    return true;
+std::optional<simcore::WorldSpec> MainWindow::runningWorld() const {
+    const FramePtr& frame = m_controller->latest();
+    if (!m_controller->isWorld() || !frame || !frame->worldSpec) return std::nullopt;
+    return *frame->worldSpec;
 }
 
 void MainWindow::showWorldMode(bool world) {
     if (world == m_worldShown) return;
     m_worldShown = world;
-    // What a world has not yet: side by side.
-    m_menus->sideBySide()->setEnabled(!world);
     if (world) {
         bodiesDock()->show();
         bodiesDock()->raise();
@@ -307,7 +305,7 @@ void MainWindow::applyPreset(const Preset& preset) {
     // A preset is a new experiment: it is not the scene file's, so Save asks for a name.
     setCurrentFile({}, simcore::ParameterSet{}, {});
     if (const auto world = preset.world()) {
-        startWorld(*world, preset.integrators.value(0, QStringLiteral("rk4")));
+        startWorld(*world, preset.integrators);
     } else {
         m_controller->setStartKick(preset.kickInner, preset.kickOuter);
         startScene(preset.parameters(), preset.integrators);
@@ -679,11 +677,34 @@ void MainWindow::chooseSideBySide() {
     CompareDialog dialog(CompareDialog::proposal(m_controller->integrators()),
                          m_controller->parameters().get(simcore::Param::Dt), this);
     if (dialog.exec() != QDialog::Accepted) return;
-    startScene(m_controller->parameters(), dialog.integrators());
+    sideBySide(dialog.integrators());
+}
+
+QString MainWindow::sideBySide(const QStringList& integrators) {
+    std::vector<std::string> lanes;
+    for (const QString& name : integrators) lanes.push_back(name.toStdString());
+    // A world: the spec running now (with its edits), every view from its start.
+    const FramePtr& frame = m_controller->latest();
+    const std::shared_ptr<const simcore::WorldSpec> world =
+        m_controller->isWorld() && frame ? frame->worldSpec : std::shared_ptr<const simcore::WorldSpec>();
+    try {  // the front door's checks, as for elastic-lab --compare
+        if (world) simlab::checkLanes(*world, lanes);
+        else simlab::checkLanes(m_controller->parameters(), lanes);
+    } catch (const simlab::RequestError& e) {
+        const QString refusal = QString::fromStdString(e.what());
+        warn(tr("Side by side"), refusal);
+        return refusal;
+    }
+    if (world) startWorld(*world, integrators);
+    else startScene(m_controller->parameters(), integrators);
+    return {};
 }
 
 void MainWindow::singleView() {
-    startScene(m_controller->parameters(), {m_controller->integrators().value(0, QStringLiteral("rk4"))});
+    const QStringList one{m_controller->integrators().value(0, QStringLiteral("rk4"))};
+    const FramePtr& frame = m_controller->latest();
+    if (m_controller->isWorld() && frame && frame->worldSpec) startWorld(*frame->worldSpec, one);
+    else startScene(m_controller->parameters(), one);
 }
 
 }  // namespace elui

@@ -108,8 +108,9 @@ public:
 
 public slots:
     void startScene(const simcore::ParameterSet& params, const QStringList& integrators);
-    // A scene of several bodies (simcore::World), with one integrator; the Bodies dock opens.
-    void startWorld(const simcore::WorldSpec& spec, const QString& integrator = QStringLiteral("rk4"));
+    // A scene of several bodies (simcore::World), one world per integrator (side by side with
+    // more than one); the Bodies dock opens.
+    void startWorld(const simcore::WorldSpec& spec, const QStringList& integrators = {QStringLiteral("rk4")});
     // Scene files. Each returns the error shown to the user (non-blocking message box and
     // status bar), or empty on success; a refused file leaves the running scene as it is.
     QString openSceneFile(const QString& path);
@@ -137,6 +138,10 @@ public slots:
     void saveViewportScreenshot();
     void showHelp();
     void chooseSideBySide();
+    // These integrators side by side from the start of the current scene (one body or a world),
+    // each lane checked by the front door first (simlab::checkLanes): its refusal, shown to the
+    // user, or empty when the views start.
+    QString sideBySide(const QStringList& integrators);
     void singleView();
 
 protected:
@@ -161,8 +166,8 @@ private:
     void updateTitle(const Frame& frame);
     void adoptOpenedFile();
     void showWorldMode(bool world);  // what a world has and has not (menus, docks)
-    // Studies of one body are not for a world: says so and returns true when one is shown.
-    bool refuseForWorld(const QString& what);
+    // The scene of several bodies running now (its spec with the edits made), or none.
+    std::optional<simcore::WorldSpec> runningWorld() const;
 
     SimulationController* m_controller = nullptr;
     bool m_useSettings = true;

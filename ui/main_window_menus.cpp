@@ -14,6 +14,7 @@
 
 #include "simcore/scenes.h"
 #include "simcore/world.h"
+#include "simlab/request.h"
 #include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/main_window.h"
@@ -231,27 +232,37 @@ void MainMenus::createSceneMenus() {
 void MainMenus::createStudiesMenu() {
     MainWindow* w = m_window;
     SimulationController* c = w->controller();
+    // A scene of several bodies is studied whole where simlab studies one (work-precision,
+    // refinement, the stability scan: the CLI's study, study --refine and stability); the rest
+    // is refused by simlab's own check, in its words.
     m_studiesMenu = w->menuBar()->addMenu(tr("S&tudies"));
     m_studiesMenu->addAction(tr("&Work-precision study..."), w, [w, c] {
-        if (w->refuseForWorld(tr("Work-precision studies"))) return;
-        auto* d = new WorkPrecisionDialog(c->parameters(), w);
+        auto* d = new WorkPrecisionDialog(c->parameters(), w, w->runningWorld());
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
     m_studiesMenu->addAction(tr("&Refinement study..."), w, [w, c] {
-        if (w->refuseForWorld(tr("Refinement studies"))) return;
-        auto* d = new RefinementDialog(c->parameters(), w);
+        auto* d = new RefinementDialog(c->parameters(), w, w->runningWorld());
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
     m_studiesMenu->addAction(tr("&Stability scan..."), w, [w, c] {
-        if (w->refuseForWorld(tr("Stability scans"))) return;
-        auto* d = new StabilityDialog(c->parameters(), w);
+        auto* d = new StabilityDialog(c->parameters(), w, w->runningWorld());
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();
     });
     m_studiesMenu->addAction(tr("&Long-time energy..."), w, [w, c] {
-        if (w->refuseForWorld(tr("Long-time energy studies"))) return;
+        if (const std::optional<simcore::WorldSpec> world = w->runningWorld()) {
+            simlab::ConservationSpec spec;
+            spec.params = c->parameters();
+            spec.world = world;
+            try {
+                simlab::checkConservation(spec);  // refuses a world: conservation studies one body
+            } catch (const simlab::RequestError& e) {
+                w->warn(tr("Long-time energy"), QString::fromStdString(e.what()));
+                return;
+            }
+        }
         auto* d = new ConservationDialog(c->parameters(), w);
         d->setAttribute(Qt::WA_DeleteOnClose);
         d->show();

@@ -36,18 +36,24 @@ Lanes::List SimWorker::buildLanes(const simcore::ParameterSet& params, const QSt
 void SimWorker::setScene(const simcore::ParameterSet& params, const QStringList& integrators) {
     auto lanes = buildLanes(params, integrators);
     if (lanes.empty()) return;
-    m_world.reset();
+    m_worlds.clear();
     m_lanes.adopt(std::move(lanes));
     m_params = params;
     afterRebuild();
 }
 
 void SimWorker::openScene(const simlab::SceneFile& file, const QStringList& integrators) {
-    if (file.world) {  // a scene file of several bodies, resumed with its state
-        const std::string integrator = integrators.isEmpty() ? file.integrator : integrators.front().toStdString();
-        if (!buildWorld(std::make_shared<const simcore::WorldSpec>(*file.world), integrator, nullptr)) return;
+    if (file.world) {  // a scene file of several bodies, resumed with its state (side by side: every lane)
+        std::vector<std::string> names;
+        for (const QString& name : integrators) names.push_back(name.toStdString());
+        if (names.empty()) names.push_back(file.integrator);
+        if (!buildWorlds(std::make_shared<const simcore::WorldSpec>(*file.world), names, nullptr)) return;
         if (file.state)
-            if (auto error = simlab::applyState(*m_world, *file.state)) emit sceneRejected(QString::fromStdString(*error));
+            for (auto& w : m_worlds)
+                if (auto error = simlab::applyState(*w, *file.state)) {
+                    emit sceneRejected(QString::fromStdString(*error));
+                    break;
+                }
         m_worldBody = 0;
         worldSceneData();
         worldStarted();
@@ -62,7 +68,7 @@ void SimWorker::openScene(const simlab::SceneFile& file, const QStringList& inte
                 return;
             }
     // The file is the whole experiment: a preset's start kick does not apply to it.
-    m_world.reset();
+    m_worlds.clear();
     m_lanes.setKick(0.0, 0.0);
     m_lanes.adopt(std::move(lanes));
     m_params = file.params;
@@ -71,12 +77,12 @@ void SimWorker::openScene(const simlab::SceneFile& file, const QStringList& inte
 
 SceneCapture SimWorker::captureScene() const {
     SceneCapture capture;
-    if (m_world) {
-        capture.text = simlab::sceneFileText(*m_world, true);
-        capture.parameters = m_world->spec().bodies.front().params;
-        capture.integrator = QString::fromUtf8(m_world->integrator().name().data());
-        capture.lanes = 1;
-        capture.time = m_world->time();
+    if (worldMode()) {
+        capture.text = simlab::sceneFileText(world(), true);
+        capture.parameters = world().spec().bodies.front().params;
+        capture.integrator = QString::fromUtf8(world().integrator().name().data());
+        capture.lanes = int(m_worlds.size());
+        capture.time = world().time();
         capture.world = true;
         return capture;
     }
@@ -126,16 +132,20 @@ void SimWorker::setIntegrator(const QString& name) {
     } else {
         Input input;
         // A world is built again with it and goes on from its state.
-        input.kind = m_world ? Input::World : Input::Integrator;
+        input.kind = worldMode() ? Input::World : Input::Integrator;
         input.key = name.toStdString();
-        if (m_world) input.spec = m_world->sharedSpec();
+        if (worldMode()) {  // lane 0's world built again with it, the others as they are
+            input.spec = world().sharedSpec();
+            input.integrators = worldIntegrators();
+            input.integrators.front() = input.key;
+        }
         logInput(std::move(input));
     }
     publish(true);
 }
 
 void SimWorker::setParameter(simcore::Param id, double value) {
-    if (m_world) {
+    if (worldMode()) {
         setWorldParameter(id, value);
         return;
     }
@@ -168,7 +178,7 @@ void SimWorker::setParameter(simcore::Param id, double value) {
 }
 
 void SimWorker::setSpeed(int speed) {
-    m_pacer.setSpeed(static_cast<Speed>(std::clamp(speed, 0, 3)), m_world ? m_world->time() : m_lanes.commonTime());
+    m_pacer.setSpeed(static_cast<Speed>(std::clamp(speed, 0, 3)), worldMode() ? m_worldTime : m_lanes.commonTime());
     if (m_pacer.running()) m_timer->start(m_pacer.timerInterval());
     publish(true);
 }
@@ -215,9 +225,9 @@ void SimWorker::setErrorBandsWanted(bool on) { m_bandsWanted = on; }
 void SimWorker::setStartKick(double innerVx, double outerVx) { m_lanes.setKick(innerVx, outerVx); }
 
 void SimWorker::run() {
-    if (m_world) {
-        if (m_world->failed()) return;
-        m_pacer.start(m_world->time());
+    if (worldMode()) {
+        if (worldsStopped()) return;
+        m_pacer.start(m_worldTime);
         setUntil(-1.0);
         m_timer->start(m_pacer.timerInterval());
         publish(true);
@@ -231,8 +241,8 @@ void SimWorker::run() {
 }
 
 void SimWorker::runUntil(double simulatedTime) {
-    if (m_world) {
-        m_pacer.start(m_world->time());
+    if (worldMode()) {
+        m_pacer.start(m_worldTime);
         setUntil(simulatedTime);
         m_timer->start(0);
         publish(true);
@@ -254,7 +264,7 @@ void SimWorker::pause() {
 
 void SimWorker::stepOnce() {
     if (m_pacer.running()) pause();
-    if (m_world) {
+    if (worldMode()) {
         stepWorld();
         publish(true);
         return;
@@ -265,8 +275,8 @@ void SimWorker::stepOnce() {
 }
 
 void SimWorker::reset() {
-    if (m_world) {
-        m_world->reset();
+    if (worldMode()) {
+        for (auto& w : m_worlds) w->reset();
         worldStarted();
         return;
     }
@@ -289,10 +299,10 @@ void SimWorker::startHistory() {
 }
 
 void SimWorker::grabAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance) {
-    if (m_world) {  // any body's outer particle
-        const int particle = m_world->pickAlongRay(toEigen(origin), toEigen(direction).normalized(), maxDistance);
+    if (worldMode()) {  // any body's outer particle (lane 0 picks, every lane grabs the same one)
+        const int particle = world().pickAlongRay(toEigen(origin), toEigen(direction).normalized(), maxDistance);
         if (particle < 0) return;
-        const Eigen::Vector3d at = Eigen::Map<const Eigen::Vector3d>(m_world->state().data() + 3 * particle);
+        const Eigen::Vector3d at = Eigen::Map<const Eigen::Vector3d>(world().state().data() + 3 * particle);
         Input input;
         input.kind = Input::Grab;
         input.particle = particle;
@@ -317,7 +327,7 @@ void SimWorker::grabAlongRay(const QVector3D& origin, const QVector3D& direction
 }
 
 void SimWorker::moveAnchor(const QVector3D& anchor) {
-    if (m_world ? m_world->heldParticle() < 0 : m_lanes.empty() || !m_lanes.front().pointer().active) return;
+    if (worldMode() ? world().heldParticle() < 0 : m_lanes.empty() || !m_lanes.front().pointer().active) return;
     Input input;
     input.kind = Input::Move;
     input.anchor = toEigen(anchor);
@@ -328,18 +338,18 @@ void SimWorker::moveAnchor(const QVector3D& anchor) {
 void SimWorker::selectAlongRay(const QVector3D& origin, const QVector3D& direction, double maxDistance) {
     if (!hasRun()) return;
     const Eigen::Vector3d o = toEigen(origin), d = toEigen(direction).normalized();
-    m_selected = m_world ? m_world->pickAlongRay(o, d, maxDistance) : m_lanes.front().pickAlongRay(o, d, maxDistance);
+    m_selected = worldMode() ? world().pickAlongRay(o, d, maxDistance) : m_lanes.front().pickAlongRay(o, d, maxDistance);
     publish(true);
 }
 
 void SimWorker::selectParticle(int particle) {
-    const int count = m_world ? m_world->particleCount() : m_lanes.empty() ? 0 : m_lanes.front().particleCount();
+    const int count = worldMode() ? world().particleCount() : m_lanes.empty() ? 0 : m_lanes.front().particleCount();
     m_selected = particle >= 0 && particle < count ? particle : -1;
     publish(true);
 }
 
 void SimWorker::release() {
-    if (m_world ? m_world->heldParticle() < 0 : m_lanes.empty() || !m_lanes.front().pointer().active) return;
+    if (worldMode() ? world().heldParticle() < 0 : m_lanes.empty() || !m_lanes.front().pointer().active) return;
     Input input;
     input.kind = Input::Release;
     logInput(std::move(input));
@@ -352,7 +362,7 @@ void SimWorker::shutdown() {
     delete m_timer;  // a QTimer is stopped and destroyed on the thread that runs it
     m_timer = nullptr;
     m_lanes.clear();
-    m_world.reset();
+    m_worlds.clear();
     m_worldRows = {};
     m_scene.reset();
     m_params = simcore::ParameterSet{};
@@ -384,7 +394,7 @@ void SimWorker::recordRow() {
 }
 
 void SimWorker::tick() {
-    if (m_world && m_pacer.running()) {
+    if (worldMode() && m_pacer.running()) {
         tickWorld();
         return;
     }
@@ -422,7 +432,7 @@ void SimWorker::tick() {
 }
 
 void SimWorker::publish(bool force) {
-    if (m_world) {
+    if (worldMode()) {
         if (m_pacer.frameDue(force)) publishWorld();
         return;
     }
@@ -477,8 +487,8 @@ void SimWorker::startTimeline() {
     m_inputs.clear();
     m_publisher.clearBranches();
     m_moment = 0;
-    if (m_world) {
-        m_recorder.record(0, *m_world, {m_world->time(), m_until});
+    if (worldMode()) {
+        m_recorder.record(0, worldViews(), {m_worldTime, m_until});
         m_runStart.reset();  // the reference curve is one body's
     } else {
         m_recorder.record(0, m_lanes.views(), {m_lanes.commonTime(), m_until});
@@ -499,7 +509,7 @@ double SimWorker::physicsChangedAt() const {
 void SimWorker::recordMoment() {
     ++m_moment;
     if (m_replaying) return;
-    if (m_world) m_recorder.record(m_moment, *m_world, {m_world->time(), m_until});
+    if (worldMode()) m_recorder.record(m_moment, worldViews(), {m_worldTime, m_until});
     else m_recorder.record(m_moment, m_lanes.views(), {m_lanes.commonTime(), m_until});
     m_lastTime = leadTime();
 }
@@ -526,7 +536,7 @@ void SimWorker::setUntil(double until) {
 }
 
 void SimWorker::applyInput(const Input& input) {
-    if (m_world) {
+    if (worldMode()) {
         applyWorldInput(input);
         return;
     }
@@ -559,7 +569,7 @@ void SimWorker::branch() {
     std::erase_if(m_inputs, [moment](const Input& i) { return i.moment > moment; });
     m_lastTime = leadTime();
     m_publisher.branch(m_lastTime);
-    if (m_world) cutWorldRows(m_lastTime);
+    if (worldMode()) cutWorldRows(m_lastTime);
 }
 
 void SimWorker::replayForward(long target, bool inputsAtStartApplied) {
@@ -572,9 +582,9 @@ void SimWorker::replayForward(long target, bool inputsAtStartApplied) {
         if (m_moment >= target) return;
         // A method whose history a checkpoint cannot hold is recorded at every moment and
         // never re-simulated: stop at the last moment held exactly.
-        if (m_world ? !m_world->integrator().restorable() : !m_lanes.restorable()) return;
+        if (worldMode() ? !worldsRestorable() : !m_lanes.restorable()) return;
         const long before = m_moment;
-        if (m_world) stepWorld();
+        if (worldMode()) stepWorld();
         else stepAll();
         if (m_moment == before) return;  // every lane failed (the run stopped here too)
     }
@@ -592,12 +602,12 @@ void SimWorker::goTo(long target) {
     if (target == m_moment) return;
     m_replaying = true;
     const simcore::TimelineCheckpoint* c = m_recorder.checkpointFor(target);
-    const bool restorable = m_world ? m_world->integrator().restorable() : m_lanes.restorable();
+    const bool restorable = worldMode() ? worldsRestorable() : m_lanes.restorable();
     const bool fromHere = m_moment < target && c && m_moment >= c->index && restorable;
     if (fromHere) {
         // Forward from the moment shown, which lies after the checkpoint: fewer steps.
         replayForward(target, true);
-    } else if (c && c->world) {
+    } else if (c && !c->worlds.empty()) {
         restoreWorld(*c);
         m_until = c->extra.at(1);
         m_moment = c->index;
@@ -612,9 +622,9 @@ void SimWorker::goTo(long target) {
     }
     m_replaying = false;
     m_until = -1.0;  // shown paused
-    if (m_world) {
-        m_params = m_world->spec().bodies.front().params;
-        m_failureReported = m_world->failed();
+    if (worldMode()) {
+        m_params = world().spec().bodies.front().params;
+        m_failureReported = worldsStopped();
         return;
     }
     m_params = m_lanes.front().parameters();
@@ -628,7 +638,7 @@ void SimWorker::scrubToTime(double t) {
     // From the last checkpoint before t, forward one moment at a time until t is reached.
     const auto& all = m_recorder.checkpoints();
     auto after = std::upper_bound(all.begin(), all.end(), t, [](double time, const simcore::TimelineCheckpoint& c) {
-        return time <= (c.world ? c.world->diag.time : c.lanes.front().diag.time);
+        return time <= (c.worlds.empty() ? c.lanes.front().diag.time : c.extra.at(0));
     });
     goTo(after == all.begin() ? all.front().index : (after - 1)->index);
     const double reach = t - 1e-9 * std::max(1e-3, std::abs(t));

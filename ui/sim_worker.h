@@ -76,10 +76,10 @@ public:
     // (time and step counter included), so the run resumes exactly. No start kick. A file that
     // cannot be built keeps the old scene and reports sceneRejected.
     void openScene(const simlab::SceneFile& file, const QStringList& integrators);
-    // A scene of several bodies: one simcore::World instead of the lanes (no side by side), on
-    // the same timeline as one body. A world that cannot be built keeps the old scene and
-    // reports sceneRejected.
-    void setWorld(const simcore::WorldSpec& spec, const QString& integrator);
+    // A scene of several bodies: one simcore::World per integrator instead of the one-body lanes
+    // (side by side with up to three), on the same timeline as one body. A world that cannot be
+    // built keeps the old scene and reports sceneRejected.
+    void setWorld(const simcore::WorldSpec& spec, const QStringList& integrators);
     // The body (from 0) the parameter edits of a world go to; -1: every body.
     void setWorldBody(int body);
     // Changes lane 0's integrator in place (single mode: the run continues from here).
@@ -165,9 +165,10 @@ private:
         double value2 = 0.0;              // Tolerances: rtol
         int particle = -1;                // Grab
         Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // Grab, Move
-        // World: the world built again with this spec and the integrator named in `key`,
-        // going on from the state (a live edit of a world, an integrator change).
+        // World: every lane's world built again with this spec and its integrator in
+        // `integrators`, going on from its state (a live edit of a world, an integrator change).
         std::shared_ptr<const simcore::WorldSpec> spec;
+        std::vector<std::string> integrators;
     };
     // A switch (step doubling, precision float) as a logged input; before the first scene, kept.
     void logSwitch(Input::Kind kind, bool on);
@@ -186,15 +187,24 @@ private:
     TimelineInfo timelineInfo() const;
 
     // --- a world (sim_worker_world.cpp) ---
-    bool worldMode() const { return m_world != nullptr; }
+    bool worldMode() const { return !m_worlds.empty(); }
     // A scene to run: the lanes or a world.
-    bool hasRun() const { return m_world || !m_lanes.empty(); }
-    // Lane 0's or the world's simulated time [s].
+    bool hasRun() const { return worldMode() || !m_lanes.empty(); }
+    // Lane 0's simulated time, or the worlds' common time [s].
     double leadTime() const;
-    // Builds the world; with `from` (the world running so far) it goes on from that one's state
-    // and accounts (an edit that keeps the shape, an integrator change), else from its start.
-    bool buildWorld(std::shared_ptr<const simcore::WorldSpec> spec, const std::string& integrator,
-                    const simcore::World* from);
+    // Lane 0's world (worldMode() only).
+    simcore::World& world() { return *m_worlds.front(); }
+    const simcore::World& world() const { return *m_worlds.front(); }
+    std::vector<const simcore::World*> worldViews() const;
+    std::vector<std::string> worldIntegrators() const;
+    // Every world lane has failed (the one alone, or all side by side): the run cannot go on.
+    bool worldsStopped() const;
+    bool worldsRestorable() const;
+    // Builds one world per integrator; with `from` (the worlds running so far) each goes on from
+    // its lane's state and accounts (an edit that keeps the shape, an integrator change), else
+    // from its start.
+    bool buildWorlds(std::shared_ptr<const simcore::WorldSpec> spec, const std::vector<std::string>& integrators,
+                     const std::vector<std::unique_ptr<simcore::World>>* from);
     // The world's integrator options: step doubling and the tolerances as the lanes keep them.
     simcore::IntegratorOptions worldOptions() const;
     void applyWorldInput(const Input& input);
@@ -205,13 +215,17 @@ private:
     bool stepWorld();
     void tickWorld();
     void publishWorld();
+    // World lane `lane` as a frame shows it, its distance measured to lane `reference`.
+    LaneFrame worldLaneFrame(std::size_t lane, int reference);
+    void recordWorldLaneRows();           // side by side: the other lanes' totals for the plots
     void setWorldParameter(simcore::Param id, double value);
     // The world's rows for worldCsv, recorded as the plots' rows are; cut at a branch.
     void recordWorldRow();
     void cutWorldRows(double time);
     std::vector<simcore::WorldDiagnostics> m_worldRows;
-    std::unique_ptr<simcore::World> m_world;
-    std::shared_ptr<const simcore::WorldSpec> m_worldSpec;  // the world's, shared with the frames
+    std::vector<std::unique_ptr<simcore::World>> m_worlds;  // one per integrator (lane)
+    double m_worldTime = 0.0;             // the time every live world has reached [s]
+    std::shared_ptr<const simcore::WorldSpec> m_worldSpec;  // the worlds', shared with the frames
     int m_worldBody = 0;
 
     Lanes m_lanes;

@@ -1,5 +1,5 @@
-// SimWorker with a scene of several bodies (simcore::World, docs/model.md "Several bodies"): one
-// world steps instead of the lanes. What it has: run, pause, step, reset, the pacer's speeds,
+// SimWorker with a scene of several bodies (simcore::World, docs/model.md "Several bodies"): a
+// world steps instead of each one-body lane. What it has: run, pause, step, reset, the pacer's speeds,
 // a parameter edit for one body or all (the world is rebuilt with it and goes on from its
 // state; a shape or start edit starts it again), an integrator change that keeps the run, the
 // mouse on any body's outer particle, frames with every body and rows of the world's totals,
@@ -8,7 +8,9 @@
 // the spec and integrator the world was built again with, so a replay builds it again at the
 // same moment); the free-body diagram of a clicked particle (its body's parts and the contact
 // from the other bodies and from itself); step doubling and the energy plot's error band.
-// What it has not yet (the GUI says so): side by side, the stability map.
+// Side by side: up to three worlds of one spec, one per integrator (the lanes of a world), stepped
+// to a common time as the one-body lanes are; every command above goes to each of them, a lane
+// that fails stops alone and the others run on.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -51,7 +53,7 @@ simcore::Diagnostics totalsRow(const simcore::WorldDiagnostics& w) {
 }  // namespace
 
 double SimWorker::leadTime() const {
-    if (m_world) return m_world->time();
+    if (worldMode()) return m_worldTime;
     return m_lanes.empty() ? 0.0 : m_lanes.front().time();
 }
 
@@ -63,53 +65,85 @@ simcore::IntegratorOptions SimWorker::worldOptions() const {
     return o;
 }
 
-void SimWorker::setWorld(const simcore::WorldSpec& spec, const QString& integrator) {
-    if (!buildWorld(std::make_shared<const simcore::WorldSpec>(spec), integrator.toStdString(), nullptr)) return;
+std::vector<const simcore::World*> SimWorker::worldViews() const {
+    std::vector<const simcore::World*> views;
+    for (const auto& w : m_worlds) views.push_back(w.get());
+    return views;
+}
+
+std::vector<std::string> SimWorker::worldIntegrators() const {
+    std::vector<std::string> names;
+    for (const auto& w : m_worlds) names.emplace_back(w->integrator().name());
+    return names;
+}
+
+bool SimWorker::worldsStopped() const {
+    return std::all_of(m_worlds.begin(), m_worlds.end(), [](const auto& w) { return w->failed(); });
+}
+
+bool SimWorker::worldsRestorable() const {
+    return std::all_of(m_worlds.begin(), m_worlds.end(), [](const auto& w) { return w->integrator().restorable(); });
+}
+
+void SimWorker::setWorld(const simcore::WorldSpec& spec, const QStringList& integrators) {
+    std::vector<std::string> names;
+    for (const QString& name : integrators) names.push_back(name.toStdString());
+    if (!buildWorlds(std::make_shared<const simcore::WorldSpec>(spec), names, nullptr)) return;
     m_worldBody = 0;
     worldSceneData();
     worldStarted();
 }
 
-bool SimWorker::buildWorld(std::shared_ptr<const simcore::WorldSpec> spec, const std::string& integrator,
-                           const simcore::World* from) {
-    std::unique_ptr<simcore::World> world;
+bool SimWorker::buildWorlds(std::shared_ptr<const simcore::WorldSpec> spec, const std::vector<std::string>& integrators,
+                            const std::vector<std::unique_ptr<simcore::World>>* from) {
+    std::vector<std::unique_ptr<simcore::World>> worlds;
     try {
-        world = std::make_unique<simcore::World>(std::move(spec), integrator);
+        for (const std::string& name : integrators) worlds.push_back(std::make_unique<simcore::World>(spec, name));
     } catch (const std::invalid_argument& e) {
         emit sceneRejected(QString::fromUtf8(e.what()));
         return false;
     }
-    world->setIntegratorOptions(worldOptions());
-    // The run goes on: state, accounts, pointer and counters (a shape edit starts again instead).
-    if (from && from->particleCount() == world->particleCount()) {
-        simcore::WorldSnapshot state = from->snapshot();
-        state.options = worldOptions();
-        world->restore(state, false);
+    if (worlds.empty()) return false;
+    for (std::size_t i = 0; i < worlds.size(); ++i) {
+        simcore::World& world = *worlds[i];
+        world.setIntegratorOptions(worldOptions());
+        // The run goes on: state, accounts, pointer and counters (a shape edit starts again instead).
+        if (from && i < from->size() && (*from)[i]->particleCount() == world.particleCount()) {
+            simcore::WorldSnapshot state = (*from)[i]->snapshot();
+            state.options = worldOptions();
+            world.restore(state, false);
+        }
     }
-    m_lanes.clear();  // a world runs alone
-    m_world = std::move(world);
-    m_worldSpec = m_world->sharedSpec();
-    m_params = m_world->spec().bodies.front().params;
+    m_lanes.clear();  // worlds run instead of the one-body lanes
+    m_worlds = std::move(worlds);
+    m_worldSpec = world().sharedSpec();
+    m_params = world().spec().bodies.front().params;
     return true;
 }
 
 void SimWorker::applyWorldInput(const Input& input) {
     switch (input.kind) {
         case Input::World: {
-            std::unique_ptr<simcore::World> old = std::move(m_world);
-            if (!buildWorld(input.spec, input.key, old.get())) m_world = std::move(old);
+            std::vector<std::unique_ptr<simcore::World>> old = std::move(m_worlds);
+            if (!buildWorlds(input.spec, input.integrators, &old)) m_worlds = std::move(old);
             break;
         }
         case Input::StepDoubling:
         case Input::Tolerances: {
             if (input.kind == Input::StepDoubling) m_lanes.setStepDoubling(input.value != 0.0);
             else m_lanes.setTolerances(input.value, input.value2);
-            m_world->setIntegratorOptions(worldOptions());
+            for (auto& w : m_worlds) w->setIntegratorOptions(worldOptions());
             break;
         }
-        case Input::Grab: m_world->grab(input.particle, input.anchor); break;
-        case Input::Move: m_world->moveAnchor(input.anchor); break;
-        case Input::Release: m_world->release(); break;
+        case Input::Grab:
+            for (auto& w : m_worlds) w->grab(input.particle, input.anchor);
+            break;
+        case Input::Move:
+            for (auto& w : m_worlds) w->moveAnchor(input.anchor);
+            break;
+        case Input::Release:
+            for (auto& w : m_worlds) w->release();
+            break;
         case Input::Until: m_until = input.value; break;
         case Input::Parameter:
         case Input::Integrator: break;  // a world logs these as Input::World
@@ -118,16 +152,22 @@ void SimWorker::applyWorldInput(const Input& input) {
 }
 
 void SimWorker::restoreWorld(const simcore::TimelineCheckpoint& c) {
-    const simcore::WorldSnapshot& s = *c.world;
-    if (s.spec != m_world->sharedSpec() || s.integrator != m_world->integrator().name()) {
-        std::unique_ptr<simcore::World> old = std::move(m_world);
-        if (!buildWorld(s.spec, s.integrator, nullptr)) {
-            m_world = std::move(old);
+    // Built again when the lanes held another spec or integrator at that moment.
+    bool same = c.worlds.size() == m_worlds.size();
+    for (std::size_t i = 0; same && i < c.worlds.size(); ++i)
+        same = c.worlds[i].spec == m_worlds[i]->sharedSpec() && c.worlds[i].integrator == m_worlds[i]->integrator().name();
+    if (!same) {
+        std::vector<std::string> names;
+        for (const simcore::WorldSnapshot& s : c.worlds) names.push_back(s.integrator);
+        std::vector<std::unique_ptr<simcore::World>> old = std::move(m_worlds);
+        if (!buildWorlds(c.worlds.front().spec, names, nullptr)) {
+            m_worlds = std::move(old);
             return;
         }
     }
-    m_world->restore(s);
-    const simcore::IntegratorOptions& o = s.options;
+    for (std::size_t i = 0; i < c.worlds.size(); ++i) m_worlds[i]->restore(c.worlds[i]);
+    m_worldTime = c.extra.at(0);
+    const simcore::IntegratorOptions& o = c.worlds.front().options;
     m_lanes.setStepDoubling(o.stepDoubling);
     m_lanes.setTolerances(o.atol, o.rtol);
 }
@@ -136,7 +176,7 @@ void SimWorker::worldSceneData() {
     auto scene = std::make_shared<SceneData>();
     scene->version = ++m_sceneVersion;
     m_selected = -1;
-    const simcore::World& w = *m_world;
+    const simcore::World& w = world();
     scene->kind = w.spec().bodies.front().params.kind();
     scene->worldName = QString::fromStdString(w.spec().name);
     simcore::Topology& all = scene->topology;
@@ -179,26 +219,28 @@ void SimWorker::worldSceneData() {
 
 void SimWorker::worldStarted() {
     m_until = -1.0;
-    m_pacer.startOver(m_world->time());
+    m_worldTime = world().time();
+    m_pacer.startOver(m_worldTime);
     m_failureReported = false;
     m_publisher.startHistory();
-    m_publisher.recordRow(totalsRow(m_world->diagnostics()));
+    m_publisher.recordRow(totalsRow(world().diagnostics()));
     m_worldRows.clear();
     recordWorldRow();
+    recordWorldLaneRows();
     startTimeline();
     publish(true);
 }
 
 void SimWorker::setWorldBody(int body) {
     if (!worldMode()) return;
-    m_worldBody = std::clamp(body, -1, m_world->bodyCount() - 1);
+    m_worldBody = std::clamp(body, -1, world().bodyCount() - 1);
     publish(true);
 }
 
 void SimWorker::setWorldParameter(simcore::Param id, double value) {
     const simcore::ParamSpec& spec = simcore::paramSpec(id);
     const QString key = QString::fromUtf8(spec.key.data(), qsizetype(spec.key.size()));
-    simcore::WorldSpec next = m_world->spec();
+    simcore::WorldSpec next = world().spec();
     // A world parameter is every body's; a body parameter goes to the chosen body (or all).
     const bool all = simcore::isWorldParameter(id) || m_worldBody < 0;
     const std::string assignment = (all ? std::string() : "body" + std::to_string(m_worldBody + 1) + ".") +
@@ -212,18 +254,22 @@ void SimWorker::setWorldParameter(simcore::Param id, double value) {
     }
     auto built = std::make_shared<const simcore::WorldSpec>(std::move(next));
     if (!(spec.isShape() || spec.group == simcore::ParamGroup::Start)) {
-        // A live edit: on the timeline, the world built again with it at this moment.
+        // A live edit: on the timeline, every lane's world built again with it at this moment.
         Input input;
         input.kind = Input::World;
         input.spec = std::move(built);
-        input.key = std::string(m_world->integrator().name());
+        input.integrators = worldIntegrators();
         logInput(std::move(input));
         publish(true);
         return;
     }
-    std::unique_ptr<simcore::World> old = std::move(m_world);
-    if (!buildWorld(std::move(built), std::string(old->integrator().name()), nullptr)) {
-        m_world = std::move(old);
+    std::vector<std::unique_ptr<simcore::World>> old = std::move(m_worlds);
+    if (!buildWorlds(std::move(built), [&] {
+            std::vector<std::string> names;
+            for (const auto& w : old) names.emplace_back(w->integrator().name());
+            return names;
+        }(), nullptr)) {
+        m_worlds = std::move(old);
         return;
     }
     worldSceneData();
@@ -231,30 +277,46 @@ void SimWorker::setWorldParameter(simcore::Param id, double value) {
 }
 
 bool SimWorker::stepWorld() {
-    if (m_world->failed()) return false;
+    if (worldsStopped()) return false;
     // A step from a scrubbed moment runs on from it: a branch.
     if (!m_replaying && m_moment < m_recorder.last()) branch();
-    const bool ok = m_world->step(m_until >= 0.0 ? m_until : std::numeric_limits<double>::infinity());
+    if (m_worlds.size() == 1) {
+        world().step(m_until >= 0.0 ? m_until : std::numeric_limits<double>::infinity());
+        m_worldTime = world().time();
+    } else {
+        m_worldTime = advanceSideBySide(m_worlds, m_worldTime, world().dt(), m_until);  // as the one-body lanes
+    }
     if (!m_replaying) {
         m_pacer.countStep();
-        if (ok) {
-            simcore::Diagnostics row = totalsRow(m_world->diagnostics());
+        if (!world().failed()) {
+            simcore::Diagnostics row = totalsRow(world().diagnostics());
             // The energy plot's error band (two measurements), only while the plots show it.
             if (m_bandsWanted)
-                if (const double band = m_world->energyErrorBand(); band >= 0.0) {
+                if (const double band = world().energyErrorBand(); band >= 0.0) {
                     row.errors.valid = true;
                     row.errors.energy = band;
                 }
             m_publisher.recordRow(row);
             recordWorldRow();
         }
+        recordWorldLaneRows();
     }
     recordMoment();  // a failed step too: its moment shows the failure, as a lane's
-    return ok;
+    return true;
+}
+
+void SimWorker::recordWorldLaneRows() {
+    if (m_worlds.size() < 2) return;
+    std::vector<simcore::Diagnostics> rows;
+    rows.reserve(m_worlds.size());
+    for (const auto& w : m_worlds) rows.push_back(totalsRow(w->diagnostics()));
+    std::vector<const simcore::Diagnostics*> live;
+    for (std::size_t i = 0; i < rows.size(); ++i) live.push_back(m_worlds[i]->failed() ? nullptr : &rows[i]);
+    m_publisher.recordLaneRows(live, m_worldTime);
 }
 
 void SimWorker::recordWorldRow() {
-    const simcore::WorldDiagnostics& d = m_world->diagnostics();
+    const simcore::WorldDiagnostics& d = world().diagnostics();
     if (!m_worldRows.empty() && d.time - m_worldRows.back().time < kRowInterval * (1.0 - 1e-9)) return;
     if (m_worldRows.size() >= kMaxWorldRows) {  // every other old row goes, as the plots' history
         std::size_t w = 0;
@@ -269,8 +331,8 @@ void SimWorker::cutWorldRows(double time) {
 }
 
 std::string SimWorker::worldCsv() const {
-    if (!m_world) return {};
-    const auto columns = simlab::worldColumns(*m_world);
+    if (!worldMode()) return {};
+    const auto columns = simlab::worldColumns(*m_worlds.front());
     std::string text = simlab::csvHeader(columns);
     for (const simcore::WorldDiagnostics& d : m_worldRows) text += simlab::csvRow(columns, d);
     return text;
@@ -279,25 +341,26 @@ std::string SimWorker::worldCsv() const {
 void SimWorker::tickWorld() {
     const double target = m_pacer.beginTick(m_until >= 0.0);
     bool outOfBudget = false;
-    while (m_world->time() < target) {
-        if (m_until >= 0.0 && m_world->time() >= m_until - 1e-12) break;
+    while (m_worldTime < target) {
+        if (m_until >= 0.0 && m_worldTime >= m_until - 1e-12) break;
         if (!stepWorld()) break;
         if (m_pacer.budgetSpent()) {
             outOfBudget = true;
             break;
         }
+        if (worldsStopped()) break;
     }
-    m_pacer.endTick(m_world->time(), outOfBudget);
-    if (m_world->failed()) {
+    m_pacer.endTick(m_worldTime, outOfBudget);
+    if (worldsStopped()) {  // alone, or every lane side by side
         pause();
         if (!m_failureReported) {
             m_failureReported = true;
-            emit runFailed(QString::fromStdString(*m_world->failure()));
+            emit runFailed(QString::fromStdString(*world().failure()));
         }
         return;
     }
-    if (m_until >= 0.0 && m_world->time() >= m_until - 1e-12) {
-        const double reached = m_world->time();
+    if (m_until >= 0.0 && m_worldTime >= m_until - 1e-12) {
+        const double reached = m_worldTime;
         pause();
         emit reachedTime(reached);
         return;
@@ -305,9 +368,36 @@ void SimWorker::tickWorld() {
     publish(false);
 }
 
+LaneFrame SimWorker::worldLaneFrame(std::size_t lane, int reference) {
+    simcore::World& w = *m_worlds[lane];
+    LaneFrame frame;
+    frame.integrator = QString::fromUtf8(w.integrator().name().data(), qsizetype(w.integrator().name().size()));
+    const Eigen::Index n = 3 * Eigen::Index{w.particleCount()};
+    frame.positions.resize(std::size_t(n));
+    for (Eigen::Index k = 0; k < n; ++k) frame.positions[std::size_t(k)] = float(w.state()[k]);
+    if (m_forcesWanted) {  // not counted as the run's force evaluations
+        std::vector<double> f(static_cast<std::size_t>(n));
+        w.currentForces(f.data());
+        frame.forces.assign(f.begin(), f.end());
+    }
+    // The free-body diagram of the selected particle: its body's parts and the contacts.
+    if (m_selected >= 0 && m_selected < w.particleCount()) frame.breakdown = w.forceBreakdown(m_selected);
+    frame.diagnostics = totalsRow(w.diagnostics());
+    frame.world = std::make_shared<const simcore::WorldDiagnostics>(w.diagnostics());
+    if (w.failed()) frame.failure = simcore::Failure{*w.failure(), w.failedStep(), w.failedTime()};
+    if (w.heldParticle() >= 0) frame.pointer = simcore::PointerSpring{true, w.heldParticle(), w.anchor()};
+    // Side by side: the RMS distance of every particle from the reference lane's.
+    const Eigen::VectorXd& x0 = m_worlds[std::size_t(reference)]->state();
+    double sum = 0.0;
+    for (Eigen::Index k = 0; k < n; ++k) sum += (w.state()[k] - x0[k]) * (w.state()[k] - x0[k]);
+    frame.divergence = std::sqrt(sum / double(std::max(1, w.particleCount())));
+    frame.divergenceReference = reference;
+    return frame;
+}
+
 void SimWorker::publishWorld() {
     auto frame = std::make_shared<Frame>();
-    const simcore::World& w = *m_world;
+    const simcore::World& w = world();
     frame->scene = m_scene;
     frame->worldBody = m_worldBody;
     frame->worldSpec = m_worldSpec;
@@ -317,27 +407,15 @@ void SimWorker::publishWorld() {
     frame->wallSeconds = m_pacer.wallSeconds();
     frame->stepsPerSecond = m_pacer.stepsPerSecond();
     frame->fallingBehind = m_pacer.fallingBehind();
-    frame->world = std::make_shared<const simcore::WorldDiagnostics>(w.diagnostics());
     frame->timeline = timelineInfo();
     frame->physicsChangedAt = physicsChangedAt();
     frame->atol = m_lanes.atol();
     frame->rtol = m_lanes.rtol();
-    LaneFrame lane;
-    lane.integrator = QString::fromUtf8(w.integrator().name().data(), qsizetype(w.integrator().name().size()));
-    const Eigen::Index n = 3 * Eigen::Index{w.particleCount()};
-    lane.positions.resize(std::size_t(n));
-    for (Eigen::Index k = 0; k < n; ++k) lane.positions[std::size_t(k)] = float(w.state()[k]);
-    if (m_forcesWanted) {  // not counted as the run's force evaluations
-        std::vector<double> f(static_cast<std::size_t>(n));
-        m_world->currentForces(f.data());
-        lane.forces.assign(f.begin(), f.end());
-    }
-    // The free-body diagram of the selected particle: its body's parts and the contacts.
-    if (m_selected >= 0 && m_selected < w.particleCount()) lane.breakdown = m_world->forceBreakdown(m_selected);
-    lane.diagnostics = totalsRow(w.diagnostics());
-    if (w.failed()) lane.failure = simcore::Failure{*w.failure(), w.failedStep(), w.failedTime()};
-    if (w.heldParticle() >= 0) lane.pointer = simcore::PointerSpring{true, w.heldParticle(), w.anchor()};
-    frame->lanes.push_back(std::move(lane));
+    // The distances are to lane 0, or to the first live lane once lane 0 has failed.
+    int reference = 0;
+    while (reference + 1 < int(m_worlds.size()) && m_worlds[std::size_t(reference)]->failed()) ++reference;
+    for (std::size_t i = 0; i < m_worlds.size(); ++i) frame->lanes.push_back(worldLaneFrame(i, reference));
+    frame->world = frame->lanes.front().world;
     m_publisher.publish(std::move(frame));
 }
 

@@ -164,11 +164,11 @@ void SimulationController::openScene(const simlab::SceneFile& file, const QStrin
     m_integrators = integrators.isEmpty() ? QStringList{QString::fromStdString(file.integrator)} : integrators;
     toWorker(&SimWorker::openScene, file, m_integrators);
 }
-void SimulationController::setWorld(const simcore::WorldSpec& spec, const QString& integrator) {
+void SimulationController::setWorld(const simcore::WorldSpec& spec, const QStringList& integrators) {
     m_params = spec.bodies.front().params;
-    m_integrators = {integrator};
+    m_integrators = integrators.isEmpty() ? QStringList{QStringLiteral("rk4")} : integrators;
     m_isWorld = true;
-    toWorker(&SimWorker::setWorld, spec, integrator);
+    toWorker(&SimWorker::setWorld, spec, m_integrators);
 }
 void SimulationController::setWorldBody(int body) { toWorker(&SimWorker::setWorldBody, body); }
 SceneCapture SimulationController::captureScene() {

@@ -59,8 +59,9 @@ public:
     // A scene file (already read and validated): its scene, parameters and exact state, in one
     // lane with the file's integrator, or side by side with the given integrators.
     void openScene(const simlab::SceneFile& file, const QStringList& integrators = {});
-    // A scene of several bodies (simcore::World; sim_worker_world.cpp), with one integrator.
-    void setWorld(const simcore::WorldSpec& spec, const QString& integrator = QStringLiteral("rk4"));
+    // A scene of several bodies (simcore::World; sim_worker_world.cpp): one world per integrator,
+    // side by side with up to three.
+    void setWorld(const simcore::WorldSpec& spec, const QStringList& integrators = {QStringLiteral("rk4")});
     // The body (from 0; -1: every body) a world's parameter edits go to.
     void setWorldBody(int body);
     // Whether the scene asked for last is one of several bodies.

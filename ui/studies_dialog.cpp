@@ -84,16 +84,14 @@ void rescaleLogPanels(QCustomPlot* plot) {
 
 }  // namespace
 
-StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterSet& params, QWidget* parent)
-    : QDialog(parent), m_params(params) {
+StudyDialogBase::StudyDialogBase(const QString& title, const simcore::ParameterSet& params, QWidget* parent,
+                                 std::optional<simcore::WorldSpec> world)
+    : QDialog(parent), m_params(params), m_world(std::move(world)) {
     setWindowTitle(title);
     resize(1000, 720);
     auto* layout = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
-    auto* scene = new QLabel(tr("Scene: <b>%1</b> with the current parameters")
-                                 .arg(toQString(simcore::sceneInfo(params.kind()).name)),
-                             this);
-    layout->addWidget(scene);
+    layout->addWidget(makeSceneLabel());
     auto* integrators = new QWidget(this);
     auto* grid = new QGridLayout(integrators);
     grid->setContentsMargins(0, 0, 0, 0);
@@ -258,8 +256,26 @@ void StudyDialogBase::exportResults() {
 
 // ---------------------------------------------------------------- work-precision
 
-WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent)
-    : StudyDialogBase(tr("Work-precision study"), params, parent) {
+QLabel* StudyDialogBase::makeSceneLabel() {
+    auto* scene = new QLabel(m_world ? tr("Scene: <b>%1</b>, %2 bodies, with the current parameters (the whole world: "
+                                          "every run moves every body)")
+                                           .arg(QString::fromStdString(m_world->name).toHtmlEscaped())
+                                           .arg(m_world->bodies.size())
+                                     : tr("Scene: <b>%1</b> with the current parameters")
+                                           .arg(toQString(simcore::sceneInfo(m_params.kind()).name)),
+                             this);
+    scene->setObjectName(QStringLiteral("studyScene"));
+    scene->setWordWrap(true);
+    return scene;
+}
+
+std::string StudyDialogBase::sceneName() const {
+    return m_world ? m_world->name : std::string(simcore::sceneInfo(m_params.kind()).name);
+}
+
+WorkPrecisionDialog::WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent,
+                                         std::optional<simcore::WorldSpec> world)
+    : StudyDialogBase(tr("Work-precision study"), params, parent, std::move(world)) {
     auto* form = static_cast<QFormLayout*>(m_options->layout());
     m_dts = new QLineEdit(QStringLiteral("0.01 0.005 0.0025 0.00125"), m_options);
     m_dts->setToolTip(tr("Fixed steps DT [s], separated by spaces; T must be a multiple of each"));
@@ -317,6 +333,7 @@ void WorkPrecisionDialog::setTimeBudget(const QString& seconds) { m_budget->setT
 simlab::StudySpec WorkPrecisionDialog::spec() const {
     simlab::StudySpec s;
     s.params = m_params;
+    s.world = m_world;
     for (const QString& name : chosenIntegrators()) s.integrators.push_back(name.toStdString());
     for (const QString& t : m_dts->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) s.dts.push_back(t.toDouble());
     s.duration = m_duration->text().toDouble();
@@ -459,7 +476,7 @@ QString WorkPrecisionDialog::csv() const {
 
 QString WorkPrecisionDialog::svg() const {
     return QString::fromStdString(simlab::studySvg(m_result.rows,
-                                                    "work-precision: " + std::string(simcore::sceneInfo(m_params.kind()).name),
+                                                    "work-precision: " + sceneName(),
                                                     simlab::referenceScale(m_result.reference), m_spec.duration));
 }
 
@@ -585,13 +602,14 @@ QString ConservationDialog::csv() const {
 
 QString ConservationDialog::svg() const {
     return QString::fromStdString(simlab::conservationSvg(
-        m_result, "long-time energy: " + std::string(simcore::sceneInfo(m_params.kind()).name)));
+        m_result, "long-time energy: " + sceneName()));
 }
 
 // ---------------------------------------------------------------- refinement study
 
-RefinementDialog::RefinementDialog(const simcore::ParameterSet& params, QWidget* parent)
-    : StudyDialogBase(tr("Refinement study"), params, parent) {
+RefinementDialog::RefinementDialog(const simcore::ParameterSet& params, QWidget* parent,
+                                   std::optional<simcore::WorldSpec> world)
+    : StudyDialogBase(tr("Refinement study"), params, parent, std::move(world)) {
     setChosenIntegrators({QStringLiteral("rk4")});
     auto* form = static_cast<QFormLayout*>(m_options->layout());
     const std::string key = simlab::refinementKey(params.kind());
@@ -625,6 +643,7 @@ void RefinementDialog::setDuration(double seconds) { m_duration->setText(QString
 simlab::RefinementSpec RefinementDialog::spec() const {
     simlab::RefinementSpec s;
     s.params = m_params;
+    s.world = m_world;
     s.key = simlab::refinementKey(m_params.kind());
     for (const QString& t : m_levels->text().split(QLatin1Char(' '), Qt::SkipEmptyParts)) s.values.push_back(t.toInt());
     const QStringList names = chosenIntegrators();
@@ -730,13 +749,14 @@ QString RefinementDialog::csv() const {
 
 QString RefinementDialog::svg() const {
     return QString::fromStdString(simlab::refinementSvg(
-        m_spec, m_result, "refinement: " + std::string(simcore::sceneInfo(m_params.kind()).name)));
+        m_spec, m_result, "refinement: " + sceneName()));
 }
 
 // ---------------------------------------------------------------- stability scan
 
-StabilityDialog::StabilityDialog(const simcore::ParameterSet& params, QWidget* parent)
-    : StudyDialogBase(tr("Stability scan"), params, parent) {
+StabilityDialog::StabilityDialog(const simcore::ParameterSet& params, QWidget* parent,
+                                 std::optional<simcore::WorldSpec> world)
+    : StudyDialogBase(tr("Stability scan"), params, parent, std::move(world)) {
     auto* form = static_cast<QFormLayout*>(m_options->layout());
     m_duration = new QLineEdit(QStringLiteral("2"), m_options);
     m_duration->setToolTip(tr("Each trial runs this long; a run that does not blow up and whose energy stays "
@@ -753,6 +773,7 @@ void StabilityDialog::setDuration(double seconds) { m_duration->setText(QString:
 simlab::StabilitySpec StabilityDialog::spec() const {
     simlab::StabilitySpec s;
     s.params = m_params;
+    s.world = m_world;
     for (const QString& name : chosenIntegrators()) s.integrators.push_back(name.toStdString());
     s.duration = simcore::parseNumber(m_duration->text().trimmed().toStdString()).value_or(0.0);
     return s;
@@ -774,7 +795,7 @@ void StabilityDialog::compute(const std::atomic<bool>* cancel) {
     setProgress(0, int(m_spec.integrators.size()), tr("linearising"));
     m_rows.clear();
     if (cancel->load()) return;
-    m_modes = simlab::stabilityModes(m_params);
+    m_modes = simlab::stabilityModes(m_spec);  // the world's when it is one
     m_rows = simlab::runStability(
         m_spec, m_modes,
         [this](const simlab::StabilityProgress& p) { setProgress(p.done, p.total, QString::fromStdString(p.what)); },

@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <memory>
+#include <optional>
 #include <thread>
 
 #include <QDialog>
@@ -38,12 +39,16 @@ class Mailbox;
 class StudyDialogBase : public QDialog {
     Q_OBJECT
 public:
-    StudyDialogBase(const QString& title, const simcore::ParameterSet& params, QWidget* parent);
+    // With `world`, the study is of that scene of several bodies (params: body 1's values), as
+    // the CLI's study and stability take it.
+    StudyDialogBase(const QString& title, const simcore::ParameterSet& params, QWidget* parent,
+                    std::optional<simcore::WorldSpec> world = std::nullopt);
     ~StudyDialogBase() override;
     bool busy() const { return m_busy; }
     QTableWidget* table() const { return m_table; }
     QCustomPlot* plot() const { return m_plot; }
     QPushButton* runButton() const { return m_run; }
+    void setChosenIntegrators(const QStringList& names);  // checks exactly these
 
 public slots:
     void start();
@@ -57,7 +62,6 @@ protected:
     // destructor: the computation writes the subclass's members, which die before the base.
     void stopAndWait();
     QStringList chosenIntegrators() const;
-    void setChosenIntegrators(const QStringList& names);  // checks exactly these
     void fillTable(const QStringList& headers, const QList<QStringList>& cells);  // one QStringList per row
     void setProgress(int done, int total, const QString& what);  // thread-safe
     // On the GUI thread, before the run: read the widgets into the spec.
@@ -70,7 +74,11 @@ protected:
     virtual QString svg() const { return {}; }
     virtual QString validate() const { return {}; }
 
+    // The scene's name in titles and file names: the world's or the body's.
+    std::string sceneName() const;
+    QLabel* makeSceneLabel();  // "Scene: ... with the current parameters" (the first line)
     simcore::ParameterSet m_params;
+    std::optional<simcore::WorldSpec> m_world;  // a scene of several bodies, or none
     QWidget* m_options = nullptr;  // subclasses add their fields here (a QFormLayout)
     QTableWidget* m_table = nullptr;
     QCustomPlot* m_plot = nullptr;
@@ -94,7 +102,8 @@ private:
 class WorkPrecisionDialog : public StudyDialogBase {
     Q_OBJECT
 public:
-    WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    WorkPrecisionDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr,
+                        std::optional<simcore::WorldSpec> world = std::nullopt);
     ~WorkPrecisionDialog() override { stopAndWait(); }
     const simlab::StudyResult& result() const { return m_result; }
     void setSteps(const QString& dts);
@@ -166,7 +175,8 @@ private:
 class RefinementDialog : public StudyDialogBase {
     Q_OBJECT
 public:
-    RefinementDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    RefinementDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr,
+                     std::optional<simcore::WorldSpec> world = std::nullopt);
     ~RefinementDialog() override { stopAndWait(); }
     const simlab::RefinementResult& result() const { return m_result; }
     void setLevels(const QString& values);  // e.g. "12 24 48"
@@ -194,7 +204,8 @@ private:
 class StabilityDialog : public StudyDialogBase {
     Q_OBJECT
 public:
-    StabilityDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr);
+    StabilityDialog(const simcore::ParameterSet& params, QWidget* parent = nullptr,
+                    std::optional<simcore::WorldSpec> world = std::nullopt);
     ~StabilityDialog() override { stopAndWait(); }
     const std::vector<simlab::StabilityRow>& rows() const { return m_rows; }
     void setDuration(double seconds);

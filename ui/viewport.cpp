@@ -145,6 +145,7 @@ Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
     m_info = new QLabel(this);
     m_info->setTextFormat(Qt::RichText);
     m_info->setWordWrap(true);
+    m_info->setAlignment(Qt::AlignLeft | Qt::AlignTop);  // a wrapped failure line under the rest, not centred
     m_info->setAttribute(Qt::WA_TransparentForMouseEvents);
     m_info->setStyleSheet(QStringLiteral("QLabel { color: #202030; background: rgba(255,255,255,150); padding: 3px; }"));
     m_info->move(8, 8);
@@ -987,6 +988,18 @@ void Viewport::updateOverlay() {
     QString html;
     if (!m_title.isEmpty()) html += QStringLiteral("<b>%1</b><br>").arg(m_title.toHtmlEscaped());
     html += QStringLiteral("t = %1 s").arg(num(lane.diagnostics.time, 'f', 3));
+    // A world side by side: each view's own total momentum and min_gap (one view: the Bodies dock).
+    if (lane.world && m_frame->lanes.size() > 1) {
+        const Eigen::Vector3d& p = lane.world->momentum;
+        const bool flat = m_frame->scene->topology.dimension < 3;
+        const QString momentum = flat ? QStringLiteral("(%1, %2)").arg(num(p.x(), 'g', 4), num(p.y(), 'g', 4))
+                                      : QStringLiteral("(%1, %2, %3)").arg(num(p.x(), 'g', 4), num(p.y(), 'g', 4), num(p.z(), 'g', 4));
+        html += QStringLiteral("<br>") + tr("momentum %1 kg m/s").arg(momentum).toHtmlEscaped();
+        const QString gap = num(lane.world->minGap, 'g', 3);
+        html += QStringLiteral("<br>") + (lane.world->minGapBodies[0] >= 0 ? tr("min_gap %1 m").arg(gap)
+                                                                          : tr("min_gap beyond %1 m").arg(gap))
+                                             .toHtmlEscaped();
+    }
     // The distance to the reference view: view 1, or the first live view once view 1 has failed
     // (the Run dock's "distance to view N"); none on the reference view itself.
     const int reference = std::clamp(lane.divergenceReference, 0, int(m_frame->lanes.size()) - 1);

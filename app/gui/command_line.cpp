@@ -194,11 +194,10 @@ void GuiCommandLine::resolve(GuiRequest& r) const {
     for (const QString& assignment : m_parser.values(m_set)) request.set.push_back(assignment.toStdString());
     if (m_parser.isSet(m_integrator)) request.integrator = m_parser.value(m_integrator).toStdString();
     r.setup = simlab::resolveScene(request);
-    if (r.setup.world && m_parser.isSet(m_compare))
-        refuse(QStringLiteral("--compare takes scenes of one body (a world of several bodies runs alone, with one integrator)"));
 }
 
-// --compare (the CLI's list rules; each lane's integrator and memory by simlab::checkLanes) and
+// --compare (the CLI's list rules; each lane's integrator and memory by simlab::checkLanes, for a
+// world every body's with each integrator as run builds it) and
 // --docks (only docks this build has, refused like any unknown name).
 void GuiCommandLine::lanesAndDocks(GuiRequest& r) const {
     r.integrators = {QString::fromStdString(r.setup.integrator)};
@@ -206,7 +205,8 @@ void GuiCommandLine::lanesAndDocks(GuiRequest& r) const {
     if (m_parser.isSet(m_compare)) r.integrators = nameList("compare", m_parser.value(m_compare));
     std::vector<std::string> lanes;
     for (const QString& name : r.integrators) lanes.push_back(name.toStdString());
-    simlab::checkLanes(r.setup.params, lanes);
+    if (r.setup.world) simlab::checkLanes(*r.setup.world, lanes);
+    else simlab::checkLanes(r.setup.params, lanes);
     // --precision: the front door's check, as the CLI's run (every view's integrator).
     for (const std::string& name : lanes) simlab::checkPrecision(m_parser.value(m_precision).toStdString(), name);
     r.floatPrecision = m_parser.value(m_precision) == QLatin1String("float");

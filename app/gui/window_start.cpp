@@ -150,7 +150,7 @@ void startScene(elui::MainWindow& window, const GuiRequest& r) {
             changed.integrator = r.integrators.front().toStdString();
             window.openScene(changed, r.integrators, r.sceneArg, &*file);
         } else {
-            window.startWorld(*r.setup.world, r.integrators.front());
+            window.startWorld(*r.setup.world, r.integrators);
         }
     } else if (file) {
         simlab::SceneFile changed = *file;
