@@ -209,8 +209,15 @@ void checkPrecision(const std::string& precision, const std::string& integrator)
     refuseIf(precisionProblem(precision, integrator));
 }
 
+void checkPrecision(const SceneSetup& scene, const std::string& precision, const std::string& integrator) {
+    checkPrecision(precision, integrator);
+    if (scene.world && precision == "float")
+        refuse("precision float takes scenes of one body (the float path is built for one); " + quoted(scene.sceneName) +
+               " has " + std::to_string(scene.world->bodies.size()) + " bodies");
+}
+
 void checkRun(const SceneSetup& scene, const RunRequest& run) {
-    checkPrecision(run.precision, scene.integrator);
+    checkPrecision(scene, run.precision, scene.integrator);
     // The range the message states (the CLI's and Python's own checks say the same; the front
     // door must not rely on them: fuzz_request found an adaptive run of 1e300 s accepted here).
     if (!(run.duration > 0.0) || !(run.duration <= 1e7))

@@ -124,6 +124,9 @@ void checkRun(const SceneSetup& scene, const RunRequest& run);
 // integrators the float path is built for (simcore::floatPathSupports). The problem, or nothing.
 std::optional<std::string> precisionProblem(const std::string& precision, const std::string& integrator);
 void checkPrecision(const std::string& precision, const std::string& integrator);
+// The same for a run of `scene`: the float path is built for one body, so a scene of several
+// bodies takes double only (the CLI's run, the GUI's command line, checkRun).
+void checkPrecision(const SceneSetup& scene, const std::string& precision, const std::string& integrator);
 
 // A work-precision study: validateStudy, then its references and runs bounded in steps and
 // in memory (the reference trajectory and one run's, samples x particles each).

@@ -143,11 +143,10 @@ void checkRun(RunArgs& args) {
     args.dialect = *dialect;
     args.setup = sceneSetup(args.scene);
     if (args.setup.world) {
-        // A world's CSV has per-body columns (simlab::worldColumns); the workbook, the
-        // spreadsheet dialect and the float path are built for one body.
+        // A world's CSV has per-body columns (simlab::worldColumns); the workbook and the
+        // spreadsheet dialect are built for one body (the float path too: simlab::checkRun).
         for (const auto& [given, option] : {std::pair{!args.xlsx.empty(), "--xlsx"},
-                                            {args.dialect != simlab::CsvDialect::Plain, "--csv-dialect excel-semicolon"},
-                                            {args.precision == "float", "--precision float"}})
+                                            {args.dialect != simlab::CsvDialect::Plain, "--csv-dialect excel-semicolon"}})
             if (given) throw UsageError(std::string(option) + " takes scenes of one body; " + args.setup.sceneName +
                                         " has " + std::to_string(args.setup.world->bodies.size()) + " bodies");
     }

@@ -208,7 +208,7 @@ void GuiCommandLine::lanesAndDocks(GuiRequest& r) const {
     if (r.setup.world) simlab::checkLanes(*r.setup.world, lanes);
     else simlab::checkLanes(r.setup.params, lanes);
     // --precision: the front door's check, as the CLI's run (every view's integrator).
-    for (const std::string& name : lanes) simlab::checkPrecision(m_parser.value(m_precision).toStdString(), name);
+    for (const std::string& name : lanes) simlab::checkPrecision(r.setup, m_parser.value(m_precision).toStdString(), name);
     r.floatPrecision = m_parser.value(m_precision) == QLatin1String("float");
     if (m_parser.isSet(m_docks)) {
         const QStringList known = elui::MainWindow::dockNames();
