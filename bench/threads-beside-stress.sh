@@ -8,6 +8,7 @@
 #
 #   bench/threads-beside-stress.sh [--rounds N] [--steps N] [--loads "0 1 2"]
 #       [--precisions "double float"] [--kernels avx2] [--raw FILE] CLI [CLI ...]
+#   bench/threads-beside-stress.sh --summary FILE CLI [CLI ...]   (the table again from a raw file)
 #
 # e.g. bench/threads-beside-stress.sh build/release/app/cli/elastic-lab-cli
 #      bench/threads-beside-stress.sh /tmp/cli-before build/release/app/cli/elastic-lab-cli
@@ -16,7 +17,7 @@
 # runs in the same scheduler group as the benchmark, as a second program of the same user would.
 set -euo pipefail
 
-rounds=5 steps=150 loads="0 1 2" precisions="double float" kernels=avx2 raw=""
+rounds=5 steps=150 loads="0 1 2" precisions="double float" kernels=avx2 raw="" summary=""
 while [ $# -gt 0 ]; do
     case "$1" in
         --rounds) rounds=$2; shift 2 ;;
@@ -25,14 +26,16 @@ while [ $# -gt 0 ]; do
         --precisions) precisions=$2; shift 2 ;;
         --kernels) kernels=$2; shift 2 ;;
         --raw) raw=$2; shift 2 ;;
-        -h|--help) sed -n '2,17p' "$0"; exit 0 ;;
+        --summary) summary=$2; shift 2 ;;
+        -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
         -*) echo "unknown option $1" >&2; exit 2 ;;
         *) break ;;
     esac
 done
 [ $# -ge 1 ] || { echo "usage: $0 [options] CLI [CLI ...]" >&2; exit 2; }
-command -v stress-ng >/dev/null || { echo "stress-ng is not installed (scripts/install-deps.sh)" >&2; exit 2; }
 clis=("$@")
+if [ -z "$summary" ]; then  # measure (else only the table from the raw file)
+command -v stress-ng >/dev/null || { echo "stress-ng is not installed (scripts/install-deps.sh)" >&2; exit 2; }
 for c in "${clis[@]}"; do [ -x "$c" ] || { echo "not an executable: $c" >&2; exit 2; }; done
 
 [ -n "$raw" ] || raw=$(mktemp /tmp/threads-beside-stress.XXXXXX.csv)
@@ -50,7 +53,8 @@ trap cleanup EXIT
 one() {  # load build-index precision round threads
     local out pool
     out=$(ELASTIC_LAB_POOL_STATS=1 "${clis[$2]}" "${args[@]}" --precision "$3" --threads "$5" 2>/tmp/tbs-err.$$)
-    pool=$(grep '^pool:' /tmp/tbs-err.$$ | sed 's/^pool: //; s/,/;/g' || true)
+    # the pools' own account (ELASTIC_LAB_POOL_STATS), one field: a float run has two pools
+    pool=$(grep '^pool:' /tmp/tbs-err.$$ | sed 's/^pool: //; s/,/;/g' | paste -sd'|' || true)
     # steps_per_second is column 11, state_hash column 15 of bench's CSV
     echo "$out" | tail -1 | awk -F, -v l="$1" -v b="$2" -v p="$3" -v r="$4" -v t="$5" -v pool="$pool" \
         '{print l "," b "," p "," r "," t "," $11 "," $15 "," pool}' >> "$raw"
@@ -78,6 +82,10 @@ done
 rm -f /tmp/tbs-err.$$
 echo "load average at end: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "raw rows: $raw"
+
+else
+    raw=$summary
+fi
 
 python3 - "$raw" "${clis[@]}" <<'EOF'
 import csv, statistics, sys
