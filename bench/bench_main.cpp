@@ -90,8 +90,8 @@ void BM_Forces(benchmark::State& state) {
     p.set(simcore::Param::Subdivisions, static_cast<double>(state.range(0)));
     Body body = buildBody(p);
     ForceModel model(&body.topology, &body.mass, sceneTerms(SceneKind::Sphere3d));
-    model.params.ks = {800, 700, 700};
-    model.params.kd = {15, 50, 50};
+    model.params.stiffness = {800, 700, 700};
+    model.params.damping = {15, 50, 50};
     model.params.gasConstant = {20, 20};
     const Eigen::Index n3 = 3 * body.topology.particleCount();
     Eigen::VectorXd x = Eigen::Map<Eigen::VectorXd>(body.positions.data(), n3) * 1.01;

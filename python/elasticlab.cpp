@@ -301,10 +301,12 @@ Sampling checkedSampling(const simcore::ParameterSet& params, const std::string&
 // diagnostics (`columns`), one per line, are recorded at the start, every `every` steps and the
 // end, or at `times` (absolute simulated times, ascending): the first step at or past each (an
 // adaptive method shortens its step to land on it, as it does at the end). `progress`, when
-// given, is called with the simulated time between slices of work; `published` after each step.
+// given, is called with the simulated time between slices of work; `published` after each step;
+// `recorded` with the diagnostics of each row recorded (a file writer takes them).
 // Returns the rows as an array, or None when nothing was sampled.
-template <class Sim, class Columns, class Published>
-py::object sampledRun(Sim& sim, const Columns& columns, const Sampling& s, const py::object& progress, Published&& published) {
+template <class Sim, class Columns, class Published, class Recorded>
+py::object sampledRun(Sim& sim, const Columns& columns, const Sampling& s, const py::object& progress, Published&& published,
+                      Recorded&& recorded) {
     const double duration = s.duration;
     const long every = s.every;
     const std::vector<double>& times = s.times;
@@ -312,6 +314,7 @@ py::object sampledRun(Sim& sim, const Columns& columns, const Sampling& s, const
     std::vector<double> rows;
     auto record = [&] {
         for (const auto& c : columns) rows.push_back(c.value(sim.diagnostics()));
+        recorded(sim.diagnostics());
     };
     std::size_t next = 0;  // the next of `times` not yet recorded
     auto due = [&] {       // records one row for every sample time reached (one per step)
@@ -341,6 +344,18 @@ py::object sampledRun(Sim& sim, const Columns& columns, const Sampling& s, const
         }, between);
     return sampled ? rowsArray(rows, columns.size()) : py::none();
 }
+
+// One body as sampledRun steps it: the Simulation, or the float path started from it
+// (precision="float", a fixed step: it ends at the first step at or past the end).
+struct OneBody {
+    simcore::Simulation& sim;
+    simcore::FloatSimulation* single;  // null: the double path
+    const simcore::Diagnostics& diagnostics() const { return single ? single->diagnostics() : sim.diagnostics(); }
+    double time() const { return single ? single->time() : sim.time(); }
+    long stepCount() const { return single ? single->stepCount() : sim.stepCount(); }
+    double dt() const { return sim.dt(); }
+    bool step(double until) { return single ? single->step() : sim.step(until); }
+};
 
 class PySimulation {
 public:
@@ -432,10 +447,6 @@ public:
         const Sampling s = checkedSampling(sim().parameters(), std::string(sim().integrator().name()), sim().integratorOptions(),
                                            m_sim->time(), m_columns.size(), durationArg, everyArg, timesArg, everySecondsArg,
                                            precision);
-        const double duration = s.duration;
-        const long every = s.every;
-        const std::vector<double>& times = s.times;
-        const bool sampled = s.sampled;
         const simlab::TimeSeriesFiles files = checkedFiles(csvPath, xlsxPath, dialectName);
         const simcore::SceneKind kind = m_sim->parameters().kind();
         simlab::TimeSeriesWriter writer(kind, simlab::timeSeriesColumns(kind, m_sim->diagnostics().hasSolverCounters),
@@ -449,50 +460,19 @@ public:
             single = std::make_unique<simcore::FloatSimulation>(*m_sim);
             single->setThreads(m_sim->threads());
         }
-        auto diagnostics = [&]() -> const simcore::Diagnostics& { return single ? single->diagnostics() : m_sim->diagnostics(); };
-        auto now = [&] { return single ? single->time() : m_sim->time(); };
-        auto stepCount = [&] { return single ? single->stepCount() : m_sim->stepCount(); };
-        auto published = [&] { single ? publish(single->time(), single->stepCount()) : publish(); };
         Busy busy(m_busy);
-        const long firstStep = stepCount();
-        std::vector<double> rows;
-        auto record = [&] {
-            for (const simlab::CsvColumn& c : m_columns) rows.push_back(c.value(diagnostics()));
-            if (files.any()) writer.add(diagnostics());
-        };
-        std::size_t next = 0;  // the next of `times` not yet recorded
-        auto due = [&] {       // records one row for every sample time reached (one per step)
-            bool reached = false;
-            while (next < times.size() && now() >= times[next] - 1e-9 * m_sim->dt()) ++next, reached = true;
-            return reached;
-        };
-        if (every || due()) record();
-        const double tEnd = now() + duration;
-        auto reached = [&] { return now() >= tEnd - 1e-9 * m_sim->dt(); };
-        std::function<void()> between;
-        if (!progress.is_none()) between = [&] { progress(now()); };
-        if (!reached())
-            inSlices([&] {
-                const bool ok = single ? single->step() : m_sim->step(next < times.size() ? std::min(tEnd, times[next]) : tEnd);
-                published();
-                if (!ok) return false;
-                const bool last = reached();
-                const bool sample = due();
-                if ((every && (stepCount() % every == 0 || last)) || sample || (last && sampled && !every))
-                    record();
-                // An adaptive run stops at the bound, as the CLI's (its rows up to there kept).
-                if (!last && static_cast<double>(stepCount() - firstStep) >= simlab::kMaxSteps)
-                    throw std::runtime_error("run stopped at step " + std::to_string(stepCount()) + ": " +
-                                             simlab::number(simlab::kMaxSteps) + " steps taken, the most one run may take");
-                return !last;
-            }, between);
+        OneBody body{*m_sim, single.get()};
+        const py::object table = sampledRun(
+            body, m_columns, s, progress, [&] { single ? publish(single->time(), single->stepCount()) : publish(); },
+            [&](const simcore::Diagnostics& d) {
+                if (files.any()) writer.add(d);
+            });
         // A failed float run leaves the simulation at its start (the float state at a failure
         // may not be finite); a good one hands its end state over.
         if (single && !single->failed()) {
             single->writeStateTo(*m_sim);
             publish();
         }
-        const py::object table = sampled ? rowsArray(rows, m_columns.size()) : py::none();
         // The files hold the run so far also when it failed (as the CLI's).
         if (files.any() && !writer.commit()) throw py::value_error(writer.error());
         raiseIfFailed(table, single ? single->failure() : m_sim->failure());
@@ -751,7 +731,7 @@ public:
                                            m_world->integratorOptions(), m_world->time(), m_columns.size(), durationArg,
                                            everyArg, timesArg, everySecondsArg);
         Busy busy(m_busy);
-        py::object table = sampledRun(*m_world, m_columns, s, progress, [] {});
+        py::object table = sampledRun(*m_world, m_columns, s, progress, [] {}, [](const auto&) {});
         raiseIfFailed(table);
         return table;
     }

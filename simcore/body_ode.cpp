@@ -86,7 +86,7 @@ void BodyOde::forceJacobianProduct(const Eigen::VectorXd& dx, const Eigen::Vecto
     if (m_forces.terms().has(Term::Springs))
         for (int f = 0; f < kSpringFamilyCount; ++f) {
             const auto k = static_cast<std::size_t>(f);
-            addSpringJacobianProduct(topo.springs[k], p.ks[k], p.kd[k], m_x.data(), dx.data(), dv.data(), out.data());
+            addSpringJacobianProduct(topo.springs[k], p.stiffness[k], p.damping[k], m_x.data(), dx.data(), dv.data(), out.data());
         }
     if (m_gasOn)
         for (const Surface& s : topo.surfaces) {
@@ -113,7 +113,7 @@ void BodyOde::forceJacobianDiagonal(Eigen::VectorXd& kdiag, Eigen::VectorXd& ddi
     if (m_forces.terms().has(Term::Springs))
         for (int f = 0; f < kSpringFamilyCount; ++f) {
             const auto k = static_cast<std::size_t>(f);
-            addSpringJacobianDiagonal(topo.springs[k], p.ks[k], p.kd[k], m_x.data(), kdiag.data(), ddiag.data());
+            addSpringJacobianDiagonal(topo.springs[k], p.stiffness[k], p.damping[k], m_x.data(), kdiag.data(), ddiag.data());
         }
     if (m_gasOn)
         for (const Surface& s : topo.surfaces) {
@@ -207,7 +207,7 @@ bool BodyOde::distanceConstraints(DistanceConstraints& out) {
     for (int f = 0; f < kSpringFamilyCount; ++f) {
         const auto k = static_cast<std::size_t>(f);
         const SpringSet& set = topo.springs[k];
-        out.families[k] = {set.a, set.b, set.rest, springs ? p.ks[k] : 0.0, springs ? p.kd[k] : 0.0};
+        out.families[k] = {set.a, set.b, set.rest, springs ? p.stiffness[k] : 0.0, springs ? p.damping[k] : 0.0};
     }
     out.inverseMass = &m_invMass;
     out.substeps = m_substeps;

@@ -4,9 +4,9 @@
 // owned by kChunks fixed chunks (vertex k of each layer by chunk 0 when k < n/2), each chunk's
 // springs and faces join only its own particles, and the few joining two chunks are shared:
 //  1. each chunk (a task) clears its rows of the force and gradient buffers and adds its
-//     springs' forces F = [ks (L - L0) + kd (dv.u)] u (+F to the first end, -F to the second,
+//     springs' forces F = [stiffness (L - L0) + damping (dv.u)] u (+F to the first end, -F to the second,
 //     spring by spring) and its faces' rows (b - a) x (c - a) (3D; (dy, -dx) in 2D) to each
-//     corner; its damping power kd (dv.u)^2 and volume terms x_a.((b - a) x (c - a))
+//     corner; its damping power damping * (dv.u)^2 and volume terms x_a.((b - a) x (c - a))
 //     (= x_a.(x_b x x_c); 2D: the shoelace term) are summed in double lanes;
 //  2. (the caller) the shared springs and faces, then volumes and pressures from the sums, in
 //     chunk order;
@@ -32,6 +32,7 @@
 
 #include "simcore/force_kernels.h"
 #include "simcore/forces.h"
+#include "simcore/internal/compensated_time.h"
 #include "simcore/parallel.h"
 
 // The AVX2 passes on x86-64 with GCC, unless the build asks for portable kernels only
@@ -95,8 +96,8 @@ struct QuadArrays {
 // One quad, scalar: lane l's spring as springScalar, its power to lane ((q - base) % 2) * 4 + l;
 // the rows then updated in a fixed order: a += F0 - F3, b -= F0 + F2, A += F1 + F2,
 // B += F3 - F1.
-inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q, int n, const std::array<float, 4>& ks,
-                       const std::array<float, 4>& kd, const float* x, const float* v, float* f4, LaneSums& power) {
+inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q, int n, const std::array<float, 4>& stiffness,
+                       const std::array<float, 4>& damping, const float* x, const float* v, float* f4, LaneSums& power) {
     const int a = quads.a[q], b = quads.b[q], A = a + n, B = b + n;
     const std::array<int, 4> first{a, A, A, B}, second{b, B, b, a};
     std::array<F4, 4> force;
@@ -107,8 +108,8 @@ inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q,
         const float inv = 1.0f / len;
         const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
         const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
-        const float mag = ks[l] * (len - quads.rest[4 * q + l]) + kd[l] * dvu;
-        const float p = kd[l] * dvu * dvu;
+        const float mag = stiffness[l] * (len - quads.rest[4 * q + l]) + damping[l] * dvu;
+        const float p = damping[l] * dvu * dvu;
         const bool ok = len >= static_cast<float>(kDegenerateLength);
         force[l] = F4{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
         power.lane[((q - base) % 2) * 4 + l] += static_cast<double>(ok ? p : 0.0f);
@@ -121,7 +122,7 @@ inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q,
 
 // One spring, scalar: the reference the eight-wide code follows operation by operation. Its
 // power goes to lane (k - base) % 8.
-inline void springScalar(const SpringArrays& s, std::size_t base, std::size_t k, float ks, float kd, const float* x,
+inline void springScalar(const SpringArrays& s, std::size_t base, std::size_t k, float stiffness, float damping, const float* x,
                          const float* v, float* f4, LaneSums& power) {
     const F4 xa = row(x, s.a[k]), xb = row(x, s.b[k]), va = row(v, s.a[k]), vb = row(v, s.b[k]);
     const F4 d = xb - xa, dv = vb - va;
@@ -130,8 +131,8 @@ inline void springScalar(const SpringArrays& s, std::size_t base, std::size_t k,
     const float inv = 1.0f / len;
     const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
     const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
-    const float mag = ks * (len - s.rest[k]) + kd * dvu;
-    const float p = kd * dvu * dvu;
+    const float mag = stiffness * (len - s.rest[k]) + damping * dvu;
+    const float p = damping * dvu * dvu;
     const bool ok = len >= static_cast<float>(kDegenerateLength);
     const F4 force{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
     addRow(f4, s.a[k], force);
@@ -229,7 +230,7 @@ struct Springs8 {
     __m256 fx, fy, fz, power;
 };
 [[gnu::always_inline]] inline Springs8 springForces8(__m256 dx, __m256 dy, __m256 dz, __m256 wx, __m256 wy, __m256 wz,
-                                                     __m256 ks, __m256 kd, __m256 rest) {
+                                                     __m256 stiffness, __m256 damping, __m256 rest) {
     const __m256 len2 =
         _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
     const __m256 len = _mm256_sqrt_ps(len2);
@@ -238,14 +239,14 @@ struct Springs8 {
     const __m256 dvu =
         _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, ux), _mm256_mul_ps(wy, uy)), _mm256_mul_ps(wz, uz));
     const __m256 ok = _mm256_cmp_ps(len, _mm256_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
-    const __m256 mag = _mm256_add_ps(_mm256_mul_ps(ks, _mm256_sub_ps(len, rest)), _mm256_mul_ps(kd, dvu));
+    const __m256 mag = _mm256_add_ps(_mm256_mul_ps(stiffness, _mm256_sub_ps(len, rest)), _mm256_mul_ps(damping, dvu));
     return {_mm256_and_ps(ok, _mm256_mul_ps(mag, ux)), _mm256_and_ps(ok, _mm256_mul_ps(mag, uy)),
-            _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)), _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(kd, dvu), dvu))};
+            _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)), _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(damping, dvu), dvu))};
 }
 
-void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float ksScalar, float kdScalar,
+void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float stiffnessScalar, float dampingScalar,
               const float* x, const float* v, float* f4, LaneSums& power) {
-    const __m256 ks = _mm256_set1_ps(ksScalar), kd = _mm256_set1_ps(kdScalar);
+    const __m256 stiffness = _mm256_set1_ps(stiffnessScalar), damping = _mm256_set1_ps(dampingScalar);
     LaneRegisters sums(power);
     std::size_t k = begin;
     for (; k + 8 <= end; k += 8) {
@@ -258,7 +259,7 @@ void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float k
         columns8(v, ib, vbx, vby, vbz);
         const __m256 dx = _mm256_sub_ps(xbx, xax), dy = _mm256_sub_ps(xby, xay), dz = _mm256_sub_ps(xbz, xaz);
         const __m256 wx = _mm256_sub_ps(vbx, vax), wy = _mm256_sub_ps(vby, vay), wz = _mm256_sub_ps(vbz, vaz);
-        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, ks, kd, _mm256_loadu_ps(s.rest.data() + k));
+        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm256_loadu_ps(s.rest.data() + k));
         __m128 rows[8];
         rows8(f.fx, f.fy, f.fz, rows);
         for (int j = 0; j < 8; ++j) {
@@ -268,14 +269,14 @@ void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float k
         sums.add(f.power);
     }
     sums.store(power);
-    for (; k < end; ++k) springScalar(s, begin, k, ksScalar, kdScalar, x, v, f4, power);
+    for (; k < end; ++k) springScalar(s, begin, k, stiffnessScalar, dampingScalar, x, v, f4, power);
 }
 
 // Two quads at a time: lanes 0-3 the first quad's springs, 4-7 the second's.
-void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, const std::array<float, 4>& ks4,
-            const std::array<float, 4>& kd4, const float* x, const float* v, float* f4, LaneSums& power) {
-    const __m256 ks = _mm256_setr_ps(ks4[0], ks4[1], ks4[2], ks4[3], ks4[0], ks4[1], ks4[2], ks4[3]);
-    const __m256 kd = _mm256_setr_ps(kd4[0], kd4[1], kd4[2], kd4[3], kd4[0], kd4[1], kd4[2], kd4[3]);
+void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, const std::array<float, 4>& stiffness4,
+            const std::array<float, 4>& damping4, const float* x, const float* v, float* f4, LaneSums& power) {
+    const __m256 stiffness = _mm256_setr_ps(stiffness4[0], stiffness4[1], stiffness4[2], stiffness4[3], stiffness4[0], stiffness4[1], stiffness4[2], stiffness4[3]);
+    const __m256 damping = _mm256_setr_ps(damping4[0], damping4[1], damping4[2], damping4[3], damping4[0], damping4[1], damping4[2], damping4[3]);
     // Lane 0 and 3 of each half subtract (a: F0 - F3, B: F3 - F1): x - y is x + (-y) exactly.
     const __m256 flip = _mm256_castsi256_ps(_mm256_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN));
     LaneRegisters sums(power);
@@ -301,7 +302,7 @@ void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, 
         const __m256 wx = _mm256_sub_ps(_mm256_permute_ps(VX, 0x1D), _mm256_permute_ps(VX, 0xE8));
         const __m256 wy = _mm256_sub_ps(_mm256_permute_ps(VY, 0x1D), _mm256_permute_ps(VY, 0xE8));
         const __m256 wz = _mm256_sub_ps(_mm256_permute_ps(VZ, 0x1D), _mm256_permute_ps(VZ, 0xE8));
-        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, ks, kd, _mm256_loadu_ps(quads.rest.data() + 4 * q));
+        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm256_loadu_ps(quads.rest.data() + 4 * q));
         // Per lane (a, b, A, B): F0 + (-F3), F0 + F2, F1 + F2, F3 + (-F1): (0, 0, 1, 3) + (3, 2, 2, 1).
         auto rowsOf = [&](__m256 column) {
             return _mm256_add_ps(_mm256_permute_ps(column, 0xD0), _mm256_xor_ps(_mm256_permute_ps(column, 0x6B), flip));
@@ -334,7 +335,7 @@ void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, 
         apply(g1);
     }
     sums.store(power);
-    for (; q < end; ++q) quadScalar(quads, begin, q, n, ks4, kd4, x, v, f4, power);
+    for (; q < end; ++q) quadScalar(quads, begin, q, n, stiffness4, damping4, x, v, f4, power);
 }
 
 // corners: the faces' corner indices as three columns (a, b, c) of `stride` each.
@@ -421,7 +422,7 @@ struct FloatSimulation::Impl {
     std::vector<float> invMass4;  // 4 per particle (0 on fixed particles and absent axes)
     std::vector<float> weight4;   // gravity force rows
     std::vector<Chunk> chunks;    // the chunks, then the shared springs and faces
-    std::array<float, kSpringFamilyCount> ks{}, kd{};
+    std::array<float, kSpringFamilyCount> stiffness{}, damping{};
     int perLayer = 0;  // particles per layer (the quads' outer offset)
     std::vector<std::uint8_t> particleSlot;
     ForceParams params;
@@ -459,22 +460,22 @@ struct FloatSimulation::Impl {
         c.power = {};
         c.volume = {};
         float* f4 = force4.data();
-        const std::array<float, 4> quadKs{ks[0], ks[0], ks[2], ks[2]}, quadKd{kd[0], kd[0], kd[2], kd[2]};
+        const std::array<float, 4> quadStiffness{stiffness[0], stiffness[0], stiffness[2], stiffness[2]}, quadDamping{damping[0], damping[0], damping[2], damping[2]};
 #ifdef SIMCORE_FLOAT_AVX2
-        if (wide) quads8(c.quads, 0, c.quads.size(), perLayer, quadKs, quadKd, px, pv, f4, c.power);
+        if (wide) quads8(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
         else
 #endif
             for (std::size_t q = 0; q < c.quads.size(); ++q)
-                quadScalar(c.quads, 0, q, perLayer, quadKs, quadKd, px, pv, f4, c.power);
+                quadScalar(c.quads, 0, q, perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
         for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
             const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
 #ifdef SIMCORE_FLOAT_AVX2
             if (wide) {
-                springs8(c.springs, begin, end, ks[f], kd[f], px, pv, f4, c.power);
+                springs8(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
                 continue;
             }
 #endif
-            for (std::size_t k = begin; k < end; ++k) springScalar(c.springs, begin, k, ks[f], kd[f], px, pv, f4, c.power);
+            for (std::size_t k = begin; k < end; ++k) springScalar(c.springs, begin, k, stiffness[f], damping[f], px, pv, f4, c.power);
         }
         if (!gas) return;
         float* g4 = gradient4.data();
@@ -679,7 +680,7 @@ struct FloatSimulation::Impl {
         }
         for (int f = 0; f < kSpringFamilyCount; ++f)
             d.spring[static_cast<std::size_t>(f)] =
-                springEnergy(topo->springs[static_cast<std::size_t>(f)], params.ks[static_cast<std::size_t>(f)], px);
+                springEnergy(topo->springs[static_cast<std::size_t>(f)], params.stiffness[static_cast<std::size_t>(f)], px);
         d.gas = 0.0;
         d.volume = {};
         d.pressure = {};
@@ -801,8 +802,8 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
         }
     }
     for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
-        s.ks[f] = static_cast<float>(s.params.ks[f]);
-        s.kd[f] = static_cast<float>(s.params.kd[f]);
+        s.stiffness[f] = static_cast<float>(s.params.stiffness[f]);
+        s.damping[f] = static_cast<float>(s.params.damping[f]);
         for (Chunk& c : s.chunks) c.familyStart[f] = c.springs.size();
         const SpringSet& set = topo.springs[f];
         for (std::size_t k = 0; k < set.size(); ++k) {
@@ -911,7 +912,7 @@ bool FloatSimulation::step() {
     m_impl->step(m_integrator, static_cast<float>(m_dt), m_dt);
     ++m_step;
     const double started = m_time;
-    m_time += m_dt;
+    m_time = advanceTime(started, m_dt, m_timeCarry);
     m_impl->measured = false;
     if (std::string reason = m_impl->check(); !reason.empty()) {
         m_failure = Failure{reason, m_step, started};

@@ -93,6 +93,7 @@ private:
     std::string m_integrator;
     double m_dt = 0.0;
     double m_time = 0.0;
+    double m_timeCarry = 0.0;  // round-off carried by the compensated time sum [s]
     long m_step = 0;
     std::optional<Failure> m_failure;
 };

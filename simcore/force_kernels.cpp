@@ -136,36 +136,36 @@ KernelSet useKernels(KernelSet wanted) {
 
 KernelSet kernelsInUse() { return g_kernels.load(std::memory_order_relaxed); }
 
-SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
-                       double kd, const double* x, const double* v, double* f4, int& degenerate) {
+SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double stiffness,
+                       double damping, const double* x, const double* v, double* f4, int& degenerate) {
 #if SIMCORE_AVX2_KERNELS
-    if (kernelsInUse() >= KernelSet::Avx2) return avx2::springBlock(springs, begin, end, ks, kd, x, v, f4, degenerate);
+    if (kernelsInUse() >= KernelSet::Avx2) return avx2::springBlock(springs, begin, end, stiffness, damping, x, v, f4, degenerate);
 #endif
-    return portable::springBlock(springs, begin, end, ks, kd, x, v, f4, degenerate);
+    return portable::springBlock(springs, begin, end, stiffness, damping, x, v, f4, degenerate);
 }
 
-SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double ks,
-                          double kd, const double* x, const double* v, double* f4, int& degenerate) {
+SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double stiffness,
+                          double damping, const double* x, const double* v, double* f4, int& degenerate) {
 #if SIMCORE_AVX512_KERNELS
     if (kernelsInUse() == KernelSet::Avx512)
-        return avx512::springRunBlock(springs, begin, end, n, ks, kd, x, v, f4, degenerate);
+        return avx512::springRunBlock(springs, begin, end, n, stiffness, damping, x, v, f4, degenerate);
 #endif
 #if SIMCORE_AVX2_KERNELS
-    if (kernelsInUse() == KernelSet::Avx2) return avx2::springRunBlock(springs, begin, end, n, ks, kd, x, v, f4, degenerate);
+    if (kernelsInUse() == KernelSet::Avx2) return avx2::springRunBlock(springs, begin, end, n, stiffness, damping, x, v, f4, degenerate);
 #endif
-    return portable::springRunBlock(springs, begin, end, n, ks, kd, x, v, f4, degenerate);
+    return portable::springRunBlock(springs, begin, end, n, stiffness, damping, x, v, f4, degenerate);
 }
 
 QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
-                   std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
+                   std::array<double, 2> stiffness, std::array<double, 2> damping, const double* x,
                    const double* v, double* f4, int& degenerate) {
 #if SIMCORE_AVX512_KERNELS
-    if (kernelsInUse() == KernelSet::Avx512) return avx512::quadBlock(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
+    if (kernelsInUse() == KernelSet::Avx512) return avx512::quadBlock(quads, begin, end, n, stiffness, damping, x, v, f4, degenerate);
 #endif
 #if SIMCORE_AVX2_KERNELS
-    if (kernelsInUse() == KernelSet::Avx2) return avx2::quadBlock(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
+    if (kernelsInUse() == KernelSet::Avx2) return avx2::quadBlock(quads, begin, end, n, stiffness, damping, x, v, f4, degenerate);
 #endif
-    return portable::quadBlock(quads, begin, end, n, ks, kd, x, v, f4, degenerate);
+    return portable::quadBlock(quads, begin, end, n, stiffness, damping, x, v, f4, degenerate);
 }
 
 double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end, const double* x, double* g4) {

@@ -52,21 +52,21 @@ KernelSet kernelsInUse();
 
 // Sums over a block of springs, each in four interleaved lanes (see sumLanes).
 struct SpringSums {
-    double power = 0.0;     // damping power kd (dv.u)^2 [W]
-    double stretch2 = 0.0;  // (L - L0)^2, for the elastic energy ks/2 (L - L0)^2 [m^2]
+    double power = 0.0;     // damping power damping * (dv.u)^2 [W]
+    double stretch2 = 0.0;  // (L - L0)^2, for the elastic energy stiffness/2 (L - L0)^2 [m^2]
 };
 
 // Springs [begin, end) of a set: adds F to the first particle and -F to the second in f4,
-// where F = [ks (L - L0) + kd (dv.u)] u. Counts springs shorter than kDegenerateLength into
+// where F = [stiffness (L - L0) + damping (dv.u)] u. Counts springs shorter than kDegenerateLength into
 // `degenerate` (they get no force, but their stretch still counts).
-SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks,
-                       double kd, const double* x, const double* v, double* f4, int& degenerate);
+SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double stiffness,
+                       double damping, const double* x, const double* v, double* f4, int& degenerate);
 
 // The same for springs [begin, end) that form a run: spring k joins particle
 // a[begin] + (k - begin) to that particle + n (the radius springs of a two-layer body, in
 // order). The AVX-512 kernel reads and writes such runs as whole rows, eight at a time.
-SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double ks,
-                          double kd, const double* x, const double* v, double* f4, int& degenerate);
+SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double stiffness,
+                          double damping, const double* x, const double* v, double* f4, int& degenerate);
 
 // Edge quads of a two-layer body: for a mesh edge (a, b) of the inner layer and its copy
 // (A, B) = (a + n, b + n) in the outer layer, the four springs over the same four particles,
@@ -90,10 +90,10 @@ struct QuadSums {
 
 // Quads [begin, end): adds each spring's force as springBlock does, per particle in the fixed
 // order a += F0 - F3, b -= F0 + F2, A += F1 + F2, B += F3 - F1. Each lane's sums run over the
-// quads in order; structural = lane 0 + lane 1, shear = lane 2 + lane 3. ks, kd: [structural,
+// quads in order; structural = lane 0 + lane 1, shear = lane 2 + lane 3. stiffness, damping: [structural,
 // shear]; n: particles per layer.
 QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
-                   std::array<double, 2> ks, std::array<double, 2> kd, const double* x,
+                   std::array<double, 2> stiffness, std::array<double, 2> damping, const double* x,
                    const double* v, double* f4, int& degenerate);
 
 // Triangles [begin, end) of a closed surface: adds the volume gradient (b-a)x(c-a)/6 to each

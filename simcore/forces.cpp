@@ -46,11 +46,11 @@ void addGravity(const Eigen::VectorXd& mass, double g, double* f) {
     for (Eigen::Index i = 0; i < n; ++i) f[3 * i + 1] -= mass[i] * g;
 }
 
-double addSprings(const SpringSet& springs, double ks, double kd, const double* x, const double* v,
+double addSprings(const SpringSet& springs, double stiffness, double damping, const double* x, const double* v,
                   double* f, int& degenerate) {
     // Spring i-j: d = x_j - x_i, L = |d|, u = d/L,
-    //   F_i = [ks (L - L0) + kd (v_j - v_i).u] u,  F_j = -F_i.
-    // The damper's power kd ((v_j - v_i).u)^2 is what it removes from the body.
+    //   F_i = [stiffness (L - L0) + damping (v_j - v_i).u] u,  F_j = -F_i.
+    // The damper's power damping * ((v_j - v_i).u)^2 is what it removes from the body.
     double power = 0.0;
     const std::size_t count = springs.size();
     const int* ia = springs.a.data();
@@ -67,8 +67,8 @@ double addSprings(const SpringSet& springs, double ks, double kd, const double* 
         const double inv = 1.0 / length;
         const double ux = dx * inv, uy = dy * inv, uz = dz * inv;
         const double closing = (v[j] - v[i]) * ux + (v[j + 1] - v[i + 1]) * uy + (v[j + 2] - v[i + 2]) * uz;
-        const double magnitude = ks * (length - rest[s]) + kd * closing;
-        power += kd * closing * closing;
+        const double magnitude = stiffness * (length - rest[s]) + damping * closing;
+        power += damping * closing * closing;
         const double fx = magnitude * ux, fy = magnitude * uy, fz = magnitude * uz;
         f[i] += fx;
         f[i + 1] += fy;
@@ -137,7 +137,7 @@ double addPointer(const PointerSpring& pointer, double mks, double mkd, double r
     return power;
 }
 
-double springEnergy(const SpringSet& springs, double ks, const double* x) {
+double springEnergy(const SpringSet& springs, double stiffness, const double* x) {
     double energy = 0.0;
     for (std::size_t s = 0; s < springs.size(); ++s) {
         const int i = 3 * springs.a[s], j = 3 * springs.b[s];
@@ -145,7 +145,7 @@ double springEnergy(const SpringSet& springs, double ks, const double* x) {
         const double stretch = std::sqrt(dx * dx + dy * dy + dz * dz) - springs.rest[s];
         energy += stretch * stretch;
     }
-    return 0.5 * ks * energy;
+    return 0.5 * stiffness * energy;
 }
 
 double gasEnergy(double c, double volume) {
@@ -414,7 +414,7 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
         for (std::size_t b0 = 0; b0 < part.quads.size(); b0 += kBlock) {
             const kernels::QuadSums block = kernels::quadBlock(
                 part.quads, b0, std::min(part.quads.size(), b0 + kBlock), perLayer,
-                {params.ks[kStructural], params.ks[kShear]}, {params.kd[kStructural], params.kd[kShear]}, x, v,
+                {params.stiffness[kStructural], params.stiffness[kShear]}, {params.damping[kStructural], params.damping[kShear]}, x, v,
                 f4, sums.degenerate);
             sums.power += block.power;
             sums.stretch2[kStructural] += block.stretch2[0];
@@ -427,9 +427,9 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
             for (std::size_t b0 = 0; b0 < s.size(); b0 += kBlock) {
                 const std::size_t b1 = std::min(s.size(), b0 + kBlock);
                 const kernels::SpringSums block =
-                    run ? kernels::springRunBlock(s, b0, b1, perLayer, params.ks[k], params.kd[k], x, v, f4,
+                    run ? kernels::springRunBlock(s, b0, b1, perLayer, params.stiffness[k], params.damping[k], x, v, f4,
                                                   sums.degenerate)
-                        : kernels::springBlock(s, b0, b1, params.ks[k], params.kd[k], x, v, f4, sums.degenerate);
+                        : kernels::springBlock(s, b0, b1, params.stiffness[k], params.damping[k], x, v, f4, sums.degenerate);
                 sums.power += block.power;
                 sums.stretch2[k] += block.stretch2;
             }
@@ -545,7 +545,7 @@ std::array<double, kSpringFamilyCount> ForceModel::springEnergies(const double* 
     for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
         double sum = 0.0;
         for (int c = 0; c < m_chunks; ++c) sum += partial[static_cast<std::size_t>(c)][static_cast<std::size_t>(fam)];
-        energy[static_cast<std::size_t>(fam)] = 0.5 * params.ks[static_cast<std::size_t>(fam)] * sum;
+        energy[static_cast<std::size_t>(fam)] = 0.5 * params.stiffness[static_cast<std::size_t>(fam)] * sum;
     }
     return energy;
 }
@@ -644,7 +644,7 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
     for (int c = 0; c < m_chunks; ++c) add(sums[static_cast<std::size_t>(c)]);
     add(sums[kChunks]);
     for (std::size_t fam = 0; fam < stretch2.size(); ++fam)
-        extras.springEnergy[fam] = 0.5 * params.ks[fam] * stretch2[fam];
+        extras.springEnergy[fam] = 0.5 * params.stiffness[fam] * stretch2[fam];
     // Stage 3: f = F + P dV/dx with P = c / V of each layer (V <= 0: no force; the simulation
     // reports the layer as inside out), unpadded into the caller's 3-per-particle layout.
     std::array<double, 2> pressure{};
@@ -724,7 +724,7 @@ void ForceModel::breakdown(int particle, const double* x, const double* v, doubl
         if (!out.has(part)) continue;
         only(part, {Term::Springs}, [fam](ForceParams& p) {
             for (int other = 0; other < kSpringFamilyCount; ++other)
-                if (other != fam) p.ks[static_cast<std::size_t>(other)] = p.kd[static_cast<std::size_t>(other)] = 0.0;
+                if (other != fam) p.stiffness[static_cast<std::size_t>(other)] = p.damping[static_cast<std::size_t>(other)] = 0.0;
         });
     }
     for (const Surface& s : m_topology->surfaces) {
@@ -755,7 +755,7 @@ void ForceModel::evaluateReference(const double* x, const double* v, double* f, 
     if (m_terms.has(Term::Springs))
         for (int fam = 0; fam < kSpringFamilyCount; ++fam) {
             const auto k = static_cast<std::size_t>(fam);
-            extras.dampingPower += addSprings(topo.springs[k], params.ks[k], params.kd[k], x, v, f,
+            extras.dampingPower += addSprings(topo.springs[k], params.stiffness[k], params.damping[k], x, v, f,
                                               extras.degenerateSprings);
         }
     if (m_terms.has(Term::Gas))

@@ -29,9 +29,12 @@ struct TermSet {
 };
 
 // The tunables the force terms read, resolved from the parameter table.
+// Naming: `ks`/`kd` (and `rks`/`rkd`) are only the table's keys, the structural (and radius and
+// shear) springs' values as the user types them (Params::Forces). What a body's springs use,
+// per family and scaled to its resolution, is `stiffness`/`damping` [structural, radius, shear].
 struct ForceParams {
-    std::array<double, kSpringFamilyCount> ks{};  // stiffness per spring family [N/m]
-    std::array<double, kSpringFamilyCount> kd{};  // damping per family [N*s/m]
+    std::array<double, kSpringFamilyCount> stiffness{};  // per spring family, scaled [N/m]
+    std::array<double, kSpringFamilyCount> damping{};    // per spring family, scaled [N*s/m]
     double gravity = 9.81;                        // |g| [m/s^2], acting along -y
     std::array<double, 2> gasConstant{};          // nRT of the gas in [inner, outer] [J]
     double mks = 150.0;                           // mouse spring stiffness [N/m]
@@ -89,7 +92,7 @@ struct ForceBreakdown {
 // Kernels. Each adds into f (3N). x, v are 3N.
 void addGravity(const Eigen::VectorXd& mass, double g, double* f);
 // Returns the damping power of the family.
-double addSprings(const SpringSet& springs, double ks, double kd, const double* x, const double* v,
+double addSprings(const SpringSet& springs, double stiffness, double damping, const double* x, const double* v,
                   double* f, int& degenerate);
 // Gas of one closed layer with nRT = c. Returns the volume V; force P * dV/dx.
 double addGas(const Surface& surface, int dimension, double c, const double* x, double* f);
@@ -101,7 +104,7 @@ double addPointer(const PointerSpring& pointer, double mks, double mkd, double r
                   const double* x, const double* v, double* f);
 
 // Energies of the conservative parts, per family.
-double springEnergy(const SpringSet& springs, double ks, const double* x);
+double springEnergy(const SpringSet& springs, double stiffness, const double* x);
 double gasEnergy(double c, double volume);  // -c ln V
 double pointerEnergy(const PointerSpring& pointer, double mks, double rest, const double* x);
 
@@ -169,7 +172,7 @@ public:
                         double* a, ForceExtras& extras, bool count = true, const RangeWork* then = nullptr);
     // One particle's force split by part (ForcePart), for a free-body diagram. Every part is a
     // whole evaluation by evaluate() with only that part switched on (the other terms off, the
-    // other spring families' ks and kd and the other layer's nRT set to 0, restored after), so
+    // other spring families' stiffness and damping and the other layer's nRT set to 0, restored after), so
     // the parts come from the very code the step runs; total is the evaluation with all of
     // them. The parts add up to the total up to rounding. f: scratch of 3N. Not counted.
     void breakdown(int particle, const double* x, const double* v, double* f, ForceBreakdown& out);

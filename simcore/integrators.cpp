@@ -284,7 +284,7 @@ private:
 //   v += hs a_ext(x, v)            gravity, gas, contact, pointer: every force but the springs
 //   x_prev = x;  x += hs v
 //   each spring (i, j):  C = |x_i - x_j| - L0,  n = (x_i - x_j) / |x_i - x_j|
-//     alpha~ = 1 / (ks hs^2)  (compliance 1/ks),  gamma = alpha~ (kd hs^2) / hs = kd / (ks hs)
+//     alpha~ = 1 / (stiffness hs^2)  (compliance 1/stiffness),  gamma = alpha~ (damping hs^2) / hs = damping / (stiffness hs)
 //     dlambda = (-C - gamma n.(dx_i - dx_j)) / ((1 + gamma) w + alpha~),  dx = x - x_prev,
 //     w = n.(W_i n) + n.(W_j n)   (W: inverse masses per coordinate)
 //     x_i += W_i n dlambda;  x_j -= W_j n dlambda
@@ -347,7 +347,7 @@ public:
     }
 
 private:
-    // The springs' forces at (x, v) into m_springs (docs/model.md: F_i = [ks (L - L0) + kd (v_j - v_i).u] u,
+    // The springs' forces at (x, v) into m_springs (docs/model.md: F_i = [stiffness (L - L0) + damping (v_j - v_i).u] u,
     // u = (x_j - x_i) / L).
     void springForces(const DistanceConstraints& c, const Eigen::VectorXd& y) {
         const Eigen::Index n = m_layout.positions;
@@ -355,7 +355,7 @@ private:
         const double* x = y.data();
         const double* v = y.data() + n;
         for (const DistanceFamily& f : c.families) {
-            if (f.ks == 0.0 && f.kd == 0.0) continue;
+            if (f.stiffness == 0.0 && f.damping == 0.0) continue;
             for (std::size_t s = 0; s < f.a.size(); ++s) {
                 const int i = f.a[s], j = f.b[s];
                 const double dx = x[3 * j] - x[3 * i], dy = x[3 * j + 1] - x[3 * i + 1], dz = x[3 * j + 2] - x[3 * i + 2];
@@ -364,7 +364,7 @@ private:
                 const double ux = dx / length, uy = dy / length, uz = dz / length;
                 const double closing = (v[3 * j] - v[3 * i]) * ux + (v[3 * j + 1] - v[3 * i + 1]) * uy +
                                        (v[3 * j + 2] - v[3 * i + 2]) * uz;
-                const double magnitude = f.ks * (length - f.rest[s]) + f.kd * closing;
+                const double magnitude = f.stiffness * (length - f.rest[s]) + f.damping * closing;
                 m_springs[3 * i] += magnitude * ux, m_springs[3 * i + 1] += magnitude * uy, m_springs[3 * i + 2] += magnitude * uz;
                 m_springs[3 * j] -= magnitude * ux, m_springs[3 * j + 1] -= magnitude * uy, m_springs[3 * j + 2] -= magnitude * uz;
             }
@@ -373,7 +373,7 @@ private:
     // One Gauss-Seidel pass over every spring: forward (families and springs in index order)
     // on even substeps, backward on odd ones. Measured: with the forward order at every
     // substep, the two-layer ring (five springs per pair of particles) is unstable for
-    // ks hs^2 / m between about 2 and several hundred (the stiff ring at DT 1/60 with 8 to
+    // stiffness hs^2 / m between about 2 and several hundred (the stiff ring at DT 1/60 with 8 to
     // 32 substeps gained energy until it blew up); alternating the order (symmetric
     // Gauss-Seidel over two substeps) is stable there.
     void project(const DistanceConstraints& c, double hs, Eigen::VectorXd& y, bool backward) const {
@@ -382,9 +382,9 @@ private:
         const double* x0 = m_previous.data();
         for (std::size_t fi = 0; fi < c.families.size(); ++fi) {
             const DistanceFamily& f = c.families[backward ? c.families.size() - 1 - fi : fi];
-            if (!(f.ks > 0.0)) continue;  // no stiffness: no constraint (its damping alone is not one)
-            const double compliance = 1.0 / (f.ks * hs * hs);
-            const double gamma = f.kd / (f.ks * hs);
+            if (!(f.stiffness > 0.0)) continue;  // no stiffness: no constraint (its damping alone is not one)
+            const double compliance = 1.0 / (f.stiffness * hs * hs);
+            const double gamma = f.damping / (f.stiffness * hs);
             for (std::size_t si = 0; si < f.a.size(); ++si) {
                 const std::size_t s = backward ? f.a.size() - 1 - si : si;
                 const int i = f.a[s], j = f.b[s];

@@ -51,8 +51,8 @@ struct StateLayout {
 struct DistanceFamily {
     std::span<const int> a, b;        // the end particles of each spring
     std::span<const double> rest;     // rest lengths L0 [m]
-    double ks = 0.0;                  // stiffness [N/m] (compliance 1/ks); 0 = not a constraint
-    double kd = 0.0;                  // damping [N s/m]
+    double stiffness = 0.0;           // this family's stiffness [N/m] (compliance 1/stiffness); 0 = not a constraint
+    double damping = 0.0;             // this family's damping [N s/m]
 };
 struct DistanceConstraints {
     std::array<DistanceFamily, 3> families;        // structural, radius, shear

@@ -7,15 +7,15 @@ namespace simcore {
 
 namespace {
 
-// K_ij block of a spring-like pair, applied to r: ks [alpha r + (1 - alpha)(u.r) u].
-inline Eigen::Vector3d stiffnessBlock(const Eigen::Vector3d& u, double alpha, double ks,
+// K_ij block of a spring-like pair, applied to r: stiffness [alpha r + (1 - alpha)(u.r) u].
+inline Eigen::Vector3d stiffnessBlock(const Eigen::Vector3d& u, double alpha, double stiffness,
                                       const Eigen::Vector3d& r) {
-    return ks * (alpha * r + (1.0 - alpha) * u.dot(r) * u);
+    return stiffness * (alpha * r + (1.0 - alpha) * u.dot(r) * u);
 }
 
 }  // namespace
 
-void addSpringJacobianProduct(const SpringSet& springs, double ks, double kd, const double* x,
+void addSpringJacobianProduct(const SpringSet& springs, double stiffness, double damping, const double* x,
                               const double* dx, const double* dv, double* out) {
     for (std::size_t s = 0; s < springs.size(); ++s) {
         const int i = 3 * springs.a[s], j = 3 * springs.b[s];
@@ -26,7 +26,7 @@ void addSpringJacobianProduct(const SpringSet& springs, double ks, double kd, co
         const double alpha = std::max(0.0, 1.0 - springs.rest[s] / length);
         const Eigen::Vector3d rx(dx[j] - dx[i], dx[j + 1] - dx[i + 1], dx[j + 2] - dx[i + 2]);
         const Eigen::Vector3d rv(dv[j] - dv[i], dv[j + 1] - dv[i + 1], dv[j + 2] - dv[i + 2]);
-        const Eigen::Vector3d f = stiffnessBlock(u, alpha, ks, rx) + kd * u.dot(rv) * u;
+        const Eigen::Vector3d f = stiffnessBlock(u, alpha, stiffness, rx) + damping * u.dot(rv) * u;
         for (int k = 0; k < 3; ++k) {
             out[i + k] += f[k];
             out[j + k] -= f[k];
@@ -34,7 +34,7 @@ void addSpringJacobianProduct(const SpringSet& springs, double ks, double kd, co
     }
 }
 
-void addSpringJacobianDiagonal(const SpringSet& springs, double ks, double kd, const double* x,
+void addSpringJacobianDiagonal(const SpringSet& springs, double stiffness, double damping, const double* x,
                                double* kdiag, double* ddiag) {
     for (std::size_t s = 0; s < springs.size(); ++s) {
         const int i = 3 * springs.a[s], j = 3 * springs.b[s];
@@ -44,8 +44,8 @@ void addSpringJacobianDiagonal(const SpringSet& springs, double ks, double kd, c
         const Eigen::Vector3d u = d / length;
         const double alpha = std::max(0.0, 1.0 - springs.rest[s] / length);
         for (int k = 0; k < 3; ++k) {
-            const double kk = -ks * (alpha + (1.0 - alpha) * u[k] * u[k]);
-            const double dd = -kd * u[k] * u[k];
+            const double kk = -stiffness * (alpha + (1.0 - alpha) * u[k] * u[k]);
+            const double dd = -damping * u[k] * u[k];
             kdiag[i + k] += kk;
             kdiag[j + k] += kk;
             ddiag[i + k] += dd;

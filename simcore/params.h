@@ -158,6 +158,8 @@ enum class Scaling { Physical = 0, Thesis = 1 };  // the values of `scaling`
 
 struct Params {
     struct Forces {
+        // `ks`/`kd` name only these, the table's keys; a body's per-family values scaled to its
+        // resolution are ForceParams::stiffness/damping (forces.h).
         double ks = 0.0, kd = 0.0;             // structural springs [N/m], [N s/m]
         double rks = 0.0, rkd = 0.0;           // radius and shear springs [N/m], [N s/m]
         std::array<double, 2> gasConstant{};   // nRT of the [inner, outer] gas [J]

@@ -145,8 +145,8 @@ BodyValues bodyValues(const ParameterSet& params, const Body& body) {
     for (int f = 0; f < kSpringFamilyCount; ++f) {
         const auto k = static_cast<std::size_t>(f);
         const bool structural = f == static_cast<int>(SpringFamily::Structural);
-        v.ks[k] = (structural ? params.get(Param::Ks) : layered ? params.get(Param::Rks) : 0.0) * v.scale.spring[k];
-        v.kd[k] = (structural ? params.get(Param::Kd) : layered ? params.get(Param::Rkd) : 0.0) * v.scale.spring[k];
+        v.stiffness[k] = (structural ? params.get(Param::Ks) : layered ? params.get(Param::Rks) : 0.0) * v.scale.spring[k];
+        v.damping[k] = (structural ? params.get(Param::Kd) : layered ? params.get(Param::Rkd) : 0.0) * v.scale.spring[k];
         v.springs[k] = static_cast<int>(topology.springs[k].size());
     }
     v.contactStiffness = params.get(Param::ContactStiffness) * v.scale.contact;
@@ -161,7 +161,7 @@ std::string bodyValuesText(const ParameterSet& params, const BodyValues& v) {
     const bool layered = params.kind() != SceneKind::Spring1d;
     if (!layered) {
         std::snprintf(line, sizeof line, "per particle %.6g kg; spring %.6g N/m, %.6g N*s/m", v.massOuter,
-                      v.ks[0], v.kd[0]);
+                      v.stiffness[0], v.damping[0]);
         return line;
     }
     const bool physical = scalingOf(params) == Scaling::Physical;
@@ -176,7 +176,7 @@ std::string bodyValuesText(const ParameterSet& params, const BodyValues& v) {
     std::snprintf(line, sizeof line,
                   "per spring: structural %.6g N/m, %.6g N*s/m (%d); radius %.6g N/m, %.6g N*s/m (%d); "
                   "shear %.6g N/m, %.6g N*s/m (%d).",
-                  v.ks[0], v.kd[0], v.springs[0], v.ks[1], v.kd[1], v.springs[1], v.ks[2], v.kd[2], v.springs[2]);
+                  v.stiffness[0], v.damping[0], v.springs[0], v.stiffness[1], v.damping[1], v.springs[1], v.stiffness[2], v.damping[2], v.springs[2]);
     os << line;
     return os.str();
 }

@@ -73,8 +73,8 @@ struct BodyValues {
     int referenceParticlesPerLayer = 0;
     double massInner = 0.0, massOuter = 0.0;    // per particle [kg] (1D: massOuter = mass)
     double layerMassInner = 0.0, layerMassOuter = 0.0;  // per layer [kg]
-    std::array<double, kSpringFamilyCount> ks{};  // per spring [N/m]
-    std::array<double, kSpringFamilyCount> kd{};  // per spring [N*s/m]
+    std::array<double, kSpringFamilyCount> stiffness{};  // per spring, per family [N/m]
+    std::array<double, kSpringFamilyCount> damping{};    // per spring, per family [N*s/m]
     std::array<int, kSpringFamilyCount> springs{};  // count per family
     double contactStiffness = 0.0;                // per particle [N/m^3]
 };

@@ -9,6 +9,7 @@
 
 #include "simcore/integrator_table.h"
 #include "simcore/internal/body_ode.h"
+#include "simcore/internal/compensated_time.h"
 #include "simcore/internal/world_body.h"
 
 namespace simcore {
@@ -148,7 +149,7 @@ void Simulation::startBookkeeping() {
     scale += m_body.mass.sum() * m_forces.params.gravity * 2.0 * m_p.world.box;
     for (int f = 0; f < kSpringFamilyCount; ++f) {
         const auto k = static_cast<std::size_t>(f);
-        for (double rest : topo.springs[k].rest) scale += 0.5 * m_forces.params.ks[k] * rest * rest;
+        for (double rest : topo.springs[k].rest) scale += 0.5 * m_forces.params.stiffness[k] * rest * rest;
     }
     if (m_forces.terms().has(Term::Gas))
         scale += (m_forces.params.gasConstant[0] + m_forces.params.gasConstant[1]) * std::log(100.0);
@@ -399,11 +400,7 @@ bool Simulation::check(StepWork& w) {
 bool Simulation::commit(StepWork& w) {
     m_diag = w.next;
     m_diag.step += 1;
-    // Compensated (Kahan) sum: a million steps of 0.003 s land on the intended time, so
-    // advanceTo() never takes an extra step from accumulated round-off.
-    const double increment = w.report.h - m_timeCarry;
-    m_diag.time = w.t0 + increment;
-    m_timeCarry = (m_diag.time - w.t0) - increment;
+    m_diag.time = advanceTime(w.t0, w.report.h, m_timeCarry);
     m_diag.dt = w.report.h;
     m_diag.errorEstimate = w.report.errorEstimate;
     if (m_integrator->adaptive() && w.report.errorEstimate >= 0.0) m_lastError = m_integrator->localError();
@@ -649,7 +646,7 @@ void Simulation::release() {
 
 double Simulation::estimatedFastestRate() const {
     // Each particle alone, tied to fixed neighbours by its springs: m s^2 + c s + k = 0 with
-    // k = sum ks and c = sum kd over its springs (springs in different directions do not all
+    // k = sum of stiffness and c = sum of damping over its springs (springs in different directions do not all
     // act on one displacement, so this is an estimate, not a bound). |s| is sqrt(k/m) when underdamped and the fast root
     // (c + sqrt(c^2 - 4mk)) / 2m when overdamped: stiff damping limits explicit steps too.
     const Topology& topo = m_body.topology;
@@ -659,8 +656,8 @@ double Simulation::estimatedFastestRate() const {
         const auto fam = static_cast<std::size_t>(f);
         for (std::size_t s = 0; s < topo.springs[fam].size(); ++s)
             for (int end : {topo.springs[fam].a[s], topo.springs[fam].b[s]}) {
-                k[end] += m_forces.params.ks[fam];
-                c[end] += m_forces.params.kd[fam];
+                k[end] += m_forces.params.stiffness[fam];
+                c[end] += m_forces.params.damping[fam];
             }
     }
     // Contact at its design point (contactDesign()) adds to the particles nearest the floor.

@@ -7,6 +7,7 @@
 
 #include "simcore/contact.h"
 #include "simcore/integrator_table.h"
+#include "simcore/internal/compensated_time.h"
 #include "simcore/internal/world_body.h"
 #include "simcore/internal/world_ode.h"
 #include "simcore/scenes.h"
@@ -678,9 +679,7 @@ bool World::step(double until) {
     }
     m_diag = std::move(next);
     m_diag.step += 1;
-    const double increment = report.h - m_timeCarry;
-    m_diag.time = t0 + increment;
-    m_timeCarry = (m_diag.time - t0) - increment;
+    m_diag.time = advanceTime(t0, report.h, m_timeCarry);
     m_diag.dt = report.h;
     m_diag.errorEstimate = report.errorEstimate;
     if (adaptive && report.errorEstimate >= 0.0) m_lastError = m_integrator->localError();

@@ -16,13 +16,13 @@ bool configureForces(ForceModel& forces, const ParameterSet& set, const Params& 
     // and at the reference resolution).
     const auto& f = scale.spring;
     const Params::Forces& table = p.forces;
-    fp.ks = {table.ks * f[0], 0.0, 0.0};
-    fp.kd = {table.kd * f[0], 0.0, 0.0};
+    fp.stiffness = {table.ks * f[0], 0.0, 0.0};
+    fp.damping = {table.kd * f[0], 0.0, 0.0};
     if (set.kind() != SceneKind::Spring1d) {
-        fp.ks[1] = table.rks * f[1];
-        fp.ks[2] = table.rks * f[2];
-        fp.kd[1] = table.rkd * f[1];
-        fp.kd[2] = table.rkd * f[2];
+        fp.stiffness[1] = table.rks * f[1];
+        fp.stiffness[2] = table.rks * f[2];
+        fp.damping[1] = table.rkd * f[1];
+        fp.damping[2] = table.rkd * f[2];
         fp.gasConstant = table.gasConstant;
     }
     const Params::World& world = p.world;

@@ -101,7 +101,7 @@ std::optional<std::string> WorldOde::xpbdRefusal() const {
     const ForceParams& first = m_bodies.front()->forces().params;
     for (std::size_t k = 1; k < m_bodies.size(); ++k) {
         const ForceParams& p = m_bodies[k]->forces().params;
-        if (p.ks != first.ks || p.kd != first.kd)
+        if (p.stiffness != first.stiffness || p.damping != first.damping)
             return "xpbd takes one stiffness and damping per spring family for the whole world, and body " +
                    std::to_string(k + 1) + "'s springs differ from body 1's (ks, kd, rks, rkd or the resolution); "
                    "choose another integrator or give the bodies the same springs";
@@ -116,7 +116,7 @@ bool WorldOde::distanceConstraints(DistanceConstraints& out) {
     for (int f = 0; f < kSpringFamilyCount; ++f) {
         const auto k = static_cast<std::size_t>(f);
         const SpringSet& set = m_springs[k];
-        out.families[k] = {set.a, set.b, set.rest, springs ? p.ks[k] : 0.0, springs ? p.kd[k] : 0.0};
+        out.families[k] = {set.a, set.b, set.rest, springs ? p.stiffness[k] : 0.0, springs ? p.damping[k] : 0.0};
     }
     out.inverseMass = &m_invMass3;
     out.substeps = m_substeps;

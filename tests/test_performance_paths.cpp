@@ -86,8 +86,8 @@ private slots:
         const SpringSet& first = body.topology.family(SpringFamily::Structural);
         x.segment(3 * first.b[0], 3) = x.segment(3 * first.a[0], 3);
         ForceModel model(&body.topology, &body.mass, sceneTerms(SceneKind(kind)));
-        model.params.ks = {800, 700, 700};
-        model.params.kd = {15, 50, 50};
+        model.params.stiffness = {800, 700, 700};
+        model.params.damping = {15, 50, 50};
         model.params.gasConstant = {20, 30};
         model.pointer = PointerSpring{true, 7, Eigen::Vector3d(1, 2, 0.5)};
         ThreadPool pool(2);
@@ -106,7 +106,7 @@ private slots:
             QVERIFY(std::abs(a.volume[std::size_t(l)] - b.volume[std::size_t(l)]) <= 1e-12 * std::abs(b.volume[std::size_t(l)]));
         const auto energies = model.springEnergies(x.data());
         for (int f = 0; f < kSpringFamilyCount; ++f) {
-            const double reference1 = springEnergy(body.topology.springs[std::size_t(f)], model.params.ks[std::size_t(f)], x.data());
+            const double reference1 = springEnergy(body.topology.springs[std::size_t(f)], model.params.stiffness[std::size_t(f)], x.data());
             QVERIFY(std::abs(energies[std::size_t(f)] - reference1) <= 1e-12 * std::max(1.0, reference1));
             // The evaluation's own energy sums, which the end-of-step measurement uses.
             QVERIFY(std::abs(a.springEnergy[std::size_t(f)] - reference1) <= 1e-12 * std::max(1.0, reference1));

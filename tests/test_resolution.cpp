@@ -120,7 +120,7 @@ private slots:
         const BodyValues ref = bodyValues(refParams);
         QCOMPARE(ref.particlesPerLayer, ref.referenceParticlesPerLayer);
         QCOMPARE(ref.massInner, 2.0);
-        QCOMPARE(ref.ks[0], 800.0);
+        QCOMPARE(ref.stiffness[0], 800.0);
         for (qsizetype i = 1; i < levels.size(); ++i) {
             const ParameterSet p = at(levels[i], 0.0);
             const BodyValues v = bodyValues(p);
@@ -133,37 +133,37 @@ private slots:
             QVERIFY(std::abs(body.mass.sum() - (ref.layerMassInner + ref.layerMassOuter)) <= 1e-9);
             // Structural springs.
             if (k == SceneKind::Ring2d) {
-                const double chain = v.ks[0] * meanStructuralRest(p), chainRef = ref.ks[0] * meanStructuralRest(refParams);
+                const double chain = v.stiffness[0] * meanStructuralRest(p), chainRef = ref.stiffness[0] * meanStructuralRest(refParams);
                 QVERIFY2(std::abs(chain - chainRef) <= 1e-12 * chainRef,
                          qPrintable(QString("k L0 %1 against %2").arg(chain, 0, 'g', 17).arg(chainRef, 0, 'g', 17)));
-                QVERIFY(std::abs(v.kd[0] / v.ks[0] - 15.0 / 800.0) <= 1e-15);
+                QVERIFY(std::abs(v.damping[0] / v.stiffness[0] - 15.0 / 800.0) <= 1e-15);
             } else {
-                QCOMPARE(v.ks[0], 800.0);
-                QCOMPARE(v.kd[0], 15.0);
+                QCOMPARE(v.stiffness[0], 800.0);
+                QCOMPARE(v.damping[0], 15.0);
             }
             // Radius springs in parallel: k * count; shear springs keep their tangential
             // stiffness k * sum sin^2 (they turn radial as the mesh is refined).
-            const double radial = v.ks[1] * v.springs[1], radialRef = ref.ks[1] * ref.springs[1];
+            const double radial = v.stiffness[1] * v.springs[1], radialRef = ref.stiffness[1] * ref.springs[1];
             QVERIFY(std::abs(radial - radialRef) <= 1e-12 * radialRef);
-            QVERIFY(std::abs(v.kd[1] * v.springs[1] - ref.kd[1] * ref.springs[1]) <= 1e-12 * ref.kd[1] * ref.springs[1]);
-            const double shear = v.ks[2] * shearTangential(p), shearRef = ref.ks[2] * shearTangential(refParams);
+            QVERIFY(std::abs(v.damping[1] * v.springs[1] - ref.damping[1] * ref.springs[1]) <= 1e-12 * ref.damping[1] * ref.springs[1]);
+            const double shear = v.stiffness[2] * shearTangential(p), shearRef = ref.stiffness[2] * shearTangential(refParams);
             QVERIFY2(std::abs(shear - shearRef) <= 1e-9 * shearRef,
                      qPrintable(QString("shear %1 against %2").arg(shear).arg(shearRef)));
-            QVERIFY(std::abs(v.kd[2] / v.ks[2] - 50.0 / 700.0) <= 1e-15);
+            QVERIFY(std::abs(v.damping[2] / v.stiffness[2] - 50.0 / 700.0) <= 1e-15);
             QVERIFY(std::abs(v.contactStiffness * v.particlesPerLayer - ref.contactStiffness * ref.particlesPerLayer) <=
                     1e-12 * ref.contactStiffness * ref.particlesPerLayer);
             // The simulation uses exactly these values.
             Simulation sim(p, "rk4");
             for (int f = 0; f < kSpringFamilyCount; ++f) {
-                QCOMPARE(sim.forces().params.ks[std::size_t(f)], v.ks[std::size_t(f)]);
-                QCOMPARE(sim.forces().params.kd[std::size_t(f)], v.kd[std::size_t(f)]);
+                QCOMPARE(sim.forces().params.stiffness[std::size_t(f)], v.stiffness[std::size_t(f)]);
+                QCOMPARE(sim.forces().params.damping[std::size_t(f)], v.damping[std::size_t(f)]);
             }
             QCOMPARE(sim.forces().contact.stiffness, v.contactStiffness);
             // scaling=thesis: per particle and per spring at every resolution.
             const BodyValues t = bodyValues(at(levels[i], 1.0));
             QVERIFY(t.scale == BodyScale{});
             QCOMPARE(t.massInner, 2.0);
-            QCOMPARE(t.ks[1], 700.0);
+            QCOMPARE(t.stiffness[1], 700.0);
         }
     }
 

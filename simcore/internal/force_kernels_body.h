@@ -18,7 +18,7 @@ using namespace simd::SIMCORE_SIMD_NS;
 // The arithmetic, lane by lane (V a vector, or double for the last few elements of a block)
 
 // One spring per lane: separation d and relative velocity dv in; force on the first particle,
-// damping power kd (dv.u)^2 and stretch L - L0 out. Counts springs shorter than
+// damping power damping * (dv.u)^2 and stretch L - L0 out. Counts springs shorter than
 // kDegenerateLength into `shortCount`; they keep a finite direction (divided by the epsilon
 // instead of their length) and get a zero force.
 template <class V>
@@ -26,8 +26,8 @@ struct SpringLanes {
     V fx, fy, fz, power, stretch;
 };
 template <class V, class Count>
-[[gnu::always_inline]] inline SpringLanes<V> springLanes(V dx, V dy, V dz, V dvx, V dvy, V dvz, V rest, V ks,
-                                                         V kd, Count& shortCount) {
+[[gnu::always_inline]] inline SpringLanes<V> springLanes(V dx, V dy, V dz, V dvx, V dvy, V dvz, V rest, V stiffness,
+                                                         V damping, Count& shortCount) {
     const V zero = splat<V>(0.0), one = splat<V>(1.0), eps = splat<V>(kDegenerateLength);
     const V length2 = (dx * dx + dy * dy) + dz * dz;
     countTrue(shortCount, length2 < eps * eps);
@@ -38,8 +38,8 @@ template <class V, class Count>
     const V ux = dx * inv, uy = dy * inv, uz = dz * inv;
     const V closing = (dvx * ux + dvy * uy) + dvz * uz;
     const V stretch = length - rest;
-    const V magnitude = live * (ks * stretch + kd * closing);
-    return {magnitude * ux, magnitude * uy, magnitude * uz, ((live * kd) * closing) * closing, stretch};
+    const V magnitude = live * (stiffness * stretch + damping * closing);
+    return {magnitude * ux, magnitude * uy, magnitude * uz, ((live * damping) * closing) * closing, stretch};
 }
 
 // One triangle (corners a, b, c) per lane: the volume gradient (b-a)x(c-a)/6 that each corner
@@ -72,11 +72,11 @@ struct SpringAccumulators {
 // Springs [k, end) in groups of four from k into the accumulators; returns where it stopped
 // (fewer than four left).
 [[gnu::always_inline]] inline std::size_t springGroups(const SpringSet& springs, std::size_t k, std::size_t end,
-                                                       double ks, double kd, const double* x, const double* v,
+                                                       double stiffness, double damping, const double* x, const double* v,
                                                        double* f4, SpringAccumulators& sums) {
     const int* ia = springs.a.data();
     const int* ib = springs.b.data();
-    const Vec4 vks = splat<Vec4>(ks), vkd = splat<Vec4>(kd);
+    const Vec4 vStiffness = splat<Vec4>(stiffness), vDamping = splat<Vec4>(damping);
     Mask<Vec4> shortSprings{};
     for (; k + 4 <= end; k += 4) {
         Vec4 d[4], dv[4];
@@ -89,7 +89,7 @@ struct SpringAccumulators {
         toColumns(d[0], d[1], d[2], d[3], dx, dy, dz);
         toColumns(dv[0], dv[1], dv[2], dv[3], dvx, dvy, dvz);
         const SpringLanes<Vec4> lane =
-            springLanes(dx, dy, dz, dvx, dvy, dvz, loadu<Vec4>(springs.rest.data() + k), vks, vkd, shortSprings);
+            springLanes(dx, dy, dz, dvx, dvy, dvz, loadu<Vec4>(springs.rest.data() + k), vStiffness, vDamping, shortSprings);
         sums.power = sums.power + lane.power;
         sums.square = sums.square + lane.stretch * lane.stretch;
         Vec4 force[4];
@@ -106,7 +106,7 @@ struct SpringAccumulators {
 // The last springs [k, end) one at a time (like sumLanes, their sums go into lane 0 one by
 // one), and the block's sums.
 [[gnu::always_inline]] inline SpringSums finishSprings(const SpringSet& springs, std::size_t k, std::size_t end,
-                                                       double ks, double kd, const double* x, const double* v,
+                                                       double stiffness, double damping, const double* x, const double* v,
                                                        double* f4, int& degenerate,
                                                        const SpringAccumulators& sums) {
     degenerate += sums.degenerate;
@@ -117,7 +117,7 @@ struct SpringAccumulators {
         const std::size_t i = 3 * index(springs.a[k]), j = 3 * index(springs.b[k]);
         const SpringLanes<double> s =
             springLanes(x[j] - x[i], x[j + 1] - x[i + 1], x[j + 2] - x[i + 2], v[j] - v[i], v[j + 1] - v[i + 1],
-                        v[j + 2] - v[i + 2], springs.rest[k], ks, kd, degenerate);
+                        v[j + 2] - v[i + 2], springs.rest[k], stiffness, damping, degenerate);
         power[0] += s.power;
         square[0] += s.stretch * s.stretch;
         double* fa = f4 + 4 * index(springs.a[k]);
@@ -132,11 +132,11 @@ struct SpringAccumulators {
     return {(power[0] + power[1]) + (power[2] + power[3]), (square[0] + square[1]) + (square[2] + square[3])};
 }
 
-inline SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double ks, double kd,
+inline SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::size_t end, double stiffness, double damping,
                               const double* x, const double* v, double* f4, int& degenerate) {
     SpringAccumulators sums;
-    const std::size_t k = springGroups(springs, begin, end, ks, kd, x, v, f4, sums);
-    return finishSprings(springs, k, end, ks, kd, x, v, f4, degenerate, sums);
+    const std::size_t k = springGroups(springs, begin, end, stiffness, damping, x, v, f4, sums);
+    return finishSprings(springs, k, end, stiffness, damping, x, v, f4, degenerate, sums);
 }
 
 // Springs [k, end) of a run (spring k joins particle first + (k - begin) and that + n) in
@@ -144,11 +144,11 @@ inline SpringSums springBlock(const SpringSet& springs, std::size_t begin, std::
 // accumulators (lanes 0-3, then 4-7); returns where it stopped.
 template <class V>
 [[gnu::always_inline]] inline std::size_t runGroups(const SpringSet& springs, std::size_t begin, std::size_t k,
-                                                    std::size_t end, std::size_t n, double ks, double kd,
+                                                    std::size_t end, std::size_t n, double stiffness, double damping,
                                                     const double* x, const double* v, double* f4,
                                                     SpringAccumulators& sums) {
     constexpr std::size_t W = kLanes<V>;
-    const V vks = splat<V>(ks), vkd = splat<V>(kd);
+    const V vStiffness = splat<V>(stiffness), vDamping = splat<V>(damping);
     Mask<V> shortSprings{};
     const std::size_t first = index(springs.a[begin]);
     for (; k + W <= end; k += W) {
@@ -159,7 +159,7 @@ template <class V>
         rowsToColumns(v + 3 * p, avx, avy, avz);
         rowsToColumns(v + 3 * q, bvx, bvy, bvz);
         const SpringLanes<V> lane = springLanes(bx - ax, by - ay, bz - az, bvx - avx, bvy - avy, bvz - avz,
-                                                loadu<V>(springs.rest.data() + k), vks, vkd, shortSprings);
+                                                loadu<V>(springs.rest.data() + k), vStiffness, vDamping, shortSprings);
         sums.power = addLanes(sums.power, lane.power);
         sums.square = addLanes(sums.square, lane.stretch * lane.stretch);
         addSubRows(f4, p, q, lane.fx, lane.fy, lane.fz);
@@ -168,13 +168,13 @@ template <class V>
     return k;
 }
 
-inline SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double ks,
-                                 double kd, const double* x, const double* v, double* f4, int& degenerate) {
+inline SpringSums springRunBlock(const SpringSet& springs, std::size_t begin, std::size_t end, int n, double stiffness,
+                                 double damping, const double* x, const double* v, double* f4, int& degenerate) {
     SpringAccumulators sums;
-    std::size_t k = runGroups<Widest>(springs, begin, begin, end, index(n), ks, kd, x, v, f4, sums);
+    std::size_t k = runGroups<Widest>(springs, begin, begin, end, index(n), stiffness, damping, x, v, f4, sums);
     // Four at a time what is left of eight (nothing is left when Widest is Vec4).
-    if (kLanes<Widest> > 4) k = runGroups<Vec4>(springs, begin, k, end, index(n), ks, kd, x, v, f4, sums);
-    return finishSprings(springs, k, end, ks, kd, x, v, f4, degenerate, sums);
+    if (kLanes<Widest> > 4) k = runGroups<Vec4>(springs, begin, k, end, index(n), stiffness, damping, x, v, f4, sums);
+    return finishSprings(springs, k, end, stiffness, damping, x, v, f4, degenerate, sums);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -190,8 +190,8 @@ struct QuadGroup {
 };
 template <class V>
 [[gnu::always_inline]] inline QuadGroup<V> quadGroup(const QuadSet& quads, std::size_t q, const double* x,
-                                                     const double* v, const double* xo, const double* vo, V ks,
-                                                     V kd, Mask<V>& shortSprings) {
+                                                     const double* v, const double* xo, const double* vo, V stiffness,
+                                                     V damping, Mask<V>& shortSprings) {
     // Outer particles through the outer layer's base pointers xo, vo: no index arithmetic
     // beyond each index's own scaling.
     QuadGroup<V> r;
@@ -208,7 +208,7 @@ template <class V>
     V dx, dy, dz, dvx, dvy, dvz;
     toColumns(xb - xa, xB - xA, xb - xA, xa - xB, dx, dy, dz);
     toColumns(vb - va, vB - vA, vb - vA, va - vB, dvx, dvy, dvz);
-    const SpringLanes<V> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, blockLanes<V>(rest), ks, kd, shortSprings);
+    const SpringLanes<V> lane = springLanes(dx, dy, dz, dvx, dvy, dvz, blockLanes<V>(rest), stiffness, damping, shortSprings);
     V F[4];  // F[j]: spring j's force rows
     toRows(lane.fx, lane.fy, lane.fz, F);
     r.fa = F[0] - F[3];
@@ -236,23 +236,23 @@ template <class V>
 // quads' four-lane sums. q - begin must be even. Returns where it stopped.
 template <class V>
 [[gnu::always_inline]] inline std::size_t quadGroups(const QuadSet& quads, std::size_t q, std::size_t end, int n,
-                                                     std::array<double, 2> ks, std::array<double, 2> kd,
+                                                     std::array<double, 2> stiffness, std::array<double, 2> damping,
                                                      const double* x, const double* v, double* f4,
                                                      Vec4 (&power)[2], Vec4 (&square)[2], int& degenerate) {
     constexpr std::size_t G = kGroups<V>;
     constexpr std::size_t kParities = 2 / G;  // accumulators: a Vec4 per parity, or a Vec8 for both
-    const double ksLanes[4] = {ks[0], ks[0], ks[1], ks[1]}, kdLanes[4] = {kd[0], kd[0], kd[1], kd[1]};
-    const double* ksFrom[2] = {ksLanes, ksLanes};
-    const double* kdFrom[2] = {kdLanes, kdLanes};
-    const V vks = blockLanes<V>(ksFrom), vkd = blockLanes<V>(kdFrom);
+    const double stiffnessLanes[4] = {stiffness[0], stiffness[0], stiffness[1], stiffness[1]}, dampingLanes[4] = {damping[0], damping[0], damping[1], damping[1]};
+    const double* stiffnessFrom[2] = {stiffnessLanes, stiffnessLanes};
+    const double* dampingFrom[2] = {dampingLanes, dampingLanes};
+    const V vStiffness = blockLanes<V>(stiffnessFrom), vDamping = blockLanes<V>(dampingFrom);
     V powerAcc[kParities] = {}, squareAcc[kParities] = {};
     Mask<V> shortSprings{};
     const std::size_t outer = index(n);
     const double *xo = x + 3 * outer, *vo = v + 3 * outer;
     double* fo = f4 + 4 * outer;
     for (; q + 2 * G <= end; q += 2 * G) {
-        const QuadGroup<V> first = quadGroup<V>(quads, q, x, v, xo, vo, vks, vkd, shortSprings);
-        const QuadGroup<V> second = quadGroup<V>(quads, q + G, x, v, xo, vo, vks, vkd, shortSprings);
+        const QuadGroup<V> first = quadGroup<V>(quads, q, x, v, xo, vo, vStiffness, vDamping, shortSprings);
+        const QuadGroup<V> second = quadGroup<V>(quads, q + G, x, v, xo, vo, vStiffness, vDamping, shortSprings);
         powerAcc[0] = powerAcc[0] + first.power;
         squareAcc[0] = squareAcc[0] + first.square;
         powerAcc[kParities - 1] = powerAcc[kParities - 1] + second.power;
@@ -261,7 +261,7 @@ template <class V>
         addQuadGroup(second, f4, fo);
     }
     if (q + G <= end) {  // an even quad, or an even pair
-        const QuadGroup<V> last = quadGroup<V>(quads, q, x, v, xo, vo, vks, vkd, shortSprings);
+        const QuadGroup<V> last = quadGroup<V>(quads, q, x, v, xo, vo, vStiffness, vDamping, shortSprings);
         powerAcc[0] = powerAcc[0] + last.power;
         squareAcc[0] = squareAcc[0] + last.square;
         addQuadGroup(last, f4, fo);
@@ -274,12 +274,12 @@ template <class V>
 }
 
 inline QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int n,
-                          std::array<double, 2> ks, std::array<double, 2> kd, const double* x, const double* v,
+                          std::array<double, 2> stiffness, std::array<double, 2> damping, const double* x, const double* v,
                           double* f4, int& degenerate) {
     Vec4 power[2] = {}, square[2] = {};
-    std::size_t q = quadGroups<Widest>(quads, begin, end, n, ks, kd, x, v, f4, power, square, degenerate);
+    std::size_t q = quadGroups<Widest>(quads, begin, end, n, stiffness, damping, x, v, f4, power, square, degenerate);
     // The last quad of an odd count four lanes wide (nothing is left when Widest is Vec4).
-    if (q < end) quadGroups<Vec4>(quads, q, end, n, ks, kd, x, v, f4, power, square, degenerate);
+    if (q < end) quadGroups<Vec4>(quads, q, end, n, stiffness, damping, x, v, f4, power, square, degenerate);
     double p[2][4], s[2][4];
     for (std::size_t parity = 0; parity < 2; ++parity) {
         storeu(p[parity], power[parity]);

@@ -4,8 +4,8 @@
 // with K = dF/dx and D = dF/dv at the positions x.
 //
 // Spring i-j, d = x_j - x_i, L = |d|, u = d / L, alpha = 1 - L0 / L:
-//   dF_i/dx_j = ks [alpha I + (1 - alpha) u u^T]   (= -dF_i/dx_i; F_j = -F_i)
-//   dF_i/dv_j = kd u u^T
+//   dF_i/dx_j = stiffness [alpha I + (1 - alpha) u u^T]   (= -dF_i/dx_i; F_j = -F_i)
+//   dF_i/dv_j = damping u u^T
 // The transverse part alpha (I - u u^T) is negative stiffness for a compressed spring
 // (alpha < 0) and makes K indefinite; it is clamped at 0 (Choi & Ko 2002), which keeps
 // M - h D - h^2 K positive definite. The derivative of the damper's direction u in x is
@@ -24,9 +24,9 @@
 
 namespace simcore {
 
-void addSpringJacobianProduct(const SpringSet& springs, double ks, double kd, const double* x,
+void addSpringJacobianProduct(const SpringSet& springs, double stiffness, double damping, const double* x,
                               const double* dx, const double* dv, double* out);
-void addSpringJacobianDiagonal(const SpringSet& springs, double ks, double kd, const double* x,
+void addSpringJacobianDiagonal(const SpringSet& springs, double stiffness, double damping, const double* x,
                                double* kdiag, double* ddiag);
 
 // g = dV/dx of the layer (adds into g; entries of other particles untouched).

@@ -77,8 +77,8 @@ struct Case {
 void configure(ForceModel& model, const ParameterSet& set, const Body& body) {
     const Params p = resolve(set);
     const BodyValues values = bodyValues(set, body);
-    model.params.ks = values.ks;
-    model.params.kd = values.kd;
+    model.params.stiffness = values.stiffness;
+    model.params.damping = values.damping;
     if (set.kind() != SceneKind::Spring1d) model.params.gasConstant = p.forces.gasConstant;
     model.params.gravity = p.world.gravity;
     model.params.mks = p.forces.mks;
@@ -153,8 +153,8 @@ void runCase(const Case& k, ThreadPool& pool) {
         const auto f = static_cast<std::size_t>(family);
         const std::string name(springFamilyName(SpringFamily(family)));
         printHash(at, ("rest-lengths-" + name).c_str(), fnv1a(topo.springs[f].rest.data(), topo.springs[f].size()));
-        printValue(at, ("ks-" + name).c_str(), model.params.ks[f]);
-        printValue(at, ("kd-" + name).c_str(), model.params.kd[f]);
+        printValue(at, ("stiffness-" + name).c_str(), model.params.stiffness[f]);
+        printValue(at, ("damping-" + name).c_str(), model.params.damping[f]);
     }
     printHash(at, "state-x", fnv1a(x));
     printHash(at, "state-v", fnv1a(v));
