@@ -4,12 +4,20 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include <climits>
+
 #if defined(__linux__)
+#include <linux/futex.h>
 #include <sched.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 #endif
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -30,13 +38,66 @@ namespace {
 constexpr int kSpinsBeforeSleep = 20000;
 // The fewest spins of a worker that keeps finding no work (see workerLoop).
 constexpr int kMinSpins = 64;
-// A run is late when its caller waited this long for a worker after the others were done (a
-// preempted worker: balanced chunks end within microseconds of each other); after this many
-// late runs (net of on-time ones) the caller runs the next kSoloRuns runs alone. Which thread
-// runs a task never changes a result, so this clock decides speed only.
-constexpr auto kLateWait = std::chrono::microseconds(300);
-constexpr int kLateRunsBeforeSolo = 8;
-constexpr int kSoloRuns = 2000;
+// The caller spins this long for a worker's last task before it sleeps on the futex: on a
+// quiet machine balanced chunks end within tens of microseconds of each other; a worker that
+// takes longer has most likely been preempted for a time slice (milliseconds), and the
+// sleeping caller's CPU goes to whoever can use it (the worker itself, moved there). Halved
+// after each run the caller slept through (a busy machine), doubled after each it did not.
+constexpr double kCallerSpinMax = 200e-6, kCallerSpinMin = 20e-6;
+// The fallback: over a window of runs (at least kWindowRuns and kWindowSeconds of them), the
+// caller's own work and its waits for the workers after it are summed. Two threads take
+// own + wait per run, the caller alone about 2 x own (balanced chunks): when the waits exceed
+// the work, the caller runs alone for a while (kSoloFirst, doubled while the trials that
+// follow keep failing, up to kSoloLongest), then tries the workers again for one window.
+constexpr int kWindowRuns = 32;
+constexpr double kWindowSeconds = 0.02;
+constexpr double kSoloFirst = 0.05, kSoloLongest = 0.8;
+
+// A CPU is contended when a thread of the pool was preempted (an involuntary context switch:
+// it could have run, and another thread ran instead) within the last kBusyFor; each thread
+// reads its own count at most every kBusyCheck. Then waits spin only briefly (kBusySpins
+// pauses for a worker, kCallerSpinMin for the caller) and sleep: on a contended machine the
+// process's threads share one scheduler group's fair share, and a thread spinning for its
+// partner takes that time from the partner (or from the caller's serial stretches).
+constexpr auto kBusyCheck = std::chrono::milliseconds(2);
+constexpr auto kBusyFor = std::chrono::milliseconds(50);
+constexpr int kBusySpins = 256;
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+std::atomic<ThreadPool::TestHook> g_testHook{nullptr};
+
+// Sleep while `word` holds `expected` (returns at once when it does not, and may return
+// spuriously: callers check their condition again); wake every sleeper on `word`.
+void futexWait(std::atomic<std::uint32_t>& word, std::uint32_t expected) {
+#if defined(__linux__)
+    static_assert(sizeof(std::atomic<std::uint32_t>) == sizeof(std::uint32_t));
+    syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&word), FUTEX_WAIT_PRIVATE, expected, nullptr, nullptr, 0);
+#else
+    word.wait(expected, std::memory_order_acquire);
+#endif
+}
+void futexWakeAll(std::atomic<std::uint32_t>& word) {
+#if defined(__linux__)
+    syscall(SYS_futex, reinterpret_cast<std::uint32_t*>(&word), FUTEX_WAKE_PRIVATE, INT_MAX, nullptr, nullptr, 0);
+#else
+    word.notify_all();
+#endif
+}
+
+long involuntarySwitches() {
+#if defined(__linux__)
+    struct rusage usage {};
+    if (getrusage(RUSAGE_THREAD, &usage) == 0) return usage.ru_nivcsw;
+#endif
+    return 0;
+}
+
+void runTask(const TaskRef& task, int index, bool worker) {
+    if (const ThreadPool::TestHook hook = g_testHook.load(std::memory_order_acquire)) hook(index, worker);
+    task(index);
+}
 }  // namespace
 
 int hardwareThreads() {
@@ -116,29 +177,72 @@ ThreadPool::ThreadPool(int threads) {
 }
 
 ThreadPool::~ThreadPool() {
-    {
-        std::lock_guard lock(m_mutex);
-        m_stop.store(true, std::memory_order_release);
-    }
-    m_wake.notify_all();
+    // A new "run" number with m_stop set: spinning workers see it, sleeping ones are woken.
+    m_stop.store(true, std::memory_order_seq_cst);
+    m_posted.fetch_add(1, std::memory_order_seq_cst);
+    futexWakeAll(m_posted);
     for (std::thread& t : m_workers) t.join();
+    // ELASTIC_LAB_POOL_STATS=1: what the waits did, on stderr (scripts/threads-beside-stress.sh).
+    if (const char* stats = std::getenv("ELASTIC_LAB_POOL_STATS"); stats && *stats == '1' && !m_workers.empty()) {
+        const Counters c = counters();
+        std::fprintf(stderr,
+                     "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu\n",
+                     static_cast<unsigned long long>(c.runs), static_cast<unsigned long long>(c.soloRuns),
+                     static_cast<unsigned long long>(c.soloPeriods), static_cast<unsigned long long>(c.callerSleeps),
+                     static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks));
+    }
 }
 
-int ThreadPool::claimTasks(std::uint32_t run) {
+void ThreadPool::setTestHook(TestHook hook) { g_testHook.store(hook, std::memory_order_release); }
+
+ThreadPool::Counters ThreadPool::counters() const {
+    Counters c;
+    c.runs = m_statRuns.load(std::memory_order_relaxed);
+    c.soloRuns = m_statSolo.load(std::memory_order_relaxed);
+    c.callerSleeps = m_statCallerSleeps.load(std::memory_order_relaxed);
+    c.workerSleeps = m_statWorkerSleeps.load(std::memory_order_relaxed);
+    c.workerTasks = m_statWorkerTasks.load(std::memory_order_relaxed);
+    c.soloPeriods = m_statSoloPeriods.load(std::memory_order_relaxed);
+    return c;
+}
+
+bool ThreadPool::contended(ContentionProbe& probe) {
+    const Clock::time_point now = Clock::now();
+    const std::int64_t ticks = now.time_since_epoch().count();
+    if (now >= probe.nextCheck) {
+        probe.nextCheck = now + kBusyCheck;
+        const long switches = involuntarySwitches();
+        if (switches != probe.switches) {
+            probe.switches = switches;
+            m_busyUntil.store(ticks + std::chrono::duration_cast<Clock::duration>(kBusyFor).count(),
+                              std::memory_order_relaxed);
+            return true;
+        }
+    }
+    return ticks < m_busyUntil.load(std::memory_order_relaxed);
+}
+
+int ThreadPool::claimTasks(std::uint32_t run, bool worker) {
     int claimed = 0;
     std::uint64_t ticket = m_ticket.load(std::memory_order_acquire);
     for (;;) {
         if (static_cast<std::uint32_t>(ticket >> 32) != run) return claimed;  // a later run has begun
         const auto index = static_cast<int>(ticket & 0xffffffffu);
         // A count read after a later run was posted only makes the claim below fail.
-        if (index >= m_count.load(std::memory_order_acquire)) return claimed;
+        const int count = m_count.load(std::memory_order_acquire);
+        if (index >= count) return claimed;
         if (!m_ticket.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel,
                                             std::memory_order_acquire))
             continue;
         // Task `index` of this run is ours: the caller waits for it, so the run (and its task)
         // lives until we report it done.
-        (*m_task.load(std::memory_order_acquire))(index);
-        m_done.fetch_add(1, std::memory_order_acq_rel);
+        runTask(*m_task.load(std::memory_order_acquire), index, worker);
+        // The last task done wakes the caller if it sleeps. Sequentially consistent with the
+        // caller's "asleep" flag and its reading of m_done: either it sees this count, or this
+        // thread sees its flag (no lost wake-up).
+        const std::uint32_t done = m_done.fetch_add(1, std::memory_order_seq_cst) + 1;
+        if (worker && done == static_cast<std::uint32_t>(count) && m_callerAsleep.load(std::memory_order_seq_cst) != 0)
+            futexWakeAll(m_done);
         ++claimed;
         ticket = m_ticket.load(std::memory_order_acquire);
     }
@@ -150,31 +254,94 @@ void ThreadPool::workerLoop() {
     // spins once it keeps arriving after the caller has done everything (a busy machine, where
     // spinning only takes time from the caller, which shares the CPU with it).
     int spinLimit = kSpinsBeforeSleep;
+    ContentionProbe probe;
+    probe.switches = involuntarySwitches();
     for (;;) {
         int spins = 0;
-        while (m_posted.load(std::memory_order_acquire) == seen && !m_stop.load(std::memory_order_acquire)) {
-            if (++spins < spinLimit) {
+        const int limit = contended(probe) ? std::min(spinLimit, kBusySpins) : spinLimit;
+        std::uint32_t posted = 0;
+        while ((posted = m_posted.load(std::memory_order_acquire)) == seen) {
+            if (++spins < limit) {
                 SIMCORE_CPU_RELAX();
                 continue;
             }
-            std::unique_lock lock(m_mutex);
-            m_wake.wait(lock, [&] {
-                return m_posted.load(std::memory_order_acquire) != seen || m_stop.load(std::memory_order_acquire);
-            });
+            // Announce the sleep, then check again (both sequentially consistent, as the
+            // caller's post and its reading of m_sleepers): either the new run is seen here,
+            // or the caller sees a sleeper and wakes it. The futex sleeps only while m_posted
+            // still holds `seen`.
+            m_sleepers.fetch_add(1, std::memory_order_seq_cst);
+            if (m_posted.load(std::memory_order_seq_cst) == seen) {
+                m_statWorkerSleeps.fetch_add(1, std::memory_order_relaxed);
+                futexWait(m_posted, seen);
+            }
+            m_sleepers.fetch_sub(1, std::memory_order_seq_cst);
         }
         if (m_stop.load(std::memory_order_acquire)) return;
-        seen = m_posted.load(std::memory_order_acquire);
-        spinLimit = claimTasks(seen) > 0 ? std::min(2 * spinLimit, kSpinsBeforeSleep)
-                                         : std::max(spinLimit / 4, kMinSpins);
+        seen = posted;
+        const int ran = claimTasks(seen, true);
+        if (ran > 0) m_statWorkerTasks.fetch_add(static_cast<std::uint64_t>(ran), std::memory_order_relaxed);
+        spinLimit = ran > 0 ? std::min(2 * spinLimit, kSpinsBeforeSleep) : std::max(spinLimit / 4, kMinSpins);
     }
+}
+
+bool ThreadPool::waitForTasks(int count) {
+    const auto all = static_cast<std::uint32_t>(count);
+    bool slept = false;
+    const Clock::time_point start = Clock::now();
+    for (int spins = 1;; ++spins) {
+        const std::uint32_t done = m_done.load(std::memory_order_acquire);
+        if (done >= all) break;
+        if ((spins & 31) != 0 || seconds(Clock::now() - start) < m_callerSpin) {
+            SIMCORE_CPU_RELAX();
+            continue;
+        }
+        // Announce the sleep, then read m_done again (see claimTasks): the worker that finishes
+        // the last task either is seen here or sees the flag and wakes us.
+        m_callerAsleep.store(1, std::memory_order_seq_cst);
+        if (m_done.load(std::memory_order_seq_cst) == done) {
+            m_statCallerSleeps.fetch_add(1, std::memory_order_relaxed);
+            futexWait(m_done, done);
+            slept = true;
+        }
+        m_callerAsleep.store(0, std::memory_order_seq_cst);
+    }
+    m_callerSpin = slept ? std::max(m_callerSpin / 2, kCallerSpinMin) : std::min(m_callerSpin * 2, kCallerSpinMax);
+    return slept;
+}
+
+void ThreadPool::judgeRun(double ownSeconds, double waitSeconds) {
+    m_ownSeconds += ownSeconds;
+    m_waitSeconds += waitSeconds;
+    if (++m_windowRuns < kWindowRuns || m_ownSeconds + m_waitSeconds < kWindowSeconds) return;
+    // One window judged: the workers cost more than they bring when the caller waited for them
+    // longer than it worked. Which thread runs a task never changes a result, so this clock
+    // decides speed only.
+    if (m_waitSeconds > m_ownSeconds && m_aloneAllowed) {
+        m_soloLength = m_soloLength == 0 ? kSoloFirst : std::min(2 * m_soloLength, kSoloLongest);
+        m_soloUntil = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(m_soloLength));
+        m_statSoloPeriods.fetch_add(1, std::memory_order_relaxed);
+    } else {
+        m_soloLength = 0;  // two threads pay: the next solo period (if any) starts short
+    }
+    m_ownSeconds = m_waitSeconds = 0.0;
+    m_windowRuns = 0;
 }
 
 void ThreadPool::run(int count, TaskRef task) {
     if (count <= 0) return;
-    if (m_workers.empty() || count == 1 || m_soloRuns > 0) {
-        if (m_soloRuns > 0) --m_soloRuns;
-        for (int i = 0; i < count; ++i) task(i);
+    if (m_workers.empty() || count == 1) {
+        for (int i = 0; i < count; ++i) runTask(task, i, false);
         return;
+    }
+    m_statRuns.fetch_add(1, std::memory_order_relaxed);
+    if (contended(m_callerProbe)) m_callerSpin = kCallerSpinMin;
+    if (m_soloLength > 0 && m_windowRuns == 0) {
+        // Running alone (the fallback) until m_soloUntil; then one window with the workers.
+        if (Clock::now() < m_soloUntil) {
+            m_statSolo.fetch_add(1, std::memory_order_relaxed);
+            for (int i = 0; i < count; ++i) runTask(task, i, false);
+            return;
+        }
     }
     const std::uint32_t run = ++m_runs;
     // Close the ticket first: a worker still holding the last run's ticket (it read it before
@@ -187,36 +354,15 @@ void ThreadPool::run(int count, TaskRef task) {
     m_done.store(0, std::memory_order_release);
     // Open it: the task, its count and the cleared counter are visible to whoever claims.
     m_ticket.store(static_cast<std::uint64_t>(run) << 32, std::memory_order_release);
-    {
-        // Under the mutex, so a worker about to sleep cannot miss the new run.
-        std::lock_guard lock(m_mutex);
-        m_posted.store(run, std::memory_order_release);
-    }
-    m_wake.notify_all();
-    claimTasks(run);
-    // Every task has been claimed; wait for the ones a worker is still running. Spin a little,
-    // then yield: on a quiet machine yielding returns at once, on a busy one it lets the
-    // worker (or whoever holds the CPU it waits for) finish sooner.
-    int spins = 0;
-    std::chrono::steady_clock::time_point yieldingSince;
-    bool late = false;
-    while (m_done.load(std::memory_order_acquire) < count) {
-        if (++spins < kMinSpins * 4) {
-            SIMCORE_CPU_RELAX();
-            continue;
-        }
-        if (spins == kMinSpins * 4) yieldingSince = std::chrono::steady_clock::now();
-        std::this_thread::yield();
-        if (!late && (spins & 15) == 0) late = std::chrono::steady_clock::now() - yieldingSince > kLateWait;
-    }
-    // A worker that keeps holding up the runs (preempted in the middle of its task: a machine
-    // busier than its CPUs) costs more than it brings: the caller then runs alone for a while
-    // and tries again. Which thread runs a task never changes a result.
-    m_lateRuns = late ? m_lateRuns + 1 : std::max(0, m_lateRuns - 1);
-    if (m_lateRuns >= kLateRunsBeforeSolo) {
-        m_lateRuns = 0;
-        m_soloRuns = kSoloRuns;
-    }
+    // Post it, then wake sleeping workers (sequentially consistent with a worker's "asleep"
+    // count and its reading of m_posted: see workerLoop).
+    m_posted.store(run, std::memory_order_seq_cst);
+    if (m_sleepers.load(std::memory_order_seq_cst) != 0) futexWakeAll(m_posted);
+    const Clock::time_point start = Clock::now();
+    claimTasks(run, false);
+    const Clock::time_point own = Clock::now();
+    waitForTasks(count);
+    judgeRun(seconds(own - start), seconds(Clock::now() - own));
 }
 
 }  // namespace simcore

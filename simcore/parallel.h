@@ -1,25 +1,32 @@
 #pragma once
 // A small pool of threads that lives as long as its owner (a simulation): no thread is
 // created per step. run(count, task) calls task(0..count-1) spread over the threads and
-// returns when all are done; the calling thread takes part. Workers spin briefly between runs
-// (a step makes several in a row) and sleep when the simulation pauses.
+// returns when all are done; the calling thread takes part.
 //
 // Work goes to whichever thread is free: a task is claimed with one compare-and-swap on a
 // ticket that holds the run's number and the next task's index, so a worker that has not been
 // scheduled yet (a busy machine: compilers, a browser, another simulation beside it) claims
 // nothing, the caller does its tasks, and the run ends when every task is done, not when every
-// worker has turned up. A worker preempted in the middle of its task holds a run up; when that
-// keeps happening (a machine busier than its CPUs) the caller runs alone for a while and then
-// tries again. Two threads on a busy machine therefore cost about what one does.
+// worker has turned up.
+//
+// Waits degrade gracefully. A worker spins for the next run (about 1 ms while it keeps finding
+// work, a few microseconds once it keeps arriving late), then sleeps on a futex; the caller
+// spins, then yields, then sleeps on a futex until the last task is done. Neither holds a CPU
+// for long that another thread (its partner, preempted, or another process) could use.
+// When a run's caller keeps waiting for a preempted worker longer than it works itself (a
+// machine busier than its CPUs: two fixed chunks cannot be shared once begun), one thread
+// would be faster: the caller runs alone for a while, then tries two threads again, and
+// backs off while the trials keep failing. Two threads on a busy machine therefore cost about
+// what one does, and on a quiet one keep their ~1.9x.
 //
 // Determinism is the caller's job and is easy: split work into a fixed number of tasks that
-// does not depend on the thread count, and combine their results in task order.
+// does not depend on the thread count, and combine their results in task order. Which thread
+// ran a task, and whether the caller ran alone, never changes a result.
 
 #include <atomic>
-#include <condition_variable>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <mutex>
 #include <string_view>
 #include <thread>
 #include <type_traits>
@@ -63,24 +70,72 @@ public:
     int threads() const { return static_cast<int>(m_workers.size()) + 1; }
     void run(int count, TaskRef task);
 
+    // What the pool's waits did since it was made (diagnostics and tests; relaxed counts, exact
+    // once the pool is idle).
+    struct Counters {
+        std::uint64_t runs = 0;           // runs of more than one task
+        std::uint64_t soloRuns = 0;       // of which the caller ran alone (the busy-machine fallback)
+        std::uint64_t callerSleeps = 0;   // the caller slept waiting for a worker's task
+        std::uint64_t workerSleeps = 0;   // a worker slept waiting for the next run
+        std::uint64_t workerTasks = 0;    // tasks run by workers
+        std::uint64_t soloPeriods = 0;    // times the caller chose to run alone
+    };
+    Counters counters() const;
+    // Workers asleep right now (waiting on the futex for the next run).
+    int sleepingWorkers() const { return static_cast<int>(m_sleepers.load(std::memory_order_acquire)); }
+    // Whether the caller is asleep right now, waiting for a worker's task.
+    bool callerSleeping() const { return m_callerAsleep.load(std::memory_order_acquire) != 0; }
+
+    // Whether the caller may run alone for a while when the workers cost more than they bring
+    // (the default; tests that need every run shared turn it off).
+    void setRunAloneAllowed(bool allowed) { m_aloneAllowed = allowed; }
+
+    // Tests only: called before every task of every pool, with the task's index and whether a
+    // worker (not the caller) runs it; a test stalls a thread there in the middle of a run.
+    // Set it while no pool is running; nullptr (the default) removes it.
+    using TestHook = void (*)(int task, bool worker);
+    static void setTestHook(TestHook hook);
+
 private:
     void workerLoop();
     // Claims and runs tasks of run `run` until none is left (or another run has begun);
     // returns how many it ran.
-    int claimTasks(std::uint32_t run);
+    int claimTasks(std::uint32_t run, bool worker);
+    // The caller's wait for the tasks a worker still runs; returns true when it had to sleep.
+    bool waitForTasks(int count);
+    // Whether the machine is contended (see parallel.cpp): each thread probes its own
+    // involuntary context switches now and then; a switch marks the pool busy for a while.
+    struct ContentionProbe {
+        std::chrono::steady_clock::time_point nextCheck{};
+        long switches = -1;
+    };
+    bool contended(ContentionProbe& probe);
+    // The fallback's decision after each run that used the workers.
+    void judgeRun(double ownSeconds, double waitSeconds);
 
     std::vector<std::thread> m_workers;
-    std::mutex m_mutex;                           // only for sleeping and waking workers
-    std::condition_variable m_wake;
     std::atomic<const TaskRef*> m_task{nullptr};  // the current run's task and count,
     std::atomic<int> m_count{0};                  //   published by m_ticket
     std::atomic<std::uint64_t> m_ticket{0};       // run number << 32 | next task index
-    std::atomic<int> m_done{0};                   // tasks of the current run finished
-    std::atomic<std::uint32_t> m_posted{0};       // the newest run (wakes the workers)
-    std::uint32_t m_runs = 0;                     // runs started (the caller's own count)
-    int m_lateRuns = 0;                           // recent runs held up by a worker (net)
-    int m_soloRuns = 0;                           // runs the caller still does alone
+    std::atomic<std::uint32_t> m_done{0};         // tasks of the current run finished (a futex)
+    std::atomic<std::uint32_t> m_posted{0};       // the newest run (a futex the workers sleep on)
+    std::atomic<std::uint32_t> m_sleepers{0};     // workers asleep or about to sleep on m_posted
+    std::atomic<std::uint32_t> m_callerAsleep{0}; // the caller asleep or about to sleep on m_done
     std::atomic<bool> m_stop{false};
+    std::uint32_t m_runs = 0;                     // runs started (the caller's own count)
+    // The fallback (the caller's own state): time the caller worked and waited over the
+    // current window of runs, the solo period's length and end.
+    double m_ownSeconds = 0.0, m_waitSeconds = 0.0;
+    int m_windowRuns = 0;
+    double m_soloLength = 0.0;  // seconds; 0: not running alone
+    bool m_aloneAllowed = true;
+    std::chrono::steady_clock::time_point m_soloUntil;
+    double m_callerSpin = 200e-6;  // seconds the caller spins before it sleeps (adaptive)
+    ContentionProbe m_callerProbe;
+    std::atomic<std::int64_t> m_busyUntil{0};  // steady_clock ticks: contended until then
+    // Counters (relaxed; written by their owner thread only, read by counters()).
+    std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
+        m_statWorkerTasks{0}, m_statSoloPeriods{0};
 };
 
 // The number of hardware threads, at least 1.

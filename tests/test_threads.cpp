@@ -4,12 +4,73 @@
 
 #include <QtTest>
 #include <atomic>
+#include <chrono>
+#include <cstring>
+#include <thread>
 #include <vector>
 
+#include "simcore/float_path.h"
 #include "simcore/parallel.h"
 #include "simcore/simulation.h"
 
 using namespace simcore;
+
+namespace {
+// The test hooks' state (ThreadPool::setTestHook takes a plain function).
+std::atomic<ThreadPool*> g_pool{nullptr};
+std::atomic<int> g_workerIn{0};
+std::atomic<int> g_workerTasks{0};
+std::atomic<int> g_stallEvery{0};
+
+// A worker stalled in the middle of a run, as a preempted one is: every g_stallEvery-th task a
+// worker takes sleeps 300 us before it runs (longer than most tasks here), so the caller finishes
+// its own tasks first, waits, sleeps, and the fallback may send it on alone.
+void stallSomeWorkerTasks(int, bool worker) {
+    if (!worker) return;
+    const int k = g_workerTasks.fetch_add(1, std::memory_order_relaxed);
+    const int every = g_stallEvery.load(std::memory_order_relaxed);
+    if (every > 0 && k % every == 0) std::this_thread::sleep_for(std::chrono::microseconds(300));
+}
+
+// Caller and worker in one run of two tasks, the worker's task held until the caller sleeps:
+// the caller's task 0 waits for the worker to take task 1; the worker's task waits until the
+// caller announces its sleep (all its tasks done), then lingers so that it really sleeps.
+void holdWorkerUntilCallerSleeps(int task, bool worker) {
+    if (!worker) {
+        if (task == 0)
+            while (g_workerIn.load(std::memory_order_acquire) == 0) std::this_thread::yield();
+        return;
+    }
+    g_workerIn.store(1, std::memory_order_release);
+    while (!g_pool.load(std::memory_order_acquire)->callerSleeping()) std::this_thread::yield();
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+    g_workerTasks.fetch_add(1, std::memory_order_relaxed);
+}
+
+// The caller's task 0 waits until a worker has taken a task (so a sleeping worker must wake).
+void callerWaitsForWorker(int task, bool worker) {
+    if (worker) {
+        g_workerIn.store(1, std::memory_order_release);
+        g_workerTasks.fetch_add(1, std::memory_order_relaxed);
+    } else if (task == 0) {
+        while (g_workerIn.load(std::memory_order_acquire) == 0) std::this_thread::yield();
+    }
+}
+
+struct HookGuard {
+    explicit HookGuard(ThreadPool::TestHook hook) { ThreadPool::setTestHook(hook); }
+    ~HookGuard() { ThreadPool::setTestHook(nullptr); }
+};
+
+ParameterSet level4Sphere() {
+    ParameterSet p(SceneKind::Sphere3d);
+    p.set(Param::Subdivisions, 4);
+    p.set(Param::Gravity, 0.0);
+    p.set(Param::Perturb, 0.02);
+    p.set(Param::Scaling, 1.0);  // the thesis's per-particle body, as bench runs it
+    return p;
+}
+}  // namespace
 
 class TestThreads : public QObject {
     Q_OBJECT
@@ -62,6 +123,102 @@ private slots:
                 if (hits[static_cast<std::size_t>(i)].load(std::memory_order_relaxed) != 1)
                     QFAIL(qPrintable(QStringLiteral("run %1: task %2 ran %3 times").arg(run).arg(i).arg(hits[static_cast<std::size_t>(i)].load())));
         }
+    }
+
+    // The caller sleeps (futex) when a worker's task keeps it waiting, and the worker that
+    // finishes the last task wakes it. A lost wake-up hangs here (CTest's time limit catches
+    // it); each round the caller is held until it has announced its sleep.
+    void sleepingCallerIsWoken() {
+        ThreadPool pool(2);
+        pool.setRunAloneAllowed(false);  // the caller must wait for the worker every round
+        g_pool.store(&pool, std::memory_order_release);
+        HookGuard hook(holdWorkerUntilCallerSleeps);
+        g_workerTasks.store(0);
+        std::atomic<int> ran{0};
+        for (int round = 0; round < 50; ++round) {
+            g_workerIn.store(0, std::memory_order_release);
+            pool.run(2, [&](int) { ran.fetch_add(1, std::memory_order_relaxed); });
+            QCOMPARE(ran.load(), 2 * (round + 1));
+            QVERIFY(!pool.callerSleeping());
+        }
+        QCOMPARE(g_workerTasks.load(), 50);   // each round the worker ran one task
+        QVERIFY(pool.counters().callerSleeps > 0);
+        g_pool.store(nullptr);
+    }
+
+    // A worker whose spin ran out sleeps on a futex; the next run wakes it (a lost wake-up
+    // hangs: the caller's task 0 waits for the worker to take a task).
+    void sleepingWorkerIsWoken() {
+        ThreadPool pool(2);
+        pool.setRunAloneAllowed(false);
+        HookGuard hook(callerWaitsForWorker);
+        g_workerTasks.store(0);
+        for (int round = 0; round < 20; ++round) {
+            while (pool.sleepingWorkers() == 0) std::this_thread::yield();  // the worker sleeps (or is about to)
+            g_workerIn.store(0, std::memory_order_release);
+            std::atomic<int> ran{0};
+            pool.run(2, [&](int) { ran.fetch_add(1, std::memory_order_relaxed); });
+            QCOMPARE(ran.load(), 2);
+        }
+        QVERIFY(g_workerTasks.load() >= 20);  // each round the worker woke and ran a task (or both)
+        QVERIFY(pool.counters().workerSleeps >= 20);
+    }
+
+    // Tasks run exactly once each while the worker is stalled now and then in the middle of a
+    // run (the caller waits, sleeps, and may go on alone for a while).
+    void everyTaskRunsOnceWithAStalledWorker() {
+        ThreadPool pool(2);
+        HookGuard hook(stallSomeWorkerTasks);
+        g_workerTasks.store(0);
+        g_stallEvery.store(7);
+        std::vector<std::atomic<int>> hits(16);
+        for (int run = 0; run < 1500; ++run) {
+            const int count = 2 + run % 15;
+            for (int i = 0; i < count; ++i) hits[static_cast<std::size_t>(i)].store(0, std::memory_order_relaxed);
+            pool.run(count, [&](int i) { hits[static_cast<std::size_t>(i)].fetch_add(1, std::memory_order_relaxed); });
+            for (int i = 0; i < count; ++i)
+                if (hits[static_cast<std::size_t>(i)].load(std::memory_order_relaxed) != 1)
+                    QFAIL(qPrintable(QStringLiteral("run %1: task %2 ran %3 times").arg(run).arg(i).arg(hits[static_cast<std::size_t>(i)].load())));
+        }
+        g_stallEvery.store(0);
+        const ThreadPool::Counters c = pool.counters();
+        QCOMPARE(c.runs, std::uint64_t{1500});
+        QVERIFY(c.soloRuns <= c.runs);
+    }
+
+    // Which thread runs a chunk, a stalled worker and the caller's runs alone never change a
+    // result: the double and the float path step a level-4 sphere with one thread and with two
+    // (the worker stalled every fifth task it takes) to the same bits.
+    void stalledWorkerKeepsTheBits() {
+        const ParameterSet p = level4Sphere();
+        Simulation one(p, "rk4");
+        one.setThreads(1);
+        Simulation two(p, "rk4");
+        two.setThreads(2);
+        QCOMPARE(two.threads(), 2);
+        FloatSimulation floatOne(one);
+        floatOne.setThreads(1);
+        FloatSimulation floatTwo(two);
+        floatTwo.setThreads(2);
+        QCOMPARE(floatTwo.threads(), 2);
+        for (int i = 0; i < 40; ++i) QVERIFY(one.step());
+        for (int i = 0; i < 40; ++i) QVERIFY(floatOne.step());
+        {
+            HookGuard hook(stallSomeWorkerTasks);
+            g_workerTasks.store(0);
+            g_stallEvery.store(5);
+            for (int i = 0; i < 40; ++i) QVERIFY(two.step());
+            const int doubleWorkerTasks = g_workerTasks.load();
+            for (int i = 0; i < 40; ++i) QVERIFY(floatTwo.step());
+            g_stallEvery.store(0);
+            QVERIFY2(doubleWorkerTasks > 0, "the worker took no chunk of the double path");
+            QVERIFY2(g_workerTasks.load() > doubleWorkerTasks, "the worker took no chunk of the float path");
+        }
+        const Eigen::VectorXd& a = one.state();
+        const Eigen::VectorXd& b = two.state();
+        QCOMPARE(a.size(), b.size());
+        QVERIFY(std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<std::size_t>(a.size())) == 0);
+        QCOMPARE(floatTwo.stateHash(), floatOne.stateHash());
     }
 };
 

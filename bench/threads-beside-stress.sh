@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# One and two threads beside a busy process (issue 27; docs/performance.md, "Two threads beside
+# a busy process"): the level-6 sphere (RK4, DT 0.003, gravity off, --kernels avx2) with 1 and 2
+# threads, alone and beside `stress-ng --cpu 1` and `--cpu 2`, in double and float, for one or
+# more builds of elastic-lab-cli measured in alternated rounds (A B, B A, A B, ...). Prints one
+# table row per (load, build, precision): steps/s with 1 and 2 threads and the paired ratio
+# 2 / 1 (each round's two runs side by side), medians and ranges, and the state hashes seen.
+#
+#   bench/threads-beside-stress.sh [--rounds N] [--steps N] [--loads "0 1 2"]
+#       [--precisions "double float"] [--kernels avx2] [--raw FILE] CLI [CLI ...]
+#   bench/threads-beside-stress.sh --summary FILE CLI [CLI ...]   (the table again from a raw file)
+#
+# e.g. bench/threads-beside-stress.sh build/release/app/cli/elastic-lab-cli
+#      bench/threads-beside-stress.sh /tmp/cli-before build/release/app/cli/elastic-lab-cli
+# Needs stress-ng (scripts/install-deps.sh) and python3. On a shared machine the caller may
+# give its own shell more scheduler weight first (`echo -10 > /proc/$$/autogroup`); stress-ng
+# runs in the same scheduler group as the benchmark, as a second program of the same user would.
+set -euo pipefail
+
+rounds=5 steps=150 loads="0 1 2" precisions="double float" kernels=avx2 raw="" summary=""
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --rounds) rounds=$2; shift 2 ;;
+        --steps) steps=$2; shift 2 ;;
+        --loads) loads=$2; shift 2 ;;
+        --precisions) precisions=$2; shift 2 ;;
+        --kernels) kernels=$2; shift 2 ;;
+        --raw) raw=$2; shift 2 ;;
+        --summary) summary=$2; shift 2 ;;
+        -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+        -*) echo "unknown option $1" >&2; exit 2 ;;
+        *) break ;;
+    esac
+done
+[ $# -ge 1 ] || { echo "usage: $0 [options] CLI [CLI ...]" >&2; exit 2; }
+clis=("$@")
+if [ -z "$summary" ]; then  # measure (else only the table from the raw file)
+command -v stress-ng >/dev/null || { echo "stress-ng is not installed (scripts/install-deps.sh)" >&2; exit 2; }
+for c in "${clis[@]}"; do [ -x "$c" ] || { echo "not an executable: $c" >&2; exit 2; }; done
+
+[ -n "$raw" ] || raw=$(mktemp /tmp/threads-beside-stress.XXXXXX.csv)
+echo "load,build,precision,round,threads,steps_per_second,state_hash,pool" > "$raw"
+args=(bench --scene sphere3d --set subdivisions=6 --set gravity=0 --set perturb=0.01 --integrator rk4
+      --dt 0.003 --steps "$steps" --warmup 10 --kernels "$kernels")
+
+echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(nproc) CPUs available"
+echo "load average at start: $(cut -d' ' -f1-3 /proc/loadavg)"
+
+stress=""
+cleanup() { [ -n "$stress" ] && kill "$stress" 2>/dev/null; wait 2>/dev/null || true; }
+trap cleanup EXIT
+
+one() {  # load build-index precision round threads
+    local out pool
+    out=$(ELASTIC_LAB_POOL_STATS=1 "${clis[$2]}" "${args[@]}" --precision "$3" --threads "$5" 2>/tmp/tbs-err.$$)
+    # the pools' own account (ELASTIC_LAB_POOL_STATS), one field: a float run has two pools
+    pool=$(grep '^pool:' /tmp/tbs-err.$$ | sed 's/^pool: //; s/,/;/g' | paste -sd'|' || true)
+    # steps_per_second is column 11, state_hash column 15 of bench's CSV
+    echo "$out" | tail -1 | awk -F, -v l="$1" -v b="$2" -v p="$3" -v r="$4" -v t="$5" -v pool="$pool" \
+        '{print l "," b "," p "," r "," t "," $11 "," $15 "," pool}' >> "$raw"
+}
+
+for load in $loads; do
+    if [ "$load" -gt 0 ]; then
+        stress-ng --cpu "$load" --timeout 3600 --quiet & stress=$!
+        sleep 1
+    fi
+    for r in $(seq 1 "$rounds"); do
+        # builds alternated round by round, and within a build the thread counts too
+        order=$(seq 0 $((${#clis[@]} - 1)))
+        [ $((r % 2)) -eq 0 ] && order=$(echo "$order" | tac)
+        for b in $order; do
+            for p in $precisions; do
+                if [ $((r % 2)) -eq 1 ]; then one "$load" "$b" "$p" "$r" 1; one "$load" "$b" "$p" "$r" 2
+                else one "$load" "$b" "$p" "$r" 2; one "$load" "$b" "$p" "$r" 1; fi
+            done
+        done
+        echo "load $load round $r done (load average $(cut -d' ' -f1 /proc/loadavg))" >&2
+    done
+    if [ -n "$stress" ]; then kill "$stress"; wait "$stress" 2>/dev/null || true; stress=""; fi
+done
+rm -f /tmp/tbs-err.$$
+echo "load average at end: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "raw rows: $raw"
+
+else
+    raw=$summary
+fi
+
+python3 - "$raw" "${clis[@]}" <<'EOF'
+import csv, statistics, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+clis = sys.argv[2:]
+def fmt(v): return f"{statistics.median(v):.0f} ({min(v):.0f}-{max(v):.0f})"
+def fmtr(v): return f"{statistics.median(v):.2f} ({min(v):.2f}-{max(v):.2f})"
+print("| beside | build | precision | 1 thread, steps/s | 2 threads, steps/s | 2 / 1, paired | state hash |")
+print("|---|---|---|---|---|---|---|")
+for load in dict.fromkeys(r["load"] for r in rows):
+    for b in dict.fromkeys(r["build"] for r in rows):
+        for p in dict.fromkeys(r["precision"] for r in rows):
+            sel = [r for r in rows if (r["load"], r["build"], r["precision"]) == (load, b, p)]
+            if not sel: continue
+            by = {}
+            for r in sel: by.setdefault(r["round"], {})[r["threads"]] = float(r["steps_per_second"])
+            one = [v["1"] for v in by.values() if "1" in v]
+            two = [v["2"] for v in by.values() if "2" in v]
+            ratio = [v["2"] / v["1"] for v in by.values() if "1" in v and "2" in v]
+            hashes = ",".join(sorted({r["state_hash"] for r in sel}))
+            beside = "nothing" if load == "0" else f"stress-ng --cpu {load}"
+            print(f"| {beside} | {clis[int(b)]} | {p} | {fmt(one)} | {fmt(two)} | **{fmtr(ratio)}** | {hashes} |")
+EOF
