@@ -21,6 +21,7 @@
 #include "ui/export.h"
 #include "ui/gl_format.h"
 #include "ui/main_window.h"
+#include "ui/plot_series.h"
 #include "ui/presets.h"
 #include "ui/run_dock.h"
 #include "ui/simulation_controller.h"
@@ -261,6 +262,27 @@ private slots:
             const Census c = census(v->grabFramebuffer());
             QVERIFY2(c.orange > 0.002 && c.bluish > 0.002,
                      qPrintable(QString("%1: orange %2, blue %3").arg(v->objectName()).arg(c.orange).arg(c.bluish)));
+        }
+        // The particles too are in their body's hue (before: every body's outer layer orange and
+        // inner layer blue, the two bodies alike): the top outer particle of each body in rk4's
+        // view, at its centre pixel, is its body's colour.
+        Viewport* v = w.viewports()[1];
+        const QImage image = v->grabFramebuffer();
+        const QMatrix4x4 mvp = v->camera().projection(v->size()) * v->camera().view();
+        const auto& x = f->lanes[1].positions;
+        for (std::size_t k = 0; k < f->scene->bodies.size(); ++k) {
+            const auto& b = f->scene->bodies[k];
+            int top = -1;
+            for (int i = b.first; i < b.first + b.count; ++i)
+                if (f->scene->topology.layer[std::size_t(i)] == simcore::Layer::Outer &&
+                    (top < 0 || x[3 * std::size_t(i) + 1] > x[3 * std::size_t(top) + 1]))
+                    top = i;
+            const QVector3D ndc = mvp.map(QVector3D(float(x[3 * std::size_t(top)]), float(x[3 * std::size_t(top) + 1]), 0.0f));
+            const QPoint at(int((ndc.x() + 1) * 0.5 * image.width()), int((1 - ndc.y()) * 0.5 * image.height()));
+            const QColor seen = image.pixelColor(at), hue = bodyColor(int(k));
+            QVERIFY2(std::abs(seen.red() - hue.red()) + std::abs(seen.green() - hue.green()) + std::abs(seen.blue() - hue.blue()) < 60,
+                     qPrintable(QString("body %1's top particle at (%2, %3) is %4, its hue %5")
+                                    .arg(k + 1).arg(at.x()).arg(at.y()).arg(seen.name(), hue.name())));
         }
     }
 

@@ -421,8 +421,7 @@ void Viewport::uploadScene() {
     m_positions.allocate(int(sizeof(float)) * 3 * m_particleCount);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    std::vector<float> layer(static_cast<std::size_t>(m_particleCount));
-    for (int i = 0; i < m_particleCount; ++i) layer[std::size_t(i)] = float(topo.layer[std::size_t(i)]);
+    const std::vector<float> layer = particleCodes(scene);
     m_layers.bind();
     m_layers.allocate(layer.data(), int(layer.size() * sizeof(float)));
     glEnableVertexAttribArray(1);
@@ -470,6 +469,17 @@ void Viewport::uploadSprings(const simcore::Topology& topo) {
     }
     glBindBuffer(GL_TEXTURE_BUFFER, 0);
     glBindTexture(GL_TEXTURE_BUFFER, 0);
+}
+
+std::vector<float> Viewport::particleCodes(const SceneData& scene) {
+    const simcore::Topology& topo = scene.topology;
+    std::vector<float> code(static_cast<std::size_t>(topo.particleCount()));
+    for (std::size_t i = 0; i < code.size(); ++i) code[i] = float(topo.layer[i]);
+    // A world's particles in their body's hue: the layer plus 4 (k + 1) for body k.
+    for (std::size_t k = 0; k < scene.bodies.size(); ++k)
+        for (int i = scene.bodies[k].first; i < scene.bodies[k].first + scene.bodies[k].count; ++i)
+            code[std::size_t(i)] += float(4 * (k + 1));
+    return code;
 }
 
 void Viewport::uploadBodyFaces(const SceneData& scene) {
@@ -665,6 +675,9 @@ void Viewport::paintGL() {
         const float size = flat ? 11.0f : (m_particleCount > 600 ? 5.0f : 8.0f);
         m_points->setUniformValue("uSize", size * float(devicePixelRatioF()));
         m_points->setUniformValue("uGrabbed", lane.pointer.active ? lane.pointer.particle : -1);
+        std::array<QVector3D, 8> hues;
+        for (int k = 0; k < 8; ++k) hues[std::size_t(k)] = rgba(bodyColor(k)).toVector3D();
+        m_points->setUniformValueArray("uBodyHue", hues.data(), 8);
         m_vao.bind();
         glDrawArrays(GL_POINTS, 0, m_particleCount);
     }

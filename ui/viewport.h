@@ -47,6 +47,9 @@ public:
 
     // False where a QOpenGLWidget cannot work (the offscreen platform, no GL 3.3).
     static bool openGLAvailable();
+    // What the particle shader reads per particle: the layer (0 single, 1 inner, 2 outer), plus
+    // 4 (k + 1) for body k of a world, drawn in its hue (bodyColor; the inner layer darker).
+    static std::vector<float> particleCodes(const SceneData& scene);
     // GL_RENDERER of the probe context ("" before openGLAvailable() or without GL).
     static QString rendererName();
     // True for Mesa's CPU renderers (llvmpipe, softpipe, swrast).
