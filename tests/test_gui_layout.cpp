@@ -6,6 +6,7 @@
 // every plot has room for its axes, the Run dock's readout has room for its text, every view is
 // inside. Each layout is also written as a PNG (ELASTIC_LAB_SHOT_DIR, or layout-shots/ in the
 // working directory) to be looked at.
+#include <algorithm>
 #include <QApplication>
 #include <QDir>
 #include <QDockWidget>
@@ -84,6 +85,15 @@ QStringList cutOff(MainWindow& w, bool sideways = true) {
                         .arg(w.frameGeometry().x()).arg(w.frameGeometry().y())
                         .arg(w.frameGeometry().width()).arg(w.frameGeometry().height());
     for (QDockWidget* dock : w.findChildren<QDockWidget*>()) {
+        // A dock that is open (not closed, not floating) is on screen, or a tab behind one
+        // that is: Qt parks a tab group's hidden tabs outside the window, and once parked the
+        // Plots dock of every single-body window, tabbed at start with the closed Bodies dock,
+        // drew nothing (an empty right third of the window; no check here saw it).
+        if (dock->isVisible() && !dock->isFloating() && !onScreen(dock)) {
+            const QList<QDockWidget*> tabs = w.tabifiedDockWidgets(dock);
+            if (std::none_of(tabs.begin(), tabs.end(), [](const QDockWidget* t) { return onScreen(t); }))
+                problems << dock->objectName() + " is open but not on screen, nor a tab behind a dock that is";
+        }
         if (!onScreen(dock)) continue;
         const QRect r = inWindow(dock);
         if (!window.contains(r)) problems << dock->objectName() + " reaches outside the window";

@@ -126,7 +126,8 @@ private slots:
         QVERIFY(waitUntil([&] { return bodies->plottedPoints() >= 2; }));
         const double end = c->latest()->world->time;
         QVERIFY(bodies->shownTimeEnd("momentum") != end);  // hidden: not redrawn
-        bodies->show();
+        bodies->toggleViewAction()->trigger();  // View > Bodies: shown and in front
+        QVERIFY(bodies->isVisible() && !bodies->visibleRegion().isEmpty());
         for (const char* id : {"momentum", "gap", "volume", "pressure"})
             QVERIFY2(waitUntil([&] { return bodies->shownTimeEnd(id) == end; }), id);
     }

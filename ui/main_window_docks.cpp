@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include <QAction>
 #include <QMainWindow>
 #include <QMenu>
 #include <QScreen>
@@ -48,11 +49,6 @@ DockSet::DockSet(QMainWindow* window, QMenu* viewMenu) : m_window(window) {
     m_stabilityMap = new StabilityMapDock(w);
     w->tabifyDockWidget(m_pv, m_stabilityMap);
     m_stabilityMap->hide();
-    // Scenes of several bodies: their readout, list and curves; opened when a world starts.
-    m_bodies = new BodiesDock(w);
-    w->addDockWidget(Qt::RightDockWidgetArea, m_bodies);
-    w->tabifyDockWidget(m_plots, m_bodies);
-    m_bodies->hide();
     // The lesson in use, under the Run dock, a tab beside Scene and Parameters (raised when a
     // lesson opens it: its table needs the height; Parameters is one click away for a step that
     // types a value): closed until a lesson (or View) opens it.
@@ -64,12 +60,23 @@ DockSet::DockSet(QMainWindow* window, QMenu* viewMenu) : m_window(window) {
     w->addDockWidget(Qt::RightDockWidgetArea, m_measured);
     w->splitDockWidget(m_plots, m_measured, Qt::Vertical);
     m_measured->hide();
+    // Scenes of several bodies: their readout, list and curves; opened when a world starts.
+    m_bodies = new BodiesDock(w);
+    w->addDockWidget(Qt::RightDockWidgetArea, m_bodies);
+    w->tabifyDockWidget(m_plots, m_bodies);
+    m_bodies->hide();
     for (QDockWidget* d : {static_cast<QDockWidget*>(m_scene), static_cast<QDockWidget*>(m_parameters),
                            static_cast<QDockWidget*>(m_run), static_cast<QDockWidget*>(m_plots),
                            static_cast<QDockWidget*>(m_energyBars), static_cast<QDockWidget*>(m_pv),
                            static_cast<QDockWidget*>(m_stabilityMap), static_cast<QDockWidget*>(m_lesson),
                            static_cast<QDockWidget*>(m_measured), static_cast<QDockWidget*>(m_bodies)})
+    {
         viewMenu->addAction(d->toggleViewAction());
+        // Chosen in the View menu, a dock comes to the front, also where it is a tab.
+        QObject::connect(d->toggleViewAction(), &QAction::triggered, d, [d](bool on) {
+            if (on) d->raise();
+        });
+    }
     w->resizeDocks({m_run, m_plots}, {290, 420}, Qt::Horizontal);
 }
 
