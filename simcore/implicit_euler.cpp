@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "simcore/failure_texts.h"
 #include "simcore/integrators.h"
 #include "simcore/internal/implicit_operator.h"
 #include "simcore/internal/integrator_makers.h"
@@ -77,9 +78,7 @@ public:
                 if (mass[i] == 0.0) m_rhs[i] = 0.0;
             m_operator.set(system, h);
             if (!solve(system, y, h, report)) {
-                report.failure = "implicit-euler: the linear solve (conjugate gradient) did not "
-                                 "converge; the linearised system is not positive definite at this "
-                                 "step (the body is too deformed or the step too large)";
+                report.failure = failure_text::kImplicitEulerNoConvergence;
                 return report;
             }
             m_v += m_dv;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "simcore/compositions.h"
+#include "simcore/failure_texts.h"
 #include "simcore/force_kernels.h"
 #include "simcore/internal/integrator_makers.h"
 #include "simcore/params.h"
@@ -226,8 +227,7 @@ public:
         auto& [k1, k2, k3, k4, k5, k6, k7] = m_k;
         for (;;) {
             if (control && h < m_options.minStep) {
-                report.failure = "rk45: the step size fell below the minimum step; the "
-                                 "tolerance cannot be met (the system is too stiff or singular)";
+                report.failure = failure_text::kRk45MinimumStep;
                 return report;
             }
             system.derivative(t, y, k1);

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
+#include "simcore/failure_texts.h"
 #include "simcore/internal/body_ode.h"
 
 namespace simcore {
@@ -162,34 +162,18 @@ double Simulation::totalEnergyNow() const {
 std::optional<std::string> Simulation::checkState(const Diagnostics& d, const Scan& scan) const {
     // Causes before symptoms: speed and energy first, then the shape they wreck. (The message
     // stream is built only on failure: nothing is allocated in a good step.)
-    if (!scan.finite || !std::isfinite(d.total())) return std::string("the state became non-finite (NaN or infinity): the step is far too large for these forces");
+    if (!scan.finite || !std::isfinite(d.total())) return failure_text::nonFinite();
     const double fastest = scan.fastest;
-    if (fastest * m_hTaken > 2.0 * m_p.world.box) {
-        std::ostringstream why;
-        why << "runaway velocity: a particle moves " << fastest
-            << " m/s, farther than the whole box in one step";
-        return why.str();
-    }
+    if (fastest * m_hTaken > 2.0 * m_p.world.box) return failure_text::runawayVelocity(fastest);
     const double held = d.kinetic + d.springTotal() + d.pointer;
     const double budget = kRunawayEnergyFactor *
                           (m_energyScale + std::abs(m_diag.workPointer) + std::abs(m_diag.workEdits));
-    if (held > budget) {
-        std::ostringstream why;
-        why << "runaway energy: kinetic + elastic energy " << held << " J exceeds " << budget
-            << " J (" << kRunawayEnergyFactor << " x the body's energy scale)";
-        return why.str();
-    }
+    if (held > budget) return failure_text::runawayEnergy(held, budget, kRunawayEnergyFactor);
     const Topology& topo = m_body.topology;
     for (const Surface& s : topo.surfaces) {
         const double volume = d.volume[static_cast<std::size_t>(layerSlot(s.layer))];
-        if (volume <= kCollapsedVolumeFraction * s.restVolume) {
-            std::ostringstream why;
-            why << "the " << layerName(s.layer) << " layer "
-                << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
-                << (topo.dimension == 2 ? "area" : "volume") << " is " << volume
-                << ", rest " << s.restVolume << ")";
-            return why.str();
-        }
+        if (volume <= kCollapsedVolumeFraction * s.restVolume)
+            return failure_text::layerLost(std::nullopt, s.layer, topo.dimension, volume, s.restVolume);
     }
     return std::nullopt;
 }

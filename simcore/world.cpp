@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "simcore/contact.h"
+#include "simcore/failure_texts.h"
 #include "simcore/integrator_table.h"
 #include "simcore/internal/compensated_time.h"
 #include "simcore/internal/world_body.h"
@@ -204,7 +204,7 @@ bool World::step(double until) {
             return false;
         }
         if (!m_y.allFinite()) {
-            fail("the state became non-finite (NaN or infinity): the step is far too large for these forces", t0);
+            fail(failure_text::nonFinite(), t0);
             return false;
         }
         // Nothing passes through: a step that ends with two elements crossing does not stand.
@@ -217,14 +217,7 @@ bool World::step(double until) {
             m_integrator->restart();
             continue;
         }
-        std::ostringstream why;
-        if (crossing[0] == crossing[1])
-            why << "body " << crossing[0] + 1 << "'s outer layer passed through itself";
-        else
-            why << "bodies " << crossing[0] + 1 << " and " << crossing[1] + 1 << " intersect (their outer layers crossed)";
-        why << " in a step of " << report.h << " s: the step is too large for this impact (a smaller dt, or an "
-            << "adaptive integrator, which halves such a step)";
-        fail(why.str(), t0);
+        fail(failure_text::layersCrossed(std::size_t(crossing[0] + 1), std::size_t(crossing[1] + 1), report.h), t0);
         return false;
     }
     if (adaptive) {

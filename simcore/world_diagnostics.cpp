@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "simcore/failure_texts.h"
 #include "simcore/internal/world_body.h"
 #include "simcore/internal/world_ode.h"
 
@@ -95,21 +95,12 @@ double World::fastestSpeed() const {
 std::optional<std::string> World::endFailure(const WorldDiagnostics& next, double h) const {
     // Checks: speed, then the shapes.
     const double fastest = fastestSpeed();
-    if (fastest * h > 2.0 * m_box || !std::isfinite(next.total())) {
-        std::ostringstream why;
-        why << "runaway velocity: a particle moves " << fastest << " m/s, farther than the whole box in one step";
-        return why.str();
-    }
+    if (fastest * h > 2.0 * m_box || !std::isfinite(next.total())) return failure_text::runawayVelocity(fastest);
     for (std::size_t k = 0; k < m_bodies.size(); ++k)
         for (const Surface& s : m_bodies[k]->body().topology.surfaces) {
             const double volume = next.bodies[k].volume[static_cast<std::size_t>(layerSlot(s.layer))];
-            if (volume <= 0.01 * s.restVolume) {
-                std::ostringstream why;
-                why << "body " << k + 1 << ": the " << layerName(s.layer) << " layer "
-                    << (volume <= 0.0 ? "turned inside out" : "collapsed") << " (its "
-                    << (m_dimension == 2 ? "area" : "volume") << " is " << volume << ", rest " << s.restVolume << ")";
-                return why.str();
-            }
+            if (volume <= 0.01 * s.restVolume)
+                return failure_text::layerLost(k + 1, s.layer, m_dimension, volume, s.restVolume);
         }
     return std::nullopt;
 }

@@ -393,14 +393,23 @@ StabilityVerdict stabilityVerdict(const LinearModes& modes, const std::string& i
     for (const auto& l : spectrum)
         if (std::abs(l) > std::abs(v.fastest)) v.fastest = l;
     const bool partitioned = isPartitioned(integrator);
-    if (!modes.eigenvalues.empty())
-        v.basis = "exact spectrum, " + std::to_string(modes.eigenvalues.size()) + " eigenvalues";
-    else if (!modes.ritzValues.empty())
-        v.basis = "Arnoldi, " + std::to_string(modes.ritzValues.size()) + " Ritz values of " +
-                  std::to_string(2 * modes.freeCoordinates);
-    else
+    if (!modes.eigenvalues.empty()) {
+        v.basisKind = StabilityVerdict::Basis::ExactSpectrum;
+        v.basisValues = modes.eigenvalues.size();
+        v.basis = "exact spectrum, " + std::to_string(v.basisValues) + " eigenvalues";
+    } else if (!modes.ritzValues.empty()) {
+        v.basisKind = StabilityVerdict::Basis::Arnoldi;
+        v.basisValues = modes.ritzValues.size();
+        v.basisOf = 2 * static_cast<std::size_t>(modes.freeCoordinates);
+        v.basis = "Arnoldi, " + std::to_string(v.basisValues) + " Ritz values of " + std::to_string(v.basisOf);
+    } else {
+        v.basisKind = StabilityVerdict::Basis::Modes;
         v.basis = "modes of M^-1 K";
-    if (partitioned && modes.stiffness.rows() > 0 && modes.unstableModes == 0) v.basis = "exact step matrix";
+    }
+    if (partitioned && modes.stiffness.rows() > 0 && modes.unstableModes == 0) {
+        v.basisKind = StabilityVerdict::Basis::StepMatrix;
+        v.basis = "exact step matrix";
+    }
     if (adaptive || !(hasStabilityFunction(integrator) || partitioned)) {
         v.ownStep = true;
         v.limit = std::numeric_limits<double>::infinity();
@@ -612,19 +621,20 @@ std::optional<StabilityAdvice> adviceFor(const LinearModes& modes, const std::st
         // (the growth rate ~ h w^2 / 2 per second is above 1/s).
         if (dt * modes.omegaMax * modes.omegaMax / 2.0 < 1.0) return std::nullopt;
         const double suggested = roundDownTwoDigits(0.9 * 2.0 / (modes.omegaMax * modes.omegaMax));
+        const double growth = dt * modes.omegaMax * modes.omegaMax / 2.0;
         std::snprintf(text, sizeof text,
                       "%s has no stable step on this body's undamped modes (highest w = %.3g rad/s): its "
                       "energy grows for every dt, here by ~%.2g per second; use dt <= %.2g s (growth below 1 "
                       "per second) or another method",
-                      name.c_str(), modes.omegaMax, dt * modes.omegaMax * modes.omegaMax / 2.0, suggested);
-        return StabilityAdvice{text, suggested};
+                      name.c_str(), modes.omegaMax, growth, suggested);
+        return StabilityAdvice{text, suggested, verdict, true, modes.omegaMax, growth};
     }
     std::snprintf(text, sizeof text,
                   "dt = %g s is above %s's largest stable step on this body, %s s (linearised: %s; fastest "
                   "|lambda| = %.3g 1/s); it will likely blow up (implicit-euler or rk45 will not)",
                   dt, name.c_str(), limitText(verdict.limit).c_str(), verdict.basis.c_str(),
                   std::abs(verdict.fastest));
-    return StabilityAdvice{text, roundDownTwoDigits(0.9 * verdict.limit)};
+    return StabilityAdvice{text, roundDownTwoDigits(0.9 * verdict.limit), verdict};
 }
 
 }  // namespace

@@ -119,6 +119,11 @@ struct StabilityVerdict {
     double limit = 0.0;
     bool ownStep = false;
     std::string basis;            // "exact spectrum (N eigenvalues)", "Arnoldi (N Ritz values)", ...
+    // The same in parts, for a window that says it in another language: the kind, the values
+    // it counts (eigenvalues, Ritz values) and, for Arnoldi, of how many (2 x free coordinates).
+    enum class Basis { ExactSpectrum, Arnoldi, Modes, StepMatrix };
+    Basis basisKind = Basis::Modes;
+    std::size_t basisValues = 0, basisOf = 0;
     double omegaMax = 0.0;        // highest frequency [rad/s]
     std::complex<double> fastest{0.0, 0.0};  // the spectrum's eigenvalue of largest modulus [1/s]
     bool stable() const { return dt <= limit; }
@@ -198,6 +203,13 @@ std::optional<std::string> preRunStabilityWarning(const simcore::Simulation& sim
 struct StabilityAdvice {
     std::string message;
     double suggestedDt = 0.0;  // [s]
+    // The message's parts (the GUI says it in the window's language): the verdict (method, the
+    // step judged, its limit and basis, the fastest eigenvalue); with no stable step at all
+    // (Euler, Heun on undamped modes) the highest frequency and the growth per second instead.
+    StabilityVerdict verdict;
+    bool noStableStep = false;
+    double omegaMax = 0.0;          // [rad/s]
+    double growthPerSecond = 0.0;
 };
 std::optional<StabilityAdvice> stabilityAdvice(const simcore::Simulation& sim);
 // The same from a linearisation (a world's: stabilityModes of its WorldSpec) for `integrator` at dt.

@@ -12,6 +12,8 @@
 //   the window   in Arabic the layout runs right to left (the menu bar starts on the right) and
 //                the menus are in Arabic; in German the numbers have a decimal comma and a field
 //                reads "0,004" as 0.004
+#include <limits>
+
 #include <QApplication>
 #include <QDir>
 #include <QDockWidget>
@@ -26,9 +28,14 @@
 #include <QTest>
 #include <QXmlStreamReader>
 
+#include "simcore/failure_texts.h"
 #include "simcore/params.h"
+#include "simcore/simulation.h"
+#include "simcore/world.h"
+#include "simcore/world_spec.h"
 #include "simlab/stability.h"
 #include "ui/failure_banner.h"
+#include "ui/failure_text.h"
 #include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/main_window.h"
@@ -265,6 +272,117 @@ private slots:
         applyLanguage(QStringLiteral("en"));
         QCOMPARE(FailureBanner::checkText(check), QString::fromStdString(simlab::failureCheckText(check)));
         QCOMPARE(num(0.0025), QStringLiteral("0.0025"));
+    }
+
+    // A run's failure in the window's language (ui/failure_text.h): every sentence simcore
+    // reports with (simcore/failure_texts.h) is said in German, French and Spanish with its
+    // numbers in the language's format; in English, and for a sentence it does not know, the
+    // text as it came.
+    void failureReasonsInEveryLanguage_data() {
+        QTest::addColumn<QString>("lang");
+        for (const char* lang : {"de", "fr", "es"}) QTest::newRow(lang) << QString::fromLatin1(lang);
+    }
+    void failureReasonsInEveryLanguage() {
+        QFETCH(QString, lang);
+        namespace ft = simcore::failure_text;
+        struct Case {
+            std::string english;
+            QStringList numbers;  // as the language writes them
+        };
+        applyLanguage(lang);
+        const std::vector<Case> cases = {
+            {ft::nonFinite(), {}},
+            {ft::runawayVelocity(1234.5), {num(1234.5)}},
+            {ft::runawayVelocity(2.5e+07), {num(2.5e7)}},
+            {ft::runawayEnergy(812.25, 40.5, 1000), {num(812.25), num(40.5), num(1000.0)}},
+            {ft::layerLost(std::nullopt, simcore::Layer::Inner, 2, 0.0125, 3.5), {num(0.0125), num(3.5)}},
+            {ft::layerLost(std::nullopt, simcore::Layer::Outer, 3, -0.25, 30.5), {num(-0.25), num(30.5)}},
+            {ft::layerLost(std::size_t{2}, simcore::Layer::Single, 3, 0.5, 12.5), {QStringLiteral("2"), num(0.5), num(12.5)}},
+            {ft::layersCrossed(1, 2, 0.05), {QStringLiteral("1"), QStringLiteral("2"), num(0.05)}},
+            {ft::layersCrossed(3, 3, 0.0125), {QStringLiteral("3"), num(0.0125)}},
+            {ft::floatNotFinite(17), {QStringLiteral("17")}},
+            {ft::floatReachedWall(4711), {QStringLiteral("4711")}},
+            {ft::kRk45MinimumStep, {}},
+            {ft::kImplicitEulerNoConvergence, {}},
+        };
+        const QRegularExpression english(QStringLiteral("\\b(runaway|layer|particle|the state|inside out|collapsed|"
+                                                        "rest|body|converge|minimum step|wall)\\b"));
+        for (const Case& c : cases) {
+            const QString said = failureReason(c.english);
+            const QString source = QString::fromStdString(c.english);
+            QVERIFY2(said != source, qPrintable(lang + ": not translated: " + source));
+            QVERIFY2(!english.match(said).hasMatch(), qPrintable(lang + ": English left in: " + said));
+            for (const QString& n : c.numbers) QVERIFY2(said.contains(n), qPrintable(lang + ": " + n + " missing in: " + said));
+        }
+        // A sentence it does not know (a SUNDIALS message) stays as it came.
+        QCOMPARE(failureReason("cvode: at t = 0.1, mxstep steps taken"), QStringLiteral("cvode: at t = 0.1, mxstep steps taken"));
+        applyLanguage(QStringLiteral("en"));
+        for (const Case& c : cases) QCOMPARE(failureReason(c.english), QString::fromStdString(c.english));
+    }
+
+    // The failures simcore really reports come back translated: a body thrown apart by a step far
+    // too large (the one-body simulation), and two bodies of a world (its own checks).
+    void realFailuresAreTranslated() {
+        applyLanguage(QStringLiteral("fr"));
+        simcore::ParameterSet p(simcore::SceneKind::Ring2d);
+        QVERIFY(!p.set(simcore::Param::Dt, 0.05));
+        simcore::Simulation sim(p, "euler");
+        for (int k = 0; k < 200 && sim.step(); ++k) {}
+        QVERIFY(sim.failure());
+        const QString said = failureReason(sim.failure()->reason);
+        QVERIFY2(said != QString::fromStdString(sim.failure()->reason), qPrintable(said));
+        auto world = simcore::worldScene("collide2d");
+        QVERIFY(world);
+        QVERIFY(!simcore::assignWorld(*world, "dt=0.05"));
+        simcore::World w(*world, "euler");
+        for (int k = 0; k < 200 && w.step(); ++k) {}
+        QVERIFY(w.failure());
+        const QString saidWorld = failureReason(*w.failure());
+        QVERIFY2(saidWorld != QString::fromStdString(*w.failure()), qPrintable(saidWorld));
+        applyLanguage(QStringLiteral("en"));
+    }
+
+    // simlab's stability sentences from their parts: the verdict with every basis and limit, and
+    // the pre-run advice of a real body (euler at DT 0.03 on the ring), in the window's language;
+    // in English, simlab's own text.
+    void stabilitySentencesInEveryLanguage_data() { failureReasonsInEveryLanguage_data(); }
+    void stabilitySentencesInEveryLanguage() {
+        QFETCH(QString, lang);
+        using Basis = simlab::StabilityVerdict::Basis;
+        std::vector<simlab::StabilityVerdict> verdicts;
+        for (Basis basis : {Basis::ExactSpectrum, Basis::Arnoldi, Basis::Modes, Basis::StepMatrix})
+            for (double limit : {0.00888, 0.0, std::numeric_limits<double>::infinity()}) {
+                simlab::StabilityVerdict v;
+                v.integrator = "rk4";
+                v.dt = 0.03;
+                v.limit = limit;
+                v.basisKind = basis;
+                v.basisValues = 96;
+                v.basisOf = 192;
+                v.basis = "exact spectrum, 96 eigenvalues";
+                verdicts.push_back(v);
+            }
+        verdicts.front().ownStep = true;
+        simcore::ParameterSet p(simcore::SceneKind::Ring2d);
+        QVERIFY(!p.set(simcore::Param::Dt, 0.03));
+        const simcore::Simulation sim(p, "euler");
+        const auto advice = simlab::stabilityAdvice(sim);
+        QVERIFY(advice);
+        const QRegularExpression english(QStringLiteral("\\b(stable up to|is stable|chooses|eigenvalues|spectrum|step matrix|"
+                                                        "Ritz values of|largest stable step|will likely|grows)\\b"));
+        applyLanguage(lang);
+        for (const simlab::StabilityVerdict& v : verdicts) {
+            const QString said = verdictSentence(v);
+            QVERIFY2(said != QString::fromStdString(simlab::verdictText(v)), qPrintable(said));
+            QVERIFY2(!english.match(said).hasMatch(), qPrintable(lang + ": English left in: " + said));
+            if (v.limit > 0.0 && !std::isinf(v.limit) && !v.ownStep) QVERIFY2(said.contains(num(0.00888)), qPrintable(said));
+        }
+        const QString advised = adviceSentence(*advice);
+        QVERIFY2(!english.match(advised).hasMatch() && advised.contains(num(0.03)), qPrintable(advised));
+        applyLanguage(QStringLiteral("en"));
+        for (const simlab::StabilityVerdict& v : verdicts)
+            QCOMPARE(verdictSentence(v), QString::fromStdString(simlab::verdictText(v)));
+        QCOMPARE(adviceSentence(*advice), QString::fromStdString(advice->message));
     }
 
     void theLanguageIsChosen() {

@@ -2,6 +2,117 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="ar">
 <context>
+    <name>FailureText</name>
+    <message>
+        <source>the inner layer</source>
+        <translation>الطبقة الداخلية</translation>
+    </message>
+    <message>
+        <source>the outer layer</source>
+        <translation>الطبقة الخارجية</translation>
+    </message>
+    <message>
+        <source>the layer</source>
+        <translation>الطبقة</translation>
+    </message>
+    <message>
+        <source>%1 turned inside out (its area is %2, rest %3)</source>
+        <translation>%1 انقلبت على نفسها (مساحتها %2، وفي السكون %3)</translation>
+    </message>
+    <message>
+        <source>%1 turned inside out (its volume is %2, rest %3)</source>
+        <translation>%1 انقلبت على نفسها (حجمها %2، وفي السكون %3)</translation>
+    </message>
+    <message>
+        <source>%1 collapsed (its area is %2, rest %3)</source>
+        <translation>%1 انهارت (مساحتها %2، وفي السكون %3)</translation>
+    </message>
+    <message>
+        <source>%1 collapsed (its volume is %2, rest %3)</source>
+        <translation>%1 انهارت (حجمها %2، وفي السكون %3)</translation>
+    </message>
+    <message>
+        <source>body %1: %2</source>
+        <translation>الجسم %1: %2</translation>
+    </message>
+    <message>
+        <source>the state became non-finite (NaN or infinity): the step is far too large for these forces</source>
+        <translation>لم تعد الحالة منتهية (NaN أو لانهاية): الخطوة أكبر بكثير مما تحتمله هذه القوى</translation>
+    </message>
+    <message>
+        <source>rk45: the step size fell below the minimum step; the tolerance cannot be met (the system is too stiff or singular)</source>
+        <translation>rk45: صارت الخطوة أصغر من أدنى خطوة؛ لا يمكن بلوغ التفاوت المسموح (النظام شديد الصلابة أو شاذ)</translation>
+    </message>
+    <message>
+        <source>implicit-euler: the linear solve (conjugate gradient) did not converge; the linearised system is not positive definite at this step (the body is too deformed or the step too large)</source>
+        <translation>implicit-euler: لم يتقارب الحل الخطي (التدرج المترافق)؛ النظام المُخطَّط ليس موجب التعريف في هذه الخطوة (الجسم مشوَّه أكثر من اللازم أو الخطوة كبيرة جدًا)</translation>
+    </message>
+    <message>
+        <source>runaway velocity: a particle moves %1 m/s, farther than the whole box in one step</source>
+        <translation>سرعة جامحة: جسيم يتحرك بسرعة %1 م/ث، أبعد من الصندوق كله في خطوة واحدة</translation>
+    </message>
+    <message>
+        <source>runaway energy: kinetic + elastic energy %1 J exceeds %2 J (%3 × the body&apos;s energy scale)</source>
+        <translation>طاقة جامحة: الطاقة الحركية + المرنة %1 J تتجاوز %2 J (%3 × مقياس طاقة الجسم)</translation>
+    </message>
+    <message>
+        <source>the state is no longer finite (particle %1)</source>
+        <translation>لم تعد الحالة منتهية (الجسيم %1)</translation>
+    </message>
+    <message>
+        <source>particle %1 reached a wall: the float path has no contact (use precision double)</source>
+        <translation>بلغ الجسيم %1 جدارًا: حساب float بلا تلامس (اختر الدقة double)</translation>
+    </message>
+    <message>
+        <source>body %1&apos;s outer layer passed through itself in a step of %2 s: the step is too large for this impact (a smaller dt, or an adaptive integrator, which halves such a step)</source>
+        <translation>عبرت الطبقة الخارجية للجسم %1 نفسها في خطوة مدتها %2 s: الخطوة أكبر من أن تحتمل هذا الاصطدام (dt أصغر، أو مُكامِل متكيّف يقسم مثل هذه الخطوة على اثنين)</translation>
+    </message>
+    <message>
+        <source>bodies %1 and %2 intersect (their outer layers crossed) in a step of %3 s: the step is too large for this impact (a smaller dt, or an adaptive integrator, which halves such a step)</source>
+        <translation>تداخل الجسمان %1 و%2 (تقاطعت طبقتاهما الخارجيتان) في خطوة مدتها %3 s: الخطوة أكبر من أن تحتمل هذا الاصطدام (dt أصغر، أو مُكامِل متكيّف يقسم مثل هذه الخطوة على اثنين)</translation>
+    </message>
+    <message>
+        <source>exact spectrum, %1 eigenvalues</source>
+        <translation>الطيف الدقيق، %1 قيمة ذاتية</translation>
+    </message>
+    <message>
+        <source>Arnoldi, %1 Ritz values of %2</source>
+        <translation>أرنولدي، %1 قيمة ريتز من %2</translation>
+    </message>
+    <message>
+        <source>exact step matrix</source>
+        <translation>مصفوفة الخطوة الدقيقة</translation>
+    </message>
+    <message>
+        <source>modes of M^-1 K</source>
+        <translation>أنماط M^-1 K</translation>
+    </message>
+    <message>
+        <source>%1 chooses its own step: no DT limit from stability</source>
+        <translation>%1 يختار خطوته بنفسه: لا حدّ على DT من الاستقرار</translation>
+    </message>
+    <message>
+        <source>%1 is stable at every DT on this body</source>
+        <translation>%1 مستقر عند كل DT على هذا الجسم</translation>
+    </message>
+    <message>
+        <source>%1 has no stable DT on this body: its undamped modes grow for every DT (%2)</source>
+        <translation>لا DT مستقرًا لـ %1 على هذا الجسم: أنماطه غير المخمَّدة تنمو عند كل DT (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is stable up to DT = %2 s on this body (%3)</source>
+        <translation>%1 مستقر حتى DT = %2 s على هذا الجسم (%3)</translation>
+    </message>
+    <message>
+        <source>%1 has no stable step on this body&apos;s undamped modes (highest w = %2 rad/s): its energy grows for every dt, here by ~%3 per second; use dt &lt;= %4 s (growth below 1 per second) or another method</source>
+        <translation>لا خطوة مستقرة لـ %1 على أنماط هذا الجسم غير المخمَّدة (أعلى w = %2 rad/s): طاقته تنمو عند كل dt، هنا بنحو %3 في الثانية؛ استخدم dt &lt;= %4 s (نمو دون 1 في الثانية) أو طريقة أخرى</translation>
+    </message>
+    <message>
+        <source>dt = %1 s is above %2&apos;s largest stable step on this body, %3 s (linearised: %4; fastest |lambda| = %5 1/s); it will likely blow up (implicit-euler or rk45 will not)</source>
+        <translation>dt = %1 s أكبر من أكبر خطوة مستقرة لـ %2 على هذا الجسم، %3 s (خطيًا: %4؛ أسرع |lambda| = %5 1/s)؛ سينفجر الحساب على الأرجح (implicit-euler أو rk45 لا)</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>solid</source>

@@ -2,6 +2,117 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
+    <name>FailureText</name>
+    <message>
+        <source>the inner layer</source>
+        <translation>die innere Schicht</translation>
+    </message>
+    <message>
+        <source>the outer layer</source>
+        <translation>die äußere Schicht</translation>
+    </message>
+    <message>
+        <source>the layer</source>
+        <translation>die Schicht</translation>
+    </message>
+    <message>
+        <source>%1 turned inside out (its area is %2, rest %3)</source>
+        <translation>%1 hat sich umgestülpt (ihre Fläche ist %2, in Ruhe %3)</translation>
+    </message>
+    <message>
+        <source>%1 turned inside out (its volume is %2, rest %3)</source>
+        <translation>%1 hat sich umgestülpt (ihr Volumen ist %2, in Ruhe %3)</translation>
+    </message>
+    <message>
+        <source>%1 collapsed (its area is %2, rest %3)</source>
+        <translation>%1 ist kollabiert (ihre Fläche ist %2, in Ruhe %3)</translation>
+    </message>
+    <message>
+        <source>%1 collapsed (its volume is %2, rest %3)</source>
+        <translation>%1 ist kollabiert (ihr Volumen ist %2, in Ruhe %3)</translation>
+    </message>
+    <message>
+        <source>body %1: %2</source>
+        <translation>Körper %1: %2</translation>
+    </message>
+    <message>
+        <source>the state became non-finite (NaN or infinity): the step is far too large for these forces</source>
+        <translation>der Zustand ist nicht mehr endlich (NaN oder unendlich): der Schritt ist für diese Kräfte viel zu groß</translation>
+    </message>
+    <message>
+        <source>rk45: the step size fell below the minimum step; the tolerance cannot be met (the system is too stiff or singular)</source>
+        <translation>rk45: die Schrittweite fiel unter die kleinste Schrittweite; die Toleranz ist nicht einzuhalten (das System ist zu steif oder singulär)</translation>
+    </message>
+    <message>
+        <source>implicit-euler: the linear solve (conjugate gradient) did not converge; the linearised system is not positive definite at this step (the body is too deformed or the step too large)</source>
+        <translation>implicit-euler: das lineare Gleichungssystem (konjugierte Gradienten) konvergierte nicht; das linearisierte System ist in diesem Schritt nicht positiv definit (der Körper ist zu stark verformt oder der Schritt zu groß)</translation>
+    </message>
+    <message>
+        <source>runaway velocity: a particle moves %1 m/s, farther than the whole box in one step</source>
+        <translation>davonlaufende Geschwindigkeit: ein Teilchen bewegt sich mit %1 m/s, weiter als die ganze Box in einem Schritt</translation>
+    </message>
+    <message>
+        <source>runaway energy: kinetic + elastic energy %1 J exceeds %2 J (%3 × the body&apos;s energy scale)</source>
+        <translation>davonlaufende Energie: kinetische + elastische Energie %1 J übersteigt %2 J (%3 × die Energieskala des Körpers)</translation>
+    </message>
+    <message>
+        <source>the state is no longer finite (particle %1)</source>
+        <translation>der Zustand ist nicht mehr endlich (Teilchen %1)</translation>
+    </message>
+    <message>
+        <source>particle %1 reached a wall: the float path has no contact (use precision double)</source>
+        <translation>Teilchen %1 erreichte eine Wand: die float-Rechnung hat keinen Kontakt (wählen Sie die Genauigkeit double)</translation>
+    </message>
+    <message>
+        <source>body %1&apos;s outer layer passed through itself in a step of %2 s: the step is too large for this impact (a smaller dt, or an adaptive integrator, which halves such a step)</source>
+        <translation>die äußere Schicht von Körper %1 ging in einem Schritt von %2 s durch sich selbst: der Schritt ist für diesen Stoß zu groß (ein kleineres dt, oder ein adaptiver Integrator, der einen solchen Schritt halbiert)</translation>
+    </message>
+    <message>
+        <source>bodies %1 and %2 intersect (their outer layers crossed) in a step of %3 s: the step is too large for this impact (a smaller dt, or an adaptive integrator, which halves such a step)</source>
+        <translation>die Körper %1 und %2 durchdringen sich (ihre äußeren Schichten haben sich gekreuzt) in einem Schritt von %3 s: der Schritt ist für diesen Stoß zu groß (ein kleineres dt, oder ein adaptiver Integrator, der einen solchen Schritt halbiert)</translation>
+    </message>
+    <message>
+        <source>exact spectrum, %1 eigenvalues</source>
+        <translation>exaktes Spektrum, %1 Eigenwerte</translation>
+    </message>
+    <message>
+        <source>Arnoldi, %1 Ritz values of %2</source>
+        <translation>Arnoldi, %1 Ritz-Werte von %2</translation>
+    </message>
+    <message>
+        <source>exact step matrix</source>
+        <translation>exakte Schrittmatrix</translation>
+    </message>
+    <message>
+        <source>modes of M^-1 K</source>
+        <translation>Moden von M^-1 K</translation>
+    </message>
+    <message>
+        <source>%1 chooses its own step: no DT limit from stability</source>
+        <translation>%1 wählt seinen Schritt selbst: die Stabilität begrenzt DT nicht</translation>
+    </message>
+    <message>
+        <source>%1 is stable at every DT on this body</source>
+        <translation>%1 ist bei jedem DT auf diesem Körper stabil</translation>
+    </message>
+    <message>
+        <source>%1 has no stable DT on this body: its undamped modes grow for every DT (%2)</source>
+        <translation>%1 hat auf diesem Körper kein stabiles DT: seine ungedämpften Moden wachsen bei jedem DT (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is stable up to DT = %2 s on this body (%3)</source>
+        <translation>%1 ist auf diesem Körper bis DT = %2 s stabil (%3)</translation>
+    </message>
+    <message>
+        <source>%1 has no stable step on this body&apos;s undamped modes (highest w = %2 rad/s): its energy grows for every dt, here by ~%3 per second; use dt &lt;= %4 s (growth below 1 per second) or another method</source>
+        <translation>%1 hat auf den ungedämpften Moden dieses Körpers keinen stabilen Schritt (höchstes w = %2 rad/s): seine Energie wächst bei jedem dt, hier um ~%3 pro Sekunde; nehmen Sie dt &lt;= %4 s (Wachstum unter 1 pro Sekunde) oder ein anderes Verfahren</translation>
+    </message>
+    <message>
+        <source>dt = %1 s is above %2&apos;s largest stable step on this body, %3 s (linearised: %4; fastest |lambda| = %5 1/s); it will likely blow up (implicit-euler or rk45 will not)</source>
+        <translation>dt = %1 s liegt über dem größten stabilen Schritt von %2 auf diesem Körper, %3 s (linearisiert: %4; schnellstes |lambda| = %5 1/s); die Rechnung wird wahrscheinlich explodieren (implicit-euler oder rk45 nicht)</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>solid</source>

@@ -2,6 +2,117 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es">
 <context>
+    <name>FailureText</name>
+    <message>
+        <source>the inner layer</source>
+        <translation>la capa interior</translation>
+    </message>
+    <message>
+        <source>the outer layer</source>
+        <translation>la capa exterior</translation>
+    </message>
+    <message>
+        <source>the layer</source>
+        <translation>la capa</translation>
+    </message>
+    <message>
+        <source>%1 turned inside out (its area is %2, rest %3)</source>
+        <translation>%1 se dio la vuelta (su área es %2, en reposo %3)</translation>
+    </message>
+    <message>
+        <source>%1 turned inside out (its volume is %2, rest %3)</source>
+        <translation>%1 se dio la vuelta (su volumen es %2, en reposo %3)</translation>
+    </message>
+    <message>
+        <source>%1 collapsed (its area is %2, rest %3)</source>
+        <translation>%1 colapsó (su área es %2, en reposo %3)</translation>
+    </message>
+    <message>
+        <source>%1 collapsed (its volume is %2, rest %3)</source>
+        <translation>%1 colapsó (su volumen es %2, en reposo %3)</translation>
+    </message>
+    <message>
+        <source>body %1: %2</source>
+        <translation>cuerpo %1: %2</translation>
+    </message>
+    <message>
+        <source>the state became non-finite (NaN or infinity): the step is far too large for these forces</source>
+        <translation>el estado dejó de ser finito (NaN o infinito): el paso es demasiado grande para estas fuerzas</translation>
+    </message>
+    <message>
+        <source>rk45: the step size fell below the minimum step; the tolerance cannot be met (the system is too stiff or singular)</source>
+        <translation>rk45: el paso cayó por debajo del paso mínimo; la tolerancia no se puede cumplir (el sistema es demasiado rígido o singular)</translation>
+    </message>
+    <message>
+        <source>implicit-euler: the linear solve (conjugate gradient) did not converge; the linearised system is not positive definite at this step (the body is too deformed or the step too large)</source>
+        <translation>implicit-euler: la resolución lineal (gradiente conjugado) no convergió; el sistema linealizado no es definido positivo en este paso (el cuerpo está demasiado deformado o el paso es demasiado grande)</translation>
+    </message>
+    <message>
+        <source>runaway velocity: a particle moves %1 m/s, farther than the whole box in one step</source>
+        <translation>velocidad desbocada: una partícula se mueve a %1 m/s, más que toda la caja en un paso</translation>
+    </message>
+    <message>
+        <source>runaway energy: kinetic + elastic energy %1 J exceeds %2 J (%3 × the body&apos;s energy scale)</source>
+        <translation>energía desbocada: la energía cinética + elástica, %1 J, supera %2 J (%3 × la escala de energía del cuerpo)</translation>
+    </message>
+    <message>
+        <source>the state is no longer finite (particle %1)</source>
+        <translation>el estado ya no es finito (partícula %1)</translation>
+    </message>
+    <message>
+        <source>particle %1 reached a wall: the float path has no contact (use precision double)</source>
+        <translation>la partícula %1 llegó a una pared: el cálculo en float no tiene contacto (elija la precisión double)</translation>
+    </message>
+    <message>
+        <source>body %1&apos;s outer layer passed through itself in a step of %2 s: the step is too large for this impact (a smaller dt, or an adaptive integrator, which halves such a step)</source>
+        <translation>la capa exterior del cuerpo %1 se atravesó a sí misma en un paso de %2 s: el paso es demasiado grande para este choque (un dt menor, o un integrador adaptativo, que divide ese paso por dos)</translation>
+    </message>
+    <message>
+        <source>bodies %1 and %2 intersect (their outer layers crossed) in a step of %3 s: the step is too large for this impact (a smaller dt, or an adaptive integrator, which halves such a step)</source>
+        <translation>los cuerpos %1 y %2 se interpenetran (sus capas exteriores se cruzaron) en un paso de %3 s: el paso es demasiado grande para este choque (un dt menor, o un integrador adaptativo, que divide ese paso por dos)</translation>
+    </message>
+    <message>
+        <source>exact spectrum, %1 eigenvalues</source>
+        <translation>espectro exacto, %1 valores propios</translation>
+    </message>
+    <message>
+        <source>Arnoldi, %1 Ritz values of %2</source>
+        <translation>Arnoldi, %1 valores de Ritz de %2</translation>
+    </message>
+    <message>
+        <source>exact step matrix</source>
+        <translation>matriz de paso exacta</translation>
+    </message>
+    <message>
+        <source>modes of M^-1 K</source>
+        <translation>modos de M^-1 K</translation>
+    </message>
+    <message>
+        <source>%1 chooses its own step: no DT limit from stability</source>
+        <translation>%1 elige su propio paso: la estabilidad no limita DT</translation>
+    </message>
+    <message>
+        <source>%1 is stable at every DT on this body</source>
+        <translation>%1 es estable con cualquier DT en este cuerpo</translation>
+    </message>
+    <message>
+        <source>%1 has no stable DT on this body: its undamped modes grow for every DT (%2)</source>
+        <translation>%1 no tiene DT estable en este cuerpo: sus modos no amortiguados crecen con cualquier DT (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is stable up to DT = %2 s on this body (%3)</source>
+        <translation>%1 es estable hasta DT = %2 s en este cuerpo (%3)</translation>
+    </message>
+    <message>
+        <source>%1 has no stable step on this body&apos;s undamped modes (highest w = %2 rad/s): its energy grows for every dt, here by ~%3 per second; use dt &lt;= %4 s (growth below 1 per second) or another method</source>
+        <translation>%1 no tiene paso estable en los modos no amortiguados de este cuerpo (w más alta = %2 rad/s): su energía crece con cualquier dt, aquí ~%3 por segundo; use dt &lt;= %4 s (crecimiento por debajo de 1 por segundo) u otro método</translation>
+    </message>
+    <message>
+        <source>dt = %1 s is above %2&apos;s largest stable step on this body, %3 s (linearised: %4; fastest |lambda| = %5 1/s); it will likely blow up (implicit-euler or rk45 will not)</source>
+        <translation>dt = %1 s supera el mayor paso estable de %2 en este cuerpo, %3 s (linealizado: %4; |lambda| más rápido = %5 1/s); probablemente explotará (implicit-euler o rk45 no)</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>solid</source>

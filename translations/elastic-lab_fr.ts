@@ -2,6 +2,117 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr">
 <context>
+    <name>FailureText</name>
+    <message>
+        <source>the inner layer</source>
+        <translation>la couche intérieure</translation>
+    </message>
+    <message>
+        <source>the outer layer</source>
+        <translation>la couche extérieure</translation>
+    </message>
+    <message>
+        <source>the layer</source>
+        <translation>la couche</translation>
+    </message>
+    <message>
+        <source>%1 turned inside out (its area is %2, rest %3)</source>
+        <translation>%1 s’est retournée (son aire vaut %2, au repos %3)</translation>
+    </message>
+    <message>
+        <source>%1 turned inside out (its volume is %2, rest %3)</source>
+        <translation>%1 s’est retournée (son volume vaut %2, au repos %3)</translation>
+    </message>
+    <message>
+        <source>%1 collapsed (its area is %2, rest %3)</source>
+        <translation>%1 s’est effondrée (son aire vaut %2, au repos %3)</translation>
+    </message>
+    <message>
+        <source>%1 collapsed (its volume is %2, rest %3)</source>
+        <translation>%1 s’est effondrée (son volume vaut %2, au repos %3)</translation>
+    </message>
+    <message>
+        <source>body %1: %2</source>
+        <translation>corps %1 : %2</translation>
+    </message>
+    <message>
+        <source>the state became non-finite (NaN or infinity): the step is far too large for these forces</source>
+        <translation>l’état n’est plus fini (NaN ou infini) : le pas est bien trop grand pour ces forces</translation>
+    </message>
+    <message>
+        <source>rk45: the step size fell below the minimum step; the tolerance cannot be met (the system is too stiff or singular)</source>
+        <translation>rk45 : le pas est tombé sous le pas minimal ; la tolérance ne peut pas être tenue (le système est trop raide ou singulier)</translation>
+    </message>
+    <message>
+        <source>implicit-euler: the linear solve (conjugate gradient) did not converge; the linearised system is not positive definite at this step (the body is too deformed or the step too large)</source>
+        <translation>implicit-euler : la résolution linéaire (gradient conjugué) n’a pas convergé ; le système linéarisé n’est pas défini positif à ce pas (le corps est trop déformé ou le pas trop grand)</translation>
+    </message>
+    <message>
+        <source>runaway velocity: a particle moves %1 m/s, farther than the whole box in one step</source>
+        <translation>vitesse emballée : une particule va à %1 m/s, plus loin que toute la boîte en un pas</translation>
+    </message>
+    <message>
+        <source>runaway energy: kinetic + elastic energy %1 J exceeds %2 J (%3 × the body&apos;s energy scale)</source>
+        <translation>énergie emballée : l’énergie cinétique + élastique, %1 J, dépasse %2 J (%3 × l’échelle d’énergie du corps)</translation>
+    </message>
+    <message>
+        <source>the state is no longer finite (particle %1)</source>
+        <translation>l’état n’est plus fini (particule %1)</translation>
+    </message>
+    <message>
+        <source>particle %1 reached a wall: the float path has no contact (use precision double)</source>
+        <translation>la particule %1 a atteint une paroi : le calcul en float n’a pas de contact (choisissez la précision double)</translation>
+    </message>
+    <message>
+        <source>body %1&apos;s outer layer passed through itself in a step of %2 s: the step is too large for this impact (a smaller dt, or an adaptive integrator, which halves such a step)</source>
+        <translation>la couche extérieure du corps %1 s’est traversée elle-même en un pas de %2 s : le pas est trop grand pour ce choc (un dt plus petit, ou un intégrateur adaptatif, qui divise un tel pas par deux)</translation>
+    </message>
+    <message>
+        <source>bodies %1 and %2 intersect (their outer layers crossed) in a step of %3 s: the step is too large for this impact (a smaller dt, or an adaptive integrator, which halves such a step)</source>
+        <translation>les corps %1 et %2 s’interpénètrent (leurs couches extérieures se sont croisées) en un pas de %3 s : le pas est trop grand pour ce choc (un dt plus petit, ou un intégrateur adaptatif, qui divise un tel pas par deux)</translation>
+    </message>
+    <message>
+        <source>exact spectrum, %1 eigenvalues</source>
+        <translation>spectre exact, %1 valeurs propres</translation>
+    </message>
+    <message>
+        <source>Arnoldi, %1 Ritz values of %2</source>
+        <translation>Arnoldi, %1 valeurs de Ritz sur %2</translation>
+    </message>
+    <message>
+        <source>exact step matrix</source>
+        <translation>matrice de pas exacte</translation>
+    </message>
+    <message>
+        <source>modes of M^-1 K</source>
+        <translation>modes de M^-1 K</translation>
+    </message>
+    <message>
+        <source>%1 chooses its own step: no DT limit from stability</source>
+        <translation>%1 choisit son propre pas : la stabilité ne limite pas DT</translation>
+    </message>
+    <message>
+        <source>%1 is stable at every DT on this body</source>
+        <translation>%1 est stable à tout DT sur ce corps</translation>
+    </message>
+    <message>
+        <source>%1 has no stable DT on this body: its undamped modes grow for every DT (%2)</source>
+        <translation>%1 n’a aucun DT stable sur ce corps : ses modes non amortis croissent pour tout DT (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is stable up to DT = %2 s on this body (%3)</source>
+        <translation>%1 est stable jusqu’à DT = %2 s sur ce corps (%3)</translation>
+    </message>
+    <message>
+        <source>%1 has no stable step on this body&apos;s undamped modes (highest w = %2 rad/s): its energy grows for every dt, here by ~%3 per second; use dt &lt;= %4 s (growth below 1 per second) or another method</source>
+        <translation>%1 n’a aucun pas stable sur les modes non amortis de ce corps (w le plus haut = %2 rad/s) : son énergie croît pour tout dt, ici d’environ %3 par seconde ; prenez dt &lt;= %4 s (croissance sous 1 par seconde) ou une autre méthode</translation>
+    </message>
+    <message>
+        <source>dt = %1 s is above %2&apos;s largest stable step on this body, %3 s (linearised: %4; fastest |lambda| = %5 1/s); it will likely blow up (implicit-euler or rk45 will not)</source>
+        <translation>dt = %1 s dépasse le plus grand pas stable de %2 sur ce corps, %3 s (linéarisé : %4 ; |lambda| le plus rapide = %5 1/s) ; la simulation va probablement exploser (implicit-euler ou rk45 non)</translation>
+    </message>
+</context>
+<context>
     <name>QObject</name>
     <message>
         <source>solid</source>

@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include "ui/failure_banner.h"
+#include "ui/failure_text.h"
 #include "ui/language.h"
 #include "ui/simulation_controller.h"
 
@@ -77,7 +78,7 @@ void Banners::showStabilityAdvice(const SceneData& scene) {
     // Said before the run goes on (the worker has paused it): a finer mesh has faster modes,
     // so an explicit method needs a smaller DT (docs/numerics.md, "Resolution").
     m_stabilityText->setText(tr("<b>This body is likely unstable at the current DT.</b> %1. The run is paused.")
-                                 .arg(scene.stabilityWarning.toHtmlEscaped()));
+                                 .arg(scene.stabilityAdvice ? adviceSentence(*scene.stabilityAdvice).toHtmlEscaped() : QString()));
     m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(num(scene.suggestedDt)));
     m_stability->show();
 }

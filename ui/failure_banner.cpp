@@ -6,6 +6,7 @@
 #include <QVBoxLayout>
 
 #include "ui/accessibility.h"
+#include "ui/failure_text.h"
 #include "ui/language.h"
 #include "ui/mailbox.h"
 
@@ -109,7 +110,7 @@ void FailureBanner::startCheck(const simcore::SimulationSnapshot& start, const s
 }
 
 // The check's verdict in words: simlab's text in English; in another language the same sentences
-// with the same numbers (the failure's reason and the linearised verdict stay simlab's words).
+// with the same numbers (the failure's reason and the linearised verdict too: failure_text.h).
 QString FailureBanner::checkText(const simlab::FailureCheck& c) {
     if (currentLanguage() == QLatin1String("en")) return QString::fromStdString(simlab::failureCheckText(c));
     if (c.physical && c.rerunFailure)
@@ -117,11 +118,11 @@ QString FailureBanner::checkText(const simlab::FailureCheck& c) {
                   "(%3), it fails at t = %4 s as well (%5). Change the body instead: lighter masses or less gravity, "
                   "stiffer springs (ks, and the radial ones), more gas pressure, or more damping.")
             .arg(num(c.from, 'f', 3), num(c.rerunDt, 'g', 3), QString::fromStdString(c.integrator),
-                 num(c.rerunFailure->time, 'f', 3), QString::fromStdString(c.rerunFailure->reason));
+                 num(c.rerunFailure->time, 'f', 3), failureReason(c.rerunFailure->reason));
     return tr("The step was too large: run again from t = %1 s at a step of %2 s, the same stretch runs through "
               "t = %3 s. The linearised body agrees: %4.")
         .arg(num(c.from, 'f', 3), num(c.rerunDt, 'g', 3), num(c.until, 'f', 3),
-             QString::fromStdString(simlab::verdictText(c.verdict)));
+             verdictSentence(c.verdict));
 }
 
 void FailureBanner::present() {
@@ -129,7 +130,7 @@ void FailureBanner::present() {
                       "last good state.")
                        .arg(num(m_failure.time, 'f', 3))
                        .arg(m_failure.step)
-                       .arg(QString::fromStdString(m_failure.reason).toHtmlEscaped());
+                       .arg(failureReason(m_failure.reason).toHtmlEscaped());
     QString body;
     const bool physical = m_check && m_check->checked && m_check->physical;
     const bool numerical = m_check && m_check->checked && !m_check->physical;

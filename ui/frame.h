@@ -27,6 +27,7 @@
 #include "simcore/simulation.h"
 #include "simcore/world.h"
 #include "simlab/scenefile.h"
+#include "simlab/stability.h"
 
 #include "ui/body_measures.h"
 
@@ -44,8 +45,9 @@ struct SceneData {
     // resolution under its scaling (simcore::bodyValuesText).
     QString bodyValues;
     // The pre-run check of lane 0's explicit method at the current DT (simlab::stabilityAdvice):
-    // the warning and a step predicted stable; empty / 0 when DT is fine.
-    QString stabilityWarning;
+    // the warning (said in the window's language when shown: failure_text.h) and a step
+    // predicted stable; none / 0 when DT is fine.
+    std::optional<simlab::StabilityAdvice> stabilityAdvice;
     double suggestedDt = 0.0;             // [s]
     // A scene of several bodies (simcore::World): the topology above is every body's, side by
     // side (particles renumbered as the world's); each body's particles [first, first + count)

@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include "qcustomplot.h"
+#include "ui/failure_text.h"
 #include "ui/plot_dock.h"
 #include "ui/reference_run.h"
 
@@ -162,7 +163,7 @@ void PlotDock::updateReferenceNote() {
     if (const auto& failure = m_reference->failure())
         lines << tr("The reference itself failed at t = %1 s (%2): the body fails at every step size.")
                      .arg(failure->time, 0, 'f', 3)
-                     .arg(QString::fromStdString(failure->reason));
+                     .arg(failureReason(failure->reason));
     else if (m_physicsChangedAt < m_runTime)
         lines << tr("The run was changed at t = %1 s (a parameter edit or a drag): the reference stops there.")
                      .arg(m_physicsChangedAt, 0, 'f', 3);

@@ -115,7 +115,7 @@ void SimWorker::afterRebuild() {
     // A rebuild can make the current DT unstable for the chosen method (a finer mesh has faster
     // modes): say so before it runs, with a step the same estimate predicts stable.
     if (auto advice = simlab::stabilityAdvice(sim)) {
-        scene->stabilityWarning = QString::fromStdString(advice->message);
+        scene->stabilityAdvice = *advice;
         scene->suggestedDt = advice->suggestedDt;
     }
     const bool unstable = scene->suggestedDt > 0.0;

@@ -15,6 +15,7 @@
 #include <QTextDocument>
 #include <QWheelEvent>
 
+#include "ui/failure_text.h"
 #include "ui/language.h"
 #include "ui/plot_series.h"
 
@@ -1023,8 +1024,7 @@ void Viewport::updateOverlay() {
     if (lane.failure)
         html += QStringLiteral("<br><span style='background:#c0392b; color:white'>&nbsp;%1&nbsp;</span>")
                     .arg(tr("Blew up at t = %1 s: %2")
-                             .arg(lane.failure->time, 0, 'f', 3)
-                             .arg(QString::fromStdString(lane.failure->reason))
+                             .arg(num(lane.failure->time, 'f', 3), failureReason(lane.failure->reason))
                              .toHtmlEscaped());
     if (m_info->text() != html) {
         m_info->setText(html);
