@@ -99,6 +99,9 @@ ParameterForm::ParameterForm(simcore::SceneKind kind, const std::set<simcore::Pa
             auto* box = new QGroupBox(groupName(spec->group), this);
             form = new QFormLayout(box);
             form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+            // A row too wide for the dock puts its field under its label (a long key such as
+            // contact_stiffness in presentation mode) instead of making the dock scroll sideways.
+            form->setRowWrapPolicy(QFormLayout::WrapLongRows);
             outer->addWidget(box);
         }
         if (!spec->choices.empty()) {
