@@ -419,8 +419,9 @@ struct FloatSimulation::Impl {
     int n = 0;
     int dimension = 3;
     Eigen::VectorXd mass;
-    std::vector<float> invMass4;  // 4 per particle (0 on fixed particles and absent axes)
-    std::vector<float> weight4;   // gravity force rows
+    std::vector<float> invMass;   // per particle (0 on fixed particles)
+    std::vector<float> weightY;   // the weight's y component per particle
+    F4 axes{};                    // 1 on the body's axes, 0 on the others (and the pad)
     std::vector<Chunk> chunks;    // the chunks, then the shared springs and faces
     std::array<float, kSpringFamilyCount> stiffness{}, damping{};
     int perLayer = 0;  // particles per layer (the quads' outer offset)
@@ -434,6 +435,7 @@ struct FloatSimulation::Impl {
     std::vector<float> force4, gradient4;
     std::array<float, 2> pressureScaled{};  // P / 6 (P / 2 in 2D) per slot
     double stagePower = 0.0;                // the last evaluation's damping power [W]
+    bool stateSound = true;                 // finish found every particle finite and inside
     std::uint64_t evaluations = 0;
 
     std::unique_ptr<ThreadPool> pool;
@@ -492,16 +494,25 @@ struct FloatSimulation::Impl {
         }
     }
 
-    // Passes 1 and 2 at (px, pv): forces and gradients, damping power and pressures.
-    void springsAndFaces(const float* px, const float* pv) {
+    // Passes 1 and 2 at (px, pv): forces and gradients, damping power and pressures. Each
+    // chunk first runs `pending` (the previous evaluation's stage update, which writes the rows
+    // px and pv of this one) on its own particles and clears their force and gradient rows
+    // (the update has read them), then adds its springs and faces: a chunk's springs and faces
+    // read only its own particles, and the shared ones run after every chunk is done, so no
+    // separate update pass (and no pool run for it) is needed.
+    template <class Pending>
+    void springsAndFaces(const float* px, const float* pv, Pending&& pending) {
         const int owners = static_cast<int>(chunks.size()) - 1;
         auto task = [&](int t) {
             Chunk& c = chunks[static_cast<std::size_t>(t)];
-            for (auto [begin, end] : c.owned) {
-                const auto bytes = sizeof(float) * 4 * static_cast<std::size_t>(end - begin);
-                std::memset(force4.data() + 4 * static_cast<std::ptrdiff_t>(begin), 0, bytes);
-                if (gas) std::memset(gradient4.data() + 4 * static_cast<std::ptrdiff_t>(begin), 0, bytes);
-            }
+            float* f4 = force4.data();
+            float* g4 = gradient4.data();
+            for (auto [begin, end] : c.owned)
+                for (int i = begin; i < end; ++i) {
+                    pending(i);
+                    setRow(f4, i, F4{});
+                    if (gas) setRow(g4, i, F4{});
+                }
             accumulate(c, px, pv);
         };
         run(owners, task);
@@ -522,58 +533,89 @@ struct FloatSimulation::Impl {
 
     // Pass 3: the force on particle i (its weight, its springs, its gas), times its inverse mass.
     F4 acceleration(int i) const {
-        F4 f = row(weight4.data(), i) + row(force4.data(), i);
-        if (gas) f += splat(pressureScaled[particleSlot[static_cast<std::size_t>(i)]]) * row(gradient4.data(), i);
-        return f * row(invMass4.data(), i);
+        const auto k = static_cast<std::size_t>(i);
+        F4 f = F4{0.0f, weightY[k], 0.0f, 0.0f} + row(force4.data(), i);
+        if (gas) f += splat(pressureScaled[particleSlot[k]]) * row(gradient4.data(), i);
+        // (f * m^-1) * 1 is f * m^-1, and (f * m^-1) * 0 the signed zero f * 0 gives: the
+        // same bits as a row of m^-1 with 0 on the absent axes.
+        return (f * splat(invMass[k])) * axes;
     }
 
+    // The evaluation's stage update as a pending update of particle i: update(i, v_i, a_i),
+    // with v_i the row of the evaluation's velocities pv and a_i from its forces.
     template <class Update>
-    void evaluate(const float* px, const float* pv, Update&& update) {
-        springsAndFaces(px, pv);
+    auto stage(const float* pv, Update& update) {
+        return [this, pv, &update](int i) { update(i, row(pv, i), acceleration(i)); };
+    }
+
+    // One evaluation at (px, pv) whose stage update runs with the next pass (the next
+    // evaluation's chunk pass, or finish): returns that update.
+    template <class Pending, class Update>
+    auto evaluate(const float* px, const float* pv, Pending&& pending, Update& update) {
+        springsAndFaces(px, pv, pending);
+        return stage(pv, update);
+    }
+
+    // The step's last update and the check of the state (finite, inside the walls) in one
+    // pool run over pieces of particles; sets stateSound.
+    template <class Pending>
+    void finish(Pending&& pending) {
+        std::array<std::uint8_t, 64> pieceOk{};
+        const int pieces = std::min<int>(particleTasks(), static_cast<int>(pieceOk.size()));
         auto task = [&](int t) {
-            const int begin = t * kParticleTask, end = std::min(n, begin + kParticleTask);
-            for (int i = begin; i < end; ++i) update(i, row(pv, i), acceleration(i));
+            const int per = (n + pieces - 1) / pieces, begin = t * per, end = std::min(n, begin + per);
+            for (int i = begin; i < end; ++i) pending(i);
+            pieceOk[static_cast<std::size_t>(t)] = sound(begin, end) ? 1 : 0;
         };
-        run(particleTasks(), task);
+        run(pieces, task);
+        stateSound = true;
+        for (int t = 0; t < pieces; ++t) stateSound = stateSound && pieceOk[static_cast<std::size_t>(t)] != 0;
     }
 
     void step(std::string_view integrator, float h, double hd) {
         float* X = x.data();
         float* V = v.data();
+        const auto none = [](int) {};
         if (integrator == "euler") {
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto update = [&](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi);
                 setRow(V, i, vi + splat(h) * ai);
-            });
+            };
+            finish(evaluate(X, V, none, update));
             removed += hd * stagePower;
         } else if (integrator == "symplectic-euler") {
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto update = [&](int i, F4 vi, F4 ai) {
                 const F4 vn = vi + splat(h) * ai;
                 setRow(V, i, vn);
                 setRow(X, i, row(X, i) + splat(h) * vn);
-            });
+            };
+            finish(evaluate(X, V, none, update));
             removed += hd * stagePower;
         } else if (integrator == "verlet") {
             const float half = 0.5f * h, hh = 0.5f * h * h;
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto first = [&](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi + splat(hh) * ai);
                 setRow(V, i, vi + splat(half) * ai);
-            });
+            };
+            auto second = [&](int i, F4 vi, F4 ai) { setRow(V, i, vi + splat(half) * ai); };
+            auto pending = evaluate(X, V, none, first);
             const double p1 = stagePower;
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) { setRow(V, i, vi + splat(half) * ai); });
+            finish(evaluate(X, V, pending, second));
             removed += 0.5 * hd * (p1 + stagePower);
         } else if (integrator == "midpoint") {
             float* XT = xt.data();
             float* VT = vt.data();
             const float half = 0.5f * h;
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto first = [&](int i, F4 vi, F4 ai) {
                 setRow(XT, i, row(X, i) + splat(half) * vi);
                 setRow(VT, i, vi + splat(half) * ai);
-            });
-            evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
+            };
+            auto second = [&](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi);
                 setRow(V, i, row(V, i) + splat(h) * ai);
-            });
+            };
+            auto pending = evaluate(X, V, none, first);
+            finish(evaluate(XT, VT, pending, second));
             removed += hd * stagePower;
         } else {  // rk4
             float* XT = xt.data();
@@ -581,35 +623,38 @@ struct FloatSimulation::Impl {
             float* XA = xa.data();
             float* VA = va.data();
             const float sixth = h / 6.0f, third = h / 3.0f, half = 0.5f * h;
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto first = [&](int i, F4 vi, F4 ai) {
                 const F4 xi = row(X, i);
                 setRow(XA, i, xi + splat(sixth) * vi);
                 setRow(VA, i, vi + splat(sixth) * ai);
                 setRow(XT, i, xi + splat(half) * vi);
                 setRow(VT, i, vi + splat(half) * ai);
-            });
-            double power = stagePower;
+            };
             auto middle = [&](float c) {
-                evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
+                return [&, c](int i, F4 vi, F4 ai) {
                     setRow(XA, i, row(XA, i) + splat(third) * vi);
                     setRow(VA, i, row(VA, i) + splat(third) * ai);
                     setRow(XT, i, row(X, i) + splat(c) * vi);
                     setRow(VT, i, row(V, i) + splat(c) * ai);
-                });
-                power += 2.0 * stagePower;
+                };
             };
-            middle(half);
-            middle(h);
-            evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
+            auto second = middle(half), third_ = middle(h);
+            auto last = [&](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(XA, i) + splat(sixth) * vi);
                 setRow(V, i, row(VA, i) + splat(sixth) * ai);
-            });
+            };
+            auto pending1 = evaluate(X, V, none, first);
+            double power = stagePower;
+            auto pending2 = evaluate(XT, VT, pending1, second);
+            power += 2.0 * stagePower;
+            auto pending3 = evaluate(XT, VT, pending2, third_);
+            power += 2.0 * stagePower;
+            finish(evaluate(XT, VT, pending3, last));
             power += stagePower;
             removed += hd / 6.0 * power;
         }
     }
 
-    // Finite, and inside the walls; the reason when not.
     // Whether particles [begin, end) are finite and inside the walls (branch-free: the step's
     // common case is that they are).
     bool sound(int begin, int end) const {
@@ -629,17 +674,10 @@ struct FloatSimulation::Impl {
 
     // The reason the state is unusable, or "": checked in parallel pieces, the first bad
     // particle found again serially for the message.
+    // The reason the state is unusable, or "": finish checked it in parallel pieces; the first
+    // bad particle is found again serially for the message.
     std::string check() {
-        bool ok = true;
-        std::array<std::uint8_t, 64> pieceOk{};
-        const int pieces = std::min<int>(particleTasks(), static_cast<int>(pieceOk.size()));
-        auto task = [&](int t) {
-            const int per = (n + pieces - 1) / pieces, begin = t * per, end = std::min(n, begin + per);
-            pieceOk[static_cast<std::size_t>(t)] = sound(begin, end) ? 1 : 0;
-        };
-        run(pieces, task);
-        for (int t = 0; t < pieces; ++t) ok = ok && pieceOk[static_cast<std::size_t>(t)] != 0;
-        if (ok) return "";
+        if (stateSound) return "";
         for (int i = 0; i < n; ++i) {
             const F4 xi = row(x.data(), i), vi = row(v.data(), i);
             for (int axis = 0; axis < 3; ++axis) {
@@ -720,16 +758,14 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
     s.low = model.contact.low;
     s.high = model.contact.high;
     const auto n = static_cast<std::size_t>(s.n);
-    s.invMass4.assign(4 * n, 0.0f);
-    s.weight4.assign(4 * n, 0.0f);
+    s.invMass.assign(n, 0.0f);
+    s.weightY.assign(n, 0.0f);
     for (std::size_t i = 0; i < n; ++i) {
         const bool fixed = i < start.body().fixed.size() && start.body().fixed[i];
-        const float inv = fixed ? 0.0f : static_cast<float>(1.0 / s.mass[static_cast<Eigen::Index>(i)]);
-        s.invMass4[4 * i + 1] = inv;
-        if (s.dimension >= 2) s.invMass4[4 * i] = inv;
-        if (s.dimension == 3) s.invMass4[4 * i + 2] = inv;
-        s.weight4[4 * i + 1] = static_cast<float>(0.0 - s.mass[static_cast<Eigen::Index>(i)] * s.params.gravity);
+        s.invMass[i] = fixed ? 0.0f : static_cast<float>(1.0 / s.mass[static_cast<Eigen::Index>(i)]);
+        s.weightY[i] = static_cast<float>(0.0 - s.mass[static_cast<Eigen::Index>(i)] * s.params.gravity);
     }
+    s.axes = F4{s.dimension >= 2 ? 1.0f : 0.0f, 1.0f, s.dimension == 3 ? 1.0f : 0.0f, 0.0f};
     // Chunks by particle ownership (as ForceModel: vertex k of each layer in chunk 0 when
     // k < n/2; one chunk below ForceModel::kChunkThreshold springs); a spring or face whose
     // particles are not all one chunk's is shared.
