@@ -39,7 +39,14 @@
 // (ELASTIC_LAB_PORTABLE_KERNELS: no x86 intrinsics, as for another architecture).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(ELASTIC_LAB_PORTABLE_KERNELS)
 #define SIMCORE_FLOAT_AVX2 1
+#define SIMCORE_FLOAT_AVX512 1
+// GCC 12 warns inside its own AVX-512 intrinsics (_mm512_undefined_ps, GCC bug 105593), as in
+// force_kernels.cpp.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 #include <immintrin.h>
+#pragma GCC diagnostic pop
 #endif
 
 namespace simcore {
@@ -54,12 +61,12 @@ constexpr std::size_t kStridedBlock = 128, kStride = 16;
 
 using F4 = float __attribute__((vector_size(16)));
 
-inline F4 row(const float* p, int i) {
-    F4 r;
-    std::memcpy(&r, p + 4 * static_cast<std::ptrdiff_t>(i), sizeof r);
-    return r;
-}
-inline void setRow(float* p, int i, F4 r) { std::memcpy(p + 4 * static_cast<std::ptrdiff_t>(i), &r, sizeof r); }
+// Rows are read and written as float vectors (a vector of float may alias float; not through
+// memcpy, whose accesses may alias anything and make the compiler reload every pointer after
+// each store in the update loops).
+using F4Unaligned = float __attribute__((vector_size(16), aligned(4)));
+inline F4 row(const float* p, int i) { return *reinterpret_cast<const F4Unaligned*>(p + 4 * static_cast<std::ptrdiff_t>(i)); }
+inline void setRow(float* p, int i, F4 r) { *reinterpret_cast<F4Unaligned*>(p + 4 * static_cast<std::ptrdiff_t>(i)) = r; }
 inline F4 splat(float s) { return F4{s, s, s, s}; }
 
 // Eight lanes of double sums, added lane by lane (lane k % 8 for element k of a task) and
@@ -170,7 +177,7 @@ inline void faceScalar(const std::vector<std::array<int, 3>>& faces, int dimensi
 // The x, y, z columns of eight particles' rows (rows idx[0..7] of p).
 [[gnu::always_inline]] inline void columns8(const float* p, const int* idx, __m256& cx,
                                                                   __m256& cy, __m256& cz) {
-    auto pair = [&](int k) {
+    auto pair = [&](int k) __attribute__((always_inline)) {
         return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k]))),
                                     _mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k + 4])), 1);
     };
@@ -287,7 +294,7 @@ void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, 
         __m128 rows[8];
         __m256 power;
     };
-    auto compute = [&](std::size_t q, Group& g) {
+    auto compute = [&](std::size_t q, Group& g) __attribute__((always_inline)) {
         const int at[8] = {quads.a[q], quads.b[q], quads.a[q] + n, quads.b[q] + n,
                            quads.a[q + 1], quads.b[q + 1], quads.a[q + 1] + n, quads.b[q + 1] + n};
         std::copy(at, at + 8, g.ids);
@@ -304,13 +311,13 @@ void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, 
         const __m256 wz = _mm256_sub_ps(_mm256_permute_ps(VZ, 0x1D), _mm256_permute_ps(VZ, 0xE8));
         const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm256_loadu_ps(quads.rest.data() + 4 * q));
         // Per lane (a, b, A, B): F0 + (-F3), F0 + F2, F1 + F2, F3 + (-F1): (0, 0, 1, 3) + (3, 2, 2, 1).
-        auto rowsOf = [&](__m256 column) {
+        auto rowsOf = [&](__m256 column) __attribute__((always_inline)) {
             return _mm256_add_ps(_mm256_permute_ps(column, 0xD0), _mm256_xor_ps(_mm256_permute_ps(column, 0x6B), flip));
         };
         rows8(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), g.rows);
         g.power = f.power;
     };
-    auto apply = [&](const Group& g) {
+    auto apply = [&](const Group& g) __attribute__((always_inline)) {
         for (int j = 0; j < 2; ++j) {
             addRow128(f4, g.ids[4 * j], g.rows[4 * j]);
             subRow128(f4, g.ids[4 * j + 1], g.rows[4 * j + 1]);
@@ -374,6 +381,208 @@ void faces8(const std::vector<std::array<int, 3>>& faces, const int* corners, st
 #pragma GCC pop_options
 
 bool haveAvx2() { return __builtin_cpu_supports("avx2"); }
+#endif
+
+#ifdef SIMCORE_FLOAT_AVX512
+// The AVX-512 copy (16 lanes: four quads, sixteen springs or sixteen faces per register): the
+// AVX2 code's operations, lane for lane, on registers twice as wide; the 128-bit lanes hold
+// what one quad or four rows need, so the in-lane shuffles are the AVX2 code's. The results are
+// added to the rows in the scalar code's order, and the lane sums (eight double lanes, one
+// register) see their elements in the scalar order: element k of a block of 16 goes to lane
+// k % 8, the first eight before the last eight.
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx2")
+// The x, y, z columns of sixteen particles' rows (rows idx[0..15] of p): 128-bit lane j of
+// register k holds row 4 j + k, then the AVX2 transposition runs in each 128-bit lane.
+[[gnu::always_inline]] inline void columns16(const float* p, const int* idx, __m512& cx, __m512& cy, __m512& cz) {
+    auto four = [&](int k) __attribute__((always_inline)) {
+        auto at = [&](int j) __attribute__((always_inline)) { return _mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[4 * j + k])); };
+        __m512 r = _mm512_castps128_ps512(at(0));
+        r = _mm512_insertf32x4(r, at(1), 1);
+        r = _mm512_insertf32x4(r, at(2), 2);
+        return _mm512_insertf32x4(r, at(3), 3);
+    };
+    const __m512 r0 = four(0), r1 = four(1), r2 = four(2), r3 = four(3);
+    const __m512 t0 = _mm512_unpacklo_ps(r0, r1), t1 = _mm512_unpackhi_ps(r0, r1);
+    const __m512 t2 = _mm512_unpacklo_ps(r2, r3), t3 = _mm512_unpackhi_ps(r2, r3);
+    cx = _mm512_shuffle_ps(t0, t2, 0x44);
+    cy = _mm512_shuffle_ps(t0, t2, 0xEE);
+    cz = _mm512_shuffle_ps(t1, t3, 0x44);
+}
+
+// Sixteen rows (x, y, z, 0) from three columns: rows[j] is lane j's.
+[[gnu::always_inline]] inline void rows16(__m512 cx, __m512 cy, __m512 cz, __m128* rows) {
+    const __m512 zero = _mm512_setzero_ps();
+    const __m512 t0 = _mm512_unpacklo_ps(cx, cy), t1 = _mm512_unpackhi_ps(cx, cy);
+    const __m512 t2 = _mm512_unpacklo_ps(cz, zero), t3 = _mm512_unpackhi_ps(cz, zero);
+    const __m512 r[4] = {_mm512_shuffle_ps(t0, t2, 0x44), _mm512_shuffle_ps(t0, t2, 0xEE), _mm512_shuffle_ps(t1, t3, 0x44),
+                         _mm512_shuffle_ps(t1, t3, 0xEE)};
+    for (int k = 0; k < 4; ++k) {
+        rows[k] = _mm512_castps512_ps128(r[k]);
+        rows[4 + k] = _mm512_extractf32x4_ps(r[k], 1);
+        rows[8 + k] = _mm512_extractf32x4_ps(r[k], 2);
+        rows[12 + k] = _mm512_extractf32x4_ps(r[k], 3);
+    }
+}
+
+// The eight double lanes in one register.
+struct LaneRegister16 {
+    __m512d sum;
+    explicit LaneRegister16(const LaneSums& sums) : sum(_mm512_loadu_pd(sums.lane.data())) {}
+    void add(__m512 v) {
+        sum = _mm512_add_pd(sum, _mm512_cvtps_pd(_mm512_castps512_ps256(v)));
+        sum = _mm512_add_pd(sum, _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1))));
+    }
+    void store(LaneSums& sums) const { _mm512_storeu_pd(sums.lane.data(), sum); }
+};
+
+// springForces8, sixteen wide.
+struct Springs16 {
+    __m512 fx, fy, fz, power;
+};
+[[gnu::always_inline]] inline Springs16 springForces16(__m512 dx, __m512 dy, __m512 dz, __m512 wx, __m512 wy, __m512 wz,
+                                                       __m512 stiffness, __m512 damping, __m512 rest) {
+    const __m512 len2 =
+        _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
+    const __m512 len = _mm512_sqrt_ps(len2);
+    const __m512 inv = _mm512_div_ps(_mm512_set1_ps(1.0f), len);
+    const __m512 ux = _mm512_mul_ps(dx, inv), uy = _mm512_mul_ps(dy, inv), uz = _mm512_mul_ps(dz, inv);
+    const __m512 dvu =
+        _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(wx, ux), _mm512_mul_ps(wy, uy)), _mm512_mul_ps(wz, uz));
+    const __mmask16 ok = _mm512_cmp_ps_mask(len, _mm512_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
+    const __m512 mag = _mm512_add_ps(_mm512_mul_ps(stiffness, _mm512_sub_ps(len, rest)), _mm512_mul_ps(damping, dvu));
+    return {_mm512_maskz_mov_ps(ok, _mm512_mul_ps(mag, ux)), _mm512_maskz_mov_ps(ok, _mm512_mul_ps(mag, uy)),
+            _mm512_maskz_mov_ps(ok, _mm512_mul_ps(mag, uz)),
+            _mm512_maskz_mov_ps(ok, _mm512_mul_ps(_mm512_mul_ps(damping, dvu), dvu))};
+}
+
+void springs16(const SpringArrays& s, std::size_t begin, std::size_t end, float stiffnessScalar, float dampingScalar,
+               const float* x, const float* v, float* f4, LaneSums& power) {
+    const __m512 stiffness = _mm512_set1_ps(stiffnessScalar), damping = _mm512_set1_ps(dampingScalar);
+    LaneRegister16 sums(power);
+    std::size_t k = begin;
+    for (; k + 16 <= end; k += 16) {
+        const int* ia = s.a.data() + k;
+        const int* ib = s.b.data() + k;
+        __m512 xax, xay, xaz, xbx, xby, xbz, vax, vay, vaz, vbx, vby, vbz;
+        columns16(x, ia, xax, xay, xaz);
+        columns16(x, ib, xbx, xby, xbz);
+        columns16(v, ia, vax, vay, vaz);
+        columns16(v, ib, vbx, vby, vbz);
+        const __m512 dx = _mm512_sub_ps(xbx, xax), dy = _mm512_sub_ps(xby, xay), dz = _mm512_sub_ps(xbz, xaz);
+        const __m512 wx = _mm512_sub_ps(vbx, vax), wy = _mm512_sub_ps(vby, vay), wz = _mm512_sub_ps(vbz, vaz);
+        const Springs16 f = springForces16(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm512_loadu_ps(s.rest.data() + k));
+        __m128 rows[16];
+        rows16(f.fx, f.fy, f.fz, rows);
+        for (int j = 0; j < 16; ++j) {
+            addRow128(f4, ia[j], rows[j]);
+            subRow128(f4, ib[j], rows[j]);
+        }
+        sums.add(f.power);
+    }
+    sums.store(power);
+    // The rest (fewer than 16) as the AVX2 code: eight, then one at a time; k - begin is a
+    // multiple of 16, so the lanes are the same.
+    springs8(s, k, end, stiffnessScalar, dampingScalar, x, v, f4, power);
+}
+
+// Four quads at a time (lanes 4 j .. 4 j + 3: quad q + j), two such groups computed before
+// either is added.
+void quads16(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, const std::array<float, 4>& stiffness4,
+             const std::array<float, 4>& damping4, const float* x, const float* v, float* f4, LaneSums& power) {
+    auto repeat4 = [](const std::array<float, 4>& a) {
+        return _mm512_setr_ps(a[0], a[1], a[2], a[3], a[0], a[1], a[2], a[3], a[0], a[1], a[2], a[3], a[0], a[1], a[2], a[3]);
+    };
+    const __m512 stiffness = repeat4(stiffness4), damping = repeat4(damping4);
+    const __m512i flip = _mm512_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN,
+                                           INT32_MIN, 0, 0, INT32_MIN);
+    LaneRegister16 sums(power);
+    struct Group {
+        int ids[16];
+        __m128 rows[16];
+        __m512 power;
+    };
+    auto compute = [&](std::size_t q, Group& g) __attribute__((always_inline)) {
+        for (int j = 0; j < 4; ++j) {
+            const int a = quads.a[q + static_cast<std::size_t>(j)], b = quads.b[q + static_cast<std::size_t>(j)];
+            g.ids[4 * j] = a;
+            g.ids[4 * j + 1] = b;
+            g.ids[4 * j + 2] = a + n;
+            g.ids[4 * j + 3] = b + n;
+        }
+        __m512 X, Y, Z, VX, VY, VZ;
+        columns16(x, g.ids, X, Y, Z);
+        columns16(v, g.ids, VX, VY, VZ);
+        auto diff = [](__m512 c) __attribute__((always_inline)) { return _mm512_sub_ps(_mm512_permute_ps(c, 0x1D), _mm512_permute_ps(c, 0xE8)); };
+        const Springs16 f = springForces16(diff(X), diff(Y), diff(Z), diff(VX), diff(VY), diff(VZ), stiffness, damping,
+                                           _mm512_loadu_ps(quads.rest.data() + 4 * q));
+        auto rowsOf = [&](__m512 column) __attribute__((always_inline)) {
+            const __m512 negated =
+                _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(_mm512_permute_ps(column, 0x6B)), flip));
+            return _mm512_add_ps(_mm512_permute_ps(column, 0xD0), negated);
+        };
+        rows16(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), g.rows);
+        g.power = f.power;
+    };
+    auto apply = [&](const Group& g) __attribute__((always_inline)) {
+        for (int j = 0; j < 4; ++j) {
+            addRow128(f4, g.ids[4 * j], g.rows[4 * j]);
+            subRow128(f4, g.ids[4 * j + 1], g.rows[4 * j + 1]);
+            addRow128(f4, g.ids[4 * j + 2], g.rows[4 * j + 2]);
+            addRow128(f4, g.ids[4 * j + 3], g.rows[4 * j + 3]);
+        }
+        sums.add(g.power);
+    };
+    std::size_t q = begin;
+    Group g1, g2;
+    for (; q + 8 <= end; q += 8) {
+        compute(q, g1);
+        compute(q + 4, g2);
+        apply(g1);
+        apply(g2);
+    }
+    for (; q + 4 <= end; q += 4) {
+        compute(q, g1);
+        apply(g1);
+    }
+    sums.store(power);
+    // The rest (fewer than four quads), one at a time.
+    for (; q < end; ++q) quadScalar(quads, begin, q, n, stiffness4, damping4, x, v, f4, power);
+}
+
+void faces16(const std::vector<std::array<int, 3>>& faces, const int* corners, std::size_t stride, std::size_t begin,
+             std::size_t end, const float* x, float* g4, LaneSums& volume) {
+    LaneRegister16 sums(volume);
+    std::size_t k = begin;
+    for (; k + 16 <= end; k += 16) {
+        const int* ia = corners + k;
+        const int* ib = corners + stride + k;
+        const int* ic = corners + 2 * stride + k;
+        __m512 ax, ay, az, bx, by, bz, cx, cy, cz;
+        columns16(x, ia, ax, ay, az);
+        columns16(x, ib, bx, by, bz);
+        columns16(x, ic, cx, cy, cz);
+        const __m512 ex = _mm512_sub_ps(bx, ax), ey = _mm512_sub_ps(by, ay), ez = _mm512_sub_ps(bz, az);
+        const __m512 hx = _mm512_sub_ps(cx, ax), hy = _mm512_sub_ps(cy, ay), hz = _mm512_sub_ps(cz, az);
+        const __m512 gx = _mm512_sub_ps(_mm512_mul_ps(ey, hz), _mm512_mul_ps(ez, hy));
+        const __m512 gy = _mm512_sub_ps(_mm512_mul_ps(ez, hx), _mm512_mul_ps(ex, hz));
+        const __m512 gz = _mm512_sub_ps(_mm512_mul_ps(ex, hy), _mm512_mul_ps(ey, hx));
+        const __m512 term =
+            _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ax, gx), _mm512_mul_ps(ay, gy)), _mm512_mul_ps(az, gz));
+        __m128 rows[16];
+        rows16(gx, gy, gz, rows);
+        for (int j = 0; j < 16; ++j) {
+            addRow128(g4, ia[j], rows[j]);
+            addRow128(g4, ib[j], rows[j]);
+            addRow128(g4, ic[j], rows[j]);
+        }
+        sums.add(term);
+    }
+    sums.store(volume);
+    faces8(faces, corners, stride, k, end, x, g4, volume);
+}
+
+#pragma GCC pop_options
 #endif
 
 // The springs and faces of one chunk (or the shared ones), and what they sum.
@@ -440,7 +649,7 @@ struct FloatSimulation::Impl {
 
     std::unique_ptr<ThreadPool> pool;
     int threads = 1;
-    bool wide = false;  // the AVX2 passes
+    kernels::KernelSet simd = kernels::KernelSet::Portable;  // the passes: portable, AVX2 or AVX-512
 
     mutable Diagnostics diag;
     mutable bool measured = false;
@@ -463,16 +672,23 @@ struct FloatSimulation::Impl {
         c.volume = {};
         float* f4 = force4.data();
         const std::array<float, 4> quadStiffness{stiffness[0], stiffness[0], stiffness[2], stiffness[2]}, quadDamping{damping[0], damping[0], damping[2], damping[2]};
-#ifdef SIMCORE_FLOAT_AVX2
-        if (wide) quads8(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
+#ifdef SIMCORE_FLOAT_AVX512
+        if (simd == kernels::KernelSet::Avx512)
+            quads16(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
+        else if (simd == kernels::KernelSet::Avx2)
+            quads8(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
         else
 #endif
             for (std::size_t q = 0; q < c.quads.size(); ++q)
                 quadScalar(c.quads, 0, q, perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
         for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
             const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
-#ifdef SIMCORE_FLOAT_AVX2
-            if (wide) {
+#ifdef SIMCORE_FLOAT_AVX512
+            if (simd == kernels::KernelSet::Avx512) {
+                springs16(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
+                continue;
+            }
+            if (simd == kernels::KernelSet::Avx2) {
                 springs8(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
                 continue;
             }
@@ -483,8 +699,12 @@ struct FloatSimulation::Impl {
         float* g4 = gradient4.data();
         const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
         for (std::size_t slot = 0; slot < 2; ++slot) {
-#ifdef SIMCORE_FLOAT_AVX2
-            if (wide && dimension == 3) {
+#ifdef SIMCORE_FLOAT_AVX512
+            if (simd == kernels::KernelSet::Avx512 && dimension == 3) {
+                faces16(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
+                continue;
+            }
+            if (simd == kernels::KernelSet::Avx2 && dimension == 3) {
                 faces8(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
                 continue;
             }
@@ -918,7 +1138,9 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
     s.force4.assign(4 * n, 0.0f);
     s.gradient4.assign(4 * n, 0.0f);
 #ifdef SIMCORE_FLOAT_AVX2
-    s.wide = kernels::kernelsInUse() != kernels::KernelSet::Portable && haveAvx2();
+    // The kernel set in use (kernels::useKernels never picks one the CPU lacks: AVX-512 means
+    // avx512f, which has AVX2 with it).
+    s.simd = haveAvx2() ? kernels::kernelsInUse() : kernels::KernelSet::Portable;
 #endif
     s.measure(s.diag);
     s.diag.hasGas = s.gas;
