@@ -89,6 +89,23 @@ struct SpringArrays {
 inline void addRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) + r); }
 inline void subRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) - r); }
 
+// One spring's force F = [stiffness (L - L0) + damping (dv.u)] u from its end differences d
+// (positions) and dv (velocities), and its damping power damping (dv.u)^2 in `power`; 0 for
+// both when degenerate (L below kDegenerateLength). The reference the eight- and sixteen-wide
+// code follows operation by operation. 1/L is L (1/L^2), and dv.u is (dv.d)/L, F is
+// (magnitude/L) d: the square root and the division run side by side, and (dv.d) beside both,
+// which shortens the chain each spring waits on (the kernels were bound by its latency).
+inline F4 springForce(F4 d, F4 dv, float stiffness, float damping, float rest, float& power) {
+    const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
+    const float len = std::sqrt(len2);
+    const float inv = len * (1.0f / len2);
+    const float dvu = ((dv[0] * d[0] + dv[1] * d[1]) + dv[2] * d[2]) * inv;
+    const float scale = (stiffness * (len - rest) + damping * dvu) * inv;
+    const bool ok = len >= static_cast<float>(kDegenerateLength);
+    power = ok ? damping * dvu * dvu : 0.0f;
+    return ok ? F4{scale * d[0], scale * d[1], scale * d[2], 0.0f} : F4{};
+}
+
 // Edge quads of a two-layer body, as ForceModel's (force_kernels.h, QuadSet): for a mesh edge
 // (a, b) of the inner layer and its outer copy (A, B) = (a + n, b + n), the four springs over
 // the same four particles, one per lane: structural (a, b), structural (A, B), shear (A, b)
@@ -110,16 +127,9 @@ inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q,
     std::array<F4, 4> force;
     for (std::size_t l = 0; l < 4; ++l) {
         const F4 d = row(x, second[l]) - row(x, first[l]), dv = row(v, second[l]) - row(v, first[l]);
-        const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
-        const float len = std::sqrt(len2);
-        const float inv = 1.0f / len;
-        const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
-        const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
-        const float mag = stiffness[l] * (len - quads.rest[4 * q + l]) + damping[l] * dvu;
-        const float p = damping[l] * dvu * dvu;
-        const bool ok = len >= static_cast<float>(kDegenerateLength);
-        force[l] = F4{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
-        power.lane[((q - base) % 2) * 4 + l] += static_cast<double>(ok ? p : 0.0f);
+        float p;
+        force[l] = springForce(d, dv, stiffness[l], damping[l], quads.rest[4 * q + l], p);
+        power.lane[((q - base) % 2) * 4 + l] += static_cast<double>(p);
     }
     addRow(f4, a, force[0] - force[3]);
     subRow(f4, b, force[0] + force[2]);
@@ -132,19 +142,11 @@ inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q,
 inline void springScalar(const SpringArrays& s, std::size_t base, std::size_t k, float stiffness, float damping, const float* x,
                          const float* v, float* f4, LaneSums& power) {
     const F4 xa = row(x, s.a[k]), xb = row(x, s.b[k]), va = row(v, s.a[k]), vb = row(v, s.b[k]);
-    const F4 d = xb - xa, dv = vb - va;
-    const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
-    const float len = std::sqrt(len2);
-    const float inv = 1.0f / len;
-    const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
-    const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
-    const float mag = stiffness * (len - s.rest[k]) + damping * dvu;
-    const float p = damping * dvu * dvu;
-    const bool ok = len >= static_cast<float>(kDegenerateLength);
-    const F4 force{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
+    float p;
+    const F4 force = springForce(xb - xa, vb - va, stiffness, damping, s.rest[k], p);
     addRow(f4, s.a[k], force);
     subRow(f4, s.b[k], force);
-    power.lane[(k - base) % 8] += static_cast<double>(ok ? p : 0.0f);
+    power.lane[(k - base) % 8] += static_cast<double>(p);
 }
 
 // One face, scalar: its row added to its corners, its volume term to lane (k - base) % 8.
@@ -232,7 +234,7 @@ struct LaneRegisters {
 };
 
 // Eight springs' forces (masked to 0 where degenerate) and damping powers from their end
-// differences d (positions) and w (velocities): the scalar springScalar's operations.
+// differences d (positions) and w (velocities): springForce's operations.
 struct Springs8 {
     __m256 fx, fy, fz, power;
 };
@@ -241,14 +243,14 @@ struct Springs8 {
     const __m256 len2 =
         _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
     const __m256 len = _mm256_sqrt_ps(len2);
-    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
-    const __m256 ux = _mm256_mul_ps(dx, inv), uy = _mm256_mul_ps(dy, inv), uz = _mm256_mul_ps(dz, inv);
-    const __m256 dvu =
-        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, ux), _mm256_mul_ps(wy, uy)), _mm256_mul_ps(wz, uz));
+    const __m256 inv = _mm256_mul_ps(len, _mm256_div_ps(_mm256_set1_ps(1.0f), len2));
+    const __m256 dvu = _mm256_mul_ps(
+        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, dx), _mm256_mul_ps(wy, dy)), _mm256_mul_ps(wz, dz)), inv);
     const __m256 ok = _mm256_cmp_ps(len, _mm256_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
-    const __m256 mag = _mm256_add_ps(_mm256_mul_ps(stiffness, _mm256_sub_ps(len, rest)), _mm256_mul_ps(damping, dvu));
-    return {_mm256_and_ps(ok, _mm256_mul_ps(mag, ux)), _mm256_and_ps(ok, _mm256_mul_ps(mag, uy)),
-            _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)), _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(damping, dvu), dvu))};
+    const __m256 scale = _mm256_mul_ps(
+        _mm256_add_ps(_mm256_mul_ps(stiffness, _mm256_sub_ps(len, rest)), _mm256_mul_ps(damping, dvu)), inv);
+    return {_mm256_and_ps(ok, _mm256_mul_ps(scale, dx)), _mm256_and_ps(ok, _mm256_mul_ps(scale, dy)),
+            _mm256_and_ps(ok, _mm256_mul_ps(scale, dz)), _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(damping, dvu), dvu))};
 }
 
 void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float stiffnessScalar, float dampingScalar,
@@ -445,14 +447,14 @@ struct Springs16 {
     const __m512 len2 =
         _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
     const __m512 len = _mm512_sqrt_ps(len2);
-    const __m512 inv = _mm512_div_ps(_mm512_set1_ps(1.0f), len);
-    const __m512 ux = _mm512_mul_ps(dx, inv), uy = _mm512_mul_ps(dy, inv), uz = _mm512_mul_ps(dz, inv);
-    const __m512 dvu =
-        _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(wx, ux), _mm512_mul_ps(wy, uy)), _mm512_mul_ps(wz, uz));
+    const __m512 inv = _mm512_mul_ps(len, _mm512_div_ps(_mm512_set1_ps(1.0f), len2));
+    const __m512 dvu = _mm512_mul_ps(
+        _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(wx, dx), _mm512_mul_ps(wy, dy)), _mm512_mul_ps(wz, dz)), inv);
     const __mmask16 ok = _mm512_cmp_ps_mask(len, _mm512_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
-    const __m512 mag = _mm512_add_ps(_mm512_mul_ps(stiffness, _mm512_sub_ps(len, rest)), _mm512_mul_ps(damping, dvu));
-    return {_mm512_maskz_mov_ps(ok, _mm512_mul_ps(mag, ux)), _mm512_maskz_mov_ps(ok, _mm512_mul_ps(mag, uy)),
-            _mm512_maskz_mov_ps(ok, _mm512_mul_ps(mag, uz)),
+    const __m512 scale = _mm512_mul_ps(
+        _mm512_add_ps(_mm512_mul_ps(stiffness, _mm512_sub_ps(len, rest)), _mm512_mul_ps(damping, dvu)), inv);
+    return {_mm512_maskz_mov_ps(ok, _mm512_mul_ps(scale, dx)), _mm512_maskz_mov_ps(ok, _mm512_mul_ps(scale, dy)),
+            _mm512_maskz_mov_ps(ok, _mm512_mul_ps(scale, dz)),
             _mm512_maskz_mov_ps(ok, _mm512_mul_ps(_mm512_mul_ps(damping, dvu), dvu))};
 }
 
