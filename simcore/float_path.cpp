@@ -173,6 +173,27 @@ inline void faceScalar(const std::vector<std::array<int, 3>>& faces, int dimensi
     volume.lane[(k - base) % 8] += static_cast<double>(term);
 }
 
+// A pair of faces sharing an edge, (a, b, c) and (b, a, d) (3D): their rows g1 = (b - a) x
+// (c - a) and g2 = (a - b) x (d - b) as faceScalar's, g1 + g2 added to a and b, g1 to c, g2 to
+// d (4 rows loaded and 4 updated for two faces, instead of 6 and 6); the volume terms
+// a.g1 then b.g2 to lane (k - base) % 8. The reference of the wide code.
+inline void facePairScalar(const int* corners, std::size_t stride, std::size_t base, std::size_t k, const float* x, float* g4,
+                           LaneSums& volume) {
+    const int a = corners[k], b = corners[stride + k], c = corners[2 * stride + k], d = corners[3 * stride + k];
+    const F4 xa = row(x, a), xb = row(x, b), xc = row(x, c), xd = row(x, d);
+    auto cross = [](F4 e, F4 h) {
+        return F4{e[1] * h[2] - e[2] * h[1], e[2] * h[0] - e[0] * h[2], e[0] * h[1] - e[1] * h[0], 0.0f};
+    };
+    const F4 g1 = cross(xb - xa, xc - xa), g2 = cross(xa - xb, xd - xb);
+    const F4 both = g1 + g2;
+    addRow(g4, a, both);
+    addRow(g4, b, both);
+    addRow(g4, c, g1);
+    addRow(g4, d, g2);
+    volume.lane[(k - base) % 8] += static_cast<double>((xa[0] * g1[0] + xa[1] * g1[1]) + xa[2] * g1[2]);
+    volume.lane[(k - base) % 8] += static_cast<double>((xb[0] * g2[0] + xb[1] * g2[1]) + xb[2] * g2[2]);
+}
+
 #ifdef SIMCORE_FLOAT_AVX2
 #pragma GCC push_options
 #pragma GCC target("avx2")
@@ -380,6 +401,55 @@ void faces8(const std::vector<std::array<int, 3>>& faces, const int* corners, st
     for (; k < end; ++k) faceScalar(faces, 3, begin, k, x, g4, volume);
 }
 
+// The cross products of eight pairs of columns: (e x h) per lane.
+[[gnu::always_inline]] inline void cross8(__m256 ex, __m256 ey, __m256 ez, __m256 hx, __m256 hy, __m256 hz, __m256& gx,
+                                          __m256& gy, __m256& gz) {
+    gx = _mm256_sub_ps(_mm256_mul_ps(ey, hz), _mm256_mul_ps(ez, hy));
+    gy = _mm256_sub_ps(_mm256_mul_ps(ez, hx), _mm256_mul_ps(ex, hz));
+    gz = _mm256_sub_ps(_mm256_mul_ps(ex, hy), _mm256_mul_ps(ey, hx));
+}
+[[gnu::always_inline]] inline __m256 dot8(__m256 ax, __m256 ay, __m256 az, __m256 gx, __m256 gy, __m256 gz) {
+    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, gx), _mm256_mul_ps(ay, gy)), _mm256_mul_ps(az, gz));
+}
+
+// Eight face pairs at a time (facePairScalar's operations); corners: four columns (a, b, c,
+// d) of `stride` each.
+void facePairs8(const int* corners, std::size_t stride, std::size_t begin, std::size_t end, const float* x, float* g4,
+                LaneSums& volume) {
+    LaneRegisters sums(volume);
+    std::size_t k = begin;
+    for (; k + 8 <= end; k += 8) {
+        const int* ia = corners + k;
+        const int* ib = corners + stride + k;
+        const int* ic = corners + 2 * stride + k;
+        const int* id = corners + 3 * stride + k;
+        __m256 ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz;
+        columns8(x, ia, ax, ay, az);
+        columns8(x, ib, bx, by, bz);
+        columns8(x, ic, cx, cy, cz);
+        columns8(x, id, dx, dy, dz);
+        __m256 g1x, g1y, g1z, g2x, g2y, g2z;
+        cross8(_mm256_sub_ps(bx, ax), _mm256_sub_ps(by, ay), _mm256_sub_ps(bz, az), _mm256_sub_ps(cx, ax),
+               _mm256_sub_ps(cy, ay), _mm256_sub_ps(cz, az), g1x, g1y, g1z);
+        cross8(_mm256_sub_ps(ax, bx), _mm256_sub_ps(ay, by), _mm256_sub_ps(az, bz), _mm256_sub_ps(dx, bx),
+               _mm256_sub_ps(dy, by), _mm256_sub_ps(dz, bz), g2x, g2y, g2z);
+        __m128 rows1[8], rows2[8];
+        rows8(g1x, g1y, g1z, rows1);
+        rows8(g2x, g2y, g2z, rows2);
+        for (int j = 0; j < 8; ++j) {
+            const __m128 both = _mm_add_ps(rows1[j], rows2[j]);
+            addRow128(g4, ia[j], both);
+            addRow128(g4, ib[j], both);
+            addRow128(g4, ic[j], rows1[j]);
+            addRow128(g4, id[j], rows2[j]);
+        }
+        sums.add(dot8(ax, ay, az, g1x, g1y, g1z));
+        sums.add(dot8(bx, by, bz, g2x, g2y, g2z));
+    }
+    sums.store(volume);
+    for (; k < end; ++k) facePairScalar(corners, stride, begin, k, x, g4, volume);
+}
+
 #pragma GCC pop_options
 
 bool haveAvx2() { return __builtin_cpu_supports("avx2"); }
@@ -434,6 +504,18 @@ struct LaneRegister16 {
     void add(__m512 v) {
         sum = _mm512_add_pd(sum, _mm512_cvtps_pd(_mm512_castps512_ps256(v)));
         sum = _mm512_add_pd(sum, _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1))));
+    }
+    // Two registers whose element k belong together: lane l takes first[l], second[l], then
+    // first[l + 8], second[l + 8].
+    void addPair(__m512 first, __m512 second) {
+        auto half = [](__m512 v, int h) {
+            return _mm512_cvtps_pd(h == 0 ? _mm512_castps512_ps256(v)
+                                          : _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1)));
+        };
+        sum = _mm512_add_pd(sum, half(first, 0));
+        sum = _mm512_add_pd(sum, half(second, 0));
+        sum = _mm512_add_pd(sum, half(first, 1));
+        sum = _mm512_add_pd(sum, half(second, 1));
     }
     void store(LaneSums& sums) const { _mm512_storeu_pd(sums.lane.data(), sum); }
 };
@@ -584,6 +666,52 @@ void faces16(const std::vector<std::array<int, 3>>& faces, const int* corners, s
     faces8(faces, corners, stride, k, end, x, g4, volume);
 }
 
+[[gnu::always_inline]] inline void cross16(__m512 ex, __m512 ey, __m512 ez, __m512 hx, __m512 hy, __m512 hz, __m512& gx,
+                                           __m512& gy, __m512& gz) {
+    gx = _mm512_sub_ps(_mm512_mul_ps(ey, hz), _mm512_mul_ps(ez, hy));
+    gy = _mm512_sub_ps(_mm512_mul_ps(ez, hx), _mm512_mul_ps(ex, hz));
+    gz = _mm512_sub_ps(_mm512_mul_ps(ex, hy), _mm512_mul_ps(ey, hx));
+}
+[[gnu::always_inline]] inline __m512 dot16(__m512 ax, __m512 ay, __m512 az, __m512 gx, __m512 gy, __m512 gz) {
+    return _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ax, gx), _mm512_mul_ps(ay, gy)), _mm512_mul_ps(az, gz));
+}
+
+// facePairs8, sixteen wide. Lane l of the sums takes pair l's two terms, then pair l + 8's.
+void facePairs16(const int* corners, std::size_t stride, std::size_t begin, std::size_t end, const float* x, float* g4,
+                 LaneSums& volume) {
+    LaneRegister16 sums(volume);
+    std::size_t k = begin;
+    for (; k + 16 <= end; k += 16) {
+        const int* ia = corners + k;
+        const int* ib = corners + stride + k;
+        const int* ic = corners + 2 * stride + k;
+        const int* id = corners + 3 * stride + k;
+        __m512 ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz;
+        columns16(x, ia, ax, ay, az);
+        columns16(x, ib, bx, by, bz);
+        columns16(x, ic, cx, cy, cz);
+        columns16(x, id, dx, dy, dz);
+        __m512 g1x, g1y, g1z, g2x, g2y, g2z;
+        cross16(_mm512_sub_ps(bx, ax), _mm512_sub_ps(by, ay), _mm512_sub_ps(bz, az), _mm512_sub_ps(cx, ax),
+                _mm512_sub_ps(cy, ay), _mm512_sub_ps(cz, az), g1x, g1y, g1z);
+        cross16(_mm512_sub_ps(ax, bx), _mm512_sub_ps(ay, by), _mm512_sub_ps(az, bz), _mm512_sub_ps(dx, bx),
+                _mm512_sub_ps(dy, by), _mm512_sub_ps(dz, bz), g2x, g2y, g2z);
+        __m128 rows1[16], rows2[16];
+        rows16(g1x, g1y, g1z, rows1);
+        rows16(g2x, g2y, g2z, rows2);
+        for (int j = 0; j < 16; ++j) {
+            const __m128 both = _mm_add_ps(rows1[j], rows2[j]);
+            addRow128(g4, ia[j], both);
+            addRow128(g4, ib[j], both);
+            addRow128(g4, ic[j], rows1[j]);
+            addRow128(g4, id[j], rows2[j]);
+        }
+        sums.addPair(dot16(ax, ay, az, g1x, g1y, g1z), dot16(bx, by, bz, g2x, g2y, g2z));
+    }
+    sums.store(volume);
+    facePairs8(corners, stride, k, end, x, g4, volume);
+}
+
 #pragma GCC pop_options
 #endif
 
@@ -595,6 +723,7 @@ struct Chunk {
     std::vector<std::array<int, 3>> faces;                          // slot 0's first
     std::size_t slotStart = 0;                                      // the first face of slot 1
     std::vector<int> faceCorners;                                   // three columns
+    std::array<std::vector<int>, 2> pairCorners;                    // per slot: face pairs, four columns
     std::vector<std::pair<int, int>> owned;                         // particle ranges [begin, end)
     LaneSums power;
     std::array<LaneSums, 2> volume;
@@ -701,6 +830,16 @@ struct FloatSimulation::Impl {
         float* g4 = gradient4.data();
         const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
         for (std::size_t slot = 0; slot < 2; ++slot) {
+            const std::vector<int>& pairs = c.pairCorners[slot];
+            const std::size_t pairCount = pairs.size() / 4;
+#ifdef SIMCORE_FLOAT_AVX512
+            if (simd == kernels::KernelSet::Avx512)
+                facePairs16(pairs.data(), pairCount, 0, pairCount, px, g4, c.volume[slot]);
+            else if (simd == kernels::KernelSet::Avx2)
+                facePairs8(pairs.data(), pairCount, 0, pairCount, px, g4, c.volume[slot]);
+            else
+#endif
+                for (std::size_t k = 0; k < pairCount; ++k) facePairScalar(pairs.data(), pairCount, 0, k, px, g4, c.volume[slot]);
 #ifdef SIMCORE_FLOAT_AVX512
             if (simd == kernels::KernelSet::Avx512 && dimension == 3) {
                 faces16(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
@@ -1109,6 +1248,52 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
                 }
             }
         }
+        // 3D: faces sharing an edge go in pairs (a, b, c) and (b, a, d), found greedily within
+        // each chunk and slot (on the level-6 sphere all but a few); the rest stay single.
+        if (s.dimension == 3)
+            for (Chunk& c : s.chunks) {
+                std::vector<std::array<int, 3>> single;
+                std::size_t singleSlotStart = 0;
+                const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
+                for (std::size_t slot = 0; slot < 2; ++slot) {
+                    if (slot == 1) singleSlotStart = single.size();
+                    std::unordered_map<std::uint64_t, std::size_t> byEdge;  // directed edge -> face
+                    auto edgeKey = [](int u, int w) {
+                        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(w);
+                    };
+                    for (std::size_t f = cut[slot]; f < cut[slot + 1]; ++f)
+                        for (std::size_t e = 0; e < 3; ++e) byEdge.emplace(edgeKey(c.faces[f][e], c.faces[f][(e + 1) % 3]), f);
+                    std::vector<bool> matched(c.faces.size(), false);
+                    std::vector<std::array<int, 4>> pairs;
+                    for (std::size_t f = cut[slot]; f < cut[slot + 1]; ++f) {
+                        if (matched[f]) continue;
+                        for (std::size_t e = 0; e < 3 && !matched[f]; ++e) {
+                            const int u = c.faces[f][e], w = c.faces[f][(e + 1) % 3];
+                            const auto other = byEdge.find(edgeKey(w, u));
+                            if (other == byEdge.end() || other->second == f || matched[other->second]) continue;
+                            const auto& g = c.faces[other->second];
+                            int d = g[0];
+                            for (int corner : g)
+                                if (corner != u && corner != w) d = corner;
+                            pairs.push_back({u, w, c.faces[f][(e + 2) % 3], d});
+                            matched[f] = matched[other->second] = true;
+                        }
+                        if (!matched[f]) single.push_back(c.faces[f]);
+                    }
+                    // Strided blocks, as the faces below.
+                    std::vector<std::array<int, 4>> order;
+                    std::size_t block = 0;
+                    for (; block + kStridedBlock <= pairs.size(); block += kStridedBlock)
+                        for (std::size_t r = 0; r < kStride; ++r)
+                            for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) order.push_back(pairs[block + q * kStride + r]);
+                    for (; block < pairs.size(); ++block) order.push_back(pairs[block]);
+                    c.pairCorners[slot].resize(4 * order.size());
+                    for (std::size_t k = 0; k < order.size(); ++k)
+                        for (std::size_t corner = 0; corner < 4; ++corner) c.pairCorners[slot][corner * order.size() + k] = order[k][corner];
+                }
+                c.faces = std::move(single);
+                c.slotStart = singleSlotStart;
+            }
         for (Chunk& c : s.chunks) {
             // The faces of each slot in strided blocks, as the springs below (consecutive faces
             // share corners).
