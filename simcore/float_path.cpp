@@ -866,14 +866,7 @@ struct FloatSimulation::Impl {
         const int owners = static_cast<int>(chunks.size()) - 1;
         auto task = [&](int t) {
             Chunk& c = chunks[static_cast<std::size_t>(t)];
-            float* f4 = force4.data();
-            float* g4 = gradient4.data();
-            for (auto [begin, end] : c.owned)
-                for (int i = begin; i < end; ++i) {
-                    pending(i);
-                    setRow(f4, i, F4{});
-                    if (gas) setRow(g4, i, F4{});
-                }
+            for (auto [begin, end] : c.owned) pending(begin, end);
             accumulate(c, px, pv);
         };
         run(owners, task);
@@ -893,26 +886,52 @@ struct FloatSimulation::Impl {
     }
 
     // Pass 3: the force on particle i (its weight, its springs, its gas), times its inverse mass.
-    F4 acceleration(int i) const {
-        const auto k = static_cast<std::size_t>(i);
-        F4 f = F4{0.0f, weightY[k], 0.0f, 0.0f} + row(force4.data(), i);
-        if (gas) f += splat(pressureScaled[particleSlot[k]]) * row(gradient4.data(), i);
-        // (f * m^-1) * 1 is f * m^-1, and (f * m^-1) * 0 the signed zero f * 0 gives: the
-        // same bits as a row of m^-1 with 0 on the absent axes.
-        return (f * splat(invMass[k])) * axes;
+    // The accelerations of the last evaluation, with what they need in locals (the update
+    // loops then keep them in registers: a store to a row could otherwise alias any of them);
+    // each particle's force and gradient rows are cleared once read, so they are zero between
+    // evaluations and between steps.
+    struct Accelerations {
+        float* f4;
+        float* g4;
+        const float* weightY;
+        const float* invMass;
+        const std::uint8_t* slot;
+        std::array<float, 2> pressure;
+        bool gas;
+        F4 axes;
+        F4 take(int i) const {
+            const auto k = static_cast<std::size_t>(i);
+            F4 f = F4{0.0f, weightY[k], 0.0f, 0.0f} + row(f4, i);
+            setRow(f4, i, F4{});
+            if (gas) {
+                f += splat(pressure[slot[k]]) * row(g4, i);
+                setRow(g4, i, F4{});
+            }
+            // (f * m^-1) * 1 is f * m^-1, and (f * m^-1) * 0 the signed zero f * 0 gives: the
+            // same bits as a row of m^-1 with 0 on the absent axes.
+            return (f * splat(invMass[k])) * axes;
+        }
+    };
+    Accelerations accelerations() {
+        return {force4.data(), gradient4.data(), weightY.data(), invMass.data(), particleSlot.data(), pressureScaled, gas, axes};
     }
 
-    // The evaluation's stage update as a pending update of particle i: update(i, v_i, a_i),
-    // with v_i the row of the evaluation's velocities pv and a_i from its forces.
+    // The evaluation's stage update as a pending update of particles [begin, end):
+    // update(i, v_i, a_i), with v_i the row of the evaluation's velocities pv and a_i from its
+    // forces. The update (a lambda capturing by value) is copied to a local for the loop.
     template <class Update>
-    auto stage(const float* pv, Update& update) {
-        return [this, pv, &update](int i) { update(i, row(pv, i), acceleration(i)); };
+    auto stage(const float* pv, const Update& update) {
+        return [this, pv, &update](int begin, int end) {
+            const Accelerations acc = accelerations();
+            const Update local = update;
+            for (int i = begin; i < end; ++i) local(i, row(pv, i), acc.take(i));
+        };
     }
 
     // One evaluation at (px, pv) whose stage update runs with the next pass (the next
     // evaluation's chunk pass, or finish): returns that update.
     template <class Pending, class Update>
-    auto evaluate(const float* px, const float* pv, Pending&& pending, Update& update) {
+    auto evaluate(const float* px, const float* pv, Pending&& pending, const Update& update) {
         springsAndFaces(px, pv, pending);
         return stage(pv, update);
     }
@@ -925,7 +944,7 @@ struct FloatSimulation::Impl {
         const int pieces = std::min<int>(particleTasks(), static_cast<int>(pieceOk.size()));
         auto task = [&](int t) {
             const int per = (n + pieces - 1) / pieces, begin = t * per, end = std::min(n, begin + per);
-            for (int i = begin; i < end; ++i) pending(i);
+            pending(begin, end);
             pieceOk[static_cast<std::size_t>(t)] = sound(begin, end) ? 1 : 0;
         };
         run(pieces, task);
@@ -936,16 +955,16 @@ struct FloatSimulation::Impl {
     void step(std::string_view integrator, float h, double hd) {
         float* X = x.data();
         float* V = v.data();
-        const auto none = [](int) {};
+        const auto none = [](int, int) {};  // the rows are clear at the start of a step
         if (integrator == "euler") {
-            auto update = [&](int i, F4 vi, F4 ai) {
+            auto update = [=](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi);
                 setRow(V, i, vi + splat(h) * ai);
             };
             finish(evaluate(X, V, none, update));
             removed += hd * stagePower;
         } else if (integrator == "symplectic-euler") {
-            auto update = [&](int i, F4 vi, F4 ai) {
+            auto update = [=](int i, F4 vi, F4 ai) {
                 const F4 vn = vi + splat(h) * ai;
                 setRow(V, i, vn);
                 setRow(X, i, row(X, i) + splat(h) * vn);
@@ -954,11 +973,11 @@ struct FloatSimulation::Impl {
             removed += hd * stagePower;
         } else if (integrator == "verlet") {
             const float half = 0.5f * h, hh = 0.5f * h * h;
-            auto first = [&](int i, F4 vi, F4 ai) {
+            auto first = [=](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi + splat(hh) * ai);
                 setRow(V, i, vi + splat(half) * ai);
             };
-            auto second = [&](int i, F4 vi, F4 ai) { setRow(V, i, vi + splat(half) * ai); };
+            auto second = [=](int i, F4 vi, F4 ai) { setRow(V, i, vi + splat(half) * ai); };
             auto pending = evaluate(X, V, none, first);
             const double p1 = stagePower;
             finish(evaluate(X, V, pending, second));
@@ -967,11 +986,11 @@ struct FloatSimulation::Impl {
             float* XT = xt.data();
             float* VT = vt.data();
             const float half = 0.5f * h;
-            auto first = [&](int i, F4 vi, F4 ai) {
+            auto first = [=](int i, F4 vi, F4 ai) {
                 setRow(XT, i, row(X, i) + splat(half) * vi);
                 setRow(VT, i, vi + splat(half) * ai);
             };
-            auto second = [&](int i, F4 vi, F4 ai) {
+            auto second = [=](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi);
                 setRow(V, i, row(V, i) + splat(h) * ai);
             };
@@ -984,7 +1003,7 @@ struct FloatSimulation::Impl {
             float* XA = xa.data();
             float* VA = va.data();
             const float sixth = h / 6.0f, third = h / 3.0f, half = 0.5f * h;
-            auto first = [&](int i, F4 vi, F4 ai) {
+            auto first = [=](int i, F4 vi, F4 ai) {
                 const F4 xi = row(X, i);
                 setRow(XA, i, xi + splat(sixth) * vi);
                 setRow(VA, i, vi + splat(sixth) * ai);
@@ -992,7 +1011,7 @@ struct FloatSimulation::Impl {
                 setRow(VT, i, vi + splat(half) * ai);
             };
             auto middle = [&](float c) {
-                return [&, c](int i, F4 vi, F4 ai) {
+                return [=](int i, F4 vi, F4 ai) {
                     setRow(XA, i, row(XA, i) + splat(third) * vi);
                     setRow(VA, i, row(VA, i) + splat(third) * ai);
                     setRow(XT, i, row(X, i) + splat(c) * vi);
@@ -1000,7 +1019,7 @@ struct FloatSimulation::Impl {
                 };
             };
             auto second = middle(half), third_ = middle(h);
-            auto last = [&](int i, F4 vi, F4 ai) {
+            auto last = [=](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(XA, i) + splat(sixth) * vi);
                 setRow(V, i, row(VA, i) + splat(sixth) * ai);
             };
