@@ -10,15 +10,17 @@
 //     (= x_a.(x_b x x_c); 2D: the shoelace term) are summed in double lanes;
 //  2. (the caller) the shared springs and faces, then volumes and pressures from the sums, in
 //     chunk order;
-//  3. particles, in blocks: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the
-//     integrator's update of the particle's own rows.
+//  3. particles: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the integrator's
+//     update of the particle's own rows; each chunk runs it on its own particles at the start
+//     of the next evaluation's pass 1, the step's last one runs with the state check.
 // Positions, velocities and forces are padded rows (x, y, z, 0) of 16 bytes, so that a
-// particle is one 128-bit load. With AVX2 springs and faces go eight at a time: the rows of
-// eight particles are transposed to columns in registers, the arithmetic runs eight wide,
-// operation for operation as the scalar code (no fused multiply-add: simcore builds with
-// -ffp-contract=off), and the results are added to the rows one spring or face at a time in
-// order, so that both give the same bits, and so do 1 and 2 threads (the split depends on the
-// body only).
+// particle is one 128-bit load. With AVX2 springs, faces and face pairs go eight at a time
+// (two edge quads), with AVX-512 sixteen (four quads): the rows are transposed to columns in
+// registers, the arithmetic runs eight or sixteen wide, operation for operation as the scalar
+// code (no fused multiply-add: simcore builds with -ffp-contract=off), and the results are
+// added to the rows one spring or face at a time in order, so that every set gives the same
+// bits, and so do 1 and 2 threads (the split depends on the body only). The wide kernels are
+// one body for both widths (simcore/internal/float_kernels_body.h).
 #include "simcore/float_path.h"
 
 #include <algorithm>
@@ -39,7 +41,6 @@
 // (ELASTIC_LAB_PORTABLE_KERNELS: no x86 intrinsics, as for another architecture).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(ELASTIC_LAB_PORTABLE_KERNELS)
 #define SIMCORE_FLOAT_AVX2 1
-#define SIMCORE_FLOAT_AVX512 1
 // GCC 12 warns inside its own AVX-512 intrinsics (_mm512_undefined_ps, GCC bug 105593), as in
 // force_kernels.cpp.
 #pragma GCC diagnostic push
@@ -195,524 +196,26 @@ inline void facePairScalar(const int* corners, std::size_t stride, std::size_t b
 }
 
 #ifdef SIMCORE_FLOAT_AVX2
+// The wide kernels, one body for both widths (simcore/internal/float_kernels_body.h).
 #pragma GCC push_options
 #pragma GCC target("avx2")
-// The x, y, z columns of eight particles' rows (rows idx[0..7] of p).
-[[gnu::always_inline]] inline void columns8(const float* p, const int* idx, __m256& cx,
-                                                                  __m256& cy, __m256& cz) {
-    auto pair = [&](int k) __attribute__((always_inline)) {
-        return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k]))),
-                                    _mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k + 4])), 1);
-    };
-    const __m256 r0 = pair(0), r1 = pair(1), r2 = pair(2), r3 = pair(3);
-    const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
-    const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
-    cx = _mm256_shuffle_ps(t0, t2, 0x44);
-    cy = _mm256_shuffle_ps(t0, t2, 0xEE);
-    cz = _mm256_shuffle_ps(t1, t3, 0x44);
-}
+namespace avx2 {
+#define SIMCORE_FLOAT_WIDTH 8
+#include "simcore/internal/float_kernels_body.h"
+#undef SIMCORE_FLOAT_WIDTH
+}  // namespace avx2
+#pragma GCC pop_options
 
-// Eight rows (x, y, z, 0) from three columns: rows[j] is lane j's.
-[[gnu::always_inline]] inline void rows8(__m256 cx, __m256 cy, __m256 cz, __m128* rows) {
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 t0 = _mm256_unpacklo_ps(cx, cy), t1 = _mm256_unpackhi_ps(cx, cy);
-    const __m256 t2 = _mm256_unpacklo_ps(cz, zero), t3 = _mm256_unpackhi_ps(cz, zero);
-    const __m256 r0 = _mm256_shuffle_ps(t0, t2, 0x44), r1 = _mm256_shuffle_ps(t0, t2, 0xEE);
-    const __m256 r2 = _mm256_shuffle_ps(t1, t3, 0x44), r3 = _mm256_shuffle_ps(t1, t3, 0xEE);
-    rows[0] = _mm256_castps256_ps128(r0);
-    rows[1] = _mm256_castps256_ps128(r1);
-    rows[2] = _mm256_castps256_ps128(r2);
-    rows[3] = _mm256_castps256_ps128(r3);
-    rows[4] = _mm256_extractf128_ps(r0, 1);
-    rows[5] = _mm256_extractf128_ps(r1, 1);
-    rows[6] = _mm256_extractf128_ps(r2, 1);
-    rows[7] = _mm256_extractf128_ps(r3, 1);
-}
-
-[[gnu::always_inline]] inline void addRow128(float* f4, int i, __m128 r) {
-    float* p = f4 + 4 * static_cast<std::ptrdiff_t>(i);
-    _mm_storeu_ps(p, _mm_add_ps(_mm_loadu_ps(p), r));
-}
-[[gnu::always_inline]] inline void subRow128(float* f4, int i, __m128 r) {
-    float* p = f4 + 4 * static_cast<std::ptrdiff_t>(i);
-    _mm_storeu_ps(p, _mm_sub_ps(_mm_loadu_ps(p), r));
-}
-
-// Eight double lanes in two registers, loaded from and stored back to LaneSums: lane l adds
-// its elements in the same order as the scalar code.
-struct LaneRegisters {
-    __m256d lo, hi;
-    explicit LaneRegisters(const LaneSums& sums)
-        : lo(_mm256_loadu_pd(sums.lane.data())), hi(_mm256_loadu_pd(sums.lane.data() + 4)) {}
-    void add(__m256 v) {
-        lo = _mm256_add_pd(lo, _mm256_cvtps_pd(_mm256_castps256_ps128(v)));
-        hi = _mm256_add_pd(hi, _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1)));
-    }
-    void store(LaneSums& sums) const {
-        _mm256_storeu_pd(sums.lane.data(), lo);
-        _mm256_storeu_pd(sums.lane.data() + 4, hi);
-    }
-};
-
-// Eight springs' forces (masked to 0 where degenerate) and damping powers from their end
-// differences d (positions) and w (velocities): springForce's operations.
-struct Springs8 {
-    __m256 fx, fy, fz, power;
-};
-[[gnu::always_inline]] inline Springs8 springForces8(__m256 dx, __m256 dy, __m256 dz, __m256 wx, __m256 wy, __m256 wz,
-                                                     __m256 stiffness, __m256 damping, __m256 rest) {
-    const __m256 len2 =
-        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
-    const __m256 len = _mm256_sqrt_ps(len2);
-    const __m256 inv = _mm256_mul_ps(len, _mm256_div_ps(_mm256_set1_ps(1.0f), len2));
-    const __m256 dvu = _mm256_mul_ps(
-        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, dx), _mm256_mul_ps(wy, dy)), _mm256_mul_ps(wz, dz)), inv);
-    const __m256 ok = _mm256_cmp_ps(len, _mm256_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
-    const __m256 scale = _mm256_mul_ps(
-        _mm256_add_ps(_mm256_mul_ps(stiffness, _mm256_sub_ps(len, rest)), _mm256_mul_ps(damping, dvu)), inv);
-    return {_mm256_and_ps(ok, _mm256_mul_ps(scale, dx)), _mm256_and_ps(ok, _mm256_mul_ps(scale, dy)),
-            _mm256_and_ps(ok, _mm256_mul_ps(scale, dz)), _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(damping, dvu), dvu))};
-}
-
-void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float stiffnessScalar, float dampingScalar,
-              const float* x, const float* v, float* f4, LaneSums& power) {
-    const __m256 stiffness = _mm256_set1_ps(stiffnessScalar), damping = _mm256_set1_ps(dampingScalar);
-    LaneRegisters sums(power);
-    std::size_t k = begin;
-    for (; k + 8 <= end; k += 8) {
-        const int* ia = s.a.data() + k;
-        const int* ib = s.b.data() + k;
-        __m256 xax, xay, xaz, xbx, xby, xbz, vax, vay, vaz, vbx, vby, vbz;
-        columns8(x, ia, xax, xay, xaz);
-        columns8(x, ib, xbx, xby, xbz);
-        columns8(v, ia, vax, vay, vaz);
-        columns8(v, ib, vbx, vby, vbz);
-        const __m256 dx = _mm256_sub_ps(xbx, xax), dy = _mm256_sub_ps(xby, xay), dz = _mm256_sub_ps(xbz, xaz);
-        const __m256 wx = _mm256_sub_ps(vbx, vax), wy = _mm256_sub_ps(vby, vay), wz = _mm256_sub_ps(vbz, vaz);
-        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm256_loadu_ps(s.rest.data() + k));
-        __m128 rows[8];
-        rows8(f.fx, f.fy, f.fz, rows);
-        for (int j = 0; j < 8; ++j) {
-            addRow128(f4, ia[j], rows[j]);
-            subRow128(f4, ib[j], rows[j]);
-        }
-        sums.add(f.power);
-    }
-    sums.store(power);
-    for (; k < end; ++k) springScalar(s, begin, k, stiffnessScalar, dampingScalar, x, v, f4, power);
-}
-
-// Two quads at a time: lanes 0-3 the first quad's springs, 4-7 the second's.
-void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, const std::array<float, 4>& stiffness4,
-            const std::array<float, 4>& damping4, const float* x, const float* v, float* f4, LaneSums& power) {
-    const __m256 stiffness = _mm256_setr_ps(stiffness4[0], stiffness4[1], stiffness4[2], stiffness4[3], stiffness4[0], stiffness4[1], stiffness4[2], stiffness4[3]);
-    const __m256 damping = _mm256_setr_ps(damping4[0], damping4[1], damping4[2], damping4[3], damping4[0], damping4[1], damping4[2], damping4[3]);
-    // Lane 0 and 3 of each half subtract (a: F0 - F3, B: F3 - F1): x - y is x + (-y) exactly.
-    const __m256 flip = _mm256_castsi256_ps(_mm256_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN));
-    LaneRegisters sums(power);
-    // One group: quads q and q + 1; their particles in ids, their four row updates each in
-    // rows (a, b, A, B per quad).
-    struct Group {
-        int ids[8];
-        __m128 rows[8];
-        __m256 power;
-    };
-    auto compute = [&](std::size_t q, Group& g) __attribute__((always_inline)) {
-        const int at[8] = {quads.a[q], quads.b[q], quads.a[q] + n, quads.b[q] + n,
-                           quads.a[q + 1], quads.b[q + 1], quads.a[q + 1] + n, quads.b[q + 1] + n};
-        std::copy(at, at + 8, g.ids);
-        // Columns (a, b, A, B | a', b', A', B') of x and v.
-        __m256 X, Y, Z, VX, VY, VZ;
-        columns8(x, g.ids, X, Y, Z);
-        columns8(v, g.ids, VX, VY, VZ);
-        // First ends (a, A, A, B) = columns (0, 2, 2, 3); second ends (b, B, b, a) = (1, 3, 1, 0).
-        const __m256 dx = _mm256_sub_ps(_mm256_permute_ps(X, 0x1D), _mm256_permute_ps(X, 0xE8));
-        const __m256 dy = _mm256_sub_ps(_mm256_permute_ps(Y, 0x1D), _mm256_permute_ps(Y, 0xE8));
-        const __m256 dz = _mm256_sub_ps(_mm256_permute_ps(Z, 0x1D), _mm256_permute_ps(Z, 0xE8));
-        const __m256 wx = _mm256_sub_ps(_mm256_permute_ps(VX, 0x1D), _mm256_permute_ps(VX, 0xE8));
-        const __m256 wy = _mm256_sub_ps(_mm256_permute_ps(VY, 0x1D), _mm256_permute_ps(VY, 0xE8));
-        const __m256 wz = _mm256_sub_ps(_mm256_permute_ps(VZ, 0x1D), _mm256_permute_ps(VZ, 0xE8));
-        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm256_loadu_ps(quads.rest.data() + 4 * q));
-        // Per lane (a, b, A, B): F0 + (-F3), F0 + F2, F1 + F2, F3 + (-F1): (0, 0, 1, 3) + (3, 2, 2, 1).
-        auto rowsOf = [&](__m256 column) __attribute__((always_inline)) {
-            return _mm256_add_ps(_mm256_permute_ps(column, 0xD0), _mm256_xor_ps(_mm256_permute_ps(column, 0x6B), flip));
-        };
-        rows8(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), g.rows);
-        g.power = f.power;
-    };
-    auto apply = [&](const Group& g) __attribute__((always_inline)) {
-        for (int j = 0; j < 2; ++j) {
-            addRow128(f4, g.ids[4 * j], g.rows[4 * j]);
-            subRow128(f4, g.ids[4 * j + 1], g.rows[4 * j + 1]);
-            addRow128(f4, g.ids[4 * j + 2], g.rows[4 * j + 2]);
-            addRow128(f4, g.ids[4 * j + 3], g.rows[4 * j + 3]);
-        }
-        sums.add(g.power);
-    };
-    // Two groups per iteration, both computed before either is added, so that the core
-    // overlaps their square root and division chains (as the double path's kernels); the rows
-    // are still updated quad by quad in order.
-    std::size_t q = begin;
-    Group g1, g2;
-    for (; q + 4 <= end; q += 4) {
-        compute(q, g1);
-        compute(q + 2, g2);
-        apply(g1);
-        apply(g2);
-    }
-    for (; q + 2 <= end; q += 2) {
-        compute(q, g1);
-        apply(g1);
-    }
-    sums.store(power);
-    for (; q < end; ++q) quadScalar(quads, begin, q, n, stiffness4, damping4, x, v, f4, power);
-}
-
-// corners: the faces' corner indices as three columns (a, b, c) of `stride` each.
-void faces8(const std::vector<std::array<int, 3>>& faces, const int* corners, std::size_t stride, std::size_t begin,
-            std::size_t end, const float* x, float* g4, LaneSums& volume) {
-    LaneRegisters sums(volume);
-    std::size_t k = begin;
-    for (; k + 8 <= end; k += 8) {
-        const int* ia = corners + k;
-        const int* ib = corners + stride + k;
-        const int* ic = corners + 2 * stride + k;
-        __m256 ax, ay, az, bx, by, bz, cx, cy, cz;
-        columns8(x, ia, ax, ay, az);
-        columns8(x, ib, bx, by, bz);
-        columns8(x, ic, cx, cy, cz);
-        const __m256 ex = _mm256_sub_ps(bx, ax), ey = _mm256_sub_ps(by, ay), ez = _mm256_sub_ps(bz, az);
-        const __m256 hx = _mm256_sub_ps(cx, ax), hy = _mm256_sub_ps(cy, ay), hz = _mm256_sub_ps(cz, az);
-        const __m256 gx = _mm256_sub_ps(_mm256_mul_ps(ey, hz), _mm256_mul_ps(ez, hy));
-        const __m256 gy = _mm256_sub_ps(_mm256_mul_ps(ez, hx), _mm256_mul_ps(ex, hz));
-        const __m256 gz = _mm256_sub_ps(_mm256_mul_ps(ex, hy), _mm256_mul_ps(ey, hx));
-        const __m256 term =
-            _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, gx), _mm256_mul_ps(ay, gy)), _mm256_mul_ps(az, gz));
-        __m128 rows[8];
-        rows8(gx, gy, gz, rows);
-        for (int j = 0; j < 8; ++j) {
-            addRow128(g4, ia[j], rows[j]);
-            addRow128(g4, ib[j], rows[j]);
-            addRow128(g4, ic[j], rows[j]);
-        }
-        sums.add(term);
-    }
-    sums.store(volume);
-    for (; k < end; ++k) faceScalar(faces, 3, begin, k, x, g4, volume);
-}
-
-// The cross products of eight pairs of columns: (e x h) per lane.
-[[gnu::always_inline]] inline void cross8(__m256 ex, __m256 ey, __m256 ez, __m256 hx, __m256 hy, __m256 hz, __m256& gx,
-                                          __m256& gy, __m256& gz) {
-    gx = _mm256_sub_ps(_mm256_mul_ps(ey, hz), _mm256_mul_ps(ez, hy));
-    gy = _mm256_sub_ps(_mm256_mul_ps(ez, hx), _mm256_mul_ps(ex, hz));
-    gz = _mm256_sub_ps(_mm256_mul_ps(ex, hy), _mm256_mul_ps(ey, hx));
-}
-[[gnu::always_inline]] inline __m256 dot8(__m256 ax, __m256 ay, __m256 az, __m256 gx, __m256 gy, __m256 gz) {
-    return _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, gx), _mm256_mul_ps(ay, gy)), _mm256_mul_ps(az, gz));
-}
-
-// Eight face pairs at a time (facePairScalar's operations); corners: four columns (a, b, c,
-// d) of `stride` each.
-void facePairs8(const int* corners, std::size_t stride, std::size_t begin, std::size_t end, const float* x, float* g4,
-                LaneSums& volume) {
-    LaneRegisters sums(volume);
-    std::size_t k = begin;
-    for (; k + 8 <= end; k += 8) {
-        const int* ia = corners + k;
-        const int* ib = corners + stride + k;
-        const int* ic = corners + 2 * stride + k;
-        const int* id = corners + 3 * stride + k;
-        __m256 ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz;
-        columns8(x, ia, ax, ay, az);
-        columns8(x, ib, bx, by, bz);
-        columns8(x, ic, cx, cy, cz);
-        columns8(x, id, dx, dy, dz);
-        __m256 g1x, g1y, g1z, g2x, g2y, g2z;
-        cross8(_mm256_sub_ps(bx, ax), _mm256_sub_ps(by, ay), _mm256_sub_ps(bz, az), _mm256_sub_ps(cx, ax),
-               _mm256_sub_ps(cy, ay), _mm256_sub_ps(cz, az), g1x, g1y, g1z);
-        cross8(_mm256_sub_ps(ax, bx), _mm256_sub_ps(ay, by), _mm256_sub_ps(az, bz), _mm256_sub_ps(dx, bx),
-               _mm256_sub_ps(dy, by), _mm256_sub_ps(dz, bz), g2x, g2y, g2z);
-        __m128 rows1[8], rows2[8];
-        rows8(g1x, g1y, g1z, rows1);
-        rows8(g2x, g2y, g2z, rows2);
-        for (int j = 0; j < 8; ++j) {
-            const __m128 both = _mm_add_ps(rows1[j], rows2[j]);
-            addRow128(g4, ia[j], both);
-            addRow128(g4, ib[j], both);
-            addRow128(g4, ic[j], rows1[j]);
-            addRow128(g4, id[j], rows2[j]);
-        }
-        sums.add(dot8(ax, ay, az, g1x, g1y, g1z));
-        sums.add(dot8(bx, by, bz, g2x, g2y, g2z));
-    }
-    sums.store(volume);
-    for (; k < end; ++k) facePairScalar(corners, stride, begin, k, x, g4, volume);
-}
-
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx2")
+namespace avx512 {
+#define SIMCORE_FLOAT_WIDTH 16
+#include "simcore/internal/float_kernels_body.h"
+#undef SIMCORE_FLOAT_WIDTH
+}  // namespace avx512
 #pragma GCC pop_options
 
 bool haveAvx2() { return __builtin_cpu_supports("avx2"); }
-#endif
-
-#ifdef SIMCORE_FLOAT_AVX512
-// The AVX-512 copy (16 lanes: four quads, sixteen springs or sixteen faces per register): the
-// AVX2 code's operations, lane for lane, on registers twice as wide; the 128-bit lanes hold
-// what one quad or four rows need, so the in-lane shuffles are the AVX2 code's. The results are
-// added to the rows in the scalar code's order, and the lane sums (eight double lanes, one
-// register) see their elements in the scalar order: element k of a block of 16 goes to lane
-// k % 8, the first eight before the last eight.
-#pragma GCC push_options
-#pragma GCC target("avx512f,avx2")
-// The x, y, z columns of sixteen particles' rows (rows idx[0..15] of p): 128-bit lane j of
-// register k holds row 4 j + k, then the AVX2 transposition runs in each 128-bit lane.
-[[gnu::always_inline]] inline void columns16(const float* p, const int* idx, __m512& cx, __m512& cy, __m512& cz) {
-    auto four = [&](int k) __attribute__((always_inline)) {
-        auto at = [&](int j) __attribute__((always_inline)) { return _mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[4 * j + k])); };
-        __m512 r = _mm512_castps128_ps512(at(0));
-        r = _mm512_insertf32x4(r, at(1), 1);
-        r = _mm512_insertf32x4(r, at(2), 2);
-        return _mm512_insertf32x4(r, at(3), 3);
-    };
-    const __m512 r0 = four(0), r1 = four(1), r2 = four(2), r3 = four(3);
-    const __m512 t0 = _mm512_unpacklo_ps(r0, r1), t1 = _mm512_unpackhi_ps(r0, r1);
-    const __m512 t2 = _mm512_unpacklo_ps(r2, r3), t3 = _mm512_unpackhi_ps(r2, r3);
-    cx = _mm512_shuffle_ps(t0, t2, 0x44);
-    cy = _mm512_shuffle_ps(t0, t2, 0xEE);
-    cz = _mm512_shuffle_ps(t1, t3, 0x44);
-}
-
-// Sixteen rows (x, y, z, 0) from three columns: rows[j] is lane j's.
-[[gnu::always_inline]] inline void rows16(__m512 cx, __m512 cy, __m512 cz, __m128* rows) {
-    const __m512 zero = _mm512_setzero_ps();
-    const __m512 t0 = _mm512_unpacklo_ps(cx, cy), t1 = _mm512_unpackhi_ps(cx, cy);
-    const __m512 t2 = _mm512_unpacklo_ps(cz, zero), t3 = _mm512_unpackhi_ps(cz, zero);
-    const __m512 r[4] = {_mm512_shuffle_ps(t0, t2, 0x44), _mm512_shuffle_ps(t0, t2, 0xEE), _mm512_shuffle_ps(t1, t3, 0x44),
-                         _mm512_shuffle_ps(t1, t3, 0xEE)};
-    for (int k = 0; k < 4; ++k) {
-        rows[k] = _mm512_castps512_ps128(r[k]);
-        rows[4 + k] = _mm512_extractf32x4_ps(r[k], 1);
-        rows[8 + k] = _mm512_extractf32x4_ps(r[k], 2);
-        rows[12 + k] = _mm512_extractf32x4_ps(r[k], 3);
-    }
-}
-
-// The eight double lanes in one register.
-struct LaneRegister16 {
-    __m512d sum;
-    explicit LaneRegister16(const LaneSums& sums) : sum(_mm512_loadu_pd(sums.lane.data())) {}
-    void add(__m512 v) {
-        sum = _mm512_add_pd(sum, _mm512_cvtps_pd(_mm512_castps512_ps256(v)));
-        sum = _mm512_add_pd(sum, _mm512_cvtps_pd(_mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1))));
-    }
-    // Two registers whose element k belong together: lane l takes first[l], second[l], then
-    // first[l + 8], second[l + 8].
-    void addPair(__m512 first, __m512 second) {
-        auto half = [](__m512 v, int h) {
-            return _mm512_cvtps_pd(h == 0 ? _mm512_castps512_ps256(v)
-                                          : _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(v), 1)));
-        };
-        sum = _mm512_add_pd(sum, half(first, 0));
-        sum = _mm512_add_pd(sum, half(second, 0));
-        sum = _mm512_add_pd(sum, half(first, 1));
-        sum = _mm512_add_pd(sum, half(second, 1));
-    }
-    void store(LaneSums& sums) const { _mm512_storeu_pd(sums.lane.data(), sum); }
-};
-
-// springForces8, sixteen wide.
-struct Springs16 {
-    __m512 fx, fy, fz, power;
-};
-[[gnu::always_inline]] inline Springs16 springForces16(__m512 dx, __m512 dy, __m512 dz, __m512 wx, __m512 wy, __m512 wz,
-                                                       __m512 stiffness, __m512 damping, __m512 rest) {
-    const __m512 len2 =
-        _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)), _mm512_mul_ps(dz, dz));
-    const __m512 len = _mm512_sqrt_ps(len2);
-    const __m512 inv = _mm512_mul_ps(len, _mm512_div_ps(_mm512_set1_ps(1.0f), len2));
-    const __m512 dvu = _mm512_mul_ps(
-        _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(wx, dx), _mm512_mul_ps(wy, dy)), _mm512_mul_ps(wz, dz)), inv);
-    const __mmask16 ok = _mm512_cmp_ps_mask(len, _mm512_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
-    const __m512 scale = _mm512_mul_ps(
-        _mm512_add_ps(_mm512_mul_ps(stiffness, _mm512_sub_ps(len, rest)), _mm512_mul_ps(damping, dvu)), inv);
-    return {_mm512_maskz_mov_ps(ok, _mm512_mul_ps(scale, dx)), _mm512_maskz_mov_ps(ok, _mm512_mul_ps(scale, dy)),
-            _mm512_maskz_mov_ps(ok, _mm512_mul_ps(scale, dz)),
-            _mm512_maskz_mov_ps(ok, _mm512_mul_ps(_mm512_mul_ps(damping, dvu), dvu))};
-}
-
-void springs16(const SpringArrays& s, std::size_t begin, std::size_t end, float stiffnessScalar, float dampingScalar,
-               const float* x, const float* v, float* f4, LaneSums& power) {
-    const __m512 stiffness = _mm512_set1_ps(stiffnessScalar), damping = _mm512_set1_ps(dampingScalar);
-    LaneRegister16 sums(power);
-    std::size_t k = begin;
-    for (; k + 16 <= end; k += 16) {
-        const int* ia = s.a.data() + k;
-        const int* ib = s.b.data() + k;
-        __m512 xax, xay, xaz, xbx, xby, xbz, vax, vay, vaz, vbx, vby, vbz;
-        columns16(x, ia, xax, xay, xaz);
-        columns16(x, ib, xbx, xby, xbz);
-        columns16(v, ia, vax, vay, vaz);
-        columns16(v, ib, vbx, vby, vbz);
-        const __m512 dx = _mm512_sub_ps(xbx, xax), dy = _mm512_sub_ps(xby, xay), dz = _mm512_sub_ps(xbz, xaz);
-        const __m512 wx = _mm512_sub_ps(vbx, vax), wy = _mm512_sub_ps(vby, vay), wz = _mm512_sub_ps(vbz, vaz);
-        const Springs16 f = springForces16(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm512_loadu_ps(s.rest.data() + k));
-        __m128 rows[16];
-        rows16(f.fx, f.fy, f.fz, rows);
-        for (int j = 0; j < 16; ++j) {
-            addRow128(f4, ia[j], rows[j]);
-            subRow128(f4, ib[j], rows[j]);
-        }
-        sums.add(f.power);
-    }
-    sums.store(power);
-    // The rest (fewer than 16) as the AVX2 code: eight, then one at a time; k - begin is a
-    // multiple of 16, so the lanes are the same.
-    springs8(s, k, end, stiffnessScalar, dampingScalar, x, v, f4, power);
-}
-
-// Four quads at a time (lanes 4 j .. 4 j + 3: quad q + j), two such groups computed before
-// either is added.
-void quads16(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, const std::array<float, 4>& stiffness4,
-             const std::array<float, 4>& damping4, const float* x, const float* v, float* f4, LaneSums& power) {
-    auto repeat4 = [](const std::array<float, 4>& a) {
-        return _mm512_setr_ps(a[0], a[1], a[2], a[3], a[0], a[1], a[2], a[3], a[0], a[1], a[2], a[3], a[0], a[1], a[2], a[3]);
-    };
-    const __m512 stiffness = repeat4(stiffness4), damping = repeat4(damping4);
-    const __m512i flip = _mm512_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN,
-                                           INT32_MIN, 0, 0, INT32_MIN);
-    LaneRegister16 sums(power);
-    struct Group {
-        int ids[16];
-        __m128 rows[16];
-        __m512 power;
-    };
-    auto compute = [&](std::size_t q, Group& g) __attribute__((always_inline)) {
-        for (int j = 0; j < 4; ++j) {
-            const int a = quads.a[q + static_cast<std::size_t>(j)], b = quads.b[q + static_cast<std::size_t>(j)];
-            g.ids[4 * j] = a;
-            g.ids[4 * j + 1] = b;
-            g.ids[4 * j + 2] = a + n;
-            g.ids[4 * j + 3] = b + n;
-        }
-        __m512 X, Y, Z, VX, VY, VZ;
-        columns16(x, g.ids, X, Y, Z);
-        columns16(v, g.ids, VX, VY, VZ);
-        auto diff = [](__m512 c) __attribute__((always_inline)) { return _mm512_sub_ps(_mm512_permute_ps(c, 0x1D), _mm512_permute_ps(c, 0xE8)); };
-        const Springs16 f = springForces16(diff(X), diff(Y), diff(Z), diff(VX), diff(VY), diff(VZ), stiffness, damping,
-                                           _mm512_loadu_ps(quads.rest.data() + 4 * q));
-        auto rowsOf = [&](__m512 column) __attribute__((always_inline)) {
-            const __m512 negated =
-                _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(_mm512_permute_ps(column, 0x6B)), flip));
-            return _mm512_add_ps(_mm512_permute_ps(column, 0xD0), negated);
-        };
-        rows16(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), g.rows);
-        g.power = f.power;
-    };
-    auto apply = [&](const Group& g) __attribute__((always_inline)) {
-        for (int j = 0; j < 4; ++j) {
-            addRow128(f4, g.ids[4 * j], g.rows[4 * j]);
-            subRow128(f4, g.ids[4 * j + 1], g.rows[4 * j + 1]);
-            addRow128(f4, g.ids[4 * j + 2], g.rows[4 * j + 2]);
-            addRow128(f4, g.ids[4 * j + 3], g.rows[4 * j + 3]);
-        }
-        sums.add(g.power);
-    };
-    std::size_t q = begin;
-    Group g1, g2;
-    for (; q + 8 <= end; q += 8) {
-        compute(q, g1);
-        compute(q + 4, g2);
-        apply(g1);
-        apply(g2);
-    }
-    for (; q + 4 <= end; q += 4) {
-        compute(q, g1);
-        apply(g1);
-    }
-    sums.store(power);
-    // The rest (fewer than four quads), one at a time.
-    for (; q < end; ++q) quadScalar(quads, begin, q, n, stiffness4, damping4, x, v, f4, power);
-}
-
-void faces16(const std::vector<std::array<int, 3>>& faces, const int* corners, std::size_t stride, std::size_t begin,
-             std::size_t end, const float* x, float* g4, LaneSums& volume) {
-    LaneRegister16 sums(volume);
-    std::size_t k = begin;
-    for (; k + 16 <= end; k += 16) {
-        const int* ia = corners + k;
-        const int* ib = corners + stride + k;
-        const int* ic = corners + 2 * stride + k;
-        __m512 ax, ay, az, bx, by, bz, cx, cy, cz;
-        columns16(x, ia, ax, ay, az);
-        columns16(x, ib, bx, by, bz);
-        columns16(x, ic, cx, cy, cz);
-        const __m512 ex = _mm512_sub_ps(bx, ax), ey = _mm512_sub_ps(by, ay), ez = _mm512_sub_ps(bz, az);
-        const __m512 hx = _mm512_sub_ps(cx, ax), hy = _mm512_sub_ps(cy, ay), hz = _mm512_sub_ps(cz, az);
-        const __m512 gx = _mm512_sub_ps(_mm512_mul_ps(ey, hz), _mm512_mul_ps(ez, hy));
-        const __m512 gy = _mm512_sub_ps(_mm512_mul_ps(ez, hx), _mm512_mul_ps(ex, hz));
-        const __m512 gz = _mm512_sub_ps(_mm512_mul_ps(ex, hy), _mm512_mul_ps(ey, hx));
-        const __m512 term =
-            _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ax, gx), _mm512_mul_ps(ay, gy)), _mm512_mul_ps(az, gz));
-        __m128 rows[16];
-        rows16(gx, gy, gz, rows);
-        for (int j = 0; j < 16; ++j) {
-            addRow128(g4, ia[j], rows[j]);
-            addRow128(g4, ib[j], rows[j]);
-            addRow128(g4, ic[j], rows[j]);
-        }
-        sums.add(term);
-    }
-    sums.store(volume);
-    faces8(faces, corners, stride, k, end, x, g4, volume);
-}
-
-[[gnu::always_inline]] inline void cross16(__m512 ex, __m512 ey, __m512 ez, __m512 hx, __m512 hy, __m512 hz, __m512& gx,
-                                           __m512& gy, __m512& gz) {
-    gx = _mm512_sub_ps(_mm512_mul_ps(ey, hz), _mm512_mul_ps(ez, hy));
-    gy = _mm512_sub_ps(_mm512_mul_ps(ez, hx), _mm512_mul_ps(ex, hz));
-    gz = _mm512_sub_ps(_mm512_mul_ps(ex, hy), _mm512_mul_ps(ey, hx));
-}
-[[gnu::always_inline]] inline __m512 dot16(__m512 ax, __m512 ay, __m512 az, __m512 gx, __m512 gy, __m512 gz) {
-    return _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ax, gx), _mm512_mul_ps(ay, gy)), _mm512_mul_ps(az, gz));
-}
-
-// facePairs8, sixteen wide. Lane l of the sums takes pair l's two terms, then pair l + 8's.
-void facePairs16(const int* corners, std::size_t stride, std::size_t begin, std::size_t end, const float* x, float* g4,
-                 LaneSums& volume) {
-    LaneRegister16 sums(volume);
-    std::size_t k = begin;
-    for (; k + 16 <= end; k += 16) {
-        const int* ia = corners + k;
-        const int* ib = corners + stride + k;
-        const int* ic = corners + 2 * stride + k;
-        const int* id = corners + 3 * stride + k;
-        __m512 ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz;
-        columns16(x, ia, ax, ay, az);
-        columns16(x, ib, bx, by, bz);
-        columns16(x, ic, cx, cy, cz);
-        columns16(x, id, dx, dy, dz);
-        __m512 g1x, g1y, g1z, g2x, g2y, g2z;
-        cross16(_mm512_sub_ps(bx, ax), _mm512_sub_ps(by, ay), _mm512_sub_ps(bz, az), _mm512_sub_ps(cx, ax),
-                _mm512_sub_ps(cy, ay), _mm512_sub_ps(cz, az), g1x, g1y, g1z);
-        cross16(_mm512_sub_ps(ax, bx), _mm512_sub_ps(ay, by), _mm512_sub_ps(az, bz), _mm512_sub_ps(dx, bx),
-                _mm512_sub_ps(dy, by), _mm512_sub_ps(dz, bz), g2x, g2y, g2z);
-        __m128 rows1[16], rows2[16];
-        rows16(g1x, g1y, g1z, rows1);
-        rows16(g2x, g2y, g2z, rows2);
-        for (int j = 0; j < 16; ++j) {
-            const __m128 both = _mm_add_ps(rows1[j], rows2[j]);
-            addRow128(g4, ia[j], both);
-            addRow128(g4, ib[j], both);
-            addRow128(g4, ic[j], rows1[j]);
-            addRow128(g4, id[j], rows2[j]);
-        }
-        sums.addPair(dot16(ax, ay, az, g1x, g1y, g1z), dot16(bx, by, bz, g2x, g2y, g2z));
-    }
-    sums.store(volume);
-    facePairs8(corners, stride, k, end, x, g4, volume);
-}
-
-#pragma GCC pop_options
 #endif
 
 // The springs and faces of one chunk (or the shared ones), and what they sum.
@@ -803,24 +306,24 @@ struct FloatSimulation::Impl {
         c.volume = {};
         float* f4 = force4.data();
         const std::array<float, 4> quadStiffness{stiffness[0], stiffness[0], stiffness[2], stiffness[2]}, quadDamping{damping[0], damping[0], damping[2], damping[2]};
-#ifdef SIMCORE_FLOAT_AVX512
+#ifdef SIMCORE_FLOAT_AVX2
         if (simd == kernels::KernelSet::Avx512)
-            quads16(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
+            avx512::quads(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
         else if (simd == kernels::KernelSet::Avx2)
-            quads8(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
+            avx2::quads(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
         else
 #endif
             for (std::size_t q = 0; q < c.quads.size(); ++q)
                 quadScalar(c.quads, 0, q, perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
         for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
             const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
-#ifdef SIMCORE_FLOAT_AVX512
+#ifdef SIMCORE_FLOAT_AVX2
             if (simd == kernels::KernelSet::Avx512) {
-                springs16(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
+                avx512::springs(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
                 continue;
             }
             if (simd == kernels::KernelSet::Avx2) {
-                springs8(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
+                avx2::springs(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
                 continue;
             }
 #endif
@@ -832,21 +335,21 @@ struct FloatSimulation::Impl {
         for (std::size_t slot = 0; slot < 2; ++slot) {
             const std::vector<int>& pairs = c.pairCorners[slot];
             const std::size_t pairCount = pairs.size() / 4;
-#ifdef SIMCORE_FLOAT_AVX512
+#ifdef SIMCORE_FLOAT_AVX2
             if (simd == kernels::KernelSet::Avx512)
-                facePairs16(pairs.data(), pairCount, 0, pairCount, px, g4, c.volume[slot]);
+                avx512::facePairs(pairs.data(), pairCount, 0, pairCount, px, g4, c.volume[slot]);
             else if (simd == kernels::KernelSet::Avx2)
-                facePairs8(pairs.data(), pairCount, 0, pairCount, px, g4, c.volume[slot]);
+                avx2::facePairs(pairs.data(), pairCount, 0, pairCount, px, g4, c.volume[slot]);
             else
 #endif
                 for (std::size_t k = 0; k < pairCount; ++k) facePairScalar(pairs.data(), pairCount, 0, k, px, g4, c.volume[slot]);
-#ifdef SIMCORE_FLOAT_AVX512
+#ifdef SIMCORE_FLOAT_AVX2
             if (simd == kernels::KernelSet::Avx512 && dimension == 3) {
-                faces16(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
+                avx512::faces(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
                 continue;
             }
             if (simd == kernels::KernelSet::Avx2 && dimension == 3) {
-                faces8(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
+                avx2::faces(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
                 continue;
             }
 #endif
