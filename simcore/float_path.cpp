@@ -232,6 +232,53 @@ struct Chunk {
     std::array<LaneSums, 2> volume;
 };
 
+// Faces sharing an edge in pairs (a, b, c) and (b, a, d), found greedily within each slot of a
+// chunk (on the level-6 sphere 95 % of the faces): their corners go to the chunk's pairCorners
+// (four columns, in strided blocks as the faces), the rest stay in its faces.
+void pairFaces(Chunk& c) {
+    std::vector<std::array<int, 3>> single;
+    std::size_t singleSlotStart = 0;
+    const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
+    for (std::size_t slot = 0; slot < 2; ++slot) {
+        if (slot == 1) singleSlotStart = single.size();
+        std::unordered_map<std::uint64_t, std::size_t> byEdge;  // directed edge -> face
+        auto edgeKey = [](int u, int w) {
+            return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(w);
+        };
+        for (std::size_t f = cut[slot]; f < cut[slot + 1]; ++f)
+            for (std::size_t e = 0; e < 3; ++e) byEdge.emplace(edgeKey(c.faces[f][e], c.faces[f][(e + 1) % 3]), f);
+        std::vector<bool> matched(c.faces.size(), false);
+        std::vector<std::array<int, 4>> pairs;
+        for (std::size_t f = cut[slot]; f < cut[slot + 1]; ++f) {
+            if (matched[f]) continue;
+            for (std::size_t e = 0; e < 3 && !matched[f]; ++e) {
+                const int u = c.faces[f][e], w = c.faces[f][(e + 1) % 3];
+                const auto other = byEdge.find(edgeKey(w, u));
+                if (other == byEdge.end() || other->second == f || matched[other->second]) continue;
+                const auto& g = c.faces[other->second];
+                int d = g[0];
+                for (int corner : g)
+                    if (corner != u && corner != w) d = corner;
+                pairs.push_back({u, w, c.faces[f][(e + 2) % 3], d});
+                matched[f] = matched[other->second] = true;
+            }
+            if (!matched[f]) single.push_back(c.faces[f]);
+        }
+        // In strided blocks, as the faces and springs (see the constructor).
+        std::vector<std::array<int, 4>> order;
+        std::size_t block = 0;
+        for (; block + kStridedBlock <= pairs.size(); block += kStridedBlock)
+            for (std::size_t r = 0; r < kStride; ++r)
+                for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) order.push_back(pairs[block + q * kStride + r]);
+        for (; block < pairs.size(); ++block) order.push_back(pairs[block]);
+        c.pairCorners[slot].resize(4 * order.size());
+        for (std::size_t k = 0; k < order.size(); ++k)
+            for (std::size_t corner = 0; corner < 4; ++corner) c.pairCorners[slot][corner * order.size() + k] = order[k][corner];
+    }
+    c.faces = std::move(single);
+    c.slotStart = singleSlotStart;
+}
+
 }  // namespace
 
 bool floatPathSupports(std::string_view integrator) {
@@ -500,42 +547,50 @@ struct FloatSimulation::Impl {
             auto pending = evaluate(X, V, none, first);
             finish(evaluate(XT, VT, pending, second));
             removed += hd * stagePower;
-        } else {  // rk4
-            float* XT = xt.data();
-            float* VT = vt.data();
-            float* XA = xa.data();
-            float* VA = va.data();
-            const float sixth = h / 6.0f, third = h / 3.0f, half = 0.5f * h;
-            auto first = [=](int i, F4 vi, F4 ai) {
-                const F4 xi = row(X, i);
-                setRow(XA, i, xi + splat(sixth) * vi);
-                setRow(VA, i, vi + splat(sixth) * ai);
-                setRow(XT, i, xi + splat(half) * vi);
-                setRow(VT, i, vi + splat(half) * ai);
-            };
-            auto middle = [&](float c) {
-                return [=](int i, F4 vi, F4 ai) {
-                    setRow(XA, i, row(XA, i) + splat(third) * vi);
-                    setRow(VA, i, row(VA, i) + splat(third) * ai);
-                    setRow(XT, i, row(X, i) + splat(c) * vi);
-                    setRow(VT, i, row(V, i) + splat(c) * ai);
-                };
-            };
-            auto second = middle(half), third_ = middle(h);
-            auto last = [=](int i, F4 vi, F4 ai) {
-                setRow(X, i, row(XA, i) + splat(sixth) * vi);
-                setRow(V, i, row(VA, i) + splat(sixth) * ai);
-            };
-            auto pending1 = evaluate(X, V, none, first);
-            double power = stagePower;
-            auto pending2 = evaluate(XT, VT, pending1, second);
-            power += 2.0 * stagePower;
-            auto pending3 = evaluate(XT, VT, pending2, third_);
-            power += 2.0 * stagePower;
-            finish(evaluate(XT, VT, pending3, last));
-            power += stagePower;
-            removed += hd / 6.0 * power;
+        } else {
+            rk4(h, hd);
         }
+    }
+
+    // One RK4 step: four evaluations, each stage's update run with the next pass.
+    void rk4(float h, double hd) {
+        float* X = x.data();
+        float* V = v.data();
+        const auto none = [](int, int) {};  // the rows are clear at the start of a step
+        float* XT = xt.data();
+        float* VT = vt.data();
+        float* XA = xa.data();
+        float* VA = va.data();
+        const float sixth = h / 6.0f, third = h / 3.0f, half = 0.5f * h;
+        auto first = [=](int i, F4 vi, F4 ai) {
+            const F4 xi = row(X, i);
+            setRow(XA, i, xi + splat(sixth) * vi);
+            setRow(VA, i, vi + splat(sixth) * ai);
+            setRow(XT, i, xi + splat(half) * vi);
+            setRow(VT, i, vi + splat(half) * ai);
+        };
+        auto middle = [&](float c) {
+            return [=](int i, F4 vi, F4 ai) {
+                setRow(XA, i, row(XA, i) + splat(third) * vi);
+                setRow(VA, i, row(VA, i) + splat(third) * ai);
+                setRow(XT, i, row(X, i) + splat(c) * vi);
+                setRow(VT, i, row(V, i) + splat(c) * ai);
+            };
+        };
+        auto second = middle(half), thirdUpdate = middle(h);
+        auto last = [=](int i, F4 vi, F4 ai) {
+            setRow(X, i, row(XA, i) + splat(sixth) * vi);
+            setRow(V, i, row(VA, i) + splat(sixth) * ai);
+        };
+        auto pending1 = evaluate(X, V, none, first);
+        double power = stagePower;
+        auto pending2 = evaluate(XT, VT, pending1, second);
+        power += 2.0 * stagePower;
+        auto pending3 = evaluate(XT, VT, pending2, thirdUpdate);
+        power += 2.0 * stagePower;
+        finish(evaluate(XT, VT, pending3, last));
+        power += stagePower;
+        removed += hd / 6.0 * power;
     }
 
     // Whether particles [begin, end) are finite and inside the walls (branch-free: the step's
@@ -769,52 +824,9 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
                 }
             }
         }
-        // 3D: faces sharing an edge go in pairs (a, b, c) and (b, a, d), found greedily within
-        // each chunk and slot (on the level-6 sphere all but a few); the rest stay single.
+        // 3D: faces sharing an edge go in pairs (pairFaces).
         if (s.dimension == 3)
-            for (Chunk& c : s.chunks) {
-                std::vector<std::array<int, 3>> single;
-                std::size_t singleSlotStart = 0;
-                const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
-                for (std::size_t slot = 0; slot < 2; ++slot) {
-                    if (slot == 1) singleSlotStart = single.size();
-                    std::unordered_map<std::uint64_t, std::size_t> byEdge;  // directed edge -> face
-                    auto edgeKey = [](int u, int w) {
-                        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(w);
-                    };
-                    for (std::size_t f = cut[slot]; f < cut[slot + 1]; ++f)
-                        for (std::size_t e = 0; e < 3; ++e) byEdge.emplace(edgeKey(c.faces[f][e], c.faces[f][(e + 1) % 3]), f);
-                    std::vector<bool> matched(c.faces.size(), false);
-                    std::vector<std::array<int, 4>> pairs;
-                    for (std::size_t f = cut[slot]; f < cut[slot + 1]; ++f) {
-                        if (matched[f]) continue;
-                        for (std::size_t e = 0; e < 3 && !matched[f]; ++e) {
-                            const int u = c.faces[f][e], w = c.faces[f][(e + 1) % 3];
-                            const auto other = byEdge.find(edgeKey(w, u));
-                            if (other == byEdge.end() || other->second == f || matched[other->second]) continue;
-                            const auto& g = c.faces[other->second];
-                            int d = g[0];
-                            for (int corner : g)
-                                if (corner != u && corner != w) d = corner;
-                            pairs.push_back({u, w, c.faces[f][(e + 2) % 3], d});
-                            matched[f] = matched[other->second] = true;
-                        }
-                        if (!matched[f]) single.push_back(c.faces[f]);
-                    }
-                    // Strided blocks, as the faces below.
-                    std::vector<std::array<int, 4>> order;
-                    std::size_t block = 0;
-                    for (; block + kStridedBlock <= pairs.size(); block += kStridedBlock)
-                        for (std::size_t r = 0; r < kStride; ++r)
-                            for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) order.push_back(pairs[block + q * kStride + r]);
-                    for (; block < pairs.size(); ++block) order.push_back(pairs[block]);
-                    c.pairCorners[slot].resize(4 * order.size());
-                    for (std::size_t k = 0; k < order.size(); ++k)
-                        for (std::size_t corner = 0; corner < 4; ++corner) c.pairCorners[slot][corner * order.size() + k] = order[k][corner];
-                }
-                c.faces = std::move(single);
-                c.slotStart = singleSlotStart;
-            }
+            for (Chunk& c : s.chunks) pairFaces(c);
         for (Chunk& c : s.chunks) {
             // The faces of each slot in strided blocks, as the springs below (consecutive faces
             // share corners).
