@@ -10,15 +10,17 @@
 //     (= x_a.(x_b x x_c); 2D: the shoelace term) are summed in double lanes;
 //  2. (the caller) the shared springs and faces, then volumes and pressures from the sums, in
 //     chunk order;
-//  3. particles, in blocks: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the
-//     integrator's update of the particle's own rows.
+//  3. particles: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the integrator's
+//     update of the particle's own rows; each chunk runs it on its own particles at the start
+//     of the next evaluation's pass 1, the step's last one runs with the state check.
 // Positions, velocities and forces are padded rows (x, y, z, 0) of 16 bytes, so that a
-// particle is one 128-bit load. With AVX2 springs and faces go eight at a time: the rows of
-// eight particles are transposed to columns in registers, the arithmetic runs eight wide,
-// operation for operation as the scalar code (no fused multiply-add: simcore builds with
-// -ffp-contract=off), and the results are added to the rows one spring or face at a time in
-// order, so that both give the same bits, and so do 1 and 2 threads (the split depends on the
-// body only).
+// particle is one 128-bit load. With AVX2 springs, faces and face pairs go eight at a time
+// (two edge quads), with AVX-512 sixteen (four quads): the rows are transposed to columns in
+// registers, the arithmetic runs eight or sixteen wide, operation for operation as the scalar
+// code (no fused multiply-add: simcore builds with -ffp-contract=off), and the results are
+// added to the rows one spring or face at a time in order, so that every set gives the same
+// bits, and so do 1 and 2 threads (the split depends on the body only). The wide kernels are
+// one body for both widths (simcore/internal/float_kernels_body.h).
 #include "simcore/float_path.h"
 
 #include <algorithm>
@@ -39,7 +41,13 @@
 // (ELASTIC_LAB_PORTABLE_KERNELS: no x86 intrinsics, as for another architecture).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(ELASTIC_LAB_PORTABLE_KERNELS)
 #define SIMCORE_FLOAT_AVX2 1
+// GCC 12 warns inside its own AVX-512 intrinsics (_mm512_undefined_ps, GCC bug 105593), as in
+// force_kernels.cpp.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 #include <immintrin.h>
+#pragma GCC diagnostic pop
 #endif
 
 namespace simcore {
@@ -54,12 +62,12 @@ constexpr std::size_t kStridedBlock = 128, kStride = 16;
 
 using F4 = float __attribute__((vector_size(16)));
 
-inline F4 row(const float* p, int i) {
-    F4 r;
-    std::memcpy(&r, p + 4 * static_cast<std::ptrdiff_t>(i), sizeof r);
-    return r;
-}
-inline void setRow(float* p, int i, F4 r) { std::memcpy(p + 4 * static_cast<std::ptrdiff_t>(i), &r, sizeof r); }
+// Rows are read and written as float vectors (a vector of float may alias float; not through
+// memcpy, whose accesses may alias anything and make the compiler reload every pointer after
+// each store in the update loops).
+using F4Unaligned = float __attribute__((vector_size(16), aligned(4)));
+inline F4 row(const float* p, int i) { return *reinterpret_cast<const F4Unaligned*>(p + 4 * static_cast<std::ptrdiff_t>(i)); }
+inline void setRow(float* p, int i, F4 r) { *reinterpret_cast<F4Unaligned*>(p + 4 * static_cast<std::ptrdiff_t>(i)) = r; }
 inline F4 splat(float s) { return F4{s, s, s, s}; }
 
 // Eight lanes of double sums, added lane by lane (lane k % 8 for element k of a task) and
@@ -82,6 +90,23 @@ struct SpringArrays {
 inline void addRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) + r); }
 inline void subRow(float* f4, int i, F4 r) { setRow(f4, i, row(f4, i) - r); }
 
+// One spring's force F = [stiffness (L - L0) + damping (dv.u)] u from its end differences d
+// (positions) and dv (velocities), and its damping power damping (dv.u)^2 in `power`; 0 for
+// both when degenerate (L below kDegenerateLength). The reference the eight- and sixteen-wide
+// code follows operation by operation. 1/L is L (1/L^2), and dv.u is (dv.d)/L, F is
+// (magnitude/L) d: the square root and the division run side by side, and (dv.d) beside both,
+// which shortens the chain each spring waits on (the kernels were bound by its latency).
+inline F4 springForce(F4 d, F4 dv, float stiffness, float damping, float rest, float& power) {
+    const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
+    const float len = std::sqrt(len2);
+    const float inv = len * (1.0f / len2);
+    const float dvu = ((dv[0] * d[0] + dv[1] * d[1]) + dv[2] * d[2]) * inv;
+    const float scale = (stiffness * (len - rest) + damping * dvu) * inv;
+    const bool ok = len >= static_cast<float>(kDegenerateLength);
+    power = ok ? damping * dvu * dvu : 0.0f;
+    return ok ? F4{scale * d[0], scale * d[1], scale * d[2], 0.0f} : F4{};
+}
+
 // Edge quads of a two-layer body, as ForceModel's (force_kernels.h, QuadSet): for a mesh edge
 // (a, b) of the inner layer and its outer copy (A, B) = (a + n, b + n), the four springs over
 // the same four particles, one per lane: structural (a, b), structural (A, B), shear (A, b)
@@ -103,16 +128,9 @@ inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q,
     std::array<F4, 4> force;
     for (std::size_t l = 0; l < 4; ++l) {
         const F4 d = row(x, second[l]) - row(x, first[l]), dv = row(v, second[l]) - row(v, first[l]);
-        const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
-        const float len = std::sqrt(len2);
-        const float inv = 1.0f / len;
-        const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
-        const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
-        const float mag = stiffness[l] * (len - quads.rest[4 * q + l]) + damping[l] * dvu;
-        const float p = damping[l] * dvu * dvu;
-        const bool ok = len >= static_cast<float>(kDegenerateLength);
-        force[l] = F4{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
-        power.lane[((q - base) % 2) * 4 + l] += static_cast<double>(ok ? p : 0.0f);
+        float p;
+        force[l] = springForce(d, dv, stiffness[l], damping[l], quads.rest[4 * q + l], p);
+        power.lane[((q - base) % 2) * 4 + l] += static_cast<double>(p);
     }
     addRow(f4, a, force[0] - force[3]);
     subRow(f4, b, force[0] + force[2]);
@@ -125,19 +143,11 @@ inline void quadScalar(const QuadArrays& quads, std::size_t base, std::size_t q,
 inline void springScalar(const SpringArrays& s, std::size_t base, std::size_t k, float stiffness, float damping, const float* x,
                          const float* v, float* f4, LaneSums& power) {
     const F4 xa = row(x, s.a[k]), xb = row(x, s.b[k]), va = row(v, s.a[k]), vb = row(v, s.b[k]);
-    const F4 d = xb - xa, dv = vb - va;
-    const float len2 = (d[0] * d[0] + d[1] * d[1]) + d[2] * d[2];
-    const float len = std::sqrt(len2);
-    const float inv = 1.0f / len;
-    const float ux = d[0] * inv, uy = d[1] * inv, uz = d[2] * inv;
-    const float dvu = (dv[0] * ux + dv[1] * uy) + dv[2] * uz;
-    const float mag = stiffness * (len - s.rest[k]) + damping * dvu;
-    const float p = damping * dvu * dvu;
-    const bool ok = len >= static_cast<float>(kDegenerateLength);
-    const F4 force{ok ? mag * ux : 0.0f, ok ? mag * uy : 0.0f, ok ? mag * uz : 0.0f, 0.0f};
+    float p;
+    const F4 force = springForce(xb - xa, vb - va, stiffness, damping, s.rest[k], p);
     addRow(f4, s.a[k], force);
     subRow(f4, s.b[k], force);
-    power.lane[(k - base) % 8] += static_cast<double>(ok ? p : 0.0f);
+    power.lane[(k - base) % 8] += static_cast<double>(p);
 }
 
 // One face, scalar: its row added to its corners, its volume term to lane (k - base) % 8.
@@ -164,213 +174,45 @@ inline void faceScalar(const std::vector<std::array<int, 3>>& faces, int dimensi
     volume.lane[(k - base) % 8] += static_cast<double>(term);
 }
 
+// A pair of faces sharing an edge, (a, b, c) and (b, a, d) (3D): their rows g1 = (b - a) x
+// (c - a) and g2 = (a - b) x (d - b) as faceScalar's, g1 + g2 added to a and b, g1 to c, g2 to
+// d (4 rows loaded and 4 updated for two faces, instead of 6 and 6); the volume terms
+// a.g1 then b.g2 to lane (k - base) % 8. The reference of the wide code.
+inline void facePairScalar(const int* corners, std::size_t stride, std::size_t base, std::size_t k, const float* x, float* g4,
+                           LaneSums& volume) {
+    const int a = corners[k], b = corners[stride + k], c = corners[2 * stride + k], d = corners[3 * stride + k];
+    const F4 xa = row(x, a), xb = row(x, b), xc = row(x, c), xd = row(x, d);
+    auto cross = [](F4 e, F4 h) {
+        return F4{e[1] * h[2] - e[2] * h[1], e[2] * h[0] - e[0] * h[2], e[0] * h[1] - e[1] * h[0], 0.0f};
+    };
+    const F4 g1 = cross(xb - xa, xc - xa), g2 = cross(xa - xb, xd - xb);
+    const F4 both = g1 + g2;
+    addRow(g4, a, both);
+    addRow(g4, b, both);
+    addRow(g4, c, g1);
+    addRow(g4, d, g2);
+    volume.lane[(k - base) % 8] += static_cast<double>((xa[0] * g1[0] + xa[1] * g1[1]) + xa[2] * g1[2]);
+    volume.lane[(k - base) % 8] += static_cast<double>((xb[0] * g2[0] + xb[1] * g2[1]) + xb[2] * g2[2]);
+}
+
 #ifdef SIMCORE_FLOAT_AVX2
+// The wide kernels, one body for both widths (simcore/internal/float_kernels_body.h).
 #pragma GCC push_options
 #pragma GCC target("avx2")
-// The x, y, z columns of eight particles' rows (rows idx[0..7] of p).
-[[gnu::always_inline]] inline void columns8(const float* p, const int* idx, __m256& cx,
-                                                                  __m256& cy, __m256& cz) {
-    auto pair = [&](int k) {
-        return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k]))),
-                                    _mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k + 4])), 1);
-    };
-    const __m256 r0 = pair(0), r1 = pair(1), r2 = pair(2), r3 = pair(3);
-    const __m256 t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
-    const __m256 t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
-    cx = _mm256_shuffle_ps(t0, t2, 0x44);
-    cy = _mm256_shuffle_ps(t0, t2, 0xEE);
-    cz = _mm256_shuffle_ps(t1, t3, 0x44);
-}
+namespace avx2 {
+#define SIMCORE_FLOAT_WIDTH 8
+#include "simcore/internal/float_kernels_body.h"
+#undef SIMCORE_FLOAT_WIDTH
+}  // namespace avx2
+#pragma GCC pop_options
 
-// Eight rows (x, y, z, 0) from three columns: rows[j] is lane j's.
-[[gnu::always_inline]] inline void rows8(__m256 cx, __m256 cy, __m256 cz, __m128* rows) {
-    const __m256 zero = _mm256_setzero_ps();
-    const __m256 t0 = _mm256_unpacklo_ps(cx, cy), t1 = _mm256_unpackhi_ps(cx, cy);
-    const __m256 t2 = _mm256_unpacklo_ps(cz, zero), t3 = _mm256_unpackhi_ps(cz, zero);
-    const __m256 r0 = _mm256_shuffle_ps(t0, t2, 0x44), r1 = _mm256_shuffle_ps(t0, t2, 0xEE);
-    const __m256 r2 = _mm256_shuffle_ps(t1, t3, 0x44), r3 = _mm256_shuffle_ps(t1, t3, 0xEE);
-    rows[0] = _mm256_castps256_ps128(r0);
-    rows[1] = _mm256_castps256_ps128(r1);
-    rows[2] = _mm256_castps256_ps128(r2);
-    rows[3] = _mm256_castps256_ps128(r3);
-    rows[4] = _mm256_extractf128_ps(r0, 1);
-    rows[5] = _mm256_extractf128_ps(r1, 1);
-    rows[6] = _mm256_extractf128_ps(r2, 1);
-    rows[7] = _mm256_extractf128_ps(r3, 1);
-}
-
-[[gnu::always_inline]] inline void addRow128(float* f4, int i, __m128 r) {
-    float* p = f4 + 4 * static_cast<std::ptrdiff_t>(i);
-    _mm_storeu_ps(p, _mm_add_ps(_mm_loadu_ps(p), r));
-}
-[[gnu::always_inline]] inline void subRow128(float* f4, int i, __m128 r) {
-    float* p = f4 + 4 * static_cast<std::ptrdiff_t>(i);
-    _mm_storeu_ps(p, _mm_sub_ps(_mm_loadu_ps(p), r));
-}
-
-// Eight double lanes in two registers, loaded from and stored back to LaneSums: lane l adds
-// its elements in the same order as the scalar code.
-struct LaneRegisters {
-    __m256d lo, hi;
-    explicit LaneRegisters(const LaneSums& sums)
-        : lo(_mm256_loadu_pd(sums.lane.data())), hi(_mm256_loadu_pd(sums.lane.data() + 4)) {}
-    void add(__m256 v) {
-        lo = _mm256_add_pd(lo, _mm256_cvtps_pd(_mm256_castps256_ps128(v)));
-        hi = _mm256_add_pd(hi, _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1)));
-    }
-    void store(LaneSums& sums) const {
-        _mm256_storeu_pd(sums.lane.data(), lo);
-        _mm256_storeu_pd(sums.lane.data() + 4, hi);
-    }
-};
-
-// Eight springs' forces (masked to 0 where degenerate) and damping powers from their end
-// differences d (positions) and w (velocities): the scalar springScalar's operations.
-struct Springs8 {
-    __m256 fx, fy, fz, power;
-};
-[[gnu::always_inline]] inline Springs8 springForces8(__m256 dx, __m256 dy, __m256 dz, __m256 wx, __m256 wy, __m256 wz,
-                                                     __m256 stiffness, __m256 damping, __m256 rest) {
-    const __m256 len2 =
-        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)), _mm256_mul_ps(dz, dz));
-    const __m256 len = _mm256_sqrt_ps(len2);
-    const __m256 inv = _mm256_div_ps(_mm256_set1_ps(1.0f), len);
-    const __m256 ux = _mm256_mul_ps(dx, inv), uy = _mm256_mul_ps(dy, inv), uz = _mm256_mul_ps(dz, inv);
-    const __m256 dvu =
-        _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(wx, ux), _mm256_mul_ps(wy, uy)), _mm256_mul_ps(wz, uz));
-    const __m256 ok = _mm256_cmp_ps(len, _mm256_set1_ps(static_cast<float>(kDegenerateLength)), _CMP_GE_OQ);
-    const __m256 mag = _mm256_add_ps(_mm256_mul_ps(stiffness, _mm256_sub_ps(len, rest)), _mm256_mul_ps(damping, dvu));
-    return {_mm256_and_ps(ok, _mm256_mul_ps(mag, ux)), _mm256_and_ps(ok, _mm256_mul_ps(mag, uy)),
-            _mm256_and_ps(ok, _mm256_mul_ps(mag, uz)), _mm256_and_ps(ok, _mm256_mul_ps(_mm256_mul_ps(damping, dvu), dvu))};
-}
-
-void springs8(const SpringArrays& s, std::size_t begin, std::size_t end, float stiffnessScalar, float dampingScalar,
-              const float* x, const float* v, float* f4, LaneSums& power) {
-    const __m256 stiffness = _mm256_set1_ps(stiffnessScalar), damping = _mm256_set1_ps(dampingScalar);
-    LaneRegisters sums(power);
-    std::size_t k = begin;
-    for (; k + 8 <= end; k += 8) {
-        const int* ia = s.a.data() + k;
-        const int* ib = s.b.data() + k;
-        __m256 xax, xay, xaz, xbx, xby, xbz, vax, vay, vaz, vbx, vby, vbz;
-        columns8(x, ia, xax, xay, xaz);
-        columns8(x, ib, xbx, xby, xbz);
-        columns8(v, ia, vax, vay, vaz);
-        columns8(v, ib, vbx, vby, vbz);
-        const __m256 dx = _mm256_sub_ps(xbx, xax), dy = _mm256_sub_ps(xby, xay), dz = _mm256_sub_ps(xbz, xaz);
-        const __m256 wx = _mm256_sub_ps(vbx, vax), wy = _mm256_sub_ps(vby, vay), wz = _mm256_sub_ps(vbz, vaz);
-        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm256_loadu_ps(s.rest.data() + k));
-        __m128 rows[8];
-        rows8(f.fx, f.fy, f.fz, rows);
-        for (int j = 0; j < 8; ++j) {
-            addRow128(f4, ia[j], rows[j]);
-            subRow128(f4, ib[j], rows[j]);
-        }
-        sums.add(f.power);
-    }
-    sums.store(power);
-    for (; k < end; ++k) springScalar(s, begin, k, stiffnessScalar, dampingScalar, x, v, f4, power);
-}
-
-// Two quads at a time: lanes 0-3 the first quad's springs, 4-7 the second's.
-void quads8(const QuadArrays& quads, std::size_t begin, std::size_t end, int n, const std::array<float, 4>& stiffness4,
-            const std::array<float, 4>& damping4, const float* x, const float* v, float* f4, LaneSums& power) {
-    const __m256 stiffness = _mm256_setr_ps(stiffness4[0], stiffness4[1], stiffness4[2], stiffness4[3], stiffness4[0], stiffness4[1], stiffness4[2], stiffness4[3]);
-    const __m256 damping = _mm256_setr_ps(damping4[0], damping4[1], damping4[2], damping4[3], damping4[0], damping4[1], damping4[2], damping4[3]);
-    // Lane 0 and 3 of each half subtract (a: F0 - F3, B: F3 - F1): x - y is x + (-y) exactly.
-    const __m256 flip = _mm256_castsi256_ps(_mm256_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN));
-    LaneRegisters sums(power);
-    // One group: quads q and q + 1; their particles in ids, their four row updates each in
-    // rows (a, b, A, B per quad).
-    struct Group {
-        int ids[8];
-        __m128 rows[8];
-        __m256 power;
-    };
-    auto compute = [&](std::size_t q, Group& g) {
-        const int at[8] = {quads.a[q], quads.b[q], quads.a[q] + n, quads.b[q] + n,
-                           quads.a[q + 1], quads.b[q + 1], quads.a[q + 1] + n, quads.b[q + 1] + n};
-        std::copy(at, at + 8, g.ids);
-        // Columns (a, b, A, B | a', b', A', B') of x and v.
-        __m256 X, Y, Z, VX, VY, VZ;
-        columns8(x, g.ids, X, Y, Z);
-        columns8(v, g.ids, VX, VY, VZ);
-        // First ends (a, A, A, B) = columns (0, 2, 2, 3); second ends (b, B, b, a) = (1, 3, 1, 0).
-        const __m256 dx = _mm256_sub_ps(_mm256_permute_ps(X, 0x1D), _mm256_permute_ps(X, 0xE8));
-        const __m256 dy = _mm256_sub_ps(_mm256_permute_ps(Y, 0x1D), _mm256_permute_ps(Y, 0xE8));
-        const __m256 dz = _mm256_sub_ps(_mm256_permute_ps(Z, 0x1D), _mm256_permute_ps(Z, 0xE8));
-        const __m256 wx = _mm256_sub_ps(_mm256_permute_ps(VX, 0x1D), _mm256_permute_ps(VX, 0xE8));
-        const __m256 wy = _mm256_sub_ps(_mm256_permute_ps(VY, 0x1D), _mm256_permute_ps(VY, 0xE8));
-        const __m256 wz = _mm256_sub_ps(_mm256_permute_ps(VZ, 0x1D), _mm256_permute_ps(VZ, 0xE8));
-        const Springs8 f = springForces8(dx, dy, dz, wx, wy, wz, stiffness, damping, _mm256_loadu_ps(quads.rest.data() + 4 * q));
-        // Per lane (a, b, A, B): F0 + (-F3), F0 + F2, F1 + F2, F3 + (-F1): (0, 0, 1, 3) + (3, 2, 2, 1).
-        auto rowsOf = [&](__m256 column) {
-            return _mm256_add_ps(_mm256_permute_ps(column, 0xD0), _mm256_xor_ps(_mm256_permute_ps(column, 0x6B), flip));
-        };
-        rows8(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), g.rows);
-        g.power = f.power;
-    };
-    auto apply = [&](const Group& g) {
-        for (int j = 0; j < 2; ++j) {
-            addRow128(f4, g.ids[4 * j], g.rows[4 * j]);
-            subRow128(f4, g.ids[4 * j + 1], g.rows[4 * j + 1]);
-            addRow128(f4, g.ids[4 * j + 2], g.rows[4 * j + 2]);
-            addRow128(f4, g.ids[4 * j + 3], g.rows[4 * j + 3]);
-        }
-        sums.add(g.power);
-    };
-    // Two groups per iteration, both computed before either is added, so that the core
-    // overlaps their square root and division chains (as the double path's kernels); the rows
-    // are still updated quad by quad in order.
-    std::size_t q = begin;
-    Group g1, g2;
-    for (; q + 4 <= end; q += 4) {
-        compute(q, g1);
-        compute(q + 2, g2);
-        apply(g1);
-        apply(g2);
-    }
-    for (; q + 2 <= end; q += 2) {
-        compute(q, g1);
-        apply(g1);
-    }
-    sums.store(power);
-    for (; q < end; ++q) quadScalar(quads, begin, q, n, stiffness4, damping4, x, v, f4, power);
-}
-
-// corners: the faces' corner indices as three columns (a, b, c) of `stride` each.
-void faces8(const std::vector<std::array<int, 3>>& faces, const int* corners, std::size_t stride, std::size_t begin,
-            std::size_t end, const float* x, float* g4, LaneSums& volume) {
-    LaneRegisters sums(volume);
-    std::size_t k = begin;
-    for (; k + 8 <= end; k += 8) {
-        const int* ia = corners + k;
-        const int* ib = corners + stride + k;
-        const int* ic = corners + 2 * stride + k;
-        __m256 ax, ay, az, bx, by, bz, cx, cy, cz;
-        columns8(x, ia, ax, ay, az);
-        columns8(x, ib, bx, by, bz);
-        columns8(x, ic, cx, cy, cz);
-        const __m256 ex = _mm256_sub_ps(bx, ax), ey = _mm256_sub_ps(by, ay), ez = _mm256_sub_ps(bz, az);
-        const __m256 hx = _mm256_sub_ps(cx, ax), hy = _mm256_sub_ps(cy, ay), hz = _mm256_sub_ps(cz, az);
-        const __m256 gx = _mm256_sub_ps(_mm256_mul_ps(ey, hz), _mm256_mul_ps(ez, hy));
-        const __m256 gy = _mm256_sub_ps(_mm256_mul_ps(ez, hx), _mm256_mul_ps(ex, hz));
-        const __m256 gz = _mm256_sub_ps(_mm256_mul_ps(ex, hy), _mm256_mul_ps(ey, hx));
-        const __m256 term =
-            _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(ax, gx), _mm256_mul_ps(ay, gy)), _mm256_mul_ps(az, gz));
-        __m128 rows[8];
-        rows8(gx, gy, gz, rows);
-        for (int j = 0; j < 8; ++j) {
-            addRow128(g4, ia[j], rows[j]);
-            addRow128(g4, ib[j], rows[j]);
-            addRow128(g4, ic[j], rows[j]);
-        }
-        sums.add(term);
-    }
-    sums.store(volume);
-    for (; k < end; ++k) faceScalar(faces, 3, begin, k, x, g4, volume);
-}
-
+#pragma GCC push_options
+#pragma GCC target("avx512f,avx2")
+namespace avx512 {
+#define SIMCORE_FLOAT_WIDTH 16
+#include "simcore/internal/float_kernels_body.h"
+#undef SIMCORE_FLOAT_WIDTH
+}  // namespace avx512
 #pragma GCC pop_options
 
 bool haveAvx2() { return __builtin_cpu_supports("avx2"); }
@@ -384,10 +226,58 @@ struct Chunk {
     std::vector<std::array<int, 3>> faces;                          // slot 0's first
     std::size_t slotStart = 0;                                      // the first face of slot 1
     std::vector<int> faceCorners;                                   // three columns
+    std::array<std::vector<int>, 2> pairCorners;                    // per slot: face pairs, four columns
     std::vector<std::pair<int, int>> owned;                         // particle ranges [begin, end)
     LaneSums power;
     std::array<LaneSums, 2> volume;
 };
+
+// Faces sharing an edge in pairs (a, b, c) and (b, a, d), found greedily within each slot of a
+// chunk (on the level-6 sphere 95 % of the faces): their corners go to the chunk's pairCorners
+// (four columns, in strided blocks as the faces), the rest stay in its faces.
+void pairFaces(Chunk& c) {
+    std::vector<std::array<int, 3>> single;
+    std::size_t singleSlotStart = 0;
+    const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
+    for (std::size_t slot = 0; slot < 2; ++slot) {
+        if (slot == 1) singleSlotStart = single.size();
+        std::unordered_map<std::uint64_t, std::size_t> byEdge;  // directed edge -> face
+        auto edgeKey = [](int u, int w) {
+            return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) | static_cast<std::uint32_t>(w);
+        };
+        for (std::size_t f = cut[slot]; f < cut[slot + 1]; ++f)
+            for (std::size_t e = 0; e < 3; ++e) byEdge.emplace(edgeKey(c.faces[f][e], c.faces[f][(e + 1) % 3]), f);
+        std::vector<bool> matched(c.faces.size(), false);
+        std::vector<std::array<int, 4>> pairs;
+        for (std::size_t f = cut[slot]; f < cut[slot + 1]; ++f) {
+            if (matched[f]) continue;
+            for (std::size_t e = 0; e < 3 && !matched[f]; ++e) {
+                const int u = c.faces[f][e], w = c.faces[f][(e + 1) % 3];
+                const auto other = byEdge.find(edgeKey(w, u));
+                if (other == byEdge.end() || other->second == f || matched[other->second]) continue;
+                const auto& g = c.faces[other->second];
+                int d = g[0];
+                for (int corner : g)
+                    if (corner != u && corner != w) d = corner;
+                pairs.push_back({u, w, c.faces[f][(e + 2) % 3], d});
+                matched[f] = matched[other->second] = true;
+            }
+            if (!matched[f]) single.push_back(c.faces[f]);
+        }
+        // In strided blocks, as the faces and springs (see the constructor).
+        std::vector<std::array<int, 4>> order;
+        std::size_t block = 0;
+        for (; block + kStridedBlock <= pairs.size(); block += kStridedBlock)
+            for (std::size_t r = 0; r < kStride; ++r)
+                for (std::size_t q = 0; q < kStridedBlock / kStride; ++q) order.push_back(pairs[block + q * kStride + r]);
+        for (; block < pairs.size(); ++block) order.push_back(pairs[block]);
+        c.pairCorners[slot].resize(4 * order.size());
+        for (std::size_t k = 0; k < order.size(); ++k)
+            for (std::size_t corner = 0; corner < 4; ++corner) c.pairCorners[slot][corner * order.size() + k] = order[k][corner];
+    }
+    c.faces = std::move(single);
+    c.slotStart = singleSlotStart;
+}
 
 }  // namespace
 
@@ -419,8 +309,9 @@ struct FloatSimulation::Impl {
     int n = 0;
     int dimension = 3;
     Eigen::VectorXd mass;
-    std::vector<float> invMass4;  // 4 per particle (0 on fixed particles and absent axes)
-    std::vector<float> weight4;   // gravity force rows
+    std::vector<float> invMass;   // per particle (0 on fixed particles)
+    std::vector<float> weightY;   // the weight's y component per particle
+    F4 axes{};                    // 1 on the body's axes, 0 on the others (and the pad)
     std::vector<Chunk> chunks;    // the chunks, then the shared springs and faces
     std::array<float, kSpringFamilyCount> stiffness{}, damping{};
     int perLayer = 0;  // particles per layer (the quads' outer offset)
@@ -434,11 +325,12 @@ struct FloatSimulation::Impl {
     std::vector<float> force4, gradient4;
     std::array<float, 2> pressureScaled{};  // P / 6 (P / 2 in 2D) per slot
     double stagePower = 0.0;                // the last evaluation's damping power [W]
+    bool stateSound = true;                 // finish found every particle finite and inside
     std::uint64_t evaluations = 0;
 
     std::unique_ptr<ThreadPool> pool;
     int threads = 1;
-    bool wide = false;  // the AVX2 passes
+    kernels::KernelSet simd = kernels::KernelSet::Portable;  // the passes: portable, AVX2 or AVX-512
 
     mutable Diagnostics diag;
     mutable bool measured = false;
@@ -462,7 +354,10 @@ struct FloatSimulation::Impl {
         float* f4 = force4.data();
         const std::array<float, 4> quadStiffness{stiffness[0], stiffness[0], stiffness[2], stiffness[2]}, quadDamping{damping[0], damping[0], damping[2], damping[2]};
 #ifdef SIMCORE_FLOAT_AVX2
-        if (wide) quads8(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
+        if (simd == kernels::KernelSet::Avx512)
+            avx512::quads(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
+        else if (simd == kernels::KernelSet::Avx2)
+            avx2::quads(c.quads, 0, c.quads.size(), perLayer, quadStiffness, quadDamping, px, pv, f4, c.power);
         else
 #endif
             for (std::size_t q = 0; q < c.quads.size(); ++q)
@@ -470,8 +365,12 @@ struct FloatSimulation::Impl {
         for (std::size_t f = 0; f < static_cast<std::size_t>(kSpringFamilyCount); ++f) {
             const std::size_t begin = c.familyStart[f], end = c.familyStart[f + 1];
 #ifdef SIMCORE_FLOAT_AVX2
-            if (wide) {
-                springs8(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
+            if (simd == kernels::KernelSet::Avx512) {
+                avx512::springs(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
+                continue;
+            }
+            if (simd == kernels::KernelSet::Avx2) {
+                avx2::springs(c.springs, begin, end, stiffness[f], damping[f], px, pv, f4, c.power);
                 continue;
             }
 #endif
@@ -481,9 +380,23 @@ struct FloatSimulation::Impl {
         float* g4 = gradient4.data();
         const std::array<std::size_t, 3> cut{0, c.slotStart, c.faces.size()};
         for (std::size_t slot = 0; slot < 2; ++slot) {
+            const std::vector<int>& pairs = c.pairCorners[slot];
+            const std::size_t pairCount = pairs.size() / 4;
 #ifdef SIMCORE_FLOAT_AVX2
-            if (wide && dimension == 3) {
-                faces8(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
+            if (simd == kernels::KernelSet::Avx512)
+                avx512::facePairs(pairs.data(), pairCount, 0, pairCount, px, g4, c.volume[slot]);
+            else if (simd == kernels::KernelSet::Avx2)
+                avx2::facePairs(pairs.data(), pairCount, 0, pairCount, px, g4, c.volume[slot]);
+            else
+#endif
+                for (std::size_t k = 0; k < pairCount; ++k) facePairScalar(pairs.data(), pairCount, 0, k, px, g4, c.volume[slot]);
+#ifdef SIMCORE_FLOAT_AVX2
+            if (simd == kernels::KernelSet::Avx512 && dimension == 3) {
+                avx512::faces(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
+                continue;
+            }
+            if (simd == kernels::KernelSet::Avx2 && dimension == 3) {
+                avx2::faces(c.faces, c.faceCorners.data(), c.faces.size(), cut[slot], cut[slot + 1], px, g4, c.volume[slot]);
                 continue;
             }
 #endif
@@ -492,16 +405,18 @@ struct FloatSimulation::Impl {
         }
     }
 
-    // Passes 1 and 2 at (px, pv): forces and gradients, damping power and pressures.
-    void springsAndFaces(const float* px, const float* pv) {
+    // Passes 1 and 2 at (px, pv): forces and gradients, damping power and pressures. Each
+    // chunk first runs `pending` (the previous evaluation's stage update, which writes the rows
+    // px and pv of this one) on its own particles and clears their force and gradient rows
+    // (the update has read them), then adds its springs and faces: a chunk's springs and faces
+    // read only its own particles, and the shared ones run after every chunk is done, so no
+    // separate update pass (and no pool run for it) is needed.
+    template <class Pending>
+    void springsAndFaces(const float* px, const float* pv, Pending&& pending) {
         const int owners = static_cast<int>(chunks.size()) - 1;
         auto task = [&](int t) {
             Chunk& c = chunks[static_cast<std::size_t>(t)];
-            for (auto [begin, end] : c.owned) {
-                const auto bytes = sizeof(float) * 4 * static_cast<std::size_t>(end - begin);
-                std::memset(force4.data() + 4 * static_cast<std::ptrdiff_t>(begin), 0, bytes);
-                if (gas) std::memset(gradient4.data() + 4 * static_cast<std::ptrdiff_t>(begin), 0, bytes);
-            }
+            for (auto [begin, end] : c.owned) pending(begin, end);
             accumulate(c, px, pv);
         };
         run(owners, task);
@@ -521,95 +436,163 @@ struct FloatSimulation::Impl {
     }
 
     // Pass 3: the force on particle i (its weight, its springs, its gas), times its inverse mass.
-    F4 acceleration(int i) const {
-        F4 f = row(weight4.data(), i) + row(force4.data(), i);
-        if (gas) f += splat(pressureScaled[particleSlot[static_cast<std::size_t>(i)]]) * row(gradient4.data(), i);
-        return f * row(invMass4.data(), i);
+    // The accelerations of the last evaluation, with what they need in locals (the update
+    // loops then keep them in registers: a store to a row could otherwise alias any of them);
+    // each particle's force and gradient rows are cleared once read, so they are zero between
+    // evaluations and between steps.
+    struct Accelerations {
+        float* f4;
+        float* g4;
+        const float* weightY;
+        const float* invMass;
+        const std::uint8_t* slot;
+        std::array<float, 2> pressure;
+        bool gas;
+        F4 axes;
+        F4 take(int i) const {
+            const auto k = static_cast<std::size_t>(i);
+            F4 f = F4{0.0f, weightY[k], 0.0f, 0.0f} + row(f4, i);
+            setRow(f4, i, F4{});
+            if (gas) {
+                f += splat(pressure[slot[k]]) * row(g4, i);
+                setRow(g4, i, F4{});
+            }
+            // (f * m^-1) * 1 is f * m^-1, and (f * m^-1) * 0 the signed zero f * 0 gives: the
+            // same bits as a row of m^-1 with 0 on the absent axes.
+            return (f * splat(invMass[k])) * axes;
+        }
+    };
+    Accelerations accelerations() {
+        return {force4.data(), gradient4.data(), weightY.data(), invMass.data(), particleSlot.data(), pressureScaled, gas, axes};
     }
 
+    // The evaluation's stage update as a pending update of particles [begin, end):
+    // update(i, v_i, a_i), with v_i the row of the evaluation's velocities pv and a_i from its
+    // forces. The update (a lambda capturing by value) is copied to a local for the loop.
     template <class Update>
-    void evaluate(const float* px, const float* pv, Update&& update) {
-        springsAndFaces(px, pv);
-        auto task = [&](int t) {
-            const int begin = t * kParticleTask, end = std::min(n, begin + kParticleTask);
-            for (int i = begin; i < end; ++i) update(i, row(pv, i), acceleration(i));
+    auto stage(const float* pv, const Update& update) {
+        return [this, pv, &update](int begin, int end) {
+            const Accelerations acc = accelerations();
+            const Update local = update;
+            for (int i = begin; i < end; ++i) local(i, row(pv, i), acc.take(i));
         };
-        run(particleTasks(), task);
+    }
+
+    // One evaluation at (px, pv) whose stage update runs with the next pass (the next
+    // evaluation's chunk pass, or finish): returns that update.
+    template <class Pending, class Update>
+    auto evaluate(const float* px, const float* pv, Pending&& pending, const Update& update) {
+        springsAndFaces(px, pv, pending);
+        return stage(pv, update);
+    }
+
+    // The step's last update and the check of the state (finite, inside the walls) in one
+    // pool run over pieces of particles; sets stateSound.
+    template <class Pending>
+    void finish(Pending&& pending) {
+        std::array<std::uint8_t, 64> pieceOk{};
+        const int pieces = std::min<int>(particleTasks(), static_cast<int>(pieceOk.size()));
+        auto task = [&](int t) {
+            const int per = (n + pieces - 1) / pieces, begin = t * per, end = std::min(n, begin + per);
+            pending(begin, end);
+            pieceOk[static_cast<std::size_t>(t)] = sound(begin, end) ? 1 : 0;
+        };
+        run(pieces, task);
+        stateSound = true;
+        for (int t = 0; t < pieces; ++t) stateSound = stateSound && pieceOk[static_cast<std::size_t>(t)] != 0;
     }
 
     void step(std::string_view integrator, float h, double hd) {
         float* X = x.data();
         float* V = v.data();
+        const auto none = [](int, int) {};  // the rows are clear at the start of a step
         if (integrator == "euler") {
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto update = [=](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi);
                 setRow(V, i, vi + splat(h) * ai);
-            });
+            };
+            finish(evaluate(X, V, none, update));
             removed += hd * stagePower;
         } else if (integrator == "symplectic-euler") {
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto update = [=](int i, F4 vi, F4 ai) {
                 const F4 vn = vi + splat(h) * ai;
                 setRow(V, i, vn);
                 setRow(X, i, row(X, i) + splat(h) * vn);
-            });
+            };
+            finish(evaluate(X, V, none, update));
             removed += hd * stagePower;
         } else if (integrator == "verlet") {
             const float half = 0.5f * h, hh = 0.5f * h * h;
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto first = [=](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi + splat(hh) * ai);
                 setRow(V, i, vi + splat(half) * ai);
-            });
+            };
+            auto second = [=](int i, F4 vi, F4 ai) { setRow(V, i, vi + splat(half) * ai); };
+            auto pending = evaluate(X, V, none, first);
             const double p1 = stagePower;
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) { setRow(V, i, vi + splat(half) * ai); });
+            finish(evaluate(X, V, pending, second));
             removed += 0.5 * hd * (p1 + stagePower);
         } else if (integrator == "midpoint") {
             float* XT = xt.data();
             float* VT = vt.data();
             const float half = 0.5f * h;
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
+            auto first = [=](int i, F4 vi, F4 ai) {
                 setRow(XT, i, row(X, i) + splat(half) * vi);
                 setRow(VT, i, vi + splat(half) * ai);
-            });
-            evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
+            };
+            auto second = [=](int i, F4 vi, F4 ai) {
                 setRow(X, i, row(X, i) + splat(h) * vi);
                 setRow(V, i, row(V, i) + splat(h) * ai);
-            });
-            removed += hd * stagePower;
-        } else {  // rk4
-            float* XT = xt.data();
-            float* VT = vt.data();
-            float* XA = xa.data();
-            float* VA = va.data();
-            const float sixth = h / 6.0f, third = h / 3.0f, half = 0.5f * h;
-            evaluate(X, V, [&](int i, F4 vi, F4 ai) {
-                const F4 xi = row(X, i);
-                setRow(XA, i, xi + splat(sixth) * vi);
-                setRow(VA, i, vi + splat(sixth) * ai);
-                setRow(XT, i, xi + splat(half) * vi);
-                setRow(VT, i, vi + splat(half) * ai);
-            });
-            double power = stagePower;
-            auto middle = [&](float c) {
-                evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
-                    setRow(XA, i, row(XA, i) + splat(third) * vi);
-                    setRow(VA, i, row(VA, i) + splat(third) * ai);
-                    setRow(XT, i, row(X, i) + splat(c) * vi);
-                    setRow(VT, i, row(V, i) + splat(c) * ai);
-                });
-                power += 2.0 * stagePower;
             };
-            middle(half);
-            middle(h);
-            evaluate(XT, VT, [&](int i, F4 vi, F4 ai) {
-                setRow(X, i, row(XA, i) + splat(sixth) * vi);
-                setRow(V, i, row(VA, i) + splat(sixth) * ai);
-            });
-            power += stagePower;
-            removed += hd / 6.0 * power;
+            auto pending = evaluate(X, V, none, first);
+            finish(evaluate(XT, VT, pending, second));
+            removed += hd * stagePower;
+        } else {
+            rk4(h, hd);
         }
     }
 
-    // Finite, and inside the walls; the reason when not.
+    // One RK4 step: four evaluations, each stage's update run with the next pass.
+    void rk4(float h, double hd) {
+        float* X = x.data();
+        float* V = v.data();
+        const auto none = [](int, int) {};  // the rows are clear at the start of a step
+        float* XT = xt.data();
+        float* VT = vt.data();
+        float* XA = xa.data();
+        float* VA = va.data();
+        const float sixth = h / 6.0f, third = h / 3.0f, half = 0.5f * h;
+        auto first = [=](int i, F4 vi, F4 ai) {
+            const F4 xi = row(X, i);
+            setRow(XA, i, xi + splat(sixth) * vi);
+            setRow(VA, i, vi + splat(sixth) * ai);
+            setRow(XT, i, xi + splat(half) * vi);
+            setRow(VT, i, vi + splat(half) * ai);
+        };
+        auto middle = [&](float c) {
+            return [=](int i, F4 vi, F4 ai) {
+                setRow(XA, i, row(XA, i) + splat(third) * vi);
+                setRow(VA, i, row(VA, i) + splat(third) * ai);
+                setRow(XT, i, row(X, i) + splat(c) * vi);
+                setRow(VT, i, row(V, i) + splat(c) * ai);
+            };
+        };
+        auto second = middle(half), thirdUpdate = middle(h);
+        auto last = [=](int i, F4 vi, F4 ai) {
+            setRow(X, i, row(XA, i) + splat(sixth) * vi);
+            setRow(V, i, row(VA, i) + splat(sixth) * ai);
+        };
+        auto pending1 = evaluate(X, V, none, first);
+        double power = stagePower;
+        auto pending2 = evaluate(XT, VT, pending1, second);
+        power += 2.0 * stagePower;
+        auto pending3 = evaluate(XT, VT, pending2, thirdUpdate);
+        power += 2.0 * stagePower;
+        finish(evaluate(XT, VT, pending3, last));
+        power += stagePower;
+        removed += hd / 6.0 * power;
+    }
+
     // Whether particles [begin, end) are finite and inside the walls (branch-free: the step's
     // common case is that they are).
     bool sound(int begin, int end) const {
@@ -629,17 +612,10 @@ struct FloatSimulation::Impl {
 
     // The reason the state is unusable, or "": checked in parallel pieces, the first bad
     // particle found again serially for the message.
+    // The reason the state is unusable, or "": finish checked it in parallel pieces; the first
+    // bad particle is found again serially for the message.
     std::string check() {
-        bool ok = true;
-        std::array<std::uint8_t, 64> pieceOk{};
-        const int pieces = std::min<int>(particleTasks(), static_cast<int>(pieceOk.size()));
-        auto task = [&](int t) {
-            const int per = (n + pieces - 1) / pieces, begin = t * per, end = std::min(n, begin + per);
-            pieceOk[static_cast<std::size_t>(t)] = sound(begin, end) ? 1 : 0;
-        };
-        run(pieces, task);
-        for (int t = 0; t < pieces; ++t) ok = ok && pieceOk[static_cast<std::size_t>(t)] != 0;
-        if (ok) return "";
+        if (stateSound) return "";
         for (int i = 0; i < n; ++i) {
             const F4 xi = row(x.data(), i), vi = row(v.data(), i);
             for (int axis = 0; axis < 3; ++axis) {
@@ -720,16 +696,14 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
     s.low = model.contact.low;
     s.high = model.contact.high;
     const auto n = static_cast<std::size_t>(s.n);
-    s.invMass4.assign(4 * n, 0.0f);
-    s.weight4.assign(4 * n, 0.0f);
+    s.invMass.assign(n, 0.0f);
+    s.weightY.assign(n, 0.0f);
     for (std::size_t i = 0; i < n; ++i) {
         const bool fixed = i < start.body().fixed.size() && start.body().fixed[i];
-        const float inv = fixed ? 0.0f : static_cast<float>(1.0 / s.mass[static_cast<Eigen::Index>(i)]);
-        s.invMass4[4 * i + 1] = inv;
-        if (s.dimension >= 2) s.invMass4[4 * i] = inv;
-        if (s.dimension == 3) s.invMass4[4 * i + 2] = inv;
-        s.weight4[4 * i + 1] = static_cast<float>(0.0 - s.mass[static_cast<Eigen::Index>(i)] * s.params.gravity);
+        s.invMass[i] = fixed ? 0.0f : static_cast<float>(1.0 / s.mass[static_cast<Eigen::Index>(i)]);
+        s.weightY[i] = static_cast<float>(0.0 - s.mass[static_cast<Eigen::Index>(i)] * s.params.gravity);
     }
+    s.axes = F4{s.dimension >= 2 ? 1.0f : 0.0f, 1.0f, s.dimension == 3 ? 1.0f : 0.0f, 0.0f};
     // Chunks by particle ownership (as ForceModel: vertex k of each layer in chunk 0 when
     // k < n/2; one chunk below ForceModel::kChunkThreshold springs); a spring or face whose
     // particles are not all one chunk's is shared.
@@ -777,8 +751,7 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
             const auto outer = structuralAt.find(key(A, B)), s1 = shearAt.find(key(A, b)), s2 = shearAt.find(key(B, a));
             if (outer == structuralAt.end() || s1 == shearAt.end() || s2 == shearAt.end()) continue;
             if (inQuad[structural][outer->second] || inQuad[shear][s1->second] || inQuad[shear][s2->second]) continue;
-            Chunk* c = chunkOf({a, b, A, B});
-            if (c == &s.chunks.back()) continue;  // shared: the quads run inside the chunks only
+            Chunk* c = chunkOf({a, b, A, B});  // the shared ones too: fewer loads on the serial stretch
             inQuad[structural][k] = inQuad[structural][outer->second] = true;
             inQuad[shear][s1->second] = inQuad[shear][s2->second] = true;
             c->quads.a.push_back(a);
@@ -851,6 +824,9 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
                 }
             }
         }
+        // 3D: faces sharing an edge go in pairs (pairFaces).
+        if (s.dimension == 3)
+            for (Chunk& c : s.chunks) pairFaces(c);
         for (Chunk& c : s.chunks) {
             // The faces of each slot in strided blocks, as the springs below (consecutive faces
             // share corners).
@@ -882,7 +858,9 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
     s.force4.assign(4 * n, 0.0f);
     s.gradient4.assign(4 * n, 0.0f);
 #ifdef SIMCORE_FLOAT_AVX2
-    s.wide = kernels::kernelsInUse() != kernels::KernelSet::Portable && haveAvx2();
+    // The kernel set in use (kernels::useKernels never picks one the CPU lacks: AVX-512 means
+    // avx512f, which has AVX2 with it).
+    s.simd = haveAvx2() ? kernels::kernelsInUse() : kernels::KernelSet::Portable;
 #endif
     s.measure(s.diag);
     s.diag.hasGas = s.gas;
