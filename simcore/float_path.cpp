@@ -32,6 +32,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "simcore/failure_texts.h"
 #include "simcore/force_kernels.h"
 #include "simcore/forces.h"
 #include "simcore/internal/compensated_time.h"
@@ -620,11 +621,10 @@ struct FloatSimulation::Impl {
             const F4 xi = row(x.data(), i), vi = row(v.data(), i);
             for (int axis = 0; axis < 3; ++axis) {
                 if (!std::isfinite(xi[axis]) || !std::isfinite(vi[axis]))
-                    return "the state is no longer finite (particle " + std::to_string(i) + ")";
+                    return failure_text::floatNotFinite(static_cast<std::size_t>(i));
                 const double c = xi[axis];
                 if (c < low[static_cast<std::size_t>(axis)] || c > high[static_cast<std::size_t>(axis)])
-                    return "particle " + std::to_string(i) +
-                           " reached a wall: the float path has no contact (use precision double)";
+                    return failure_text::floatReachedWall(static_cast<std::size_t>(i));
             }
         }
         return "";
