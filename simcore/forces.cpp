@@ -561,8 +561,8 @@ void ForceModel::evaluateMotion(const double* x, const double* v, const double* 
 }
 
 void ForceModel::evaluateMotionDeferred(const double* x, const double* v, const double* invMass3, double* xdot,
-                                        double* a, ForceExtras& extras, bool count) {
-    evaluateInto(x, v, invMass3, xdot, a, extras, count, nullptr, true);
+                                        double* a, ForceExtras& extras, bool count, const TaskRef* beside) {
+    evaluateInto(x, v, invMass3, xdot, a, extras, count, nullptr, true, beside);
 }
 
 bool ForceModel::finishMotion(const RangeWork* then) {
@@ -577,7 +577,8 @@ bool ForceModel::finishMotion(const RangeWork* then) {
 // stage, which lastStage runs now or later) over the same padded buffers and per-chunk sums;
 // read top to bottom it is the algorithm of docs/architecture.md.
 void ForceModel::evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
-                              double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer) {
+                              double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer,
+                              const TaskRef* beside) {
     finishMotion();  // a held-back last stage first: its buffers are about to be overwritten
     const Topology& topo = *m_topology;
     extras = ForceExtras{};
@@ -639,6 +640,7 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
         } else if (barrier) {
             mine.contactEnergy += layerBarrierForces(m_parts[k].barrier, topo.dimension, contact.stiffness, x, g4, f4);
         }
+        if (beside) (*beside)(c);
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
     accumulatePart(m_parts[kChunks], x, v, f4, g4, sums[kChunks]);
