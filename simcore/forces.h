@@ -291,6 +291,10 @@ private:
     std::array<std::vector<std::pair<int, int>>, kChunks> m_ownedRanges;  // particle ranges per chunk
     kernels::AlignedBuffer m_force4;                  // forces, padded (4N)
     kernels::AlignedBuffer m_gradient4;               // dV/dx of each particle's layer, padded (4N)
+    // 3D bodies whose particles each lie on one surface of their own layer: dV/dx gathered
+    // per corner (kernels::vertexGradients), each chunk writing its own particles' rows
+    // whole. Empty otherwise (2D, or another shape): the faces add into cleared rows.
+    kernels::VertexFans m_fans;
     std::vector<std::uint8_t> m_contactFree;          // 1 where a particle feels wall contact
     LayerBarrierSet m_barrierAll;                     // every pair, in pair order
 };
