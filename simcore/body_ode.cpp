@@ -19,8 +19,19 @@ void BodyOde::derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd
 
 bool BodyOde::takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const RangeWork* then) {
     // Offered to one call only: a first stage elsewhere than at the measured state withdraws it.
-    if (!std::exchange(m_offered, false)) return false;
-    if (&y != m_endAt) return false;
+    Eigen::VectorXd* saveTo = std::exchange(m_saveTo, nullptr);
+    const bool offered = std::exchange(m_offered, false);
+    if (!offered || &y != m_endAt) {
+        if (saveTo) *saveTo = *m_endAt;  // not written yet (offerEnd's contract)
+        return false;
+    }
+    // The save rides on the pool run below: each range of y copied before `then` writes it.
+    auto saving = [&y, saveTo, caller = then](Eigen::Index begin, Eigen::Index length) {
+        saveTo->segment(begin, length) = y.segment(begin, length);
+        if (caller) (*caller)(begin, length);
+    };
+    const RangeWork savingWork(saving);
+    if (saveTo) then = &savingWork;
     dydt.swap(m_end);  // no copy: the two buffers trade places (the cache is spent)
     m_extras = m_endExtras;
     m_forces.countReusedEvaluation();
@@ -55,12 +66,12 @@ void BodyOde::runPieces(TaskRef task) {
         task(0);
 }
 
-const ForceExtras& BodyOde::measureEnd(const Eigen::VectorXd& y) {
+const ForceExtras& BodyOde::measureEnd(const Eigen::VectorXd& y, const TaskRef* beside) {
     // Its last stage (the unpadding of a = F/m and xdot = v) is held back: the next step's
     // first stage runs it in its own pool run (takeOffered), one run per step fewer.
     const Eigen::Index n = positions();
     m_forces.evaluateMotionDeferred(y.data(), y.data() + n, m_invMass.data(), m_end.data(), m_end.data() + n,
-                                    m_endExtras, false);
+                                    m_endExtras, false, beside);
     m_end[2 * n] = m_endExtras.dampingPower;
     m_end[2 * n + 1] = m_endExtras.contactPower;
     m_endAt = &y;

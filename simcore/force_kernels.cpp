@@ -175,6 +175,45 @@ double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end,
     return portable::triangleBlock(surface, begin, end, x, g4);
 }
 
+double vertexGradients(const VertexFans& fans, int begin, int end, const double* x, double* g4) {
+#if SIMCORE_AVX2_KERNELS
+    if (kernelsInUse() >= KernelSet::Avx2) return avx2::vertexGradients(fans, begin, end, x, g4);
+#endif
+    return portable::vertexGradients(fans, begin, end, x, g4);
+}
+
+VertexFans vertexFans(const Topology& topology) {
+    VertexFans fans;
+    if (topology.dimension != 3 || topology.surfaces.empty()) return fans;
+    const auto n = static_cast<std::size_t>(topology.particleCount());
+    std::vector<std::vector<std::array<int, 2>>> around(n);
+    for (const Surface& s : topology.surfaces)
+        for (auto [a, b, c] : s.triangles) {
+            around[static_cast<std::size_t>(a)].push_back({b, c});
+            around[static_cast<std::size_t>(b)].push_back({c, a});
+            around[static_cast<std::size_t>(c)].push_back({a, b});
+        }
+    fans.start.assign(n + 1, 0);
+    fans.ring6.assign(n, 0);
+    for (std::size_t v = 0; v < n; ++v) {
+        std::vector<std::array<int, 2>>& fan = around[v];
+        // A walk around v from its first triangle: the pair whose p is the last q, while one
+        // is found (a closed fan comes back to the start; an open one keeps its order).
+        for (std::size_t k = 1; k < fan.size(); ++k) {
+            const auto next = std::find_if(fan.begin() + static_cast<std::ptrdiff_t>(k), fan.end(),
+                                           [&](const std::array<int, 2>& pq) { return pq[0] == fan[k - 1][1]; });
+            if (next == fan.end()) break;
+            std::iter_swap(fan.begin() + static_cast<std::ptrdiff_t>(k), next);
+        }
+        bool closed = fan.size() == 6;
+        for (std::size_t k = 0; closed && k < fan.size(); ++k) closed = fan[k][1] == fan[(k + 1) % fan.size()][0];
+        fans.ring6[v] = closed ? 1 : 0;
+        fans.pair.insert(fans.pair.end(), fan.begin(), fan.end());
+        fans.start[v + 1] = static_cast<int>(fans.pair.size());
+    }
+    return fans;
+}
+
 void unpad(const double* f4, const double* g4, double p, const double* invMass3, int begin, int end,
            double* out) {
 #if SIMCORE_AVX2_KERNELS

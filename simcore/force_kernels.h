@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -101,6 +102,27 @@ QuadSums quadBlock(const QuadSet& quads, std::size_t begin, std::size_t end, int
 // summed in lanes like springBlock.
 double triangleBlock(const Surface& surface, std::size_t begin, std::size_t end, const double* x,
                      double* g4);
+
+// Each particle's fan on a closed 3D surface: the triangles around it, each turned so that the
+// particle comes first, (v, p, q), kept as the pair (p, q) in the order of a walk around v
+// (q of one pair is p of the next) where the fan closes.
+struct VertexFans {
+    std::vector<int> start;                   // particle v's pairs: [start[v], start[v + 1])
+    std::vector<std::array<int, 2>> pair;
+    std::vector<std::uint8_t> ring6;          // 1: six pairs that close in order (most vertices)
+    bool empty() const { return start.empty(); }
+};
+// The fans of a topology's surfaces (3D; empty otherwise).
+VertexFans vertexFans(const Topology& topology);
+
+// The volume gradient gathered per corner: for particles [begin, end), row v of g4 is
+// *written* (not added to) with dV/dx_v = (sum over the fan, in order, of (p - x_v) x (q - x_v)) / 6:
+// the same terms triangleBlock adds, each triangle's cross product taken from the corner that
+// receives it and summed in a row in registers, one store per particle instead of one
+// read-modify-write per triangle and corner. Returns the sum of x_v . (6 dV/dx_v) in four
+// interleaved lanes (particle begin + k in lane k mod 4): three times x_a.(x_b x x_c) of each
+// triangle whose corners are all in the range, i.e. 18 times their volume.
+double vertexGradients(const VertexFans& fans, int begin, int end, const double* x, double* g4);
 
 // Particles [begin, end) from the padded buffers to the 3-per-particle layout:
 // out = f4 + p g4 (without g4 when it is nullptr), times invMass3 when that is given.

@@ -189,7 +189,24 @@ ForceModel::ForceModel(const Topology* topology, const Eigen::VectorXd* mass, Te
     partition();
     const auto n4 = static_cast<std::size_t>(4 * topology->particleCount());
     m_force4 = kernels::AlignedBuffer(n4);
-    if (terms.has(Term::Gas)) m_gradient4 = kernels::AlignedBuffer(n4);
+    if (terms.has(Term::Gas)) {
+        m_gradient4 = kernels::AlignedBuffer(n4);
+        // Per corner only when each particle lies on at most one surface, of its own layer
+        // (each owned range then sums into one layer's volume).
+        std::vector<int> on(static_cast<std::size_t>(topology->particleCount()), -1);
+        bool own = topology->dimension == 3;
+        for (std::size_t s = 0; own && s < topology->surfaces.size(); ++s) {
+            const Surface& surface = topology->surfaces[s];
+            for (const auto& tri : surface.triangles)
+                for (int p : tri) {
+                    int& seen = on[static_cast<std::size_t>(p)];
+                    own = own && (seen < 0 || seen == static_cast<int>(s)) &&
+                          layerSlot(topology->layer[static_cast<std::size_t>(p)]) == layerSlot(surface.layer);
+                    seen = static_cast<int>(s);
+                }
+        }
+        if (own) m_fans = kernels::vertexFans(*topology);
+    }
 }
 
 void ForceModel::partition() {
@@ -440,6 +457,17 @@ void ForceModel::accumulatePart(const Part& part, const double* x, const double*
 
 void ForceModel::accumulateGas(const Part& part, const double* x, double* g4, Sums& sums) const {
     using kernels::kBlock;
+    if (!m_fans.empty()) {
+        // Per corner: a chunk writes its own particles' rows whole (the shared part has none).
+        const auto chunk = static_cast<std::size_t>(&part - m_parts.data());
+        if (chunk >= static_cast<std::size_t>(m_chunks)) return;
+        for (auto [begin, end] : m_ownedRanges[chunk]) {
+            if (begin == end) continue;
+            const auto slot = static_cast<std::size_t>(layerSlot(m_topology->layer[static_cast<std::size_t>(begin)]));
+            sums.volume[slot] += kernels::vertexGradients(m_fans, begin, end, x, g4);
+        }
+        return;
+    }
     for (const Surface& s : part.surfaces) {
         // The unscaled gradient dV/dx goes to g4; P = c / V is known only once every part's
         // volume is summed, and scales it afterwards.
@@ -469,7 +497,7 @@ kernels::PaddedRows ForceModel::computeVolumeGradient(const double* x) {
     std::array<Sums, kChunks + 1> sums{};
     double* g4 = m_gradient4.data();
     runChunks([&](int c) {
-        clearGradient(c);
+        if (m_fans.empty()) clearGradient(c);
         accumulateGas(m_parts[static_cast<std::size_t>(c)], x, g4, sums[static_cast<std::size_t>(c)]);
     });
     accumulateGas(m_parts[kChunks], x, g4, sums[kChunks]);
@@ -561,8 +589,8 @@ void ForceModel::evaluateMotion(const double* x, const double* v, const double* 
 }
 
 void ForceModel::evaluateMotionDeferred(const double* x, const double* v, const double* invMass3, double* xdot,
-                                        double* a, ForceExtras& extras, bool count) {
-    evaluateInto(x, v, invMass3, xdot, a, extras, count, nullptr, true);
+                                        double* a, ForceExtras& extras, bool count, const TaskRef* beside) {
+    evaluateInto(x, v, invMass3, xdot, a, extras, count, nullptr, true, beside);
 }
 
 bool ForceModel::finishMotion(const RangeWork* then) {
@@ -577,7 +605,8 @@ bool ForceModel::finishMotion(const RangeWork* then) {
 // stage, which lastStage runs now or later) over the same padded buffers and per-chunk sums;
 // read top to bottom it is the algorithm of docs/architecture.md.
 void ForceModel::evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
-                              double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer) {
+                              double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer,
+                              const TaskRef* beside) {
     finishMotion();  // a held-back last stage first: its buffers are about to be overwritten
     const Topology& topo = *m_topology;
     extras = ForceExtras{};
@@ -619,7 +648,7 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
             // beyond a wall (nearly always none); only then the contact pass.
             if (walls && !paired && anyOutsideWalls(contact, x, begin, end)) wallForces(mine, begin, end);
         }
-        if (gas) clearGradient(c);
+        if (gas && m_fans.empty()) clearGradient(c);
         accumulatePart(m_parts[k], x, v, f4, g4, mine);
         if (paired) {
             const int perLayer = topo.particleCount() / 2;
@@ -639,6 +668,7 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
         } else if (barrier) {
             mine.contactEnergy += layerBarrierForces(m_parts[k].barrier, topo.dimension, contact.stiffness, x, g4, f4);
         }
+        if (beside) (*beside)(c);
     });
     // Stage 2: the elements shared between chunks, on this thread, in a fixed order.
     accumulatePart(m_parts[kChunks], x, v, f4, g4, sums[kChunks]);
@@ -669,7 +699,10 @@ void ForceModel::evaluateInto(const double* x, const double* v, const double* in
     if (gas) {
         for (const Surface& s : topo.surfaces) {
             const auto slot = static_cast<std::size_t>(layerSlot(s.layer));
-            const double volume = topo.dimension == 2 ? 0.5 * volumeSum[slot] : volumeSum[slot] / 6.0;
+            // The sums are 2A (2D), 6V (3D, by faces) or 18V (3D, per corner: each face thrice).
+            const double volume = topo.dimension == 2 ? 0.5 * volumeSum[slot]
+                                  : m_fans.empty()    ? volumeSum[slot] / 6.0
+                                                      : volumeSum[slot] / 18.0;
             extras.volume[slot] = volume;
             last.pressure[slot] = volume > 0.0 ? params.gasConstant[slot] / volume : 0.0;
             extras.pressure[slot] = last.pressure[slot];

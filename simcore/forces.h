@@ -177,8 +177,10 @@ public:
     // over them shares the run), or before anything else uses the force buffers (any other
     // evaluation), whichever comes first; v and invMass3 must then still be there.
     // dropMotion() forgets it (the caller's buffers are about to change or go away).
+    // `beside`, when given, is called with each chunk's index at the end of that chunk's task
+    // in the first pool run (work that only reads: the step's scan).
     void evaluateMotionDeferred(const double* x, const double* v, const double* invMass3, double* xdot, double* a,
-                                ForceExtras& extras, bool count = true);
+                                ForceExtras& extras, bool count = true, const TaskRef* beside = nullptr);
     // Writes the held-back xdot and a (with `then` on their ranges, as evaluateMotion's);
     // false when nothing is held back.
     bool finishMotion(const RangeWork* then = nullptr);
@@ -227,7 +229,8 @@ private:
     // evaluate() and evaluateMotion(): out = F (invMass3 == nullptr) or F * invMass3, and
     // xdot = v when xdot is given.
     void evaluateInto(const double* x, const double* v, const double* invMass3, double* xdot,
-                      double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer = false);
+                      double* out, ForceExtras& extras, bool count, const RangeWork* then, bool defer = false,
+                      const TaskRef* beside = nullptr);
     // An evaluation's last stage (unpadding, xdot = v, the pointer's particle, `then`): what it
     // needs besides the padded buffers.
     struct LastStage {
@@ -288,6 +291,10 @@ private:
     std::array<std::vector<std::pair<int, int>>, kChunks> m_ownedRanges;  // particle ranges per chunk
     kernels::AlignedBuffer m_force4;                  // forces, padded (4N)
     kernels::AlignedBuffer m_gradient4;               // dV/dx of each particle's layer, padded (4N)
+    // 3D bodies whose particles each lie on one surface of their own layer: dV/dx gathered
+    // per corner (kernels::vertexGradients), each chunk writing its own particles' rows
+    // whole. Empty otherwise (2D, or another shape): the faces add into cleared rows.
+    kernels::VertexFans m_fans;
     std::vector<std::uint8_t> m_contactFree;          // 1 where a particle feels wall contact
     LayerBarrierSet m_barrierAll;                     // every pair, in pair order
 };

@@ -19,6 +19,8 @@ namespace {
 // Base with the stage vectors every explicit method shares.
 class ExplicitBase : public Integrator {
 public:
+    // Every one below evaluates at y first.
+    bool startsAtState() const override { return true; }
     void prepare(const StateLayout& layout) override {
         m_layout = layout;
         const Eigen::Index n = layout.size();

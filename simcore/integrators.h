@@ -188,6 +188,9 @@ public:
     virtual bool adaptive() const { return false; }
     // Uses the Jacobians of OdeSystem: no explicit stability limit.
     virtual bool implicit() const { return false; }
+    // Its step's first call is derivative() at y itself, before anything writes y (the
+    // simulation then lets that call save y for a failed step: BodyOde::offerEnd).
+    virtual bool startsAtState() const { return false; }
     virtual void prepare(const StateLayout& layout) = 0;
     virtual StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) = 0;
     // The state or the system (parameters, pointer) changed outside the integrator since its

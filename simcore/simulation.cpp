@@ -154,7 +154,7 @@ bool Simulation::step(double until) {
     if (m_profiling) ++m_profile.steps;
     StepWork w(m_diag, until);
     // The stages in their order (Stage); each returns false when the step ends there.
-    return inStage(Stage::Save, [&] { return save(); }) &&
+    return inStage(Stage::Save, [&] { return save(w); }) &&
            inStage(Stage::Size, [&] { return size(w); }) &&
            inStage(Stage::Integrate, [&] { return integrate(w); }) &&
            inStage(Stage::Scan, [&] { return scan(w); }) &&
@@ -165,7 +165,11 @@ bool Simulation::step(double until) {
            inStage(Stage::Commit, [&] { return commit(w); });
 }
 
-bool Simulation::save() {
+bool Simulation::save(StepWork& w) {
+    // Later, in the first stage's pool run, when that stage takes the kept end-of-step
+    // forces (BodyOde::offerEnd): integrators that evaluate at y before writing it.
+    w.saveLater = m_reuseEndForces && m_ode->endValid() && !usesStepDoubling() && m_integrator->startsAtState();
+    if (w.saveLater) return true;
     inPieces([&](int, int begin, int end) {
         // x and v of the piece's particles; the last piece also takes the energy accounts.
         const Eigen::Index b = 3 * begin, l = 3 * (end - begin);
@@ -195,14 +199,15 @@ bool Simulation::size(StepWork& w) {
 }
 
 bool Simulation::integrate(StepWork& w) {
-    m_ode->offerEnd();
+    m_ode->offerEnd(w.saveLater ? &m_lastGood : nullptr);
     if (m_restartIntegrator) {
         m_integrator->restart();
         m_restartIntegrator = false;
     }
     w.report = usesStepDoubling() ? m_doubling.step(*m_integrator, *m_ode, w.t0, w.h, m_y)
                                   : m_integrator->step(*m_ode, w.t0, w.h, m_y);
-    m_ode->withdrawEnd();
+    if (m_ode->withdrawEnd())
+        throw std::logic_error(std::string(m_integrator->name()) + " wrote its state before evaluating it (startsAtState)");
     m_jacobianProducts += static_cast<std::uint64_t>(w.report.jacobianProducts);
     m_lastError = usesStepDoubling() ? m_doubling.localError() : nullptr;
     if (w.report.failure) {
@@ -216,14 +221,17 @@ bool Simulation::integrate(StepWork& w) {
 }
 
 bool Simulation::scan(StepWork& w) {
-    w.scan = scanState();
+    // Only the projection's collide stage reads the scan before the measurement: otherwise
+    // the measurement's force evaluation takes it in its first pool run.
+    w.scanLater = m_reuseEndForces && !(m_contactProjection && m_forces.terms().has(Term::Collisions));
+    if (!w.scanLater) w.scan = scanState();
     return true;
 }
 
 bool Simulation::measure(StepWork& w) {
     // One measurement serves the checks, the diagnostics and the energy after the contacts.
     // (w.next starts as a copy of the run's diagnostics: the accumulated accounts go on.)
-    measureState(w.next, w.scan);
+    measureState(w.next, w.scan, w.scanLater);
     return true;
 }
 

@@ -4,14 +4,18 @@
 // A step is a fixed list of named stages (Stage), run in this order by step(); each is one
 // short function, and StepProfile times them when asked (setProfiling; `bench --stages`):
 //
-//   save        keep the state the step starts from (put back if the step fails)
+//   save        keep the state the step starts from (put back if the step fails); when the
+//               integrator's first stage takes the kept end-of-step forces, that stage's
+//               pool run copies it, range by range before its stage sums write them
 //   size        the step h: dt, or what an adaptive method proposed, so that no particle
 //               crosses a tenth of the box, shortened to land on `until`
 //   integrate   the integrator (inside StepDoubling when its error is estimated) calls
 //               BodyOde::derivative() once per stage (body_ode.h):
 //                 gravity, wall contact -> springs -> gas -> layer barrier -> pointer
 //                 -> a = F / m -> its stage sums   (contact = force: contact.h)
-//   scan        one pass: finiteness, extent, kinetic and gravity energy, fastest speed
+//   scan        one pass: finiteness, extent, kinetic and gravity energy, fastest speed;
+//               when nothing before the measurement needs it (contact as a force), it runs
+//               inside the measurement's first pool run instead
 //   collide     contact = projection only (the thesis program): box planes, project back,
 //               v_n -> -e v_n (the energy this changes is booked as removed)
 //   measure     one force evaluation at the end state (BodyOde::measureEnd): energies,
@@ -304,6 +308,9 @@ private:
         double fastest = 0.0;               // largest particle speed [m/s]
     };
     Scan scanState() const;
+    // scanState's parts: one piece's particles [begin, end), and the pieces combined in order.
+    Scan scanPiece(int begin, int end) const;
+    Scan combineScans(const std::array<Scan, ForceModel::kChunks>& pieces) const;
 
     // --- the step's stages (simulation.cpp; collide and constrain: simulation_contacts.cpp) ---
     // What the stages of one step hand on to each other.
@@ -315,6 +322,11 @@ private:
         bool clamped = false;               // h was shortened to land on `until`
         StepReport report;                  // the integrator's
         Scan scan;                          // of the state as it stands
+        // The save and the scan done later, inside pool runs a step makes anyway (fewer runs
+        // per step, the same bits): the save by the integrator's first stage, the scan by the
+        // measurement's force evaluation.
+        bool saveLater = false;
+        bool scanLater = false;
         Diagnostics next;                   // the step's diagnostics, the run's once it stands
         std::optional<double> beforeContacts;  // total energy before a contact stage changed the state [J]
     };
@@ -328,7 +340,7 @@ private:
         return goOn;
     }
     // The stages (false: the step failed there and ends).
-    bool save();
+    bool save(StepWork& w);
     bool size(StepWork& w);
     bool integrate(StepWork& w);
     bool scan(StepWork& w);
@@ -371,7 +383,8 @@ private:
     double totalEnergyNow() const;
     // The energies and volumes by the end-of-step force evaluation (BodyOde::measureEnd) when
     // its derivative is kept for the next step, else by their own passes (measureByPasses).
-    void measureState(Diagnostics& d, const Scan& scan);
+    // With scanToo, scan is taken too (inside the evaluation's pool run when it can be).
+    void measureState(Diagnostics& d, Scan& scan, bool scanToo = false);
     void measureByPasses(Diagnostics& d, const Scan& scan) const;
     void fillDiagnostics(Diagnostics& d, const std::array<double, kSpringFamilyCount>& spring,
                          const std::array<double, 2>& volume, double contact, const Scan& scan) const;

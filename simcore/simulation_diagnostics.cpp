@@ -38,57 +38,74 @@ void Simulation::measureByPasses(Diagnostics& d, const Scan& scan) const {
                     m_forces.contactEnergy(m_y.data()), scan);
 }
 
-void Simulation::measureState(Diagnostics& d, const Scan& scan) {
+void Simulation::measureState(Diagnostics& d, Scan& scan, bool scanToo) {
     if (!m_reuseEndForces) {
+        if (scanToo) scan = scanState();
         measureByPasses(d, scan);
         return;
     }
     // One uncounted force evaluation yields the energies and volumes, and f at this state,
-    // which the next step's first stage takes instead of evaluating it again.
-    const ForceExtras& extras = m_ode->measureEnd(m_y);
+    // which the next step's first stage takes instead of evaluating it again. With scanToo,
+    // the scan's pieces run in the evaluation's own pool run (each chunk's task scans piece c
+    // as inPieces would: the same ranges, combined in the same order, so the same bits).
+    std::array<Scan, kPiecesMax> pieces;
+    auto scanPieces = [&](int piece) {
+        const int n = particleCount(), count = m_forces.chunks();
+        pieces[static_cast<std::size_t>(piece)] = scanPiece(n * piece / count, n * (piece + 1) / count);
+    };
+    const TaskRef beside(scanPieces);
+    const ForceExtras& extras = m_ode->measureEnd(m_y, scanToo ? &beside : nullptr);
+    if (scanToo) scan = combineScans(pieces);
     fillDiagnostics(d, extras.springEnergy, extras.volume, extras.contactEnergy, scan);
 }
 
 Simulation::Scan Simulation::scanState() const {
+    std::array<Scan, kPiecesMax> pieces;
+    inPieces([&](int piece, int begin, int end) { pieces[static_cast<std::size_t>(piece)] = scanPiece(begin, end); });
+    return combineScans(pieces);
+}
+
+Simulation::Scan Simulation::scanPiece(int begin, int end) const {
     const double* x = m_y.data();
     const double* v = m_y.data() + m_n;
     const double* inv = m_invMass3.data();
     const bool weighs = m_forces.terms().has(Term::Gravity);
     const double g = m_forces.params.gravity;
     const double infinity = std::numeric_limits<double>::infinity();
-    std::array<Scan, kPiecesMax> pieces;
-    inPieces([&](int piece, int begin, int end) {
-        Scan s;
-        s.low.setConstant(infinity);
-        s.high.setConstant(-infinity);
-        // (x - x) + (v - v) is 0 for finite coordinates and NaN otherwise: summed, it tells
-        // whether all are finite without a branch per coordinate.
-        double nonFinite = 0.0;
-        double kinetic = 0.0, gravity = 0.0, fastest2 = 0.0;
-        for (int i = begin; i < end; ++i) {
-            for (int axis = 0; axis < 3; ++axis) {
-                const int k = 3 * i + axis;
-                nonFinite += (x[k] - x[k]) + (v[k] - v[k]);
-                // Only moving coordinates (not a fixed particle's, not an axis the body does
-                // not move in) count for the extent.
-                const bool moves = inv[k] != 0.0;
-                s.low[axis] = std::min(s.low[axis], moves ? x[k] : infinity);
-                s.high[axis] = std::max(s.high[axis], moves ? x[k] : -infinity);
-            }
-            const Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
-            const double speed2 = vi.squaredNorm();
-            fastest2 = std::max(fastest2, speed2);
-            if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
-            const double m = m_body.mass[i];
-            kinetic += 0.5 * m * speed2;
-            if (weighs) gravity += m * g * x[3 * i + 1];
+    Scan s;
+    s.low.setConstant(infinity);
+    s.high.setConstant(-infinity);
+    // (x - x) + (v - v) is 0 for finite coordinates and NaN otherwise: summed, it tells
+    // whether all are finite without a branch per coordinate.
+    double nonFinite = 0.0;
+    double kinetic = 0.0, gravity = 0.0, fastest2 = 0.0;
+    for (int i = begin; i < end; ++i) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const int k = 3 * i + axis;
+            nonFinite += (x[k] - x[k]) + (v[k] - v[k]);
+            // Only moving coordinates (not a fixed particle's, not an axis the body does
+            // not move in) count for the extent.
+            const bool moves = inv[k] != 0.0;
+            s.low[axis] = std::min(s.low[axis], moves ? x[k] : infinity);
+            s.high[axis] = std::max(s.high[axis], moves ? x[k] : -infinity);
         }
-        s.finite = nonFinite == 0.0;
-        s.kinetic = kinetic;
-        s.gravity = gravity;
-        s.fastest = std::sqrt(fastest2);
-        pieces[static_cast<std::size_t>(piece)] = s;
-    });
+        const Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
+        const double speed2 = vi.squaredNorm();
+        fastest2 = std::max(fastest2, speed2);
+        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
+        const double m = m_body.mass[i];
+        kinetic += 0.5 * m * speed2;
+        if (weighs) gravity += m * g * x[3 * i + 1];
+    }
+    s.finite = nonFinite == 0.0;
+    s.kinetic = kinetic;
+    s.gravity = gravity;
+    s.fastest = std::sqrt(fastest2);
+    return s;
+}
+
+Simulation::Scan Simulation::combineScans(const std::array<Scan, kPiecesMax>& pieces) const {
+    const double infinity = std::numeric_limits<double>::infinity();
     Scan total;
     total.low.setConstant(infinity);
     total.high.setConstant(-infinity);

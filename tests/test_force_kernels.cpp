@@ -5,6 +5,7 @@
 // the one degenerate spring must be counted once.
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -12,6 +13,7 @@
 #include "kernel_inputs.h"
 #include "simcore/force_kernels.h"
 #include "simcore/forces.h"
+#include "simcore/simulation.h"
 
 using namespace simcore;
 namespace kernels = simcore::kernels;
@@ -158,6 +160,61 @@ private slots:
             }
         }
         QVERIFY(compared > 0);
+    }
+
+    // The volume gradient gathered per corner (kernels::vertexGradients) on a real two-layer
+    // sphere (level 2: 60 corners of six triangles and 6 of four per layer), its state
+    // perturbed: every set writes the same rows and returns the same sum, bit for bit, for
+    // ranges starting and ending at every offset (the four-particle groups, the ones with a
+    // four-triangle fan, the remainders); and the rows are the triangles' own gradients
+    // (triangleBlock, added triangle by triangle) and the sum three times theirs, to round-off.
+    void vertexGradientsAreTheTrianglesGathered() {
+        ParameterSet p(SceneKind::Sphere3d);
+        p.set(Param::Subdivisions, 2);
+        const Simulation sim(p, "rk4");
+        const Topology& topo = sim.body().topology;
+        const int n = topo.particleCount();
+        const kernels::VertexFans fans = kernels::vertexFans(topo);
+        QCOMPARE(int(fans.ring6.size()), n);
+        QCOMPARE(int(std::count(fans.ring6.begin(), fans.ring6.end(), 1)), n - 12);
+        std::vector<double> x(sim.state().data(), sim.state().data() + 3 * n);
+        std::mt19937 random(7);
+        std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+        for (double& c : x) c += jitter(random) + 0.3;  // off the origin too
+        // The triangles' gradients and sums (each layer alone: its particles are one range).
+        kernels::useKernels(kernels::KernelSet::Portable);
+        std::vector<double> byFaces(4 * std::size_t(n), 0.0);
+        double faces6 = 0.0;
+        for (const Surface& s : topo.surfaces)
+            faces6 += kernels::triangleBlock(s, 0, s.triangles.size(), x.data(), byFaces.data());
+        double scale = 0.0;
+        for (double g : byFaces) scale = std::max(scale, std::abs(g));
+        int compared = 0;
+        for (int begin : {0, 1, 2, 3, 5}) {
+            for (int end : {n, n - 1, n - 2, n - 3}) {
+                std::vector<Outcome> outcomes;
+                for (kernels::KernelSet set : {kernels::KernelSet::Portable, kernels::KernelSet::Avx2, kernels::KernelSet::Avx512}) {
+                    if (set > kernels::widestKernels()) continue;
+                    QCOMPARE(kernels::useKernels(set), set);
+                    Outcome r;
+                    r.rows.assign(4 * std::size_t(n), -7.0);  // written, not added to
+                    r.sums = {kernels::vertexGradients(fans, begin, end, x.data(), r.rows.data())};
+                    outcomes.push_back(r);
+                }
+                for (std::size_t k = 1; k < outcomes.size(); ++k, ++compared)
+                    QVERIFY2(outcomes[k] == outcomes[0], qPrintable(QStringLiteral("set %1, particles %2-%3").arg(k).arg(begin).arg(end)));
+                const Outcome& r = outcomes[0];
+                for (int i = 0; i < n; ++i)
+                    for (int a = 0; a < 4; ++a) {
+                        const std::size_t k = 4 * std::size_t(i) + std::size_t(a);
+                        const double expected = i >= begin && i < end ? (a < 3 ? byFaces[k] : 0.0) : -7.0;
+                        QVERIFY2(std::abs(r.rows[k] - expected) <= 1e-13 * scale,
+                                 qPrintable(QStringLiteral("particle %1 axis %2: %3 against %4").arg(i).arg(a).arg(r.rows[k]).arg(expected)));
+                    }
+                if (begin == 0 && end == n) QVERIFY(std::abs(r.sums[0] - 3.0 * faces6) <= 1e-12 * std::abs(faces6));
+            }
+        }
+        if (compared == 0) QWARN("this build or CPU has only the portable kernels: the sets were not compared");
     }
 
     // Portable against a plain per-spring computation: the lane code over double (a block's

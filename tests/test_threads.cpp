@@ -186,6 +186,22 @@ private slots:
         QVERIFY(c.soloRuns <= c.runs);
     }
 
+    // A step's pool runs with two threads (each a join where the caller may wait): RK4 with the
+    // kept end-of-step forces makes 8 per step: the first stage's (its held-back unpadding, the
+    // stage sums and the save), two for each of the other three stages, and the measurement's
+    // (the forces' chunks and the scan). One more is a save or a scan on its own again.
+    void rk4StepMakesEightPoolRuns() {
+        Simulation sim(level4Sphere(), "rk4");
+        sim.setThreads(2);
+        QCOMPARE(sim.threads(), 2);
+        QVERIFY(sim.step());  // the first step has no kept forces yet
+        const ThreadPool* pool = sim.forces().pool();
+        QVERIFY(pool != nullptr);
+        const std::uint64_t before = pool->counters().runs;
+        for (int i = 0; i < 10; ++i) QVERIFY(sim.step());
+        QCOMPARE(pool->counters().runs - before, std::uint64_t{80});
+    }
+
     // Which thread runs a chunk, a stalled worker and the caller's runs alone never change a
     // result: the double and the float path step a level-4 sphere with one thread and with two
     // (the worker stalled every fifth task it takes) to the same bits.

@@ -26,6 +26,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -69,7 +70,9 @@ public:
     // One uncounted evaluation at y, the state a step ended in: returns its by-products (the
     // outer layer's volume gradient stays in the force model until the next evaluation). Its
     // derivative is kept for the step that starts from y once keepEnd() says the step stands.
-    const ForceExtras& measureEnd(const Eigen::VectorXd& y);
+    // `beside`, when given, is called with each chunk's index inside the evaluation's first
+    // pool run (work that reads y only: the step's scan).
+    const ForceExtras& measureEnd(const Eigen::VectorXd& y, const TaskRef* beside = nullptr);
     // Sizes the cache for states of `size` (when the body is built: nothing is allocated in a
     // step) and drops it.
     void prepareEnd(Eigen::Index size) {
@@ -85,11 +88,21 @@ public:
     bool endValid() const { return m_endValid; }
     // For the integrator step about to run: its first derivative() at the measured state takes
     // the kept derivative (once); withdrawEnd() after the step. The cache is then spent.
-    void offerEnd() {
+    // With saveTo, the step's first derivative() also copies the measured state y into
+    // *saveTo: in its own pool run, each range before `then` may write it, when it takes the
+    // kept derivative; else plainly before it evaluates. For integrators whose first
+    // derivative() is at y, before anything writes y (Integrator::startsAtState).
+    void offerEnd(Eigen::VectorXd* saveTo = nullptr) {
         m_offered = m_endValid;
         m_endValid = false;
+        m_saveTo = saveTo;
     }
-    void withdrawEnd() { m_offered = false; }
+    // Returns true when a save asked by offerEnd was not done (no derivative() was called:
+    // the integrator broke the contract above).
+    bool withdrawEnd() {
+        m_offered = false;
+        return std::exchange(m_saveTo, nullptr) != nullptr;
+    }
     // The kept derivative and by-products, to checkpoint a run; restoreEnd puts them back as
     // measured at y (Simulation::snapshot, restore).
     const Eigen::VectorXd& endDerivative() const;
@@ -134,6 +147,7 @@ private:
     const Eigen::VectorXd* m_endAt = nullptr;
     bool m_endValid = false;   // kept: the state has not changed since it was measured
     bool m_offered = false;    // offered to the integrator step now running
+    Eigen::VectorXd* m_saveTo = nullptr;  // where the first derivative() copies y (offerEnd)
 
     // Linearisation point and its gas data (sized once, reused every step).
     Eigen::VectorXd m_x, m_mass;
