@@ -4,7 +4,10 @@
 # threads, alone and beside `stress-ng --cpu 1` and `--cpu 2`, in double and float, for one or
 # more builds of elastic-lab-cli measured in alternated rounds (A B, B A, A B, ...). Prints one
 # table row per (load, build, precision): steps/s with 1 and 2 threads and the paired ratio
-# 2 / 1 (each round's two runs side by side), medians and ranges, and the state hashes seen.
+# 2 / 1 (each round's two runs side by side), medians and ranges, every round's ratio (worst
+# first), the share of the 2-thread runs' pool runs the caller ran alone and, for a build whose
+# pool judges alone against together by trials, its trials and how many one thread won
+# (ELASTIC_LAB_POOL_STATS; the pool on main has no trials: 0), and the state hashes seen.
 #
 #   bench/threads-beside-stress.sh [--rounds N] [--steps N] [--loads "0 1 2"]
 #       [--precisions "double float"] [--kernels avx2] [--raw FILE] CLI [CLI ...]
@@ -93,8 +96,15 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 clis = sys.argv[2:]
 def fmt(v): return f"{statistics.median(v):.0f} ({min(v):.0f}-{max(v):.0f})"
 def fmtr(v): return f"{statistics.median(v):.2f} ({min(v):.2f}-{max(v):.2f})"
-print("| beside | build | precision | 1 thread, steps/s | 2 threads, steps/s | 2 / 1, paired | state hash |")
-print("|---|---|---|---|---|---|---|")
+import re
+def pool(field):
+    # the 2-thread run's pools (ELASTIC_LAB_POOL_STATS): runs, runs alone, trials, won alone
+    runs = alone = trials = won = 0
+    for m in re.finditer(r"(\d+) runs; (\d+) alone", field): runs += int(m[1]); alone += int(m[2])
+    for m in re.finditer(r"(\d+) trials \(alone won (\d+)\)", field): trials += int(m[1]); won += int(m[2])
+    return runs, alone, trials, won
+print("| beside | build | precision | 1 thread, steps/s | 2 threads, steps/s | 2 / 1, paired | 2 / 1, each round | 2 threads: runs alone, trials (won alone) | state hash |")
+print("|---|---|---|---|---|---|---|---|---|")
 for load in dict.fromkeys(r["load"] for r in rows):
     for b in dict.fromkeys(r["build"] for r in rows):
         for p in dict.fromkeys(r["precision"] for r in rows):
@@ -107,5 +117,9 @@ for load in dict.fromkeys(r["load"] for r in rows):
             ratio = [v["2"] / v["1"] for v in by.values() if "1" in v and "2" in v]
             hashes = ",".join(sorted({r["state_hash"] for r in sel}))
             beside = "nothing" if load == "0" else f"stress-ng --cpu {load}"
-            print(f"| {beside} | {clis[int(b)]} | {p} | {fmt(one)} | {fmt(two)} | **{fmtr(ratio)}** | {hashes} |")
+            acc = [pool(r.get("pool") or "") for r in sel if r["threads"] == "2"]
+            runs, alone, trials, won = (sum(a[k] for a in acc) for k in range(4))
+            share = f"{100 * alone / runs:.0f} %, {trials} ({won})" if runs else "-"
+            rounds = ", ".join(f"{x:.2f}" for x in sorted(ratio))  # worst first
+            print(f"| {beside} | {clis[int(b)]} | {p} | {fmt(one)} | {fmt(two)} | **{fmtr(ratio)}** | {rounds} | {share} | {hashes} |")
 EOF
