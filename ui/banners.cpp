@@ -70,16 +70,16 @@ Banners::Banners(QWidget* parent, QVBoxLayout* column, SimulationController* con
 void Banners::showFrame(const Frame& frame) { m_failure->showFrame(frame); }
 
 void Banners::showStabilityAdvice(const SceneData& scene) {
-    m_suggestedDt = scene.suggestedDt;
-    if (scene.suggestedDt <= 0.0) {
+    m_suggestedDt = scene.suggestedDt();
+    if (m_suggestedDt <= 0.0) {
         m_stability->hide();
         return;
     }
     // Said before the run goes on (the worker has paused it): a finer mesh has faster modes,
     // so an explicit method needs a smaller DT (docs/numerics.md, "Resolution").
     m_stabilityText->setText(tr("<b>This body is likely unstable at the current DT.</b> %1. The run is paused.")
-                                 .arg(scene.stabilityAdvice ? adviceSentence(*scene.stabilityAdvice).toHtmlEscaped() : QString()));
-    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(num(scene.suggestedDt)));
+                                 .arg(adviceSentence(*scene.stabilityAdvice).toHtmlEscaped()));
+    m_useSuggestedDt->setText(tr("Use DT = %1 s").arg(num(m_suggestedDt)));
     m_stability->show();
 }
 

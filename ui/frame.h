@@ -45,10 +45,10 @@ struct SceneData {
     // resolution under its scaling (simcore::bodyValuesText).
     QString bodyValues;
     // The pre-run check of lane 0's explicit method at the current DT (simlab::stabilityAdvice):
-    // the warning (said in the window's language when shown: failure_text.h) and a step
-    // predicted stable; none / 0 when DT is fine.
+    // the warning (said in the window's language when shown: failure_text.h) with a step
+    // predicted stable (its suggestedDt); none when DT is fine.
     std::optional<simlab::StabilityAdvice> stabilityAdvice;
-    double suggestedDt = 0.0;             // [s]
+    double suggestedDt() const { return stabilityAdvice ? stabilityAdvice->suggestedDt : 0.0; }  // [s]; 0: none
     // A scene of several bodies (simcore::World): the topology above is every body's, side by
     // side (particles renumbered as the world's); each body's particles [first, first + count)
     // and kind. Empty for one body.

@@ -114,11 +114,8 @@ void SimWorker::afterRebuild() {
         QString::fromStdString(simcore::bodyValuesText(m_params, simcore::bodyValues(m_params, sim.body())));
     // A rebuild can make the current DT unstable for the chosen method (a finer mesh has faster
     // modes): say so before it runs, with a step the same estimate predicts stable.
-    if (auto advice = simlab::stabilityAdvice(sim)) {
-        scene->stabilityAdvice = *advice;
-        scene->suggestedDt = advice->suggestedDt;
-    }
-    const bool unstable = scene->suggestedDt > 0.0;
+    scene->stabilityAdvice = simlab::stabilityAdvice(sim);
+    const bool unstable = scene->suggestedDt() > 0.0;
     m_scene = std::move(scene);
     m_until = -1.0;
     startHistory();
