@@ -217,19 +217,30 @@ private slots:
         FloatSimulation floatTwo(two);
         floatTwo.setThreads(2);
         QCOMPARE(floatTwo.threads(), 2);
-        for (int i = 0; i < 40; ++i) QVERIFY(one.step());
-        for (int i = 0; i < 40; ++i) QVERIFY(floatOne.step());
+        // Two threads step at least 40 times and on until the worker has taken a chunk (on a
+        // busy machine a worker may not be scheduled at all for a few milliseconds); one
+        // thread then steps as many times.
+        int doubleSteps = 0, floatSteps = 0;
         {
             HookGuard hook(stallSomeWorkerTasks);
             g_workerTasks.store(0);
             g_stallEvery.store(5);
-            for (int i = 0; i < 40; ++i) QVERIFY(two.step());
+            constexpr int kMostSteps = 100000;
+            while (doubleSteps < 40 || (g_workerTasks.load() == 0 && doubleSteps < kMostSteps)) {
+                QVERIFY(two.step());
+                ++doubleSteps;
+            }
             const int doubleWorkerTasks = g_workerTasks.load();
-            for (int i = 0; i < 40; ++i) QVERIFY(floatTwo.step());
+            while (floatSteps < 40 || (g_workerTasks.load() == doubleWorkerTasks && floatSteps < kMostSteps)) {
+                QVERIFY(floatTwo.step());
+                ++floatSteps;
+            }
             g_stallEvery.store(0);
             QVERIFY2(doubleWorkerTasks > 0, "the worker took no chunk of the double path");
             QVERIFY2(g_workerTasks.load() > doubleWorkerTasks, "the worker took no chunk of the float path");
         }
+        for (int i = 0; i < doubleSteps; ++i) QVERIFY(one.step());
+        for (int i = 0; i < floatSteps; ++i) QVERIFY(floatOne.step());
         const Eigen::VectorXd& a = one.state();
         const Eigen::VectorXd& b = two.state();
         QCOMPARE(a.size(), b.size());
