@@ -380,19 +380,26 @@ SpectrumPoints spectrumPoints(const LinearModes& modes) {
     return points;
 }
 
+bool StepMargin::limitingIsReal() const { return std::abs(limiting.imag()) <= 1e-9 * std::abs(limiting); }
+
+Complex StepMargin::limitingPoint() const {
+    const double tiny = 1e-9 * std::abs(limiting);
+    return dt * Complex(std::abs(limiting.real()) <= tiny ? 0.0 : limiting.real(), limitingIsReal() ? 0.0 : limiting.imag());
+}
+
 std::string stepMarginText(const StepMargin& margin) {
     using Case = StepMargin::Case;
     char text[400], mode[160] = "";
-    const double h = margin.dt, limit = margin.factor * margin.dt;
+    const double limit = margin.factor * margin.dt;
     // predictedStableStep's basis for the oscillator methods: the exact step matrix up to
     // kExactStepLimit free coordinates, else each mode with its modal damping.
     const char* basis = margin.exactStepMatrix ? "exact step matrix" : "per mode, modal damping";
     const char* which = margin.limitingIsFastest ? "the fastest mode" : "the mode";
-    if (margin.hasLimiting && std::abs(margin.limiting.imag()) <= 1e-9 * std::abs(margin.limiting))
-        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g, a pure decay)", which, h * margin.limiting.real());
+    const Complex z = margin.limitingPoint();
+    if (margin.hasLimiting && margin.limitingIsReal())
+        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g, a pure decay)", which, z.real());
     else if (margin.hasLimiting)
-        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g ± %.3gi)", which, h * margin.limiting.real(),
-                      std::abs(h * margin.limiting.imag()));
+        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g ± %.3gi)", which, z.real(), std::abs(z.imag()));
     else
         std::snprintf(mode, sizeof mode, "the fastest mode");
     switch (margin.kind) {

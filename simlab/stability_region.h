@@ -131,6 +131,10 @@ struct StepMargin {
     bool oscillator = false;         // RegionKind::Oscillator: the step matrix's margin, no point named
     bool exactStepMatrix = false;    // oscillator: its basis, the exact step matrix (else per mode, modal damping)
     bool limitingIsFastest = false;  // the limiting point is the fastest counted mode
+    // The limiting point h·lambda as the words give it: a real or imaginary part below round-off
+    // (1e-9 of |lambda|; an undamped mode's -1.7e-16) is 0, so the sentence reads "0 ± 0.0849i".
+    std::complex<double> limitingPoint() const;
+    bool limitingIsReal() const;  // a pure decay (no imaginary part beyond round-off)
 };
 // text from the parts: "DT can grow 2.30× (to 0.0123 s) before the fastest mode (hλ = ...) ...".
 std::string stepMarginText(const StepMargin& margin);

@@ -537,8 +537,8 @@ private slots:
             if (m.kind == Case::Outside) numbers << num(1.0 / m.factor, 'f', 2) << num(m.factor * m.dt, 'g', 3);
             // The limiting mode is named where DT meets the region's edge (or never gets inside).
             const bool named = m.hasLimiting && (m.kind == Case::CanGrow || m.kind == Case::Outside || m.kind == Case::NoStableDt);
-            if (named) numbers << num(m.dt * m.limiting.real(), 'g', 3);
-            if (named && m.limiting.imag() != 0.0) numbers << num(std::abs(m.dt * m.limiting.imag()), 'g', 3);
+            if (named) numbers << num(m.limitingPoint().real(), 'g', 3);
+            if (named && !m.limitingIsReal()) numbers << num(std::abs(m.limitingPoint().imag()), 'g', 3);
             if (m.kind == Case::OwnStep) numbers << QString::fromStdString(m.integrator);
             const QString sentence = marginSentence(m);
             check(QStringLiteral("%1 margin (%2)").arg(QString::fromStdString(m.integrator)).arg(int(m.kind)), sentence, m.text, numbers);

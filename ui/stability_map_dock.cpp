@@ -68,8 +68,8 @@ QFont smaller(const QFont& font) {
 // The mode that limits DT (R methods), as simlab::stepMarginText names it.
 QString limitingMode(const simlab::StepMargin& m) {
     if (!m.hasLimiting) return StabilityMapDock::tr("the fastest mode");
-    const Complex z = m.dt * m.limiting;
-    if (std::abs(m.limiting.imag()) <= 1e-9 * std::abs(m.limiting))
+    const Complex z = m.limitingPoint();
+    if (m.limitingIsReal())
         return (m.limitingIsFastest ? StabilityMapDock::tr("the fastest mode (hλ = %1, a pure decay)")
                                     : StabilityMapDock::tr("the mode (hλ = %1, a pure decay)"))
             .arg(num(z.real(), 'g', 3));
