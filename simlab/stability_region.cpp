@@ -140,12 +140,6 @@ Curve mirroredCurve(double x0, double x1, int samples, const std::function<doubl
 // phi in [0, pi] (upper half plane, mirrored), the first exit from the region (rayExit), a
 // star-shaped curve: what DT scaling, which moves every point along its ray, can reach.
 // Rays that never leave within `extent` are clipped there.
-static std::string limitText(const std::string& integrator) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", rayExit(integrator, Complex(0.0, 1.0), 100.0));
-    return text;
-}
-
 static std::vector<Curve> rayBoundary(const std::string& integrator, double extent, int samples) {
     Curve upper;
     const int rays = std::max(90, samples / 4);
@@ -254,47 +248,104 @@ double rayExit(const std::string& integrator, Complex z, double sMax) {
     return lo;
 }
 
+RegionNoteParts regionNoteParts(const std::string& integrator) {
+    using Kind = RegionNoteParts::Kind;
+    RegionNoteParts parts;
+    if (integrator == "euler" || integrator == "midpoint" || integrator == "rk4") {
+        parts.kind = Kind::TaylorPolynomial;
+        parts.imaginaryReach = integrator == "rk4" ? 2.0 * std::numbers::sqrt2 : 0.0;
+    } else if (integrator == "rk45") {
+        parts.kind = Kind::DormandPrince;
+    } else if (integrator == "implicit-euler") {
+        parts.kind = Kind::ImplicitEuler;
+    } else if (integrator == "symplectic-euler") {
+        parts.kind = Kind::SymplecticEuler;
+    } else if (integrator == "verlet") {
+        parts.kind = Kind::Verlet;
+    } else if (integrator == "yoshida4" || integrator == "yoshida8") {
+        parts.kind = Kind::Composition;
+        parts.substeps = integrator == "yoshida4" ? 3 : 15;
+        parts.forceEvaluations = parts.substeps + 1;
+        parts.undampedLimit = rayExit(integrator, Complex(0.0, 1.0), 100.0);
+    } else if (integrator == "cvode-bdf") {
+        parts.kind = Kind::CvodeBdf;
+    } else if (integrator == "cvode-adams") {
+        parts.kind = Kind::CvodeAdams;
+    } else if (integrator == "xpbd") {
+        parts.kind = Kind::Xpbd;
+    }
+    return parts;
+}
+
 std::string regionNote(const std::string& integrator) {
-    if (integrator == "euler" || integrator == "midpoint" || integrator == "rk4")
-        return "Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches "
-               "the imaginary axis " +
-               std::string(integrator == "rk4" ? "up to ±2.83i: undamped modes are stable up to hω = 2√2"
-                                                : "only at 0: an undamped mode grows for every DT") +
-               ".";
-    if (integrator == "rk45")
-        return "Region: |R(hλ)| ≤ 1 for Dormand–Prince's 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a "
-               "fixed step. The adaptive run picks its own step from the error tolerance: it does not blow up, it "
-               "takes smaller steps.";
-    if (integrator == "implicit-euler")
-        return "Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| < 1, the whole left half-plane "
-               "(A-stable): no DT limit from stability.";
-    if (integrator == "symplectic-euler")
-        return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the "
-               "modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin "
-               "uses the step matrix, not the picture.";
-    if (integrator == "verlet")
-        return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the "
-               "half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). "
-               "Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.";
-    if (integrator == "yoshida4" || integrator == "yoshida8")
-        return "Region: no scalar R; the step is a product of " + std::string(integrator == "yoshida4" ? "3" : "15") +
-               " Verlet substeps (some backwards), drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ "
-               "(damping at the half-kick velocity, as the integrator does), traced ray by ray from 0. Undamped "
-               "modes: hω ≤ " + limitText(integrator) +
-               " (a step costs " + std::string(integrator == "yoshida4" ? "4" : "16") +
-               " force evaluations). The margin uses the step matrix, not the picture.";
-    if (integrator == "cvode-bdf")
-        return "No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, "
-               "BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT "
-               "limit, DT is only the output interval.";
-    if (integrator == "cvode-adams")
-        return "No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions are small "
-               "(explicit-like); CVODE keeps the internal step inside them by its error test: no DT limit, stiff bodies "
-               "only cost steps.";
-    if (integrator == "xpbd")
-        return "No region: XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally stable, no "
-               "region in the hλ plane; large DT costs accuracy (the body turns soft), not stability.";
+    using Kind = RegionNoteParts::Kind;
+    const RegionNoteParts parts = regionNoteParts(integrator);
+    char text[600];
+    switch (parts.kind) {
+        case Kind::TaylorPolynomial:
+            if (parts.imaginaryReach > 0.0)
+                std::snprintf(text, sizeof text,
+                              "Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it "
+                              "touches the imaginary axis up to ±%.3gi: undamped modes are stable up to hω = 2√2.",
+                              parts.imaginaryReach);
+            else
+                std::snprintf(text, sizeof text,
+                              "Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it "
+                              "touches the imaginary axis only at 0: an undamped mode grows for every DT.");
+            return text;
+        case Kind::DormandPrince:
+            return "Region: |R(hλ)| ≤ 1 for Dormand–Prince's 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a "
+                   "fixed step. The adaptive run picks its own step from the error tolerance: it does not blow up, it "
+                   "takes smaller steps.";
+        case Kind::ImplicitEuler:
+            return "Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| < 1, the whole left half-plane "
+                   "(A-stable): no DT limit from stability.";
+        case Kind::SymplecticEuler:
+            return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the "
+                   "modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin "
+                   "uses the step matrix, not the picture.";
+        case Kind::Verlet:
+            return "Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the "
+                   "half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). "
+                   "Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.";
+        case Kind::Composition:
+            std::snprintf(text, sizeof text,
+                          "Region: no scalar R; the step is a product of %d Verlet substeps (some backwards), drawn for an "
+                          "oscillator mode whose eigenvalue pair is hλ, hλ̄ (damping at the half-kick velocity, as the "
+                          "integrator does), traced ray by ray from 0. Undamped modes: hω ≤ %.3g (a step costs %d force "
+                          "evaluations). The margin uses the step matrix, not the picture.",
+                          parts.substeps, parts.undampedLimit, parts.forceEvaluations);
+            return text;
+        case Kind::CvodeBdf:
+            return "No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are "
+                   "A-stable, BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode "
+                   "threatens: no DT limit, DT is only the output interval.";
+        case Kind::CvodeAdams:
+            return "No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions "
+                   "are small (explicit-like); CVODE keeps the internal step inside them by its error test: no DT limit, "
+                   "stiff bodies only cost steps.";
+        case Kind::Xpbd:
+            return "No region: XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally "
+                   "stable, no region in the hλ plane; large DT costs accuracy (the body turns soft), not stability.";
+        case Kind::Unknown: break;
+    }
     return "No stability region for " + integrator + ".";
+}
+
+std::string spectrumMethodText(const SpectrumPoints& points) {
+    const std::string count = std::to_string(points.count);
+    switch (points.kind) {
+        case SpectrumPoints::Method::Exact:
+            return "exact spectrum: all " + count + " eigenvalues of the linearised first-order system (dense eigen-solve)";
+        case SpectrumPoints::Method::Modal:
+            return "modal: all " + count +
+                   " modes of M⁻¹K (symmetric eigen-solve), damping c = φᵀ(M⁻¹D)φ per mode; λ = −c/2 ± i√(ω² − c²/4)";
+        case SpectrumPoints::Method::Iterative: break;
+    }
+    return "iterative: " + count + " Ritz values of the first-order system, Arnoldi (" +
+           std::to_string(points.arnoldiSteps) + " steps) on the Jacobian products, " +
+           std::to_string(points.freeCoordinates) +
+           " free coordinates: the extreme eigenvalues (largest |λ|) are accurate, inner ones are not";
 }
 
 SpectrumPoints spectrumPoints(const LinearModes& modes) {
@@ -302,8 +353,9 @@ SpectrumPoints spectrumPoints(const LinearModes& modes) {
     if (!modes.eigenvalues.empty()) {
         points.lambda = modes.eigenvalues;
         points.method = "exact";
-        points.methodText = "exact spectrum: all " + std::to_string(modes.eigenvalues.size()) +
-                            " eigenvalues of the linearised first-order system (dense eigen-solve)";
+        points.kind = SpectrumPoints::Method::Exact;
+        points.count = modes.eigenvalues.size();
+        points.methodText = spectrumMethodText(points);
         return points;
     }
     for (std::size_t i = 0; i < modes.omega2.size(); ++i) {
@@ -314,27 +366,87 @@ SpectrumPoints spectrumPoints(const LinearModes& modes) {
     }
     if (modes.dense) {
         points.method = "modal";
-        points.methodText = "modal: all " + std::to_string(modes.omega2.size()) +
-                            " modes of M⁻¹K (symmetric eigen-solve), damping c = φᵀ(M⁻¹D)φ per mode; λ = −c/2 ± "
-                            "i√(ω² − c²/4)";
+        points.kind = SpectrumPoints::Method::Modal;
+        points.count = modes.omega2.size();
     } else {
         points.method = "iterative";
+        points.kind = SpectrumPoints::Method::Iterative;
         points.lambda = modes.ritzValues;
-        points.methodText = "iterative: " + std::to_string(modes.ritzValues.size()) +
-                            " Ritz values of the first-order system, Arnoldi (" + std::to_string(modes.arnoldiSteps) +
-                            " steps) on the Jacobian products, " + std::to_string(modes.freeCoordinates) +
-                            " free coordinates: the extreme eigenvalues (largest |λ|) are accurate, inner ones are not";
+        points.count = modes.ritzValues.size();
+        points.arnoldiSteps = modes.arnoldiSteps;
+        points.freeCoordinates = modes.freeCoordinates;
     }
+    points.methodText = spectrumMethodText(points);
     return points;
+}
+
+bool StepMargin::limitingIsReal() const { return std::abs(limiting.imag()) <= 1e-9 * std::abs(limiting); }
+
+Complex StepMargin::limitingPoint() const {
+    const double tiny = 1e-9 * std::abs(limiting);
+    return dt * Complex(std::abs(limiting.real()) <= tiny ? 0.0 : limiting.real(), limitingIsReal() ? 0.0 : limiting.imag());
+}
+
+std::string stepMarginText(const StepMargin& margin) {
+    using Case = StepMargin::Case;
+    char text[400], mode[160] = "";
+    const double limit = margin.factor * margin.dt;
+    // predictedStableStep's basis for the oscillator methods: the exact step matrix up to
+    // kExactStepLimit free coordinates, else each mode with its modal damping.
+    const char* basis = margin.exactStepMatrix ? "exact step matrix" : "per mode, modal damping";
+    const char* which = margin.limitingIsFastest ? "the fastest mode" : "the mode";
+    const Complex z = margin.limitingPoint();
+    if (margin.hasLimiting && margin.limitingIsReal())
+        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g, a pure decay)", which, z.real());
+    else if (margin.hasLimiting)
+        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g ± %.3gi)", which, z.real(), std::abs(z.imag()));
+    else
+        std::snprintf(mode, sizeof mode, "the fastest mode");
+    switch (margin.kind) {
+        case Case::Xpbd: return "xpbd is stable at every DT: no margin to give.";
+        case Case::OwnStep: return margin.integrator + " chooses its own internal steps: no DT limit from stability.";
+        case Case::Unlimited: return "No DT limit: every mode of this body stays in the region for any DT.";
+        case Case::NoStableDt:
+            if (margin.oscillator)
+                std::snprintf(text, sizeof text, "No DT is stable: a mode pair grows for every DT (%s).", basis);
+            else
+                std::snprintf(text, sizeof text,
+                              "No DT is stable: %s sits where the region only touches the imaginary axis at 0; it grows "
+                              "for every DT (slowly when DT is small).",
+                              mode);
+            return text;
+        case Case::CanGrow:
+            if (margin.oscillator)
+                std::snprintf(text, sizeof text,
+                              "DT can grow %.2f× (to %.3g s) before a mode pair goes unstable (%s); the picture is exact "
+                              "for underdamped modes only.",
+                              margin.factor, limit, basis);
+            else
+                std::snprintf(text, sizeof text, "DT can grow %.2f× (to %.3g s) before %s leaves the region.",
+                              margin.factor, limit, mode);
+            return text;
+        case Case::Outside:
+            if (margin.oscillator)
+                std::snprintf(text, sizeof text, "DT is already outside the stable range (%s): shrink DT by %.2f× (to %.3g s).",
+                              basis, 1.0 / margin.factor, limit);
+            else
+                std::snprintf(text, sizeof text,
+                              "DT is already outside: %s is out of the region; shrink DT by %.2f× (to %.3g s) to bring it "
+                              "back.",
+                              mode, 1.0 / margin.factor, limit);
+            return text;
+    }
+    return {};
 }
 
 StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, const SpectrumPoints& points, double h) {
     StepMargin margin;
-    char text[400];
+    margin.integrator = integrator;
+    margin.dt = h;
     if (regionKind(integrator) == RegionKind::None) {
         margin.factor = std::numeric_limits<double>::infinity();
-        margin.text = integrator == "xpbd" ? "xpbd is stable at every DT: no margin to give."
-                                           : integrator + " chooses its own internal steps: no DT limit from stability.";
+        margin.kind = integrator == "xpbd" ? StepMargin::Case::Xpbd : StepMargin::Case::OwnStep;
+        margin.text = stepMarginText(margin);
         return margin;
     }
     // The limiting point: the first to leave along its ray (rigid and growing modes left out).
@@ -342,7 +454,7 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
     for (const Complex& l : points.lambda) scale = std::max(scale, std::abs(l));
     double fastest = 0.0;
     double smallest = std::numeric_limits<double>::infinity();
-    const bool oscillator = regionKind(integrator) == RegionKind::Oscillator;
+    margin.oscillator = regionKind(integrator) == RegionKind::Oscillator;
     for (const Complex& l : points.lambda) {
         if (!(std::abs(l) > 1e-6 * scale) || l.real() > 1e-9 * scale) continue;
         if (std::abs(l) > fastest) {
@@ -351,7 +463,7 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
         }
         // Oscillator methods: the picture is exact only for underdamped modes that decouple;
         // their margin comes from the step matrix, which names no single point.
-        if (oscillator) continue;
+        if (margin.oscillator) continue;
         const double s = rayExit(integrator, h * l);
         if (s < smallest || (s == smallest && std::abs(l) > std::abs(margin.limiting))) {
             smallest = s;
@@ -364,46 +476,14 @@ StepMargin stepMargin(const std::string& integrator, const LinearModes& modes, c
     // map says what the banners and `stability` say; the rays above only name the point
     // that leaves first.
     margin.factor = stabilityVerdict(modes, integrator, h).limit / h;
-    const double limit = margin.factor * h;
-    const bool isFastest = margin.hasLimiting && std::abs(std::abs(margin.limiting) - fastest) <= 1e-9 * fastest;
-    char mode[160] = "";
-    // predictedStableStep's basis for the oscillator methods: the exact step matrix up to
-    // kExactStepLimit free coordinates, else each mode with its modal damping.
-    const char* basis = modes.stiffness.rows() > 0 && modes.unstableModes == 0 ? "exact step matrix"
-                                                                               : "per mode, modal damping";
-    if (margin.hasLimiting && std::abs(margin.limiting.imag()) <= 1e-9 * std::abs(margin.limiting))
-        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g, a pure decay)", isFastest ? "the fastest mode" : "the mode",
-                      h * margin.limiting.real());
-    else if (margin.hasLimiting)
-        std::snprintf(mode, sizeof mode, "%s (hλ = %.3g ± %.3gi)", isFastest ? "the fastest mode" : "the mode",
-                      h * margin.limiting.real(), std::abs(h * margin.limiting.imag()));
-    else if (oscillator)
-        std::snprintf(mode, sizeof mode, "a mode pair goes unstable (%s);", basis);
-    else
-        std::snprintf(mode, sizeof mode, "the fastest mode");
-    if (std::isinf(margin.factor)) {
-        std::snprintf(text, sizeof text, "No DT limit: every mode of this body stays in the region for any DT.");
-    } else if (margin.factor <= 0.0) {
-        std::snprintf(text, sizeof text,
-                      "No DT is stable: %s sits where the region only touches the imaginary axis at 0; it grows for "
-                      "every DT (slowly when DT is small).",
-                      mode);
-    } else if (margin.factor >= 1.0) {
-        if (oscillator)
-            std::snprintf(text, sizeof text, "DT can grow %.2f× (to %.3g s) before %s the picture is exact for "
-                          "underdamped modes only.", margin.factor, limit, mode);
-        else
-            std::snprintf(text, sizeof text, "DT can grow %.2f× (to %.3g s) before %s leaves the region.",
-                          margin.factor, limit, mode);
-    } else {
-        if (oscillator)
-            std::snprintf(text, sizeof text, "DT is already outside the stable range (%s): shrink DT by %.2f× (to %.3g s).",
-                          basis, 1.0 / margin.factor, limit);
-        else
-            std::snprintf(text, sizeof text, "DT is already outside: %s is out of the region; shrink DT by %.2f× (to "
-                          "%.3g s) to bring it back.", mode, 1.0 / margin.factor, limit);
-    }
-    margin.text = text;
+    margin.limitingIsFastest = margin.hasLimiting && std::abs(std::abs(margin.limiting) - fastest) <= 1e-9 * fastest;
+    margin.exactStepMatrix = modes.stiffness.rows() > 0 && modes.unstableModes == 0;
+    using Case = StepMargin::Case;
+    margin.kind = std::isinf(margin.factor) ? Case::Unlimited
+                  : margin.factor <= 0.0    ? Case::NoStableDt
+                  : margin.factor >= 1.0    ? Case::CanGrow
+                                            : Case::Outside;
+    margin.text = stepMarginText(margin);
     return margin;
 }
 

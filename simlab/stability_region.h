@@ -61,13 +61,47 @@ std::vector<std::vector<std::complex<double>>> regionBoundary(const std::string&
 double realAxisLimit(const std::string& integrator);
 // One sentence: what the picture shows for this integrator and what holds.
 std::string regionNote(const std::string& integrator);
+// The same in parts, for a window that says it in another language (the GUI's Stability map
+// dock): which paragraph, and the numbers in it. regionNote writes its English from these.
+struct RegionNoteParts {
+    enum class Kind {
+        TaylorPolynomial,  // euler, midpoint, rk4: |R| <= 1 for the Taylor polynomial of e^z
+        DormandPrince,     // rk45, taken at a fixed step
+        ImplicitEuler,     // the whole left half-plane (A-stable)
+        SymplecticEuler,   // the oscillator's step matrix
+        Verlet,            // the same, damping at the half-step velocity
+        Composition,       // yoshida4, yoshida8: products of Verlet substeps
+        CvodeBdf,          // no region: adaptive variable-order BDF
+        CvodeAdams,        // no region: adaptive variable-order Adams
+        Xpbd,              // no region: constraint projection, unconditionally stable
+        Unknown,           // not an integrator this file knows
+    };
+    Kind kind = Kind::Unknown;
+    // TaylorPolynomial: how far up the imaginary axis the region reaches (rk4: 2√2 ≈ 2.83;
+    // 0: only at 0, so an undamped mode grows for every DT).
+    double imaginaryReach = 0.0;
+    // Composition: its Verlet substeps, force evaluations per step and the largest hω of a
+    // stable undamped mode (yoshida4: 3, 4, 1.57).
+    int substeps = 0, forceEvaluations = 0;
+    double undampedLimit = 0.0;
+};
+RegionNoteParts regionNoteParts(const std::string& integrator);
 
 // The points h·lambda of the linearised body at the step h, with how they were found.
 struct SpectrumPoints {
     std::vector<std::complex<double>> lambda;  // eigenvalues [1/s] (upper and lower half plane)
     std::string method;                        // "exact", "modal", "iterative" (see spectrumMethodText)
-    std::string methodText;                    // one line for the dock
+    std::string methodText;                    // one line for the dock (spectrumMethodText)
+    // The line in parts (the GUI says it in the window's language): the method and what it
+    // counted: the eigenvalues (exact), the modes of M^-1 K (modal), the Ritz values (iterative,
+    // with its Arnoldi steps and the body's free coordinates).
+    enum class Method { Exact, Modal, Iterative };
+    Method kind = Method::Exact;
+    std::size_t count = 0;
+    int arnoldiSteps = 0, freeCoordinates = 0;
 };
+// methodText from the parts: "exact spectrum: all 96 eigenvalues of ...".
+std::string spectrumMethodText(const SpectrumPoints& points);
 // exact: the first-order eigenvalues of linearModes; modal: lambda = -c/2 ± i sqrt(w^2 - c^2/4)
 // from each mode of M^-1 K and its modal damping; iterative: Ritz values of the first-order
 // system by Arnoldi on the Jacobian products (linearModes's large-body path), whose extreme
@@ -81,8 +115,29 @@ struct StepMargin {
     std::complex<double> limiting{0, 0};   // lambda of the limiting mode [1/s] (R methods)
     bool hasLimiting = false;              // R methods only (the oscillator methods' step matrix names no point)
     std::complex<double> fastest{0, 0};    // the fastest counted mode's lambda [1/s]
-    std::string text;                      // "DT can grow 2.3× before ..." in words
+    std::string text;                      // "DT can grow 2.3× before ..." in words (stepMarginText)
+    // The words in parts (the GUI says them in the window's language).
+    enum class Case {
+        OwnStep,     // cvode-bdf, cvode-adams: they choose their own internal steps
+        Xpbd,        // stable at every DT: no margin to give
+        Unlimited,   // every mode stays in the region for any DT (factor inf)
+        NoStableDt,  // the limiting mode grows for every DT (factor 0)
+        CanGrow,     // DT can grow by factor >= 1 before a mode leaves the region
+        Outside,     // DT is already outside: shrink it by 1 / factor
+    };
+    Case kind = Case::NoStableDt;
+    std::string integrator;
+    double dt = 0.0;                 // the step judged [s]: the limit is factor·dt, the point dt·limiting
+    bool oscillator = false;         // RegionKind::Oscillator: the step matrix's margin, no point named
+    bool exactStepMatrix = false;    // oscillator: its basis, the exact step matrix (else per mode, modal damping)
+    bool limitingIsFastest = false;  // the limiting point is the fastest counted mode
+    // The limiting point h·lambda as the words give it: a real or imaginary part below round-off
+    // (1e-9 of |lambda|; an undamped mode's -1.7e-16) is 0, so the sentence reads "0 ± 0.0849i".
+    std::complex<double> limitingPoint() const;
+    bool limitingIsReal() const;  // a pure decay (no imaginary part beyond round-off)
 };
+// text from the parts: "DT can grow 2.30× (to 0.0123 s) before the fastest mode (hλ = ...) ...".
+std::string stepMarginText(const StepMargin& margin);
 // R methods: the first exit of s·h·lambda from the region along each ray (scan, then
 // bisection), the smallest over the body's points (rigid modes |lambda| ~ 0 and physically
 // growing modes, Re lambda > 0, excluded, as predictedStableStep does): the same number as

@@ -242,6 +242,12 @@ private slots:
         QCOMPARE(margin.factor, 0.0);
         QVERIFY2(QString::fromStdString(margin.text).startsWith("No DT is stable"), margin.text.c_str());
         QVERIFY(std::isinf(stepMargin("implicit-euler", modes, spectrumPoints(modes), 0.001).factor));
+        // The undamped pair is named without its round-off (the Ritz value's real part came out
+        // as -5.7e-14 1/s, "hλ = -5.68e-17 ± 0.0283i"): "hλ = 0 ± 0.0283i" on every path.
+        for (const LinearModes& m : {modes, linearModes(p, 0), linearModes(p, 0, 0)}) {
+            const std::string text = stepMargin("euler", m, spectrumPoints(m), 0.001).text;
+            QVERIFY2(text.find("(hλ = 0 ± 0.0283i)") != std::string::npos, text.c_str());
+        }
     }
 };
 

@@ -12,7 +12,13 @@
 //   the window   in Arabic the layout runs right to left (the menu bar starts on the right) and
 //                the menus are in Arabic; in German the numbers have a decimal comma and a field
 //                reads "0,004" as 0.004
+//   the physics  a run's failure, the stability verdict and advice, and the Stability map's
+//                margin, spectrum method and region notes, composed from simcore's and simlab's
+//                parts: no English left, the numbers in the language's format
+#include <complex>
 #include <limits>
+#include <optional>
+#include <set>
 
 #include <QApplication>
 #include <QDir>
@@ -23,6 +29,7 @@
 #include <QMenuBar>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QSet>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -33,13 +40,17 @@
 #include "simcore/simulation.h"
 #include "simcore/world.h"
 #include "simcore/world_spec.h"
+#include "simcore/integrator_table.h"
 #include "simlab/stability.h"
+#include "simlab/stability_region.h"
+#include "test_support.h"
 #include "ui/failure_banner.h"
 #include "ui/failure_text.h"
 #include "ui/language.h"
 #include "ui/lessons.h"
 #include "ui/main_window.h"
 #include "ui/parameter_dock.h"
+#include "ui/stability_map_dock.h"
 
 using namespace elui;
 
@@ -383,6 +394,178 @@ private slots:
         for (const simlab::StabilityVerdict& v : verdicts)
             QCOMPARE(verdictSentence(v), QString::fromStdString(simlab::verdictText(v)));
         QCOMPARE(adviceSentence(*advice), QString::fromStdString(advice->message));
+    }
+
+    // The Stability map dock's words (ui/stability_map_dock.h): every region note (every
+    // integrator, and a name it does not know), every way the spectrum is found and every case of
+    // the margin, in each language with its numbers in the language's format; in English,
+    // simlab's own text. The margins are made by hand for every case and by simlab on a real
+    // body for each case a body can reach.
+    void stabilityMapInEveryLanguage_data() {
+        QTest::addColumn<QString>("lang");
+        for (const char* lang : {"de", "fr", "es", "ar"}) QTest::newRow(lang) << QString::fromLatin1(lang);
+    }
+    void stabilityMapInEveryLanguage() {
+        QFETCH(QString, lang);
+        using Case = simlab::StepMargin::Case;
+        using Complex = std::complex<double>;
+        // Words of simlab's English no translation has (the method names, hλ, DT, BDF and R stay).
+        static const QRegularExpression english(QStringLiteral(
+            "\\b(the|of|is|are|its|for|every|before|grows?|leaves|already|outside|shrink|pair|picture|underdamped|decay|"
+            "fastest|chooses|internal|sits|touches|eigenvalues|spectrum|accurate|inner|coordinates|steps|substeps|"
+            "backwards|drawn|whose|damping|undamped|polynomial|imaginary|axis|tolerance|takes|costs|springs|"
+            "unconditionally|accuracy|region|Region|margin|bodies)\\b"));
+        // The language's numbers: a decimal comma (Arabic: its own digits and separator), never
+        // "0.0159" in a German sentence.
+        static const QRegularExpression decimalPoint(QStringLiteral("[0-9]\\.[0-9]"));
+        QStringList problems;
+        auto check = [&](const QString& what, const QString& said, const std::string& englishText, const QStringList& numbers) {
+            if (said == QString::fromStdString(englishText)) problems << what + QStringLiteral(": not translated: ") + said;
+            if (const auto m = english.match(said); m.hasMatch())
+                problems << what + QStringLiteral(": English (\"%1\") left in: ").arg(m.captured(0)) + said;
+            if (!num(0.5).contains(QLatin1Char('.')) && decimalPoint.match(said).hasMatch())
+                problems << what + QStringLiteral(": a number in English format in: ") + said;
+            for (const QString& n : numbers)
+                if (!said.contains(n)) problems << what + QStringLiteral(": ") + n + QStringLiteral(" missing in: ") + said;
+        };
+        applyLanguage(lang);
+
+        // Every integrator's note: translated, its numbers in the language's format, and as many
+        // different notes as in English (no two families said alike).
+        std::vector<std::string> names;
+        for (const simcore::IntegratorInfo& info : simcore::integratorTable()) names.emplace_back(info.name);
+        names.emplace_back("not-an-integrator");
+        QSet<QString> notes;
+        std::set<std::string> englishNotes;
+        for (const std::string& name : names) {
+            const simlab::RegionNoteParts parts = simlab::regionNoteParts(name);
+            QStringList numbers;
+            if (parts.imaginaryReach > 0.0) numbers << num(parts.imaginaryReach, 'g', 3);
+            if (parts.kind == simlab::RegionNoteParts::Kind::Composition)
+                numbers << num(parts.undampedLimit, 'g', 3) << num(static_cast<long long>(parts.substeps))
+                        << num(static_cast<long long>(parts.forceEvaluations));
+            const QString said = regionNoteSentence(name);
+            check(QString::fromStdString(name) + QStringLiteral(" note"), said, simlab::regionNote(name), numbers);
+            notes.insert(said);
+            englishNotes.insert(simlab::regionNote(name));
+        }
+        QCOMPARE(notes.size(), qsizetype(englishNotes.size()));
+        QVERIFY(regionNoteSentence("rk4").contains(num(2.83)));
+
+        // How the eigenvalues were found: made by hand (every method) and from a real body.
+        std::vector<simlab::SpectrumPoints> spectra(3);
+        spectra[0].kind = simlab::SpectrumPoints::Method::Exact;
+        spectra[1].kind = simlab::SpectrumPoints::Method::Modal;
+        spectra[2].kind = simlab::SpectrumPoints::Method::Iterative;
+        spectra[2].arnoldiSteps = 90;
+        spectra[2].freeCoordinates = 1536;
+        for (std::size_t k = 0; k < spectra.size(); ++k) spectra[k].count = 96 + k;
+        for (simlab::SpectrumPoints& p : spectra) p.methodText = simlab::spectrumMethodText(p);
+        simcore::ParameterSet spring(simcore::SceneKind::Spring1d);
+        QVERIFY(!spring.set(simcore::Param::Dt, 0.001));
+        const simlab::LinearModes springModes = simlab::linearModes(spring);
+        spectra.push_back(simlab::spectrumPoints(springModes));
+        spectra.push_back(simlab::spectrumPoints(simlab::linearModes(spring, 0)));
+        QCOMPARE(spectra[3].kind, simlab::SpectrumPoints::Method::Exact);
+        QCOMPARE(spectra[4].kind, simlab::SpectrumPoints::Method::Modal);
+        QSet<QString> methods;
+        for (const simlab::SpectrumPoints& p : spectra) {
+            QStringList numbers{num(static_cast<long long>(p.count))};
+            if (p.kind == simlab::SpectrumPoints::Method::Iterative)
+                numbers << num(static_cast<long long>(p.arnoldiSteps)) << num(static_cast<long long>(p.freeCoordinates));
+            const QString said = spectrumSentence(p);
+            check(QString::fromStdString(p.method) + QStringLiteral(" spectrum"), said, p.methodText, numbers);
+            methods.insert(said);
+        }
+        QCOMPARE(methods.size(), qsizetype(spectra.size()));
+
+        // Every case of the margin, made by hand: the limiting mode a pure decay or a pair, the
+        // fastest or not, or none named; the oscillator methods' two bases.
+        auto made = [](const char* integrator, Case kind, double factor, bool oscillator, std::optional<Complex> limiting,
+                       bool fastest = true, bool exactStepMatrix = true) {
+            simlab::StepMargin m;
+            m.integrator = integrator;
+            m.kind = kind;
+            m.factor = factor;
+            m.dt = 0.003;
+            m.oscillator = oscillator;
+            m.hasLimiting = limiting.has_value();
+            m.limiting = limiting.value_or(Complex(0.0, 0.0));
+            m.limitingIsFastest = fastest;
+            m.exactStepMatrix = exactStepMatrix;
+            m.text = simlab::stepMarginText(m);
+            return m;
+        };
+        const double inf = std::numeric_limits<double>::infinity();
+        std::vector<simlab::StepMargin> margins = {
+            made("xpbd", Case::Xpbd, inf, false, {}),
+            made("cvode-bdf", Case::OwnStep, inf, false, {}),
+            made("implicit-euler", Case::Unlimited, inf, false, {}),
+            made("euler", Case::NoStableDt, 0.0, false, Complex(-0.5, 28.3)),
+            made("verlet", Case::NoStableDt, 0.0, true, {}),
+            made("rk4", Case::CanGrow, 5.3, false, Complex(-175.0, 0.0)),
+            made("euler", Case::CanGrow, 2.9, false, Complex(-72.7, 107.0), false),
+            made("rk4", Case::CanGrow, 33.3, false, {}),
+            made("verlet", Case::CanGrow, 1.25, true, {}, true, false),
+            made("rk4", Case::Outside, 0.5, false, Complex(-75.0, 272.7)),
+            made("midpoint", Case::Outside, 0.38, false, Complex(-1737.0, 0.0), false),
+            made("symplectic-euler", Case::Outside, 0.4, true, {}),
+        };
+        // And simlab's own on the spring (w^2 = 800, c = 15) for each case a body reaches.
+        simcore::ParameterSet undamped = spring;
+        QVERIFY(!undamped.set(simcore::Param::Kd, 0.0));
+        const simlab::LinearModes undampedModes = simlab::linearModes(undamped);
+        const struct {
+            const char* integrator;
+            const simlab::LinearModes* modes;
+            double dt;
+            Case kind;
+        } real[] = {{"euler", &springModes, 0.001, Case::CanGrow},       {"rk4", &springModes, 0.2, Case::Outside},
+                    {"verlet", &springModes, 0.001, Case::CanGrow},      {"yoshida4", &springModes, 0.2, Case::Outside},
+                    {"euler", &undampedModes, 0.001, Case::NoStableDt},  {"implicit-euler", &springModes, 0.001, Case::Unlimited},
+                    {"xpbd", &springModes, 0.001, Case::Xpbd},           {"cvode-adams", &springModes, 0.001, Case::OwnStep}};
+        for (const auto& r : real) {
+            margins.push_back(simlab::stepMargin(r.integrator, *r.modes, simlab::spectrumPoints(*r.modes), r.dt));
+            QVERIFY2(margins.back().kind == r.kind, margins.back().text.c_str());
+        }
+        QSet<QString> said;
+        std::set<std::string> englishMargins;
+        for (const simlab::StepMargin& m : margins) {
+            englishMargins.insert(m.text);
+            QStringList numbers;
+            if (m.kind == Case::CanGrow) numbers << num(m.factor, 'f', 2) << num(m.factor * m.dt, 'g', 3);
+            if (m.kind == Case::Outside) numbers << num(1.0 / m.factor, 'f', 2) << num(m.factor * m.dt, 'g', 3);
+            // The limiting mode is named where DT meets the region's edge (or never gets inside).
+            const bool named = m.hasLimiting && (m.kind == Case::CanGrow || m.kind == Case::Outside || m.kind == Case::NoStableDt);
+            if (named) numbers << num(m.limitingPoint().real(), 'g', 3);
+            if (named && !m.limitingIsReal()) numbers << num(std::abs(m.limitingPoint().imag()), 'g', 3);
+            if (m.kind == Case::OwnStep) numbers << QString::fromStdString(m.integrator);
+            const QString sentence = marginSentence(m);
+            check(QStringLiteral("%1 margin (%2)").arg(QString::fromStdString(m.integrator)).arg(int(m.kind)), sentence, m.text, numbers);
+            said.insert(sentence);
+        }
+        QCOMPARE(said.size(), qsizetype(englishMargins.size()));
+
+        // The dock says them: a spring in the window's language.
+        {
+            StabilityMapDock dock;
+            dock.resize(420, 520);
+            dock.show();
+            dock.setState(spring, QStringLiteral("rk4"));
+            QVERIFY(testsupport::waitUntil([&] { return dock.resultSerial() > 0 && !dock.computing(); }));
+            const simlab::StepMargin margin = simlab::stepMargin("rk4", springModes, simlab::spectrumPoints(springModes), 0.001);
+            QCOMPARE(dock.marginText(), QStringLiteral("rk4: ") + marginSentence(margin));
+            check(QStringLiteral("the dock's margin"), dock.marginText(), "rk4: " + margin.text, {num(margin.factor, 'f', 2)});
+            check(QStringLiteral("the dock's notes"), dock.methodText(),
+                  "Eigenvalues: " + simlab::spectrumPoints(springModes).methodText + ".\n" + simlab::regionNote("rk4"), {});
+        }
+        QVERIFY2(problems.isEmpty(), qPrintable(lang + QStringLiteral(":\n") + problems.join(QLatin1Char('\n'))));
+
+        // English: simlab's text as it is (the CLI's, the docs').
+        applyLanguage(QStringLiteral("en"));
+        for (const std::string& name : names) QCOMPARE(regionNoteSentence(name), QString::fromStdString(simlab::regionNote(name)));
+        for (const simlab::SpectrumPoints& p : spectra) QCOMPARE(spectrumSentence(p), QString::fromStdString(p.methodText));
+        for (const simlab::StepMargin& m : margins) QCOMPARE(marginSentence(m), QString::fromStdString(m.text));
     }
 
     void theLanguageIsChosen() {

@@ -2478,7 +2478,7 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>The integrator&apos;s stability region and the body&apos;s eigenvalues times DT; the margin is written below the map</source>
-        <translation type="unfinished"></translation>
+        <translation>منطقة استقرار المكامل والقيم الذاتية للجسم مضروبة في DT؛ الهامش مكتوب تحت الخريطة</translation>
     </message>
     <message>
         <source>Re(hλ)</source>
@@ -2494,15 +2494,15 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>DT·λ, every mode</source>
-        <translation type="unfinished"></translation>
+        <translation>DT·λ، كل الأنماط</translation>
     </message>
     <message>
         <source>leaves first</source>
-        <translation type="unfinished"></translation>
+        <translation>يخرج أولًا</translation>
     </message>
     <message>
         <source>measured limit</source>
-        <translation type="unfinished"></translation>
+        <translation>الحدّ المقيس</translation>
     </message>
     <message>
         <source>Try it</source>
@@ -2514,56 +2514,57 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>Linearising the body…</source>
-        <translation type="unfinished"></translation>
+        <translation>جارٍ حساب النموذج الخطي للجسم…</translation>
     </message>
     <message>
         <source>edge (radius 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>الحافة (نصف القطر 1)</translation>
     </message>
     <message>
         <source>edge |R| = 1</source>
-        <translation type="unfinished"></translation>
+        <translation>الحافة |R| = 1</translation>
     </message>
     <message>
         <source>edge of view %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>حافة العرض %1 (%2)</translation>
     </message>
     <message>
         <source>Re(hλ), h = DT = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Re(hλ)، h = DT = %1 s</translation>
     </message>
     <message>
         <source>View %1, %2 (filled): %3</source>
-        <translation type="unfinished"></translation>
+        <translation>العرض %1، %2 (مملوء): %3</translation>
     </message>
     <message>
         <source>View %1, %2 (dashed): %3</source>
-        <translation type="unfinished"></translation>
+        <translation>العرض %1، %2 (متقطّع): %3</translation>
     </message>
     <message>
         <source>Eigenvalues: %1.
 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>القيم الذاتية: %1.
+%2</translation>
     </message>
     <message>
         <source>%1 has no fixed stability limit to measure</source>
-        <translation type="unfinished"></translation>
+        <translation>ليس لـ %1 حدّ استقرار ثابت يُقاس</translation>
     </message>
     <message>
         <source>Measured: no stable DT down to 1e-5 s.</source>
-        <translation type="unfinished"></translation>
+        <translation>المقيس: لا DT مستقرًا حتى 1e-5 s.</translation>
     </message>
     <message>
         <source>Measured: stable up to the largest DT scanned, %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>المقيس: مستقر حتى أكبر DT جرى مسحه، %1 s</translation>
     </message>
     <message>
         <source>Measured: stable at DT = %1 s, blows up at %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>المقيس: مستقر عند DT = %1 s، وينفجر عند %2 s</translation>
     </message>
     <message>
         <source> (%1 runs of %2 s; predicted %3 s).</source>
-        <translation type="unfinished"></translation>
+        <translation> (%1 تشغيلًا مدة كل منها %2 s؛ المتوقَّع %3 s).</translation>
     </message>
     <message>
         <source>unlimited</source>
@@ -2571,19 +2572,19 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source> ✕ = the ringed mode at the measured DT.</source>
-        <translation type="unfinished"></translation>
+        <translation> ✕ = النمط المطوَّق عند DT المقيس.</translation>
     </message>
     <message>
         <source> ✕ = the fastest mode at the measured DT.</source>
-        <translation type="unfinished"></translation>
+        <translation> ✕ = النمط الأسرع عند DT المقيس.</translation>
     </message>
     <message>
         <source>Measuring the largest stable DT of %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>جارٍ قياس أكبر DT مستقر لـ %1…</translation>
     </message>
     <message>
         <source>Cancelling…</source>
-        <translation type="unfinished"></translation>
+        <translation>جارٍ الإلغاء…</translation>
     </message>
     <message>
         <source>Cancel</source>
@@ -2591,23 +2592,139 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>Measurement cancelled.</source>
-        <translation type="unfinished"></translation>
+        <translation>أُلغي القياس.</translation>
     </message>
     <message>
         <source>The body or the integrator changed during the measurement: press Try it again.</source>
-        <translation type="unfinished"></translation>
+        <translation>تغيّر الجسم أو المكامل أثناء القياس: اضغط «جرّبه» مرة أخرى.</translation>
     </message>
     <message>
         <source>Measure this integrator&apos;s largest stable DT on this body or world: the stability scan&apos;s bisection (%1 s runs; Studies → Stability scan does all integrators), marked on the picture</source>
-        <translation type="unfinished"></translation>
+        <translation>قِس أكبر DT مستقر لهذا المكامل على هذا الجسم أو العالم: تنصيف مسح الاستقرار (تشغيلات مدة كل منها %1 s؛ دراسات ← مسح الاستقرار يفعل ذلك لكل المكاملات)، ويُعلَّم على الصورة</translation>
     </message>
     <message>
         <source>Linearising the world (%1 bodies)…</source>
-        <translation type="unfinished"></translation>
+        <translation>جارٍ حساب النموذج الخطي للعالم (%1 أجسام)…</translation>
     </message>
     <message>
         <source>The whole world (%1 bodies) linearised as one system: every body&apos;s modes, and the contact between bodies where two are within the contact skin. </source>
-        <translation type="unfinished"></translation>
+        <translation>العالم كله (%1 أجسام) في نموذج خطي واحد: أنماط كل جسم، والتلامس بين الأجسام حيث يقع جسمان ضمن قشرة التلامس. </translation>
+    </message>
+    <message>
+        <source>the fastest mode</source>
+        <translation>النمط الأسرع</translation>
+    </message>
+    <message>
+        <source>the fastest mode (hλ = %1, a pure decay)</source>
+        <translation>النمط الأسرع (hλ = %1، اضمحلال بحت)</translation>
+    </message>
+    <message>
+        <source>the mode (hλ = %1, a pure decay)</source>
+        <translation>النمط (hλ = %1، اضمحلال بحت)</translation>
+    </message>
+    <message>
+        <source>the fastest mode (hλ = %1 ± %2i)</source>
+        <translation>النمط الأسرع (hλ = %1 ± %2i)</translation>
+    </message>
+    <message>
+        <source>the mode (hλ = %1 ± %2i)</source>
+        <translation>النمط (hλ = %1 ± %2i)</translation>
+    </message>
+    <message>
+        <source>per mode, modal damping</source>
+        <translation>نمطًا نمطًا، بتخميد نمطي</translation>
+    </message>
+    <message>
+        <source>xpbd is stable at every DT: no margin to give.</source>
+        <translation>xpbd مستقر عند كل DT: لا هامش يُذكر.</translation>
+    </message>
+    <message>
+        <source>%1 chooses its own internal steps: no DT limit from stability.</source>
+        <translation>%1 يختار خطواته الداخلية بنفسه: لا حدّ على DT من الاستقرار.</translation>
+    </message>
+    <message>
+        <source>No DT limit: every mode of this body stays in the region for any DT.</source>
+        <translation>لا حدّ على DT: يبقى كل نمط من أنماط هذا الجسم داخل المنطقة عند أي DT.</translation>
+    </message>
+    <message>
+        <source>No DT is stable: a mode pair grows for every DT (%1).</source>
+        <translation>لا DT مستقرًا: زوج من الأنماط ينمو عند كل DT (%1).</translation>
+    </message>
+    <message>
+        <source>No DT is stable: %1 sits where the region only touches the imaginary axis at 0; it grows for every DT (slowly when DT is small).</source>
+        <translation>لا DT مستقرًا: يقع %1 حيث لا تمسّ المنطقة المحور التخيلي إلا عند 0؛ فهو ينمو عند كل DT (ببطء حين يكون DT صغيرًا).</translation>
+    </message>
+    <message>
+        <source>DT can grow %1× (to %2 s) before a mode pair goes unstable (%3); the picture is exact for underdamped modes only.</source>
+        <translation>يمكن أن يكبر DT بمعامل %1 (حتى %2 s) قبل أن يصير زوج من الأنماط غير مستقر (%3)؛ الصورة دقيقة للأنماط ناقصة التخميد فقط.</translation>
+    </message>
+    <message>
+        <source>DT can grow %1× (to %2 s) before %3 leaves the region.</source>
+        <translation>يمكن أن يكبر DT بمعامل %1 (حتى %2 s) قبل أن يخرج %3 من المنطقة.</translation>
+    </message>
+    <message>
+        <source>DT is already outside the stable range (%1): shrink DT by %2× (to %3 s).</source>
+        <translation>DT خارج المجال المستقر أصلًا (%1): صغّر DT بمعامل %2 (إلى %3 s).</translation>
+    </message>
+    <message>
+        <source>DT is already outside: %1 is out of the region; shrink DT by %2× (to %3 s) to bring it back.</source>
+        <translation>DT كبير أصلًا: %1 خارج المنطقة؛ صغّر DT بمعامل %2 (إلى %3 s) لإعادته إليها.</translation>
+    </message>
+    <message>
+        <source>exact spectrum: all %1 eigenvalues of the linearised first-order system (dense eigen-solve)</source>
+        <translation>الطيف الدقيق: كل القيم الذاتية الـ %1 للنظام الخطي من الرتبة الأولى (حلّ كثيف للقيم الذاتية)</translation>
+    </message>
+    <message>
+        <source>modal: all %1 modes of M⁻¹K (symmetric eigen-solve), damping c = φᵀ(M⁻¹D)φ per mode; λ = −c/2 ± i√(ω² − c²/4)</source>
+        <translation>نمطي: كل الأنماط الـ %1 لـ M⁻¹K (مسألة قيم ذاتية متماثلة)، والتخميد c = φᵀ(M⁻¹D)φ لكل نمط؛ λ = −c/2 ± i√(ω² − c²/4)</translation>
+    </message>
+    <message>
+        <source>iterative: %1 Ritz values of the first-order system, Arnoldi (%2 steps) on the Jacobian products, %3 free coordinates: the extreme eigenvalues (largest |λ|) are accurate, inner ones are not</source>
+        <translation>تكراري: %1 قيمة ريتز للنظام من الرتبة الأولى، أرنولدي (%2 خطوة) على جداءات المصفوفة اليعقوبية، %3 إحداثيًا حرًّا: القيم الذاتية القصوى (أكبر |λ|) دقيقة، والداخلية ليست كذلك</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches the imaginary axis up to ±%1i: undamped modes are stable up to hω = 2√2.</source>
+        <translation>المنطقة: |R(hλ)| ≤ 1 لكثيرة حدود الاستقرار R (كثيرة حدود تايلور لـ e^z)؛ تمسّ المحور التخيلي حتى ±%1i: الأنماط غير المخمَّدة مستقرة حتى hω = 2√2.</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches the imaginary axis only at 0: an undamped mode grows for every DT.</source>
+        <translation>المنطقة: |R(hλ)| ≤ 1 لكثيرة حدود الاستقرار R (كثيرة حدود تايلور لـ e^z)؛ لا تمسّ المحور التخيلي إلا عند 0: النمط غير المخمَّد ينمو عند كل DT.</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for Dormand–Prince&apos;s 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a fixed step. The adaptive run picks its own step from the error tolerance: it does not blow up, it takes smaller steps.</source>
+        <translation>المنطقة: |R(hλ)| ≤ 1 لحلّ دورماند–برنس من الرتبة الخامسة، R = تايلور حتى z⁵ + z⁶/600، مأخوذة بخطوة ثابتة. التشغيل المتكيّف يختار خطوته بنفسه من تسامح الخطأ: لا ينفجر، بل يأخذ خطوات أصغر.</translation>
+    </message>
+    <message>
+        <source>Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| &lt; 1, the whole left half-plane (A-stable): no DT limit from stability.</source>
+        <translation>المنطقة: |1/(1 − hλ)| ≤ 1، أي كل ما هو خارج القرص |1 − hλ| &lt; 1، وهو نصف المستوى الأيسر كله (مستقرة من النوع A): لا حدّ على DT من الاستقرار.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.</source>
+        <translation>المنطقة: لا R عددية؛ مرسومة لنمط مهتزّ زوج قيمه الذاتية hλ، hλ̄ (دقيقة حين تنفصل الأنماط؛ المحور الحقيقي يُظهر النمط ذا التخميد الحرج). الأنماط غير المخمَّدة: hω ≤ 2. الهامش من مصفوفة الخطوة، لا من الصورة.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.</source>
+        <translation>المنطقة: لا R عددية؛ مرسومة لنمط مهتزّ زوج قيمه الذاتية hλ، hλ̄، والتخميد عند سرعة نصف الخطوة (دقيقة حين تنفصل الأنماط؛ المحور الحقيقي يُظهر النمط ذا التخميد الحرج). الأنماط غير المخمَّدة: hω ≤ 2. الهامش من مصفوفة الخطوة، لا من الصورة.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; the step is a product of %1 Verlet substeps (some backwards), drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (damping at the half-kick velocity, as the integrator does), traced ray by ray from 0. Undamped modes: hω ≤ %2 (a step costs %3 force evaluations). The margin uses the step matrix, not the picture.</source>
+        <translation>المنطقة: لا R عددية؛ الخطوة جداء %1 خطوة فرعية من خطوات فيرليه (بعضها إلى الوراء)، مرسومة لنمط مهتزّ زوج قيمه الذاتية hλ، hλ̄ (التخميد عند سرعة نصف الدفعة، كما يفعل المكامل)، متتبَّعة شعاعًا شعاعًا من 0. الأنماط غير المخمَّدة: hω ≤ %2 (تكلّف الخطوة %3 حسابات للقوة). الهامش من مصفوفة الخطوة، لا من الصورة.</translation>
+    </message>
+    <message>
+        <source>No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT limit, DT is only the output interval.</source>
+        <translation>لا منطقة: BDF متكيّف متغيّر الرتبة (الرتب 1–5)، يضبط الخطأ، بلا منطقة ثابتة. BDF1–2 مستقرة من النوع A، وBDF3–5 مستقرة من النوع A(α) حتى α ≈ 51°؛ يصغّر CVODE الخطوة أو الرتبة حين يهدّد نمطٌ بالنمو: لا حدّ على DT، وDT هو فترة الإخراج فقط.</translation>
+    </message>
+    <message>
+        <source>No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions are small (explicit-like); CVODE keeps the internal step inside them by its error test: no DT limit, stiff bodies only cost steps.</source>
+        <translation>لا منطقة: طريقة آدمز متكيّفة متغيّرة الرتبة (الرتب 1–12)، تضبط الخطأ، بلا منطقة ثابتة. مناطقها صغيرة (كمناطق الطرق الصريحة)؛ يُبقي CVODE الخطوة الداخلية داخلها باختبار الخطأ: لا حدّ على DT، والأجسام الصلبة لا تكلّف إلا خطوات أكثر.</translation>
+    </message>
+    <message>
+        <source>No region: XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally stable, no region in the hλ plane; large DT costs accuracy (the body turns soft), not stability.</source>
+        <translation>لا منطقة: يُسقط XPBD النوابض قيودًا مرنة (مطاوعة 1/ks): مستقر دون شرط، لا منطقة في المستوى hλ؛ الـ DT الكبير يكلّف الدقة (يصير الجسم ليّنًا)، لا الاستقرار.</translation>
+    </message>
+    <message>
+        <source>No stability region for %1.</source>
+        <translation>لا منطقة استقرار لـ %1.</translation>
     </message>
 </context>
 <context>

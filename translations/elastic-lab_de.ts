@@ -2612,6 +2612,122 @@ Diagramme, Parameter und Exporte funktionieren weiterhin.</translation>
         <source>The whole world (%1 bodies) linearised as one system: every body&apos;s modes, and the contact between bodies where two are within the contact skin. </source>
         <translation>Die ganze Welt (%1 Körper) als ein System linearisiert: die Moden jedes Körpers und der Kontakt zwischen Körpern, wo zwei innerhalb der Kontakthaut liegen. </translation>
     </message>
+    <message>
+        <source>the fastest mode</source>
+        <translation>die schnellste Mode</translation>
+    </message>
+    <message>
+        <source>the fastest mode (hλ = %1, a pure decay)</source>
+        <translation>die schnellste Mode (hλ = %1, rein abklingend)</translation>
+    </message>
+    <message>
+        <source>the mode (hλ = %1, a pure decay)</source>
+        <translation>die Mode (hλ = %1, rein abklingend)</translation>
+    </message>
+    <message>
+        <source>the fastest mode (hλ = %1 ± %2i)</source>
+        <translation>die schnellste Mode (hλ = %1 ± %2i)</translation>
+    </message>
+    <message>
+        <source>the mode (hλ = %1 ± %2i)</source>
+        <translation>die Mode (hλ = %1 ± %2i)</translation>
+    </message>
+    <message>
+        <source>per mode, modal damping</source>
+        <translation>Mode für Mode, modale Dämpfung</translation>
+    </message>
+    <message>
+        <source>xpbd is stable at every DT: no margin to give.</source>
+        <translation>xpbd ist bei jedem DT stabil: es gibt keine Grenze, zu der ein Abstand anzugeben wäre.</translation>
+    </message>
+    <message>
+        <source>%1 chooses its own internal steps: no DT limit from stability.</source>
+        <translation>%1 wählt seine inneren Schritte selbst: die Stabilität begrenzt DT nicht.</translation>
+    </message>
+    <message>
+        <source>No DT limit: every mode of this body stays in the region for any DT.</source>
+        <translation>Keine Grenze für DT: jede Mode dieses Körpers bleibt bei jedem DT im Gebiet.</translation>
+    </message>
+    <message>
+        <source>No DT is stable: a mode pair grows for every DT (%1).</source>
+        <translation>Kein DT ist stabil: ein Modenpaar wächst bei jedem DT (%1).</translation>
+    </message>
+    <message>
+        <source>No DT is stable: %1 sits where the region only touches the imaginary axis at 0; it grows for every DT (slowly when DT is small).</source>
+        <translation>Kein DT ist stabil: %1 liegt dort, wo das Gebiet die imaginäre Achse nur in 0 berührt; sie wächst bei jedem DT (langsam, wenn DT klein ist).</translation>
+    </message>
+    <message>
+        <source>DT can grow %1× (to %2 s) before a mode pair goes unstable (%3); the picture is exact for underdamped modes only.</source>
+        <translation>DT kann um den Faktor %1 wachsen (bis %2 s), bevor ein Modenpaar instabil wird (%3); das Bild ist nur für unterdämpfte Moden exakt.</translation>
+    </message>
+    <message>
+        <source>DT can grow %1× (to %2 s) before %3 leaves the region.</source>
+        <translation>DT kann um den Faktor %1 wachsen (bis %2 s), bevor %3 das Gebiet verlässt.</translation>
+    </message>
+    <message>
+        <source>DT is already outside the stable range (%1): shrink DT by %2× (to %3 s).</source>
+        <translation>DT liegt schon außerhalb des stabilen Bereichs (%1): DT um den Faktor %2 verkleinern (auf %3 s).</translation>
+    </message>
+    <message>
+        <source>DT is already outside: %1 is out of the region; shrink DT by %2× (to %3 s) to bring it back.</source>
+        <translation>DT ist schon zu groß: %1 liegt außerhalb des Gebiets; DT um den Faktor %2 verkleinern (auf %3 s), um sie zurückzuholen.</translation>
+    </message>
+    <message>
+        <source>exact spectrum: all %1 eigenvalues of the linearised first-order system (dense eigen-solve)</source>
+        <translation>exaktes Spektrum: alle %1 Eigenwerte des linearisierten Systems erster Ordnung (dichte Eigenwertrechnung)</translation>
+    </message>
+    <message>
+        <source>modal: all %1 modes of M⁻¹K (symmetric eigen-solve), damping c = φᵀ(M⁻¹D)φ per mode; λ = −c/2 ± i√(ω² − c²/4)</source>
+        <translation>modal: alle %1 Moden von M⁻¹K (symmetrisches Eigenwertproblem), Dämpfung c = φᵀ(M⁻¹D)φ je Mode; λ = −c/2 ± i√(ω² − c²/4)</translation>
+    </message>
+    <message>
+        <source>iterative: %1 Ritz values of the first-order system, Arnoldi (%2 steps) on the Jacobian products, %3 free coordinates: the extreme eigenvalues (largest |λ|) are accurate, inner ones are not</source>
+        <translation>iterativ: %1 Ritz-Werte des Systems erster Ordnung, Arnoldi (%2 Schritte) mit Produkten der Jacobi-Matrix, %3 freie Koordinaten: die äußeren Eigenwerte (größtes |λ|) sind genau, die inneren nicht</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches the imaginary axis up to ±%1i: undamped modes are stable up to hω = 2√2.</source>
+        <translation>Gebiet: |R(hλ)| ≤ 1 für sein Stabilitätspolynom R (das Taylorpolynom von e^z); es berührt die imaginäre Achse bis ±%1i: ungedämpfte Moden sind bis hω = 2√2 stabil.</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches the imaginary axis only at 0: an undamped mode grows for every DT.</source>
+        <translation>Gebiet: |R(hλ)| ≤ 1 für sein Stabilitätspolynom R (das Taylorpolynom von e^z); es berührt die imaginäre Achse nur in 0: eine ungedämpfte Mode wächst bei jedem DT.</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for Dormand–Prince&apos;s 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a fixed step. The adaptive run picks its own step from the error tolerance: it does not blow up, it takes smaller steps.</source>
+        <translation>Gebiet: |R(hλ)| ≤ 1 für die Lösung 5. Ordnung von Dormand–Prince, R = Taylor bis z⁵ + z⁶/600, bei festem Schritt genommen. Der adaptive Lauf wählt seinen Schritt selbst nach der Fehlertoleranz: er explodiert nicht, er macht kleinere Schritte.</translation>
+    </message>
+    <message>
+        <source>Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| &lt; 1, the whole left half-plane (A-stable): no DT limit from stability.</source>
+        <translation>Gebiet: |1/(1 − hλ)| ≤ 1, alles außerhalb der Kreisscheibe |1 − hλ| &lt; 1, die ganze linke Halbebene (A-stabil): die Stabilität begrenzt DT nicht.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.</source>
+        <translation>Gebiet: kein skalares R; gezeichnet für eine Oszillatormode mit dem Eigenwertpaar hλ, hλ̄ (exakt, wenn die Moden entkoppeln; die reelle Achse zeigt die kritisch gedämpfte Mode). Ungedämpfte Moden: hω ≤ 2. Der Abstand zur Grenze folgt aus der Schrittmatrix, nicht aus dem Bild.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.</source>
+        <translation>Gebiet: kein skalares R; gezeichnet für eine Oszillatormode mit dem Eigenwertpaar hλ, hλ̄, Dämpfung mit der Geschwindigkeit des halben Schritts (exakt, wenn die Moden entkoppeln; die reelle Achse zeigt die kritisch gedämpfte Mode). Ungedämpfte Moden: hω ≤ 2. Der Abstand zur Grenze folgt aus der Schrittmatrix, nicht aus dem Bild.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; the step is a product of %1 Verlet substeps (some backwards), drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (damping at the half-kick velocity, as the integrator does), traced ray by ray from 0. Undamped modes: hω ≤ %2 (a step costs %3 force evaluations). The margin uses the step matrix, not the picture.</source>
+        <translation>Gebiet: kein skalares R; der Schritt ist ein Produkt aus %1 Verlet-Teilschritten (einige rückwärts), gezeichnet für eine Oszillatormode mit dem Eigenwertpaar hλ, hλ̄ (Dämpfung mit der Geschwindigkeit des halben Kicks, wie im Integrator), Strahl für Strahl von 0 aus verfolgt. Ungedämpfte Moden: hω ≤ %2 (ein Schritt kostet %3 Kraftauswertungen). Der Abstand zur Grenze folgt aus der Schrittmatrix, nicht aus dem Bild.</translation>
+    </message>
+    <message>
+        <source>No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT limit, DT is only the output interval.</source>
+        <translation>Kein Gebiet: adaptives BDF-Verfahren variabler Ordnung (Ordnungen 1–5), fehlergesteuert, ohne festes Gebiet. BDF1–2 sind A-stabil, BDF3–5 A(α)-stabil bis α ≈ 51°; CVODE verkleinert Schritt oder Ordnung, sobald eine Mode zu wachsen droht: keine Grenze für DT, DT ist nur das Ausgabeintervall.</translation>
+    </message>
+    <message>
+        <source>No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions are small (explicit-like); CVODE keeps the internal step inside them by its error test: no DT limit, stiff bodies only cost steps.</source>
+        <translation>Kein Gebiet: adaptives Adams-Verfahren variabler Ordnung (Ordnungen 1–12), fehlergesteuert, ohne festes Gebiet. Seine Gebiete sind klein (wie bei expliziten Verfahren); CVODE hält den inneren Schritt durch seinen Fehlertest darin: keine Grenze für DT, steife Körper kosten nur Schritte.</translation>
+    </message>
+    <message>
+        <source>No region: XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally stable, no region in the hλ plane; large DT costs accuracy (the body turns soft), not stability.</source>
+        <translation>Kein Gebiet: XPBD projiziert die Federn als nachgiebige Zwangsbedingungen (Nachgiebigkeit 1/ks): unbedingt stabil, kein Gebiet in der hλ-Ebene; ein großes DT kostet Genauigkeit (der Körper wird weich), nicht Stabilität.</translation>
+    </message>
+    <message>
+        <source>No stability region for %1.</source>
+        <translation>Kein Stabilitätsgebiet für %1.</translation>
+    </message>
 </context>
 <context>
     <name>elui::StrainLegend</name>

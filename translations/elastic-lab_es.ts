@@ -2612,6 +2612,122 @@ Los gráficos, los parámetros y las exportaciones siguen funcionando.</translat
         <source>The whole world (%1 bodies) linearised as one system: every body&apos;s modes, and the contact between bodies where two are within the contact skin. </source>
         <translation>El mundo entero (%1 cuerpos) linealizado como un solo sistema: los modos de cada cuerpo y el contacto entre cuerpos donde dos están dentro de la piel de contacto. </translation>
     </message>
+    <message>
+        <source>the fastest mode</source>
+        <translation>el modo más rápido</translation>
+    </message>
+    <message>
+        <source>the fastest mode (hλ = %1, a pure decay)</source>
+        <translation>el modo más rápido (hλ = %1, decaimiento puro)</translation>
+    </message>
+    <message>
+        <source>the mode (hλ = %1, a pure decay)</source>
+        <translation>el modo (hλ = %1, decaimiento puro)</translation>
+    </message>
+    <message>
+        <source>the fastest mode (hλ = %1 ± %2i)</source>
+        <translation>el modo más rápido (hλ = %1 ± %2i)</translation>
+    </message>
+    <message>
+        <source>the mode (hλ = %1 ± %2i)</source>
+        <translation>el modo (hλ = %1 ± %2i)</translation>
+    </message>
+    <message>
+        <source>per mode, modal damping</source>
+        <translation>modo a modo, amortiguamiento modal</translation>
+    </message>
+    <message>
+        <source>xpbd is stable at every DT: no margin to give.</source>
+        <translation>xpbd es estable con cualquier DT: no hay margen que indicar.</translation>
+    </message>
+    <message>
+        <source>%1 chooses its own internal steps: no DT limit from stability.</source>
+        <translation>%1 elige sus propios pasos internos: la estabilidad no limita DT.</translation>
+    </message>
+    <message>
+        <source>No DT limit: every mode of this body stays in the region for any DT.</source>
+        <translation>Sin límite de DT: todos los modos de este cuerpo permanecen en la región con cualquier DT.</translation>
+    </message>
+    <message>
+        <source>No DT is stable: a mode pair grows for every DT (%1).</source>
+        <translation>Ningún DT es estable: un par de modos crece con cualquier DT (%1).</translation>
+    </message>
+    <message>
+        <source>No DT is stable: %1 sits where the region only touches the imaginary axis at 0; it grows for every DT (slowly when DT is small).</source>
+        <translation>Ningún DT es estable: %1 está donde la región solo toca el eje imaginario en 0; crece con cualquier DT (lentamente si DT es pequeño).</translation>
+    </message>
+    <message>
+        <source>DT can grow %1× (to %2 s) before a mode pair goes unstable (%3); the picture is exact for underdamped modes only.</source>
+        <translation>DT puede multiplicarse por %1 (hasta %2 s) antes de que un par de modos se vuelva inestable (%3); la imagen solo es exacta para modos subamortiguados.</translation>
+    </message>
+    <message>
+        <source>DT can grow %1× (to %2 s) before %3 leaves the region.</source>
+        <translation>DT puede multiplicarse por %1 (hasta %2 s) antes de que %3 salga de la región.</translation>
+    </message>
+    <message>
+        <source>DT is already outside the stable range (%1): shrink DT by %2× (to %3 s).</source>
+        <translation>DT ya está fuera del rango estable (%1): reduzca DT en un factor %2 (a %3 s).</translation>
+    </message>
+    <message>
+        <source>DT is already outside: %1 is out of the region; shrink DT by %2× (to %3 s) to bring it back.</source>
+        <translation>DT ya es demasiado grande: %1 está fuera de la región; reduzca DT en un factor %2 (a %3 s) para que vuelva a entrar.</translation>
+    </message>
+    <message>
+        <source>exact spectrum: all %1 eigenvalues of the linearised first-order system (dense eigen-solve)</source>
+        <translation>espectro exacto: los %1 valores propios del sistema linealizado de primer orden (cálculo denso)</translation>
+    </message>
+    <message>
+        <source>modal: all %1 modes of M⁻¹K (symmetric eigen-solve), damping c = φᵀ(M⁻¹D)φ per mode; λ = −c/2 ± i√(ω² − c²/4)</source>
+        <translation>modal: los %1 modos de M⁻¹K (problema de valores propios simétrico), amortiguamiento c = φᵀ(M⁻¹D)φ por modo; λ = −c/2 ± i√(ω² − c²/4)</translation>
+    </message>
+    <message>
+        <source>iterative: %1 Ritz values of the first-order system, Arnoldi (%2 steps) on the Jacobian products, %3 free coordinates: the extreme eigenvalues (largest |λ|) are accurate, inner ones are not</source>
+        <translation>iterativo: %1 valores de Ritz del sistema de primer orden, Arnoldi (%2 pasos) sobre los productos por la jacobiana, %3 coordenadas libres: los valores propios extremos (mayor |λ|) son precisos, los interiores no</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches the imaginary axis up to ±%1i: undamped modes are stable up to hω = 2√2.</source>
+        <translation>Región: |R(hλ)| ≤ 1 para su polinomio de estabilidad R (el polinomio de Taylor de e^z); toca el eje imaginario hasta ±%1i: los modos no amortiguados son estables hasta hω = 2√2.</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches the imaginary axis only at 0: an undamped mode grows for every DT.</source>
+        <translation>Región: |R(hλ)| ≤ 1 para su polinomio de estabilidad R (el polinomio de Taylor de e^z); solo toca el eje imaginario en 0: un modo no amortiguado crece con cualquier DT.</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for Dormand–Prince&apos;s 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a fixed step. The adaptive run picks its own step from the error tolerance: it does not blow up, it takes smaller steps.</source>
+        <translation>Región: |R(hλ)| ≤ 1 para la solución de orden 5 de Dormand–Prince, R = Taylor hasta z⁵ + z⁶/600, tomada con paso fijo. La ejecución adaptativa elige su propio paso según la tolerancia de error: no explota, da pasos más pequeños.</translation>
+    </message>
+    <message>
+        <source>Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| &lt; 1, the whole left half-plane (A-stable): no DT limit from stability.</source>
+        <translation>Región: |1/(1 − hλ)| ≤ 1, todo el exterior del disco |1 − hλ| &lt; 1, es decir, todo el semiplano izquierdo (A-estable): la estabilidad no limita DT.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.</source>
+        <translation>Región: no hay R escalar; dibujada para un modo de oscilador cuyo par de valores propios es hλ, hλ̄ (exacta cuando los modos se desacoplan; el eje real muestra el modo con amortiguamiento crítico). Modos no amortiguados: hω ≤ 2. El margen sale de la matriz de paso, no de la imagen.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.</source>
+        <translation>Región: no hay R escalar; dibujada para un modo de oscilador cuyo par de valores propios es hλ, hλ̄, con el amortiguamiento tomado a la velocidad del medio paso (exacta cuando los modos se desacoplan; el eje real muestra el modo con amortiguamiento crítico). Modos no amortiguados: hω ≤ 2. El margen sale de la matriz de paso, no de la imagen.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; the step is a product of %1 Verlet substeps (some backwards), drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (damping at the half-kick velocity, as the integrator does), traced ray by ray from 0. Undamped modes: hω ≤ %2 (a step costs %3 force evaluations). The margin uses the step matrix, not the picture.</source>
+        <translation>Región: no hay R escalar; el paso es un producto de %1 subpasos de Verlet (algunos hacia atrás), dibujada para un modo de oscilador cuyo par de valores propios es hλ, hλ̄ (amortiguamiento a la velocidad de cada medio impulso, como hace el integrador), trazada rayo a rayo desde 0. Modos no amortiguados: hω ≤ %2 (un paso cuesta %3 evaluaciones de fuerza). El margen sale de la matriz de paso, no de la imagen.</translation>
+    </message>
+    <message>
+        <source>No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT limit, DT is only the output interval.</source>
+        <translation>Sin región: BDF adaptativo de orden variable (órdenes 1–5), con control de error, sin región fija. BDF1–2 son A-estables, BDF3–5 A(α)-estables hasta α ≈ 51°; CVODE reduce el paso o el orden cuando un modo amenaza con crecer: sin límite de DT, DT es solo el intervalo de salida.</translation>
+    </message>
+    <message>
+        <source>No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions are small (explicit-like); CVODE keeps the internal step inside them by its error test: no DT limit, stiff bodies only cost steps.</source>
+        <translation>Sin región: Adams adaptativo de orden variable (órdenes 1–12), con control de error, sin región fija. Sus regiones son pequeñas (como las de un método explícito); CVODE mantiene dentro de ellas el paso interno mediante su prueba de error: sin límite de DT, los cuerpos rígidos solo cuestan pasos.</translation>
+    </message>
+    <message>
+        <source>No region: XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally stable, no region in the hλ plane; large DT costs accuracy (the body turns soft), not stability.</source>
+        <translation>Sin región: XPBD proyecta los resortes como restricciones flexibles (flexibilidad 1/ks): incondicionalmente estable, sin región en el plano hλ; un DT grande cuesta precisión (el cuerpo se vuelve blando), no estabilidad.</translation>
+    </message>
+    <message>
+        <source>No stability region for %1.</source>
+        <translation>No hay región de estabilidad para %1.</translation>
+    </message>
 </context>
 <context>
     <name>elui::StrainLegend</name>

@@ -2612,6 +2612,122 @@ Les graphiques, les paramètres et les exports fonctionnent toujours.</translati
         <source>The whole world (%1 bodies) linearised as one system: every body&apos;s modes, and the contact between bodies where two are within the contact skin. </source>
         <translation>Le monde entier (%1 corps) linéarisé comme un seul système : les modes de chaque corps, et le contact entre corps là où deux sont dans la peau de contact. </translation>
     </message>
+    <message>
+        <source>the fastest mode</source>
+        <translation>le mode le plus rapide</translation>
+    </message>
+    <message>
+        <source>the fastest mode (hλ = %1, a pure decay)</source>
+        <translation>le mode le plus rapide (hλ = %1, décroissance pure)</translation>
+    </message>
+    <message>
+        <source>the mode (hλ = %1, a pure decay)</source>
+        <translation>le mode (hλ = %1, décroissance pure)</translation>
+    </message>
+    <message>
+        <source>the fastest mode (hλ = %1 ± %2i)</source>
+        <translation>le mode le plus rapide (hλ = %1 ± %2i)</translation>
+    </message>
+    <message>
+        <source>the mode (hλ = %1 ± %2i)</source>
+        <translation>le mode (hλ = %1 ± %2i)</translation>
+    </message>
+    <message>
+        <source>per mode, modal damping</source>
+        <translation>mode par mode, amortissement modal</translation>
+    </message>
+    <message>
+        <source>xpbd is stable at every DT: no margin to give.</source>
+        <translation>xpbd est stable quel que soit DT : il n’y a pas de marge à indiquer.</translation>
+    </message>
+    <message>
+        <source>%1 chooses its own internal steps: no DT limit from stability.</source>
+        <translation>%1 choisit lui-même ses pas internes : la stabilité ne limite pas DT.</translation>
+    </message>
+    <message>
+        <source>No DT limit: every mode of this body stays in the region for any DT.</source>
+        <translation>Pas de limite sur DT : tous les modes de ce corps restent dans la région, quel que soit DT.</translation>
+    </message>
+    <message>
+        <source>No DT is stable: a mode pair grows for every DT (%1).</source>
+        <translation>Aucun DT n’est stable : une paire de modes croît pour tout DT (%1).</translation>
+    </message>
+    <message>
+        <source>No DT is stable: %1 sits where the region only touches the imaginary axis at 0; it grows for every DT (slowly when DT is small).</source>
+        <translation>Aucun DT n’est stable : %1 se trouve là où la région ne touche l’axe imaginaire qu’en 0 ; il croît pour tout DT (lentement si DT est petit).</translation>
+    </message>
+    <message>
+        <source>DT can grow %1× (to %2 s) before a mode pair goes unstable (%3); the picture is exact for underdamped modes only.</source>
+        <translation>DT peut être multiplié par %1 (jusqu’à %2 s) avant qu’une paire de modes ne devienne instable (%3) ; l’image n’est exacte que pour les modes sous-amortis.</translation>
+    </message>
+    <message>
+        <source>DT can grow %1× (to %2 s) before %3 leaves the region.</source>
+        <translation>DT peut être multiplié par %1 (jusqu’à %2 s) avant que %3 ne sorte de la région.</translation>
+    </message>
+    <message>
+        <source>DT is already outside the stable range (%1): shrink DT by %2× (to %3 s).</source>
+        <translation>DT est déjà hors du domaine stable (%1) : réduisez DT d’un facteur %2 (à %3 s).</translation>
+    </message>
+    <message>
+        <source>DT is already outside: %1 is out of the region; shrink DT by %2× (to %3 s) to bring it back.</source>
+        <translation>DT est déjà trop grand : %1 est hors de la région ; réduisez DT d’un facteur %2 (à %3 s) pour l’y ramener.</translation>
+    </message>
+    <message>
+        <source>exact spectrum: all %1 eigenvalues of the linearised first-order system (dense eigen-solve)</source>
+        <translation>spectre exact : les %1 valeurs propres du système linéarisé du premier ordre (résolution dense)</translation>
+    </message>
+    <message>
+        <source>modal: all %1 modes of M⁻¹K (symmetric eigen-solve), damping c = φᵀ(M⁻¹D)φ per mode; λ = −c/2 ± i√(ω² − c²/4)</source>
+        <translation>modal : les %1 modes de M⁻¹K (problème aux valeurs propres symétrique), amortissement c = φᵀ(M⁻¹D)φ par mode ; λ = −c/2 ± i√(ω² − c²/4)</translation>
+    </message>
+    <message>
+        <source>iterative: %1 Ritz values of the first-order system, Arnoldi (%2 steps) on the Jacobian products, %3 free coordinates: the extreme eigenvalues (largest |λ|) are accurate, inner ones are not</source>
+        <translation>itératif : %1 valeurs de Ritz du système du premier ordre, Arnoldi (%2 itérations) sur les produits par la jacobienne, %3 coordonnées libres : les valeurs propres extrêmes (plus grand |λ|) sont précises, les intérieures ne le sont pas</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches the imaginary axis up to ±%1i: undamped modes are stable up to hω = 2√2.</source>
+        <translation>Région : |R(hλ)| ≤ 1 pour son polynôme de stabilité R (le polynôme de Taylor de e^z) ; elle touche l’axe imaginaire jusqu’à ±%1i : les modes non amortis sont stables jusqu’à hω = 2√2.</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); it touches the imaginary axis only at 0: an undamped mode grows for every DT.</source>
+        <translation>Région : |R(hλ)| ≤ 1 pour son polynôme de stabilité R (le polynôme de Taylor de e^z) ; elle ne touche l’axe imaginaire qu’en 0 : un mode non amorti croît pour tout DT.</translation>
+    </message>
+    <message>
+        <source>Region: |R(hλ)| ≤ 1 for Dormand–Prince&apos;s 5th-order solution, R = Taylor to z⁵ + z⁶/600, taken at a fixed step. The adaptive run picks its own step from the error tolerance: it does not blow up, it takes smaller steps.</source>
+        <translation>Région : |R(hλ)| ≤ 1 pour la solution d’ordre 5 de Dormand–Prince, R = Taylor jusqu’à z⁵ + z⁶/600, prise à pas fixe. La simulation adaptative choisit son pas d’après la tolérance d’erreur : elle n’explose pas, elle fait des pas plus petits.</translation>
+    </message>
+    <message>
+        <source>Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| &lt; 1, the whole left half-plane (A-stable): no DT limit from stability.</source>
+        <translation>Région : |1/(1 − hλ)| ≤ 1, tout l’extérieur du disque |1 − hλ| &lt; 1, donc tout le demi-plan gauche (A-stable) : la stabilité ne limite pas DT.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (exact when the modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.</source>
+        <translation>Région : pas de R scalaire ; tracée pour un mode d’oscillateur dont la paire de valeurs propres est hλ, hλ̄ (exacte quand les modes se découplent ; l’axe réel montre le mode à amortissement critique). Modes non amortis : hω ≤ 2. La marge vient de la matrice de pas, non de l’image.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, damping at the half-step velocity (exact when the modes decouple; the real axis shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.</source>
+        <translation>Région : pas de R scalaire ; tracée pour un mode d’oscillateur dont la paire de valeurs propres est hλ, hλ̄, l’amortissement étant pris à la vitesse du demi-pas (exacte quand les modes se découplent ; l’axe réel montre le mode à amortissement critique). Modes non amortis : hω ≤ 2. La marge vient de la matrice de pas, non de l’image.</translation>
+    </message>
+    <message>
+        <source>Region: no scalar R; the step is a product of %1 Verlet substeps (some backwards), drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (damping at the half-kick velocity, as the integrator does), traced ray by ray from 0. Undamped modes: hω ≤ %2 (a step costs %3 force evaluations). The margin uses the step matrix, not the picture.</source>
+        <translation>Région : pas de R scalaire ; le pas est un produit de %1 sous-pas de Verlet (certains à rebours), tracée pour un mode d’oscillateur dont la paire de valeurs propres est hλ, hλ̄ (amortissement pris à la vitesse de chaque demi-impulsion, comme le fait l’intégrateur), rayon par rayon depuis 0. Modes non amortis : hω ≤ %2 (un pas coûte %3 évaluations de force). La marge vient de la matrice de pas, non de l’image.</translation>
+    </message>
+    <message>
+        <source>No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed region. BDF1–2 are A-stable, BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the step or the order when a mode threatens: no DT limit, DT is only the output interval.</source>
+        <translation>Pas de région : BDF adaptatif d’ordre variable (ordres 1–5), à contrôle d’erreur, sans région fixe. BDF1–2 sont A-stables, BDF3–5 A(α)-stables jusqu’à α ≈ 51° ; CVODE réduit le pas ou l’ordre dès qu’un mode menace : pas de limite sur DT, DT n’est que l’intervalle de sortie.</translation>
+    </message>
+    <message>
+        <source>No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed region. Its regions are small (explicit-like); CVODE keeps the internal step inside them by its error test: no DT limit, stiff bodies only cost steps.</source>
+        <translation>Pas de région : Adams adaptatif d’ordre variable (ordres 1–12), à contrôle d’erreur, sans région fixe. Ses régions sont petites (comme celles d’une méthode explicite) ; CVODE y maintient le pas interne par son test d’erreur : pas de limite sur DT, un corps raide ne coûte que des pas.</translation>
+    </message>
+    <message>
+        <source>No region: XPBD projects the springs as compliant constraints (compliance 1/ks): unconditionally stable, no region in the hλ plane; large DT costs accuracy (the body turns soft), not stability.</source>
+        <translation>Pas de région : XPBD projette les ressorts comme des contraintes souples (souplesse 1/ks) : inconditionnellement stable, aucune région dans le plan hλ ; un grand DT coûte de la précision (le corps devient mou), pas la stabilité.</translation>
+    </message>
+    <message>
+        <source>No stability region for %1.</source>
+        <translation>Pas de région de stabilité pour %1.</translation>
+    </message>
 </context>
 <context>
     <name>elui::StrainLegend</name>

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <QCoreApplication>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -64,7 +65,129 @@ QFont smaller(const QFont& font) {
     return small;
 }
 
+// The mode that limits DT (R methods), as simlab::stepMarginText names it.
+QString limitingMode(const simlab::StepMargin& m) {
+    if (!m.hasLimiting) return StabilityMapDock::tr("the fastest mode");
+    const Complex z = m.limitingPoint();
+    if (m.limitingIsReal())
+        return (m.limitingIsFastest ? StabilityMapDock::tr("the fastest mode (hλ = %1, a pure decay)")
+                                    : StabilityMapDock::tr("the mode (hλ = %1, a pure decay)"))
+            .arg(num(z.real(), 'g', 3));
+    return (m.limitingIsFastest ? StabilityMapDock::tr("the fastest mode (hλ = %1 ± %2i)")
+                                : StabilityMapDock::tr("the mode (hλ = %1 ± %2i)"))
+        .arg(num(z.real(), 'g', 3), num(std::abs(z.imag()), 'g', 3));
+}
+
 }  // namespace
+
+QString marginSentence(const simlab::StepMargin& m) {
+    if (currentLanguage() == QLatin1String("en")) return QString::fromStdString(m.text);
+    using Case = simlab::StepMargin::Case;
+    // The oscillator methods' basis (predictedStableStep's): their exact step matrix (in the
+    // verdict's words, failure_text.cpp), or each mode.
+    QString basis = StabilityMapDock::tr("per mode, modal damping");
+    if (m.exactStepMatrix) basis = QCoreApplication::translate("FailureText", "exact step matrix");
+    const QString factor = num(m.factor, 'f', 2), shrink = num(1.0 / m.factor, 'f', 2), limit = seconds(m.factor * m.dt);
+    switch (m.kind) {
+        case Case::Xpbd: return StabilityMapDock::tr("xpbd is stable at every DT: no margin to give.");
+        case Case::OwnStep:
+            return StabilityMapDock::tr("%1 chooses its own internal steps: no DT limit from stability.").arg(QString::fromStdString(m.integrator));
+        case Case::Unlimited: return StabilityMapDock::tr("No DT limit: every mode of this body stays in the region for any DT.");
+        case Case::NoStableDt:
+            if (m.oscillator) return StabilityMapDock::tr("No DT is stable: a mode pair grows for every DT (%1).").arg(basis);
+            return StabilityMapDock::tr("No DT is stable: %1 sits where the region only touches the imaginary axis at 0; it grows "
+                                        "for every DT (slowly when DT is small).")
+                .arg(limitingMode(m));
+        case Case::CanGrow:
+            if (m.oscillator)
+                return StabilityMapDock::tr("DT can grow %1× (to %2 s) before a mode pair goes unstable (%3); the picture is exact "
+                                            "for underdamped modes only.")
+                    .arg(factor, limit, basis);
+            return StabilityMapDock::tr("DT can grow %1× (to %2 s) before %3 leaves the region.").arg(factor, limit, limitingMode(m));
+        case Case::Outside:
+            if (m.oscillator)
+                return StabilityMapDock::tr("DT is already outside the stable range (%1): shrink DT by %2× (to %3 s).")
+                    .arg(basis, shrink, limit);
+            return StabilityMapDock::tr("DT is already outside: %1 is out of the region; shrink DT by %2× (to %3 s) to bring it back.")
+                .arg(limitingMode(m), shrink, limit);
+    }
+    return QString::fromStdString(m.text);
+}
+
+QString spectrumSentence(const simlab::SpectrumPoints& p) {
+    if (currentLanguage() == QLatin1String("en")) return QString::fromStdString(p.methodText);
+    const QString count = num(static_cast<long long>(p.count));
+    switch (p.kind) {
+        case simlab::SpectrumPoints::Method::Exact:
+            return StabilityMapDock::tr("exact spectrum: all %1 eigenvalues of the linearised first-order system (dense "
+                                        "eigen-solve)")
+                .arg(count);
+        case simlab::SpectrumPoints::Method::Modal:
+            return StabilityMapDock::tr("modal: all %1 modes of M⁻¹K (symmetric eigen-solve), damping c = φᵀ(M⁻¹D)φ per mode; "
+                                        "λ = −c/2 ± i√(ω² − c²/4)")
+                .arg(count);
+        case simlab::SpectrumPoints::Method::Iterative: break;
+    }
+    return StabilityMapDock::tr("iterative: %1 Ritz values of the first-order system, Arnoldi (%2 steps) on the Jacobian "
+                                "products, %3 free coordinates: the extreme eigenvalues (largest |λ|) are accurate, inner "
+                                "ones are not")
+        .arg(count, num(static_cast<long long>(p.arnoldiSteps)), num(static_cast<long long>(p.freeCoordinates)));
+}
+
+QString regionNoteSentence(const std::string& integrator) {
+    if (currentLanguage() == QLatin1String("en")) return QString::fromStdString(simlab::regionNote(integrator));
+    using Kind = simlab::RegionNoteParts::Kind;
+    const simlab::RegionNoteParts parts = simlab::regionNoteParts(integrator);
+    switch (parts.kind) {
+        case Kind::TaylorPolynomial:
+            if (parts.imaginaryReach > 0.0)
+                return StabilityMapDock::tr("Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of "
+                                            "e^z); it touches the imaginary axis up to ±%1i: undamped modes are stable up "
+                                            "to hω = 2√2.")
+                    .arg(num(parts.imaginaryReach, 'g', 3));
+            return StabilityMapDock::tr("Region: |R(hλ)| ≤ 1 for its stability polynomial R (the Taylor polynomial of e^z); "
+                                        "it touches the imaginary axis only at 0: an undamped mode grows for every DT.");
+        case Kind::DormandPrince:
+            return StabilityMapDock::tr("Region: |R(hλ)| ≤ 1 for Dormand–Prince's 5th-order solution, R = Taylor to z⁵ + "
+                                        "z⁶/600, taken at a fixed step. The adaptive run picks its own step from the error "
+                                        "tolerance: it does not blow up, it takes smaller steps.");
+        case Kind::ImplicitEuler:
+            return StabilityMapDock::tr("Region: |1/(1 − hλ)| ≤ 1, everything outside the disc |1 − hλ| < 1, the whole left "
+                                        "half-plane (A-stable): no DT limit from stability.");
+        case Kind::SymplecticEuler:
+            return StabilityMapDock::tr("Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ "
+                                        "(exact when the modes decouple; the real axis shows the critically damped mode). "
+                                        "Undamped modes: hω ≤ 2. The margin uses the step matrix, not the picture.");
+        case Kind::Verlet:
+            return StabilityMapDock::tr("Region: no scalar R; drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄, "
+                                        "damping at the half-step velocity (exact when the modes decouple; the real axis "
+                                        "shows the critically damped mode). Undamped modes: hω ≤ 2. The margin uses the "
+                                        "step matrix, not the picture.");
+        case Kind::Composition:
+            return StabilityMapDock::tr("Region: no scalar R; the step is a product of %1 Verlet substeps (some backwards), "
+                                        "drawn for an oscillator mode whose eigenvalue pair is hλ, hλ̄ (damping at the "
+                                        "half-kick velocity, as the integrator does), traced ray by ray from 0. Undamped "
+                                        "modes: hω ≤ %2 (a step costs %3 force evaluations). The margin uses the step "
+                                        "matrix, not the picture.")
+                .arg(num(static_cast<long long>(parts.substeps)), num(parts.undampedLimit, 'g', 3),
+                     num(static_cast<long long>(parts.forceEvaluations)));
+        case Kind::CvodeBdf:
+            return StabilityMapDock::tr("No region: adaptive variable-order BDF (orders 1–5): error-controlled, no fixed "
+                                        "region. BDF1–2 are A-stable, BDF3–5 A(α)-stable down to α ≈ 51°; CVODE shrinks the "
+                                        "step or the order when a mode threatens: no DT limit, DT is only the output "
+                                        "interval.");
+        case Kind::CvodeAdams:
+            return StabilityMapDock::tr("No region: adaptive variable-order Adams (orders 1–12): error-controlled, no fixed "
+                                        "region. Its regions are small (explicit-like); CVODE keeps the internal step inside "
+                                        "them by its error test: no DT limit, stiff bodies only cost steps.");
+        case Kind::Xpbd:
+            return StabilityMapDock::tr("No region: XPBD projects the springs as compliant constraints (compliance 1/ks): "
+                                        "unconditionally stable, no region in the hλ plane; large DT costs accuracy (the "
+                                        "body turns soft), not stability.");
+        case Kind::Unknown: break;
+    }
+    return StabilityMapDock::tr("No stability region for %1.").arg(QString::fromStdString(integrator));
+}
 
 StabilityMapDock::StabilityMapDock(QWidget* parent) : QDockWidget(tr("Stability map"), parent) {
     setObjectName(QStringLiteral("StabilityMapDock"));
@@ -357,28 +480,26 @@ void StabilityMapDock::describe(const Result& r) {
     const QString name = QString::fromStdString(r.integrator);
     m_plot->xAxis->setLabel(tr("Re(hλ), h = DT = %1 s").arg(num(m_shownDt)));
     if (r.views.size() <= 1) {
-        m_marginLabel->setText(QStringLiteral("%1: %2").arg(name, QString::fromStdString(m_margin.text)));
+        m_marginLabel->setText(QStringLiteral("%1: %2").arg(name, marginSentence(m_margin)));
     } else {
         // Side by side: every view's margin, the primary (smallest margin) first.
         QStringList lines{tr("View %1, %2 (filled): %3")
                               .arg(int(std::find_if(r.views.begin(), r.views.end(),
                                                     [&](const View& v) { return v.integrator == r.integrator; }) -
                                        r.views.begin()) + 1)
-                              .arg(name, QString::fromStdString(m_margin.text))};
+                              .arg(name, marginSentence(m_margin))};
         for (std::size_t v = 0; v < r.views.size(); ++v)
             if (r.views[v].integrator != r.integrator)
                 lines << tr("View %1, %2 (dashed): %3")
                              .arg(v + 1)
-                             .arg(QString::fromStdString(r.views[v].integrator), QString::fromStdString(r.views[v].margin.text));
+                             .arg(QString::fromStdString(r.views[v].integrator), marginSentence(r.views[v].margin));
         m_marginLabel->setText(lines.join(QLatin1Char('\n')));
     }
     const QString world = r.world ? tr("The whole world (%1 bodies) linearised as one system: every body's modes, "
                                        "and the contact between bodies where two are within the contact skin. ")
                                         .arg(r.world->bodies.size())
                                   : QString();
-    m_methodLabel->setText(world + tr("Eigenvalues: %1.\n%2")
-                                       .arg(QString::fromStdString(m_spectrum.methodText),
-                                            QString::fromStdString(simlab::regionNote(r.integrator))));
+    m_methodLabel->setText(world + tr("Eigenvalues: %1.\n%2").arg(spectrumSentence(m_spectrum), regionNoteSentence(r.integrator)));
 }
 
 void StabilityMapDock::showMeasured() {

@@ -52,6 +52,17 @@ namespace elui {
 
 class Mailbox;
 
+// simlab's words on the map in the window's language (in English, simlab's own text, which the
+// tests check and the docs quote): composed from their parts with tr() and the language's number
+// format (num()), as failure_text.h does for a run's failure.
+//   the margin     "DT can grow 5.30× (to 0.0159 s) before the fastest mode (hλ = -0.525, a
+//                  pure decay) leaves the region." (every case of simlab::StepMargin::Case)
+//   the spectrum   how the eigenvalues were found: exact, modal or iterative (Arnoldi)
+//   the region     what the picture shows for the integrator (one paragraph per family)
+QString marginSentence(const simlab::StepMargin& margin);
+QString spectrumSentence(const simlab::SpectrumPoints& points);
+QString regionNoteSentence(const std::string& integrator);
+
 class StabilityMapDock : public QDockWidget {
     Q_OBJECT
 public:
