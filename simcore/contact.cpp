@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "simcore/scan_kernels.h"
+
 // The wall test runs over every particle in every evaluation: compiled for AVX2 and baseline
 // x86-64 and picked at load time, as the force kernels are (force_kernels.cpp).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(ELASTIC_LAB_MULTIVERSION)
@@ -219,27 +221,13 @@ double layerBarrierDepth(const LayerBarrierSet& set, std::size_t k, const double
     return kSqrt2 * along / std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g02);
 }
 
-SIMCORE_VECTOR_KERNEL PairScan scanPairedRanges(const ContactParams& c, const double* x, const double* g4, int begin,
-                                                int end, int offset) {
-    const double l0 = c.low[0], l1 = c.low[1], l2 = c.low[2], h0 = c.high[0], h1 = c.high[1], h2 = c.high[2];
-    double lo0 = l0, lo1 = l1, lo2 = l2, hi0 = h0, hi1 = h1, hi2 = h2;  // extent, clamped to the walls
-    int beyond = 0;
-    for (int i = begin; i < end; ++i) {
-        const double* xi = x + 3 * i;
-        const double* xo = x + 3 * (i + offset);
-        const double* g = g4 + 4 * (i + offset);
-        lo0 = std::min(lo0, std::min(xi[0], xo[0]));
-        lo1 = std::min(lo1, std::min(xi[1], xo[1]));
-        lo2 = std::min(lo2, std::min(xi[2], xo[2]));
-        hi0 = std::max(hi0, std::max(xi[0], xo[0]));
-        hi1 = std::max(hi1, std::max(xi[1], xo[1]));
-        hi2 = std::max(hi2, std::max(xi[2], xo[2]));
-        beyond |= (xi[0] - xo[0]) * g[0] + (xi[1] - xo[1]) * g[1] + (xi[2] - xo[2]) * g[2] > 0.0;
-    }
+PairScan scanPairedRanges(const ContactParams& c, const double* x, const double* g4, int begin, int end, int offset) {
+    // Four pairs at a time (scan_kernels.h). NaN coordinates compare false everywhere: they
+    // are the failure check's, not contact's.
+    const kernels::PairScanBits bits = kernels::scanPairs(c.low, c.high, x, g4, begin, end, offset);
     PairScan scan;
-    // NaN coordinates compare false everywhere: they are the failure check's, not contact's.
-    scan.outsideWalls = lo0 < l0 || lo1 < l1 || lo2 < l2 || hi0 > h0 || hi1 > h1 || hi2 > h2;
-    scan.beyondPlane = beyond != 0;
+    scan.outsideWalls = bits.outsideWalls;
+    scan.beyondPlane = bits.beyondPlane;
     return scan;
 }
 

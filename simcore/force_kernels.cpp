@@ -1,4 +1,5 @@
 #include "simcore/force_kernels.h"
+#include "simcore/scan_kernels.h"
 
 #include <algorithm>
 #include <atomic>
@@ -9,8 +10,9 @@
 #include <new>
 #include <type_traits>
 
-// The kernels are written once (force_kernels_body.h) over simd.h's width-generic vectors and
-// compiled here once per instruction set, each copy in a namespace of its own and under
+// The kernels are written once (force_kernels_body.h, and the scans beside them:
+// scan_kernels_body.h) over simd.h's width-generic vectors and compiled here once per
+// instruction set, each copy in a namespace of its own and under
 // `#pragma GCC target`, so that one binary runs on any x86-64 and picks the widest set the CPU
 // has at load time:
 //   portable  the baseline target (SSE2 on x86-64; whatever the target is elsewhere, e.g. NEON
@@ -59,6 +61,7 @@ QuadSums combineQuadLanes(const double (&power)[2][4], const double (&square)[2]
 #define SIMCORE_SIMD_NS portable
 #include "simcore/internal/simd.h"
 #include "simcore/internal/force_kernels_body.h"
+#include "simcore/internal/scan_kernels_body.h"
 #undef SIMCORE_SIMD_ISA
 #undef SIMCORE_SIMD_NS
 
@@ -69,6 +72,7 @@ QuadSums combineQuadLanes(const double (&power)[2][4], const double (&square)[2]
 #define SIMCORE_SIMD_NS avx2
 #include "simcore/internal/simd.h"
 #include "simcore/internal/force_kernels_body.h"
+#include "simcore/internal/scan_kernels_body.h"
 #undef SIMCORE_SIMD_ISA
 #undef SIMCORE_SIMD_NS
 #pragma GCC pop_options
@@ -81,6 +85,7 @@ QuadSums combineQuadLanes(const double (&power)[2][4], const double (&square)[2]
 #define SIMCORE_SIMD_NS avx512
 #include "simcore/internal/simd.h"
 #include "simcore/internal/force_kernels_body.h"
+#include "simcore/internal/scan_kernels_body.h"
 #undef SIMCORE_SIMD_ISA
 #undef SIMCORE_SIMD_NS
 #pragma GCC pop_options
@@ -180,6 +185,22 @@ double vertexGradients(const VertexFans& fans, int begin, int end, const double*
     if (kernelsInUse() >= KernelSet::Avx2) return avx2::vertexGradients(fans, begin, end, x, g4);
 #endif
     return portable::vertexGradients(fans, begin, end, x, g4);
+}
+
+StateScan scanState(const double* x, const double* v, const double* invMass3, const double* mass, bool weighs,
+                    double g, int begin, int end) {
+#if SIMCORE_AVX2_KERNELS
+    if (kernelsInUse() >= KernelSet::Avx2) return avx2::scanState(x, v, invMass3, mass, weighs, g, begin, end);
+#endif
+    return portable::scanState(x, v, invMass3, mass, weighs, g, begin, end);
+}
+
+PairScanBits scanPairs(const std::array<double, 3>& low, const std::array<double, 3>& high, const double* x,
+                       const double* g4, int begin, int end, int offset) {
+#if SIMCORE_AVX2_KERNELS
+    if (kernelsInUse() >= KernelSet::Avx2) return avx2::scanPairs(low, high, x, g4, begin, end, offset);
+#endif
+    return portable::scanPairs(low, high, x, g4, begin, end, offset);
 }
 
 VertexFans vertexFans(const Topology& topology) {

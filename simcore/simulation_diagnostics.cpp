@@ -10,6 +10,7 @@
 
 #include "simcore/failure_texts.h"
 #include "simcore/internal/body_ode.h"
+#include "simcore/scan_kernels.h"
 
 namespace simcore {
 
@@ -66,41 +67,19 @@ Simulation::Scan Simulation::scanState() const {
 }
 
 Simulation::Scan Simulation::scanPiece(int begin, int end) const {
-    const double* x = m_y.data();
-    const double* v = m_y.data() + m_n;
-    const double* inv = m_invMass3.data();
-    const bool weighs = m_forces.terms().has(Term::Gravity);
-    const double g = m_forces.params.gravity;
-    const double infinity = std::numeric_limits<double>::infinity();
+    // Four particles at a time (scan_kernels.h), the energies summed in particle order. A
+    // fixed particle is the one whose y does not move (inverseMasses: a free particle moves
+    // along y in every dimension).
+    const kernels::StateScan k =
+        kernels::scanState(m_y.data(), m_y.data() + m_n, m_invMass3.data(), m_body.mass.data(),
+                           m_forces.terms().has(Term::Gravity), m_forces.params.gravity, begin, end);
     Scan s;
-    s.low.setConstant(infinity);
-    s.high.setConstant(-infinity);
-    // (x - x) + (v - v) is 0 for finite coordinates and NaN otherwise: summed, it tells
-    // whether all are finite without a branch per coordinate.
-    double nonFinite = 0.0;
-    double kinetic = 0.0, gravity = 0.0, fastest2 = 0.0;
-    for (int i = begin; i < end; ++i) {
-        for (int axis = 0; axis < 3; ++axis) {
-            const int k = 3 * i + axis;
-            nonFinite += (x[k] - x[k]) + (v[k] - v[k]);
-            // Only moving coordinates (not a fixed particle's, not an axis the body does
-            // not move in) count for the extent.
-            const bool moves = inv[k] != 0.0;
-            s.low[axis] = std::min(s.low[axis], moves ? x[k] : infinity);
-            s.high[axis] = std::max(s.high[axis], moves ? x[k] : -infinity);
-        }
-        const Eigen::Map<const Eigen::Vector3d> vi(v + 3 * i);
-        const double speed2 = vi.squaredNorm();
-        fastest2 = std::max(fastest2, speed2);
-        if (m_body.fixed[static_cast<std::size_t>(i)]) continue;
-        const double m = m_body.mass[i];
-        kinetic += 0.5 * m * speed2;
-        if (weighs) gravity += m * g * x[3 * i + 1];
-    }
-    s.finite = nonFinite == 0.0;
-    s.kinetic = kinetic;
-    s.gravity = gravity;
-    s.fastest = std::sqrt(fastest2);
+    s.finite = k.finite;
+    s.low = Eigen::Array3d(k.low[0], k.low[1], k.low[2]);
+    s.high = Eigen::Array3d(k.high[0], k.high[1], k.high[2]);
+    s.kinetic = k.kinetic;
+    s.gravity = k.gravity;
+    s.fastest = std::sqrt(k.fastest2);
     return s;
 }
 
