@@ -2,12 +2,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "simcore/internal/jacobians.h"
 #include "simcore/parallel.h"
 
 namespace simcore {
+
+namespace {
+// to = from over n doubles, with streaming stores where `to` is 16-byte aligned: the saved
+// state is read only when a step fails, so its lines need not be fetched into the cache
+// first. The fence orders the stores before the pool's join publishes them.
+void streamCopy(double* to, const double* from, Eigen::Index n) {
+    Eigen::Index i = 0;
+#if defined(__SSE2__)
+    for (; i < n && (reinterpret_cast<std::uintptr_t>(to + i) & 15) != 0; ++i) to[i] = from[i];
+    for (; i + 2 <= n; i += 2) _mm_stream_pd(to + i, _mm_loadu_pd(from + i));
+    for (; i < n; ++i) to[i] = from[i];
+    _mm_sfence();
+#else
+    std::copy(from, from + n, to);
+#endif
+}
+}  // namespace
 
 void BodyOde::derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) {
     if (!takeOffered(y, dydt, nullptr)) compute(y, dydt, m_extras, true);
@@ -17,7 +39,11 @@ void BodyOde::derivative(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd
     if (!takeOffered(y, dydt, &then)) compute(y, dydt, m_extras, true, &then);
 }
 
-bool BodyOde::takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const RangeWork* then) {
+void BodyOde::derivativeMotion(double /*t*/, const Eigen::VectorXd& y, Eigen::VectorXd& dydt, RangeWork then) {
+    if (!takeOffered(y, dydt, &then, false)) compute(y, dydt, m_extras, true, &then, false);
+}
+
+bool BodyOde::takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const RangeWork* then, bool xdot) {
     // Offered to one call only: a first stage elsewhere than at the measured state withdraws it.
     Eigen::VectorXd* saveTo = std::exchange(m_saveTo, nullptr);
     const bool offered = std::exchange(m_offered, false);
@@ -25,9 +51,13 @@ bool BodyOde::takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const
         if (saveTo) *saveTo = *m_endAt;  // not written yet (offerEnd's contract)
         return false;
     }
-    // The save rides on the pool run below: each range of y copied before `then` writes it.
-    auto saving = [&y, saveTo, caller = then](Eigen::Index begin, Eigen::Index length) {
-        saveTo->segment(begin, length) = y.segment(begin, length);
+    // The save rides on the pool run below: each range of y copied before `then` writes it
+    // (without xdot, a range of v hands over x's range too: derivativeMotion).
+    const Eigen::Index n = positions();
+    auto saving = [&y, saveTo, caller = then, xdot, n](Eigen::Index begin, Eigen::Index length) {
+        streamCopy(saveTo->data() + begin, y.data() + begin, length);
+        if (!xdot && begin < 2 * n)
+            streamCopy(saveTo->data() + begin - n, y.data() + begin - n, std::min(length, 2 * n - begin));
         if (caller) (*caller)(begin, length);
     };
     const RangeWork savingWork(saving);
@@ -38,20 +68,20 @@ bool BodyOde::takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const
     // The measurement's last stage, held back until now, writes its xdot and a (in the buffer
     // dydt now holds) and runs `then` on them in the same pool run; when it was already written
     // (a restored cache, or written for a checkpoint), `then` alone.
-    const Eigen::Index n = positions();
-    if (m_forces.finishMotion(then)) {
+    if (m_forces.finishMotion(then, xdot)) {
         if (then) (*then)(2 * n, kAux);
     } else if (then) {
-        inPieces(dydt.size(), *then);
+        const Eigen::Index from = xdot ? 0 : n;
+        inPieces(dydt.size() - from, [&](Eigen::Index b, Eigen::Index l) { (*then)(from + b, l); });
     }
     return true;
 }
 
 void BodyOde::compute(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, ForceExtras& extras, bool count,
-                      const RangeWork* then) {
+                      const RangeWork* then, bool xdot) {
     const Eigen::Index n = positions();
-    m_forces.evaluateMotion(y.data(), y.data() + n, m_invMass.data(), dydt.data(), dydt.data() + n, extras, count,
-                            then);
+    m_forces.evaluateMotion(y.data(), y.data() + n, m_invMass.data(), xdot ? dydt.data() : nullptr,
+                            dydt.data() + n, extras, count, then);
     dydt[2 * n] = extras.dampingPower;
     dydt[2 * n + 1] = extras.contactPower;
     if (then) (*then)(2 * n, kAux);

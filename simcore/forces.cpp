@@ -593,9 +593,10 @@ void ForceModel::evaluateMotionDeferred(const double* x, const double* v, const 
     evaluateInto(x, v, invMass3, xdot, a, extras, count, nullptr, true, beside);
 }
 
-bool ForceModel::finishMotion(const RangeWork* then) {
+bool ForceModel::finishMotion(const RangeWork* then, bool xdot) {
     if (!m_pending.held) return false;
     m_pending.held = false;
+    if (!xdot) m_pending.xdot = nullptr;
     lastStage(m_pending, then);
     return true;
 }
@@ -756,8 +757,9 @@ void ForceModel::lastStage(const LastStage& last, const RangeWork* then) {
                     std::copy(last.pointerOut.begin(), last.pointerOut.end(), last.out + 3 * last.pulled);
                 if (last.xdot) std::copy(last.v + 3 * begin, last.v + 3 * end, last.xdot + 3 * begin);
                 if (then) {
+                    // Without xdot, a's range hands over x's and v's (BodyOde::derivativeMotion).
                     const std::ptrdiff_t first = 3 * begin, length = 3 * (end - begin);
-                    (*then)(first, length);
+                    if (last.xdot) (*then)(first, length);
                     (*then)(n3 + first, length);
                 }
             }

@@ -169,7 +169,8 @@ public:
     // a = F * invMass3 (3N each, 0 where invMass3 is 0), written by the chunks in parallel.
     // With `then`, each chunk calls then(begin, length) on its ranges of the combined vector
     // [xdot | a] (xdot at 0, a at 3N) as soon as they are written; no element of x or v is
-    // read after its range is handed over, so `then` may overwrite them.
+    // read after its range is handed over, so `then` may overwrite them. With xdot nullptr,
+    // `then` runs on a's ranges only, each handing over x's and v's of the same particles.
     void evaluateMotion(const double* x, const double* v, const double* invMass3, double* xdot,
                         double* a, ForceExtras& extras, bool count = true, const RangeWork* then = nullptr);
     // The same with its last stage held back: extras are final, xdot and a are written by
@@ -182,8 +183,9 @@ public:
     void evaluateMotionDeferred(const double* x, const double* v, const double* invMass3, double* xdot, double* a,
                                 ForceExtras& extras, bool count = true, const TaskRef* beside = nullptr);
     // Writes the held-back xdot and a (with `then` on their ranges, as evaluateMotion's);
-    // false when nothing is held back.
-    bool finishMotion(const RangeWork* then = nullptr);
+    // false when nothing is held back. Without xdot, a alone (as evaluateMotion's with xdot
+    // nullptr).
+    bool finishMotion(const RangeWork* then = nullptr, bool xdot = true);
     void dropMotion() { m_pending.held = false; }
     // One particle's force split by part (ForcePart), for a free-body diagram. Every part is a
     // whole evaluation by evaluate() with only that part switched on (the other terms off, the

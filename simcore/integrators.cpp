@@ -66,11 +66,16 @@ public:
     std::string_view name() const override { return "rk4"; }
     int order() const override { return 4; }
     int evaluationsPerStep() const override { return 4; }
+    void prepare(const StateLayout& layout) override {
+        ExplicitBase::prepare(layout);
+        m_s2.setZero(layout.size());
+        m_s3.setZero(layout.size());
+    }
     StepReport step(OdeSystem& system, double t, double h, Eigen::VectorXd& y) override {
         // The stage sums element by element, each range as soon as its derivative is final
-        // (see OdeSystem::derivative).
-        // (kernels::stageSum and rk4Sum: y + c k and y + h/6 (k1 + 2 k2 + 2 k3 + k4) element by
-        // element, in the widest vectors the CPU has.)
+        // (see OdeSystem::derivative), in the widest vectors the CPU has (kernels::stageSum
+        // and rk4Sum: y + c k and y + h/6 (k1 + 2 k2 + 2 k3 + k4), the same bits as plain loops).
+        if (system.secondOrder()) return motionStep(system, t, h, y);
         auto stage = [this, &y](double c, const Eigen::VectorXd* k) {
             return [this, &y, c, k](Eigen::Index b, Eigen::Index l) {
                 kernels::stageSum(m_tmp.data() + b, y.data() + b, c, k->data() + b, static_cast<std::size_t>(l));
@@ -85,6 +90,42 @@ public:
         });
         return {h, h, -1.0, 4};
     }
+
+private:
+    // On a second-order system (OdeSystem::secondOrder) x' is never copied out of v: the
+    // stage states are kept apart (y, s1, s2, s3) and x's sums read their v, which are the
+    // very numbers a copy would hold, so the bits are those of the sums above. Each range
+    // [b, b + l) of v comes with x's range [b - n, b - n + l) (aux ranges alone).
+    template <class Work>
+    static auto motionRanges(Eigen::Index n, Work work) {
+        return [n, work](Eigen::Index b, Eigen::Index l) {
+            const Eigen::Index vEnd = std::min(b + l, 2 * n);
+            if (b < vEnd) work(b - n, b, static_cast<std::size_t>(vEnd - b));
+            if (vEnd < b + l) work(-1, vEnd, static_cast<std::size_t>(b + l - vEnd));
+        };
+    }
+    StepReport motionStep(OdeSystem& system, double t, double h, Eigen::VectorXd& y) {
+        const Eigen::Index n = m_layout.positions;
+        Eigen::VectorXd &s1 = m_tmp, &s2 = m_s2, &s3 = m_s3;
+        // s = y + c k, x's from the stage state's v (xb: where x's range starts; < 0 for aux).
+        auto stage = [&](double c, const Eigen::VectorXd& at, const Eigen::VectorXd& k, Eigen::VectorXd& s) {
+            return motionRanges(n, [&y, c, &at, &k, &s](Eigen::Index xb, Eigen::Index b, std::size_t l) {
+                if (xb >= 0) kernels::stageSum(s.data() + xb, y.data() + xb, c, at.data() + b, l);
+                kernels::stageSum(s.data() + b, y.data() + b, c, k.data() + b, l);
+            });
+        };
+        system.derivativeMotion(t, y, m_k1, stage(0.5 * h, y, m_k1, s1));
+        system.derivativeMotion(t + 0.5 * h, s1, m_k2, stage(0.5 * h, s1, m_k2, s2));
+        system.derivativeMotion(t + 0.5 * h, s2, m_k3, stage(h, s2, m_k3, s3));
+        // x before v: x's sum reads y's v, which v's sum overwrites.
+        system.derivativeMotion(t + h, s3, m_k4, motionRanges(n, [&](Eigen::Index xb, Eigen::Index b, std::size_t l) {
+            if (xb >= 0) kernels::rk4Sum(y.data() + xb, h / 6.0, y.data() + b, s1.data() + b, s2.data() + b, s3.data() + b, l);
+            kernels::rk4Sum(y.data() + b, h / 6.0, m_k1.data() + b, m_k2.data() + b, m_k3.data() + b, m_k4.data() + b, l);
+        }));
+        return {h, h, -1.0, 4};
+    }
+
+    Eigen::VectorXd m_s2, m_s3;
 };
 
 class SymplecticEuler final : public ExplicitBase {

@@ -77,6 +77,20 @@ public:
         inPieces(dydt.size(), then);
     }
 
+    // Second-order systems (x' = v exactly, y = [x (n) | v (n) | aux (m)]) say so, and then
+    // derivativeMotion() writes only dydt's tail [n, size) (a and aux'), never the copy of v
+    // that x' would be: a method reads x' from the stage state's v itself. then(begin, length)
+    // runs over ranges that cover [n, size) once, each when its part of dydt is final; a range
+    // inside [n, 2n) hands over those velocities' derivatives and also the state's x and v of
+    // the same coordinates ([begin - n, begin - n + length) and the range itself), so `then`
+    // may overwrite either. The default computes the whole of dydt, then runs `then` in pieces.
+    virtual bool secondOrder() const { return false; }
+    virtual void derivativeMotion(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt, RangeWork then) {
+        derivative(t, y, dydt);
+        const Eigen::Index n = layout().positions;
+        inPieces(dydt.size() - n, [&](Eigen::Index b, Eigen::Index l) { then(n + b, l); });
+    }
+
     // Element-wise vector work of a step (y + h k, ...) may be split in pieces that run on
     // several threads: runPieces calls task(0..pieces()-1) and returns when all are done.
     virtual int pieces() const { return 1; }

@@ -57,10 +57,14 @@ public:
     StateLayout layout() const override { return {positions(), kAux}; }
     void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt) override;
     void derivative(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt, RangeWork then) override;
+    // x' = v: derivativeMotion leaves xdot unwritten (OdeSystem::secondOrder).
+    bool secondOrder() const override { return true; }
+    void derivativeMotion(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dydt, RangeWork then) override;
     // dy/dt at y with the force by-products; counted as a force evaluation or not. With
-    // `then`, the chunks run it on their ranges of dydt as they finish them.
+    // `then`, the chunks run it on their ranges of dydt as they finish them. Without xdot,
+    // dydt.head(n) is not written and `then` runs as derivativeMotion's.
     void compute(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, ForceExtras& extras, bool count,
-                 const RangeWork* then = nullptr);
+                 const RangeWork* then = nullptr, bool xdot = true);
     // The by-products of the last derivative() (degenerate springs, ...).
     const ForceExtras& extras() const { return m_extras; }
     int pieces() const override;
@@ -128,7 +132,7 @@ private:
     Eigen::Index positions() const { return 3 * Eigen::Index{m_body.topology.particleCount()}; }
     // Takes the offered end-of-step derivative when y is the state it was measured at.
     // (With `then` run on dydt as the derivative's own would.)
-    bool takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const RangeWork* then);
+    bool takeOffered(const Eigen::VectorXd& y, Eigen::VectorXd& dydt, const RangeWork* then, bool xdot = true);
     // Contact at the linearisation point: the walls' diagonal Jacobians and the layer
     // barrier's active pairs (see the .cpp), plus the design point when one is set.
     void linearizeContact(const Eigen::VectorXd& y);
