@@ -563,26 +563,26 @@
     <name>WorldExport</name>
     <message>
         <source>No run of several bodies to export</source>
-        <translation type="unfinished"></translation>
+        <translation>لا يوجد تشغيل لعدة أجسام لتصديره</translation>
     </message>
     <message>
         <source>Export data</source>
-        <translation type="unfinished">تصدير البيانات</translation>
+        <translation>تصدير البيانات</translation>
     </message>
     <message>
         <source>CSV of several bodies, comma and decimal point (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV لعدة أجسام، فاصلة ونقطة عشرية (*.csv)</translation>
     </message>
     <message>
         <source>Wrote %1 rows of the world to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>كُتب %1 صفًا من العالم إلى %2</translation>
     </message>
 </context>
 <context>
     <name>elui::BodiesDock</name>
     <message>
         <source>Bodies</source>
-        <translation type="unfinished"></translation>
+        <translation>الأجسام</translation>
     </message>
     <message>
         <source>The bodies of the scene, total momentum and the smallest gap, with their curves against simulated time</source>
@@ -590,127 +590,127 @@
     </message>
     <message>
         <source>This dock is for scenes of several bodies: Presets &gt; Several bodies, or a scene file of several bodies.</source>
-        <translation type="unfinished"></translation>
+        <translation>هذه اللوحة لمشاهد الأجسام المتعددة: إعدادات مسبقة &gt; أجسام متعددة، أو ملف مشهد لعدة أجسام.</translation>
     </message>
     <message>
         <source>body</source>
-        <translation type="unfinished"></translation>
+        <translation>الجسم</translation>
     </message>
     <message>
         <source>mass [kg]</source>
-        <translation type="unfinished"></translation>
+        <translation>الكتلة [kg]</translation>
     </message>
     <message>
         <source>centre [m]</source>
-        <translation type="unfinished"></translation>
+        <translation>المركز [m]</translation>
     </message>
     <message>
         <source>velocity [m/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>السرعة [m/s]</translation>
     </message>
     <message>
         <source>volume in/out</source>
-        <translation type="unfinished"></translation>
+        <translation>الحجم داخلي/خارجي</translation>
     </message>
     <message>
         <source>pressure in/out</source>
-        <translation type="unfinished"></translation>
+        <translation>الضغط داخلي/خارجي</translation>
     </message>
     <message>
         <source>Total momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>كمية الحركة الكلية</translation>
     </message>
     <message>
         <source>min_gap</source>
-        <translation type="unfinished"></translation>
+        <translation>min_gap</translation>
     </message>
     <message>
         <source>Volume per body and layer</source>
-        <translation type="unfinished"></translation>
+        <translation>الحجم لكل جسم وطبقة</translation>
     </message>
     <message>
         <source>Pressure per body and layer</source>
-        <translation type="unfinished"></translation>
+        <translation>الضغط لكل جسم وطبقة</translation>
     </message>
     <message>
         <source>gap [m]</source>
-        <translation type="unfinished"></translation>
+        <translation>الفجوة [m]</translation>
     </message>
     <message>
         <source>volume</source>
-        <translation type="unfinished"></translation>
+        <translation>الحجم</translation>
     </message>
     <message>
         <source>pressure</source>
-        <translation type="unfinished"></translation>
+        <translation>الضغط</translation>
     </message>
     <message>
         <source>t [s]</source>
-        <translation type="unfinished">t [s]</translation>
+        <translation>t [s]</translation>
     </message>
     <message>
         <source>ring2d: particles per layer; sphere3d: subdivisions; sphere3d-latlong: slices</source>
-        <translation type="unfinished"></translation>
+        <translation>ring2d: الجسيمات في كل طبقة؛ sphere3d: التقسيمات؛ sphere3d-latlong: الشرائح</translation>
     </message>
     <message>
         <source>kind, level</source>
-        <translation type="unfinished"></translation>
+        <translation>النوع، المستوى</translation>
     </message>
     <message>
         <source>where [m]</source>
-        <translation type="unfinished"></translation>
+        <translation>الموضع [m]</translation>
     </message>
     <message>
         <source>how fast [m/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>مدى السرعة [m/s]</translation>
     </message>
     <message>
         <source>Add body</source>
-        <translation type="unfinished"></translation>
+        <translation>إضافة جسم</translation>
     </message>
     <message>
         <source>Remove selected</source>
-        <translation type="unfinished"></translation>
+        <translation>إزالة المحدد</translation>
     </message>
     <message>
         <source>inner</source>
-        <translation type="unfinished">داخلية</translation>
+        <translation>داخلية</translation>
     </message>
     <message>
         <source>outer</source>
-        <translation type="unfinished">خارجية</translation>
+        <translation>خارجية</translation>
     </message>
     <message>
         <source> (body%1 with itself)</source>
-        <translation type="unfinished"></translation>
+        <translation> (الجسم%1 مع نفسه)</translation>
     </message>
     <message>
         <source> (body%1 and body%2)</source>
-        <translation type="unfinished"></translation>
+        <translation> (الجسم%1 والجسم%2)</translation>
     </message>
     <message>
         <source>beyond %1 m (nothing that close)</source>
-        <translation type="unfinished"></translation>
+        <translation>أبعد من %1 m (لا شيء بهذا القرب)</translation>
     </message>
     <message>
         <source>&lt;b&gt;momentum&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;angular momentum&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;contact between bodies&lt;/b&gt; %4 J, %5 pairs in the skin</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;كمية الحركة&lt;/b&gt; %1 kg m/s&lt;br&gt;&lt;b&gt;الزخم الزاوي&lt;/b&gt; %2 kg m²/s&lt;br&gt;&lt;b&gt;min_gap&lt;/b&gt; %3&lt;br&gt;&lt;b&gt;التلامس بين الأجسام&lt;/b&gt; %4 J، %5 أزواج في القشرة</translation>
     </message>
     <message>
         <source>%1: not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ليس عددًا</translation>
     </message>
     <message>
         <source>Choose a body in the list first.</source>
-        <translation type="unfinished"></translation>
+        <translation>اختر جسمًا من القائمة أولًا.</translation>
     </message>
     <message>
         <source>A world keeps at least one body.</source>
-        <translation type="unfinished"></translation>
+        <translation>يبقى في العالم جسم واحد على الأقل.</translation>
     </message>
     <message>
         <source>p [kg m/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>p [kg m/s]</translation>
     </message>
 </context>
 <context>
@@ -1687,7 +1687,7 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>Right-click a particle or the body in the view to plot it here.</source>
-        <translation type="unfinished"></translation>
+        <translation>انقر بالزر الأيمن على جسيم أو على الجسم في العرض لرسمه هنا.</translation>
     </message>
     <message>
         <source>Remove all</source>
@@ -1695,15 +1695,15 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>t [s]</source>
-        <translation type="unfinished">t [s]</translation>
+        <translation>t [s]</translation>
     </message>
     <message>
         <source>length [m]</source>
-        <translation type="unfinished"></translation>
+        <translation>الطول [m]</translation>
     </message>
     <message>
         <source>speed [m/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>السرعة [m/s]</translation>
     </message>
 </context>
 <context>
@@ -1749,11 +1749,11 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>body%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>الجسم%1 (%2)</translation>
     </message>
     <message>
         <source>every body</source>
-        <translation type="unfinished"></translation>
+        <translation>كل الأجسام</translation>
     </message>
 </context>
 <context>
@@ -2220,11 +2220,11 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>rtol: &apos;%1&apos; is not a number in (0, 1]</source>
-        <translation type="unfinished"></translation>
+        <translation>rtol: ‏&apos;%1&apos; ليس عددًا في (0, 1]</translation>
     </message>
     <message>
         <source>atol: &apos;%1&apos; is not a number in [0, 1]</source>
-        <translation type="unfinished"></translation>
+        <translation>atol: ‏&apos;%1&apos; ليس عددًا في [0, 1]</translation>
     </message>
     <message>
         <source>Each view</source>
@@ -2296,19 +2296,19 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>CVODE steps / RHS</source>
-        <translation type="unfinished"></translation>
+        <translation>خطوات CVODE / RHS</translation>
     </message>
     <message>
         <source>Jv products / linear it.</source>
-        <translation type="unfinished"></translation>
+        <translation>جداءات Jv / تكرارات خطية</translation>
     </message>
     <message>
         <source>error-test / conv. failures</source>
-        <translation type="unfinished"></translation>
+        <translation>إخفاقات اختبار الخطأ / التقارب</translation>
     </message>
     <message>
         <source>order, re-initialisations</source>
-        <translation type="unfinished"></translation>
+        <translation>الرتبة، إعادات التهيئة</translation>
     </message>
     <message>
         <source>&lt;p style=&apos;color:#b35900&apos;&gt;Cannot keep up with real time: showing as fast as it runs.&lt;/p&gt;</source>
@@ -2341,11 +2341,11 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>double</source>
-        <translation type="unfinished"></translation>
+        <translation>مزدوجة (64 بت)</translation>
     </message>
     <message>
         <source>float</source>
-        <translation type="unfinished"></translation>
+        <translation>مفردة (32 بت)</translation>
     </message>
     <message>
         <source>double: state and forces in 64-bit numbers. float: in 32-bit numbers, as fast engines and games compute (euler, midpoint, rk4, symplectic-euler, verlet; one view; no walls or mouse: the run stops at a wall, a held particle steps in double). The readout shows how far the float run is from double.</source>
@@ -2353,23 +2353,23 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>Precision</source>
-        <translation type="unfinished"></translation>
+        <translation>الدقة</translation>
     </message>
     <message>
         <source>precision</source>
-        <translation type="unfinished"></translation>
+        <translation>الدقة</translation>
     </message>
     <message>
         <source>double while held</source>
-        <translation type="unfinished"></translation>
+        <translation>مزدوجة أثناء السحب</translation>
     </message>
     <message>
         <source>float − double</source>
-        <translation type="unfinished"></translation>
+        <translation>مفردة − مزدوجة</translation>
     </message>
     <message>
         <source>round-off (est.)</source>
-        <translation type="unfinished"></translation>
+        <translation>خطأ التقريب (تقدير)</translation>
     </message>
 </context>
 <context>
@@ -2904,7 +2904,7 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source>click elsewhere to clear</source>
-        <translation type="unfinished"></translation>
+        <translation>انقر في مكان آخر للمسح</translation>
     </message>
     <message>
         <source>distance from %1: %2 m (RMS)</source>
@@ -2920,23 +2920,23 @@ Plots, parameters and exports still work.</source>
     </message>
     <message>
         <source> (Δx %1, Δy %2)</source>
-        <translation type="unfinished"></translation>
+        <translation> (Δx %1، Δy %2)</translation>
     </message>
     <message>
         <source>Forces on particle %1 of body %2</source>
-        <translation type="unfinished"></translation>
+        <translation>القوى على الجسيم %1 من الجسم %2</translation>
     </message>
     <message>
         <source>momentum %1 kg m/s</source>
-        <translation type="unfinished"></translation>
+        <translation>كمية الحركة %1 kg m/s</translation>
     </message>
     <message>
         <source>min_gap %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>min_gap %1 m</translation>
     </message>
     <message>
         <source>min_gap beyond %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>min_gap أبعد من %1 m</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QFontMetrics>
 #include <QGuiApplication>
 #include <QLibraryInfo>
 #include <QTranslator>
@@ -93,6 +94,19 @@ QString simcoreText(std::string_view english) {
 
 QString num(double value, char format, int precision) { return g_locale.toString(value, format, precision); }
 QString num(long long value) { return g_locale.toString(value); }
+
+bool setItalicIfLegible(QFont& font, const QString& text) {
+    QFont italic = font;
+    italic.setItalic(true);
+    const QFontMetrics metrics(italic);
+    for (const QChar c : text)  // (format characters, such as the Arabic letter mark, draw nothing)
+        if (!c.isSpace() && c.category() != QChar::Other_Format && !metrics.inFont(c)) {
+            font.setItalic(false);
+            return false;
+        }
+    font = italic;
+    return true;
+}
 
 QString toCNumber(const QString& text) {
     const QString trimmed = text.trimmed();

@@ -17,6 +17,7 @@
 // (num(): decimal comma in German, French and Spanish); files keep their own formats.
 #include <string_view>
 
+#include <QFont>
 #include <QList>
 #include <QLocale>
 #include <QString>
@@ -57,5 +58,11 @@ QString num(long long value);
 // or bad input left for the parser's message). Group separators are not read ("1.000" is 1 in
 // English and German alike, never a thousand).
 QString toCNumber(const QString& text);
+
+// `font` in italics when its italic face has every character of `text`, upright otherwise: on
+// a Debian desktop the italic face of the default font (DejaVu Sans Oblique) has no Arabic
+// letters or Arabic-Indic digits, and italic Arabic came out as empty boxes. Returns whether
+// it is italic.
+bool setItalicIfLegible(QFont& font, const QString& text);
 
 }  // namespace elui

@@ -288,7 +288,8 @@ void LessonDock::fillTable() {
         set(2, gotText);
         QTableWidgetItem* gotItem = m_table->item(r, 2);
         QFont font = m_table->font();
-        font.setItalic(std::isfinite(value) && !gotFromRun(key));
+        // (Upright where the italic face cannot show the number: Arabic-Indic digits.)
+        if (std::isfinite(value) && !gotFromRun(key)) setItalicIfLegible(font, gotText);
         gotItem->setFont(font);
         gotItem->setToolTip(std::isfinite(value) ? (gotFromRun(key) ? tr("read off your run")
                                                                      : tr("measured on the parameters in use"))
