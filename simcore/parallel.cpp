@@ -15,7 +15,7 @@
 #if defined(__linux__)
 #include <linux/futex.h>
 #include <sched.h>
-#include <sys/resource.h>
+#include <time.h>
 #include <sys/syscall.h>
 #include <unistd.h>
 #endif
@@ -53,14 +53,23 @@ constexpr int kWindowRuns = 32;
 constexpr double kWindowSeconds = 0.02;
 constexpr double kSoloFirst = 0.05, kSoloLongest = 0.8;
 
-// A CPU is contended when a thread of the pool was preempted (an involuntary context switch:
-// it could have run, and another thread ran instead) within the last kBusyFor; each thread
-// reads its own count at most every kBusyCheck. Then waits spin only briefly (kBusySpins
-// pauses for a worker, kCallerSpinMin for the caller) and sleep: on a contended machine the
-// process's threads share one scheduler group's fair share, and a thread spinning for its
-// partner takes that time from the partner (or from the caller's serial stretches).
+// A CPU is contended when a thread of the pool was kept off it: over a check interval
+// (kBusyCheck, at least; each thread checks itself, see keptOffCpu) it ran for less than three
+// quarters of the time it did not sleep. Then, for kBusyFor, waits spin only briefly
+// (kBusySpins pauses for a worker, kCallerSpinMin for the caller) and sleep: on a contended
+// machine the process's threads share one scheduler group's fair share, and a thread spinning
+// for its partner takes that time from the partner (or from the caller's serial stretches).
+// Not every preemption: this virtual machine preempts a running thread once or twice every
+// 2 ms when nothing else runs (a kernel thread, kdamond, samples memory every few ms), and
+// when one involuntary context switch marked the pool busy (stops 36-38), it was busy about
+// half the time on a quiet machine; the worker, spinning only kBusySpins pauses, slept through
+// the caller's serial stretches between runs (half of them 5-20 us) and woke late: two threads
+// ran the L6 sphere at 490-530 steps/s where 520-550 were there (stop 39).
 constexpr auto kBusyCheck = std::chrono::milliseconds(2);
 constexpr auto kBusyFor = std::chrono::milliseconds(50);
+// An interval longer than this is not judged (the caller was outside the pool: a GUI frame's
+// pause, a file written between steps) and only starts the next one.
+constexpr auto kBusyLongest = std::chrono::milliseconds(20);
 constexpr int kBusySpins = 256;
 
 using Clock = std::chrono::steady_clock;
@@ -86,19 +95,24 @@ void futexWakeAll(std::atomic<std::uint32_t>& word) {
 #endif
 }
 
-long involuntarySwitches() {
-#if defined(__linux__)
-    struct rusage usage {};
-    if (getrusage(RUSAGE_THREAD, &usage) == 0) return usage.ru_nivcsw;
-#endif
-    return 0;
-}
-
 void runTask(const TaskRef& task, int index, bool worker) {
     if (const ThreadPool::TestHook hook = g_testHook.load(std::memory_order_acquire)) hook(index, worker);
     task(index);
 }
 }  // namespace
+
+bool keptOffCpu(double wall, double cpu, double slept) {
+    const double wanted = wall - slept;
+    return wanted > 0.0 && cpu >= 0.0 && wanted - cpu > 0.25 * wanted;
+}
+
+double threadCpuSeconds() {
+#if defined(__linux__)
+    timespec t{};
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t) == 0) return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+#endif
+    return -1.0;
+}
 
 int hardwareThreads() {
     const unsigned n = std::thread::hardware_concurrency();
@@ -186,10 +200,12 @@ ThreadPool::~ThreadPool() {
     if (const char* stats = std::getenv("ELASTIC_LAB_POOL_STATS"); stats && *stats == '1' && !m_workers.empty()) {
         const Counters c = counters();
         std::fprintf(stderr,
-                     "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu\n",
+                     "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu, "
+                     "kept off a CPU %llu\n",
                      static_cast<unsigned long long>(c.runs), static_cast<unsigned long long>(c.soloRuns),
                      static_cast<unsigned long long>(c.soloPeriods), static_cast<unsigned long long>(c.callerSleeps),
-                     static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks));
+                     static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks),
+                     static_cast<unsigned long long>(c.busyMarks));
     }
 }
 
@@ -203,6 +219,7 @@ ThreadPool::Counters ThreadPool::counters() const {
     c.workerSleeps = m_statWorkerSleeps.load(std::memory_order_relaxed);
     c.workerTasks = m_statWorkerTasks.load(std::memory_order_relaxed);
     c.soloPeriods = m_statSoloPeriods.load(std::memory_order_relaxed);
+    c.busyMarks = m_statBusyMarks.load(std::memory_order_relaxed);
     return c;
 }
 
@@ -211,13 +228,16 @@ bool ThreadPool::contended(ContentionProbe& probe) {
     const std::int64_t ticks = now.time_since_epoch().count();
     if (now >= probe.nextCheck) {
         probe.nextCheck = now + kBusyCheck;
-        const long switches = involuntarySwitches();
-        if (switches != probe.switches) {
-            probe.switches = switches;
+        const double cpu = threadCpuSeconds();
+        const bool judged = probe.cpuAt >= 0.0 && now - probe.wallAt <= kBusyLongest;
+        if (judged && keptOffCpu(seconds(now - probe.wallAt), cpu - probe.cpuAt, probe.slept - probe.sleptAt)) {
             m_busyUntil.store(ticks + std::chrono::duration_cast<Clock::duration>(kBusyFor).count(),
                               std::memory_order_relaxed);
-            return true;
+            m_statBusyMarks.fetch_add(1, std::memory_order_relaxed);
         }
+        probe.wallAt = now;
+        probe.cpuAt = cpu;
+        probe.sleptAt = probe.slept;
     }
     return ticks < m_busyUntil.load(std::memory_order_relaxed);
 }
@@ -255,7 +275,6 @@ void ThreadPool::workerLoop() {
     // spinning only takes time from the caller, which shares the CPU with it).
     int spinLimit = kSpinsBeforeSleep;
     ContentionProbe probe;
-    probe.switches = involuntarySwitches();
     for (;;) {
         int spins = 0;
         const int limit = contended(probe) ? std::min(spinLimit, kBusySpins) : spinLimit;
@@ -272,7 +291,9 @@ void ThreadPool::workerLoop() {
             m_sleepers.fetch_add(1, std::memory_order_seq_cst);
             if (m_posted.load(std::memory_order_seq_cst) == seen) {
                 m_statWorkerSleeps.fetch_add(1, std::memory_order_relaxed);
+                const Clock::time_point asleep = Clock::now();
                 futexWait(m_posted, seen);
+                probe.slept += seconds(Clock::now() - asleep);
             }
             m_sleepers.fetch_sub(1, std::memory_order_seq_cst);
         }
@@ -300,7 +321,9 @@ bool ThreadPool::waitForTasks(int count) {
         m_callerAsleep.store(1, std::memory_order_seq_cst);
         if (m_done.load(std::memory_order_seq_cst) == done) {
             m_statCallerSleeps.fetch_add(1, std::memory_order_relaxed);
+            const Clock::time_point asleep = Clock::now();
             futexWait(m_done, done);
+            m_callerProbe.slept += seconds(Clock::now() - asleep);
             slept = true;
         }
         m_callerAsleep.store(0, std::memory_order_seq_cst);

@@ -79,6 +79,7 @@ public:
         std::uint64_t workerSleeps = 0;   // a worker slept waiting for the next run
         std::uint64_t workerTasks = 0;    // tasks run by workers
         std::uint64_t soloPeriods = 0;    // times the caller chose to run alone
+        std::uint64_t busyMarks = 0;      // times a thread found itself kept off its CPU
     };
     Counters counters() const;
     // Workers asleep right now (waiting on the futex for the next run).
@@ -103,11 +104,15 @@ private:
     int claimTasks(std::uint32_t run, bool worker);
     // The caller's wait for the tasks a worker still runs; returns true when it had to sleep.
     bool waitForTasks(int count);
-    // Whether the machine is contended (see parallel.cpp): each thread probes its own
-    // involuntary context switches now and then; a switch marks the pool busy for a while.
+    // Whether the machine is contended (see parallel.cpp): each thread compares, now and then,
+    // its CPU time with the wall time it wanted to run (its own sleeps taken out); a thread kept
+    // off its CPU for a good share of that marks the pool busy for a while.
     struct ContentionProbe {
         std::chrono::steady_clock::time_point nextCheck{};
-        long switches = -1;
+        std::chrono::steady_clock::time_point wallAt{};  // at the last check
+        double cpuAt = -1.0;                             // the thread's CPU seconds then (-1: none yet)
+        double sleptAt = 0.0;                            // `slept` then
+        double slept = 0.0;                              // seconds this thread slept in the pool's futexes
     };
     bool contended(ContentionProbe& probe);
     // The fallback's decision after each run that used the workers.
@@ -135,8 +140,16 @@ private:
     std::atomic<std::int64_t> m_busyUntil{0};  // steady_clock ticks: contended until then
     // Counters (relaxed; written by their owner thread only, read by counters()).
     std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
-        m_statWorkerTasks{0}, m_statSoloPeriods{0};
+        m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0};
 };
+
+// Whether a thread was kept off its CPU over an interval of `wall` seconds in which it ran `cpu`
+// seconds and slept `slept` on purpose: runnable but not running (another thread had its CPU)
+// for more than a quarter of the time it wanted to run. A kernel thread's or a timer's
+// preemption of a few microseconds is not that; a time slice given to another program is.
+bool keptOffCpu(double wall, double cpu, double slept);
+// The calling thread's CPU time in seconds (-1 where the system cannot tell).
+double threadCpuSeconds();
 
 // The number of hardware threads, at least 1.
 int hardwareThreads();

@@ -1,5 +1,6 @@
 // Threads follow the CPUs the process may use (affinity mask, cgroup CPU quota), and the pool
 // hands work to whichever thread is free (simcore/parallel.h).
+#include <pthread.h>
 #include <sched.h>
 
 #include <QtTest>
@@ -123,6 +124,58 @@ private slots:
                 if (hits[static_cast<std::size_t>(i)].load(std::memory_order_relaxed) != 1)
                     QFAIL(qPrintable(QStringLiteral("run %1: task %2 ran %3 times").arg(run).arg(i).arg(hits[static_cast<std::size_t>(i)].load())));
         }
+    }
+
+    // A thread kept off its CPU for more than a quarter of the time it wanted to run marks the
+    // pool contended; a preemption of a few microseconds and the thread's own sleeps do not.
+    void keptOffCpuJudgesTheShareOffTheCpu() {
+        QVERIFY(!keptOffCpu(2e-3, 1.98e-3, 0.0));    // a kernel thread's 20 us
+        QVERIFY(!keptOffCpu(2e-3, 1.6e-3, 0.0));     // a fifth of the time
+        QVERIFY(keptOffCpu(2e-3, 1.0e-3, 0.0));      // half of it: another program's time slice
+        QVERIFY(!keptOffCpu(2e-3, 0.5e-3, 1.4e-3));  // slept 1.4 ms, ran 0.5 of the 0.6 it wanted
+        QVERIFY(keptOffCpu(2e-3, 0.2e-3, 1.5e-3));   // wanted 0.5 ms, ran 0.2
+        QVERIFY(!keptOffCpu(2e-3, 0.0, 2e-3));       // slept throughout
+        QVERIFY(!keptOffCpu(2e-3, -1.0, 0.0));       // no thread CPU clock: never contended
+        // The clock it reads is this thread's: it moves while the thread works, not while it sleeps.
+        const double before = threadCpuSeconds();
+        QVERIFY(before >= 0.0);
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        QVERIFY(threadCpuSeconds() - before < 0.02);
+    }
+
+    // A caller that shares its CPU with a busy thread (another program's, as a teacher's laptop
+    // has) finds itself kept off the CPU, and the pool turns to its short spins; every task still
+    // runs once. Both are pinned to the CPU the test runs on; a pool that never notices fails
+    // after 20,000 runs of 50 us (about a second of the caller's work, where the first check
+    // comes after 2 ms).
+    void callerBesideABusyThreadIsKeptOff() {
+        cpu_set_t saved, one;
+        QCOMPARE(pthread_getaffinity_np(pthread_self(), sizeof saved, &saved), 0);
+        CPU_ZERO(&one);
+        CPU_SET(sched_getcpu(), &one);
+        QCOMPARE(pthread_setaffinity_np(pthread_self(), sizeof one, &one), 0);
+        std::atomic<bool> stop{false};
+        std::thread hog([&] {
+            pthread_setaffinity_np(pthread_self(), sizeof one, &one);
+            while (!stop.load(std::memory_order_relaxed)) {}
+        });
+        ThreadPool pool(2);
+        pool.setRunAloneAllowed(false);
+        std::vector<std::atomic<int>> hits(2);
+        int runs = 0;
+        for (; runs < 20000 && pool.counters().busyMarks == 0; ++runs) {
+            pool.run(2, [&](int i) {
+                const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(50);
+                while (std::chrono::steady_clock::now() < end) {}
+                hits[static_cast<std::size_t>(i)].fetch_add(1, std::memory_order_relaxed);
+            });
+        }
+        stop.store(true, std::memory_order_relaxed);
+        hog.join();
+        pthread_setaffinity_np(pthread_self(), sizeof saved, &saved);
+        QVERIFY2(pool.counters().busyMarks > 0, qPrintable(QStringLiteral("not marked busy in %1 runs").arg(runs)));
+        QCOMPARE(hits[0].load(), runs);
+        QCOMPARE(hits[1].load(), runs);
     }
 
     // The caller sleeps (futex) when a worker's task keeps it waiting, and the worker that
