@@ -10,8 +10,13 @@
 # (ELASTIC_LAB_POOL_STATS; the pool on main has no trials: 0), and the state hashes seen.
 #
 #   bench/threads-beside-stress.sh [--rounds N] [--steps N] [--loads "0 1 2"]
-#       [--precisions "double float"] [--kernels avx2] [--raw FILE] CLI [CLI ...]
+#       [--precisions "double float"] [--kernels avx2] [--control] [--raw FILE] CLI [CLI ...]
 #   bench/threads-beside-stress.sh --summary FILE CLI [CLI ...]   (the table again from a raw file)
+#
+# --control runs one thread twice per round, before and after the two threads (1, 2, 1), and
+# pairs the two threads with the mean of both: a load that drifts within a round then counts
+# for both sides; the table also shows one thread against itself (the second run over the
+# first), the noise any 2 / 1 round carries on this machine.
 #
 # e.g. bench/threads-beside-stress.sh build/release/app/cli/elastic-lab-cli
 #      bench/threads-beside-stress.sh /tmp/cli-before build/release/app/cli/elastic-lab-cli
@@ -20,7 +25,7 @@
 # runs in the same scheduler group as the benchmark, as a second program of the same user would.
 set -euo pipefail
 
-rounds=5 steps=150 loads="0 1 2" precisions="double float" kernels=avx2 raw="" summary=""
+rounds=5 steps=150 loads="0 1 2" precisions="double float" kernels=avx2 raw="" summary="" control=0
 while [ $# -gt 0 ]; do
     case "$1" in
         --rounds) rounds=$2; shift 2 ;;
@@ -29,8 +34,9 @@ while [ $# -gt 0 ]; do
         --precisions) precisions=$2; shift 2 ;;
         --kernels) kernels=$2; shift 2 ;;
         --raw) raw=$2; shift 2 ;;
+        --control) control=1; shift ;;
         --summary) summary=$2; shift 2 ;;
-        -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
         -*) echo "unknown option $1" >&2; exit 2 ;;
         *) break ;;
     esac
@@ -53,9 +59,9 @@ stress=""
 cleanup() { [ -n "$stress" ] && kill "$stress" 2>/dev/null; wait 2>/dev/null || true; }
 trap cleanup EXIT
 
-one() {  # load build-index precision round threads
+one() {  # load build-index precision round threads (1c: one thread, the control run)
     local out pool
-    out=$(ELASTIC_LAB_POOL_STATS=1 "${clis[$2]}" "${args[@]}" --precision "$3" --threads "$5" 2>/tmp/tbs-err.$$)
+    out=$(ELASTIC_LAB_POOL_STATS=1 "${clis[$2]}" "${args[@]}" --precision "$3" --threads "${5%c}" 2>/tmp/tbs-err.$$)
     # the pools' own account (ELASTIC_LAB_POOL_STATS), one field: a float run has two pools
     pool=$(grep '^pool:' /tmp/tbs-err.$$ | sed 's/^pool: //; s/,/;/g' | paste -sd'|' || true)
     # steps_per_second is column 11, state_hash column 15 of bench's CSV
@@ -74,7 +80,8 @@ for load in $loads; do
         [ $((r % 2)) -eq 0 ] && order=$(echo "$order" | tac)
         for b in $order; do
             for p in $precisions; do
-                if [ $((r % 2)) -eq 1 ]; then one "$load" "$b" "$p" "$r" 1; one "$load" "$b" "$p" "$r" 2
+                if [ "$control" -eq 1 ]; then one "$load" "$b" "$p" "$r" 1; one "$load" "$b" "$p" "$r" 2; one "$load" "$b" "$p" "$r" 1c
+                elif [ $((r % 2)) -eq 1 ]; then one "$load" "$b" "$p" "$r" 1; one "$load" "$b" "$p" "$r" 2
                 else one "$load" "$b" "$p" "$r" 2; one "$load" "$b" "$p" "$r" 1; fi
             done
         done
@@ -103,8 +110,11 @@ def pool(field):
     for m in re.finditer(r"(\d+) runs; (\d+) alone", field): runs += int(m[1]); alone += int(m[2])
     for m in re.finditer(r"(\d+) trials \(alone won (\d+)\)", field): trials += int(m[1]); won += int(m[2])
     return runs, alone, trials, won
-print("| beside | build | precision | 1 thread, steps/s | 2 threads, steps/s | 2 / 1, paired | 2 / 1, each round | 2 threads: runs alone, trials (won alone) | state hash |")
-print("|---|---|---|---|---|---|---|---|---|")
+control = any(r["threads"] == "1c" for r in rows)
+head = "| beside | build | precision | 1 thread, steps/s | 2 threads, steps/s | 2 / 1, paired | 2 / 1, each round |"
+if control: head += " 1 / 1, each round (control) |"
+print(head + " 2 threads: runs alone, trials (won alone) | state hash |")
+print("|---" * (10 if control else 9) + "|")
 for load in dict.fromkeys(r["load"] for r in rows):
     for b in dict.fromkeys(r["build"] for r in rows):
         for p in dict.fromkeys(r["precision"] for r in rows):
@@ -112,14 +122,18 @@ for load in dict.fromkeys(r["load"] for r in rows):
             if not sel: continue
             by = {}
             for r in sel: by.setdefault(r["round"], {})[r["threads"]] = float(r["steps_per_second"])
-            one = [v["1"] for v in by.values() if "1" in v]
+            one = [v[k] for v in by.values() for k in ("1", "1c") if k in v]
             two = [v["2"] for v in by.values() if "2" in v]
-            ratio = [v["2"] / v["1"] for v in by.values() if "1" in v and "2" in v]
+            # with the control run, two threads against the mean of one thread before and after
+            base = lambda v: (v["1"] + v["1c"]) / 2 if "1c" in v else v["1"]
+            ratio = [v["2"] / base(v) for v in by.values() if "1" in v and "2" in v]
+            selfratio = sorted(v["1c"] / v["1"] for v in by.values() if "1" in v and "1c" in v)
             hashes = ",".join(sorted({r["state_hash"] for r in sel}))
             beside = "nothing" if load == "0" else f"stress-ng --cpu {load}"
             acc = [pool(r.get("pool") or "") for r in sel if r["threads"] == "2"]
             runs, alone, trials, won = (sum(a[k] for a in acc) for k in range(4))
             share = f"{100 * alone / runs:.0f} %, {trials} ({won})" if runs else "-"
             rounds = ", ".join(f"{x:.2f}" for x in sorted(ratio))  # worst first
-            print(f"| {beside} | {clis[int(b)]} | {p} | {fmt(one)} | {fmt(two)} | **{fmtr(ratio)}** | {rounds} | {share} | {hashes} |")
+            ctl = (" " + ", ".join(f"{x:.2f}" for x in selfratio) + " |") if control else ""
+            print(f"| {beside} | {clis[int(b)]} | {p} | {fmt(one)} | {fmt(two)} | **{fmtr(ratio)}** | {rounds} |{ctl} {share} | {hashes} |")
 EOF
