@@ -67,9 +67,11 @@ constexpr double kSoloFirst = 0.05, kSoloLongest = 0.8;
 // ran the L6 sphere at 490-530 steps/s where 520-550 were there (stop 39).
 constexpr auto kBusyCheck = std::chrono::milliseconds(2);
 constexpr auto kBusyFor = std::chrono::milliseconds(50);
-// An interval longer than this is not judged (the caller was outside the pool: a GUI frame's
-// pause, a file written between steps) and only starts the next one.
-constexpr auto kBusyLongest = std::chrono::milliseconds(20);
+// The caller's time between two runs counts as away from the pool when it is longer than
+// kBetweenRuns (its serial stretches are 5-20 us at L6; a GUI frame's pause or a file written
+// between steps is not pool work, and a thread asleep there is not kept off its CPU). A check
+// interval longer than 20 ms is not judged at all (OffCpuProbe's default).
+constexpr auto kBetweenRuns = std::chrono::microseconds(500);
 constexpr int kBusySpins = 256;
 
 using Clock = std::chrono::steady_clock;
@@ -101,9 +103,18 @@ void runTask(const TaskRef& task, int index, bool worker) {
 }
 }  // namespace
 
-bool keptOffCpu(double wall, double cpu, double slept) {
-    const double wanted = wall - slept;
+bool keptOffCpu(double wall, double cpu, double away) {
+    const double wanted = wall - away;
     return wanted > 0.0 && cpu >= 0.0 && wanted - cpu > 0.25 * wanted;
+}
+
+bool OffCpuProbe::check(double wall, double cpu) {
+    const bool judged = m_cpuAt >= 0.0 && cpu >= 0.0 && wall - m_wallAt <= m_longest;
+    const bool off = judged && keptOffCpu(wall - m_wallAt, cpu - m_cpuAt, m_away);
+    m_wallAt = wall;
+    m_cpuAt = cpu;
+    m_away = 0.0;
+    return off;
 }
 
 double threadCpuSeconds() {
@@ -228,16 +239,11 @@ bool ThreadPool::contended(ContentionProbe& probe) {
     const std::int64_t ticks = now.time_since_epoch().count();
     if (now >= probe.nextCheck) {
         probe.nextCheck = now + kBusyCheck;
-        const double cpu = threadCpuSeconds();
-        const bool judged = probe.cpuAt >= 0.0 && now - probe.wallAt <= kBusyLongest;
-        if (judged && keptOffCpu(seconds(now - probe.wallAt), cpu - probe.cpuAt, probe.slept - probe.sleptAt)) {
+        if (probe.offCpu.check(seconds(now.time_since_epoch()), threadCpuSeconds())) {
             m_busyUntil.store(ticks + std::chrono::duration_cast<Clock::duration>(kBusyFor).count(),
                               std::memory_order_relaxed);
             m_statBusyMarks.fetch_add(1, std::memory_order_relaxed);
         }
-        probe.wallAt = now;
-        probe.cpuAt = cpu;
-        probe.sleptAt = probe.slept;
     }
     return ticks < m_busyUntil.load(std::memory_order_relaxed);
 }
@@ -293,7 +299,7 @@ void ThreadPool::workerLoop() {
                 m_statWorkerSleeps.fetch_add(1, std::memory_order_relaxed);
                 const Clock::time_point asleep = Clock::now();
                 futexWait(m_posted, seen);
-                probe.slept += seconds(Clock::now() - asleep);
+                probe.offCpu.away(seconds(Clock::now() - asleep));
             }
             m_sleepers.fetch_sub(1, std::memory_order_seq_cst);
         }
@@ -323,7 +329,7 @@ bool ThreadPool::waitForTasks(int count) {
             m_statCallerSleeps.fetch_add(1, std::memory_order_relaxed);
             const Clock::time_point asleep = Clock::now();
             futexWait(m_done, done);
-            m_callerProbe.slept += seconds(Clock::now() - asleep);
+            m_callerProbe.offCpu.away(seconds(Clock::now() - asleep));
             slept = true;
         }
         m_callerAsleep.store(0, std::memory_order_seq_cst);
@@ -357,12 +363,16 @@ void ThreadPool::run(int count, TaskRef task) {
         return;
     }
     m_statRuns.fetch_add(1, std::memory_order_relaxed);
+    const Clock::time_point entered = Clock::now();
+    if (m_lastRunEnd != Clock::time_point{} && entered - m_lastRunEnd > kBetweenRuns)
+        m_callerProbe.offCpu.away(seconds(entered - m_lastRunEnd));
     if (contended(m_callerProbe)) m_callerSpin = kCallerSpinMin;
     if (m_soloLength > 0 && m_windowRuns == 0) {
         // Running alone (the fallback) until m_soloUntil; then one window with the workers.
-        if (Clock::now() < m_soloUntil) {
+        if (entered < m_soloUntil) {
             m_statSolo.fetch_add(1, std::memory_order_relaxed);
             for (int i = 0; i < count; ++i) runTask(task, i, false);
+            m_lastRunEnd = Clock::now();
             return;
         }
     }
@@ -385,7 +395,8 @@ void ThreadPool::run(int count, TaskRef task) {
     claimTasks(run, false);
     const Clock::time_point own = Clock::now();
     waitForTasks(count);
-    judgeRun(seconds(own - start), seconds(Clock::now() - own));
+    m_lastRunEnd = Clock::now();
+    judgeRun(seconds(own - start), seconds(m_lastRunEnd - own));
 }
 
 }  // namespace simcore

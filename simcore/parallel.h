@@ -60,6 +60,32 @@ using TaskRef = FunctionRef<void(int)>;
 // Element-wise work on a range (begin, length) of a vector.
 using RangeWork = FunctionRef<void(std::ptrdiff_t, std::ptrdiff_t)>;
 
+// Whether a thread was kept off its CPU over an interval of `wall` seconds in which it ran `cpu`
+// seconds and was away (asleep on purpose, or outside the pool) for `away`: runnable but not
+// running (another thread had its CPU) for more than a quarter of the time it wanted to run. A
+// kernel thread's or a timer's preemption of a few microseconds is not that; a time slice given
+// to another program is.
+bool keptOffCpu(double wall, double cpu, double away);
+// The calling thread's CPU time in seconds (-1 where the system cannot tell).
+double threadCpuSeconds();
+
+// One thread's check of itself, fed the clocks (seconds) at each check and told when the thread
+// is away: an interval longer than `longest` (the caller was outside the pool a long time: a GUI
+// frame's pause) is not judged and only starts the next one.
+class OffCpuProbe {
+public:
+    explicit OffCpuProbe(double longest = 0.02) : m_longest(longest) {}
+    // The check at wall time `wall` with the thread's CPU time `cpu`: whether the interval since
+    // the last check shows the thread kept off its CPU (keptOffCpu); then a new interval begins.
+    bool check(double wall, double cpu);
+    void away(double seconds) { m_away += seconds; }
+
+private:
+    double m_longest;
+    double m_wallAt = 0.0, m_cpuAt = -1.0;  // at the last check (-1: none yet)
+    double m_away = 0.0;                    // since then
+};
+
 class ThreadPool {
 public:
     explicit ThreadPool(int threads);
@@ -104,15 +130,11 @@ private:
     int claimTasks(std::uint32_t run, bool worker);
     // The caller's wait for the tasks a worker still runs; returns true when it had to sleep.
     bool waitForTasks(int count);
-    // Whether the machine is contended (see parallel.cpp): each thread compares, now and then,
-    // its CPU time with the wall time it wanted to run (its own sleeps taken out); a thread kept
-    // off its CPU for a good share of that marks the pool busy for a while.
+    // Whether the machine is contended (see parallel.cpp): each thread checks itself now and
+    // then (OffCpuProbe); a thread kept off its CPU marks the pool busy for a while.
     struct ContentionProbe {
         std::chrono::steady_clock::time_point nextCheck{};
-        std::chrono::steady_clock::time_point wallAt{};  // at the last check
-        double cpuAt = -1.0;                             // the thread's CPU seconds then (-1: none yet)
-        double sleptAt = 0.0;                            // `slept` then
-        double slept = 0.0;                              // seconds this thread slept in the pool's futexes
+        OffCpuProbe offCpu;
     };
     bool contended(ContentionProbe& probe);
     // The fallback's decision after each run that used the workers.
@@ -137,19 +159,13 @@ private:
     std::chrono::steady_clock::time_point m_soloUntil;
     double m_callerSpin = 200e-6;  // seconds the caller spins before it sleeps (adaptive)
     ContentionProbe m_callerProbe;
+    std::chrono::steady_clock::time_point m_lastRunEnd{};  // when the caller's last run ended
     std::atomic<std::int64_t> m_busyUntil{0};  // steady_clock ticks: contended until then
     // Counters (relaxed; written by their owner thread only, read by counters()).
     std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
         m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0};
 };
 
-// Whether a thread was kept off its CPU over an interval of `wall` seconds in which it ran `cpu`
-// seconds and slept `slept` on purpose: runnable but not running (another thread had its CPU)
-// for more than a quarter of the time it wanted to run. A kernel thread's or a timer's
-// preemption of a few microseconds is not that; a time slice given to another program is.
-bool keptOffCpu(double wall, double cpu, double slept);
-// The calling thread's CPU time in seconds (-1 where the system cannot tell).
-double threadCpuSeconds();
 
 // The number of hardware threads, at least 1.
 int hardwareThreads();

@@ -136,6 +136,20 @@ private slots:
         QVERIFY(keptOffCpu(2e-3, 0.2e-3, 1.5e-3));   // wanted 0.5 ms, ran 0.2
         QVERIFY(!keptOffCpu(2e-3, 0.0, 2e-3));       // slept throughout
         QVERIFY(!keptOffCpu(2e-3, -1.0, 0.0));       // no thread CPU clock: never contended
+        // A thread's check of itself over its intervals (seconds): the first check only starts
+        // one; time away (asleep, or outside the pool) is not time kept off; an interval longer
+        // than 20 ms is not judged.
+        OffCpuProbe probe;
+        QVERIFY(!probe.check(1.000, 5.0));
+        QVERIFY(!probe.check(1.002, 5.00198));   // ran 1.98 of 2 ms
+        QVERIFY(probe.check(1.004, 5.00298));    // ran 1 of 2 ms
+        probe.away(0.0015);
+        QVERIFY(!probe.check(1.006, 5.00343));   // away 1.5 ms, ran 0.45 of the 0.5 it wanted
+        probe.away(0.0015);
+        QVERIFY(probe.check(1.008, 5.00363));    // away 1.5 ms, ran 0.2 of 0.5
+        QVERIFY(!probe.check(1.008 + 0.024, 5.00463));  // 24 ms: not judged
+        QVERIFY(probe.check(1.034, 5.00473));    // the next interval is: ran 0.1 of 2 ms
+        QVERIFY(!probe.check(1.036, -1.0));      // no CPU clock
         // The clock it reads is this thread's: it moves while the thread works, not while it sleeps.
         const double before = threadCpuSeconds();
         QVERIFY(before >= 0.0);
@@ -176,6 +190,21 @@ private slots:
         QVERIFY2(pool.counters().busyMarks > 0, qPrintable(QStringLiteral("not marked busy in %1 runs").arg(runs)));
         QCOMPARE(hits[0].load(), runs);
         QCOMPARE(hits[1].load(), runs);
+    }
+
+    // A caller that sleeps between runs (a GUI frame's pause) is away from the pool, not kept
+    // off its CPU: without that, every check after a 3 ms pause would mark the pool busy (40
+    // runs, 40 marks). With one CPU the worker shares the caller's CPU, which is contention.
+    void callerPausingBetweenRunsIsNotKeptOff() {
+        if (availableThreads() < 2) QSKIP("one CPU: the worker shares the caller's CPU");
+        ThreadPool pool(2);
+        std::atomic<int> ran{0};
+        for (int run = 0; run < 40; ++run) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(3));
+            pool.run(2, [&](int) { ran.fetch_add(1, std::memory_order_relaxed); });
+        }
+        QCOMPARE(ran.load(), 80);
+        QVERIFY2(pool.counters().busyMarks < 20, qPrintable(QStringLiteral("%1 busy marks").arg(pool.counters().busyMarks)));
     }
 
     // The caller sleeps (futex) when a worker's task keeps it waiting, and the worker that
