@@ -36,7 +36,7 @@ while [ $# -gt 0 ]; do
         --raw) raw=$2; shift 2 ;;
         --control) control=1; shift ;;
         --summary) summary=$2; shift 2 ;;
-        -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
         -*) echo "unknown option $1" >&2; exit 2 ;;
         *) break ;;
     esac

@@ -67,10 +67,10 @@ constexpr double kSoloFirst = 0.05, kSoloLongest = 0.8;
 // ran the L6 sphere at 490-530 steps/s where 520-550 were there (stop 39).
 constexpr auto kBusyCheck = std::chrono::milliseconds(2);
 constexpr auto kBusyFor = std::chrono::milliseconds(50);
-// The caller's time between two runs counts as away from the pool when it is longer than
-// kBetweenRuns (its serial stretches are 5-20 us at L6; a GUI frame's pause or a file written
-// between steps is not pool work, and a thread asleep there is not kept off its CPU). A check
-// interval longer than 20 ms is not judged at all (OffCpuProbe's default).
+// When the caller's time between two runs is longer than kBetweenRuns (its serial stretches are
+// 5-20 us at L6), it was outside the pool: a GUI frame's pause, a file written between steps.
+// Its check then starts a new interval at the run (OffCpuProbe::restart). A check interval
+// longer than 20 ms is not judged at all (OffCpuProbe's default).
 constexpr auto kBetweenRuns = std::chrono::microseconds(500);
 constexpr int kBusySpins = 256;
 
@@ -104,8 +104,8 @@ void runTask(const TaskRef& task, int index, bool worker) {
 }  // namespace
 
 bool keptOffCpu(double wall, double cpu, double away) {
-    const double wanted = wall - away;
-    return wanted > 0.0 && cpu >= 0.0 && wanted - cpu > 0.25 * wanted;
+    const double wanted = wall - away, off = wanted - cpu;
+    return wanted > 0.0 && cpu >= 0.0 && off > 0.25 * wanted && off > 2e-4;
 }
 
 bool OffCpuProbe::check(double wall, double cpu) {
@@ -115,6 +115,12 @@ bool OffCpuProbe::check(double wall, double cpu) {
     m_cpuAt = cpu;
     m_away = 0.0;
     return off;
+}
+
+void OffCpuProbe::restart(double wall, double cpu) {
+    m_wallAt = wall;
+    m_cpuAt = cpu;
+    m_away = 0.0;
 }
 
 double threadCpuSeconds() {
@@ -231,6 +237,7 @@ ThreadPool::Counters ThreadPool::counters() const {
     c.workerTasks = m_statWorkerTasks.load(std::memory_order_relaxed);
     c.soloPeriods = m_statSoloPeriods.load(std::memory_order_relaxed);
     c.busyMarks = m_statBusyMarks.load(std::memory_order_relaxed);
+    c.callerBusyMarks = m_statCallerBusyMarks.load(std::memory_order_relaxed);
     return c;
 }
 
@@ -243,6 +250,7 @@ bool ThreadPool::contended(ContentionProbe& probe) {
             m_busyUntil.store(ticks + std::chrono::duration_cast<Clock::duration>(kBusyFor).count(),
                               std::memory_order_relaxed);
             m_statBusyMarks.fetch_add(1, std::memory_order_relaxed);
+            if (&probe == &m_callerProbe) m_statCallerBusyMarks.fetch_add(1, std::memory_order_relaxed);
         }
     }
     return ticks < m_busyUntil.load(std::memory_order_relaxed);
@@ -364,8 +372,10 @@ void ThreadPool::run(int count, TaskRef task) {
     }
     m_statRuns.fetch_add(1, std::memory_order_relaxed);
     const Clock::time_point entered = Clock::now();
-    if (m_lastRunEnd != Clock::time_point{} && entered - m_lastRunEnd > kBetweenRuns)
-        m_callerProbe.offCpu.away(seconds(entered - m_lastRunEnd));
+    if (entered - m_lastRunEnd > kBetweenRuns) {
+        m_callerProbe.offCpu.restart(seconds(entered.time_since_epoch()), threadCpuSeconds());
+        m_callerProbe.nextCheck = entered + kBusyCheck;
+    }
     if (contended(m_callerProbe)) m_callerSpin = kCallerSpinMin;
     if (m_soloLength > 0 && m_windowRuns == 0) {
         // Running alone (the fallback) until m_soloUntil; then one window with the workers.

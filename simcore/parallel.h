@@ -61,23 +61,28 @@ using TaskRef = FunctionRef<void(int)>;
 using RangeWork = FunctionRef<void(std::ptrdiff_t, std::ptrdiff_t)>;
 
 // Whether a thread was kept off its CPU over an interval of `wall` seconds in which it ran `cpu`
-// seconds and was away (asleep on purpose, or outside the pool) for `away`: runnable but not
-// running (another thread had its CPU) for more than a quarter of the time it wanted to run. A
-// kernel thread's or a timer's preemption of a few microseconds is not that; a time slice given
-// to another program is.
+// seconds and slept on purpose for `away`: runnable but not running (another thread had its CPU)
+// for more than a quarter of the time it wanted to run, and for more than 0.2 ms. A kernel
+// thread's or a timer's preemption of tens of microseconds is not that, even in a short
+// interval; a time slice given to another program (a millisecond or more) is. The time a woken
+// thread waits for a CPU counts as asleep: the pool cannot tell it apart without the kernel's
+// scheduler statistics, which this machine's kernel does not keep.
 bool keptOffCpu(double wall, double cpu, double away);
 // The calling thread's CPU time in seconds (-1 where the system cannot tell).
 double threadCpuSeconds();
 
 // One thread's check of itself, fed the clocks (seconds) at each check and told when the thread
-// is away: an interval longer than `longest` (the caller was outside the pool a long time: a GUI
-// frame's pause) is not judged and only starts the next one.
+// sleeps: an interval longer than `longest` is not judged and only starts the next one.
 class OffCpuProbe {
 public:
     explicit OffCpuProbe(double longest = 0.02) : m_longest(longest) {}
     // The check at wall time `wall` with the thread's CPU time `cpu`: whether the interval since
     // the last check shows the thread kept off its CPU (keptOffCpu); then a new interval begins.
     bool check(double wall, double cpu);
+    // A new interval from here, the last one dropped unjudged (the caller comes back from
+    // outside the pool, where it may have slept or worked on other things: neither its wall
+    // time nor its CPU time there says anything).
+    void restart(double wall, double cpu);
     void away(double seconds) { m_away += seconds; }
 
 private:
@@ -106,6 +111,7 @@ public:
         std::uint64_t workerTasks = 0;    // tasks run by workers
         std::uint64_t soloPeriods = 0;    // times the caller chose to run alone
         std::uint64_t busyMarks = 0;      // times a thread found itself kept off its CPU
+        std::uint64_t callerBusyMarks = 0; // of which the caller
     };
     Counters counters() const;
     // Workers asleep right now (waiting on the futex for the next run).
@@ -161,9 +167,10 @@ private:
     ContentionProbe m_callerProbe;
     std::chrono::steady_clock::time_point m_lastRunEnd{};  // when the caller's last run ended
     std::atomic<std::int64_t> m_busyUntil{0};  // steady_clock ticks: contended until then
-    // Counters (relaxed; written by their owner thread only, read by counters()).
+    // Counters (relaxed, read by counters(); each written by its owner thread only, but for
+    // m_statBusyMarks, which every pool thread adds to).
     std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
-        m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0};
+        m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0}, m_statCallerBusyMarks{0};
 };
 
 
