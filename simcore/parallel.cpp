@@ -55,12 +55,12 @@ constexpr double kSoloFirst = 0.05, kSoloLongest = 0.8;
 
 // A CPU is contended when a thread of the pool was kept off it: over a check interval
 // (kBusyCheck, at least; each thread checks itself, see keptOffCpu) it ran for less than three
-// quarters of the time it did not sleep. Then, for kBusyFor, waits spin only briefly
+// quarters of the time it did not sleep, and at least 0.2 ms less. Then, for kBusyFor, waits spin only briefly
 // (kBusySpins pauses for a worker, kCallerSpinMin for the caller) and sleep: on a contended
 // machine the process's threads share one scheduler group's fair share, and a thread spinning
 // for its partner takes that time from the partner (or from the caller's serial stretches).
 // Not every preemption: this virtual machine preempts a running thread once or twice every
-// 2 ms when nothing else runs (a kernel thread, kdamond, samples memory every few ms), and
+// 2 ms when nothing else runs (a kernel thread, most likely; not traced), and
 // when one involuntary context switch marked the pool busy (stops 36-38), it was busy about
 // half the time on a quiet machine; the worker, spinning only kBusySpins pauses, slept through
 // the caller's serial stretches between runs (half of them 5-20 us) and woke late: two threads
@@ -111,9 +111,7 @@ bool keptOffCpu(double wall, double cpu, double away) {
 bool OffCpuProbe::check(double wall, double cpu) {
     const bool judged = m_cpuAt >= 0.0 && cpu >= 0.0 && wall - m_wallAt <= m_longest;
     const bool off = judged && keptOffCpu(wall - m_wallAt, cpu - m_cpuAt, m_away);
-    m_wallAt = wall;
-    m_cpuAt = cpu;
-    m_away = 0.0;
+    restart(wall, cpu);
     return off;
 }
 

@@ -173,7 +173,6 @@ private:
         m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0}, m_statCallerBusyMarks{0};
 };
 
-
 // The number of hardware threads, at least 1.
 int hardwareThreads();
 

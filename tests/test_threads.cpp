@@ -151,8 +151,8 @@ private slots:
         QVERIFY(!probe.check(1.008 + 0.024, 5.00463));  // 24 ms: not judged
         QVERIFY(probe.check(1.034, 5.00473));    // the next interval is: ran 0.1 of 2 ms
         QVERIFY(!probe.check(1.036, -1.0));      // no CPU clock
-        // Back from outside the pool: the interval starts there (without the restart the one
-        // since 1.036 s would be too long to judge).
+        // Back from outside the pool: the interval starts there (without the restart there is
+        // none to judge: the last check had no CPU clock, and it was 964 ms ago).
         probe.restart(2.000, 6.0);
         QVERIFY(probe.check(2.002, 6.0005));     // ran 0.5 of 2 ms
         // The clock it reads is this thread's: it moves while the thread works, not while it sleeps.
