@@ -1,8 +1,9 @@
 // The float32 path (float_path.h).
 //
 // One force evaluation, as the double path's ForceModel does it: the body's particles are
-// owned by kChunks fixed chunks (vertex k of each layer by chunk 0 when k < n/2), each chunk's
-// springs and faces join only its own particles, and the few joining two chunks are shared:
+// owned by fixed chunks (ForceModel::chunksFor; vertex k of each layer by chunk k * chunks / n),
+// each chunk's springs and faces join only its own particles, and the few joining two chunks
+// are shared:
 //  1. each chunk (a task) clears its rows of the force and gradient buffers and adds its
 //     springs' forces F = [stiffness (L - L0) + damping (dv.u)] u (+F to the first end, -F to the second,
 //     spring by spring) and its faces' rows (b - a) x (c - a) (3D; (dy, -dx) in 2D) to each
@@ -704,10 +705,10 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
         s.weightY[i] = static_cast<float>(0.0 - s.mass[static_cast<Eigen::Index>(i)] * s.params.gravity);
     }
     s.axes = F4{s.dimension >= 2 ? 1.0f : 0.0f, 1.0f, s.dimension == 3 ? 1.0f : 0.0f, 0.0f};
-    // Chunks by particle ownership (as ForceModel: vertex k of each layer in chunk 0 when
-    // k < n/2; one chunk below ForceModel::kChunkThreshold springs); a spring or face whose
+    // Chunks by particle ownership (as many as ForceModel::chunksFor gives; vertex k of each
+    // layer in chunk k * chunks / n); a spring or face whose
     // particles are not all one chunk's is shared.
-    const int owners = topo.springCount() >= ForceModel::kChunkThreshold ? ForceModel::kChunks : 1;
+    const int owners = ForceModel::chunksFor(topo.springCount());
     const bool layered = !topo.layerPairs.empty() && 2 * topo.layerPairs.size() == n;
     const int perLayer = layered ? s.n / 2 : s.n;
     auto owner = [&](int i) { return owners == 1 ? 0 : ((i % perLayer) * owners) / perLayer; };

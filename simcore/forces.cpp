@@ -185,7 +185,7 @@ double partialVolume(const Surface& surface, int dimension, const double* x, std
 
 ForceModel::ForceModel(const Topology* topology, const Eigen::VectorXd* mass, TermSet terms)
     : m_topology(topology), m_mass(mass), m_terms(terms) {
-    m_chunks = topology->springCount() >= kChunkThreshold ? kChunks : 1;
+    m_chunks = chunksFor(topology->springCount());
     partition();
     const auto n4 = static_cast<std::size_t>(4 * topology->particleCount());
     m_force4 = kernels::AlignedBuffer(n4);
@@ -210,8 +210,9 @@ ForceModel::ForceModel(const Topology* topology, const Eigen::VectorXd* mass, Te
 }
 
 void ForceModel::partition() {
-    // Ownership: a layered body's vertex k belongs to chunk 0 when k < perLayer / 2 (in both
-    // layers, so radius and most shear springs stay inside one chunk). A spring or face whose
+    // Ownership: a layered body's vertex k belongs to chunk c when perLayer * c / chunks <= k <
+    // perLayer * (c + 1) / chunks (in both layers, so radius and most shear springs stay inside
+    // one chunk). A spring or face whose
     // particles all belong to one chunk goes to that chunk's list; the rest, few with the
     // Z-order numbering, to the shared list, evaluated after the chunks by one thread. The
     // chunks write disjoint particles of f directly: no per-thread buffers, no reduction.
@@ -219,7 +220,6 @@ void ForceModel::partition() {
     const int n = topo.particleCount();
     const bool layered = !topo.layerPairs.empty();
     const int perLayer = layered ? n / 2 : n;
-    const int half = perLayer / 2;
     auto owner = [&](int p) { return ownerOf(p); };
     m_ownedRanges = {};
     if (m_chunks == 1) {
@@ -227,11 +227,11 @@ void ForceModel::partition() {
         m_ownedRanges[0].push_back({0, perLayer});
         if (layered) m_ownedRanges[0].push_back({perLayer, n});
     } else {
-        m_ownedRanges[0].push_back({0, half});
-        m_ownedRanges[1].push_back({half, perLayer});
-        if (layered) {
-            m_ownedRanges[0].push_back({perLayer, perLayer + half});
-            m_ownedRanges[1].push_back({perLayer + half, n});
+        for (int c = 0; c < m_chunks; ++c) {
+            const int begin = static_cast<int>(static_cast<long>(perLayer) * c / m_chunks);
+            const int end = static_cast<int>(static_cast<long>(perLayer) * (c + 1) / m_chunks);
+            m_ownedRanges[static_cast<std::size_t>(c)].push_back({begin, end});
+            if (layered) m_ownedRanges[static_cast<std::size_t>(c)].push_back({perLayer + begin, perLayer + end});
         }
     }
     for (auto& part : m_parts) part = Part{};
@@ -326,7 +326,9 @@ int ForceModel::ownerOf(int particle) const {
     if (m_chunks == 1) return 0;
     const int n = m_topology->particleCount();
     const int perLayer = m_topology->layerPairs.empty() ? n : n / 2;
-    return (particle % perLayer) < perLayer / 2 ? 0 : 1;
+    // The chunk whose range [perLayer * c / chunks, perLayer * (c + 1) / chunks) holds it.
+    const long k = particle % perLayer;
+    return static_cast<int>((static_cast<long>(m_chunks) * (k + 1) + perLayer - 1) / perLayer - 1);
 }
 
 void ForceModel::prepareContact(const double* restPositions, const std::vector<bool>& fixed) {

@@ -118,15 +118,24 @@ class ThreadPool;
 
 // Evaluates every declared term and counts evaluations.
 //
-// Large bodies are split into kChunks fixed pieces by particle ownership; each chunk writes
-// only its own particles' forces, and the few springs and faces joining two chunks are added
-// afterwards in a fixed order. The split does not depend on the number of threads, so results
-// are bit-identical whether a pool of 1 or 2 threads runs the chunks.
+// Large bodies are split into fixed pieces by particle ownership (chunksFor: two, or kChunks
+// for the largest); each chunk writes only its own particles' forces, and the few springs and
+// faces joining two chunks are added afterwards in a fixed order. The split does not depend on
+// the number of threads, so results are bit-identical whether a pool of 1 or 2 threads runs
+// the chunks. More chunks than threads let a thread that is free take the next chunk when the
+// other was preempted or runs slow.
 class ForceModel {
 public:
-    static constexpr int kChunks = 2;
+    static constexpr int kChunks = 4;
     // Bodies with fewer springs than this run as one chunk (threads would cost more than win).
     static constexpr std::size_t kChunkThreshold = 8192;
+    // Bodies with at least this many springs (level 6 and up: 212,994 at level 6; level 5 has
+    // 53,250) run as kChunks chunks, the others from kChunkThreshold as two. Four chunks at
+    // level 6 share 7,210 elements (of ~280,000) where two share 3,408; eight shared 11,568 and
+    // ran two threads at 333 steps/s against four chunks' 555 (stop 40, docs/performance.md).
+    static constexpr std::size_t kFineThreshold = 100000;
+    // The chunks of a body with `springs` springs.
+    static int chunksFor(std::size_t springs) { return springs >= kFineThreshold ? kChunks : springs >= kChunkThreshold ? 2 : 1; }
     // Particles per block of the last stage (unpadding, xdot = v and the caller's `then`).
     static constexpr int kStageBlock = 256;
 

@@ -106,7 +106,8 @@ private slots:
         ParameterSet sphere(SceneKind::Sphere3d);
         QVERIFY(!sphere.set(Param::Subdivisions, 4));
         Simulation sim(sphere, "rk4");
-        QCOMPARE(sim.threads(), std::min(availableThreads(), ForceModel::kChunks));
+        QCOMPARE(sim.threads(), std::min(availableThreads(), sim.forces().chunks()));
+        QCOMPARE(sim.forces().chunks(), 2);
     }
 
     void everyTaskRunsOnceWhoeverTakesIt() {
@@ -289,15 +290,27 @@ private slots:
     }
 
     // Which thread runs a chunk, a stalled worker and the caller's runs alone never change a
-    // result: the double and the float path step a level-4 sphere with one thread and with two
-    // (the worker stalled every fifth task it takes) to the same bits.
+    // result: the double and the float path step a sphere with one thread and with two (the
+    // worker stalled every fifth task it takes) to the same bits.
+    // Level 4 runs two chunks, level 6 four, which either thread takes while it is free (a
+    // stalled worker leaves the caller the rest).
+    void stalledWorkerKeepsTheBits_data() {
+        QTest::addColumn<int>("level");
+        QTest::addColumn<int>("chunks");
+        QTest::newRow("level 4") << 4 << 2;
+        QTest::newRow("level 6") << 6 << 4;
+    }
     void stalledWorkerKeepsTheBits() {
-        const ParameterSet p = level4Sphere();
+        QFETCH(int, level);
+        QFETCH(int, chunks);
+        ParameterSet p = level4Sphere();
+        QVERIFY(!p.set(Param::Subdivisions, level));
         Simulation one(p, "rk4");
         one.setThreads(1);
         Simulation two(p, "rk4");
         two.setThreads(2);
         QCOMPARE(two.threads(), 2);
+        QCOMPARE(two.forces().chunks(), chunks);
         FloatSimulation floatOne(one);
         floatOne.setThreads(1);
         FloatSimulation floatTwo(two);
