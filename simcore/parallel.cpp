@@ -73,6 +73,14 @@ constexpr auto kBusyFor = std::chrono::milliseconds(50);
 // longer than 20 ms is not judged at all (OffCpuProbe's default).
 constexpr auto kBetweenRuns = std::chrono::microseconds(500);
 constexpr int kBusySpins = 256;
+// A run's ticket: run number << 32 | front << 16 | back, the tasks not yet claimed being
+// [front, back). The caller claims from the front, the workers from the back: with two threads
+// and four chunks the caller runs 0 and 1 and the worker 3 and 2 run after run, so each keeps
+// its own particles in its own cache, and only when one is late does the other take the chunk
+// next to its own. (Claimed in one order, 0 1 2 3, a thread took whichever chunk came next, and
+// the chunks' data moved between the CPUs' caches when either was late.)
+constexpr std::uint64_t kTicketFront = std::uint64_t{1} << 16;
+constexpr std::uint64_t kTicketMaxTasks = 0xffff;
 
 using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
@@ -259,11 +267,13 @@ int ThreadPool::claimTasks(std::uint32_t run, bool worker) {
     std::uint64_t ticket = m_ticket.load(std::memory_order_acquire);
     for (;;) {
         if (static_cast<std::uint32_t>(ticket >> 32) != run) return claimed;  // a later run has begun
-        const auto index = static_cast<int>(ticket & 0xffffffffu);
+        // The caller takes tasks from the front, the workers from the back (see kTicketFront).
+        const auto front = static_cast<int>((ticket >> 16) & 0xffffu), back = static_cast<int>(ticket & 0xffffu);
+        if (front >= back) return claimed;
+        const int index = worker ? back - 1 : front;
         // A count read after a later run was posted only makes the claim below fail.
         const int count = m_count.load(std::memory_order_acquire);
-        if (index >= count) return claimed;
-        if (!m_ticket.compare_exchange_weak(ticket, ticket + 1, std::memory_order_acq_rel,
+        if (!m_ticket.compare_exchange_weak(ticket, worker ? ticket - 1 : ticket + kTicketFront, std::memory_order_acq_rel,
                                             std::memory_order_acquire))
             continue;
         // Task `index` of this run is ours: the caller waits for it, so the run (and its task)
@@ -364,6 +374,15 @@ void ThreadPool::judgeRun(double ownSeconds, double waitSeconds) {
 
 void ThreadPool::run(int count, TaskRef task) {
     if (count <= 0) return;
+    if (static_cast<std::uint64_t>(count) > kTicketMaxTasks) {
+        // More tasks than a ticket counts: in runs of at most kTicketMaxTasks, in order.
+        for (int first = 0; first < count; first += static_cast<int>(kTicketMaxTasks)) {
+            const int n = std::min(count - first, static_cast<int>(kTicketMaxTasks));
+            auto part = [&](int i) { task(first + i); };
+            run(n, part);
+        }
+        return;
+    }
     if (m_workers.empty() || count == 1) {
         for (int i = 0; i < count; ++i) runTask(task, i, false);
         return;
@@ -389,12 +408,12 @@ void ThreadPool::run(int count, TaskRef task) {
     // this run began) must not claim an index of this run against this run's count. Its
     // compare-and-swap fails once the ticket has moved, and a worker that sees the new count
     // (released below) also sees the closed ticket.
-    m_ticket.store((static_cast<std::uint64_t>(run) << 32) | 0xffffffffu, std::memory_order_release);
+    m_ticket.store((static_cast<std::uint64_t>(run) << 32) | (kTicketMaxTasks * kTicketFront), std::memory_order_release);
     m_task.store(&task, std::memory_order_release);
     m_count.store(count, std::memory_order_release);
     m_done.store(0, std::memory_order_release);
     // Open it: the task, its count and the cleared counter are visible to whoever claims.
-    m_ticket.store(static_cast<std::uint64_t>(run) << 32, std::memory_order_release);
+    m_ticket.store((static_cast<std::uint64_t>(run) << 32) | static_cast<std::uint64_t>(count), std::memory_order_release);
     // Post it, then wake sleeping workers (sequentially consistent with a worker's "asleep"
     // count and its reading of m_posted: see workerLoop).
     m_posted.store(run, std::memory_order_seq_cst);

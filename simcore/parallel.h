@@ -4,7 +4,9 @@
 // returns when all are done; the calling thread takes part.
 //
 // Work goes to whichever thread is free: a task is claimed with one compare-and-swap on a
-// ticket that holds the run's number and the next task's index, so a worker that has not been
+// ticket that holds the run's number and the tasks not yet claimed (the caller takes them from
+// the front, the workers from the back, so each thread meets the same tasks run after run and
+// keeps their data in its cache), so a worker that has not been
 // scheduled yet (a busy machine: compilers, a browser, another simulation beside it) claims
 // nothing, the caller does its tasks, and the run ends when every task is done, not when every
 // worker has turned up.
@@ -149,7 +151,7 @@ private:
     std::vector<std::thread> m_workers;
     std::atomic<const TaskRef*> m_task{nullptr};  // the current run's task and count,
     std::atomic<int> m_count{0};                  //   published by m_ticket
-    std::atomic<std::uint64_t> m_ticket{0};       // run number << 32 | next task index
+    std::atomic<std::uint64_t> m_ticket{0};       // run number << 32 | front << 16 | back (parallel.cpp)
     std::atomic<std::uint32_t> m_done{0};         // tasks of the current run finished (a futex)
     std::atomic<std::uint32_t> m_posted{0};       // the newest run (a futex the workers sleep on)
     std::atomic<std::uint32_t> m_sleepers{0};     // workers asleep or about to sleep on m_posted

@@ -4,6 +4,7 @@
 #include <sched.h>
 
 #include <QtTest>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstring>
@@ -22,6 +23,9 @@ std::atomic<ThreadPool*> g_pool{nullptr};
 std::atomic<int> g_workerIn{0};
 std::atomic<int> g_workerTasks{0};
 std::atomic<int> g_stallEvery{0};
+// Whether this thread is one of a pool's workers (the pool's threads set it through the hook).
+thread_local bool g_inWorker = false;
+void markWorker(int, bool worker) { g_inWorker = worker; }
 
 // A worker stalled in the middle of a run, as a preempted one is: every g_stallEvery-th task a
 // worker takes sleeps 300 us before it runs (longer than most tasks here), so the caller finishes
@@ -125,6 +129,40 @@ private slots:
                 if (hits[static_cast<std::size_t>(i)].load(std::memory_order_relaxed) != 1)
                     QFAIL(qPrintable(QStringLiteral("run %1: task %2 ran %3 times").arg(run).arg(i).arg(hits[static_cast<std::size_t>(i)].load())));
         }
+    }
+
+    // The caller claims tasks from the front and the worker from the back: in every run the
+    // caller's tasks are 0..k-1 and the worker's k..n-1, so each thread meets the same chunks
+    // run after run (its cache keeps their data). Tasks of 20 us, eight per run, so that both
+    // take part; a run of more tasks than a ticket counts (65,535) runs each once too.
+    void callerTakesTheFrontWorkerTheBack() {
+        ThreadPool pool(2);
+        pool.setRunAloneAllowed(false);
+        HookGuard hook(markWorker);
+        constexpr int kTasks = 8;
+        std::array<std::atomic<int>, kTasks> byWorker{};
+        int workerRuns = 0;
+        for (int run = 0; run < 2000; ++run) {
+            for (auto& w : byWorker) w.store(-1, std::memory_order_relaxed);
+            pool.run(kTasks, [&](int i) {
+                const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
+                while (std::chrono::steady_clock::now() < end) {}
+                byWorker[static_cast<std::size_t>(i)].store(g_inWorker ? 1 : 0, std::memory_order_relaxed);
+            });
+            // 0 0 ... 0 1 1 ... 1: never a worker's task before a caller's.
+            bool worker = false;
+            for (int i = 0; i < kTasks; ++i) {
+                const int w = byWorker[static_cast<std::size_t>(i)].load(std::memory_order_relaxed);
+                QVERIFY(w >= 0);
+                if (w == 0 && worker) QFAIL(qPrintable(QStringLiteral("run %1: the caller ran task %2 after the worker's").arg(run).arg(i)));
+                worker = worker || w == 1;
+            }
+            workerRuns += worker ? 1 : 0;
+        }
+        if (availableThreads() >= 2) QVERIFY2(workerRuns > 0, "the worker took no task");
+        std::vector<std::atomic<std::uint8_t>> hits(70000);
+        pool.run(70000, [&](int i) { hits[static_cast<std::size_t>(i)].fetch_add(1, std::memory_order_relaxed); });
+        for (std::size_t i = 0; i < hits.size(); ++i) QCOMPARE(int(hits[i].load()), 1);
     }
 
     // A thread kept off its CPU for more than a quarter of the time it wanted to run marks the
