@@ -706,8 +706,8 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
     }
     s.axes = F4{s.dimension >= 2 ? 1.0f : 0.0f, 1.0f, s.dimension == 3 ? 1.0f : 0.0f, 0.0f};
     // Chunks by particle ownership (as many as ForceModel::chunksFor gives; vertex k of each
-    // layer in chunk k * chunks / n); a spring or face whose
-    // particles are not all one chunk's is shared.
+    // layer in chunk k * chunks / n); a spring or face whose particles are not all one chunk's
+    // is shared.
     const int owners = ForceModel::chunksFor(topo.springCount());
     const bool layered = !topo.layerPairs.empty() && 2 * topo.layerPairs.size() == n;
     const int perLayer = layered ? s.n / 2 : s.n;

@@ -212,10 +212,10 @@ ForceModel::ForceModel(const Topology* topology, const Eigen::VectorXd* mass, Te
 void ForceModel::partition() {
     // Ownership: a layered body's vertex k belongs to chunk c when perLayer * c / chunks <= k <
     // perLayer * (c + 1) / chunks (in both layers, so radius and most shear springs stay inside
-    // one chunk). A spring or face whose
-    // particles all belong to one chunk goes to that chunk's list; the rest, few with the
-    // Z-order numbering, to the shared list, evaluated after the chunks by one thread. The
-    // chunks write disjoint particles of f directly: no per-thread buffers, no reduction.
+    // one chunk). A spring or face whose particles all belong to one chunk goes to that chunk's
+    // list; the rest, few with the Z-order numbering, to the shared list, evaluated after the
+    // chunks by one thread. The chunks write disjoint particles of f directly: no per-thread
+    // buffers, no reduction.
     const Topology& topo = *m_topology;
     const int n = topo.particleCount();
     const bool layered = !topo.layerPairs.empty();
