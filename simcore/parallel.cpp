@@ -86,6 +86,16 @@ using Clock = std::chrono::steady_clock;
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
 std::atomic<ThreadPool::TestHook> g_testHook{nullptr};
+std::atomic<const ThreadPool::CpuHooks*> g_cpuHooks{nullptr};
+
+int poolCurrentCpu() {
+    const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
+    return hooks ? hooks->current() : currentCpu();
+}
+int poolMoveOffCpu(int cpu) {
+    const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
+    return hooks ? hooks->moveOff(cpu) : moveOffCpu(cpu);
+}
 
 // Sleep while `word` holds `expected` (returns at once when it does not, and may return
 // spuriously: callers check their condition again); wake every sleeper on `word`.
@@ -127,6 +137,33 @@ void OffCpuProbe::restart(double wall, double cpu) {
     m_wallAt = wall;
     m_cpuAt = cpu;
     m_away = 0.0;
+}
+
+int currentCpu() {
+#if defined(__linux__)
+    return sched_getcpu();
+#else
+    return -1;
+#endif
+}
+
+int moveOffCpu(int cpu) {
+#if defined(__linux__)
+    cpu_set_t mask;
+    CPU_ZERO(&mask);
+    if (cpu < 0 || cpu >= CPU_SETSIZE || sched_getaffinity(0, sizeof mask, &mask) != 0 || CPU_COUNT(&mask) < 2 ||
+        !CPU_ISSET(cpu, &mask))
+        return -1;
+    cpu_set_t others = mask;
+    CPU_CLR(cpu, &others);
+    if (sched_setaffinity(0, sizeof others, &others) != 0) return -1;
+    const int now = sched_getcpu();  // not `cpu`: the narrowed mask forbids it
+    sched_setaffinity(0, sizeof mask, &mask);
+    return now;
+#else
+    (void)cpu;
+    return -1;
+#endif
 }
 
 double threadCpuSeconds() {
@@ -224,15 +261,17 @@ ThreadPool::~ThreadPool() {
         const Counters c = counters();
         std::fprintf(stderr,
                      "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu, "
-                     "kept off a CPU %llu\n",
+                     "kept off a CPU %llu, worker tasks on the caller's CPU %llu, moved off it %llu\n",
                      static_cast<unsigned long long>(c.runs), static_cast<unsigned long long>(c.soloRuns),
                      static_cast<unsigned long long>(c.soloPeriods), static_cast<unsigned long long>(c.callerSleeps),
                      static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks),
-                     static_cast<unsigned long long>(c.busyMarks));
+                     static_cast<unsigned long long>(c.busyMarks), static_cast<unsigned long long>(c.sharedCpuTasks),
+                     static_cast<unsigned long long>(c.moves));
     }
 }
 
 void ThreadPool::setTestHook(TestHook hook) { g_testHook.store(hook, std::memory_order_release); }
+void ThreadPool::setCpuHooks(const CpuHooks* hooks) { g_cpuHooks.store(hooks, std::memory_order_release); }
 
 ThreadPool::Counters ThreadPool::counters() const {
     Counters c;
@@ -244,6 +283,8 @@ ThreadPool::Counters ThreadPool::counters() const {
     c.soloPeriods = m_statSoloPeriods.load(std::memory_order_relaxed);
     c.busyMarks = m_statBusyMarks.load(std::memory_order_relaxed);
     c.callerBusyMarks = m_statCallerBusyMarks.load(std::memory_order_relaxed);
+    c.sharedCpuTasks = m_statSharedCpuTasks.load(std::memory_order_relaxed);
+    c.moves = m_statMoves.load(std::memory_order_relaxed);
     return c;
 }
 
@@ -321,8 +362,20 @@ void ThreadPool::workerLoop() {
         }
         if (m_stop.load(std::memory_order_acquire)) return;
         seen = posted;
+        // On the caller's CPU the two would only take turns (see parallel.h): move first.
+        int cpu = poolCurrentCpu();
+        if (cpu >= 0 && cpu == m_callerCpu.load(std::memory_order_relaxed)) {
+            if (const int moved = poolMoveOffCpu(cpu); moved >= 0) {
+                m_statMoves.fetch_add(1, std::memory_order_relaxed);
+                cpu = moved;
+            }
+        }
         const int ran = claimTasks(seen, true);
-        if (ran > 0) m_statWorkerTasks.fetch_add(static_cast<std::uint64_t>(ran), std::memory_order_relaxed);
+        if (ran > 0) {
+            m_statWorkerTasks.fetch_add(static_cast<std::uint64_t>(ran), std::memory_order_relaxed);
+            if (cpu >= 0 && cpu == m_callerCpu.load(std::memory_order_relaxed))
+                m_statSharedCpuTasks.fetch_add(static_cast<std::uint64_t>(ran), std::memory_order_relaxed);
+        }
         spinLimit = ran > 0 ? std::min(2 * spinLimit, kSpinsBeforeSleep) : std::max(spinLimit / 4, kMinSpins);
     }
 }
@@ -411,6 +464,7 @@ void ThreadPool::run(int count, TaskRef task) {
     m_ticket.store((static_cast<std::uint64_t>(run) << 32) | (kTicketMaxTasks * kTicketFront), std::memory_order_release);
     m_task.store(&task, std::memory_order_release);
     m_count.store(count, std::memory_order_release);
+    m_callerCpu.store(poolCurrentCpu(), std::memory_order_relaxed);  // released with the ticket below
     m_done.store(0, std::memory_order_release);
     // Open it: the task, its count and the cleared counter are visible to whoever claims.
     m_ticket.store((static_cast<std::uint64_t>(run) << 32) | static_cast<std::uint64_t>(count), std::memory_order_release);

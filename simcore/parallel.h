@@ -15,6 +15,12 @@
 // work, a few microseconds once it keeps arriving late), then sleeps on a futex; the caller
 // spins, then yields, then sleeps on a futex until the last task is done. Neither holds a CPU
 // for long that another thread (its partner, preempted, or another process) could use.
+// A worker that finds itself on the CPU the caller posted the run from moves to another CPU
+// before it claims (moveOffCpu). On a busy machine the kernel wakes a sleeping worker on its
+// waker's CPU when the other CPU is taken by another program; there caller and worker only
+// take turns on one CPU while the other program has the second to itself, and two threads lost
+// to one (stop 41: 50-80 % of the worker's tasks ran on the caller's CPU beside `stress-ng --cpu
+// 1`). Moved, the worker shares the other program's CPU instead.
 // When a run's caller keeps waiting for a preempted worker longer than it works itself (a
 // machine busier than its CPUs: two fixed chunks cannot be shared once begun), one thread
 // would be faster: the caller runs alone for a while, then tries two threads again, and
@@ -114,6 +120,8 @@ public:
         std::uint64_t soloPeriods = 0;    // times the caller chose to run alone
         std::uint64_t busyMarks = 0;      // times a thread found itself kept off its CPU
         std::uint64_t callerBusyMarks = 0; // of which the caller
+        std::uint64_t sharedCpuTasks = 0;  // worker tasks begun on the CPU the caller posted the run from
+        std::uint64_t moves = 0;           // times a worker moved off the caller's CPU
     };
     Counters counters() const;
     // Workers asleep right now (waiting on the futex for the next run).
@@ -130,6 +138,13 @@ public:
     // Set it while no pool is running; nullptr (the default) removes it.
     using TestHook = void (*)(int task, bool worker);
     static void setTestHook(TestHook hook);
+    // Tests only: what the pool's threads take for their CPU and how they move off one
+    // (currentCpu and moveOffCpu below by default). Set while no pool runs; nullptr: the real ones.
+    struct CpuHooks {
+        int (*current)();
+        int (*moveOff)(int cpu);
+    };
+    static void setCpuHooks(const CpuHooks* hooks);
 
 private:
     void workerLoop();
@@ -169,11 +184,22 @@ private:
     ContentionProbe m_callerProbe;
     std::chrono::steady_clock::time_point m_lastRunEnd{};  // when the caller's last run ended
     std::atomic<std::int64_t> m_busyUntil{0};  // steady_clock ticks: contended until then
+    std::atomic<int> m_callerCpu{-1};          // the CPU the caller posted the current run from (-1: unknown)
     // Counters (relaxed, read by counters(); each written by its owner thread only, but for
     // m_statBusyMarks, which every pool thread adds to).
     std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
-        m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0}, m_statCallerBusyMarks{0};
+        m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0}, m_statCallerBusyMarks{0},
+        m_statSharedCpuTasks{0}, m_statMoves{0};
 };
+
+// The CPU the calling thread runs on now (-1 where the system cannot tell).
+int currentCpu();
+// Moves the calling thread off CPU `cpu` to another CPU it may use: its affinity mask is narrowed
+// to the others for a moment, which migrates it before the call returns, then given back whole
+// (the scheduler leaves it where it now is until it has a reason to move it). Returns the CPU
+// it moved to, or -1 when it did not move (one CPU allowed, `cpu` not among them, the system
+// refused).
+int moveOffCpu(int cpu);
 
 // The number of hardware threads, at least 1.
 int hardwareThreads();

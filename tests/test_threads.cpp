@@ -62,6 +62,25 @@ void callerWaitsForWorker(int task, bool worker) {
     }
 }
 
+// What the pool's threads take for their CPU (ThreadPool::setCpuHooks): the caller one CPU, the
+// workers either the same or another; moving off a CPU counted, and granted or refused.
+std::atomic<std::thread::id> g_callerId{};
+std::atomic<bool> g_workersOnCallersCpu{true}, g_moveGranted{true};
+std::atomic<int> g_moveCalls{0};
+int fakeCurrentCpu() {
+    if (std::this_thread::get_id() == g_callerId.load()) return 5;
+    return g_workersOnCallersCpu.load() ? 5 : 6;
+}
+int fakeMoveOffCpu(int cpu) {
+    g_moveCalls.fetch_add(1);
+    return g_moveGranted.load() && cpu == 5 ? 7 : -1;
+}
+constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu};
+struct CpuHooksGuard {
+    CpuHooksGuard() { ThreadPool::setCpuHooks(&kFakeCpus); }
+    ~CpuHooksGuard() { ThreadPool::setCpuHooks(nullptr); }
+};
+
 struct HookGuard {
     explicit HookGuard(ThreadPool::TestHook hook) { ThreadPool::setTestHook(hook); }
     ~HookGuard() { ThreadPool::setTestHook(nullptr); }
@@ -163,6 +182,80 @@ private slots:
         std::vector<std::atomic<std::uint8_t>> hits(70000);
         pool.run(70000, [&](int i) { hits[static_cast<std::size_t>(i)].fetch_add(1, std::memory_order_relaxed); });
         for (std::size_t i = 0; i < hits.size(); ++i) QCOMPARE(int(hits[i].load()), 1);
+    }
+
+    // A worker that finds itself on the caller's CPU moves off it before it claims; one on
+    // another CPU stays; a refused move leaves it where it is, and its tasks count as shared.
+    void workerOnTheCallersCpuMovesOff_data() {
+        QTest::addColumn<bool>("together");
+        QTest::addColumn<bool>("granted");
+        QTest::newRow("on the caller's CPU") << true << true;
+        QTest::newRow("on another CPU") << false << true;
+        QTest::newRow("the move refused") << true << false;
+    }
+    void workerOnTheCallersCpuMovesOff() {
+        QFETCH(bool, together);
+        QFETCH(bool, granted);
+        g_callerId.store(std::this_thread::get_id());
+        g_workersOnCallersCpu.store(together);
+        g_moveGranted.store(granted);
+        g_moveCalls.store(0);
+        ThreadPool::Counters c;
+        {
+            CpuHooksGuard cpus;
+            ThreadPool pool(2);
+            pool.setRunAloneAllowed(false);
+            for (int run = 0; run < 300; ++run)
+                pool.run(8, [](int) {
+                    const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
+                    while (std::chrono::steady_clock::now() < end) {}
+                });
+            c = pool.counters();
+        }  // the worker has stopped: its counts are final
+        QVERIFY2(c.workerTasks > 0, "the worker took no task");
+        if (together) {
+            QVERIFY(g_moveCalls.load() > 0);
+            QCOMPARE(c.moves, granted ? std::uint64_t(g_moveCalls.load()) : std::uint64_t{0});
+            QCOMPARE(c.sharedCpuTasks, granted ? std::uint64_t{0} : c.workerTasks);
+        } else {
+            QCOMPARE(g_moveCalls.load(), 0);
+            QCOMPARE(c.moves, std::uint64_t{0});
+            QCOMPARE(c.sharedCpuTasks, std::uint64_t{0});
+        }
+    }
+
+    // moveOffCpu really moves the thread (the kernel migrates it before the narrowed mask takes
+    // effect) and gives its mask back whole; with one CPU allowed it does nothing.
+    void moveOffCpuMovesAndKeepsTheMask() {
+        cpu_set_t before;
+        CPU_ZERO(&before);
+        QCOMPARE(sched_getaffinity(0, sizeof before, &before), 0);
+        QCOMPARE(moveOffCpu(-1), -1);
+        if (CPU_COUNT(&before) < 2) QSKIP("one CPU allowed: nowhere to move");
+        for (int i = 0; i < 20; ++i) {
+            const int cpu = currentCpu();
+            QVERIFY(cpu >= 0);
+            const int moved = moveOffCpu(cpu);
+            QVERIFY2(moved >= 0 && moved != cpu, qPrintable(QStringLiteral("from %1 to %2").arg(cpu).arg(moved)));
+            QVERIFY(CPU_ISSET(moved, &before));
+            cpu_set_t after;
+            CPU_ZERO(&after);
+            QCOMPARE(sched_getaffinity(0, sizeof after, &after), 0);
+            QVERIFY(CPU_EQUAL(&before, &after));
+        }
+        // Pinned to one CPU (as under `taskset -c 0`): no move, the mask untouched.
+        cpu_set_t one;
+        CPU_ZERO(&one);
+        const int here = currentCpu();
+        CPU_SET(here, &one);
+        QCOMPARE(sched_setaffinity(0, sizeof one, &one), 0);
+        const int moved = moveOffCpu(here);
+        cpu_set_t after;
+        CPU_ZERO(&after);
+        sched_getaffinity(0, sizeof after, &after);
+        sched_setaffinity(0, sizeof before, &before);
+        QCOMPARE(moved, -1);
+        QVERIFY(CPU_EQUAL(&one, &after));
     }
 
     // A thread kept off its CPU for more than a quarter of the time it wanted to run marks the
