@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -13,6 +14,7 @@
 #include <climits>
 
 #if defined(__linux__)
+#include <fcntl.h>
 #include <linux/futex.h>
 #include <sched.h>
 #include <time.h>
@@ -96,6 +98,22 @@ int poolMoveOffCpu(int cpu) {
     const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
     return hooks ? hooks->moveOff(cpu) : moveOffCpu(cpu);
 }
+int poolRunnableThreads() {
+    const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
+    return hooks ? hooks->runnable() : runnableThreads();
+}
+// The CPUs the calling thread may use (1 where the system cannot tell).
+int allowedCpus() {
+#if defined(__linux__)
+    cpu_set_t mask;
+    CPU_ZERO(&mask);
+    if (sched_getaffinity(0, sizeof mask, &mask) == 0) return std::max(1, CPU_COUNT(&mask));
+#endif
+    return 1;
+}
+// How long a worker's judgement of the other CPUs' load holds (reading it costs a few
+// microseconds; the worker may find itself on the caller's CPU at every run while it stays).
+constexpr auto kLoadJudgementFor = std::chrono::milliseconds(2);
 
 // Sleep while `word` holds `expected` (returns at once when it does not, and may return
 // spuriously: callers check their condition again); wake every sleeper on `word`.
@@ -165,6 +183,32 @@ int moveOffCpu(int cpu) {
     return -1;
 #endif
 }
+
+int runnableThreads() {
+#if defined(__linux__)
+    // "0.52 0.58 0.59 3/210 4567": the fourth field is runnable / all scheduling entities.
+    const int fd = ::open("/proc/loadavg", O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return -1;
+    char text[128];
+    const ssize_t n = ::read(fd, text, sizeof text - 1);
+    ::close(fd);
+    if (n <= 0) return -1;
+    text[n] = '\0';
+    const char* field = text;
+    for (int i = 0; i < 3; ++i) {
+        field = std::strchr(field, ' ');
+        if (!field) return -1;
+        ++field;
+    }
+    int runnable = -1;
+    const auto [end, ec] = std::from_chars(field, text + n, runnable);
+    return ec == std::errc() && *end == '/' ? runnable : -1;
+#else
+    return -1;
+#endif
+}
+
+bool moveIsWorthIt(int runnable, int cpus) { return cpus >= 2 && (runnable < 0 || runnable - 2 < cpus); }
 
 double threadCpuSeconds() {
 #if defined(__linux__)
@@ -261,12 +305,12 @@ ThreadPool::~ThreadPool() {
         const Counters c = counters();
         std::fprintf(stderr,
                      "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu, "
-                     "kept off a CPU %llu, worker tasks on the caller's CPU %llu, moved off it %llu\n",
+                     "kept off a CPU %llu, worker tasks on the caller's CPU %llu, moved off it %llu, stayed %llu\n",
                      static_cast<unsigned long long>(c.runs), static_cast<unsigned long long>(c.soloRuns),
                      static_cast<unsigned long long>(c.soloPeriods), static_cast<unsigned long long>(c.callerSleeps),
                      static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks),
                      static_cast<unsigned long long>(c.busyMarks), static_cast<unsigned long long>(c.sharedCpuTasks),
-                     static_cast<unsigned long long>(c.moves));
+                     static_cast<unsigned long long>(c.moves), static_cast<unsigned long long>(c.stays));
     }
 }
 
@@ -285,6 +329,7 @@ ThreadPool::Counters ThreadPool::counters() const {
     c.callerBusyMarks = m_statCallerBusyMarks.load(std::memory_order_relaxed);
     c.sharedCpuTasks = m_statSharedCpuTasks.load(std::memory_order_relaxed);
     c.moves = m_statMoves.load(std::memory_order_relaxed);
+    c.stays = m_statStays.load(std::memory_order_relaxed);
     return c;
 }
 
@@ -338,6 +383,9 @@ void ThreadPool::workerLoop() {
     // spinning only takes time from the caller, which shares the CPU with it).
     int spinLimit = kSpinsBeforeSleep;
     ContentionProbe probe;
+    // Whether moving off the caller's CPU pays, and until when that judgement holds.
+    bool moveWorthIt = true;
+    Clock::time_point judgedUntil{};
     for (;;) {
         int spins = 0;
         const int limit = contended(probe) ? std::min(spinLimit, kBusySpins) : spinLimit;
@@ -363,9 +411,17 @@ void ThreadPool::workerLoop() {
         if (m_stop.load(std::memory_order_acquire)) return;
         seen = posted;
         // On the caller's CPU the two would only take turns (see parallel.h): move first.
+        // Unless the other CPUs are as busy (moveIsWorthIt, judged at most every
+        // kLoadJudgementFor).
         int cpu = poolCurrentCpu();
         if (cpu >= 0 && cpu == m_callerCpu.load(std::memory_order_relaxed)) {
-            if (const int moved = poolMoveOffCpu(cpu); moved >= 0) {
+            if (const Clock::time_point now = Clock::now(); now >= judgedUntil) {
+                moveWorthIt = moveIsWorthIt(poolRunnableThreads(), allowedCpus());
+                judgedUntil = now + kLoadJudgementFor;
+            }
+            if (!moveWorthIt) {
+                m_statStays.fetch_add(1, std::memory_order_relaxed);
+            } else if (const int moved = poolMoveOffCpu(cpu); moved >= 0) {
                 m_statMoves.fetch_add(1, std::memory_order_relaxed);
                 cpu = moved;
             }

@@ -20,7 +20,11 @@
 // waker's CPU when the other CPU is taken by another program; there caller and worker only
 // take turns on one CPU while the other program has the second to itself, and two threads lost
 // to one (stop 41: 50-80 % of the worker's tasks ran on the caller's CPU beside `stress-ng --cpu
-// 1`). Moved, the worker shares the other program's CPU instead.
+// 1`). Moved, the worker shares the other program's CPU instead. It stays when the other CPUs
+// are at least as busy as this one (as many runnable threads besides the caller and itself as
+// CPUs: moveIsWorthIt): there the two taking turns on one CPU get a whole CPU, and split, each
+// would get a share of a busier one (beside `stress-ng --cpu 2` two threads fell from 1.4-1.6x
+// one thread to 1.1x when the worker always moved).
 // When a run's caller keeps waiting for a preempted worker longer than it works itself (a
 // machine busier than its CPUs: two fixed chunks cannot be shared once begun), one thread
 // would be faster: the caller runs alone for a while, then tries two threads again, and
@@ -122,6 +126,7 @@ public:
         std::uint64_t callerBusyMarks = 0; // of which the caller
         std::uint64_t sharedCpuTasks = 0;  // worker tasks begun on the CPU the caller posted the run from
         std::uint64_t moves = 0;           // times a worker moved off the caller's CPU
+        std::uint64_t stays = 0;           // times it stayed there, the other CPUs as busy (moveIsWorthIt)
     };
     Counters counters() const;
     // Workers asleep right now (waiting on the futex for the next run).
@@ -143,6 +148,7 @@ public:
     struct CpuHooks {
         int (*current)();
         int (*moveOff)(int cpu);
+        int (*runnable)();
     };
     static void setCpuHooks(const CpuHooks* hooks);
 
@@ -189,7 +195,7 @@ private:
     // m_statBusyMarks, which every pool thread adds to).
     std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
         m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0}, m_statCallerBusyMarks{0},
-        m_statSharedCpuTasks{0}, m_statMoves{0};
+        m_statSharedCpuTasks{0}, m_statMoves{0}, m_statStays{0};
 };
 
 // The CPU the calling thread runs on now (-1 where the system cannot tell).
@@ -200,6 +206,14 @@ int currentCpu();
 // it moved to, or -1 when it did not move (one CPU allowed, `cpu` not among them, the system
 // refused).
 int moveOffCpu(int cpu);
+
+// The threads runnable on the whole system now, the caller's included (the kernel's count in
+// /proc/loadavg); -1 where the system cannot tell.
+int runnableThreads();
+// Whether a worker on the caller's CPU gains by moving off it, with `runnable` threads runnable
+// (itself and the caller included; -1: unknown) and `cpus` CPUs allowed: when the others number
+// fewer than the CPUs, some other CPU is less busy than the one the two share.
+bool moveIsWorthIt(int runnable, int cpus);
 
 // The number of hardware threads, at least 1.
 int hardwareThreads();

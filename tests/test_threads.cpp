@@ -67,6 +67,7 @@ void callerWaitsForWorker(int task, bool worker) {
 std::atomic<std::thread::id> g_callerId{};
 std::atomic<bool> g_workersOnCallersCpu{true}, g_moveGranted{true};
 std::atomic<int> g_moveCalls{0};
+std::atomic<int> g_runnable{2};  // the caller and the worker: the other CPU idle
 int fakeCurrentCpu() {
     if (std::this_thread::get_id() == g_callerId.load()) return 5;
     return g_workersOnCallersCpu.load() ? 5 : 6;
@@ -75,7 +76,8 @@ int fakeMoveOffCpu(int cpu) {
     g_moveCalls.fetch_add(1);
     return g_moveGranted.load() && cpu == 5 ? 7 : -1;
 }
-constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu};
+int fakeRunnable() { return g_runnable.load(); }
+constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeRunnable};
 struct CpuHooksGuard {
     CpuHooksGuard() { ThreadPool::setCpuHooks(&kFakeCpus); }
     ~CpuHooksGuard() { ThreadPool::setCpuHooks(nullptr); }
@@ -184,25 +186,37 @@ private slots:
         for (std::size_t i = 0; i < hits.size(); ++i) QCOMPARE(int(hits[i].load()), 1);
     }
 
-    // A worker that finds itself on the caller's CPU moves off it before it claims; one on
-    // another CPU stays; a refused move leaves it where it is, and its tasks count as shared.
+    // A worker that finds itself on the caller's CPU moves off it before it claims, unless the
+    // other CPUs are as busy (as many other runnable threads as CPUs); one on another CPU stays;
+    // a refused move leaves it where it is. Tasks begun on the caller's CPU count as shared.
     void workerOnTheCallersCpuMovesOff_data() {
         QTest::addColumn<bool>("together");
         QTest::addColumn<bool>("granted");
-        QTest::newRow("on the caller's CPU") << true << true;
-        QTest::newRow("on another CPU") << false << true;
-        QTest::newRow("the move refused") << true << false;
+        QTest::addColumn<int>("others");  // runnable besides the caller and the worker: none, fewer than the CPUs, as many
+        QTest::newRow("on the caller's CPU, the other idle") << true << true << 0;
+        QTest::newRow("on the caller's CPU, one program beside") << true << true << 1;
+        QTest::newRow("on the caller's CPU, the others as busy") << true << true << 2;
+        QTest::newRow("on another CPU") << false << true << 1;
+        QTest::newRow("the move refused") << true << false << 0;
     }
     void workerOnTheCallersCpuMovesOff() {
         QFETCH(bool, together);
         QFETCH(bool, granted);
+        QFETCH(int, others);
         g_callerId.store(std::this_thread::get_id());
         g_workersOnCallersCpu.store(together);
         g_moveGranted.store(granted);
         g_moveCalls.store(0);
+        cpu_set_t mask;
+        CPU_ZERO(&mask);
+        QCOMPARE(sched_getaffinity(0, sizeof mask, &mask), 0);
+        // The fake count follows the CPUs allowed (two here; one under `taskset -c 0`): none, one
+        // fewer than the CPUs, or as many besides the caller and the worker.
+        const int cpus = CPU_COUNT(&mask);
+        g_runnable.store(2 + (others == 0 ? 0 : others == 1 ? cpus - 1 : cpus));
         ThreadPool::Counters c;
         {
-            CpuHooksGuard cpus;
+            CpuHooksGuard fakeCpus;
             ThreadPool pool(2);
             pool.setRunAloneAllowed(false);
             for (int run = 0; run < 300; ++run)
@@ -213,15 +227,33 @@ private slots:
             c = pool.counters();
         }  // the worker has stopped: its counts are final
         QVERIFY2(c.workerTasks > 0, "the worker took no task");
-        if (together) {
+        const bool stays = others >= 2 || cpus < 2;  // (one CPU: moveIsWorthIt says no move)
+        if (together && !stays) {
             QVERIFY(g_moveCalls.load() > 0);
             QCOMPARE(c.moves, granted ? std::uint64_t(g_moveCalls.load()) : std::uint64_t{0});
             QCOMPARE(c.sharedCpuTasks, granted ? std::uint64_t{0} : c.workerTasks);
+            QCOMPARE(c.stays, std::uint64_t{0});
         } else {
             QCOMPARE(g_moveCalls.load(), 0);
             QCOMPARE(c.moves, std::uint64_t{0});
-            QCOMPARE(c.sharedCpuTasks, std::uint64_t{0});
+            QCOMPARE(c.sharedCpuTasks, together ? c.workerTasks : std::uint64_t{0});
+            QVERIFY(together ? c.stays > 0 : c.stays == 0);
         }
+    }
+
+    // The rule behind it: with n CPUs, a worker sharing the caller's CPU gains by moving while
+    // fewer than n other threads are runnable (some CPU is less busy than theirs); an unknown
+    // count moves. The kernel's count includes the thread that reads it.
+    void moveIsWorthItWhileAnotherCpuIsLessBusy() {
+        QVERIFY(moveIsWorthIt(2, 2));   // the other CPU idle
+        QVERIFY(moveIsWorthIt(3, 2));   // one program beside: half of its CPU beats turns on ours
+        QVERIFY(!moveIsWorthIt(4, 2));  // two beside: the pair keeps a whole CPU
+        QVERIFY(!moveIsWorthIt(9, 2));
+        QVERIFY(moveIsWorthIt(5, 4));
+        QVERIFY(!moveIsWorthIt(6, 4));
+        QVERIFY(!moveIsWorthIt(2, 1));  // one CPU: nowhere to go
+        QVERIFY(moveIsWorthIt(-1, 2));
+        QVERIFY(runnableThreads() >= 1);  // at least this thread
     }
 
     // moveOffCpu really moves the thread (the kernel migrates it before the narrowed mask takes
