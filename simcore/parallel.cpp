@@ -102,14 +102,15 @@ int poolRunnableThreads() {
     const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
     return hooks ? hooks->runnable() : runnableThreads();
 }
-// The CPUs the calling thread may use (1 where the system cannot tell).
+// The CPUs the calling thread may use (its affinity mask; the hardware count where the system
+// cannot tell).
 int allowedCpus() {
 #if defined(__linux__)
     cpu_set_t mask;
     CPU_ZERO(&mask);
     if (sched_getaffinity(0, sizeof mask, &mask) == 0) return std::max(1, CPU_COUNT(&mask));
 #endif
-    return 1;
+    return hardwareThreads();
 }
 // How long a worker's judgement of the other CPUs' load holds (reading it costs a few
 // microseconds; the worker may find itself on the caller's CPU at every run while it stays).
@@ -280,14 +281,13 @@ int cgroupThreads() {
 }  // namespace
 
 int availableThreads() {
-    int n = hardwareThreads();
 #if defined(__linux__)
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    if (sched_getaffinity(0, sizeof set, &set) == 0) n = std::max(1, CPU_COUNT(&set));
-    if (const int quota = cgroupThreads(); quota > 0) n = std::min(n, quota);
+    const int n = allowedCpus();
+    const int quota = cgroupThreads();
+    return quota > 0 ? std::min(n, quota) : n;
+#else
+    return hardwareThreads();
 #endif
-    return n;
 }
 
 ThreadPool::ThreadPool(int threads) {

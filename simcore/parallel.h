@@ -191,8 +191,8 @@ private:
     std::chrono::steady_clock::time_point m_lastRunEnd{};  // when the caller's last run ended
     std::atomic<std::int64_t> m_busyUntil{0};  // steady_clock ticks: contended until then
     std::atomic<int> m_callerCpu{-1};          // the CPU the caller posted the current run from (-1: unknown)
-    // Counters (relaxed, read by counters(); each written by its owner thread only, but for
-    // m_statBusyMarks, which every pool thread adds to).
+    // Counters (relaxed, read by counters()). The caller alone writes the runs, solo, caller
+    // sleep and caller busy counts; every pool thread adds to the others (atomic adds).
     std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
         m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0}, m_statCallerBusyMarks{0},
         m_statSharedCpuTasks{0}, m_statMoves{0}, m_statStays{0};
