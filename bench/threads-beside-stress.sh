@@ -9,7 +9,7 @@
 # pool judges alone against together by trials, its trials and how many one thread won
 # (ELASTIC_LAB_POOL_STATS; the pool on main has no trials: 0), the share of the worker's tasks
 # begun on the CPU the caller posted the run from and how often a worker moved off it (builds
-# from stop 41 on), and the state hashes seen.
+# from stop 41 on) and joined it (from stop 42 on), and the state hashes seen.
 #
 #   bench/threads-beside-stress.sh [--rounds N] [--steps N] [--loads "0 1 2"]
 #       [--precisions "double float"] [--kernels avx2] [--control] [--raw FILE] CLI [CLI ...]
@@ -108,18 +108,20 @@ def fmtr(v): return f"{statistics.median(v):.2f} ({min(v):.2f}-{max(v):.2f})"
 import re
 def pool(field):
     # the 2-thread run's pools (ELASTIC_LAB_POOL_STATS): runs, runs alone, trials, won alone,
-    # worker tasks, of which begun on the caller's CPU, moves off it (0 where a build has no such count)
-    runs = alone = trials = won = tasks = shared = moves = 0
+    # worker tasks, of which begun on the caller's CPU, moves off it, joins onto it (0 where a build
+    # has no such count)
+    runs = alone = trials = won = tasks = shared = moves = joins = 0
     for m in re.finditer(r"(\d+) runs; (\d+) alone", field): runs += int(m[1]); alone += int(m[2])
     for m in re.finditer(r"(\d+) trials \(alone won (\d+)\)", field): trials += int(m[1]); won += int(m[2])
     for m in re.finditer(r"worker tasks (\d+)", field): tasks += int(m[1])
     for m in re.finditer(r"worker tasks on the caller's CPU (\d+)", field): shared += int(m[1])
     for m in re.finditer(r"moved off it (\d+)", field): moves += int(m[1])
-    return runs, alone, trials, won, tasks, shared, moves
+    for m in re.finditer(r"joined it (\d+)", field): joins += int(m[1])
+    return runs, alone, trials, won, tasks, shared, moves, joins
 control = any(r["threads"] == "1c" for r in rows)
 head = "| beside | build | precision | 1 thread, steps/s | 2 threads, steps/s | 2 / 1, paired | 2 / 1, each round |"
 if control: head += " 1 / 1, each round (control) |"
-print(head + " 2 threads: runs alone, trials (won alone) | 2 threads: worker tasks on the caller's CPU, moves off it | state hash |")
+print(head + " 2 threads: runs alone, trials (won alone) | 2 threads: worker tasks on the caller's CPU, moves off it, joins | state hash |")
 print("|---" * (11 if control else 10) + "|")
 for load in dict.fromkeys(r["load"] for r in rows):
     for b in dict.fromkeys(r["build"] for r in rows):
@@ -137,10 +139,11 @@ for load in dict.fromkeys(r["load"] for r in rows):
             hashes = ",".join(sorted({r["state_hash"] for r in sel}))
             beside = "nothing" if load == "0" else f"stress-ng --cpu {load}"
             acc = [pool(r.get("pool") or "") for r in sel if r["threads"] == "2"]
-            runs, alone, trials, won, tasks, shared, moves = (sum(a[k] for a in acc) for k in range(7))
+            runs, alone, trials, won, tasks, shared, moves, joins = (sum(a[k] for a in acc) for k in range(8))
             share = f"{100 * alone / runs:.0f} %, {trials} ({won})" if runs else "-"
             counted = any("caller's CPU" in (r.get("pool") or "") for r in sel)  # builds before stop 41: no such count
-            placed = f"{100 * shared / tasks:.0f} %, {moves}" if tasks and counted else "-"
+            joined = any("joined it" in (r.get("pool") or "") for r in sel)  # builds before stop 42: no joins
+            placed = f"{100 * shared / tasks:.0f} %, {moves}, {joins if joined else '-'}" if tasks and counted else "-"
             rounds = ", ".join(f"{x:.2f}" for x in sorted(ratio))  # worst first
             ctl = (" " + ", ".join(f"{x:.2f}" for x in selfratio) + " |") if control else ""
             print(f"| {beside} | {clis[int(b)]} | {p} | {fmt(one)} | {fmt(two)} | **{fmtr(ratio)}** | {rounds} |{ctl} {share} | {placed} | {hashes} |")

@@ -98,6 +98,10 @@ int poolMoveOffCpu(int cpu) {
     const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
     return hooks ? hooks->moveOff(cpu) : moveOffCpu(cpu);
 }
+int poolMoveOntoCpu(int cpu) {
+    const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
+    return hooks ? hooks->moveOnto(cpu) : moveOntoCpu(cpu);
+}
 int poolRunnableThreads() {
     const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
     return hooks ? hooks->runnable() : runnableThreads();
@@ -114,7 +118,12 @@ int allowedCpus() {
 }
 // How long a worker's judgement of the other CPUs' load holds (reading it costs a few
 // microseconds; the worker may find itself on the caller's CPU at every run while it stays).
+// On another CPU than the caller's (the usual place on a quiet machine) it judges at most every
+// kJoinJudgementFor (a read every 10 ms costs nothing measurable); it joins the caller at most
+// every kJoinEvery (a join the kernel's balancer undoes is not tried again at every run).
 constexpr auto kLoadJudgementFor = std::chrono::milliseconds(2);
+constexpr auto kJoinJudgementFor = std::chrono::milliseconds(10);
+constexpr auto kJoinEvery = std::chrono::milliseconds(50);
 
 // Sleep while `word` holds `expected` (returns at once when it does not, and may return
 // spuriously: callers check their condition again); wake every sleeper on `word`.
@@ -185,6 +194,25 @@ int moveOffCpu(int cpu) {
 #endif
 }
 
+int moveOntoCpu(int cpu) {
+#if defined(__linux__)
+    cpu_set_t mask;
+    CPU_ZERO(&mask);
+    if (cpu < 0 || cpu >= CPU_SETSIZE || sched_getaffinity(0, sizeof mask, &mask) != 0 || !CPU_ISSET(cpu, &mask))
+        return -1;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(cpu, &one);
+    if (sched_setaffinity(0, sizeof one, &one) != 0) return -1;
+    const int now = sched_getcpu();  // `cpu`: the narrowed mask allows nothing else
+    sched_setaffinity(0, sizeof mask, &mask);
+    return now;
+#else
+    (void)cpu;
+    return -1;
+#endif
+}
+
 int runnableThreads() {
 #if defined(__linux__)
     // "0.52 0.58 0.59 3/210 4567": the fourth field is runnable / all scheduling entities.
@@ -210,6 +238,7 @@ int runnableThreads() {
 }
 
 bool moveIsWorthIt(int runnable, int cpus) { return cpus >= 2 && (runnable < 0 || runnable - 2 < cpus); }
+bool joinIsWorthIt(int runnable, int cpus) { return cpus >= 2 && runnable >= 0 && runnable - 2 >= cpus; }
 
 double threadCpuSeconds() {
 #if defined(__linux__)
@@ -290,7 +319,7 @@ int availableThreads() {
 #endif
 }
 
-ThreadPool::ThreadPool(int threads) {
+ThreadPool::ThreadPool(int threads) : m_workerCount(std::max(0, threads - 1)) {
     for (int i = 1; i < threads; ++i) m_workers.emplace_back([this] { workerLoop(); });
 }
 
@@ -305,12 +334,14 @@ ThreadPool::~ThreadPool() {
         const Counters c = counters();
         std::fprintf(stderr,
                      "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu, "
-                     "kept off a CPU %llu, worker tasks on the caller's CPU %llu, moved off it %llu, stayed %llu\n",
+                     "kept off a CPU %llu, worker tasks on the caller's CPU %llu, moved off it %llu, stayed %llu, "
+                     "joined it %llu\n",
                      static_cast<unsigned long long>(c.runs), static_cast<unsigned long long>(c.soloRuns),
                      static_cast<unsigned long long>(c.soloPeriods), static_cast<unsigned long long>(c.callerSleeps),
                      static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks),
                      static_cast<unsigned long long>(c.busyMarks), static_cast<unsigned long long>(c.sharedCpuTasks),
-                     static_cast<unsigned long long>(c.moves), static_cast<unsigned long long>(c.stays));
+                     static_cast<unsigned long long>(c.moves), static_cast<unsigned long long>(c.stays),
+                     static_cast<unsigned long long>(c.joins));
     }
 }
 
@@ -330,6 +361,7 @@ ThreadPool::Counters ThreadPool::counters() const {
     c.sharedCpuTasks = m_statSharedCpuTasks.load(std::memory_order_relaxed);
     c.moves = m_statMoves.load(std::memory_order_relaxed);
     c.stays = m_statStays.load(std::memory_order_relaxed);
+    c.joins = m_statJoins.load(std::memory_order_relaxed);
     return c;
 }
 
@@ -383,9 +415,11 @@ void ThreadPool::workerLoop() {
     // spinning only takes time from the caller, which shares the CPU with it).
     int spinLimit = kSpinsBeforeSleep;
     ContentionProbe probe;
-    // Whether moving off the caller's CPU pays, and until when that judgement holds.
-    bool moveWorthIt = true;
-    Clock::time_point judgedUntil{};
+    // Whether moving off the caller's CPU pays, whether joining it does, until when that
+    // judgement holds, and the earliest time of the next join.
+    bool moveWorthIt = true, joinWorthIt = false;
+    int joinStreak = 0;
+    Clock::time_point judgedUntil{}, joinAfter{};
     for (;;) {
         int spins = 0;
         const int limit = contended(probe) ? std::min(spinLimit, kBusySpins) : spinLimit;
@@ -410,20 +444,41 @@ void ThreadPool::workerLoop() {
         }
         if (m_stop.load(std::memory_order_acquire)) return;
         seen = posted;
-        // On the caller's CPU the two would only take turns (see parallel.h): move first.
-        // Unless the other CPUs are as busy (moveIsWorthIt, judged at most every
-        // kLoadJudgementFor).
+        // On the caller's CPU the two would only take turns (see parallel.h): move first,
+        // unless the other CPUs are as busy (moveIsWorthIt, judged at most every
+        // kLoadJudgementFor). On another CPU while they are as busy, join the caller's: the two
+        // then take turns on a CPU the kernel's balancer soon leaves to them, where split each
+        // would share a CPU with another program and wait for the other at every run. Only a
+        // pool of two: more threads on one CPU would give up more CPUs than they gain.
         int cpu = poolCurrentCpu();
-        if (cpu >= 0 && cpu == m_callerCpu.load(std::memory_order_relaxed)) {
-            if (const Clock::time_point now = Clock::now(); now >= judgedUntil) {
-                moveWorthIt = moveIsWorthIt(poolRunnableThreads(), allowedCpus());
-                judgedUntil = now + kLoadJudgementFor;
-            }
+        const int callerCpu = m_callerCpu.load(std::memory_order_relaxed);
+        const auto judgeLoad = [&](Clock::time_point now, Clock::duration hold) {
+            if (now < judgedUntil) return;
+            const int runnable = poolRunnableThreads(), cpus = allowedCpus();
+            moveWorthIt = moveIsWorthIt(runnable, cpus);
+            // The count is the kernel's at one instant (a kernel thread woken for a moment
+            // counts): a join needs two judgements in a row.
+            joinStreak = joinIsWorthIt(runnable, cpus) ? joinStreak + 1 : 0;
+            joinWorthIt = joinStreak >= 2;
+            judgedUntil = now + hold;
+        };
+        if (cpu >= 0 && cpu == callerCpu) {
+            judgeLoad(Clock::now(), kLoadJudgementFor);
             if (!moveWorthIt) {
                 m_statStays.fetch_add(1, std::memory_order_relaxed);
             } else if (const int moved = poolMoveOffCpu(cpu); moved >= 0) {
                 m_statMoves.fetch_add(1, std::memory_order_relaxed);
                 cpu = moved;
+            }
+        } else if (cpu >= 0 && callerCpu >= 0 && m_workerCount == 1) {
+            const Clock::time_point now = Clock::now();
+            judgeLoad(now, kJoinJudgementFor);
+            if (joinWorthIt && now >= joinAfter) {
+                joinAfter = now + kJoinEvery;
+                if (const int joined = poolMoveOntoCpu(callerCpu); joined >= 0) {
+                    m_statJoins.fetch_add(1, std::memory_order_relaxed);
+                    cpu = joined;
+                }
             }
         }
         const int ran = claimTasks(seen, true);

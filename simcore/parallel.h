@@ -127,6 +127,7 @@ public:
         std::uint64_t sharedCpuTasks = 0;  // worker tasks begun on the CPU the caller posted the run from
         std::uint64_t moves = 0;           // times a worker moved off the caller's CPU
         std::uint64_t stays = 0;           // times it stayed there, the other CPUs as busy (moveIsWorthIt)
+        std::uint64_t joins = 0;           // times a worker on another CPU joined the caller's, the others as busy
     };
     Counters counters() const;
     // Workers asleep right now (waiting on the futex for the next run).
@@ -148,6 +149,7 @@ public:
     struct CpuHooks {
         int (*current)();
         int (*moveOff)(int cpu);
+        int (*moveOnto)(int cpu);
         int (*runnable)();
     };
     static void setCpuHooks(const CpuHooks* hooks);
@@ -169,6 +171,7 @@ private:
     // The fallback's decision after each run that used the workers.
     void judgeRun(double ownSeconds, double waitSeconds);
 
+    int m_workerCount;  // set before the workers start (they read it; m_workers grows meanwhile)
     std::vector<std::thread> m_workers;
     std::atomic<const TaskRef*> m_task{nullptr};  // the current run's task and count,
     std::atomic<int> m_count{0};                  //   published by m_ticket
@@ -195,7 +198,7 @@ private:
     // sleep and caller busy counts; every pool thread adds to the others (atomic adds).
     std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
         m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0}, m_statCallerBusyMarks{0},
-        m_statSharedCpuTasks{0}, m_statMoves{0}, m_statStays{0};
+        m_statSharedCpuTasks{0}, m_statMoves{0}, m_statStays{0}, m_statJoins{0};
 };
 
 // The CPU the calling thread runs on now (-1 where the system cannot tell).
@@ -207,6 +210,11 @@ int currentCpu();
 // refused).
 int moveOffCpu(int cpu);
 
+// Moves the calling thread onto CPU `cpu` (its mask narrowed to that CPU for a moment, then given
+// back whole). Returns the CPU it is on, or -1 when it did not move (`cpu` not allowed, the
+// system refused).
+int moveOntoCpu(int cpu);
+
 // The threads runnable on the whole system now, the caller's included (the kernel's count in
 // /proc/loadavg); -1 where the system cannot tell.
 int runnableThreads();
@@ -214,6 +222,10 @@ int runnableThreads();
 // (itself and the caller included; -1: unknown) and `cpus` CPUs allowed: when the others number
 // fewer than the CPUs, some other CPU is less busy than the one the two share.
 bool moveIsWorthIt(int runnable, int cpus);
+// Whether a worker on another CPU than the caller's (a pool of two) gains by joining it: when the
+// others number at least the CPUs (known, and at least two CPUs), a pair on one CPU gets that
+// CPU, where split each shares a CPU with another program.
+bool joinIsWorthIt(int runnable, int cpus);
 
 // The number of hardware threads, at least 1.
 int hardwareThreads();

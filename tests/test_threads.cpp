@@ -63,10 +63,11 @@ void callerWaitsForWorker(int task, bool worker) {
 }
 
 // What the pool's threads take for their CPU (ThreadPool::setCpuHooks): the caller one CPU, the
-// workers either the same or another; moving off a CPU counted, and granted or refused.
+// workers either the same or another; moving off a CPU and onto the caller's counted, and
+// granted or refused.
 std::atomic<std::thread::id> g_callerId{};
 std::atomic<bool> g_workersOnCallersCpu{true}, g_moveGranted{true};
-std::atomic<int> g_moveCalls{0};
+std::atomic<int> g_moveCalls{0}, g_joinCalls{0};
 std::atomic<int> g_runnable{2};  // the caller and the worker: the other CPU idle
 int fakeCurrentCpu() {
     if (std::this_thread::get_id() == g_callerId.load()) return 5;
@@ -76,8 +77,15 @@ int fakeMoveOffCpu(int cpu) {
     g_moveCalls.fetch_add(1);
     return g_moveGranted.load() && cpu == 5 ? 7 : -1;
 }
-int fakeRunnable() { return g_runnable.load(); }
-constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeRunnable};
+int fakeMoveOntoCpu(int cpu) {
+    g_joinCalls.fetch_add(1);
+    return g_moveGranted.load() && cpu == 5 ? 5 : -1;
+}
+// With g_flicker, every other reading says the other CPUs are idle (a kernel thread's moment).
+std::atomic<bool> g_flicker{false};
+std::atomic<int> g_runnableReads{0};
+int fakeRunnable() { return g_flicker.load() && g_runnableReads.fetch_add(1) % 2 == 1 ? 2 : g_runnable.load(); }
+constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeMoveOntoCpu, fakeRunnable};
 struct CpuHooksGuard {
     CpuHooksGuard() { ThreadPool::setCpuHooks(&kFakeCpus); }
     ~CpuHooksGuard() { ThreadPool::setCpuHooks(nullptr); }
@@ -193,20 +201,31 @@ private slots:
         QTest::addColumn<bool>("together");
         QTest::addColumn<bool>("granted");
         QTest::addColumn<int>("others");  // runnable besides the caller and the worker: none, fewer than the CPUs, as many
-        QTest::newRow("on the caller's CPU, the other idle") << true << true << 0;
-        QTest::newRow("on the caller's CPU, one program beside") << true << true << 1;
-        QTest::newRow("on the caller's CPU, the others as busy") << true << true << 2;
-        QTest::newRow("on another CPU") << false << true << 1;
-        QTest::newRow("the move refused") << true << false << 0;
+        QTest::addColumn<int>("threads");
+        QTest::addColumn<bool>("flicker");  // every other count of runnable threads says idle
+        QTest::newRow("on the caller's CPU, the other idle") << true << true << 0 << 2 << false;
+        QTest::newRow("on the caller's CPU, one program beside") << true << true << 1 << 2 << false;
+        QTest::newRow("on the caller's CPU, the others as busy") << true << true << 2 << 2 << false;
+        QTest::newRow("on another CPU") << false << true << 1 << 2 << false;
+        QTest::newRow("on another CPU, the others as busy") << false << true << 2 << 2 << false;
+        QTest::newRow("on another CPU, the others as busy, the join refused") << false << false << 2 << 2 << false;
+        QTest::newRow("on another CPU, the others as busy, three threads") << false << true << 2 << 3 << false;
+        QTest::newRow("on another CPU, the others as busy at every other count") << false << true << 2 << 2 << true;
+        QTest::newRow("the move refused") << true << false << 0 << 2 << false;
     }
     void workerOnTheCallersCpuMovesOff() {
         QFETCH(bool, together);
         QFETCH(bool, granted);
         QFETCH(int, others);
+        QFETCH(int, threads);
+        QFETCH(bool, flicker);
+        g_flicker.store(flicker);
+        g_runnableReads.store(0);
         g_callerId.store(std::this_thread::get_id());
         g_workersOnCallersCpu.store(together);
         g_moveGranted.store(granted);
         g_moveCalls.store(0);
+        g_joinCalls.store(0);
         cpu_set_t mask;
         CPU_ZERO(&mask);
         QCOMPARE(sched_getaffinity(0, sizeof mask, &mask), 0);
@@ -215,18 +234,21 @@ private slots:
         const int cpus = CPU_COUNT(&mask);
         g_runnable.store(2 + (others == 0 ? 0 : others == 1 ? cpus - 1 : cpus));
         ThreadPool::Counters c;
+        const auto start = std::chrono::steady_clock::now();
         {
             CpuHooksGuard fakeCpus;
-            ThreadPool pool(2);
+            ThreadPool pool(threads);
             pool.setRunAloneAllowed(false);
-            for (int run = 0; run < 300; ++run)
+            for (int run = 0; run < 500; ++run)  // at least 40 ms: a join waits for two judgements 10 ms apart
                 pool.run(8, [](int) {
                     const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
                     while (std::chrono::steady_clock::now() < end) {}
                 });
             c = pool.counters();
-        }  // the worker has stopped: its counts are final
-        QVERIFY2(c.workerTasks > 0, "the worker took no task");
+        }  // the workers have stopped: their counts are final
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        QVERIFY2(c.workerTasks > 0, "the workers took no task");
+        const bool asBusy = others >= 2 && cpus >= 2;
         const bool stays = others >= 2 || cpus < 2;  // (one CPU: moveIsWorthIt says no move)
         if (together && !stays) {
             QVERIFY(g_moveCalls.load() > 0);
@@ -236,8 +258,22 @@ private slots:
         } else {
             QCOMPARE(g_moveCalls.load(), 0);
             QCOMPARE(c.moves, std::uint64_t{0});
-            QCOMPARE(c.sharedCpuTasks, together ? c.workerTasks : std::uint64_t{0});
+            if (together) QCOMPARE(c.sharedCpuTasks, c.workerTasks);
             QVERIFY(together ? c.stays > 0 : c.stays == 0);
+        }
+        // A worker of a pool of two on another CPU joins the caller's while the others are as
+        // busy (two judgements in a row, 10 ms apart), at most every 50 ms; never otherwise.
+        g_flicker.store(false);
+        if (!together && asBusy && threads == 2 && !flicker) {
+            QVERIFY(g_joinCalls.load() >= 1);
+            QVERIFY2(g_joinCalls.load() <= 1 + static_cast<int>(elapsed / 0.05),
+                     qPrintable(QStringLiteral("%1 joins in %2 s").arg(g_joinCalls.load()).arg(elapsed)));
+            QCOMPARE(c.joins, granted ? std::uint64_t(g_joinCalls.load()) : std::uint64_t{0});
+            if (!granted) QCOMPARE(c.sharedCpuTasks, std::uint64_t{0});
+        } else {
+            QCOMPARE(g_joinCalls.load(), 0);
+            QCOMPARE(c.joins, std::uint64_t{0});
+            if (!together) QCOMPARE(c.sharedCpuTasks, std::uint64_t{0});
         }
     }
 
@@ -253,11 +289,20 @@ private slots:
         QVERIFY(!moveIsWorthIt(6, 4));
         QVERIFY(!moveIsWorthIt(2, 1));  // one CPU: nowhere to go
         QVERIFY(moveIsWorthIt(-1, 2));
+        // Joining is the mirror, where the count is known and there is a CPU to give up.
+        for (int cpus = 1; cpus <= 4; ++cpus)
+            for (int runnable = 1; runnable <= 9; ++runnable)
+                QCOMPARE(joinIsWorthIt(runnable, cpus), cpus >= 2 && !moveIsWorthIt(runnable, cpus));
+        QVERIFY(joinIsWorthIt(4, 2));
+        QVERIFY(!joinIsWorthIt(3, 2));
+        QVERIFY(!joinIsWorthIt(-1, 2));
+        QVERIFY(!joinIsWorthIt(5, 1));
         QVERIFY(runnableThreads() >= 1);  // at least this thread
     }
 
-    // moveOffCpu really moves the thread (the kernel migrates it before the narrowed mask takes
-    // effect) and gives its mask back whole; with one CPU allowed it does nothing.
+    // moveOffCpu and moveOntoCpu really move the thread (the kernel migrates it before the
+    // narrowed mask takes effect) and give its mask back whole; with one CPU allowed they do
+    // nothing.
     void moveOffCpuMovesAndKeepsTheMask() {
         cpu_set_t before;
         CPU_ZERO(&before);
@@ -275,6 +320,20 @@ private slots:
             QCOMPARE(sched_getaffinity(0, sizeof after, &after), 0);
             QVERIFY(CPU_EQUAL(&before, &after));
         }
+        // And onto a chosen CPU (a worker joining the caller's): there, the mask given back.
+        QCOMPARE(moveOntoCpu(-1), -1);
+        for (int i = 0; i < 20; ++i) {
+            const int cpu = currentCpu();
+            int target = -1;
+            for (int k = 0; k < CPU_SETSIZE && target < 0; ++k)
+                if (k != cpu && CPU_ISSET(k, &before)) target = k;
+            QVERIFY(target >= 0);
+            QCOMPARE(moveOntoCpu(target), target);
+            cpu_set_t after;
+            CPU_ZERO(&after);
+            QCOMPARE(sched_getaffinity(0, sizeof after, &after), 0);
+            QVERIFY(CPU_EQUAL(&before, &after));
+        }
         // Pinned to one CPU (as under `taskset -c 0`): no move, the mask untouched.
         cpu_set_t one;
         CPU_ZERO(&one);
@@ -282,11 +341,16 @@ private slots:
         CPU_SET(here, &one);
         QCOMPARE(sched_setaffinity(0, sizeof one, &one), 0);
         const int moved = moveOffCpu(here);
+        int elsewhere = -1;  // a CPU outside the one-CPU mask: no join there either
+        for (int k = 0; k < CPU_SETSIZE && elsewhere < 0; ++k)
+            if (k != here && CPU_ISSET(k, &before)) elsewhere = k;
+        const int joined = moveOntoCpu(elsewhere);
         cpu_set_t after;
         CPU_ZERO(&after);
         sched_getaffinity(0, sizeof after, &after);
         sched_setaffinity(0, sizeof before, &before);
         QCOMPARE(moved, -1);
+        QCOMPARE(joined, -1);
         QVERIFY(CPU_EQUAL(&one, &after));
     }
 
