@@ -408,6 +408,47 @@ int ThreadPool::claimTasks(std::uint32_t run, bool worker) {
     }
 }
 
+int ThreadPool::placeWorker(WorkerPlacement& at) {
+    // On the caller's CPU the two would only take turns (see parallel.h): move first,
+    // unless the other CPUs are as busy (moveIsWorthIt, judged at most every
+    // kLoadJudgementFor). On another CPU while they are as busy, join the caller's: the two
+    // then take turns on a CPU the kernel's balancer soon leaves to them, where split each
+    // would share a CPU with another program and wait for the other at every run. Only a
+    // pool of two: more threads on one CPU would give up more CPUs than they gain.
+    int cpu = poolCurrentCpu();
+    const int callerCpu = m_callerCpu.load(std::memory_order_relaxed);
+    const auto judgeLoad = [&](Clock::time_point now, Clock::duration hold) {
+        if (now < at.judgedUntil) return;
+        const int runnable = poolRunnableThreads(), cpus = allowedCpus();
+        at.moveWorthIt = moveIsWorthIt(runnable, cpus);
+        // The count is the kernel's at one instant (a kernel thread woken for a moment
+        // counts): a join needs two judgements in a row.
+        at.joinStreak = joinIsWorthIt(runnable, cpus) ? at.joinStreak + 1 : 0;
+        at.joinWorthIt = at.joinStreak >= 2;
+        at.judgedUntil = now + hold;
+    };
+    if (cpu >= 0 && cpu == callerCpu) {
+        judgeLoad(Clock::now(), kLoadJudgementFor);
+        if (!at.moveWorthIt) {
+            m_statStays.fetch_add(1, std::memory_order_relaxed);
+        } else if (const int moved = poolMoveOffCpu(cpu); moved >= 0) {
+            m_statMoves.fetch_add(1, std::memory_order_relaxed);
+            cpu = moved;
+        }
+    } else if (cpu >= 0 && callerCpu >= 0 && m_workerCount == 1) {
+        const Clock::time_point now = Clock::now();
+        judgeLoad(now, kJoinJudgementFor);
+        if (at.joinWorthIt && now >= at.joinAfter) {
+            at.joinAfter = now + kJoinEvery;
+            if (const int joined = poolMoveOntoCpu(callerCpu); joined >= 0) {
+                m_statJoins.fetch_add(1, std::memory_order_relaxed);
+                cpu = joined;
+            }
+        }
+    }
+    return cpu;
+}
+
 void ThreadPool::workerLoop() {
     std::uint32_t seen = 0;
     // How long to spin for the next run: the full time while this worker finds work, a few
@@ -415,11 +456,7 @@ void ThreadPool::workerLoop() {
     // spinning only takes time from the caller, which shares the CPU with it).
     int spinLimit = kSpinsBeforeSleep;
     ContentionProbe probe;
-    // Whether moving off the caller's CPU pays, whether joining it does, until when that
-    // judgement holds, and the earliest time of the next join.
-    bool moveWorthIt = true, joinWorthIt = false;
-    int joinStreak = 0;
-    Clock::time_point judgedUntil{}, joinAfter{};
+    WorkerPlacement placement;
     for (;;) {
         int spins = 0;
         const int limit = contended(probe) ? std::min(spinLimit, kBusySpins) : spinLimit;
@@ -444,43 +481,7 @@ void ThreadPool::workerLoop() {
         }
         if (m_stop.load(std::memory_order_acquire)) return;
         seen = posted;
-        // On the caller's CPU the two would only take turns (see parallel.h): move first,
-        // unless the other CPUs are as busy (moveIsWorthIt, judged at most every
-        // kLoadJudgementFor). On another CPU while they are as busy, join the caller's: the two
-        // then take turns on a CPU the kernel's balancer soon leaves to them, where split each
-        // would share a CPU with another program and wait for the other at every run. Only a
-        // pool of two: more threads on one CPU would give up more CPUs than they gain.
-        int cpu = poolCurrentCpu();
-        const int callerCpu = m_callerCpu.load(std::memory_order_relaxed);
-        const auto judgeLoad = [&](Clock::time_point now, Clock::duration hold) {
-            if (now < judgedUntil) return;
-            const int runnable = poolRunnableThreads(), cpus = allowedCpus();
-            moveWorthIt = moveIsWorthIt(runnable, cpus);
-            // The count is the kernel's at one instant (a kernel thread woken for a moment
-            // counts): a join needs two judgements in a row.
-            joinStreak = joinIsWorthIt(runnable, cpus) ? joinStreak + 1 : 0;
-            joinWorthIt = joinStreak >= 2;
-            judgedUntil = now + hold;
-        };
-        if (cpu >= 0 && cpu == callerCpu) {
-            judgeLoad(Clock::now(), kLoadJudgementFor);
-            if (!moveWorthIt) {
-                m_statStays.fetch_add(1, std::memory_order_relaxed);
-            } else if (const int moved = poolMoveOffCpu(cpu); moved >= 0) {
-                m_statMoves.fetch_add(1, std::memory_order_relaxed);
-                cpu = moved;
-            }
-        } else if (cpu >= 0 && callerCpu >= 0 && m_workerCount == 1) {
-            const Clock::time_point now = Clock::now();
-            judgeLoad(now, kJoinJudgementFor);
-            if (joinWorthIt && now >= joinAfter) {
-                joinAfter = now + kJoinEvery;
-                if (const int joined = poolMoveOntoCpu(callerCpu); joined >= 0) {
-                    m_statJoins.fetch_add(1, std::memory_order_relaxed);
-                    cpu = joined;
-                }
-            }
-        }
+        const int cpu = placeWorker(placement);
         const int ran = claimTasks(seen, true);
         if (ran > 0) {
             m_statWorkerTasks.fetch_add(static_cast<std::uint64_t>(ran), std::memory_order_relaxed);

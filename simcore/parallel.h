@@ -24,7 +24,10 @@
 // are at least as busy as this one (as many runnable threads besides the caller and itself as
 // CPUs: moveIsWorthIt): there the two taking turns on one CPU get a whole CPU, and split, each
 // would get a share of a busier one (beside `stress-ng --cpu 2` two threads fell from 1.4-1.6x
-// one thread to 1.1x when the worker always moved).
+// one thread to 1.1x when the worker always moved). The mirror: a worker of a pool of two that
+// finds itself on another CPU while the others are as busy joins the caller's CPU (moveOntoCpu;
+// two readings of the count in a row, at most every 50 ms): split, each thread shares a CPU with
+// another program and the pair waits for whichever was preempted at every run.
 // When a run's caller keeps waiting for a preempted worker longer than it works itself (a
 // machine busier than its CPUs: two fixed chunks cannot be shared once begun), one thread
 // would be faster: the caller runs alone for a while, then tries two threads again, and
@@ -156,6 +159,14 @@ public:
 
 private:
     void workerLoop();
+    // A worker's place at the start of a run (see above): off the caller's CPU, or onto it, by
+    // the load it judged last. Returns the CPU it is on (-1: unknown).
+    struct WorkerPlacement {
+        bool moveWorthIt = true, joinWorthIt = false;  // by the last judgement of the load
+        int joinStreak = 0;                            // judgements in a row that said join
+        std::chrono::steady_clock::time_point judgedUntil{}, joinAfter{};
+    };
+    int placeWorker(WorkerPlacement& at);
     // Claims and runs tasks of run `run` until none is left (or another run has begun);
     // returns how many it ran.
     int claimTasks(std::uint32_t run, bool worker);
