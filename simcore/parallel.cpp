@@ -102,6 +102,10 @@ int poolMoveOntoCpu(int cpu) {
     const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
     return hooks ? hooks->moveOnto(cpu) : moveOntoCpu(cpu);
 }
+double poolThreadCpuSeconds() {
+    const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
+    return hooks ? hooks->threadCpu() : threadCpuSeconds();
+}
 int poolRunnableThreads() {
     const ThreadPool::CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire);
     return hooks ? hooks->runnable() : runnableThreads();
@@ -124,6 +128,10 @@ int allowedCpus() {
 constexpr auto kLoadJudgementFor = std::chrono::milliseconds(2);
 constexpr auto kJoinJudgementFor = std::chrono::milliseconds(10);
 constexpr auto kJoinEvery = std::chrono::milliseconds(50);
+// A join the worker finds undone within kJoinHeld doubles the wait before the next, up to
+// kJoinEveryLongest; one that held (or none) sets it back to kJoinEvery.
+constexpr auto kJoinHeld = std::chrono::milliseconds(200);
+constexpr auto kJoinEveryLongest = std::chrono::milliseconds(3200);
 
 // Sleep while `word` holds `expected` (returns at once when it does not, and may return
 // spuriously: callers check their condition again); wake every sleeper on `word`.
@@ -370,7 +378,8 @@ bool ThreadPool::contended(ContentionProbe& probe) {
     const std::int64_t ticks = now.time_since_epoch().count();
     if (now >= probe.nextCheck) {
         probe.nextCheck = now + kBusyCheck;
-        if (probe.offCpu.check(seconds(now.time_since_epoch()), threadCpuSeconds())) {
+        if (probe.offCpu.check(seconds(now.time_since_epoch()), poolThreadCpuSeconds())) {
+            probe.keptOffAt = now;
             m_busyUntil.store(ticks + std::chrono::duration_cast<Clock::duration>(kBusyFor).count(),
                               std::memory_order_relaxed);
             m_statBusyMarks.fetch_add(1, std::memory_order_relaxed);
@@ -408,13 +417,15 @@ int ThreadPool::claimTasks(std::uint32_t run, bool worker) {
     }
 }
 
-int ThreadPool::placeWorker(WorkerPlacement& at) {
+int ThreadPool::placeWorker(WorkerPlacement& at, Clock::time_point keptOffAt) {
     // On the caller's CPU the two would only take turns (see parallel.h): move first,
     // unless the other CPUs are as busy (moveIsWorthIt, judged at most every
     // kLoadJudgementFor). On another CPU while they are as busy, join the caller's: the two
     // then take turns on a CPU the kernel's balancer soon leaves to them, where split each
     // would share a CPU with another program and wait for the other at every run. Only a
-    // pool of two: more threads on one CPU would give up more CPUs than they gain.
+    // pool of two (more threads on one CPU would give up more CPUs than they gain), only when
+    // this worker was found kept off its CPU lately, and less often each time the kernel undoes
+    // the join at once (see parallel.h).
     int cpu = poolCurrentCpu();
     const int callerCpu = m_callerCpu.load(std::memory_order_relaxed);
     const auto judgeLoad = [&](Clock::time_point now, Clock::duration hold) {
@@ -428,6 +439,7 @@ int ThreadPool::placeWorker(WorkerPlacement& at) {
         at.judgedUntil = now + hold;
     };
     if (cpu >= 0 && cpu == callerCpu) {
+        at.together = true;
         judgeLoad(Clock::now(), kLoadJudgementFor);
         if (!at.moveWorthIt) {
             m_statStays.fetch_add(1, std::memory_order_relaxed);
@@ -437,12 +449,23 @@ int ThreadPool::placeWorker(WorkerPlacement& at) {
         }
     } else if (cpu >= 0 && callerCpu >= 0 && m_workerCount == 1) {
         const Clock::time_point now = Clock::now();
+        if (at.together) {  // split since the last run: a join undone soon after is backed off
+            at.together = false;
+            if (at.joinedAt != Clock::time_point{})
+                at.joinEvery = now - at.joinedAt < kJoinHeld ? std::min<Clock::duration>(2 * at.joinEvery, kJoinEveryLongest)
+                                                             : Clock::duration(kJoinEvery);
+            at.joinedAt = Clock::time_point{};
+        }
+        if (at.joinEvery == Clock::duration::zero()) at.joinEvery = kJoinEvery;
         judgeLoad(now, kJoinJudgementFor);
-        if (at.joinWorthIt && now >= at.joinAfter) {
-            at.joinAfter = now + kJoinEvery;
+        const bool keptOff = keptOffAt != Clock::time_point{} && now - keptOffAt < kBusyFor;
+        if (at.joinWorthIt && keptOff && now >= at.joinAfter) {
+            at.joinAfter = now + at.joinEvery;
             if (const int joined = poolMoveOntoCpu(callerCpu); joined >= 0) {
                 m_statJoins.fetch_add(1, std::memory_order_relaxed);
                 cpu = joined;
+                at.together = true;
+                at.joinedAt = now;
             }
         }
     }
@@ -481,7 +504,7 @@ void ThreadPool::workerLoop() {
         }
         if (m_stop.load(std::memory_order_acquire)) return;
         seen = posted;
-        const int cpu = placeWorker(placement);
+        const int cpu = placeWorker(placement, probe.keptOffAt);
         const int ran = claimTasks(seen, true);
         if (ran > 0) {
             m_statWorkerTasks.fetch_add(static_cast<std::uint64_t>(ran), std::memory_order_relaxed);
@@ -555,7 +578,7 @@ void ThreadPool::run(int count, TaskRef task) {
     m_statRuns.fetch_add(1, std::memory_order_relaxed);
     const Clock::time_point entered = Clock::now();
     if (entered - m_lastRunEnd > kBetweenRuns) {
-        m_callerProbe.offCpu.restart(seconds(entered.time_since_epoch()), threadCpuSeconds());
+        m_callerProbe.offCpu.restart(seconds(entered.time_since_epoch()), poolThreadCpuSeconds());
         m_callerProbe.nextCheck = entered + kBusyCheck;
     }
     if (contended(m_callerProbe)) m_callerSpin = kCallerSpinMin;

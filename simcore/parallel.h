@@ -27,7 +27,13 @@
 // one thread to 1.1x when the worker always moved). The mirror: a worker of a pool of two that
 // finds itself on another CPU while the others are as busy joins the caller's CPU (moveOntoCpu;
 // two readings of the count in a row, at most every 50 ms): split, each thread shares a CPU with
-// another program and the pair waits for whichever was preempted at every run.
+// another program and the pair waits for whichever was preempted at every run. Only while the
+// worker is kept off its own CPU: runnable threads of other programs in another
+// scheduling group (another session, a lower priority) may take little of it. And a join the
+// kernel undoes at once (its balancer separating the pair: the count said busy, the weights
+// said otherwise) is tried again only after twice as long, up to seconds: beside three
+// compilers in other sessions, the lab's shell at higher priority, two threads fell from 1.29x
+// one thread to 1.01x when the worker joined by the count alone, 40-100 times a run.
 // When a run's caller keeps waiting for a preempted worker longer than it works itself (a
 // machine busier than its CPUs: two fixed chunks cannot be shared once begun), one thread
 // would be faster: the caller runs alone for a while, then tries two threads again, and
@@ -154,19 +160,24 @@ public:
         int (*moveOff)(int cpu);
         int (*moveOnto)(int cpu);
         int (*runnable)();
+        double (*threadCpu)();  // the calling thread's CPU time (threadCpuSeconds)
     };
     static void setCpuHooks(const CpuHooks* hooks);
 
 private:
     void workerLoop();
     // A worker's place at the start of a run (see above): off the caller's CPU, or onto it, by
-    // the load it judged last. Returns the CPU it is on (-1: unknown).
+    // the load it judged last and (to join) when it was last found kept off its own CPU. Returns
+    // the CPU it is on (-1: unknown).
     struct WorkerPlacement {
         bool moveWorthIt = true, joinWorthIt = false;  // by the last judgement of the load
         int joinStreak = 0;                            // judgements in a row that said join
+        bool together = false;                         // on the caller's CPU at the last run
         std::chrono::steady_clock::time_point judgedUntil{}, joinAfter{};
+        std::chrono::steady_clock::time_point joinedAt{};  // the last join, until the worker finds it undone
+        std::chrono::steady_clock::duration joinEvery{};                   // 0: kJoinEvery
     };
-    int placeWorker(WorkerPlacement& at);
+    int placeWorker(WorkerPlacement& at, std::chrono::steady_clock::time_point keptOffAt);
     // Claims and runs tasks of run `run` until none is left (or another run has begun);
     // returns how many it ran.
     int claimTasks(std::uint32_t run, bool worker);
@@ -177,6 +188,7 @@ private:
     struct ContentionProbe {
         std::chrono::steady_clock::time_point nextCheck{};
         OffCpuProbe offCpu;
+        std::chrono::steady_clock::time_point keptOffAt{};  // the last check that found this thread kept off its CPU
     };
     bool contended(ContentionProbe& probe);
     // The fallback's decision after each run that used the workers.

@@ -7,6 +7,7 @@
 #include <array>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <thread>
 #include <vector>
@@ -85,7 +86,15 @@ int fakeMoveOntoCpu(int cpu) {
 std::atomic<bool> g_flicker{false};
 std::atomic<int> g_runnableReads{0};
 int fakeRunnable() { return g_flicker.load() && g_runnableReads.fetch_add(1) % 2 == 1 ? 2 : g_runnable.load(); }
-constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeMoveOntoCpu, fakeRunnable};
+// The workers' CPU clock: frozen while g_keptOff (a thread kept off its CPU all the time it is
+// awake), else running with the wall clock (never kept off); the caller's is its own.
+std::atomic<bool> g_keptOff{false};
+double fakeThreadCpu() {
+    if (std::this_thread::get_id() == g_callerId.load()) return threadCpuSeconds();
+    if (g_keptOff.load()) return 1.0;
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeMoveOntoCpu, fakeRunnable, fakeThreadCpu};
 struct CpuHooksGuard {
     CpuHooksGuard() { ThreadPool::setCpuHooks(&kFakeCpus); }
     ~CpuHooksGuard() { ThreadPool::setCpuHooks(nullptr); }
@@ -203,15 +212,17 @@ private slots:
         QTest::addColumn<int>("others");  // runnable besides the caller and the worker: none, fewer than the CPUs, as many
         QTest::addColumn<int>("threads");
         QTest::addColumn<bool>("flicker");  // every other count of runnable threads says idle
-        QTest::newRow("on the caller's CPU, the other idle") << true << true << 0 << 2 << false;
-        QTest::newRow("on the caller's CPU, one program beside") << true << true << 1 << 2 << false;
-        QTest::newRow("on the caller's CPU, the others as busy") << true << true << 2 << 2 << false;
-        QTest::newRow("on another CPU") << false << true << 1 << 2 << false;
-        QTest::newRow("on another CPU, the others as busy") << false << true << 2 << 2 << false;
-        QTest::newRow("on another CPU, the others as busy, the join refused") << false << false << 2 << 2 << false;
-        QTest::newRow("on another CPU, the others as busy, three threads") << false << true << 2 << 3 << false;
-        QTest::newRow("on another CPU, the others as busy at every other count") << false << true << 2 << 2 << true;
-        QTest::newRow("the move refused") << true << false << 0 << 2 << false;
+        QTest::addColumn<bool>("keptOff");  // the worker kept off its CPU while awake
+        QTest::newRow("on the caller's CPU, the other idle") << true << true << 0 << 2 << false << false;
+        QTest::newRow("on the caller's CPU, one program beside") << true << true << 1 << 2 << false << false;
+        QTest::newRow("on the caller's CPU, the others as busy") << true << true << 2 << 2 << false << false;
+        QTest::newRow("on another CPU") << false << true << 1 << 2 << false << false;
+        QTest::newRow("on another CPU, the others as busy") << false << true << 2 << 2 << false << true;
+        QTest::newRow("on another CPU, the others as busy, the join refused") << false << false << 2 << 2 << false << true;
+        QTest::newRow("on another CPU, the others as busy, three threads") << false << true << 2 << 3 << false << true;
+        QTest::newRow("on another CPU, the others as busy at every other count") << false << true << 2 << 2 << true << true;
+        QTest::newRow("on another CPU, the others as busy, not kept off its CPU") << false << true << 2 << 2 << false << false;
+        QTest::newRow("the move refused") << true << false << 0 << 2 << false << false;
     }
     void workerOnTheCallersCpuMovesOff() {
         QFETCH(bool, together);
@@ -219,7 +230,9 @@ private slots:
         QFETCH(int, others);
         QFETCH(int, threads);
         QFETCH(bool, flicker);
+        QFETCH(bool, keptOff);
         g_flicker.store(flicker);
+        g_keptOff.store(keptOff);
         g_runnableReads.store(0);
         g_callerId.store(std::this_thread::get_id());
         g_workersOnCallersCpu.store(together);
@@ -262,9 +275,11 @@ private slots:
             QVERIFY(together ? c.stays > 0 : c.stays == 0);
         }
         // A worker of a pool of two on another CPU joins the caller's while the others are as
-        // busy (two judgements in a row, 10 ms apart), at most every 50 ms; never otherwise.
+        // busy (two judgements in a row, 10 ms apart) and it is kept off its own CPU, at most
+        // every 50 ms; never otherwise.
         g_flicker.store(false);
-        if (!together && asBusy && threads == 2 && !flicker) {
+        g_keptOff.store(false);
+        if (!together && asBusy && threads == 2 && !flicker && keptOff) {
             QVERIFY(g_joinCalls.load() >= 1);
             QVERIFY2(g_joinCalls.load() <= 1 + static_cast<int>(elapsed / 0.05),
                      qPrintable(QStringLiteral("%1 joins in %2 s").arg(g_joinCalls.load()).arg(elapsed)));
@@ -275,6 +290,42 @@ private slots:
             QCOMPARE(c.joins, std::uint64_t{0});
             if (!together) QCOMPARE(c.sharedCpuTasks, std::uint64_t{0});
         }
+    }
+
+    // A join the kernel undoes at once (here: the worker still finds itself on its own CPU at
+    // the next run) is tried again after twice the wait each time (50 ms, then 100, 200, ...),
+    // not every 50 ms: n joins take at least 100 ms * (2^(n-1) - 1).
+    void joinUndoneAtOnceBacksOff() {
+        g_callerId.store(std::this_thread::get_id());
+        g_workersOnCallersCpu.store(false);
+        g_moveGranted.store(true);
+        g_keptOff.store(true);
+        g_joinCalls.store(0);
+        cpu_set_t mask;
+        CPU_ZERO(&mask);
+        QCOMPARE(sched_getaffinity(0, sizeof mask, &mask), 0);
+        if (CPU_COUNT(&mask) < 2) QSKIP("one CPU allowed: nothing to join");
+        g_runnable.store(2 + CPU_COUNT(&mask));  // the others as busy
+        const auto start = std::chrono::steady_clock::now();
+        double elapsed = 0.0;
+        {
+            CpuHooksGuard fakeCpus;
+            ThreadPool pool(2);
+            pool.setRunAloneAllowed(false);
+            while (elapsed < 0.5) {
+                pool.run(8, [](int) {
+                    const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
+                    while (std::chrono::steady_clock::now() < end) {}
+                });
+                elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            }
+        }
+        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        g_keptOff.store(false);
+        const int joins = g_joinCalls.load();
+        QVERIFY(joins >= 2);
+        QVERIFY2(joins <= 2 + static_cast<int>(std::log2(1.0 + elapsed / 0.1)),
+                 qPrintable(QStringLiteral("%1 joins in %2 s").arg(joins).arg(elapsed)));
     }
 
     // The rule behind it: with n CPUs, a worker sharing the caller's CPU gains by moving while
