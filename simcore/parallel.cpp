@@ -183,19 +183,37 @@ int currentCpu() {
 #endif
 }
 
-int moveOffCpu(int cpu) {
+namespace {
+// Moves the calling thread within its affinity mask: `pick` narrows a copy of the mask (false:
+// no move), the thread runs under the narrowed mask for a moment (the kernel migrates it before
+// the call returns), then gets its whole mask back. Returns the CPU it is on then, or -1.
+template <class Narrow>
+int moveWithinMask(int cpu, Narrow pick) {
 #if defined(__linux__)
     cpu_set_t mask;
     CPU_ZERO(&mask);
-    if (cpu < 0 || cpu >= CPU_SETSIZE || sched_getaffinity(0, sizeof mask, &mask) != 0 || CPU_COUNT(&mask) < 2 ||
-        !CPU_ISSET(cpu, &mask))
+    if (cpu < 0 || cpu >= CPU_SETSIZE || sched_getaffinity(0, sizeof mask, &mask) != 0 || !CPU_ISSET(cpu, &mask))
         return -1;
-    cpu_set_t others = mask;
-    CPU_CLR(cpu, &others);
-    if (sched_setaffinity(0, sizeof others, &others) != 0) return -1;
-    const int now = sched_getcpu();  // not `cpu`: the narrowed mask forbids it
+    cpu_set_t narrowed = mask;
+    if (!pick(narrowed) || sched_setaffinity(0, sizeof narrowed, &narrowed) != 0) return -1;
+    const int now = sched_getcpu();
     sched_setaffinity(0, sizeof mask, &mask);
     return now;
+#else
+    (void)cpu;
+    (void)pick;
+    return -1;
+#endif
+}
+}  // namespace
+
+int moveOffCpu(int cpu) {
+#if defined(__linux__)
+    return moveWithinMask(cpu, [cpu](cpu_set_t& set) {  // the others: `cpu` is then forbidden
+        if (CPU_COUNT(&set) < 2) return false;
+        CPU_CLR(cpu, &set);
+        return true;
+    });
 #else
     (void)cpu;
     return -1;
@@ -204,17 +222,11 @@ int moveOffCpu(int cpu) {
 
 int moveOntoCpu(int cpu) {
 #if defined(__linux__)
-    cpu_set_t mask;
-    CPU_ZERO(&mask);
-    if (cpu < 0 || cpu >= CPU_SETSIZE || sched_getaffinity(0, sizeof mask, &mask) != 0 || !CPU_ISSET(cpu, &mask))
-        return -1;
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    CPU_SET(cpu, &one);
-    if (sched_setaffinity(0, sizeof one, &one) != 0) return -1;
-    const int now = sched_getcpu();  // `cpu`: the narrowed mask allows nothing else
-    sched_setaffinity(0, sizeof mask, &mask);
-    return now;
+    return moveWithinMask(cpu, [cpu](cpu_set_t& set) {  // `cpu` alone
+        CPU_ZERO(&set);
+        CPU_SET(cpu, &set);
+        return true;
+    });
 #else
     (void)cpu;
     return -1;
