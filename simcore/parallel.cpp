@@ -122,16 +122,17 @@ int allowedCpus() {
 }
 // How long a worker's judgement of the other CPUs' load holds (reading it costs a few
 // microseconds; the worker may find itself on the caller's CPU at every run while it stays).
-// On another CPU than the caller's (the usual place on a quiet machine) it judges at most every
-// kJoinJudgementFor (a read every 10 ms costs nothing measurable); it joins the caller at most
-// every kJoinEvery (a join the kernel's balancer undoes is not tried again at every run).
+// On another CPU than the caller's (the usual place on a quiet machine) it judges only while it
+// was kept off its own CPU lately (never on a quiet machine), at most every kJoinJudgementFor;
+// it joins the caller at most every kJoinEvery (a join the kernel's balancer undoes is not
+// tried again at every run).
 constexpr auto kLoadJudgementFor = std::chrono::milliseconds(2);
 constexpr auto kJoinJudgementFor = std::chrono::milliseconds(10);
 constexpr auto kJoinEvery = std::chrono::milliseconds(50);
 // A join the worker finds undone within kJoinHeld doubles the wait before the next, up to
-// kJoinEveryLongest; one that held (or none) sets it back to kJoinEvery.
+// kJoinEvery << kJoinBackoffMost (3.2 s); one that held sets it back to kJoinEvery.
 constexpr auto kJoinHeld = std::chrono::milliseconds(200);
-constexpr auto kJoinEveryLongest = std::chrono::milliseconds(3200);
+constexpr int kJoinBackoffMost = 6;
 
 // Sleep while `word` holds `expected` (returns at once when it does not, and may return
 // spuriously: callers check their condition again); wake every sleeper on `word`.
@@ -447,7 +448,6 @@ int ThreadPool::placeWorker(WorkerPlacement& at, Clock::time_point keptOffAt) {
         // The count is the kernel's at one instant (a kernel thread woken for a moment
         // counts): a join needs two judgements in a row.
         at.joinStreak = joinIsWorthIt(runnable, cpus) ? at.joinStreak + 1 : 0;
-        at.joinWorthIt = at.joinStreak >= 2;
         at.judgedUntil = now + hold;
     };
     if (cpu >= 0 && cpu == callerCpu) {
@@ -464,15 +464,17 @@ int ThreadPool::placeWorker(WorkerPlacement& at, Clock::time_point keptOffAt) {
         if (at.together) {  // split since the last run: a join undone soon after is backed off
             at.together = false;
             if (at.joinedAt != Clock::time_point{})
-                at.joinEvery = now - at.joinedAt < kJoinHeld ? std::min<Clock::duration>(2 * at.joinEvery, kJoinEveryLongest)
-                                                             : Clock::duration(kJoinEvery);
+                at.joinBackoff = now - at.joinedAt < kJoinHeld ? std::min(at.joinBackoff + 1, kJoinBackoffMost) : 0;
             at.joinedAt = Clock::time_point{};
         }
-        if (at.joinEvery == Clock::duration::zero()) at.joinEvery = kJoinEvery;
-        judgeLoad(now, kJoinJudgementFor);
         const bool keptOff = keptOffAt != Clock::time_point{} && now - keptOffAt < kBusyFor;
-        if (at.joinWorthIt && keptOff && now >= at.joinAfter) {
-            at.joinAfter = now + at.joinEvery;
+        if (!keptOff) {  // no judgement of the load either: nothing is read on a quiet machine
+            at.joinStreak = 0;
+            return cpu;
+        }
+        judgeLoad(now, kJoinJudgementFor);
+        if (at.joinStreak >= 2 && now >= at.joinAfter) {
+            at.joinAfter = now + kJoinEvery * (1 << at.joinBackoff);
             if (const int joined = poolMoveOntoCpu(callerCpu); joined >= 0) {
                 m_statJoins.fetch_add(1, std::memory_order_relaxed);
                 cpu = joined;

@@ -172,12 +172,12 @@ private:
     // the load it judged last and (to join) when it was last found kept off its own CPU. Returns
     // the CPU it is on (-1: unknown).
     struct WorkerPlacement {
-        bool moveWorthIt = true, joinWorthIt = false;  // by the last judgement of the load
-        int joinStreak = 0;                            // judgements in a row that said join
-        bool together = false;                         // on the caller's CPU at the last run
+        bool moveWorthIt = true;  // by the last judgement of the load
+        int joinStreak = 0;       // judgements in a row that said join (two: join)
+        int joinBackoff = 0;      // joins undone at once in a row: the wait before the next doubles
+        bool together = false;    // on the caller's CPU at the last run
         std::chrono::steady_clock::time_point judgedUntil{}, joinAfter{};
         std::chrono::steady_clock::time_point joinedAt{};  // the last join, until the worker finds it undone
-        std::chrono::steady_clock::duration joinEvery{};                   // 0: kJoinEvery
     };
     int placeWorker(WorkerPlacement& at, std::chrono::steady_clock::time_point keptOffAt);
     // Claims and runs tasks of run `run` until none is left (or another run has begun);

@@ -95,6 +95,13 @@ double fakeThreadCpu() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeMoveOntoCpu, fakeRunnable, fakeThreadCpu};
+// One run of eight tasks of 20 us each (spinning: the threads stay awake).
+void spinRun(ThreadPool& pool) {
+    pool.run(8, [](int) {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
+        while (std::chrono::steady_clock::now() < end) {}
+    });
+}
 struct CpuHooksGuard {
     CpuHooksGuard() { ThreadPool::setCpuHooks(&kFakeCpus); }
     ~CpuHooksGuard() { ThreadPool::setCpuHooks(nullptr); }
@@ -252,11 +259,7 @@ private slots:
             CpuHooksGuard fakeCpus;
             ThreadPool pool(threads);
             pool.setRunAloneAllowed(false);
-            for (int run = 0; run < 500; ++run)  // at least 40 ms: a join waits for two judgements 10 ms apart
-                pool.run(8, [](int) {
-                    const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
-                    while (std::chrono::steady_clock::now() < end) {}
-                });
+            for (int run = 0; run < 500; ++run) spinRun(pool);  // at least 40 ms: a join waits for two judgements 10 ms apart
             c = pool.counters();
         }  // the workers have stopped: their counts are final
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -313,10 +316,7 @@ private slots:
             ThreadPool pool(2);
             pool.setRunAloneAllowed(false);
             while (elapsed < 0.5) {
-                pool.run(8, [](int) {
-                    const auto end = std::chrono::steady_clock::now() + std::chrono::microseconds(20);
-                    while (std::chrono::steady_clock::now() < end) {}
-                });
+                spinRun(pool);
                 elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             }
         }
