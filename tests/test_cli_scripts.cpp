@@ -1,5 +1,6 @@
 // The command line for scripts (issue 29): `--json` on scenes, params, integrators and run, and
-// `--csv -` writing the rows to standard output with the report moved to standard error.
+// `--csv -` writing the rows to standard output with the report moved to standard error; bench
+// --interleave (paired timing for the benchmark scripts, issue 27).
 #include <cmath>
 
 #include <QJsonArray>
@@ -8,6 +9,10 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <tuple>
+#include <vector>
+
+#include "app/cli/cli.h"
 #include "cli_process.h"
 
 namespace {
@@ -25,6 +30,45 @@ class TestCliScripts : public QObject {
     Q_OBJECT
 
 private slots:
+    // bench --interleave N: the runs of every thread count take turns of N steps in one process
+    // (paired timing beside a load that drifts). Each run still takes its steps from the same
+    // start: the rows' steps and hashes are those of the runs one after the other.
+    void benchInterleavesTheRuns() {
+        const QStringList base{"bench", "--scene", "sphere3d", "--set", "subdivisions=4", "--set", "perturb=0.01",
+                               "--warmup", "2", "--steps", "11", "--threads", "1,2", "--header"};
+        auto hashes = [&](const QStringList& extra) {
+            const CliResult r = runCli(base + extra);
+            if (r.code != 0) qWarning("%s", qPrintable(r.err));
+            const QStringList lines = r.out.trimmed().split('\n');
+            const QStringList header = lines[0].split(',');
+            QStringList out;  // threads:steps:hash per row
+            for (qsizetype k = 1; k < lines.size(); ++k) {
+                const QStringList row = lines[k].split(',');
+                out << row[header.indexOf("threads")] + ":" + row[header.indexOf("steps")] + ":" +
+                           row[header.indexOf("state_hash")];
+            }
+            return out;
+        };
+        const QStringList apart = hashes({});
+        QCOMPARE(apart.size(), 2);
+        QCOMPARE(hashes({"--interleave", "4"}), apart);   // 4 + 4 + 3 steps per run
+        QCOMPARE(hashes({"--interleave", "11"}), apart);  // one turn each
+        QCOMPARE(hashes({"--interleave", "50"}), apart);  // a turn longer than the run
+        QCOMPARE(runCli(base + QStringList{"--interleave", "0"}).code, 2);
+        // The turns: each run in order, every turn at most N steps, each run's turns adding up
+        // to its steps, and no run two turns ahead of another.
+        for (auto [steps, n, runs] : {std::tuple{11L, 4L, 2}, {12L, 4L, 3}, {5L, 9L, 2}, {1L, 1L, 1}}) {
+            const std::vector<cli::BenchTurn> turns = cli::benchTurns(steps, n, runs);
+            std::vector<long> done(static_cast<std::size_t>(runs), 0);
+            for (std::size_t k = 0; k < turns.size(); ++k) {
+                QCOMPARE(turns[k].run, static_cast<int>(k % static_cast<std::size_t>(runs)));
+                QVERIFY(turns[k].steps >= 1 && turns[k].steps <= n);
+                done[static_cast<std::size_t>(turns[k].run)] += turns[k].steps;
+            }
+            for (long d : done) QCOMPARE(d, steps);
+            QCOMPARE(turns.size(), static_cast<std::size_t>(runs) * static_cast<std::size_t>((steps + n - 1) / n));
+        }
+    }
     void listingsAsJson() {
         const CliResult scenes = runCli({"scenes", "--json"});
         QCOMPARE(scenes.code, 0);

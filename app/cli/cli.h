@@ -150,4 +150,13 @@ Command addGalleryCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addCompletionCommand(CLI::App& app);
 
+// bench --interleave N: the order in which `runs` runs of `steps` timed steps each take turns of
+// at most `interleave` steps (run 0, 1, ..., 0, 1, ...; the last turns shorter when `steps` is not
+// a multiple of N), so that each run's timed steps are spread over the same minutes.
+struct BenchTurn {
+    int run;
+    long steps;
+};
+std::vector<BenchTurn> benchTurns(long steps, long interleave, int runs);
+
 }  // namespace cli

@@ -50,6 +50,7 @@ struct BenchArgs {
     std::string precision = "double";
     bool header = false;
     bool stages = false;
+    long interleave = 0;  // steps per turn (0: the runs one after the other)
     SceneSetup setup;  // after check()
 };
 
@@ -66,70 +67,90 @@ void checkBench(BenchArgs& args) {
     }
 }
 
-// One timed run with `threads` threads from the scene's start: one CSV row.
-int benchRow(const BenchArgs& args, long threads, bool header) {
-    const SceneSetup& setup = args.setup;
-    const long steps = args.steps, warmup = args.warmup;
-    namespace kernels = simcore::kernels;
-
-    const auto buildStart = std::chrono::steady_clock::now();
-    simcore::Simulation sim(setup.params, setup.integrator);
-    // --precision float: the float path, started from the same state (float_path.h).
-    std::unique_ptr<simcore::FloatSimulation> single;
-    if (args.precision == "float") single = std::make_unique<simcore::FloatSimulation>(sim);
-    const double buildSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
-    if (single) single->setThreads(static_cast<int>(threads));
-    else sim.setThreads(static_cast<int>(threads));
-    auto step = [&] { return single ? single->step() : sim.step(); };
-    auto failure = [&]() -> const std::optional<simcore::Failure>& { return single ? single->failure() : sim.failure(); };
-    auto evaluations = [&] {
-        return single ? single->diagnostics().forceEvaluations : sim.diagnostics().forceEvaluations;
-    };
-    for (long i = 0; i < warmup; ++i) step();
-    // With --stages the timed steps time their stages too (two clock reads per stage, which
-    // us_per_step then includes).
-    sim.setProfiling(args.stages);
-    const std::uint64_t evalsBefore = evaluations();
-    const auto start = std::chrono::steady_clock::now();
-    for (long i = 0; i < steps && !failure(); ++i) step();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (failure()) {
-        std::fprintf(stderr, "bench: the simulation failed: %s\n", failure()->reason.c_str());
-        return kExitFailed;
+// One run with `threads` threads from the scene's start, timed in one or more turns.
+class BenchRun {
+public:
+    BenchRun(const BenchArgs& args, long threads) : m_args(args) {
+        const auto buildStart = std::chrono::steady_clock::now();
+        m_sim = std::make_unique<simcore::Simulation>(args.setup.params, args.setup.integrator);
+        // --precision float: the float path, started from the same state (float_path.h).
+        if (args.precision == "float") m_single = std::make_unique<simcore::FloatSimulation>(*m_sim);
+        m_buildSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - buildStart).count();
+        if (m_single) m_single->setThreads(static_cast<int>(threads));
+        else m_sim->setThreads(static_cast<int>(threads));
     }
-    const double evals = static_cast<double>(evaluations() - evalsBefore);
-    const simcore::Topology& topo = sim.topology();
+    const std::optional<simcore::Failure>& failure() const { return m_single ? m_single->failure() : m_sim->failure(); }
+    // The warm-up, untimed; then, with --stages, the timed steps time their stages too (two
+    // clock reads per stage, which us_per_step then includes).
+    void warmUp() {
+        for (long i = 0; i < m_args.warmup && !failure(); ++i) step();
+        m_sim->setProfiling(m_args.stages);
+        m_evalsBefore = evaluations();
+    }
+    // `steps` more timed steps; false when the simulation failed (reported on stderr).
+    bool timeSteps(long steps) {
+        const auto start = std::chrono::steady_clock::now();
+        for (long i = 0; i < steps && !failure(); ++i) step();
+        m_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        m_steps += steps;
+        if (!failure()) return true;
+        std::fprintf(stderr, "bench: the simulation failed: %s\n", failure()->reason.c_str());
+        return false;
+    }
+    void printRow(bool header) const;
+
+private:
+    void step() {
+        if (m_single) m_single->step();
+        else m_sim->step();
+    }
+    std::uint64_t evaluations() const {
+        return m_single ? m_single->diagnostics().forceEvaluations : m_sim->diagnostics().forceEvaluations;
+    }
+    const BenchArgs& m_args;
+    std::unique_ptr<simcore::Simulation> m_sim;
+    std::unique_ptr<simcore::FloatSimulation> m_single;
+    double m_buildSeconds = 0.0, m_seconds = 0.0;
+    long m_steps = 0;
+    std::uint64_t m_evalsBefore = 0;
+};
+
+// The run's CSV row (and the header line first when asked).
+void BenchRun::printRow(bool header) const {
+    namespace kernels = simcore::kernels;
+    const SceneSetup& setup = m_args.setup;
+    const double evals = static_cast<double>(evaluations() - m_evalsBefore);
+    const simcore::Topology& topo = m_sim->topology();
     std::size_t faces = 0;
     for (const simcore::Surface& s : topo.surfaces) faces += topo.dimension == 2 ? s.edges.size() : s.triangles.size();
-    const double usPerStep = 1e6 * seconds / static_cast<double>(steps);
-    const double nsPerSpring = 1e9 * seconds / (evals * static_cast<double>(topo.springCount()));
-    const double realTime = sim.dt() / (seconds / static_cast<double>(steps));
-    const Eigen::VectorXd& state = sim.state();
-    const std::uint64_t hash = single ? single->stateHash()
-                                      : fnv1a(state.data(), sizeof(double) * static_cast<std::size_t>(state.size()));
+    const double steps = static_cast<double>(m_steps);
+    const double usPerStep = 1e6 * m_seconds / steps;
+    const double nsPerSpring = 1e9 * m_seconds / (evals * static_cast<double>(topo.springCount()));
+    const double realTime = m_sim->dt() / (m_seconds / steps);
+    const Eigen::VectorXd& state = m_sim->state();
+    const std::uint64_t hash = m_single ? m_single->stateHash()
+                                        : fnv1a(state.data(), sizeof(double) * static_cast<std::size_t>(state.size()));
     if (header) {
         std::printf("scene,integrator,precision,threads,particles,springs,faces,steps,us_per_step,ns_per_spring_eval,"
                     "steps_per_second,real_time_factor,build_seconds,peak_rss_mib,state_hash,kernels");
         // One column per stage of the step (simulation.h), in its order: us per step.
-        if (args.stages)
+        if (m_args.stages)
             for (int s = 0; s < simcore::kStageCount; ++s)
                 std::printf(",us_%s", std::string(simcore::stageName(static_cast<simcore::Stage>(s))).c_str());
         std::printf("\n");
     }
     std::printf("%s,%s,%s,%d,%d,%zu,%zu,%ld,%.2f,%.3f,%.1f,%.3f,%.3f,%.1f,%016llx,%s", setup.sceneName.c_str(),
-                setup.integrator.c_str(), args.precision.c_str(), single ? single->threads() : sim.threads(), topo.particleCount(), topo.springCount(), faces,
-                steps, usPerStep, nsPerSpring, 1e6 / usPerStep, realTime, buildSeconds,
-                static_cast<double>(peakResidentKiB()) / 1024.0, static_cast<unsigned long long>(hash),
+                setup.integrator.c_str(), m_args.precision.c_str(), m_single ? m_single->threads() : m_sim->threads(),
+                topo.particleCount(), topo.springCount(), faces, m_steps, usPerStep, nsPerSpring, 1e6 / usPerStep, realTime,
+                m_buildSeconds, static_cast<double>(peakResidentKiB()) / 1024.0, static_cast<unsigned long long>(hash),
                 kernels::kernelSetName(kernels::kernelsInUse()));
-    if (args.stages) {
-        const simcore::StepProfile& profile = sim.profile();
+    if (m_args.stages) {
+        const simcore::StepProfile& profile = m_sim->profile();
         for (int s = 0; s < simcore::kStageCount; ++s)
             std::printf(",%.3f", 1e6 * profile[static_cast<simcore::Stage>(s)] / static_cast<double>(profile.steps));
     }
     std::printf("\n");
     std::fflush(stdout);
-    return kExitOk;
 }
 
 int runBench(const BenchArgs& args) {
@@ -139,16 +160,41 @@ int runBench(const BenchArgs& args) {
     for (auto set : {kernels::KernelSet::Portable, kernels::KernelSet::Avx2, kernels::KernelSet::Avx512})
         if (args.kernels == kernels::kernelSetName(set)) kernels::useKernels(set);
     // One row per thread count, each a fresh run from the same start (the same hash means the
-    // same trajectory, whatever the thread count).
+    // same trajectory, whatever the thread count): one after the other, or all made first and
+    // timed in turns (--interleave).
     bool header = args.header;
+    if (args.interleave == 0) {
+        for (long threads : args.threads) {
+            BenchRun run(args, threads);
+            run.warmUp();
+            if (!run.timeSteps(args.steps)) return kExitFailed;
+            run.printRow(header);
+            header = false;
+        }
+        return kExitOk;
+    }
+    std::vector<std::unique_ptr<BenchRun>> runs;
     for (long threads : args.threads) {
-        if (const int code = benchRow(args, threads, header); code != kExitOk) return code;
+        runs.push_back(std::make_unique<BenchRun>(args, threads));
+        runs.back()->warmUp();
+    }
+    for (const BenchTurn& turn : benchTurns(args.steps, args.interleave, static_cast<int>(runs.size())))
+        if (!runs[static_cast<std::size_t>(turn.run)]->timeSteps(turn.steps)) return kExitFailed;
+    for (const auto& run : runs) {
+        run->printRow(header);
         header = false;
     }
     return kExitOk;
 }
 
 }  // namespace
+
+std::vector<BenchTurn> benchTurns(long steps, long interleave, int runs) {
+    std::vector<BenchTurn> turns;
+    for (long done = 0; done < steps; done += interleave)
+        for (int run = 0; run < runs; ++run) turns.push_back({run, std::min(interleave, steps - done)});
+    return turns;
+}
 
 Command addBenchCommand(CLI::App& app) {
     auto args = std::make_shared<BenchArgs>();
@@ -174,6 +220,12 @@ Command addBenchCommand(CLI::App& app) {
                      "symplectic-euler, verlet; no contact)")
         ->type_name("P")
         ->capture_default_str();
+    sub->add_option("--interleave", args->interleave,
+                    "make the runs of every thread count first, then time them in turns of N steps each (1, 2, 1, "
+                    "2, ...) in one process: a load beside them that drifts counts for all alike (paired timing); "
+                    "peak_rss_mib is then that of all the runs together")
+        ->type_name("N")
+        ->check(wholeIn(1, 100000000L));
     sub->add_flag("--header", args->header, "print the CSV header line first");
     sub->add_flag("--stages", args->stages,
                   "also time each stage of the step (save, size, integrate, scan, collide, measure, constrain, "
