@@ -12,13 +12,18 @@
 # from stop 41 on) and joined it (from stop 42 on), and the state hashes seen.
 #
 #   bench/threads-beside-stress.sh [--rounds N] [--steps N] [--loads "0 1 2"]
-#       [--precisions "double float"] [--kernels avx2] [--control] [--raw FILE] CLI [CLI ...]
+#       [--precisions "double float"] [--kernels avx2] [--control] [--interleave N] [--raw FILE]
+#       CLI [CLI ...]
 #   bench/threads-beside-stress.sh --summary FILE CLI [CLI ...]   (the table again from a raw file)
 #
 # --control runs one thread twice per round, before and after the two threads (1, 2, 1), and
 # pairs the two threads with the mean of both: a load that drifts within a round then counts
 # for both sides; the table also shows one thread against itself (the second run over the
 # first), the noise any 2 / 1 round carries on this machine.
+#
+# --interleave N times the thread counts of a round in one process, in turns of N steps each
+# (bench --interleave: 1, 2, 1, 2, ... or with --control 1, 2, 1, 1, 2, 1, ...), so that a load
+# that drifts within the round (this virtual machine's host, for one) counts for both alike.
 #
 # e.g. bench/threads-beside-stress.sh build/release/app/cli/elastic-lab-cli
 #      bench/threads-beside-stress.sh /tmp/cli-before build/release/app/cli/elastic-lab-cli
@@ -27,7 +32,7 @@
 # runs in the same scheduler group as the benchmark, as a second program of the same user would.
 set -euo pipefail
 
-rounds=5 steps=150 loads="0 1 2" precisions="double float" kernels=avx2 raw="" summary="" control=0
+rounds=5 steps=150 loads="0 1 2" precisions="double float" kernels=avx2 raw="" summary="" control=0 interleave=0
 while [ $# -gt 0 ]; do
     case "$1" in
         --rounds) rounds=$2; shift 2 ;;
@@ -37,8 +42,9 @@ while [ $# -gt 0 ]; do
         --kernels) kernels=$2; shift 2 ;;
         --raw) raw=$2; shift 2 ;;
         --control) control=1; shift ;;
+        --interleave) interleave=$2; shift 2 ;;
         --summary) summary=$2; shift 2 ;;
-        -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
+        -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
         -*) echo "unknown option $1" >&2; exit 2 ;;
         *) break ;;
     esac
@@ -71,6 +77,16 @@ one() {  # load build-index precision round threads (1c: one thread, the control
         '{print l "," b "," p "," r "," t "," $11 "," $15 "," pool}' >> "$raw"
 }
 
+interleaved() {  # load build-index precision round: the round's thread counts in one process, in turns
+    local out pool threads=1,2 labels="1 2"
+    [ "$control" -eq 1 ] && threads=1,2,1 labels="1 2 1c"
+    out=$(ELASTIC_LAB_POOL_STATS=1 "${clis[$2]}" "${args[@]}" --precision "$3" --threads "$threads" \
+          --interleave "$interleave" 2>/tmp/tbs-err.$$)
+    pool=$(grep '^pool:' /tmp/tbs-err.$$ | sed 's/^pool: //; s/,/;/g' | paste -sd'|' || true)  # the 2-thread run's
+    echo "$out" | awk -F, -v l="$1" -v b="$2" -v p="$3" -v r="$4" -v labels="$labels" -v pool="$pool" \
+        '{split(labels, t, " "); print l "," b "," p "," r "," t[NR] "," $11 "," $15 "," (t[NR] == "2" ? pool : "")}' >> "$raw"
+}
+
 for load in $loads; do
     if [ "$load" -gt 0 ]; then
         stress-ng --cpu "$load" --timeout 3600 --quiet & stress=$!
@@ -82,7 +98,8 @@ for load in $loads; do
         [ $((r % 2)) -eq 0 ] && order=$(echo "$order" | tac)
         for b in $order; do
             for p in $precisions; do
-                if [ "$control" -eq 1 ]; then one "$load" "$b" "$p" "$r" 1; one "$load" "$b" "$p" "$r" 2; one "$load" "$b" "$p" "$r" 1c
+                if [ "$interleave" -gt 0 ]; then interleaved "$load" "$b" "$p" "$r"
+                elif [ "$control" -eq 1 ]; then one "$load" "$b" "$p" "$r" 1; one "$load" "$b" "$p" "$r" 2; one "$load" "$b" "$p" "$r" 1c
                 elif [ $((r % 2)) -eq 1 ]; then one "$load" "$b" "$p" "$r" 1; one "$load" "$b" "$p" "$r" 2
                 else one "$load" "$b" "$p" "$r" 2; one "$load" "$b" "$p" "$r" 1; fi
             done
@@ -113,6 +130,8 @@ def pool(field):
     runs = alone = trials = won = tasks = shared = moves = joins = 0
     for m in re.finditer(r"(\d+) runs; (\d+) alone", field): runs += int(m[1]); alone += int(m[2])
     for m in re.finditer(r"(\d+) trials \(alone won (\d+)\)", field): trials += int(m[1]); won += int(m[2])
+    # from stop 43 on: the share judge's trials alone and the verdicts that went on alone
+    for m in re.finditer(r"tried alone by the CPU share (\d+); alone won (\d+)", field): trials += int(m[1]); won += int(m[2])
     for m in re.finditer(r"worker tasks (\d+)", field): tasks += int(m[1])
     for m in re.finditer(r"worker tasks on the caller's CPU (\d+)", field): shared += int(m[1])
     for m in re.finditer(r"moved off it (\d+)", field): moves += int(m[1])

@@ -16,6 +16,7 @@
 #if defined(__linux__)
 #include <fcntl.h>
 #include <linux/futex.h>
+#include <pthread.h>
 #include <sched.h>
 #include <time.h>
 #include <sys/syscall.h>
@@ -175,6 +176,31 @@ void OffCpuProbe::restart(double wall, double cpu) {
     m_cpuAt = cpu;
     m_away = 0.0;
 }
+
+ShareJudge::Verdict ShareJudge::together(double now, double wall, double cpu) {
+    const double aloneShare = m_aloneShare;
+    m_aloneShare = -1.0;
+    if (!(wall > 0.0) || cpu < 0.0) return Verdict::Together;
+    const double share = cpu / wall;
+    if (aloneShare >= 0.0) {  // the window after a stretch alone
+        if (aloneShare > kMargin * share) {
+            m_backoff = kBackoffFirst;  // alone won: a trial after it loses starts the waits short
+            return Verdict::Alone;
+        }
+        m_trialAfter = now + m_backoff;  // alone lost: the next trial later
+        m_backoff = std::min(2.0 * m_backoff, kBackoffLongest);
+        return Verdict::Together;
+    }
+    // Under one CPU together (at least a CPU: alone cannot win). A window at a CPU or more does
+    // not shorten the wait: beside two busy programs the pair's share hovers about one CPU,
+    // and trials that lose would come every 0.2 s. Nor does a trial that cannot be judged
+    // (the caller preempted or away for a while during it).
+    if (share >= kMayWin || now < m_trialAfter) return Verdict::Together;
+    m_trialAfter = now + m_backoff;
+    return Verdict::Try;
+}
+
+void ShareJudge::alone(double wall, double cpu) { m_aloneShare = wall > 0.0 && cpu >= 0.0 ? cpu / wall : -1.0; }
 
 int currentCpu() {
 #if defined(__linux__)
@@ -356,13 +382,14 @@ ThreadPool::~ThreadPool() {
         std::fprintf(stderr,
                      "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu, "
                      "kept off a CPU %llu, worker tasks on the caller's CPU %llu, moved off it %llu, stayed %llu, "
-                     "joined it %llu\n",
+                     "joined it %llu, tried alone by the CPU share %llu, alone won %llu\n",
                      static_cast<unsigned long long>(c.runs), static_cast<unsigned long long>(c.soloRuns),
                      static_cast<unsigned long long>(c.soloPeriods), static_cast<unsigned long long>(c.callerSleeps),
                      static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks),
                      static_cast<unsigned long long>(c.busyMarks), static_cast<unsigned long long>(c.sharedCpuTasks),
                      static_cast<unsigned long long>(c.moves), static_cast<unsigned long long>(c.stays),
-                     static_cast<unsigned long long>(c.joins));
+                     static_cast<unsigned long long>(c.joins), static_cast<unsigned long long>(c.shareTrials),
+                     static_cast<unsigned long long>(c.shareWins));
     }
 }
 
@@ -383,7 +410,30 @@ ThreadPool::Counters ThreadPool::counters() const {
     c.moves = m_statMoves.load(std::memory_order_relaxed);
     c.stays = m_statStays.load(std::memory_order_relaxed);
     c.joins = m_statJoins.load(std::memory_order_relaxed);
+    c.shareTrials = m_statShareTrials.load(std::memory_order_relaxed);
+    c.shareWins = m_statShareWins.load(std::memory_order_relaxed);
     return c;
+}
+
+double ThreadPool::poolCpuSeconds() {
+    const double caller = poolThreadCpuSeconds();
+    if (caller < 0.0) return -1.0;
+    if (const CpuHooks* hooks = g_cpuHooks.load(std::memory_order_acquire); hooks && hooks->workersCpu) {
+        const double workers = hooks->workersCpu(*this);
+        return workers < 0.0 ? -1.0 : caller + workers;
+    }
+    double workers = 0.0;
+#if defined(__linux__)
+    for (std::thread& worker : m_workers) {
+        clockid_t clock{};
+        timespec t{};
+        if (pthread_getcpuclockid(worker.native_handle(), &clock) != 0 || clock_gettime(clock, &t) != 0) return -1.0;
+        workers += static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+    }
+    return caller + workers;
+#else
+    return -1.0;
+#endif
 }
 
 bool ThreadPool::contended(ContentionProbe& probe) {
@@ -561,12 +611,27 @@ void ThreadPool::judgeRun(double ownSeconds, double waitSeconds) {
     m_waitSeconds += waitSeconds;
     if (++m_windowRuns < kWindowRuns || m_ownSeconds + m_waitSeconds < kWindowSeconds) return;
     // One window judged: the workers cost more than they bring when the caller waited for them
-    // longer than it worked. Which thread runs a task never changes a result, so this clock
-    // decides speed only.
-    if (m_waitSeconds > m_ownSeconds && m_aloneAllowed) {
+    // longer than it worked, or when the pool's threads together got a smaller share of a CPU
+    // than the caller alone gets (ShareJudge). Which thread runs a task never changes a result,
+    // so these clocks decide speed only.
+    const Clock::time_point now = Clock::now();
+    ShareJudge::Verdict share = ShareJudge::Verdict::Together;
+    if (m_windowClock.valid) {
+        const double cpu = poolCpuSeconds();
+        share = m_share.together(seconds(now.time_since_epoch()), seconds(now - m_windowClock.wallAt),
+                                 cpu < 0.0 ? -1.0 : cpu - m_windowClock.cpuAt);
+    } else {
+        m_share.dropAlone();
+    }
+    m_windowClock.valid = false;
+    if ((m_waitSeconds > m_ownSeconds || share != ShareJudge::Verdict::Together) && m_aloneAllowed) {
         m_soloLength = m_soloLength == 0 ? kSoloFirst : std::min(2 * m_soloLength, kSoloLongest);
-        m_soloUntil = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(m_soloLength));
+        m_soloUntil = now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(m_soloLength));
+        const double cpu = poolThreadCpuSeconds();
+        m_soloClock = {now, cpu, cpu >= 0.0};
         m_statSoloPeriods.fetch_add(1, std::memory_order_relaxed);
+        if (share == ShareJudge::Verdict::Try) m_statShareTrials.fetch_add(1, std::memory_order_relaxed);
+        if (share == ShareJudge::Verdict::Alone) m_statShareWins.fetch_add(1, std::memory_order_relaxed);
     } else {
         m_soloLength = 0;  // two threads pay: the next solo period (if any) starts short
     }
@@ -594,6 +659,7 @@ void ThreadPool::run(int count, TaskRef task) {
     if (entered - m_lastRunEnd > kBetweenRuns) {
         m_callerProbe.offCpu.restart(seconds(entered.time_since_epoch()), poolThreadCpuSeconds());
         m_callerProbe.nextCheck = entered + kBusyCheck;
+        m_windowClock.valid = m_soloClock.valid = false;  // the caller was outside the pool: no share to judge
     }
     if (contended(m_callerProbe)) m_callerSpin = kCallerSpinMin;
     if (m_soloLength > 0 && m_windowRuns == 0) {
@@ -604,6 +670,15 @@ void ThreadPool::run(int count, TaskRef task) {
             m_lastRunEnd = Clock::now();
             return;
         }
+        // The stretch alone is over: the caller's share over it, for the window's judgement.
+        const double cpu = poolThreadCpuSeconds();
+        if (m_soloClock.valid && cpu >= 0.0) m_share.alone(seconds(entered - m_soloClock.wallAt), cpu - m_soloClock.cpuAt);
+        else m_share.dropAlone();
+        m_soloClock.valid = false;
+    }
+    if (m_windowRuns == 0) {
+        const double cpu = poolCpuSeconds();
+        m_windowClock = {entered, cpu, cpu >= 0.0};
     }
     const std::uint32_t run = ++m_runs;
     // Close the ticket first: a worker still holding the last run's ticket (it read it before

@@ -37,8 +37,10 @@
 // When a run's caller keeps waiting for a preempted worker longer than it works itself (a
 // machine busier than its CPUs: two fixed chunks cannot be shared once begun), one thread
 // would be faster: the caller runs alone for a while, then tries two threads again, and
-// backs off while the trials keep failing. Two threads on a busy machine therefore cost about
-// what one does, and on a quiet one keep their ~1.9x.
+// backs off while the trials keep failing. It also runs alone while the pool's threads together
+// get less CPU time than the caller alone does (ShareJudge: a virtual machine whose host runs its
+// two CPUs on about one core). Two threads on a busy machine therefore cost about what one does,
+// and on a quiet one keep their ~1.9x.
 //
 // Determinism is the caller's job and is easy: split work into a fixed number of tasks that
 // does not depend on the thread count, and combine their results in task order. Which thread
@@ -114,6 +116,45 @@ private:
     double m_away = 0.0;                    // since then
 };
 
+// Whether the caller alone would be faster than the pool's threads together, judged by the CPU
+// time they get (stop 43). On a virtual machine whose host runs the two virtual CPUs on about one
+// core (the host's other guests busy: the steal time in /proc/stat), two threads lost to one by
+// 15-40 % with nothing else running in the guest: each thread was kept off its CPU half the time,
+// at a different moment from the other, and the pair waited for whichever was away at every run.
+// The waits then are no longer than the work (the fallback's own test), but the pair together
+// got 0.6 CPU-seconds per second where one thread alone got 0.9. One thread can use at most one
+// CPU: while the pool's threads together get less than kMayWin of one CPU (their CPU time over a
+// window's wall time, waits and serial stretches included), the caller tries a stretch alone and
+// measures its own share; alone stays while its share beats together's by kMargin, and each
+// stretch alone is followed by one window together that judges again. A trial that loses backs
+// off: the next comes only after twice as long (kBackoffFirst up to kBackoffLongest), until alone
+// wins again (beside two busy programs the pair's share hovers about one CPU; trials there lose). On a quiet machine the pair gets 1.8-1.9 CPUs, beside one
+// or two busy programs 1.0-1.4: no trial, and nothing is read but two clocks per window.
+// Fed seconds on any one clock; `now` only orders the trials.
+class ShareJudge {
+public:
+    static constexpr double kMayWin = 0.95, kMargin = 1.1;
+    static constexpr double kBackoffFirst = 0.2, kBackoffLongest = 6.4;
+    enum class Verdict {
+        Together,  // stay together
+        Try,       // together got less than kMayWin of a CPU: try a stretch alone
+        Alone,     // alone got the larger share over the last stretch: go on alone
+    };
+    // A window together ended at `now`: the pool's threads got `cpu` seconds of CPU in `wall`
+    // (cpu < 0: unknown, together).
+    Verdict together(double now, double wall, double cpu);
+    // A stretch alone ended: the caller got `cpu` seconds of CPU in `wall`.
+    void alone(double wall, double cpu);
+    // Forgets a stretch alone that cannot be judged (the caller left the pool during it).
+    void dropAlone() { m_aloneShare = -1.0; }
+    double backoff() const { return m_backoff; }
+
+private:
+    double m_aloneShare = -1.0;  // the caller's share over the last stretch alone (-1: none to judge)
+    double m_trialAfter = 0.0;   // no trial before this time
+    double m_backoff = kBackoffFirst;
+};
+
 class ThreadPool {
 public:
     explicit ThreadPool(int threads);
@@ -139,6 +180,8 @@ public:
         std::uint64_t moves = 0;           // times a worker moved off the caller's CPU
         std::uint64_t stays = 0;           // times it stayed there, the other CPUs as busy (moveIsWorthIt)
         std::uint64_t joins = 0;           // times a worker on another CPU joined the caller's, the others as busy
+        std::uint64_t shareTrials = 0;     // times the caller tried alone, the pool together getting under one CPU (ShareJudge)
+        std::uint64_t shareWins = 0;       // times alone then got the larger share and went on alone
     };
     Counters counters() const;
     // Workers asleep right now (waiting on the futex for the next run).
@@ -163,6 +206,7 @@ public:
         int (*moveOnto)(int cpu);
         int (*runnable)();
         double (*threadCpu)();  // the calling thread's CPU time (threadCpuSeconds)
+        double (*workersCpu)(const ThreadPool& pool);  // the pool's workers' CPU time together, read by the caller
     };
     static void setCpuHooks(const CpuHooks* hooks);
 
@@ -195,6 +239,16 @@ private:
     bool contended(ContentionProbe& probe);
     // The fallback's decision after each run that used the workers.
     void judgeRun(double ownSeconds, double waitSeconds);
+    // The CPU time of the pool's threads, the caller's and the workers' (the caller reads it).
+    double poolCpuSeconds();
+    // The share judge's clocks (ShareJudge; the caller's own state): a window together and a
+    // stretch alone start with the wall time and CPU time read then; `valid` false when the
+    // caller left the pool since (a gap between runs longer than kBetweenRuns).
+    struct ShareClock {
+        std::chrono::steady_clock::time_point wallAt{};
+        double cpuAt = 0.0;
+        bool valid = false;
+    };
 
     int m_workerCount;  // set before the workers start (they read it; m_workers grows meanwhile)
     std::vector<std::thread> m_workers;
@@ -216,6 +270,9 @@ private:
     std::chrono::steady_clock::time_point m_soloUntil;
     double m_callerSpin = 200e-6;  // seconds the caller spins before it sleeps (adaptive)
     ContentionProbe m_callerProbe;
+    ShareJudge m_share;
+    ShareClock m_windowClock, m_soloClock;
+    bool m_soloByShare = false;  // the current stretch alone is the share judge's
     std::chrono::steady_clock::time_point m_lastRunEnd{};  // when the caller's last run ended
     std::atomic<std::int64_t> m_busyUntil{0};  // steady_clock ticks: contended until then
     std::atomic<int> m_callerCpu{-1};          // the CPU the caller posted the current run from (-1: unknown)
@@ -223,7 +280,8 @@ private:
     // sleep and caller busy counts; every pool thread adds to the others (atomic adds).
     std::atomic<std::uint64_t> m_statRuns{0}, m_statSolo{0}, m_statCallerSleeps{0}, m_statWorkerSleeps{0},
         m_statWorkerTasks{0}, m_statSoloPeriods{0}, m_statBusyMarks{0}, m_statCallerBusyMarks{0},
-        m_statSharedCpuTasks{0}, m_statMoves{0}, m_statStays{0}, m_statJoins{0};
+        m_statSharedCpuTasks{0}, m_statMoves{0}, m_statStays{0}, m_statJoins{0}, m_statShareTrials{0},
+        m_statShareWins{0};
 };
 
 // The CPU the calling thread runs on now (-1 where the system cannot tell).

@@ -94,7 +94,35 @@ double fakeThreadCpu() {
     if (g_keptOff.load()) return 1.0;
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeMoveOntoCpu, fakeRunnable, fakeThreadCpu};
+constexpr ThreadPool::CpuHooks kFakeCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeMoveOntoCpu, fakeRunnable, fakeThreadCpu,
+                                         nullptr};
+// CPU clocks for the share judge (ShareJudge): each thread of the pool gets g_shareTogether of a
+// CPU while the pool runs together, the caller g_shareAlone while it runs alone (a host that
+// runs two virtual CPUs on about one core); a reading's interval counts as alone when the pool
+// ran a run alone in it. The workers' own clocks (their kept-off checks) follow the wall clock.
+std::atomic<const ThreadPool*> g_sharePool{nullptr};
+std::atomic<double> g_shareTogether{0.35}, g_shareAlone{0.9};
+struct FakeShareClock {
+    double wallAt = -1.0, cpu = 0.0;
+    std::uint64_t soloAt = 0;
+    double read(double togetherRate, double aloneRate) {
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+        const std::uint64_t solo = g_sharePool.load()->counters().soloRuns;
+        if (wallAt >= 0.0) cpu += (wall - wallAt) * (solo != soloAt ? aloneRate : togetherRate);
+        wallAt = wall;
+        soloAt = solo;
+        return cpu;
+    }
+};
+FakeShareClock g_callerShareClock, g_workersShareClock;  // read by the caller only
+double shareThreadCpu() {
+    if (std::this_thread::get_id() != g_callerId.load())
+        return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    return g_callerShareClock.read(g_shareTogether.load(), g_shareAlone.load());
+}
+double shareWorkersCpu(const ThreadPool&) { return g_workersShareClock.read(g_shareTogether.load(), 0.0); }
+constexpr ThreadPool::CpuHooks kShareCpus{fakeCurrentCpu, fakeMoveOffCpu, fakeMoveOntoCpu, fakeRunnable, shareThreadCpu,
+                                          shareWorkersCpu};
 // One run of eight tasks of 20 us each (spinning: the threads stay awake).
 void spinRun(ThreadPool& pool) {
     pool.run(8, [](int) {
@@ -326,6 +354,102 @@ private slots:
         QVERIFY(joins >= 2);
         QVERIFY2(joins <= 2 + static_cast<int>(std::log2(1.0 + elapsed / 0.1)),
                  qPrintable(QStringLiteral("%1 joins in %2 s").arg(joins).arg(elapsed)));
+    }
+
+    // The share judge alone, fed shares (CPU seconds per wall second): under kMayWin of one CPU
+    // together it tries alone; alone goes on while its share beats together's by kMargin; a
+    // trial lost waits kBackoffFirst, then twice as long each time, up to kBackoffLongest, until
+    // alone wins again (a window at a CPU or more does not shorten it).
+    void shareJudgeTriesAloneUnderOneCpu() {
+        using V = ShareJudge::Verdict;
+        ShareJudge judge;
+        QCOMPARE(judge.together(0.0, 0.02, 0.036), V::Together);  // 1.8 CPUs: quiet
+        QCOMPARE(judge.together(0.0, 0.02, 0.020), V::Together);  // one CPU: alone cannot win
+        QCOMPARE(judge.together(0.0, 0.02, -1.0), V::Together);   // unknown
+        QCOMPARE(judge.together(0.0, 0.0, 0.01), V::Together);
+        QCOMPARE(judge.together(0.0, 0.02, 0.012), V::Try);       // 0.6 of a CPU; no trial before 0.2
+        judge.alone(0.05, 0.045);                                  // alone: 0.9
+        QCOMPARE(judge.together(0.1, 0.02, 0.012), V::Alone);     // 0.9 > 1.1 x 0.6
+        QCOMPARE(judge.backoff(), ShareJudge::kBackoffFirst);
+        judge.alone(0.1, 0.07);                                    // alone: 0.7, not 1.1 x 0.65
+        QCOMPARE(judge.together(0.2, 0.02, 0.013), V::Together);  // lost: no trial before 0.2 + 0.2
+        QCOMPARE(judge.backoff(), 2 * ShareJudge::kBackoffFirst);  // and the wait after the next doubled
+        QCOMPARE(judge.together(0.39, 0.02, 0.012), V::Together);
+        QCOMPARE(judge.together(0.41, 0.02, 0.012), V::Try);      // none before 0.41 + 0.4
+        judge.alone(0.05, 0.02);                                   // alone worse
+        QCOMPARE(judge.together(0.5, 0.02, 0.012), V::Together);  // none before 0.5 + 0.4
+        QCOMPARE(judge.together(0.89, 0.02, 0.012), V::Together);
+        QCOMPARE(judge.together(0.91, 0.02, 0.012), V::Try);      // none before 0.91 + 0.8
+        judge.alone(0.05, 0.045);
+        judge.dropAlone();                                         // the caller left the pool
+        QCOMPARE(judge.together(1.0, 0.02, 0.012), V::Together);  // a trial not judged waits too
+        QCOMPARE(judge.together(1.72, 0.02, 0.012), V::Try);
+        double now = 2.0;
+        for (int i = 0; i < 12; ++i) {  // trials lost in a row
+            const double wait = judge.backoff();
+            judge.alone(0.05, 0.01);
+            QCOMPARE(judge.together(now, 0.02, 0.012), V::Together);
+            QCOMPARE(judge.together(now + 0.99 * wait, 0.02, 0.012), V::Together);
+            now += wait + 0.01;
+            QCOMPARE(judge.together(now, 0.02, 0.012), V::Try);
+        }
+        QCOMPARE(judge.backoff(), ShareJudge::kBackoffLongest);
+        QCOMPARE(judge.together(now, 0.02, 0.03), V::Together);  // 1.5 CPUs
+        QCOMPARE(judge.backoff(), ShareJudge::kBackoffLongest);   // still the longest wait
+        judge.alone(0.05, 0.045);
+        QCOMPARE(judge.together(now + 0.1, 0.02, 0.012), V::Alone);
+        QCOMPARE(judge.backoff(), ShareJudge::kBackoffFirst);     // alone won: short again
+    }
+
+    // The pool with the share judge, on fake CPU clocks: the host gives the pair 2 x 0.35 of a CPU
+    // and the caller alone 0.9 (it goes alone, and stays: alone wins again and again); alone only
+    // 0.5 (it tries, loses, and tries less often); a quiet machine (never tries).
+    void poolGoesAloneWhenTogetherGetsLessCpu_data() {
+        QTest::addColumn<double>("together");
+        QTest::addColumn<double>("alone");
+        QTest::newRow("alone gets more") << 0.35 << 0.9;
+        QTest::newRow("alone gets less") << 0.35 << 0.5;
+        QTest::newRow("quiet") << 0.9 << 1.0;
+    }
+    void poolGoesAloneWhenTogetherGetsLessCpu() {
+        QFETCH(double, together);
+        QFETCH(double, alone);
+        g_callerId.store(std::this_thread::get_id());
+        g_workersOnCallersCpu.store(false);  // split: no move; not kept off: no join
+        g_shareTogether.store(together);
+        g_shareAlone.store(alone);
+        g_callerShareClock = g_workersShareClock = FakeShareClock{};
+        const bool wins = alone > ShareJudge::kMargin * 2 * together;
+        ThreadPool::Counters c;
+        const auto start = std::chrono::steady_clock::now();
+        double elapsed = 0.0;
+        {
+            ThreadPool::setCpuHooks(&kShareCpus);
+            ThreadPool pool(2);
+            g_sharePool.store(&pool);
+            // Until alone has won three times (or, else, 0.6 s).
+            while (elapsed < (wins ? 20.0 : 0.6) && (!wins || pool.counters().shareWins < 3)) {
+                spinRun(pool);
+                elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            }
+            c = pool.counters();
+        }
+        ThreadPool::setCpuHooks(nullptr);
+        g_sharePool.store(nullptr);
+        const QString what = QStringLiteral("%1 s: %2 runs, %3 alone in %4 stretches, %5 trials, %6 won")
+                                 .arg(elapsed).arg(c.runs).arg(c.soloRuns).arg(c.soloPeriods).arg(c.shareTrials).arg(c.shareWins);
+        qInfo("%s", qPrintable(what));
+        if (together * 2 >= ShareJudge::kMayWin) {
+            QVERIFY2(c.shareTrials == 0 && c.shareWins == 0, qPrintable(what));
+        } else if (wins) {
+            QVERIFY2(c.shareWins >= 3 && c.shareTrials >= 1, qPrintable(what));
+            QVERIFY2(c.shareTrials <= 2, qPrintable(what));  // alone kept winning: no new trial needed
+        } else {
+            QVERIFY2(c.shareTrials >= 1 && c.shareWins == 0, qPrintable(what));
+            // Trials lost back off: at most one at once, then after 0.2, 0.4, 0.8 s ...
+            QVERIFY2(c.shareTrials <= 1 + static_cast<unsigned>(std::log2(1.0 + elapsed / ShareJudge::kBackoffFirst)),
+                     qPrintable(what));
+        }
     }
 
     // The rule behind it: with n CPUs, a worker sharing the caller's CPU gains by moving while
