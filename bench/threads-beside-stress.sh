@@ -9,7 +9,9 @@
 # pool judges alone against together by trials, its trials and how many one thread won
 # (ELASTIC_LAB_POOL_STATS; the pool on main has no trials: 0), the share of the worker's tasks
 # begun on the CPU the caller posted the run from and how often a worker moved off it (builds
-# from stop 41 on) and joined it (from stop 42 on), and the state hashes seen.
+# from stop 41 on) and joined it (from stop 42 on), the state hashes seen, and the most of all
+# CPU time the host took (steal in /proc/stat) during one of the row's runs: a virtual machine's
+# host that runs its CPUs on fewer cores makes rounds that say nothing of the pool.
 #
 #   bench/threads-beside-stress.sh [--rounds N] [--steps N] [--loads "0 1 2"]
 #       [--precisions "double float"] [--kernels avx2] [--control] [--interleave N] [--raw FILE]
@@ -56,7 +58,7 @@ command -v stress-ng >/dev/null || { echo "stress-ng is not installed (scripts/i
 for c in "${clis[@]}"; do [ -x "$c" ] || { echo "not an executable: $c" >&2; exit 2; }; done
 
 [ -n "$raw" ] || raw=$(mktemp /tmp/threads-beside-stress.XXXXXX.csv)
-echo "load,build,precision,round,threads,steps_per_second,state_hash,pool" > "$raw"
+echo "load,build,precision,round,threads,steps_per_second,state_hash,pool,steal_percent" > "$raw"
 args=(bench --scene sphere3d --set subdivisions=6 --set gravity=0 --set perturb=0.01 --integrator rk4
       --dt 0.003 --steps "$steps" --warmup 10 --kernels "$kernels")
 
@@ -67,24 +69,36 @@ stress=""
 cleanup() { [ -n "$stress" ] && kill "$stress" 2>/dev/null; wait 2>/dev/null || true; }
 trap cleanup EXIT
 
+# The host's steal over a run (a virtual machine): the share of all CPU time /proc/stat counts
+# as stolen between two readings, in percent.
+ticks() { head -1 /proc/stat; }
+stolen() {  # ticks-before ticks-after
+    awk -v a="$1" -v b="$2" 'BEGIN { n = split(a, x, " "); split(b, y, " "); for (i = 2; i <= n; ++i) all += y[i] - x[i];
+        printf "%.0f", (all > 0 ? 100 * (y[9] - x[9]) / all : 0) }'
+}
+
 one() {  # load build-index precision round threads (1c: one thread, the control run)
-    local out pool
+    local out pool before steal
+    before=$(ticks)
     out=$(ELASTIC_LAB_POOL_STATS=1 "${clis[$2]}" "${args[@]}" --precision "$3" --threads "${5%c}" 2>/tmp/tbs-err.$$)
+    steal=$(stolen "$before" "$(ticks)")
     # the pools' own account (ELASTIC_LAB_POOL_STATS), one field: a float run has two pools
     pool=$(grep '^pool:' /tmp/tbs-err.$$ | sed 's/^pool: //; s/,/;/g' | paste -sd'|' || true)
     # steps_per_second is column 11, state_hash column 15 of bench's CSV
-    echo "$out" | tail -1 | awk -F, -v l="$1" -v b="$2" -v p="$3" -v r="$4" -v t="$5" -v pool="$pool" \
-        '{print l "," b "," p "," r "," t "," $11 "," $15 "," pool}' >> "$raw"
+    echo "$out" | tail -1 | awk -F, -v l="$1" -v b="$2" -v p="$3" -v r="$4" -v t="$5" -v pool="$pool" -v s="$steal" \
+        '{print l "," b "," p "," r "," t "," $11 "," $15 "," pool "," s}' >> "$raw"
 }
 
 interleaved() {  # load build-index precision round: the round's thread counts in one process, in turns
-    local out pool threads=1,2 labels="1 2"
+    local out pool threads=1,2 labels="1 2" before steal
     [ "$control" -eq 1 ] && threads=1,2,1 labels="1 2 1c"
+    before=$(ticks)
     out=$(ELASTIC_LAB_POOL_STATS=1 "${clis[$2]}" "${args[@]}" --precision "$3" --threads "$threads" \
           --interleave "$interleave" 2>/tmp/tbs-err.$$)
+    steal=$(stolen "$before" "$(ticks)")
     pool=$(grep '^pool:' /tmp/tbs-err.$$ | sed 's/^pool: //; s/,/;/g' | paste -sd'|' || true)  # the 2-thread run's
-    echo "$out" | awk -F, -v l="$1" -v b="$2" -v p="$3" -v r="$4" -v labels="$labels" -v pool="$pool" \
-        '{split(labels, t, " "); print l "," b "," p "," r "," t[NR] "," $11 "," $15 "," (t[NR] == "2" ? pool : "")}' >> "$raw"
+    echo "$out" | awk -F, -v l="$1" -v b="$2" -v p="$3" -v r="$4" -v labels="$labels" -v pool="$pool" -v s="$steal" \
+        '{split(labels, t, " "); print l "," b "," p "," r "," t[NR] "," $11 "," $15 "," (t[NR] == "2" ? pool : "") "," s}' >> "$raw"
 }
 
 for load in $loads; do
@@ -140,8 +154,8 @@ def pool(field):
 control = any(r["threads"] == "1c" for r in rows)
 head = "| beside | build | precision | 1 thread, steps/s | 2 threads, steps/s | 2 / 1, paired | 2 / 1, each round |"
 if control: head += " 1 / 1, each round (control) |"
-print(head + " 2 threads: runs alone, trials (won alone) | 2 threads: worker tasks on the caller's CPU, moves off it, joins | state hash |")
-print("|---" * (11 if control else 10) + "|")
+print(head + " 2 threads: runs alone, trials (won alone) | 2 threads: worker tasks on the caller's CPU, moves off it, joins | state hash | host steal, % (most) |")
+print("|---" * (12 if control else 11) + "|")
 for load in dict.fromkeys(r["load"] for r in rows):
     for b in dict.fromkeys(r["build"] for r in rows):
         for p in dict.fromkeys(r["precision"] for r in rows):
@@ -165,5 +179,7 @@ for load in dict.fromkeys(r["load"] for r in rows):
             placed = f"{100 * shared / tasks:.0f} %, {moves}, {joins if joined else '-'}" if tasks and counted else "-"
             rounds = ", ".join(f"{x:.2f}" for x in sorted(ratio))  # worst first
             ctl = (" " + ", ".join(f"{x:.2f}" for x in selfratio) + " |") if control else ""
-            print(f"| {beside} | {clis[int(b)]} | {p} | {fmt(one)} | {fmt(two)} | **{fmtr(ratio)}** | {rounds} |{ctl} {share} | {placed} | {hashes} |")
+            steal = [float(r["steal_percent"]) for r in sel if r.get("steal_percent")]  # raw files from stop 43 on
+            stolen = f"{max(steal):.0f}" if steal else "-"
+            print(f"| {beside} | {clis[int(b)]} | {p} | {fmt(one)} | {fmt(two)} | **{fmtr(ratio)}** | {rounds} |{ctl} {share} | {placed} | {hashes} | {stolen} |")
 EOF

@@ -191,11 +191,14 @@ ShareJudge::Verdict ShareJudge::together(double now, double wall, double cpu) {
         m_backoff = std::min(2.0 * m_backoff, kBackoffLongest);
         return Verdict::Together;
     }
-    // Under one CPU together (at least a CPU: alone cannot win). A window at a CPU or more does
-    // not shorten the wait: beside two busy programs the pair's share hovers about one CPU,
-    // and trials that lose would come every 0.2 s. Nor does a trial that cannot be judged
-    // (the caller preempted or away for a while during it).
-    if (share >= kMayWin || now < m_trialAfter) return Verdict::Together;
+    // Under one CPU together (at least a CPU: alone cannot win), in two windows in a row: beside
+    // two busy programs the pair's share hovers about one CPU, and one window in forty there
+    // fell under (stop 43). A window at a CPU or more does not shorten the wait before the next
+    // trial (trials that lose would come every 0.2 s there), nor does a trial that cannot be
+    // judged (the caller preempted or away for a while during it).
+    m_lowWindows = share < kMayWin ? m_lowWindows + 1 : 0;
+    if (m_lowWindows < 2 || now < m_trialAfter) return Verdict::Together;
+    m_lowWindows = 0;
     m_trialAfter = now + m_backoff;
     return Verdict::Try;
 }

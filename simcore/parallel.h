@@ -124,7 +124,7 @@ private:
 // The waits then are no longer than the work (the fallback's own test), but the pair together
 // got 0.6 CPU-seconds per second where one thread alone got 0.9. One thread can use at most one
 // CPU: while the pool's threads together get less than kMayWin of one CPU (their CPU time over a
-// window's wall time, waits and serial stretches included), the caller tries a stretch alone and
+// window's wall time, waits and serial stretches included; two windows in a row), the caller tries a stretch alone and
 // measures its own share; alone stays while its share beats together's by kMargin, and each
 // stretch alone is followed by one window together that judges again. A trial that loses backs
 // off: the next comes only after twice as long (kBackoffFirst up to kBackoffLongest), until alone
@@ -152,6 +152,7 @@ public:
 private:
     double m_aloneShare = -1.0;  // the caller's share over the last stretch alone (-1: none to judge)
     double m_trialAfter = 0.0;   // no trial before this time
+    int m_lowWindows = 0;        // windows in a row together under kMayWin
     double m_backoff = kBackoffFirst;
 };
 

@@ -357,47 +357,55 @@ private slots:
     }
 
     // The share judge alone, fed shares (CPU seconds per wall second): under kMayWin of one CPU
-    // together it tries alone; alone goes on while its share beats together's by kMargin; a
-    // trial lost waits kBackoffFirst, then twice as long each time, up to kBackoffLongest, until
-    // alone wins again (a window at a CPU or more does not shorten it).
+    // together, two windows in a row, it tries alone; alone goes on while its share beats
+    // together's by kMargin; a trial lost waits kBackoffFirst, then twice as long each time, up
+    // to kBackoffLongest, until alone wins again (a window at a CPU or more does not shorten it).
     void shareJudgeTriesAloneUnderOneCpu() {
         using V = ShareJudge::Verdict;
         ShareJudge judge;
+        const auto low = [&](double now) { return judge.together(now, 0.02, 0.012); };  // 0.6 of a CPU
         QCOMPARE(judge.together(0.0, 0.02, 0.036), V::Together);  // 1.8 CPUs: quiet
         QCOMPARE(judge.together(0.0, 0.02, 0.020), V::Together);  // one CPU: alone cannot win
         QCOMPARE(judge.together(0.0, 0.02, -1.0), V::Together);   // unknown
         QCOMPARE(judge.together(0.0, 0.0, 0.01), V::Together);
-        QCOMPARE(judge.together(0.0, 0.02, 0.012), V::Try);       // 0.6 of a CPU; no trial before 0.2
+        QCOMPARE(low(0.0), V::Together);                           // one window under a CPU
+        QCOMPARE(judge.together(0.0, 0.02, 0.020), V::Together);  // then one at a CPU
+        QCOMPARE(low(0.0), V::Together);
+        QCOMPARE(low(0.0), V::Try);                                // two in a row; no trial before 0.2
         judge.alone(0.05, 0.045);                                  // alone: 0.9
-        QCOMPARE(judge.together(0.1, 0.02, 0.012), V::Alone);     // 0.9 > 1.1 x 0.6
+        QCOMPARE(low(0.1), V::Alone);                              // 0.9 > 1.1 x 0.6
         QCOMPARE(judge.backoff(), ShareJudge::kBackoffFirst);
         judge.alone(0.1, 0.07);                                    // alone: 0.7, not 1.1 x 0.65
         QCOMPARE(judge.together(0.2, 0.02, 0.013), V::Together);  // lost: no trial before 0.2 + 0.2
         QCOMPARE(judge.backoff(), 2 * ShareJudge::kBackoffFirst);  // and the wait after the next doubled
-        QCOMPARE(judge.together(0.39, 0.02, 0.012), V::Together);
-        QCOMPARE(judge.together(0.41, 0.02, 0.012), V::Try);      // none before 0.41 + 0.4
+        QCOMPARE(low(0.3), V::Together);
+        QCOMPARE(low(0.39), V::Together);
+        QCOMPARE(low(0.41), V::Try);                               // none before 0.41 + 0.4
         judge.alone(0.05, 0.02);                                   // alone worse
-        QCOMPARE(judge.together(0.5, 0.02, 0.012), V::Together);  // none before 0.5 + 0.4
-        QCOMPARE(judge.together(0.89, 0.02, 0.012), V::Together);
-        QCOMPARE(judge.together(0.91, 0.02, 0.012), V::Try);      // none before 0.91 + 0.8
+        QCOMPARE(low(0.5), V::Together);                           // none before 0.5 + 0.4
+        QCOMPARE(low(0.6), V::Together);
+        QCOMPARE(low(0.89), V::Together);
+        QCOMPARE(low(0.91), V::Try);                               // none before 0.91 + 0.8
         judge.alone(0.05, 0.045);
         judge.dropAlone();                                         // the caller left the pool
-        QCOMPARE(judge.together(1.0, 0.02, 0.012), V::Together);  // a trial not judged waits too
-        QCOMPARE(judge.together(1.72, 0.02, 0.012), V::Try);
+        QCOMPARE(low(1.0), V::Together);                           // a trial not judged waits too
+        QCOMPARE(low(1.1), V::Together);
+        QCOMPARE(low(1.72), V::Try);
         double now = 2.0;
         for (int i = 0; i < 12; ++i) {  // trials lost in a row
             const double wait = judge.backoff();
             judge.alone(0.05, 0.01);
-            QCOMPARE(judge.together(now, 0.02, 0.012), V::Together);
-            QCOMPARE(judge.together(now + 0.99 * wait, 0.02, 0.012), V::Together);
+            QCOMPARE(low(now), V::Together);
+            QCOMPARE(low(now + 0.5 * wait), V::Together);
+            QCOMPARE(low(now + 0.99 * wait), V::Together);
             now += wait + 0.01;
-            QCOMPARE(judge.together(now, 0.02, 0.012), V::Try);
+            QCOMPARE(low(now), V::Try);
         }
         QCOMPARE(judge.backoff(), ShareJudge::kBackoffLongest);
         QCOMPARE(judge.together(now, 0.02, 0.03), V::Together);  // 1.5 CPUs
         QCOMPARE(judge.backoff(), ShareJudge::kBackoffLongest);   // still the longest wait
         judge.alone(0.05, 0.045);
-        QCOMPARE(judge.together(now + 0.1, 0.02, 0.012), V::Alone);
+        QCOMPARE(low(now + 0.1), V::Alone);
         QCOMPARE(judge.backoff(), ShareJudge::kBackoffFirst);     // alone won: short again
     }
 
