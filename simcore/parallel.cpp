@@ -298,6 +298,26 @@ double threadCpuSeconds() {
     return -1.0;
 }
 
+SchedStat threadSchedStat() {
+#if defined(__linux__)
+    const int fd = ::open("/proc/thread-self/schedstat", O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return {};
+    char text[96];
+    const ssize_t n = ::read(fd, text, sizeof text - 1);
+    ::close(fd);
+    if (n <= 0) return {};
+    text[n] = '\0';
+    std::uint64_t ran = 0, waited = 0;
+    const char* end = text + n;
+    const auto first = std::from_chars(text, end, ran);
+    if (first.ec != std::errc() || first.ptr == end || *first.ptr != ' ') return {};
+    if (std::from_chars(first.ptr + 1, end, waited).ec != std::errc()) return {};
+    return {1e-9 * static_cast<double>(ran), 1e-9 * static_cast<double>(waited)};
+#else
+    return {};
+#endif
+}
+
 int hardwareThreads() {
     const unsigned n = std::thread::hardware_concurrency();
     return n == 0 ? 1 : static_cast<int>(n);
@@ -369,7 +389,11 @@ int availableThreads() {
 #endif
 }
 
-ThreadPool::ThreadPool(int threads) : m_workerCount(std::max(0, threads - 1)) {
+ThreadPool::ThreadPool(int threads)
+    : m_workerCount(std::max(0, threads - 1)),
+      m_ownerStatAt(threadSchedStat()),
+      m_owner(std::this_thread::get_id()),
+      m_madeAt(Clock::now()) {
     for (int i = 1; i < threads; ++i) m_workers.emplace_back([this] { workerLoop(); });
 }
 
@@ -380,20 +404,33 @@ ThreadPool::~ThreadPool() {
     futexWakeAll(m_posted);
     for (std::thread& t : m_workers) t.join();
     // ELASTIC_LAB_POOL_STATS=1: what the waits did, on stderr (scripts/threads-beside-stress.sh).
-    if (const char* stats = std::getenv("ELASTIC_LAB_POOL_STATS"); stats && *stats == '1' && !m_workers.empty()) {
-        const Counters c = counters();
-        std::fprintf(stderr,
-                     "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu, "
-                     "kept off a CPU %llu, worker tasks on the caller's CPU %llu, moved off it %llu, stayed %llu, "
-                     "joined it %llu, tried alone by the CPU share %llu, alone won %llu\n",
-                     static_cast<unsigned long long>(c.runs), static_cast<unsigned long long>(c.soloRuns),
-                     static_cast<unsigned long long>(c.soloPeriods), static_cast<unsigned long long>(c.callerSleeps),
-                     static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks),
-                     static_cast<unsigned long long>(c.busyMarks), static_cast<unsigned long long>(c.sharedCpuTasks),
-                     static_cast<unsigned long long>(c.moves), static_cast<unsigned long long>(c.stays),
-                     static_cast<unsigned long long>(c.joins), static_cast<unsigned long long>(c.shareTrials),
-                     static_cast<unsigned long long>(c.shareWins));
-    }
+    if (const char* stats = std::getenv("ELASTIC_LAB_POOL_STATS"); stats && *stats == '1' && !m_workers.empty())
+        printStats();
+}
+
+void ThreadPool::printStats() const {
+    const Counters c = counters();
+    // The threads' scheduler statistics over the pool's life: the caller's only when the thread
+    // that made the pool destroys it (it is then, in every use here, the one that ran it).
+    const double lived = seconds(Clock::now() - m_madeAt);
+    const SchedStat owner = std::this_thread::get_id() == m_owner ? threadSchedStat() : SchedStat{};
+    const bool known = owner.waited >= 0.0 && m_ownerStatAt.waited >= 0.0;
+    const double callerRan = known ? owner.ran - m_ownerStatAt.ran : -1e-3;
+    const double callerWaited = known ? owner.waited - m_ownerStatAt.waited : -1e-3;
+    std::fprintf(stderr,
+                 "pool: %llu runs, %llu alone in %llu periods, caller slept %llu, worker slept %llu, worker tasks %llu, "
+                 "kept off a CPU %llu, worker tasks on the caller's CPU %llu, moved off it %llu, stayed %llu, "
+                 "joined it %llu, tried alone by the CPU share %llu, alone won %llu, over %.0f ms the caller ran %.0f ms "
+                 "and waited for a CPU %.0f ms, the workers ran %.0f ms and waited %.0f ms (the caller's -1 where unknown)\n",
+                 static_cast<unsigned long long>(c.runs), static_cast<unsigned long long>(c.soloRuns),
+                 static_cast<unsigned long long>(c.soloPeriods), static_cast<unsigned long long>(c.callerSleeps),
+                 static_cast<unsigned long long>(c.workerSleeps), static_cast<unsigned long long>(c.workerTasks),
+                 static_cast<unsigned long long>(c.busyMarks), static_cast<unsigned long long>(c.sharedCpuTasks),
+                 static_cast<unsigned long long>(c.moves), static_cast<unsigned long long>(c.stays),
+                 static_cast<unsigned long long>(c.joins), static_cast<unsigned long long>(c.shareTrials),
+                 static_cast<unsigned long long>(c.shareWins), 1e3 * lived, 1e3 * callerRan, 1e3 * callerWaited,
+                 1e-6 * static_cast<double>(m_workersRanNs.load(std::memory_order_relaxed)),
+                 1e-6 * static_cast<double>(m_workersWaitedNs.load(std::memory_order_relaxed)));
 }
 
 void ThreadPool::setTestHook(TestHook hook) { g_testHook.store(hook, std::memory_order_release); }
@@ -569,7 +606,13 @@ void ThreadPool::workerLoop() {
             }
             m_sleepers.fetch_sub(1, std::memory_order_seq_cst);
         }
-        if (m_stop.load(std::memory_order_acquire)) return;
+        if (m_stop.load(std::memory_order_acquire)) {
+            if (const SchedStat stat = threadSchedStat(); stat.waited >= 0.0) {
+                m_workersRanNs.fetch_add(static_cast<std::int64_t>(1e9 * stat.ran), std::memory_order_relaxed);
+                m_workersWaitedNs.fetch_add(static_cast<std::int64_t>(1e9 * stat.waited), std::memory_order_relaxed);
+            }
+            return;
+        }
         seen = posted;
         const int cpu = placeWorker(placement, probe.keptOffAt);
         const int ran = claimTasks(seen, true);

@@ -95,6 +95,14 @@ using RangeWork = FunctionRef<void(std::ptrdiff_t, std::ptrdiff_t)>;
 bool keptOffCpu(double wall, double cpu, double away);
 // The calling thread's CPU time in seconds (-1 where the system cannot tell).
 double threadCpuSeconds();
+// The kernel's scheduler statistics of the calling thread (/proc/thread-self/schedstat): the
+// time it ran and the time it was runnable but waited for a CPU (another thread had it), in
+// seconds; both -1 where the system cannot tell. A virtual machine's steal is in neither: over
+// an interval, wall - ran - waited is the time the thread slept or its CPU was taken by the host.
+struct SchedStat {
+    double ran = -1.0, waited = -1.0;
+};
+SchedStat threadSchedStat();
 
 // One thread's check of itself, fed the clocks (seconds) at each check and told when the thread
 // sleeps: an interval longer than `longest` is not judged and only starts the next one.
@@ -213,6 +221,8 @@ public:
 
 private:
     void workerLoop();
+    // ELASTIC_LAB_POOL_STATS=1: the counters and the threads' scheduler statistics, on stderr.
+    void printStats() const;
     // A worker's place at the start of a run (see above): off the caller's CPU, or onto it, by
     // the load it judged last and (to join) when it was last found kept off its own CPU. Returns
     // the CPU it is on (-1: unknown).
@@ -273,7 +283,13 @@ private:
     ContentionProbe m_callerProbe;
     ShareJudge m_share;
     ShareClock m_windowClock, m_soloClock;
-    bool m_soloByShare = false;  // the current stretch alone is the share judge's
+    // ELASTIC_LAB_POOL_STATS: the owner's scheduler statistics when the pool was made (the
+    // caller's, when the same thread runs the pool and destroys it) and the workers' at their
+    // end (nanoseconds, summed), for the time the threads waited for a CPU.
+    SchedStat m_ownerStatAt;
+    std::thread::id m_owner;
+    std::chrono::steady_clock::time_point m_madeAt;
+    std::atomic<std::int64_t> m_workersRanNs{0}, m_workersWaitedNs{0};
     std::chrono::steady_clock::time_point m_lastRunEnd{};  // when the caller's last run ended
     std::atomic<std::int64_t> m_busyUntil{0};  // steady_clock ticks: contended until then
     std::atomic<int> m_callerCpu{-1};          // the CPU the caller posted the current run from (-1: unknown)

@@ -572,6 +572,49 @@ private slots:
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
         QVERIFY(threadCpuSeconds() - before < 0.02);
     }
+    // threadSchedStat reads the kernel's account of the calling thread: two threads that spin
+    // 60 ms of wall time each on one CPU take turns, so each ran for less than its wall time and
+    // waited for the CPU; a sleeping thread neither runs nor waits; the time run is the CPU clock.
+    void schedStatCountsTheWaitForACpu() {
+        if (threadSchedStat().waited < 0.0) QSKIP("no /proc/thread-self/schedstat here");
+        cpu_set_t mask;
+        CPU_ZERO(&mask);
+        QCOMPARE(sched_getaffinity(0, sizeof mask, &mask), 0);
+        int first = 0;
+        while (!CPU_ISSET(first, &mask)) ++first;
+        std::array<SchedStat, 2> spent{};
+        auto spin = [&](int k) {
+            cpu_set_t one;
+            CPU_ZERO(&one);
+            CPU_SET(first, &one);
+            pthread_setaffinity_np(pthread_self(), sizeof one, &one);
+            const SchedStat before = threadSchedStat();
+            const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(60);
+            while (std::chrono::steady_clock::now() < end) {}
+            const SchedStat after = threadSchedStat();
+            spent[static_cast<std::size_t>(k)] = {after.ran - before.ran, after.waited - before.waited};
+        };
+        std::thread a(spin, 0), b(spin, 1);
+        a.join();
+        b.join();
+        if (spent[0].ran == 0.0 && spent[1].ran == 0.0) QSKIP("the kernel keeps no scheduler statistics (0 0 0)");
+        for (const SchedStat& s : spent) {
+            QVERIFY2(s.ran > 0.0 && s.waited > 0.0, qPrintable(QStringLiteral("ran %1 s, waited %2 s").arg(s.ran).arg(s.waited)));
+        }
+        QVERIFY(spent[0].waited + spent[1].waited > 0.01);  // about 60 ms between them
+        const SchedStat before = threadSchedStat();
+        std::this_thread::sleep_for(std::chrono::milliseconds(30));
+        const SchedStat after = threadSchedStat();
+        QVERIFY(after.ran - before.ran < 0.01 && after.waited - before.waited < 0.01);
+        // The time it ran is the thread's CPU clock: 100 ms of CPU spun, 100 ms ran (the kernel
+        // brings a running thread's count up to date at its timer ticks: 10 ms either way at most).
+        const SchedStat start = threadSchedStat();
+        const double cpuStart = threadCpuSeconds();
+        while (threadCpuSeconds() - cpuStart < 0.1) {}
+        const double ran = threadSchedStat().ran - start.ran;
+        QVERIFY2(ran > 0.09 && ran < 0.11, qPrintable(QStringLiteral("ran %1 s").arg(ran)));
+    }
+
 
     // A caller that shares its CPU with a busy thread (another program's, as a teacher's laptop
     // has) finds itself kept off the CPU, and the pool turns to its short spins; every task still
