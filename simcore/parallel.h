@@ -91,7 +91,8 @@ using RangeWork = FunctionRef<void(std::ptrdiff_t, std::ptrdiff_t)>;
 // thread waits for a CPU counts as asleep: the pool cannot tell it apart without the kernel's
 // scheduler statistics. (Stop 39 read them as zeros; at stop 42 /proc/thread-self/schedstat's
 // second field, the time spent runnable waiting for a CPU, counted on this machine's kernel
-// 6.18: 367 ms of 1 s for a spinning thread beside `stress-ng --cpu 2`. Not used yet.)
+// 6.18: 367 ms of 1 s for a spinning thread beside `stress-ng --cpu 2`. Read for
+// ELASTIC_LAB_POOL_STATS since stop 43 (threadSchedStat), not for the pool's decisions.)
 bool keptOffCpu(double wall, double cpu, double away);
 // The calling thread's CPU time in seconds (-1 where the system cannot tell).
 double threadCpuSeconds();
