@@ -134,6 +134,13 @@ constexpr auto kJoinEvery = std::chrono::milliseconds(50);
 // kJoinEvery << kJoinBackoffMost (3.2 s); one that held sets it back to kJoinEvery.
 constexpr auto kJoinHeld = std::chrono::milliseconds(200);
 constexpr int kJoinBackoffMost = 6;
+// A join also needs the worker off its CPU for kJoinOffShare of the time it wanted to run over
+// a span of kJoinSpan (stop 43): beside programs of the same weight a split thread is off about
+// half the time; beside programs at a lower weight (other sessions, the lab's shell at a higher
+// priority) about a tenth, in slices that still fail one 2 ms check, and there the pair joined
+// onto one CPU gained nothing over one thread (1.01-1.06x, rounds lost).
+constexpr auto kJoinSpan = std::chrono::milliseconds(20);
+constexpr double kJoinOffShare = 0.3;
 
 // Sleep while `word` holds `expected` (returns at once when it does not, and may return
 // spuriously: callers check their condition again); wake every sleeper on `word`.
@@ -520,7 +527,8 @@ int ThreadPool::claimTasks(std::uint32_t run, bool worker) {
     }
 }
 
-int ThreadPool::placeWorker(WorkerPlacement& at, Clock::time_point keptOffAt) {
+int ThreadPool::placeWorker(WorkerPlacement& at, const ContentionProbe& probe) {
+    const Clock::time_point keptOffAt = probe.keptOffAt;
     // On the caller's CPU the two would only take turns (see parallel.h): move first,
     // unless the other CPUs are as busy (moveIsWorthIt, judged at most every
     // kLoadJudgementFor). On another CPU while they are as busy, join the caller's: the two
@@ -560,8 +568,23 @@ int ThreadPool::placeWorker(WorkerPlacement& at, Clock::time_point keptOffAt) {
         const bool keptOff = keptOffAt != Clock::time_point{} && now - keptOffAt < kBusyFor;
         if (!keptOff) {  // no judgement of the load either: nothing is read on a quiet machine
             at.joinStreak = 0;
+            at.spanCpuAt = -1.0;
             return cpu;
         }
+        // The share of the last span off the CPU (a span begins at the first run kept off).
+        if (at.spanCpuAt < 0.0 || now - at.spanAt >= kJoinSpan) {
+            const double cpuNow = poolThreadCpuSeconds();
+            if (at.spanCpuAt >= 0.0 && cpuNow >= 0.0) {
+                const double wanted = seconds(now - at.spanAt) - (probe.asleep - at.spanAwayAt);
+                at.offShare = wanted > 0.0 ? std::max(0.0, wanted - (cpuNow - at.spanCpuAt)) / wanted : 0.0;
+            } else {
+                at.offShare = 0.0;
+            }
+            at.spanAt = now;
+            at.spanCpuAt = cpuNow;
+            at.spanAwayAt = probe.asleep;
+        }
+        if (at.offShare < kJoinOffShare) return cpu;
         judgeLoad(now, kJoinJudgementFor);
         if (at.joinStreak >= 2 && now >= at.joinAfter) {
             at.joinAfter = now + kJoinEvery * (1 << at.joinBackoff);
@@ -602,7 +625,9 @@ void ThreadPool::workerLoop() {
                 m_statWorkerSleeps.fetch_add(1, std::memory_order_relaxed);
                 const Clock::time_point asleep = Clock::now();
                 futexWait(m_posted, seen);
-                probe.offCpu.away(seconds(Clock::now() - asleep));
+                const double slept = seconds(Clock::now() - asleep);
+                probe.offCpu.away(slept);
+                probe.asleep += slept;
             }
             m_sleepers.fetch_sub(1, std::memory_order_seq_cst);
         }
@@ -614,7 +639,7 @@ void ThreadPool::workerLoop() {
             return;
         }
         seen = posted;
-        const int cpu = placeWorker(placement, probe.keptOffAt);
+        const int cpu = placeWorker(placement, probe);
         const int ran = claimTasks(seen, true);
         if (ran > 0) {
             m_statWorkerTasks.fetch_add(static_cast<std::uint64_t>(ran), std::memory_order_relaxed);

@@ -28,8 +28,10 @@
 // finds itself on another CPU while the others are as busy joins the caller's CPU (moveOntoCpu;
 // two readings of the count in a row, at most every 50 ms): split, each thread shares a CPU with
 // another program and the pair waits for whichever was preempted at every run. Only while the
-// worker is kept off its own CPU: runnable threads of other programs in another
-// scheduling group (another session, a lower priority) may take little of it. And a join the
+// worker is kept off its own CPU, for 30 % of a 20 ms span (stop 43): runnable threads of other
+// programs in another scheduling group (another session, a lower priority) may take little of
+// it (about a tenth, in slices that fail a single 2 ms check; joined there, two threads ran at
+// 0.97x one beside three compilers, and at 1.36x with the span). And a join the
 // kernel undoes at once (its balancer separating the pair: the count said busy, the weights
 // said otherwise) is tried again only after twice as long, up to seconds: beside three
 // compilers in other sessions, the lab's shell at higher priority, two threads fell from 1.29x
@@ -234,8 +236,11 @@ private:
         bool together = false;    // on the caller's CPU at the last run
         std::chrono::steady_clock::time_point judgedUntil{}, joinAfter{};
         std::chrono::steady_clock::time_point joinedAt{};  // the last join, until the worker finds it undone
+        // The worker's time off its CPU over spans of kJoinSpan (wall, CPU and sleep at the span's
+        // start) and the share off in the last span: a join needs kJoinOffShare of it.
+        std::chrono::steady_clock::time_point spanAt{};
+        double spanCpuAt = -1.0, spanAwayAt = 0.0, offShare = 0.0;
     };
-    int placeWorker(WorkerPlacement& at, std::chrono::steady_clock::time_point keptOffAt);
     // Claims and runs tasks of run `run` until none is left (or another run has begun);
     // returns how many it ran.
     int claimTasks(std::uint32_t run, bool worker);
@@ -247,7 +252,9 @@ private:
         std::chrono::steady_clock::time_point nextCheck{};
         OffCpuProbe offCpu;
         std::chrono::steady_clock::time_point keptOffAt{};  // the last check that found this thread kept off its CPU
+        double asleep = 0.0;  // seconds slept on purpose since the thread began (the worker's)
     };
+    int placeWorker(WorkerPlacement& at, const ContentionProbe& probe);
     bool contended(ContentionProbe& probe);
     // The fallback's decision after each run that used the workers.
     void judgeRun(double ownSeconds, double waitSeconds);
