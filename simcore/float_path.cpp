@@ -8,9 +8,12 @@
 //     springs' forces F = [stiffness (L - L0) + damping (dv.u)] u (+F to the first end, -F to the second,
 //     spring by spring) and its faces' rows (b - a) x (c - a) (3D; (dy, -dx) in 2D) to each
 //     corner; its damping power damping * (dv.u)^2 and volume terms x_a.((b - a) x (c - a))
-//     (= x_a.(x_b x x_c); 2D: the shoelace term) are summed in double lanes;
-//  2. (the caller) the shared springs and faces, then volumes and pressures from the sums, in
-//     chunk order;
+//     (= x_a.(x_b x x_c); 2D: the shoelace term) are summed in double lanes. Chunks go in
+//     pairs (0, 1), (2, 3): the second of a pair to finish adds the shared springs and faces
+//     that join only that pair's particles, in the same task (the two pairs' rows are apart,
+//     so with four chunks both pairs' shared elements run at once);
+//  2. (the caller) the other shared springs and faces, then volumes and pressures from the
+//     sums, in chunk order (the chunks, the pairs' shared sets, the rest);
 //  3. particles: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the integrator's
 //     update of the particle's own rows; each chunk runs it on its own particles at the start
 //     of the next evaluation's pass 1, the step's last one runs with the state check.
@@ -26,6 +29,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -314,7 +318,9 @@ struct FloatSimulation::Impl {
     std::vector<float> invMass;   // per particle (0 on fixed particles)
     std::vector<float> weightY;   // the weight's y component per particle
     F4 axes{};                    // 1 on the body's axes, 0 on the others (and the pad)
-    std::vector<Chunk> chunks;    // the chunks, then the shared springs and faces
+    std::vector<Chunk> chunks;    // the owners, each pair's shared springs and faces, the other shared ones
+    int owners = 1;               // chunks that own particles (ForceModel::chunksFor)
+    std::array<std::atomic<int>, ForceModel::kChunks / 2> pairArrivals{};  // per pair: its chunks done in this pass
     std::array<float, kSpringFamilyCount> stiffness{}, damping{};
     int perLayer = 0;  // particles per layer (the quads' outer offset)
     std::vector<std::uint8_t> particleSlot;
@@ -415,11 +421,16 @@ struct FloatSimulation::Impl {
     // separate update pass (and no pool run for it) is needed.
     template <class Pending>
     void springsAndFaces(const float* px, const float* pv, Pending&& pending) {
-        const int owners = static_cast<int>(chunks.size()) - 1;
+        const int pairs = owners / 2;
+        for (int p = 0; p < pairs; ++p) pairArrivals[static_cast<std::size_t>(p)].store(0, std::memory_order_relaxed);
         auto task = [&](int t) {
             Chunk& c = chunks[static_cast<std::size_t>(t)];
             for (auto [begin, end] : c.owned) pending(begin, end);
             accumulate(c, px, pv);
+            // The second of the pair to finish adds the pair's shared springs and faces (the
+            // acquire sees the other's rows; the release hands its own to the second).
+            if (pairs > 0 && pairArrivals[static_cast<std::size_t>(t / 2)].fetch_add(1, std::memory_order_acq_rel) == 1)
+                accumulate(chunks[static_cast<std::size_t>(owners + t / 2)], px, pv);
         };
         run(owners, task);
         accumulate(chunks.back(), px, pv);
@@ -709,15 +720,21 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
     // layer in chunk k * chunks / n); a spring or face whose particles are not all one chunk's
     // is shared.
     const int owners = ForceModel::chunksFor(topo.springCount());
+    s.owners = owners;
     const bool layered = !topo.layerPairs.empty() && 2 * topo.layerPairs.size() == n;
     const int perLayer = layered ? s.n / 2 : s.n;
     auto owner = [&](int i) { return owners == 1 ? 0 : ((i % perLayer) * owners) / perLayer; };
-    s.chunks.resize(static_cast<std::size_t>(owners) + 1);
+    // The owners, then per pair of owners (0, 1), (2, 3) the shared elements joining only
+    // that pair, then the other shared ones.
+    s.chunks.resize(static_cast<std::size_t>(owners + owners / 2) + 1);
     auto chunkOf = [&](std::initializer_list<int> particles) {
-        const int first = owner(*particles.begin());
-        for (int p : particles)
-            if (owner(p) != first) return &s.chunks.back();
-        return &s.chunks[static_cast<std::size_t>(first)];
+        unsigned touched = 0;
+        for (int p : particles) touched |= 1u << owner(p);
+        for (int c = 0; c < owners; ++c)
+            if (touched == 1u << c) return &s.chunks[static_cast<std::size_t>(c)];
+        for (int pair = 0; pair < owners / 2; ++pair)
+            if ((touched & ~(3u << (2 * pair))) == 0) return &s.chunks[static_cast<std::size_t>(owners + pair)];
+        return &s.chunks.back();
     };
     for (int i = 0; i < s.n; ++i) {
         auto& owned = s.chunks[static_cast<std::size_t>(owner(i))].owned;
