@@ -11,9 +11,11 @@
 //     (= x_a.(x_b x x_c); 2D: the shoelace term) are summed in double lanes. Chunks go in
 //     pairs (0, 1), (2, 3): the second of a pair to finish adds the shared springs and faces
 //     that join only that pair's particles, in the same task (the two pairs' rows are apart,
-//     so with four chunks both pairs' shared elements run at once);
+//     so with four chunks both pairs' shared elements run at once); with four chunks, the
+//     shared elements joining only 0 and 2 and only 1 and 3 then go as a second run of two
+//     tasks (their rows are apart too);
 //  2. (the caller) the other shared springs and faces, then volumes and pressures from the
-//     sums, in chunk order (the chunks, the pairs' shared sets, the rest);
+//     sums, in chunk order (the chunks, the pairs' shared sets, the cross pairs', the rest);
 //  3. particles: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the integrator's
 //     update of the particle's own rows; each chunk runs it on its own particles at the start
 //     of the next evaluation's pass 1, the step's last one runs with the state check.
@@ -318,8 +320,11 @@ struct FloatSimulation::Impl {
     std::vector<float> invMass;   // per particle (0 on fixed particles)
     std::vector<float> weightY;   // the weight's y component per particle
     F4 axes{};                    // 1 on the body's axes, 0 on the others (and the pad)
-    std::vector<Chunk> chunks;    // the owners, each pair's shared springs and faces, the other shared ones
-    int owners = 1;               // chunks that own particles (ForceModel::chunksFor)
+    // The owners; each pair's shared springs and faces; with four owners each cross pair's
+    // (0, 2), (1, 3); the other shared ones.
+    std::vector<Chunk> chunks;
+    int owners = 1;  // chunks that own particles (ForceModel::chunksFor)
+    int crosses() const { return owners >= 4 ? owners / 2 : 0; }
     std::array<std::atomic<int>, ForceModel::kChunks / 2> pairArrivals{};  // per pair: its chunks done in this pass
     std::array<float, kSpringFamilyCount> stiffness{}, damping{};
     int perLayer = 0;  // particles per layer (the quads' outer offset)
@@ -433,6 +438,10 @@ struct FloatSimulation::Impl {
                 accumulate(chunks[static_cast<std::size_t>(owners + t / 2)], px, pv);
         };
         run(owners, task);
+        // The cross pairs' shared elements (after both pairs': they add to the same rows), at
+        // once, then the rest.
+        if (crosses() > 0)
+            run(crosses(), [&](int t) { accumulate(chunks[static_cast<std::size_t>(owners + pairs + t)], px, pv); });
         accumulate(chunks.back(), px, pv);
         double power = 0.0;
         for (const Chunk& c : chunks) power += c.power.total();
@@ -725,8 +734,8 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
     const int perLayer = layered ? s.n / 2 : s.n;
     auto owner = [&](int i) { return owners == 1 ? 0 : ((i % perLayer) * owners) / perLayer; };
     // The owners, then per pair of owners (0, 1), (2, 3) the shared elements joining only
-    // that pair, then the other shared ones.
-    s.chunks.resize(static_cast<std::size_t>(owners + owners / 2) + 1);
+    // that pair, then (four owners) per cross pair (0, 2), (1, 3), then the other shared ones.
+    s.chunks.resize(static_cast<std::size_t>(owners + owners / 2 + s.crosses()) + 1);
     auto chunkOf = [&](std::initializer_list<int> particles) {
         unsigned touched = 0;
         for (int p : particles) touched |= 1u << owner(p);
@@ -734,6 +743,9 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
             if (touched == 1u << c) return &s.chunks[static_cast<std::size_t>(c)];
         for (int pair = 0; pair < owners / 2; ++pair)
             if ((touched & ~(3u << (2 * pair))) == 0) return &s.chunks[static_cast<std::size_t>(owners + pair)];
+        for (int cross = 0; cross < s.crosses(); ++cross)
+            if ((touched & ~((1u << cross) | (1u << (cross + owners / 2)))) == 0)
+                return &s.chunks[static_cast<std::size_t>(owners + owners / 2 + cross)];
         return &s.chunks.back();
     };
     for (int i = 0; i < s.n; ++i) {
