@@ -459,10 +459,16 @@ private slots:
         if (together * 2 >= ShareJudge::kMayWin) {
             QVERIFY2(c.shareTrials == 0 && c.shareWins == 0, qPrintable(what));
         } else if (wins) {
-            QVERIFY2(c.shareWins >= 3 && c.shareTrials >= 1, qPrintable(what));
+            // Three wins, whatever began the first stretch alone: a trial, or on a loaded
+            // machine (a sanitizer's build beside other work) the fallback of the waits, after
+            // whose stretch the judge compares the shares as after a trial (CI at stop 44:
+            // 0 trials, 3 won).
+            QVERIFY2(c.shareWins >= 3, qPrintable(what));
             QVERIFY2(c.shareTrials <= 2, qPrintable(what));  // alone kept winning: no new trial needed
         } else {
-            QVERIFY2(c.shareTrials >= 1 && c.shareWins == 0, qPrintable(what));
+            // It went alone for a while (a trial, or the waits' fallback as above) and alone
+            // never won.
+            QVERIFY2((c.shareTrials >= 1 || c.soloPeriods >= 1) && c.shareWins == 0, qPrintable(what));
             // Trials lost back off: at most one at once, then after 0.2, 0.4, 0.8 s ...
             QVERIFY2(c.shareTrials <= 1 + static_cast<unsigned>(std::log2(1.0 + elapsed / ShareJudge::kBackoffFirst)),
                      qPrintable(what));
