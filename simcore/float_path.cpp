@@ -325,6 +325,8 @@ struct FloatSimulation::Impl {
     std::vector<Chunk> chunks;
     int owners = 1;  // chunks that own particles (ForceModel::chunksFor)
     int crosses() const { return owners >= 4 ? owners / 2 : 0; }
+    Chunk& pairShared(int pair) { return chunks[static_cast<std::size_t>(owners + pair)]; }
+    Chunk& crossShared(int cross) { return chunks[static_cast<std::size_t>(owners + owners / 2 + cross)]; }
     std::array<std::atomic<int>, ForceModel::kChunks / 2> pairArrivals{};  // per pair: its chunks done in this pass
     std::array<float, kSpringFamilyCount> stiffness{}, damping{};
     int perLayer = 0;  // particles per layer (the quads' outer offset)
@@ -435,13 +437,13 @@ struct FloatSimulation::Impl {
             // The second of the pair to finish adds the pair's shared springs and faces (the
             // acquire sees the other's rows; the release hands its own to the second).
             if (pairs > 0 && pairArrivals[static_cast<std::size_t>(t / 2)].fetch_add(1, std::memory_order_acq_rel) == 1)
-                accumulate(chunks[static_cast<std::size_t>(owners + t / 2)], px, pv);
+                accumulate(pairShared(t / 2), px, pv);
         };
         run(owners, task);
         // The cross pairs' shared elements (after both pairs': they add to the same rows), at
         // once, then the rest.
         if (crosses() > 0)
-            run(crosses(), [&](int t) { accumulate(chunks[static_cast<std::size_t>(owners + pairs + t)], px, pv); });
+            run(crosses(), [&](int t) { accumulate(crossShared(t), px, pv); });
         accumulate(chunks.back(), px, pv);
         double power = 0.0;
         for (const Chunk& c : chunks) power += c.power.total();
@@ -742,10 +744,9 @@ FloatSimulation::FloatSimulation(const Simulation& start) : m_impl(std::make_uni
         for (int c = 0; c < owners; ++c)
             if (touched == 1u << c) return &s.chunks[static_cast<std::size_t>(c)];
         for (int pair = 0; pair < owners / 2; ++pair)
-            if ((touched & ~(3u << (2 * pair))) == 0) return &s.chunks[static_cast<std::size_t>(owners + pair)];
+            if ((touched & ~(3u << (2 * pair))) == 0) return &s.pairShared(pair);
         for (int cross = 0; cross < s.crosses(); ++cross)
-            if ((touched & ~((1u << cross) | (1u << (cross + owners / 2)))) == 0)
-                return &s.chunks[static_cast<std::size_t>(owners + owners / 2 + cross)];
+            if ((touched & ~((1u << cross) | (1u << (cross + owners / 2)))) == 0) return &s.crossShared(cross);
         return &s.chunks.back();
     };
     for (int i = 0; i < s.n; ++i) {
