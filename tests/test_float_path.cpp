@@ -183,6 +183,42 @@ private slots:
         QVERIFY2(dx < positions && dv < velocities, qPrintable(QString("positions %1, velocities %2").arg(dx).arg(dv)));
     }
 
+    // The step's last update and the state check run per chunk (each thread finishes the rows
+    // it owns): a particle put past a wall in any chunk, either layer, stops the run after one
+    // step, with 1 and 2 threads, naming a particle of that chunk (the ring of 20,000
+    // particles per layer: four chunks of 5,000 consecutive particles per layer; the step's
+    // four evaluations carry the disturbance a few springs along, not to another chunk).
+    void everyChunkIsChecked() {
+        ParameterSet p = scene(SceneKind::Ring2d, 0.0);
+        p.set(Param::Particles, 20000);
+        p.set(Param::Perturb, 1e-4);
+        p.set(Param::Scaling, 1.0);
+        Simulation sim(p, "rk4");
+        QCOMPARE(ForceModel::chunksFor(sim.topology().springCount()), 4);
+        const int n = sim.topology().particleCount(), perLayer = n / 2;
+        const Eigen::Map<const Eigen::Matrix3Xd> x0(sim.state().data(), 3, n), v0(sim.state().data() + 3 * n, 3, n);
+        const double wall = sim.forces().contact.high[0];
+        QVERIFY(std::isfinite(wall));
+        for (int threads : {1, 2})
+            for (int layer = 0; layer < 2; ++layer)
+                for (int chunk = 0; chunk < 4; ++chunk) {
+                    const int particle = layer * perLayer + chunk * perLayer / 4 + perLayer / 8;
+                    Eigen::Matrix3Xd x = x0;
+                    x(0, particle) = wall + 0.5;
+                    Simulation outside(p, "rk4");
+                    outside.setState(x, v0);
+                    FloatSimulation single(outside);
+                    single.setThreads(threads);
+                    QVERIFY2(!single.step(), qPrintable(QString("particle %1 outside, %2 thread(s)").arg(particle).arg(threads)));
+                    const std::string& reason = single.failure()->reason;
+                    const std::size_t at = reason.find("particle ");
+                    QVERIFY2(at != std::string::npos, reason.c_str());
+                    const int named = std::stoi(reason.substr(at + 9));
+                    QVERIFY2(named / (perLayer / 4) == particle / (perLayer / 4),
+                             qPrintable(QString("particle %1 outside: %2").arg(particle).arg(reason.c_str())));
+                }
+    }
+
     // The ledger closes as in double: total energy + energy removed by damping - the start's
     // energy (the drift, here the RK4 truncation error of a strong transient: 1.6 % of the
     // start's energy) is the double path's to 1e-6 of the start's energy, while damping
