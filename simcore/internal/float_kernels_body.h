@@ -56,26 +56,6 @@ constexpr int kWidth = SIMCORE_FLOAT_WIDTH;
     return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(len, bound, _CMP_GE_OQ), value);
 #endif
 }
-// The in-lane permutation of each group of four (as _mm_permute_ps).
-template <int imm>
-[[gnu::always_inline]] inline V permute4(V v) {
-#if SIMCORE_FLOAT_WIDTH == 8
-    return _mm256_permute_ps(v, imm);
-#else
-    return _mm512_permute_ps(v, imm);
-#endif
-}
-// Lanes 0 and 3 of each group of four negated (x - y is x + (-y) exactly).
-[[gnu::always_inline]] inline V negateFirstAndLast(V v) {
-#if SIMCORE_FLOAT_WIDTH == 8
-    const __m256i flip = _mm256_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN);
-    return _mm256_castsi256_ps(_mm256_xor_si256(_mm256_castps_si256(v), flip));
-#else
-    const __m512i flip = _mm512_setr_epi32(INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN, INT32_MIN, 0, 0, INT32_MIN,
-                                           INT32_MIN, 0, 0, INT32_MIN);
-    return _mm512_castsi512_ps(_mm512_xor_si512(_mm512_castps_si512(v), flip));
-#endif
-}
 // a[0..3] repeated over the register.
 [[gnu::always_inline]] inline V repeat4(const std::array<float, 4>& a) {
     alignas(64) float lanes[kWidth];
@@ -83,64 +63,101 @@ template <int imm>
     return load(lanes);
 }
 
-// The x, y, z columns of kWidth particles' rows (rows idx[0..kWidth-1] of p): 128-bit lane j of
-// register k holds row 4 j + k (width 16; width 8: rows k and k + 4), then each 128-bit lane is
-// transposed.
-[[gnu::always_inline]] inline void columns(const float* p, const int* idx, V& cx, V& cy, V& cz) {
+// Rows of kWidth particles (rows idx[0..kWidth-1] of p) in four registers: 128-bit lane j of
+// register k holds row 4 j + k (width 8: rows k and k + 4).
+[[gnu::always_inline]] inline void gatherRows(const float* p, const int* idx, V* r) {
     auto at = [&](int k) __attribute__((always_inline)) {
         return _mm_loadu_ps(p + 4 * static_cast<std::ptrdiff_t>(idx[k]));
     };
-    auto gather = [&](int k) __attribute__((always_inline)) {
+    for (int k = 0; k < 4; ++k) {
 #if SIMCORE_FLOAT_WIDTH == 8
-        return _mm256_insertf128_ps(_mm256_castps128_ps256(at(k)), at(k + 4), 1);
+        r[k] = _mm256_insertf128_ps(_mm256_castps128_ps256(at(k)), at(k + 4), 1);
 #else
-        __m512 r = _mm512_castps128_ps512(at(k));
-        r = _mm512_insertf32x4(r, at(k + 4), 1);
-        r = _mm512_insertf32x4(r, at(k + 8), 2);
-        return _mm512_insertf32x4(r, at(k + 12), 3);
+        __m512 g = _mm512_castps128_ps512(at(k));
+        g = _mm512_insertf32x4(g, at(k + 4), 1);
+        g = _mm512_insertf32x4(g, at(k + 8), 2);
+        r[k] = _mm512_insertf32x4(g, at(k + 12), 3);
 #endif
-    };
-    const V r0 = gather(0), r1 = gather(1), r2 = gather(2), r3 = gather(3);
+    }
+}
+
+// Four registers of rows (as gatherRows') transposed in each 128-bit lane to x, y, z columns:
+// lane 4 j + k of a column is row k of 128-bit lane j.
+[[gnu::always_inline]] inline void columnsOf(const V* r, V& cx, V& cy, V& cz) {
 #if SIMCORE_FLOAT_WIDTH == 8
-    const V t0 = _mm256_unpacklo_ps(r0, r1), t1 = _mm256_unpackhi_ps(r0, r1);
-    const V t2 = _mm256_unpacklo_ps(r2, r3), t3 = _mm256_unpackhi_ps(r2, r3);
+    const V t0 = _mm256_unpacklo_ps(r[0], r[1]), t1 = _mm256_unpackhi_ps(r[0], r[1]);
+    const V t2 = _mm256_unpacklo_ps(r[2], r[3]), t3 = _mm256_unpackhi_ps(r[2], r[3]);
     cx = _mm256_shuffle_ps(t0, t2, 0x44);
     cy = _mm256_shuffle_ps(t0, t2, 0xEE);
     cz = _mm256_shuffle_ps(t1, t3, 0x44);
 #else
-    const V t0 = _mm512_unpacklo_ps(r0, r1), t1 = _mm512_unpackhi_ps(r0, r1);
-    const V t2 = _mm512_unpacklo_ps(r2, r3), t3 = _mm512_unpackhi_ps(r2, r3);
+    const V t0 = _mm512_unpacklo_ps(r[0], r[1]), t1 = _mm512_unpackhi_ps(r[0], r[1]);
+    const V t2 = _mm512_unpacklo_ps(r[2], r[3]), t3 = _mm512_unpackhi_ps(r[2], r[3]);
     cx = _mm512_shuffle_ps(t0, t2, 0x44);
     cy = _mm512_shuffle_ps(t0, t2, 0xEE);
     cz = _mm512_shuffle_ps(t1, t3, 0x44);
 #endif
 }
 
-// kWidth rows (x, y, z, 0) from three columns: rows[j] is lane j's.
-[[gnu::always_inline]] inline void rows(V cx, V cy, V cz, __m128* out) {
+// The x, y, z columns of kWidth particles' rows (rows idx[0..kWidth-1] of p; lane l is row
+// idx[l]).
+[[gnu::always_inline]] inline void columns(const float* p, const int* idx, V& cx, V& cy, V& cz) {
+    V r[4];
+    gatherRows(p, idx, r);
+    columnsOf(r, cx, cy, cz);
+}
+
+// The columns of the differences row(second[l]) - row(first[l]), subtracted as rows (the same
+// operation per component as in columns, with no permutation of the columns after).
+[[gnu::always_inline]] inline void differenceColumns(const float* p, const int* first, const int* second, V& cx, V& cy, V& cz) {
+    V from[4], to[4];
+    gatherRows(p, first, from);
+    gatherRows(p, second, to);
+    for (int k = 0; k < 4; ++k) to[k] = to[k] - from[k];
+    columnsOf(to, cx, cy, cz);
+}
+
+// Three columns back to rows (x, y, z, 0) in four registers, as gatherRows lays them out.
+[[gnu::always_inline]] inline void rowRegisters(V cx, V cy, V cz, V* r) {
 #if SIMCORE_FLOAT_WIDTH == 8
     const V zero = _mm256_setzero_ps();
     const V t0 = _mm256_unpacklo_ps(cx, cy), t1 = _mm256_unpackhi_ps(cx, cy);
     const V t2 = _mm256_unpacklo_ps(cz, zero), t3 = _mm256_unpackhi_ps(cz, zero);
-    const V r[4] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE), _mm256_shuffle_ps(t1, t3, 0x44),
-                    _mm256_shuffle_ps(t1, t3, 0xEE)};
-    for (int k = 0; k < 4; ++k) {
-        out[k] = _mm256_castps256_ps128(r[k]);
-        out[4 + k] = _mm256_extractf128_ps(r[k], 1);
-    }
+    r[0] = _mm256_shuffle_ps(t0, t2, 0x44);
+    r[1] = _mm256_shuffle_ps(t0, t2, 0xEE);
+    r[2] = _mm256_shuffle_ps(t1, t3, 0x44);
+    r[3] = _mm256_shuffle_ps(t1, t3, 0xEE);
 #else
     const V zero = _mm512_setzero_ps();
     const V t0 = _mm512_unpacklo_ps(cx, cy), t1 = _mm512_unpackhi_ps(cx, cy);
     const V t2 = _mm512_unpacklo_ps(cz, zero), t3 = _mm512_unpackhi_ps(cz, zero);
-    const V r[4] = {_mm512_shuffle_ps(t0, t2, 0x44), _mm512_shuffle_ps(t0, t2, 0xEE), _mm512_shuffle_ps(t1, t3, 0x44),
-                    _mm512_shuffle_ps(t1, t3, 0xEE)};
+    r[0] = _mm512_shuffle_ps(t0, t2, 0x44);
+    r[1] = _mm512_shuffle_ps(t0, t2, 0xEE);
+    r[2] = _mm512_shuffle_ps(t1, t3, 0x44);
+    r[3] = _mm512_shuffle_ps(t1, t3, 0xEE);
+#endif
+}
+
+// The 128-bit rows of four registers: out[4 j + k] is lane j of r[k].
+[[gnu::always_inline]] inline void split(const V* r, __m128* out) {
     for (int k = 0; k < 4; ++k) {
+#if SIMCORE_FLOAT_WIDTH == 8
+        out[k] = _mm256_castps256_ps128(r[k]);
+        out[4 + k] = _mm256_extractf128_ps(r[k], 1);
+#else
         out[k] = _mm512_castps512_ps128(r[k]);
         out[4 + k] = _mm512_extractf32x4_ps(r[k], 1);
         out[8 + k] = _mm512_extractf32x4_ps(r[k], 2);
         out[12 + k] = _mm512_extractf32x4_ps(r[k], 3);
-    }
 #endif
+    }
+}
+
+// kWidth rows (x, y, z, 0) from three columns: rows[j] is lane j's.
+[[gnu::always_inline]] inline void rows(V cx, V cy, V cz, __m128* out) {
+    V r[4];
+    rowRegisters(cx, cy, cz, r);
+    split(r, out);
 }
 
 [[gnu::always_inline]] inline void addRow128(float* f4, int i, __m128 r) {
@@ -216,13 +233,10 @@ void springs(const SpringArrays& s, std::size_t begin, std::size_t end, float st
     for (; k + kWidth <= end; k += kWidth) {
         const int* ia = s.a.data() + k;
         const int* ib = s.b.data() + k;
-        V xax, xay, xaz, xbx, xby, xbz, vax, vay, vaz, vbx, vby, vbz;
-        columns(x, ia, xax, xay, xaz);
-        columns(x, ib, xbx, xby, xbz);
-        columns(v, ia, vax, vay, vaz);
-        columns(v, ib, vbx, vby, vbz);
-        const SpringForces f = springForces(xbx - xax, xby - xay, xbz - xaz, vbx - vax, vby - vay, vbz - vaz, stiffness, damping,
-                                            load(s.rest.data() + k));
+        V dx, dy, dz, wx, wy, wz;
+        differenceColumns(x, ia, ib, dx, dy, dz);
+        differenceColumns(v, ia, ib, wx, wy, wz);
+        const SpringForces f = springForces(dx, dy, dz, wx, wy, wz, stiffness, damping, load(s.rest.data() + k));
         __m128 r[kWidth];
         rows(f.fx, f.fy, f.fz, r);
         for (int j = 0; j < kWidth; ++j) {
@@ -254,25 +268,31 @@ void quads(const QuadArrays& set, std::size_t begin, std::size_t end, int n, con
         V power;
     };
     auto compute = [&](std::size_t q, Group& g) __attribute__((always_inline)) {
+        // Lane 4 j + l: spring l of quad q + j, from first ends (a, A, A, B) to second ends
+        // (b, B, b, a).
+        int first[kWidth], second[kWidth];
         for (std::size_t j = 0; j < perGroup; ++j) {
             const int a = set.a[q + j], b = set.b[q + j];
             g.ids[4 * j] = a;
             g.ids[4 * j + 1] = b;
             g.ids[4 * j + 2] = a + n;
             g.ids[4 * j + 3] = b + n;
+            const int from[4] = {a, a + n, a + n, b + n}, to[4] = {b, b + n, b, a};
+            for (std::size_t l = 0; l < 4; ++l) {
+                first[4 * j + l] = from[l];
+                second[4 * j + l] = to[l];
+            }
         }
-        V X, Y, Z, VX, VY, VZ;
-        columns(x, g.ids, X, Y, Z);
-        columns(v, g.ids, VX, VY, VZ);
-        // First ends (a, A, A, B) = columns (0, 2, 2, 3); second ends (b, B, b, a) = (1, 3, 1, 0).
-        auto diff = [](V c) __attribute__((always_inline)) { return permute4<0x1D>(c) - permute4<0xE8>(c); };
-        const SpringForces f = springForces(diff(X), diff(Y), diff(Z), diff(VX), diff(VY), diff(VZ), stiffness, damping,
-                                            load(set.rest.data() + 4 * q));
-        // Per lane (a, b, A, B): F0 + (-F3), F0 + F2, F1 + F2, F3 + (-F1): (0, 0, 1, 3) + (3, 2, 2, 1).
-        auto rowsOf = [](V column) __attribute__((always_inline)) {
-            return permute4<0xD0>(column) + negateFirstAndLast(permute4<0x6B>(column));
-        };
-        rows(rowsOf(f.fx), rowsOf(f.fy), rowsOf(f.fz), g.rows);
+        V DX, DY, DZ, WX, WY, WZ;
+        differenceColumns(x, first, second, DX, DY, DZ);
+        differenceColumns(v, first, second, WX, WY, WZ);
+        const SpringForces f = springForces(DX, DY, DZ, WX, WY, WZ, stiffness, damping, load(set.rest.data() + 4 * q));
+        // The four springs' rows of each quad, then per corner (a, b, A, B): F0 - F3, F0 + F2,
+        // F1 + F2, F3 - F1 (quadScalar's sums), as rows.
+        V r[4];
+        rowRegisters(f.fx, f.fy, f.fz, r);
+        const V corner[4] = {r[0] - r[3], r[0] + r[2], r[1] + r[2], r[3] - r[1]};
+        split(corner, g.rows);
         g.power = f.power;
     };
     auto apply = [&](const Group& g) __attribute__((always_inline)) {
