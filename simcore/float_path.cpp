@@ -18,7 +18,8 @@
 //     sums, in chunk order (the chunks, the pairs' shared sets, the cross pairs', the rest);
 //  3. particles: (weight + F + P/6 g) / m (P/2 in 2D), handed with v to the integrator's
 //     update of the particle's own rows; each chunk runs it on its own particles at the start
-//     of the next evaluation's pass 1, the step's last one runs with the state check.
+//     of the next evaluation's pass 1, the step's last one with the state check, also chunk by
+//     chunk (finish).
 // Positions, velocities and forces are padded rows (x, y, z, 0) of 16 bytes, so that a
 // particle is one 128-bit load. With AVX2 springs, faces and face pairs go eight at a time
 // (two edge quads), with AVX-512 sixteen (four quads): the rows are transposed to columns in

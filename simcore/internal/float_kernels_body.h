@@ -8,7 +8,9 @@
 // quadScalar, faceScalar, facePairScalar; no fused multiply-add: simcore builds with
 // -ffp-contract=off, and + - * / on the vector types are the plain IEEE operations), and
 // adds its results to the rows one spring, quad, face or pair at a time in the scalar order,
-// so every width gives the same bits. The lane sums (eight double lanes) see their elements in
+// so every width gives the same bits (a spring's end difference is one subtraction per
+// component whether taken on rows before the transpose, as the quads and springs do since stop
+// 45, or on columns after). The lane sums (eight double lanes) see their elements in
 // the scalar order: element k of a block goes to lane (k - begin) % 8, the first eight of a
 // block of sixteen before the last eight. A block's rest goes to the narrower code (sixteen to
 // eight, eight to the scalar functions), whose lanes are the same because the rest begins a
