@@ -266,7 +266,7 @@ void quads(const QuadArrays& set, std::size_t begin, std::size_t end, int n, con
     // One group: its particles (a, b, A, B per quad) and their row updates.
     struct Group {
         int ids[kWidth];
-        __m128 rows[kWidth];
+        V corner[4];  // per corner (a, b, A, B): 128-bit lane j is quad q + j's row
         V power;
     };
     auto compute = [&](std::size_t q, Group& g) __attribute__((always_inline)) {
@@ -293,16 +293,23 @@ void quads(const QuadArrays& set, std::size_t begin, std::size_t end, int n, con
         // F1 + F2, F3 - F1 (quadScalar's sums), as rows.
         V r[4];
         rowRegisters(f.fx, f.fy, f.fz, r);
-        const V corner[4] = {r[0] - r[3], r[0] + r[2], r[1] + r[2], r[3] - r[1]};
-        split(corner, g.rows);
+        g.corner[0] = r[0] - r[3];
+        g.corner[1] = r[0] + r[2];
+        g.corner[2] = r[1] + r[2];
+        g.corner[3] = r[3] - r[1];
         g.power = f.power;
     };
     auto apply = [&](const Group& g) __attribute__((always_inline)) {
+        // Each row read from the group's memory (a load, not an extraction: the shuffle port is
+        // the kernel's busiest).
+        auto row = [&](int corner, std::size_t j) __attribute__((always_inline)) {
+            return _mm_loadu_ps(reinterpret_cast<const float*>(&g.corner[corner]) + 4 * j);
+        };
         for (std::size_t j = 0; j < perGroup; ++j) {
-            addRow128(f4, g.ids[4 * j], g.rows[4 * j]);
-            subRow128(f4, g.ids[4 * j + 1], g.rows[4 * j + 1]);
-            addRow128(f4, g.ids[4 * j + 2], g.rows[4 * j + 2]);
-            addRow128(f4, g.ids[4 * j + 3], g.rows[4 * j + 3]);
+            addRow128(f4, g.ids[4 * j], row(0, j));
+            subRow128(f4, g.ids[4 * j + 1], row(1, j));
+            addRow128(f4, g.ids[4 * j + 2], row(2, j));
+            addRow128(f4, g.ids[4 * j + 3], row(3, j));
         }
         sums.add(g.power);
     };
